@@ -1,0 +1,2 @@
+/** Barrel of src/roots: the public exports of this folder. */
+export {};

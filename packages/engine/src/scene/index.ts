@@ -1,0 +1,2 @@
+/** Barrel of src/scene: the public exports of this folder. */
+export {};

@@ -1,0 +1,2 @@
+/** Barrel of src/timeline: the public exports of this folder. */
+export {};
