@@ -1,2 +1,2 @@
 /** Barrel of src/roots: the public exports of this folder. */
-export {};
+export { evalPoly, realRoots } from "./realRoots.js";
