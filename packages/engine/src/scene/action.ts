@@ -1,0 +1,99 @@
+/**
+ * checkAction(raw, path): validates one action's fields (types, ranges, known type and keys) and
+ * returns it normalized (addBody gets mu 0 and v [0, 0] when absent; keys in canonical order).
+ * Checks that need the scene's state (ids that exist, overlaps) are in sceneRules.ts.
+ * ACTION_FIELDS gives the canonical key order used by serializeScene.
+ */
+import { SceneError } from "./errors.js";
+import {
+  count,
+  finite,
+  id,
+  isObject,
+  join,
+  lineKind,
+  mass,
+  nonNegative,
+  type Obj,
+  onlyKeys,
+  positive,
+  vec2,
+} from "./fields.js";
+import { type Action, type ActionType, SCENE_DEFAULTS } from "./types.js";
+
+type Reader = (o: Obj, key: string, path: string) => unknown;
+/** [key, reader, required] */
+type FieldSpec = readonly [string, Reader, boolean];
+
+const ID: FieldSpec = ["id", id, true];
+
+/** Per action type, its own fields in canonical order (after time and type, before until). */
+export const ACTION_FIELDS: Readonly<Record<ActionType, readonly FieldSpec[]>> = {
+  addBody: [
+    ID,
+    ["x", finite, true],
+    ["y", finite, true],
+    ["r", positive, true],
+    ["m", mass, true],
+    ["mu", nonNegative, false],
+    ["v", vec2, false],
+  ],
+  giveVelocity: [ID, ["v", vec2, true]],
+  updateBody: [
+    ID,
+    ["x", finite, false],
+    ["y", finite, false],
+    ["v", vec2, false],
+    ["r", positive, false],
+    ["m", mass, false],
+    ["mu", nonNegative, false],
+  ],
+  removeBody: [ID],
+  addLine: [ID, ["p1", vec2, true], ["p2", vec2, true], ["kind", lineKind, true]],
+  updateLine: [ID, ["p1", vec2, false], ["p2", vec2, false], ["kind", lineKind, false]],
+  removeLine: [ID],
+  addPoint: [ID, ["p", vec2, true]],
+  updatePoint: [ID, ["p", vec2, true]],
+  removePoint: [ID],
+  setGlobal: [
+    ["g", nonNegative, false],
+    ["gravity", vec2, false],
+  ],
+};
+
+export const ACTION_TYPES = Object.keys(ACTION_FIELDS) as ActionType[];
+
+function checkUntil(raw: unknown, path: string): { time?: number; events?: number } {
+  if (!isObject(raw)) throw new SceneError(path, "must be an object with optional time and events");
+  onlyKeys(raw, ["time", "events"], path);
+  const u: { time?: number; events?: number } = {};
+  if (raw.time !== undefined) u.time = nonNegative(raw, "time", path);
+  if (raw.events !== undefined) u.events = count(raw, "events", path);
+  return u;
+}
+
+/** Validates and normalizes one action (see the header). Throws SceneError naming the field. */
+export function checkAction(raw: unknown, path: string): Action {
+  if (!isObject(raw)) throw new SceneError(path, "must be an object");
+  const type = raw.type;
+  if (type === undefined) throw new SceneError(join(path, "type"), "is required");
+  if (typeof type !== "string" || !Object.hasOwn(ACTION_FIELDS, type))
+    throw new SceneError(join(path, "type"), `unknown action type ${JSON.stringify(type)}`);
+  const specs = ACTION_FIELDS[type as ActionType];
+  onlyKeys(raw, ["time", "type", "until", ...specs.map((s) => s[0])], path);
+  const out: Obj = { time: nonNegative(raw, "time", path), type };
+  for (const [key, read, req] of specs) {
+    if (req || raw[key] !== undefined) out[key] = read(raw, key, path);
+  }
+  if (type === "addBody") {
+    if (out.mu === undefined) out.mu = SCENE_DEFAULTS.mu;
+    if (out.v === undefined) out.v = SCENE_DEFAULTS.v;
+  }
+  if (type === "addLine") {
+    const p1 = out.p1 as readonly number[];
+    const p2 = out.p2 as readonly number[];
+    if (p1[0] === p2[0] && p1[1] === p2[1]) throw new SceneError(join(path, "p2"), "must differ from p1");
+  }
+  if (raw.until !== undefined) out.until = checkUntil(raw.until, join(path, "until"));
+  return out as unknown as Action;
+}

@@ -1,0 +1,101 @@
+/**
+ * Field readers for scene validation: each reads one field of a plain object, checks it and returns
+ * the normalized value, or throws SceneError naming the field's path and the reason.
+ */
+import { SceneError } from "./errors.js";
+import type { LineKind, Vec2 } from "./types.js";
+
+export type Obj = Record<string, unknown>;
+
+export function isObject(v: unknown): v is Obj {
+  return typeof v === "object" && v !== null && !Array.isArray(v);
+}
+
+export function join(path: string, key: string): string {
+  return path === "" ? key : `${path}.${key}`;
+}
+
+function required(o: Obj, key: string, path: string): unknown {
+  const v = o[key];
+  if (v === undefined) throw new SceneError(join(path, key), "is required");
+  return v;
+}
+
+/** Any finite number. */
+export function finite(o: Obj, key: string, path: string): number {
+  const v = required(o, key, path);
+  if (typeof v !== "number" || !Number.isFinite(v))
+    throw new SceneError(join(path, key), "must be a finite number");
+  return v;
+}
+
+/** A finite number > 0 (radius). */
+export function positive(o: Obj, key: string, path: string): number {
+  const v = required(o, key, path);
+  if (typeof v !== "number" || !Number.isFinite(v) || !(v > 0))
+    throw new SceneError(join(path, key), "must be a positive finite number");
+  return v;
+}
+
+/** A finite number >= 0 (time, mu, g). */
+export function nonNegative(o: Obj, key: string, path: string): number {
+  const v = required(o, key, path);
+  if (typeof v !== "number" || !Number.isFinite(v) || !(v >= 0))
+    throw new SceneError(join(path, key), "must be a non-negative finite number");
+  return v === 0 ? 0 : v; // -0 becomes 0
+}
+
+/** A mass: a finite number > 0, or Infinity (written "Infinity" in JSON). */
+export function mass(o: Obj, key: string, path: string): number {
+  const v = required(o, key, path);
+  if (v === "Infinity" || v === Number.POSITIVE_INFINITY) return Number.POSITIVE_INFINITY;
+  if (typeof v !== "number" || !Number.isFinite(v) || !(v > 0))
+    throw new SceneError(join(path, key), 'must be a positive finite number or "Infinity"');
+  return v;
+}
+
+/** A non-negative integer (event counts). */
+export function count(o: Obj, key: string, path: string): number {
+  const v = required(o, key, path);
+  if (typeof v !== "number" || !Number.isInteger(v) || v < 0)
+    throw new SceneError(join(path, key), "must be a non-negative integer");
+  return v;
+}
+
+/** `[x, y]` with both finite. */
+export function vec2(o: Obj, key: string, path: string): Vec2 {
+  const v = required(o, key, path);
+  if (
+    !Array.isArray(v) ||
+    v.length !== 2 ||
+    typeof v[0] !== "number" ||
+    typeof v[1] !== "number" ||
+    !Number.isFinite(v[0]) ||
+    !Number.isFinite(v[1])
+  )
+    throw new SceneError(join(path, key), "must be an array of two finite numbers");
+  return [v[0], v[1]];
+}
+
+/** A non-empty string id. */
+export function id(o: Obj, key: string, path: string): string {
+  const v = required(o, key, path);
+  if (typeof v !== "string" || v.length === 0)
+    throw new SceneError(join(path, key), "must be a non-empty string");
+  return v;
+}
+
+const LINE_KINDS: readonly LineKind[] = ["line", "ray", "segment"];
+
+export function lineKind(o: Obj, key: string, path: string): LineKind {
+  const v = required(o, key, path);
+  if (typeof v !== "string" || !(LINE_KINDS as readonly string[]).includes(v))
+    throw new SceneError(join(path, key), 'must be one of "line", "ray", "segment"');
+  return v as LineKind;
+}
+
+/** Refuses any key of `o` not in `allowed`. */
+export function onlyKeys(o: Obj, allowed: readonly string[], path: string): void {
+  for (const k of Object.keys(o))
+    if (!allowed.includes(k)) throw new SceneError(join(path, k), "unknown field");
+}

@@ -1,0 +1,236 @@
+import { describe, expect, it } from "vitest";
+import { SceneError } from "./errors.js";
+import { parseScene } from "./parse.js";
+
+const base = (actions: unknown[], extra: Record<string, unknown> = {}) =>
+  JSON.stringify({ format: "chapgame", version: 1, actions, ...extra });
+const disc = (id: string, x: number, more: Record<string, unknown> = {}) => ({
+  time: 0,
+  type: "addBody",
+  id,
+  x,
+  y: 0,
+  r: 1,
+  m: 1,
+  ...more,
+});
+
+function refused(input: unknown): SceneError {
+  try {
+    parseScene(input);
+  } catch (e) {
+    expect(e).toBeInstanceOf(SceneError);
+    return e as SceneError;
+  }
+  throw new Error("parseScene accepted invalid input");
+}
+
+describe("parseScene accepts and normalizes", () => {
+  it("fills defaults: g 9.81, gravity [0,0], mu 0, v [0,0]", () => {
+    const s = parseScene(base([disc("a", 0)]));
+    expect(s.g).toBe(9.81);
+    expect(s.gravity).toEqual([0, 0]);
+    expect(s.actions[0]).toEqual({
+      time: 0,
+      type: "addBody",
+      id: "a",
+      x: 0,
+      y: 0,
+      r: 1,
+      m: 1,
+      mu: 0,
+      v: [0, 0],
+    });
+  });
+  it('reads "Infinity" as an infinite mass, from text and from objects', () => {
+    expect(parseScene(base([disc("a", 0, { m: "Infinity" })])).actions[0]).toMatchObject({ m: Infinity });
+    const obj = { format: "chapgame", version: 1, actions: [disc("a", 0, { m: Infinity })] };
+    expect(parseScene(obj).actions[0]).toMatchObject({ m: Infinity });
+  });
+  it("parses the issue's example scene", () => {
+    const s = parseScene(`{ "format": "chapgame", "version": 1, "g": 9.81, "gravity": [0, 0],
+      "actions": [
+        { "time": 0, "type": "addBody", "id": "a", "x": 350, "y": 200, "r": 100, "m": 10, "mu": 1, "v": [0, 0] },
+        { "time": 0, "type": "addLine", "id": "wall", "p1": [0, 0], "p2": [0, 500], "kind": "segment" },
+        { "time": 0, "type": "addPoint", "id": "pin", "p": [10, 10] },
+        { "time": 2.5, "type": "giveVelocity", "id": "a", "v": [-100, 0] } ] }`);
+    expect(s.actions.map((a) => a.type)).toEqual(["addBody", "addLine", "addPoint", "giveVelocity"]);
+  });
+  it("allows touching bodies, re-adding a removed id, the same id for a body and a line", () => {
+    expect(() =>
+      parseScene(
+        base([
+          disc("a", 0),
+          disc("b", 2),
+          { time: 1, type: "removeBody", id: "a" },
+          disc("a", 50, { time: 1 }),
+          { time: 0, type: "addLine", id: "a", p1: [0, 10], p2: [1, 10], kind: "line" },
+        ]),
+      ),
+    ).not.toThrow();
+  });
+  it("applies actions in time order, same time in file order", () => {
+    // the give comes first in the file but at a later time: valid
+    expect(() =>
+      parseScene(base([{ time: 1, type: "giveVelocity", id: "a", v: [1, 0] }, disc("a", 0)])),
+    ).not.toThrow();
+  });
+});
+
+describe("parseScene refuses, naming the path and the reason", () => {
+  const cases: [string, unknown, string][] = [
+    ["broken JSON", "{ nope", "json: invalid JSON"],
+    ["not an object", "[1]", "scene: must be a JSON object"],
+    ["wrong format", JSON.stringify({ format: "x", version: 1, actions: [] }), 'format: must be "chapgame"'],
+    [
+      "wrong version",
+      JSON.stringify({ format: "chapgame", version: 2, actions: [] }),
+      "version: unsupported version 2",
+    ],
+    ["missing actions", JSON.stringify({ format: "chapgame", version: 1 }), "actions: must be an array"],
+    ["negative g", base([], { g: -1 }), "g: must be a non-negative finite number"],
+    ["bad gravity", base([], { gravity: [0] }), "gravity: must be an array of two finite numbers"],
+    ["unknown top-level field", base([], { extra: 1 }), "extra: unknown field"],
+    ["r = 0", base([disc("a", 0), disc("b", 5, { r: 0 })]), "actions[1].r: must be a positive finite number"],
+    ["r < 0", base([disc("a", 0, { r: -1 })]), "actions[0].r: must be a positive finite number"],
+    ["m = 0", base([disc("a", 0, { m: 0 })]), 'actions[0].m: must be a positive finite number or "Infinity"'],
+    [
+      "m < 0",
+      base([disc("a", 0, { m: -2 })]),
+      'actions[0].m: must be a positive finite number or "Infinity"',
+    ],
+    ["mu < 0", base([disc("a", 0, { mu: -0.1 })]), "actions[0].mu: must be a non-negative finite number"],
+    [
+      "missing x",
+      base([{ time: 0, type: "addBody", id: "a", y: 0, r: 1, m: 1 }]),
+      "actions[0].x: is required",
+    ],
+    ["NaN-like (string) x", base([disc("a", 0, { x: "1" })]), "actions[0].x: must be a finite number"],
+    ["non-finite (null) y", base([disc("a", 0, { y: null })]), "actions[0].y: must be a finite number"],
+    [
+      "negative time",
+      base([disc("a", 0, { time: -1 })]),
+      "actions[0].time: must be a non-negative finite number",
+    ],
+    ["missing time", base([{ type: "removeBody", id: "a" }]), "actions[0].time: is required"],
+    ["bad v", base([disc("a", 0, { v: [1, "x"] })]), "actions[0].v: must be an array of two finite numbers"],
+    [
+      "unknown type",
+      base([{ time: 0, type: "explode", id: "a" }]),
+      'actions[0].type: unknown action type "explode"',
+    ],
+    ["unknown field", base([disc("a", 0, { vx: 1 })]), "actions[0].vx: unknown field"],
+    [
+      "unknown line kind",
+      base([{ time: 0, type: "addLine", id: "l", p1: [0, 0], p2: [1, 0], kind: "arc" }]),
+      'actions[0].kind: must be one of "line", "ray", "segment"',
+    ],
+    [
+      "degenerate line",
+      base([{ time: 0, type: "addLine", id: "l", p1: [1, 1], p2: [1, 1], kind: "line" }]),
+      "actions[0].p2: must differ from p1",
+    ],
+    ["empty id", base([disc("", 0)]), "actions[0].id: must be a non-empty string"],
+    [
+      "bad until",
+      base([disc("a", 0, { until: { events: 1.5 } })]),
+      "actions[0].until.events: must be a non-negative integer",
+    ],
+    [
+      "duplicate body id",
+      base([disc("a", 0), disc("a", 10)]),
+      'actions[1].id: body "a" already exists at time 0',
+    ],
+    [
+      "duplicate line id",
+      base([
+        { time: 0, type: "addLine", id: "l", p1: [0, 5], p2: [1, 5], kind: "line" },
+        { time: 0, type: "addLine", id: "l", p1: [0, 9], p2: [1, 9], kind: "line" },
+      ]),
+      'actions[1].id: line "l" already exists at time 0',
+    ],
+    [
+      "action on a missing body",
+      base([disc("a", 0), { time: 1, type: "giveVelocity", id: "b", v: [1, 0] }]),
+      'actions[1].id: no body "b" at time 1',
+    ],
+    [
+      "action on a removed body",
+      base([
+        disc("a", 0),
+        { time: 1, type: "removeBody", id: "a" },
+        { time: 2, type: "updateBody", id: "a", r: 2 },
+      ]),
+      'actions[2].id: no body "a" at time 2',
+    ],
+    [
+      "action before the body exists",
+      base([disc("a", 0, { time: 3 }), { time: 1, type: "giveVelocity", id: "a", v: [1, 0] }]),
+      'actions[1].id: no body "a" at time 1',
+    ],
+    [
+      "missing line",
+      base([{ time: 0, type: "removeLine", id: "l" }]),
+      'actions[0].id: no line "l" at time 0',
+    ],
+    [
+      "missing point",
+      base([{ time: 0, type: "updatePoint", id: "p", p: [1, 1] }]),
+      'actions[0].id: no point "p" at time 0',
+    ],
+    [
+      "overlapping bodies",
+      base([disc("a", 0), disc("b", 1.5)]),
+      'actions[1]: body "b" would overlap body "a" at time 0',
+    ],
+    [
+      "body grown into an overlap",
+      base([disc("a", 0), disc("b", 3), { time: 0, type: "updateBody", id: "b", r: 2.5 }]),
+      'actions[2]: body "b" would overlap body "a" at time 0',
+    ],
+    [
+      "bodies placed into an overlap at a later time",
+      base([disc("a", 0, { time: 2 }), disc("b", 1, { time: 2 })]),
+      'actions[1]: body "b" would overlap body "a" at time 2',
+    ],
+    [
+      "body onto a line",
+      base([{ time: 0, type: "addLine", id: "w", p1: [0, -5], p2: [0, 5], kind: "segment" }, disc("a", 0.5)]),
+      'actions[1]: body "a" would overlap line "w" at time 0',
+    ],
+    [
+      "line onto a body",
+      base([
+        disc("a", 0),
+        { time: 0, type: "addLine", id: "w", p1: [-5, 0.5], p2: [5, 0.5], kind: "segment" },
+      ]),
+      'actions[1]: line "w" would overlap body "a" at time 0',
+    ],
+    [
+      "body onto a ray's end point",
+      base([{ time: 0, type: "addLine", id: "w", p1: [0.5, 0], p2: [5, 0], kind: "ray" }, disc("a", 0)]),
+      'actions[1]: body "a" would overlap line "w" at time 0',
+    ],
+    [
+      "body onto a point at a later time (points do not move)",
+      base([{ time: 0, type: "addPoint", id: "p", p: [0, 0] }, disc("a", 0.2, { time: 5 })]),
+      'actions[1]: body "a" would overlap point "p" at time 5',
+    ],
+    [
+      "friction with gravity",
+      base([disc("a", 0, { mu: 0.1 })], { gravity: [0, -1] }),
+      "actions[0].mu: friction (mu > 0) cannot be combined with a non-zero gravity field",
+    ],
+    [
+      "gravity switched on with friction",
+      base([disc("a", 0, { mu: 0.1 }), { time: 1, type: "setGlobal", gravity: [0, -1] }]),
+      'actions[1].gravity: a non-zero gravity field cannot be combined with friction (body "a" has mu > 0)',
+    ],
+  ];
+  for (const [name, input, message] of cases)
+    it(name, () => {
+      const e = refused(input);
+      expect(e.message.startsWith(message)).toBe(true);
+      expect(e.message.startsWith(`${e.path}: `)).toBe(true);
+    });
+});

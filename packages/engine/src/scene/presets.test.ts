@@ -1,0 +1,49 @@
+import { describe, expect, it } from "vitest";
+import { parseScene } from "./parse.js";
+import { billiardsBreak, dilutedGas, galperin, newtonsCradle, originalDemo, presets } from "./presets.js";
+
+describe("presets", () => {
+  it("every preset is a valid scene (no overlaps, ids unique)", () => {
+    for (const p of presets) expect(() => parseScene(p.make()), p.id).not.toThrow();
+    expect(new Set(presets.map((p) => p.id)).size).toBe(presets.length);
+  });
+  it("originalDemo is the thesis sample", () => {
+    const s = originalDemo();
+    expect(s.g).toBe(1);
+    expect(s.actions).toContainEqual({ time: 0, type: "giveVelocity", id: "B", v: [-100, 0] });
+  });
+  it("galperin(n) has a big mass of 100^(n-1)", () => {
+    expect(galperin(1).actions[2]).toMatchObject({ id: "big", m: 1, v: [-1, 0] });
+    expect(galperin(7).actions[2]).toMatchObject({ m: 1e12 });
+    expect(() => galperin(0)).toThrow(RangeError);
+  });
+  it("newtonsCradle has five touching discs and a striker", () => {
+    expect(newtonsCradle().actions).toHaveLength(6);
+  });
+  it("billiardsBreak racks 15 balls plus the cue ball inside 4 cushions", () => {
+    const s = billiardsBreak();
+    expect(s.actions.filter((a) => a.type === "addBody")).toHaveLength(16);
+    expect(s.actions.filter((a) => a.type === "addLine")).toHaveLength(4);
+  });
+  it("dilutedGas is deterministic in its seed, and the seed matters", () => {
+    const a = dilutedGas({ n: 500, packing: 0.2, seed: 7 });
+    expect(dilutedGas({ n: 500, packing: 0.2, seed: 7 })).toEqual(a);
+    expect(dilutedGas({ n: 500, packing: 0.2, seed: 8 })).not.toEqual(a);
+    expect(() => parseScene(a)).not.toThrow();
+    expect(a.actions.filter((x) => x.type === "addBody")).toHaveLength(500);
+  });
+  it("dilutedGas has the requested packing fraction", () => {
+    const s = dilutedGas({ n: 100, packing: 0.1 });
+    const right = s.actions.find((a) => a.type === "addLine" && a.id === "right");
+    const side = right && right.type === "addLine" ? right.p1[0] : Number.NaN;
+    expect((100 * Math.PI) / (side * side)).toBeCloseTo(0.1, 12);
+  });
+  it("dilutedGas refuses bad options", () => {
+    expect(() => dilutedGas({ n: 0, packing: 0.1 })).toThrow(RangeError);
+    expect(() => dilutedGas({ n: 10, packing: 0.9 })).toThrow(RangeError);
+    expect(() => dilutedGas({ n: 2, packing: 0.5 })).toThrow(RangeError);
+  });
+  it("parses a 20,000-disc gas quickly enough to be usable (grid overlap check)", () => {
+    expect(() => parseScene(dilutedGas({ n: 20_000, packing: 0.3 }))).not.toThrow();
+  });
+});

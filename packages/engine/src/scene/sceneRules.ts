@@ -1,0 +1,201 @@
+/**
+ * The rules an action must satisfy against the scene as it is at the action's time: ids that exist
+ * (or not yet), unique ids among live objects of a kind, no body added, moved or grown into an overlap
+ * with a body, line or point, no line or point added or moved into a body, and no friction (mu > 0)
+ * together with a non-zero gravity field. `SceneView` is that scene (positions may be unknown when a
+ * caller cannot simulate: then overlaps with such bodies are not checked). `checkAndApply` throws
+ * SceneError (path + reason) and changes nothing, or updates the view.
+ */
+import { DiscGrid } from "./discGrid.js";
+import { SceneError } from "./errors.js";
+import { join } from "./fields.js";
+import { discOverlapsLine, discOverlapsPoint } from "./overlap.js";
+import type { Action, LineKind, Vec2 } from "./types.js";
+
+export interface ViewBody {
+  x: number;
+  y: number;
+  r: number;
+  mu: number;
+  /** false when the position at the view's time is unknown (validation without a simulation) */
+  known: boolean;
+}
+export interface ViewLine {
+  p1: Vec2;
+  p2: Vec2;
+  kind: LineKind;
+}
+
+export interface ViewSource {
+  time: number;
+  g: number;
+  gravity: Vec2;
+  bodies: readonly { id: string; x: number; y: number; r: number; mu: number }[];
+  lines: readonly { id: string; p1: Vec2; p2: Vec2; kind: LineKind }[];
+  points: readonly { id: string; p: Vec2 }[];
+}
+
+export class SceneView {
+  time: number;
+  g: number;
+  gravity: Vec2;
+  readonly bodies = new Map<string, ViewBody>();
+  readonly lines = new Map<string, ViewLine>();
+  readonly points = new Map<string, Vec2>();
+  readonly grid = new DiscGrid();
+
+  constructor(time: number, g: number, gravity: Vec2) {
+    this.time = time;
+    this.g = g;
+    this.gravity = gravity;
+  }
+
+  /** A view of a known state (all positions known). */
+  static of(s: ViewSource): SceneView {
+    const v = new SceneView(s.time, s.g, s.gravity);
+    for (const b of s.bodies) {
+      v.bodies.set(b.id, { x: b.x, y: b.y, r: b.r, mu: b.mu, known: true });
+      v.grid.insert(b.id, b.x, b.y, b.r);
+    }
+    for (const l of s.lines) v.lines.set(l.id, { p1: l.p1, p2: l.p2, kind: l.kind });
+    for (const p of s.points) v.points.set(p.id, p.p);
+    return v;
+  }
+
+  /** Time moves on without a simulation: every body's position becomes unknown. */
+  forgetPositions(time: number): void {
+    this.time = time;
+    for (const b of this.bodies.values()) b.known = false;
+    this.grid.clear();
+  }
+}
+
+const q = JSON.stringify;
+
+function gravityOn(g: Vec2): boolean {
+  return g[0] !== 0 || g[1] !== 0;
+}
+
+function frictionWithGravity(path: string): SceneError {
+  return new SceneError(path, "friction (mu > 0) cannot be combined with a non-zero gravity field");
+}
+
+function checkDisc(view: SceneView, path: string, id: string, x: number, y: number, r: number): void {
+  const other = view.grid.findOverlap(x, y, r, id);
+  if (other !== null)
+    throw new SceneError(path, `body ${q(id)} would overlap body ${q(other)} at time ${view.time}`);
+  for (const [lid, l] of view.lines)
+    if (discOverlapsLine(x, y, r, l.p1, l.p2, l.kind))
+      throw new SceneError(path, `body ${q(id)} would overlap line ${q(lid)} at time ${view.time}`);
+  for (const [pid, p] of view.points)
+    if (discOverlapsPoint(x, y, r, p))
+      throw new SceneError(path, `body ${q(id)} would overlap point ${q(pid)} at time ${view.time}`);
+}
+
+function checkObstacle(view: SceneView, path: string, what: string, hits: (b: ViewBody) => boolean): void {
+  const ids = [...view.bodies.keys()].sort();
+  for (const bid of ids) {
+    const b = view.bodies.get(bid) as ViewBody;
+    if (b.known && hits(b))
+      throw new SceneError(path, `${what} would overlap body ${q(bid)} at time ${view.time}`);
+  }
+}
+
+function need<T>(map: Map<string, T>, id: string, kind: string, view: SceneView, path: string): T {
+  const v = map.get(id);
+  if (v === undefined) throw new SceneError(join(path, "id"), `no ${kind} ${q(id)} at time ${view.time}`);
+  return v;
+}
+
+function fresh(map: Map<string, unknown>, id: string, kind: string, view: SceneView, path: string): void {
+  if (map.has(id))
+    throw new SceneError(join(path, "id"), `${kind} ${q(id)} already exists at time ${view.time}`);
+}
+
+/** Checks `a` (already field-validated) against the view at its time, then applies it to the view. */
+export function checkAndApply(view: SceneView, a: Action, path: string): void {
+  switch (a.type) {
+    case "addBody": {
+      fresh(view.bodies, a.id, "body", view, path);
+      const mu = a.mu ?? 0;
+      if (mu > 0 && gravityOn(view.gravity)) throw frictionWithGravity(join(path, "mu"));
+      checkDisc(view, path, a.id, a.x, a.y, a.r);
+      view.bodies.set(a.id, { x: a.x, y: a.y, r: a.r, mu, known: true });
+      view.grid.insert(a.id, a.x, a.y, a.r);
+      return;
+    }
+    case "giveVelocity":
+      need(view.bodies, a.id, "body", view, path);
+      return;
+    case "updateBody": {
+      const b = need(view.bodies, a.id, "body", view, path);
+      const mu = a.mu ?? b.mu;
+      if (a.mu !== undefined && mu > 0 && gravityOn(view.gravity))
+        throw frictionWithGravity(join(path, "mu"));
+      const known = b.known || (a.x !== undefined && a.y !== undefined);
+      const x = a.x ?? b.x;
+      const y = a.y ?? b.y;
+      const r = a.r ?? b.r;
+      const moved = a.x !== undefined || a.y !== undefined || a.r !== undefined;
+      if (known && moved) checkDisc(view, path, a.id, x, y, r);
+      view.bodies.set(a.id, { x, y, r, mu, known });
+      if (known) view.grid.insert(a.id, x, y, r);
+      return;
+    }
+    case "removeBody":
+      need(view.bodies, a.id, "body", view, path);
+      view.bodies.delete(a.id);
+      view.grid.remove(a.id);
+      return;
+    case "addLine":
+    case "updateLine": {
+      let line: ViewLine;
+      if (a.type === "addLine") {
+        fresh(view.lines, a.id, "line", view, path);
+        line = { p1: a.p1, p2: a.p2, kind: a.kind };
+      } else {
+        const old = need(view.lines, a.id, "line", view, path);
+        line = { p1: a.p1 ?? old.p1, p2: a.p2 ?? old.p2, kind: a.kind ?? old.kind };
+        if (line.p1[0] === line.p2[0] && line.p1[1] === line.p2[1])
+          throw new SceneError(join(path, a.p2 ? "p2" : "p1"), "must differ from p1 and p2 of the line");
+      }
+      checkObstacle(view, path, `line ${q(a.id)}`, (b) =>
+        discOverlapsLine(b.x, b.y, b.r, line.p1, line.p2, line.kind),
+      );
+      view.lines.set(a.id, line);
+      return;
+    }
+    case "removeLine":
+      need(view.lines, a.id, "line", view, path);
+      view.lines.delete(a.id);
+      return;
+    case "addPoint":
+    case "updatePoint": {
+      if (a.type === "addPoint") fresh(view.points, a.id, "point", view, path);
+      else need(view.points, a.id, "point", view, path);
+      const p = a.p;
+      checkObstacle(view, path, `point ${q(a.id)}`, (b) => discOverlapsPoint(b.x, b.y, b.r, p));
+      view.points.set(a.id, p);
+      return;
+    }
+    case "removePoint":
+      need(view.points, a.id, "point", view, path);
+      view.points.delete(a.id);
+      return;
+    case "setGlobal": {
+      const gravity = a.gravity ?? view.gravity;
+      if (a.gravity !== undefined && gravityOn(gravity)) {
+        const ids = [...view.bodies.keys()].sort();
+        for (const bid of ids)
+          if ((view.bodies.get(bid) as ViewBody).mu > 0)
+            throw new SceneError(
+              join(path, "gravity"),
+              `a non-zero gravity field cannot be combined with friction (body ${q(bid)} has mu > 0)`,
+            );
+      }
+      if (a.g !== undefined) view.g = a.g;
+      view.gravity = gravity;
+      return;
+    }
+  }
+}
