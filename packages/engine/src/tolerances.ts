@@ -10,6 +10,36 @@ export const UNIT_ROUNDOFF = 2 ** -53;
 // ---- roots (owned by src/roots) -------------------------------------------------------------
 // (the roots module appends its named tolerances here)
 
+/**
+ * Degree drop in realRoots: the leading coefficient c_n is dropped when, for some j < n,
+ * |c_n|·M^(n−j) ≤ ROOTS_DEGREE_DROP·|c_j| with M = max(|lo|, |hi|). Then |c_n tⁿ| ≤ u·|c_j t^j| on the
+ * whole interval: the term is below one rounding of a lower coefficient, so it cannot change the
+ * monotone structure except where p is at its rounding-noise level. Relative, never absolute: scaling
+ * the coefficients or the interval by any factor gives the same decision. Roots are still certified
+ * against the full polynomial, so the drop only decides the splitting and the cost.
+ */
+export const ROOTS_DEGREE_DROP = UNIT_ROUNDOFF;
+
+/**
+ * Plain Horner error bound factor: |fl(p(x)) − p(x)| ≤ γ₂ₙ·p̃(|x|) with γ₂ₙ = 2nu/(1 − 2nu)
+ * (Higham, Accuracy and Stability, eq. 5.3). 2.5·n·u covers γ₂ₙ and the rounding of the computed p̃.
+ */
+export const PLAIN_HORNER_BOUND_FACTOR = 2.5;
+
+/**
+ * Compensated Horner error bound factor: |CompHorner(p, x) − p(x)| ≤ u|p(x)| + γ₂ₙ²·p̃(|x|)
+ * (Graillat, Langlois, Louvet 2005, Theorem 3). γ₂ₙ² ≈ 4n²u²; the factor 8 covers that, the
+ * rounding of the computed p̃ and replacing |p(x)| by the computed value (division by 1 − u).
+ */
+export const COMP_HORNER_BOUND_FACTOR = 8;
+
+/**
+ * Iteration cap of every root-refinement loop. Each loop bisects in the ordering of doubles after a
+ * few Newton steps, which reaches adjacent doubles in at most 64 + 53 halvings; the cap (well above)
+ * is only a guard: exceeding it throws RootSolverError rather than looping or guessing.
+ */
+export const ROOTS_MAX_ITERATIONS = 400;
+
 // ---- simulation (owned by src/sim and src/physics) -----------------------------------------
 // (the simulation appends its named tolerances here)
 
@@ -19,3 +49,20 @@ export const UNIT_ROUNDOFF = 2 ** -53;
  *  are allowed, and so are the round-off overlaps (a few ulps) that collisions leave between bodies
  *  in contact, so that editing a resting body is not refused for round-off the engine produced. */
 export const OVERLAP_REL = 1e-9;
+
+/**
+ * Cell side of the broad-phase grid relative to the largest diameter. Slightly above 1 so that a
+ * body whose centre sits a rounding error outside its recorded cell still finds every partner it
+ * can touch in the 3x3 neighbourhood.
+ */
+export const GRID_CELL_MARGIN = 1 + 1e-6;
+
+/** Largest number of grid cells per body (beyond this, cells grow: slower, never wrong). */
+export const GRID_CELLS_PER_BODY = 4;
+
+/**
+ * Events processed at one and the same instant before the world reports a Zeno state (infinitely
+ * many events in no time) instead of looping. A Newton's cradle of n discs needs n; the limit is
+ * per body so that large simultaneous chains are still allowed.
+ */
+export const SIMULTANEOUS_EVENTS_PER_BODY = 64;

@@ -1,0 +1,166 @@
+/**
+ * Time of impact (pure functions of numbers; no allocation on the hot path).
+ *
+ * Every function works in local time tau measured from a base time at which both motions are given,
+ * and looks for the first contact in the window [lo, hi] (lo >= 0). A contact counts only while the
+ * pair approaches: the gap function crosses zero downwards, or the pair already touches (gap <= 0) and
+ * approaches at lo (Newton's cradle, round-off overlaps). A touching pair that separates never
+ * collides. Each function returns the contact time tau, or +Infinity when there is none in the window.
+ *
+ * Gap functions:
+ *   disc–disc / disc–point:  f(tau) = |d + u tau + w tau^2 / 2|^2 - R^2   (degree <= 4; 2 when w = 0)
+ *   disc–line:               h(tau) = ±s(tau) - r, s the signed distance to the line (degree <= 2)
+ */
+
+import { evalPoly, realRoots } from "../roots/realRoots.js";
+
+const coeffs = new Float64Array(5);
+
+/**
+ * First approach root of the gap polynomial of two discs (or a disc and a point, with the point's
+ * motion zero): d, u, w are the relative position, velocity and acceleration (other minus this) at
+ * the base time, R the contact distance.
+ */
+export function discDiscTime(
+  dx: number,
+  dy: number,
+  ux: number,
+  uy: number,
+  wx: number,
+  wy: number,
+  R: number,
+  lo: number,
+  hi: number,
+  quadraticFastPath = true,
+): number {
+  const c0 = dx * dx + dy * dy - R * R;
+  const c1 = 2 * (dx * ux + dy * uy);
+  const uu = ux * ux + uy * uy;
+  if (wx === 0 && wy === 0) {
+    if (uu === 0) return Number.POSITIVE_INFINITY;
+    if (quadraticFastPath) return firstDownCrossingQuadratic(c0, c1, uu, lo, hi);
+  }
+  const c2 = uu + (dx * wx + dy * wy);
+  const c3 = ux * wx + uy * wy;
+  const c4 = 0.25 * (wx * wx + wy * wy);
+  return firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, hi);
+}
+
+/** First tau in [lo, hi] where c0 + c1 t + c2 t^2 + c3 t^3 + c4 t^4 crosses zero downwards. */
+export function firstDownCrossingQuartic(
+  c0: number,
+  c1: number,
+  c2: number,
+  c3: number,
+  c4: number,
+  lo: number,
+  hi: number,
+): number {
+  if (!(lo <= hi)) return Number.POSITIVE_INFINITY;
+  const fLo = c0 + lo * (c1 + lo * (c2 + lo * (c3 + lo * c4)));
+  const dLo = c1 + lo * (2 * c2 + lo * (3 * c3 + lo * 4 * c4));
+  if (fLo <= 0) {
+    if (dLo < 0) return lo;
+    if (dLo === 0 && 2 * c2 + lo * (6 * c3 + lo * 12 * c4) < 0) return lo; // resting contact
+  }
+  coeffs[0] = c0;
+  coeffs[1] = c1;
+  coeffs[2] = c2;
+  coeffs[3] = c3;
+  coeffs[4] = c4;
+  // Solve on [0, hi] rather than [lo, hi] so that the roots are a pure function of the two motions:
+  // the same pair gives the same bits whenever it is (re)computed.
+  const roots = realRoots(coeffs, 0, hi);
+  for (let i = 0; i < roots.length; i++) {
+    const r = roots[i] as number;
+    if (r < lo) continue;
+    const d = c1 + r * (2 * c2 + r * (3 * c3 + r * 4 * c4));
+    if (d < 0) return r;
+    if (d === 0) {
+      // Derivative vanishes at the root (touching or crossing with zero slope): probe after it.
+      const next = i + 1 < roots.length ? (roots[i + 1] as number) : hi;
+      const probe = Number.isFinite(next) ? 0.5 * (r + next) : r + 1;
+      if (evalPoly(coeffs, probe) < 0) return r;
+    }
+  }
+  return Number.POSITIVE_INFINITY;
+}
+
+/**
+ * First tau in [lo, hi] where h(tau) = c0 + c1 tau + c2 tau^2 crosses zero downwards, or lo when
+ * h(lo) <= 0 and h is decreasing there (or resting with h'' < 0) and `immediate` is true. Roots use
+ * the cancellation-free closed form.
+ */
+export function firstDownCrossingQuadratic(
+  c0: number,
+  c1: number,
+  c2: number,
+  lo: number,
+  hi: number,
+  immediate = true,
+): number {
+  if (!(lo <= hi)) return Number.POSITIVE_INFINITY;
+  const hLo = c0 + lo * (c1 + lo * c2);
+  const dLo = c1 + 2 * c2 * lo;
+  if (hLo <= 0 && immediate) {
+    if (dLo < 0) return lo;
+    if (dLo === 0 && c2 < 0) return lo; // resting contact under an acceleration into the contact
+  }
+  if (c2 === 0) {
+    if (c1 >= 0) return Number.POSITIVE_INFINITY;
+    const r = -c0 / c1;
+    return r >= lo && r <= hi ? r : Number.POSITIVE_INFINITY;
+  }
+  const disc = c1 * c1 - 4 * c2 * c0;
+  if (disc < 0) return Number.POSITIVE_INFINITY;
+  const sq = Math.sqrt(disc);
+  const q = c1 >= 0 ? -0.5 * (c1 + sq) : -0.5 * (c1 - sq);
+  if (q === 0) return Number.POSITIVE_INFINITY; // c0 = c1 = 0: touching with zero slope, handled above
+  let r1 = q / c2;
+  let r2 = c0 / q;
+  if (r1 > r2) {
+    const t = r1;
+    r1 = r2;
+    r2 = t;
+  }
+  // The derivative at a root of a quadratic is +-sqrt(disc): it is negative at the smaller root
+  // when c2 > 0 and at the larger root when c2 < 0.
+  const down = c2 > 0 ? r1 : r2;
+  if (down < lo) {
+    // Past the crossing already: a round-off overlap. Approaching now means contact now.
+    return dLo < 0 && immediate ? lo : Number.POSITIVE_INFINITY;
+  }
+  if (disc === 0) return Number.POSITIVE_INFINITY; // tangency without crossing: a graze, no impulse
+  return down <= hi ? down : Number.POSITIVE_INFINITY;
+}
+
+/**
+ * First contact of a disc (radius r) with the infinite line through (x1, y1) with unit normal
+ * (nx, ny), from either side: s(tau) = n.(p - P1) with p = p0 + v tau + a tau^2 / 2.
+ * `side` receives +1 when the disc hits the positive side, -1 the negative side.
+ */
+export function discLineCrossings(
+  px: number,
+  py: number,
+  vx: number,
+  vy: number,
+  ax: number,
+  ay: number,
+  x1: number,
+  y1: number,
+  nx: number,
+  ny: number,
+  r: number,
+  lo: number,
+  hi: number,
+  out: Float64Array,
+): void {
+  const s0 = nx * (px - x1) + ny * (py - y1);
+  const s1 = nx * vx + ny * vy;
+  const s2 = 0.5 * (nx * ax + ny * ay);
+  // Positive side: h+ = s - r; negative side: h- = -s - r. Only the side the centre is on now can
+  // be in contact now; the other side can only be reached later (around the end of a segment).
+  const positive = s0 + lo * (s1 + lo * s2) >= 0;
+  out[0] = firstDownCrossingQuadratic(s0 - r, s1, s2, lo, hi, positive);
+  out[1] = firstDownCrossingQuadratic(-s0 - r, -s1, -s2, lo, hi, !positive);
+}

@@ -1,0 +1,144 @@
+/**
+ * Structure-of-arrays storage of the discs of a World, indexed by slot. A slot holds one body's
+ * current motion (see physics/motion.ts), its properties, and its next predicted event. Slots of
+ * removed bodies are reused; `version` only ever grows, so a prediction made against an older
+ * version of a partner is recognised as stale.
+ */
+
+/** Internal event kinds of a body's next event. Ranks give the canonical order of simultaneous events. */
+export const EV_NONE = 0;
+export const EV_CROSS = 1;
+export const EV_STOP = 2;
+export const EV_LINE = 3;
+export const EV_POINT = 4;
+export const EV_BODY = 5;
+
+const F64_FIELDS = [
+  "t0",
+  "x0",
+  "y0",
+  "vx0",
+  "vy0",
+  "ax",
+  "ay",
+  "tEnd",
+  "r",
+  "m",
+  "mu",
+  "version",
+  "evTime",
+  "evOtherVersion",
+  "crossTime",
+  "boxMinX",
+  "boxMinY",
+  "boxMaxX",
+  "boxMaxY",
+] as const;
+const I32_FIELDS = ["evKind", "evOther", "evAux", "crossDir"] as const;
+
+export class BodyStore {
+  capacity: number;
+  count = 0;
+  /** Id of each live slot; undefined for free slots. */
+  ids: (string | undefined)[] = [];
+  private free: number[] = [];
+  t0: Float64Array;
+  x0: Float64Array;
+  y0: Float64Array;
+  vx0: Float64Array;
+  vy0: Float64Array;
+  ax: Float64Array;
+  ay: Float64Array;
+  /** End of the current motion (friction stop), or +Infinity. */
+  tEnd: Float64Array;
+  r: Float64Array;
+  m: Float64Array;
+  mu: Float64Array;
+  version: Float64Array;
+  /** Next predicted interaction (collision or stop) and with whom. */
+  evTime: Float64Array;
+  evOtherVersion: Float64Array;
+  evKind: Int32Array;
+  evOther: Int32Array;
+  /** Line events: 0 = the line itself, 1 = its first end point, 2 = its second end point. */
+  evAux: Int32Array;
+  /** Next cell crossing and its direction (0: -x, 1: +x, 2: -y, 3: +y). */
+  crossTime: Float64Array;
+  crossDir: Int32Array;
+  /** Bounding box of the whole remaining path including the radius (infinite when unbounded). */
+  boxMinX: Float64Array;
+  boxMinY: Float64Array;
+  boxMaxX: Float64Array;
+  boxMaxY: Float64Array;
+
+  constructor(capacity = 16) {
+    this.capacity = capacity;
+    this.t0 = new Float64Array(capacity);
+    this.x0 = new Float64Array(capacity);
+    this.y0 = new Float64Array(capacity);
+    this.vx0 = new Float64Array(capacity);
+    this.vy0 = new Float64Array(capacity);
+    this.ax = new Float64Array(capacity);
+    this.ay = new Float64Array(capacity);
+    this.tEnd = new Float64Array(capacity);
+    this.r = new Float64Array(capacity);
+    this.m = new Float64Array(capacity);
+    this.mu = new Float64Array(capacity);
+    this.version = new Float64Array(capacity);
+    this.evTime = new Float64Array(capacity);
+    this.evOtherVersion = new Float64Array(capacity);
+    this.evKind = new Int32Array(capacity);
+    this.evOther = new Int32Array(capacity);
+    this.evAux = new Int32Array(capacity);
+    this.crossTime = new Float64Array(capacity);
+    this.crossDir = new Int32Array(capacity);
+    this.boxMinX = new Float64Array(capacity);
+    this.boxMinY = new Float64Array(capacity);
+    this.boxMaxX = new Float64Array(capacity);
+    this.boxMaxY = new Float64Array(capacity);
+  }
+
+  /** Take a free slot for a new body (growing the arrays when full). */
+  allocate(id: string): number {
+    const slot = this.free.length > 0 ? (this.free.pop() as number) : this.count++;
+    if (slot >= this.capacity) this.grow(Math.max(16, this.capacity * 2));
+    this.ids[slot] = id;
+    return slot;
+  }
+
+  release(slot: number): void {
+    this.ids[slot] = undefined;
+    this.version[slot] = (this.version[slot] as number) + 1;
+    this.evKind[slot] = EV_NONE;
+    this.free.push(slot);
+  }
+
+  /** Number of slots in use or free (iterate 0..slotCount and skip undefined ids). */
+  get slotCount(): number {
+    return this.count;
+  }
+
+  private grow(capacity: number): void {
+    for (const f of F64_FIELDS) {
+      const a = new Float64Array(capacity);
+      a.set(this[f]);
+      this[f] = a;
+    }
+    for (const f of I32_FIELDS) {
+      const a = new Int32Array(capacity);
+      a.set(this[f]);
+      this[f] = a;
+    }
+    this.capacity = capacity;
+  }
+
+  clone(): BodyStore {
+    const s = new BodyStore(this.capacity);
+    s.count = this.count;
+    s.ids = this.ids.slice();
+    s.free = this.free.slice();
+    for (const f of F64_FIELDS) s[f] = this[f].slice();
+    for (const f of I32_FIELDS) s[f] = this[f].slice();
+    return s;
+  }
+}

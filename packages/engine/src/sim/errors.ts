@@ -1,0 +1,29 @@
+/**
+ * Errors the engine throws on bad input or on a state it cannot simulate.
+ * Every error names the field (`path`) and the reason, and is thrown before anything changes.
+ */
+
+/** Invalid input: `path` names the field (e.g. `bodies.a.r`), `reason` says what is wrong with it. */
+export class ChapgameError extends Error {
+  readonly path: string;
+  readonly reason: string;
+  constructor(path: string, reason: string) {
+    super(`${path}: ${reason}`);
+    this.name = "ChapgameError";
+    this.path = path;
+    this.reason = reason;
+  }
+}
+
+/**
+ * A state the exact model cannot continue from (for example a disc resting on a line under gravity:
+ * infinitely many zero-length bounces). The world is left as it was before the failing event.
+ */
+export class SimulationError extends Error {
+  readonly time: number;
+  constructor(message: string, time: number) {
+    super(message);
+    this.name = "SimulationError";
+    this.time = time;
+  }
+}

@@ -1,0 +1,19 @@
+/** Barrel of src/sim: the public exports of the simulation. */
+export { ChapgameError, SimulationError } from "./errors.js";
+export type { LineKind } from "./obstacles.js";
+export type {
+  AdvanceLimits,
+  AdvanceResult,
+  BodyInit,
+  BodyPatch,
+  BodyState,
+  EventCounts,
+  EventKind,
+  LineState,
+  Optimizations,
+  PointState,
+  Vec2,
+  WorldEvent,
+  WorldOptions,
+} from "./types.js";
+export { World } from "./world.js";

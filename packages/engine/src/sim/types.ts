@@ -1,0 +1,106 @@
+/** Public data types of the World (see docs/architecture.md). */
+
+export type Vec2 = readonly [number, number];
+
+export type EventKind = "bodyBody" | "bodyLine" | "bodyPoint" | "stop";
+
+export interface BodyInit {
+  x: number;
+  y: number;
+  r: number;
+  m: number;
+  mu?: number;
+  vx?: number;
+  vy?: number;
+}
+
+export interface BodyPatch {
+  x?: number;
+  y?: number;
+  vx?: number;
+  vy?: number;
+  r?: number;
+  m?: number;
+  mu?: number;
+}
+
+/** A disc at one instant. */
+export interface BodyState {
+  id: string;
+  x: number;
+  y: number;
+  vx: number;
+  vy: number;
+  ax: number;
+  ay: number;
+  r: number;
+  m: number;
+  mu: number;
+}
+
+export interface LineState {
+  id: string;
+  p1: Vec2;
+  p2: Vec2;
+  kind: "line" | "ray" | "segment";
+}
+
+export interface PointState {
+  id: string;
+  p: Vec2;
+}
+
+/**
+ * One processed event. The World reuses a single object for every event: copy what you keep.
+ * For bodyBody, `a` < `b` in id order. The normal points from `a` towards `b` (the obstacle).
+ */
+export interface WorldEvent {
+  time: number;
+  kind: EventKind;
+  a: string;
+  b: string | null;
+  /** Contact point; for a stop, where the body stopped. */
+  px: number;
+  py: number;
+  /** Unit normal from a towards b at contact; (0, 0) for a stop. */
+  nx: number;
+  ny: number;
+  /** Magnitude of the impulse (Infinity when both masses are infinite); 0 for a stop or a graze. */
+  impulse: number;
+}
+
+/** Switches for the optimisations, so the benchmark can show what each one buys. All default on. */
+export interface Optimizations {
+  /** Cell grid with crossing events; off = every body is tested against every body. */
+  broadPhase?: boolean;
+  /** Reject pairs whose whole remaining paths (friction: finite segments) cannot meet, before solving. */
+  pathBounds?: boolean;
+  /** Closed-form quadratic when the relative acceleration is zero; off = always the quartic solver. */
+  quadraticFastPath?: boolean;
+  /** Skip pairs where both bodies rest; off = test them too. */
+  restingSkip?: boolean;
+}
+
+export interface WorldOptions {
+  g?: number;
+  gravity?: Vec2;
+  time?: number;
+  optimizations?: Optimizations;
+}
+
+export interface AdvanceLimits {
+  untilTime?: number;
+  maxEvents?: number;
+}
+
+export interface AdvanceResult {
+  events: number;
+  reason: "time" | "events" | "idle";
+}
+
+export interface EventCounts {
+  bodyBody: number;
+  bodyLine: number;
+  bodyPoint: number;
+  stop: number;
+}

@@ -1,0 +1,376 @@
+/**
+ * World: the public face of the exact simulation (contract in docs/architecture.md).
+ *
+ * Edits (add/update/remove bodies, lines, points; globals) happen at the current time and are
+ * validated first: invalid input throws ChapgameError naming the field, and changes nothing.
+ * `advance` processes events in time order; events exactly at `untilTime` are processed.
+ */
+import { positionAt, velocityAt } from "../physics/motion.js";
+import { ChapgameError } from "./errors.js";
+import { distanceToLine, type Line, type LineKind, makeLine, type Point } from "./obstacles.js";
+import { Simulator } from "./simulator.js";
+import type {
+  AdvanceLimits,
+  AdvanceResult,
+  BodyInit,
+  BodyPatch,
+  BodyState,
+  LineState,
+  PointState,
+  Vec2,
+  WorldEvent,
+  WorldOptions,
+} from "./types.js";
+import {
+  checkFrictionGravity,
+  requireFinite,
+  requireId,
+  requireLineKind,
+  requireMass,
+  requireNonNegativeFinite,
+  requirePositiveFinite,
+  requireVec,
+} from "./validate.js";
+
+const INF = Number.POSITIVE_INFINITY;
+/** Below this many bodies an overlap check scans them all instead of using the grid. */
+const LINEAR_SCAN_BODIES = 64;
+
+export class World extends Simulator {
+  private index = new Map<string, number>();
+
+  constructor(options: WorldOptions = {}) {
+    const g = requireNonNegativeFinite("g", options.g ?? 9.81);
+    const gravity = requireVec("gravity", options.gravity ?? [0, 0]);
+    const time = requireFinite("time", options.time ?? 0);
+    super(time, g, gravity[0], gravity[1], options.optimizations ?? {});
+  }
+
+  get gravity(): Vec2 {
+    return [this.gx, this.gy];
+  }
+
+  /** An independent deep copy (for keyframes). */
+  clone(): World {
+    const w = new World({ g: this.g, gravity: [this.gx, this.gy], time: this.time, optimizations: this.opt });
+    this.copyInto(w);
+    w.index = new Map(this.index);
+    return w;
+  }
+
+  hasBody(id: string): boolean {
+    return this.index.has(id);
+  }
+
+  hasLine(id: string): boolean {
+    return this.lineList.some((l) => l.id === id);
+  }
+
+  hasPoint(id: string): boolean {
+    return this.pointList.some((p) => p.id === id);
+  }
+
+  /** Number of bodies. */
+  get bodyCount(): number {
+    return this.index.size;
+  }
+
+  // ---- bodies -------------------------------------------------------------------------------
+
+  addBody(id: string, init: BodyInit): void {
+    requireId("id", id);
+    if (this.index.has(id)) throw new ChapgameError("id", `a body with id '${id}' already exists`);
+    const x = requireFinite("x", init.x);
+    const y = requireFinite("y", init.y);
+    const r = requirePositiveFinite("r", init.r);
+    const m = requireMass("m", init.m);
+    const mu = requireNonNegativeFinite("mu", init.mu ?? 0);
+    const vx = requireFinite("vx", init.vx ?? 0);
+    const vy = requireFinite("vy", init.vy ?? 0);
+    checkFrictionGravity("mu", mu, this.gravity);
+    this.prepareGridFor(x, y, r);
+    this.checkOverlap(x, y, r, -1);
+    const b = this.store;
+    const s = b.allocate(id);
+    this.grid.reserve(b.capacity);
+    this.heap.reserve(b.capacity);
+    b.r[s] = r;
+    b.m[s] = m;
+    b.mu[s] = mu;
+    this.setMotion(s, this.time, x, y, vx, vy);
+    this.index.set(id, s);
+    this.grid.insert(s, this.cellAt(x, y));
+    if (!this.dirty) this.predict(s);
+  }
+
+  updateBody(id: string, patch: BodyPatch): void {
+    const s = this.slotOf(id);
+    const b = this.store;
+    const now = this.time;
+    const x = requireFinite("x", patch.x ?? this.xAt(s, now));
+    const y = requireFinite("y", patch.y ?? this.yAt(s, now));
+    const vx = requireFinite(
+      "vx",
+      patch.vx ?? velocityAt(b.t0[s] as number, b.vx0[s] as number, b.ax[s] as number, now),
+    );
+    const vy = requireFinite(
+      "vy",
+      patch.vy ?? velocityAt(b.t0[s] as number, b.vy0[s] as number, b.ay[s] as number, now),
+    );
+    const r = requirePositiveFinite("r", patch.r ?? b.r[s]);
+    const m = requireMass("m", patch.m ?? b.m[s]);
+    const mu = requireNonNegativeFinite("mu", patch.mu ?? b.mu[s]);
+    checkFrictionGravity("mu", mu, this.gravity);
+    if (patch.x !== undefined || patch.y !== undefined || patch.r !== undefined) {
+      this.prepareGridFor(x, y, r);
+      this.checkOverlap(x, y, r, s);
+    }
+    b.r[s] = r;
+    b.m[s] = m;
+    b.mu[s] = mu;
+    this.setMotion(s, now, x, y, vx, vy);
+    this.grid.move(s, this.cellAt(x, y));
+    if (!this.dirty) this.predict(s);
+  }
+
+  removeBody(id: string): void {
+    const s = this.slotOf(id);
+    this.grid.remove(s);
+    this.heap.remove(s);
+    this.store.release(s);
+    this.index.delete(id);
+  }
+
+  /** State of a body at time t (default: now). Valid for t in [time, the body's next event]. */
+  body(id: string, t: number = this.time): BodyState {
+    return this.stateOf(this.slotOf(id), t);
+  }
+
+  /** All bodies at time t (default: now), sorted by id. */
+  bodies(t: number = this.time): BodyState[] {
+    const ids = [...this.index.keys()].sort();
+    return ids.map((id) => this.stateOf(this.index.get(id) as number, t));
+  }
+
+  private stateOf(s: number, t: number): BodyState {
+    const b = this.store;
+    const tEnd = b.tEnd[s] as number;
+    const te = Math.min(t, tEnd);
+    const t0 = b.t0[s] as number;
+    const ax = b.ax[s] as number;
+    const ay = b.ay[s] as number;
+    const moving = t < tEnd;
+    return {
+      id: b.ids[s] as string,
+      x: positionAt(t0, b.x0[s] as number, b.vx0[s] as number, ax, te),
+      y: positionAt(t0, b.y0[s] as number, b.vy0[s] as number, ay, te),
+      vx: moving ? velocityAt(t0, b.vx0[s] as number, ax, t) : 0,
+      vy: moving ? velocityAt(t0, b.vy0[s] as number, ay, t) : 0,
+      ax: moving ? ax : 0,
+      ay: moving ? ay : 0,
+      r: b.r[s] as number,
+      m: b.m[s] as number,
+      mu: b.mu[s] as number,
+    };
+  }
+
+  private slotOf(id: string): number {
+    const s = this.index.get(id);
+    if (s === undefined) throw new ChapgameError("id", `no body with id '${id}'`);
+    return s;
+  }
+
+  // ---- obstacles ----------------------------------------------------------------------------
+
+  addLine(id: string, p1: Vec2, p2: Vec2, kind: LineKind): void {
+    requireId("id", id);
+    if (this.hasLine(id)) throw new ChapgameError("id", `a line with id '${id}' already exists`);
+    const line = this.checkedLine(id, p1, p2, kind);
+    this.lineList = [...this.lineList, line];
+    this.dirty = true;
+  }
+
+  updateLine(id: string, patch: { p1?: Vec2; p2?: Vec2; kind?: LineKind }): void {
+    const i = this.lineList.findIndex((l) => l.id === id);
+    if (i < 0) throw new ChapgameError("id", `no line with id '${id}'`);
+    const old = this.lineList[i] as Line;
+    const line = this.checkedLine(
+      id,
+      patch.p1 ?? [old.x1, old.y1],
+      patch.p2 ?? [old.x2, old.y2],
+      patch.kind ?? old.kind,
+    );
+    this.lineList = this.lineList.map((l, k) => (k === i ? line : l));
+    this.dirty = true;
+  }
+
+  removeLine(id: string): void {
+    if (!this.hasLine(id)) throw new ChapgameError("id", `no line with id '${id}'`);
+    this.lineList = this.lineList.filter((l) => l.id !== id);
+    this.dirty = true;
+  }
+
+  addPoint(id: string, p: Vec2): void {
+    requireId("id", id);
+    if (this.hasPoint(id)) throw new ChapgameError("id", `a point with id '${id}' already exists`);
+    this.pointList = [...this.pointList, this.checkedPoint(id, p)];
+    this.dirty = true;
+  }
+
+  updatePoint(id: string, p: Vec2): void {
+    if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id '${id}'`);
+    const point = this.checkedPoint(id, p);
+    this.pointList = this.pointList.map((q) => (q.id === id ? point : q));
+    this.dirty = true;
+  }
+
+  removePoint(id: string): void {
+    if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id '${id}'`);
+    this.pointList = this.pointList.filter((q) => q.id !== id);
+    this.dirty = true;
+  }
+
+  /** All lines, sorted by id. */
+  lines(): LineState[] {
+    return [...this.lineList]
+      .sort((a, b) => (a.id < b.id ? -1 : 1))
+      .map((l) => ({ id: l.id, p1: [l.x1, l.y1] as Vec2, p2: [l.x2, l.y2] as Vec2, kind: l.kind }));
+  }
+
+  /** All points, sorted by id. */
+  points(): PointState[] {
+    return [...this.pointList]
+      .sort((a, b) => (a.id < b.id ? -1 : 1))
+      .map((p) => ({ id: p.id, p: [p.x, p.y] as Vec2 }));
+  }
+
+  private checkedLine(id: string, p1: Vec2, p2: Vec2, kind: LineKind): Line {
+    const a = requireVec("p1", p1);
+    const c = requireVec("p2", p2);
+    requireLineKind("kind", kind);
+    if (a[0] === c[0] && a[1] === c[1]) throw new ChapgameError("p2", "must differ from p1");
+    const line = makeLine(id, a, c, kind);
+    for (const [bid, s] of this.index) {
+      const r = this.store.r[s] as number;
+      if (distanceToLine(line, this.xAt(s, this.time), this.yAt(s, this.time)) < r)
+        throw new ChapgameError("p1", `the line would overlap body '${bid}'`);
+    }
+    return line;
+  }
+
+  private checkedPoint(id: string, p: Vec2): Point {
+    const [x, y] = requireVec("p", p);
+    for (const [bid, s] of this.index) {
+      const dx = this.xAt(s, this.time) - x;
+      const dy = this.yAt(s, this.time) - y;
+      const r = this.store.r[s] as number;
+      if (dx * dx + dy * dy < r * r) throw new ChapgameError("p", `the point would lie inside body '${bid}'`);
+    }
+    return { id, x, y };
+  }
+
+  // ---- globals ------------------------------------------------------------------------------
+
+  setGlobal(patch: { g?: number; gravity?: Vec2 }): void {
+    const g = requireNonNegativeFinite("g", patch.g ?? this.g);
+    const gravity = requireVec("gravity", patch.gravity ?? this.gravity);
+    for (const [id, s] of this.index)
+      checkFrictionGravity(`bodies.${id}.mu`, this.store.mu[s] as number, gravity);
+    const now = this.time;
+    const b = this.store;
+    const states = [...this.index.values()].map((s) => [
+      s,
+      this.xAt(s, now),
+      this.yAt(s, now),
+      velocityAt(b.t0[s] as number, b.vx0[s] as number, b.ax[s] as number, now),
+      velocityAt(b.t0[s] as number, b.vy0[s] as number, b.ay[s] as number, now),
+    ]);
+    this.g = g;
+    this.gx = gravity[0];
+    this.gy = gravity[1];
+    for (const [s, x, y, vx, vy] of states)
+      this.setMotion(s as number, now, x as number, y as number, vx as number, vy as number);
+    this.dirty = true;
+  }
+
+  // ---- simulation ---------------------------------------------------------------------------
+
+  advance(limits: AdvanceLimits = {}, onEvent?: (e: WorldEvent) => void): AdvanceResult {
+    const untilTime = limits.untilTime ?? INF;
+    const maxEvents = limits.maxEvents ?? INF;
+    if (Number.isNaN(untilTime) || untilTime < this.time)
+      throw new ChapgameError("untilTime", `must be >= the current time ${this.time}`);
+    if (Number.isNaN(maxEvents) || maxEvents < 0)
+      throw new ChapgameError("maxEvents", "must be a number >= 0");
+    this.prepare();
+    let events = 0;
+    while (events < maxEvents) {
+      const r = this.stepOnce(untilTime, onEvent);
+      if (r < 0) break;
+      events += r;
+    }
+    if (events >= maxEvents && maxEvents !== INF) return { events, reason: "events" };
+    if (untilTime !== INF) this.time = untilTime;
+    return { events, reason: this.heap.size === 0 ? "idle" : "time" };
+  }
+
+  /**
+   * Time of the next collision or stop (+Infinity when nothing will ever happen). Costs a copy of
+   * the world: finding it may need internal work (cell crossings) that must not move this world.
+   */
+  nextEventTime(): number {
+    const probe = this.clone();
+    let t = INF;
+    probe.advance({ maxEvents: 1 }, (e) => {
+      t = e.time;
+    });
+    return t;
+  }
+
+  private prepare(): void {
+    if (!this.dirty) return;
+    this.rebuildGrid();
+    this.predictAll();
+  }
+
+  /** Make sure the grid can answer overlap queries for a disc (x, y, r); rebuild it if not. */
+  private prepareGridFor(x: number, y: number, r: number): void {
+    if (this.index.size < LINEAR_SCAN_BODIES) {
+      if (r > this.gridMaxR) this.rebuildGrid(x, y, r, 2);
+      return;
+    }
+    const g = this.grid;
+    const inside = x >= g.ox && x <= g.ox + g.nx * g.w && y >= g.oy && y <= g.oy + g.ny * g.w;
+    if (r > this.gridMaxR || !inside) this.rebuildGrid(x, y, r, 2);
+  }
+
+  /** Throw if a disc (x, y, r) would overlap any body (other than slot `self`), line or point. */
+  private checkOverlap(x: number, y: number, r: number, self: number): void {
+    const b = this.store;
+    const now = this.time;
+    const test = (s: number): void => {
+      if (s === self) return;
+      const dx = this.xAt(s, now) - x;
+      const dy = this.yAt(s, now) - y;
+      const R = r + (b.r[s] as number);
+      if (dx * dx + dy * dy < R * R)
+        throw new ChapgameError("x", `the body would overlap body '${b.ids[s]}'`);
+    };
+    if (this.index.size < LINEAR_SCAN_BODIES) {
+      for (const s of this.index.values()) test(s);
+    } else {
+      const g = this.grid;
+      const cx = g.column(x);
+      const cy = g.row(y);
+      for (let yy = Math.max(0, cy - 1); yy <= Math.min(g.ny - 1, cy + 1); yy++)
+        for (let xx = Math.max(0, cx - 1); xx <= Math.min(g.nx - 1, cx + 1); xx++)
+          for (let s = g.head[yy * g.nx + xx] as number; s >= 0; s = g.next[s] as number) test(s);
+    }
+    for (const line of this.lineList)
+      if (distanceToLine(line, x, y) < r)
+        throw new ChapgameError("x", `the body would overlap line '${line.id}'`);
+    for (const p of this.pointList)
+      if ((p.x - x) * (p.x - x) + (p.y - y) * (p.y - y) < r * r)
+        throw new ChapgameError("x", `the body would overlap point '${p.id}'`);
+  }
+}
