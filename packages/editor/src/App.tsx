@@ -1,0 +1,45 @@
+/** The editor's layout: header (presets, message), canvas with its toolbar, side panels, time bar. */
+import { SceneCanvas } from "./canvas/SceneCanvas";
+import { BodiesTable } from "./panels/BodiesTable";
+import { CalculationPanel } from "./panels/CalculationPanel";
+import { EventLog } from "./panels/EventLog";
+import { GlobalsPanel } from "./panels/GlobalsPanel";
+import { LinesTable } from "./panels/LinesTable";
+import { MessageBar } from "./panels/MessageBar";
+import { PointsTable } from "./panels/PointsTable";
+import { PresetsMenu } from "./panels/PresetsMenu";
+import { SpeedPanel } from "./panels/SpeedPanel";
+import { StatePanel } from "./panels/StatePanel";
+import { StatsPanel } from "./panels/StatsPanel";
+import { TimePanel } from "./panels/TimePanel";
+import { Toolbar } from "./panels/Toolbar";
+
+export function App() {
+  return (
+    <div className="app">
+      <header className="header">
+        <h1>chapgame</h1>
+        <PresetsMenu />
+        <MessageBar />
+      </header>
+      <main className="stage">
+        <Toolbar />
+        <SceneCanvas />
+        <div className="timebar">
+          <TimePanel />
+          <SpeedPanel />
+        </div>
+      </main>
+      <aside className="side">
+        <CalculationPanel />
+        <BodiesTable />
+        <LinesTable />
+        <PointsTable />
+        <GlobalsPanel />
+        <EventLog />
+        <StatsPanel />
+        <StatePanel />
+      </aside>
+    </div>
+  );
+}

@@ -1,0 +1,190 @@
+/**
+ * Draws one Frame on a 2D canvas context already scaled to CSS pixels. Batched for thousands of
+ * discs: one path for all disc outlines, one for velocity arrows; ids are drawn only when a disc is
+ * large enough on screen to hold its label.
+ */
+import type { Vec2 } from "../engineTypes";
+import { F_R, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE, type Frame } from "../remote/protocol";
+import type { Selection, View } from "../store/uiStore";
+import { clipToRect } from "./clip";
+import { type Size, toScreen, toWorld } from "./viewTransform";
+
+export type Overlay =
+  | { kind: "disc"; x: number; y: number; r: number }
+  | { kind: "arrow"; from: Vec2; to: Vec2 }
+  | { kind: "line"; p1: Vec2; p2: Vec2; lineKind: "line" | "ray" | "segment" };
+
+export interface DrawOptions {
+  selection: Selection;
+  highlight: ReadonlySet<string>;
+  /** Recent world positions per body id, oldest first: x0, y0, x1, y1, ... */
+  trails: ReadonlyMap<string, number[]> | null;
+  overlay: Overlay | null;
+}
+
+/** Seconds of motion an arrow shows: the arrow ends where the disc would be after ARROW_SECONDS. */
+export const ARROW_SECONDS = 0.5;
+const LABEL_MIN_RADIUS_PX = 9;
+const COLORS = { disc: "#1d2a3a", fill: "rgba(70,110,160,0.12)", selected: "#d9480f", highlight: "#e8590c" };
+
+export function drawFrame(
+  ctx: CanvasRenderingContext2D,
+  f: Frame | null,
+  view: View,
+  size: Size,
+  o: DrawOptions,
+) {
+  ctx.clearRect(0, 0, size.width, size.height);
+  ctx.fillStyle = "#fbfaf7";
+  ctx.fillRect(0, 0, size.width, size.height);
+  if (!f) return;
+  const [x0, y1] = toWorld(view, size, 0, 0);
+  const [x1, y0] = toWorld(view, size, size.width, size.height);
+  const rect = { minX: x0, minY: y0, maxX: x1, maxY: y1 };
+  const sel = o.selection;
+
+  // lines
+  for (const l of f.lines) {
+    const c = clipToRect(l.p1, l.p2, l.kind, rect);
+    if (!c) continue;
+    const hot = (sel?.kind === "line" && sel.id === l.id) || o.highlight.has(l.id);
+    ctx.strokeStyle = hot ? COLORS.selected : "#444";
+    ctx.lineWidth = hot ? 3 : 2;
+    ctx.beginPath();
+    ctx.moveTo(...toScreen(view, size, c[0][0], c[0][1]));
+    ctx.lineTo(...toScreen(view, size, c[1][0], c[1][1]));
+    ctx.stroke();
+  }
+  // points
+  for (const p of f.points) {
+    const hot = (sel?.kind === "point" && sel.id === p.id) || o.highlight.has(p.id);
+    const [sx, sy] = toScreen(view, size, p.p[0], p.p[1]);
+    ctx.fillStyle = hot ? COLORS.selected : "#222";
+    ctx.beginPath();
+    ctx.arc(sx, sy, hot ? 5 : 4, 0, 2 * Math.PI);
+    ctx.fill();
+  }
+  // trails
+  if (o.trails) {
+    ctx.strokeStyle = "rgba(60,90,140,0.35)";
+    ctx.lineWidth = 1;
+    ctx.beginPath();
+    for (const pts of o.trails.values()) {
+      for (let k = 0; k + 1 < pts.length; k += 2) {
+        const [sx, sy] = toScreen(view, size, pts[k]!, pts[k + 1]!);
+        if (k === 0) ctx.moveTo(sx, sy);
+        else ctx.lineTo(sx, sy);
+      }
+    }
+    ctx.stroke();
+  }
+  // discs
+  const d = f.data;
+  const n = f.ids.length;
+  const margin = 2;
+  ctx.beginPath();
+  for (let i = 0; i < n; i++) {
+    const b = i * FRAME_STRIDE;
+    const rs = d[b + F_R]! * view.scale;
+    const [sx, sy] = toScreen(view, size, d[b + F_X]!, d[b + F_Y]!);
+    if (
+      sx + rs < -margin ||
+      sx - rs > size.width + margin ||
+      sy + rs < -margin ||
+      sy - rs > size.height + margin
+    )
+      continue;
+    ctx.moveTo(sx + Math.max(rs, 0.5), sy);
+    ctx.arc(sx, sy, Math.max(rs, 0.5), 0, 2 * Math.PI);
+  }
+  ctx.fillStyle = COLORS.fill;
+  ctx.fill();
+  ctx.strokeStyle = COLORS.disc;
+  ctx.lineWidth = 1.25;
+  ctx.stroke();
+  // velocity arrows
+  ctx.beginPath();
+  for (let i = 0; i < n; i++) {
+    const b = i * FRAME_STRIDE;
+    const vx = d[b + F_VX]!;
+    const vy = d[b + F_VY]!;
+    if (vx === 0 && vy === 0) continue;
+    const [sx, sy] = toScreen(view, size, d[b + F_X]!, d[b + F_Y]!);
+    const ex = sx + vx * ARROW_SECONDS * view.scale;
+    const ey = sy - vy * ARROW_SECONDS * view.scale;
+    arrowPath(ctx, sx, sy, ex, ey);
+  }
+  ctx.strokeStyle = "#2b8a3e";
+  ctx.lineWidth = 1.25;
+  ctx.stroke();
+  // selected / highlighted discs and labels
+  ctx.font = "11px system-ui, sans-serif";
+  ctx.textAlign = "center";
+  ctx.textBaseline = "middle";
+  for (let i = 0; i < n; i++) {
+    const id = f.ids[i]!;
+    const b = i * FRAME_STRIDE;
+    const rs = d[b + F_R]! * view.scale;
+    const hot = (sel?.kind === "body" && sel.id === id) || o.highlight.has(id);
+    if (!hot && rs < LABEL_MIN_RADIUS_PX) continue;
+    const [sx, sy] = toScreen(view, size, d[b + F_X]!, d[b + F_Y]!);
+    if (sx + rs < 0 || sx - rs > size.width || sy + rs < 0 || sy - rs > size.height) continue;
+    if (hot) {
+      ctx.strokeStyle = COLORS.selected;
+      ctx.lineWidth = 2.5;
+      ctx.beginPath();
+      ctx.arc(sx, sy, Math.max(rs, 3), 0, 2 * Math.PI);
+      ctx.stroke();
+    }
+    if (rs >= LABEL_MIN_RADIUS_PX) {
+      ctx.fillStyle = hot ? COLORS.selected : COLORS.disc;
+      ctx.fillText(id, sx, sy);
+    }
+  }
+  drawOverlay(ctx, view, size, rect, o.overlay);
+}
+
+function arrowPath(ctx: CanvasRenderingContext2D, sx: number, sy: number, ex: number, ey: number) {
+  const dx = ex - sx;
+  const dy = ey - sy;
+  const len = Math.hypot(dx, dy);
+  if (len < 2) return;
+  ctx.moveTo(sx, sy);
+  ctx.lineTo(ex, ey);
+  const h = Math.min(8, len / 3);
+  const ux = dx / len;
+  const uy = dy / len;
+  ctx.moveTo(ex - h * ux + h * 0.5 * uy, ey - h * uy - h * 0.5 * ux);
+  ctx.lineTo(ex, ey);
+  ctx.lineTo(ex - h * ux - h * 0.5 * uy, ey - h * uy + h * 0.5 * ux);
+}
+
+function drawOverlay(
+  ctx: CanvasRenderingContext2D,
+  view: View,
+  size: Size,
+  rect: { minX: number; minY: number; maxX: number; maxY: number },
+  o: Overlay | null,
+) {
+  if (!o) return;
+  ctx.setLineDash([5, 4]);
+  ctx.strokeStyle = COLORS.selected;
+  ctx.lineWidth = 1.5;
+  ctx.beginPath();
+  if (o.kind === "disc") {
+    const [sx, sy] = toScreen(view, size, o.x, o.y);
+    ctx.arc(sx, sy, Math.max(o.r * view.scale, 2), 0, 2 * Math.PI);
+  } else if (o.kind === "arrow") {
+    const [sx, sy] = toScreen(view, size, o.from[0], o.from[1]);
+    const [ex, ey] = toScreen(view, size, o.to[0], o.to[1]);
+    arrowPath(ctx, sx, sy, ex, ey);
+  } else {
+    const c = clipToRect(o.p1, o.p2, o.lineKind, rect);
+    if (c) {
+      ctx.moveTo(...toScreen(view, size, c[0][0], c[0][1]));
+      ctx.lineTo(...toScreen(view, size, c[1][0], c[1][1]));
+    }
+  }
+  ctx.stroke();
+  ctx.setLineDash([]);
+}

@@ -1,0 +1,35 @@
+// @vitest-environment jsdom
+import { describe, expect, it } from "vitest";
+import type { SceneFile } from "../engineTypes";
+import {
+  decodeSceneFromUrl,
+  encodeSceneForUrl,
+  loadAutosave,
+  saveAutosave,
+  sceneFromHash,
+} from "./persistence";
+
+const scene: SceneFile = {
+  format: "chapgame",
+  version: 1,
+  g: 9.81,
+  gravity: [0, -1],
+  actions: [{ time: 0, type: "addBody", id: "ä/β", x: 1, y: 2, r: 3, m: 4, mu: 0.5, v: [1, -1] }],
+};
+
+describe("persistence", () => {
+  it("a scene survives the URL round trip, also with non-ASCII ids, and the code is URL-safe", () => {
+    const code = encodeSceneForUrl(scene);
+    expect(code).toMatch(/^[A-Za-z0-9_-]+$/);
+    expect(decodeSceneFromUrl(code)).toEqual(scene);
+    expect(sceneFromHash(`#scene=${code}`)).toEqual(scene);
+    expect(sceneFromHash("#other")).toBeNull();
+  });
+
+  it("autosave round-trips through localStorage and ignores broken entries", () => {
+    saveAutosave(localStorage, scene);
+    expect(loadAutosave(localStorage)).toEqual(scene);
+    localStorage.setItem("chapgame.editor.autosave.v1", "{broken");
+    expect(loadAutosave(localStorage)).toBeNull();
+  });
+});

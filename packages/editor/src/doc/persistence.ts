@@ -1,0 +1,50 @@
+/**
+ * Keeping work: autosave to localStorage and shareable URLs (the scene as base64url JSON in the
+ * location hash, `#scene=...`). Pure encode/decode plus thin storage access.
+ */
+import type { SceneFile } from "../engineTypes";
+import { parseSceneText, sceneText } from "./sceneIo";
+
+export const AUTOSAVE_KEY = "chapgame.editor.autosave.v1";
+
+export function encodeSceneForUrl(scene: SceneFile): string {
+  const bytes = new TextEncoder().encode(JSON.stringify(scene));
+  let bin = "";
+  for (const b of bytes) bin += String.fromCharCode(b);
+  return btoa(bin).replace(/\+/g, "-").replace(/\//g, "_").replace(/=+$/, "");
+}
+
+export function decodeSceneFromUrl(code: string): SceneFile {
+  const b64 = code.replace(/-/g, "+").replace(/_/g, "/");
+  const bin = atob(b64 + "=".repeat((4 - (b64.length % 4)) % 4));
+  const bytes = Uint8Array.from(bin, (c) => c.charCodeAt(0));
+  return parseSceneText(new TextDecoder().decode(bytes));
+}
+
+/** The scene in a location hash like `#scene=...`, or null when there is none. */
+export function sceneFromHash(hash: string): SceneFile | null {
+  const m = /^#?scene=(.+)$/.exec(hash);
+  return m?.[1] ? decodeSceneFromUrl(m[1]) : null;
+}
+
+export function shareUrl(location: { origin: string; pathname: string }, scene: SceneFile): string {
+  return `${location.origin}${location.pathname}#scene=${encodeSceneForUrl(scene)}`;
+}
+
+export function saveAutosave(storage: Storage, scene: SceneFile): void {
+  try {
+    storage.setItem(AUTOSAVE_KEY, sceneText(scene));
+  } catch {
+    // Storage full or disabled: autosave is best effort.
+  }
+}
+
+export function loadAutosave(storage: Storage): SceneFile | null {
+  const text = storage.getItem(AUTOSAVE_KEY);
+  if (!text) return null;
+  try {
+    return parseSceneText(text);
+  } catch {
+    return null;
+  }
+}

@@ -1,0 +1,17 @@
+/** Entry point: boots the editor and renders the app. */
+import { StrictMode } from "react";
+import { createRoot } from "react-dom/client";
+import { App } from "./App";
+import { boot } from "./boot";
+import { EditorContext } from "./EditorContext";
+import "./styles.css";
+
+boot().then((editor) => {
+  createRoot(document.getElementById("root")!).render(
+    <StrictMode>
+      <EditorContext.Provider value={editor}>
+        <App />
+      </EditorContext.Provider>
+    </StrictMode>,
+  );
+});

@@ -1,0 +1,133 @@
+/**
+ * The Bodies table: id, x, y, vx, vy, |v|, r, m, μ of every body at the current time (live while
+ * playing, refreshed a few times a second). Every cell is editable; an edit is an action at the
+ * current time; refused values show the engine's message in place. Rows select bodies.
+ */
+import type { ReactNode } from "react";
+import { useEditor, useUi } from "../EditorContext";
+import { F_M, F_MU, F_R, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE } from "../remote/protocol";
+import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
+import { useLiveFrame } from "./useLiveFrame";
+
+/** Rows shown at most (the selected body is always shown); the canvas shows them all. */
+export const MAX_ROWS = 200;
+
+type Field = "x" | "y" | "vx" | "vy" | "speed" | "r" | "m" | "mu";
+const COLUMNS: { field: Field; title: string; offset: number | null }[] = [
+  { field: "x", title: "x", offset: F_X },
+  { field: "y", title: "y", offset: F_Y },
+  { field: "vx", title: "vx", offset: F_VX },
+  { field: "vy", title: "vy", offset: F_VY },
+  { field: "speed", title: "|v|", offset: null },
+  { field: "r", title: "r", offset: F_R },
+  { field: "m", title: "m", offset: F_M },
+  { field: "mu", title: "μ", offset: F_MU },
+];
+
+export function BodiesTable() {
+  const editor = useEditor();
+  const frame = useLiveFrame();
+  const selection = useUi((s) => s.selection);
+  const selectedId = selection?.kind === "body" ? selection.id : null;
+
+  const commit = (id: string, field: Field, vx: number, vy: number) => async (text: string) => {
+    const x = parseNumber(text);
+    if (x === null) return `${field}: must be a number`;
+    switch (field) {
+      case "vx":
+        return editor.updateBody(id, { v: [x, vy] });
+      case "vy":
+        return editor.updateBody(id, { v: [vx, x] });
+      case "speed": {
+        const s = Math.hypot(vx, vy);
+        if (x < 0) return "|v|: must be zero or positive";
+        return editor.updateBody(id, { v: s > 0 ? [(vx * x) / s, (vy * x) / s] : [x, 0] });
+      }
+      default:
+        return editor.updateBody(id, { [field]: x });
+    }
+  };
+
+  const rows: ReactNode[] = [];
+  const n = frame?.ids.length ?? 0;
+  for (let i = 0; frame && i < n; i++) {
+    const id = frame.ids[i]!;
+    if (rows.length >= MAX_ROWS && id !== selectedId) continue;
+    const o = i * FRAME_STRIDE;
+    const vx = frame.data[o + F_VX]!;
+    const vy = frame.data[o + F_VY]!;
+    rows.push(
+      <tr
+        key={id}
+        aria-selected={id === selectedId}
+        className={id === selectedId ? "selected" : undefined}
+        onClick={() => editor.ui.setState({ selection: { kind: "body", id } })}
+      >
+        <td>
+          <EditableCell
+            label={`${id} id`}
+            value={id}
+            size={5}
+            onCommit={(text) => editor.rename("body", id, text)}
+          />
+        </td>
+        {COLUMNS.map((c) => (
+          <td key={c.field}>
+            <EditableCell
+              label={`${id} ${c.field}`}
+              value={formatNumber(c.offset === null ? Math.hypot(vx, vy) : frame.data[o + c.offset]!)}
+              onCommit={commit(id, c.field, vx, vy)}
+            />
+          </td>
+        ))}
+        <td>
+          <button
+            type="button"
+            aria-label={`Delete ${id}`}
+            onClick={() => {
+              editor.ui.setState({ selection: { kind: "body", id } });
+              void editor.deleteSelection();
+            }}
+          >
+            ✕
+          </button>
+        </td>
+      </tr>,
+    );
+  }
+
+  const addBody = () => {
+    const v = editor.ui.getState().view;
+    void editor.addBody(v.cx, v.cy, Math.max(1e-3, Number((20 / v.scale).toPrecision(2))));
+  };
+
+  return (
+    <section className="panel" aria-labelledby="bodies-title">
+      <h2 id="bodies-title">
+        Bodies <small>({n})</small>
+        <button type="button" onClick={addBody}>
+          Add body
+        </button>
+      </h2>
+      <div className="table-scroll">
+        <table aria-label="Bodies">
+          <thead>
+            <tr>
+              <th>id</th>
+              {COLUMNS.map((c) => (
+                <th key={c.field}>{c.title}</th>
+              ))}
+              <th />
+            </tr>
+          </thead>
+          <tbody>{rows}</tbody>
+        </table>
+      </div>
+      {n > rows.length && (
+        <p className="note">
+          Showing {rows.length} of {n} bodies.
+        </p>
+      )}
+    </section>
+  );
+}

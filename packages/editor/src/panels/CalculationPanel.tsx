@@ -1,0 +1,107 @@
+/**
+ * Calculation: compute ahead by seconds and/or events, or without limit (∞); the horizon; automatic
+ * extension during playback; progress and Cancel while the worker computes.
+ */
+import { useEditor, useInfoValue, useUi } from "../EditorContext";
+import type { CalcSettings } from "../store/uiStore";
+import { formatNumber, parseNumber } from "./EditableCell";
+
+export function CalculationPanel() {
+  const editor = useEditor();
+  const calc = useUi((s) => s.calc);
+  const horizon = useInfoValue((i) => i.horizon);
+  const computing = useInfoValue((i) => i.computing);
+  const idle = useInfoValue((i) => i.idle);
+  const set = (patch: Partial<CalcSettings>) =>
+    editor.ui.setState((s) => ({ calc: { ...s.calc, ...patch } }));
+  const unlimited = !calc.useTime && !calc.useEvents;
+
+  let progress: number | null = null;
+  if (computing) {
+    const parts: number[] = [];
+    if (computing.targetTime !== null && computing.targetTime > computing.startHorizon)
+      parts.push((horizon - computing.startHorizon) / (computing.targetTime - computing.startHorizon));
+    if (computing.targetEvents !== null && computing.targetEvents > 0)
+      parts.push(computing.events / computing.targetEvents);
+    progress = parts.length ? Math.min(1, Math.max(...parts)) : null;
+  }
+
+  return (
+    <section className="panel" aria-labelledby="calc-title">
+      <h2 id="calc-title">Calculation</h2>
+      <div className="row">
+        <label>
+          <input
+            type="checkbox"
+            checked={calc.useTime}
+            onChange={(e) => set({ useTime: e.target.checked })}
+          />{" "}
+          Time
+        </label>
+        <input
+          aria-label="Seconds ahead"
+          size={5}
+          defaultValue={calc.seconds}
+          onBlur={(e) => {
+            const x = parseNumber(e.target.value);
+            if (x !== null && x > 0 && Number.isFinite(x)) set({ seconds: x });
+            else e.target.value = String(calc.seconds);
+          }}
+        />{" "}
+        s
+        <label>
+          <input
+            type="checkbox"
+            checked={calc.useEvents}
+            onChange={(e) => set({ useEvents: e.target.checked })}
+          />{" "}
+          Events
+        </label>
+        <input
+          aria-label="Events ahead"
+          size={6}
+          defaultValue={calc.events}
+          onBlur={(e) => {
+            const x = parseNumber(e.target.value);
+            if (x !== null && x >= 1 && Number.isInteger(x)) set({ events: x });
+            else e.target.value = String(calc.events);
+          }}
+        />
+        <button
+          type="button"
+          aria-pressed={unlimited}
+          title="Compute until no event is left"
+          onClick={() => set({ useTime: false, useEvents: false })}
+        >
+          ∞
+        </button>
+      </div>
+      <div className="row">
+        <button type="button" onClick={() => editor.computeAhead()} disabled={computing !== null}>
+          Compute
+        </button>
+        <label>
+          <input
+            type="checkbox"
+            checked={calc.autoExtend}
+            onChange={(e) => set({ autoExtend: e.target.checked })}
+          />{" "}
+          Auto-extend
+        </label>
+        <span>
+          horizon <output aria-label="Computed horizon">{formatNumber(horizon)}</output> s
+          {idle ? " (no more events)" : ""}
+        </span>
+      </div>
+      {computing && (
+        <div className="row">
+          <progress aria-label="Computation progress" max={1} value={progress ?? undefined} />
+          <span>{computing.events} events</span>
+          <button type="button" onClick={() => editor.cancelCompute()}>
+            Cancel
+          </button>
+        </div>
+      )}
+    </section>
+  );
+}

@@ -1,0 +1,99 @@
+/**
+ * The Event log: the events around the current time (time, kind, participants). Clicking an entry
+ * jumps there, selects and highlights its participants; a body filter keeps only that body's events.
+ */
+import { useEffect, useState } from "react";
+import { useEditor, useInfoValue, useUi } from "../EditorContext";
+import type { EventPage } from "../remote/protocol";
+import { formatNumber } from "./EditableCell";
+
+const BEFORE = 30;
+const AFTER = 30;
+const KIND_NAMES: Record<string, string> = {
+  bodyBody: "body–body",
+  bodyLine: "body–line",
+  bodyPoint: "body–point",
+  stop: "stop",
+  action: "action",
+};
+
+export function EventLog() {
+  const editor = useEditor();
+  const t = useUi((s) => s.t);
+  const filter = useUi((s) => s.eventFilter);
+  const revision = useInfoValue((i) => i.revision);
+  const [page, setPage] = useState<EventPage | null>(null);
+
+  useEffect(() => {
+    if (revision < 0) return;
+    let live = true;
+    const timer = setTimeout(() => {
+      editor.client.events(t, BEFORE, AFTER, filter.trim() === "" ? null : filter.trim()).then(
+        (p) => live && setPage(p),
+        () => {},
+      );
+    }, 120);
+    return () => {
+      live = false;
+      clearTimeout(timer);
+    };
+  }, [editor, t, filter, revision]);
+
+  return (
+    <section className="panel" aria-labelledby="log-title">
+      <h2 id="log-title">
+        Event log <small>({page?.total ?? 0})</small>
+      </h2>
+      <div className="row">
+        <input
+          aria-label="Filter by body"
+          placeholder="filter by body id"
+          size={12}
+          value={filter}
+          onChange={(e) => editor.ui.setState({ eventFilter: e.target.value })}
+        />
+      </div>
+      <div className="table-scroll log">
+        <table aria-label="Event log">
+          <thead>
+            <tr>
+              <th>#</th>
+              <th>time</th>
+              <th>kind</th>
+              <th>participants</th>
+            </tr>
+          </thead>
+          <tbody>
+            {page?.events.map((e, k) => {
+              const index = page.first + k;
+              const past = e.time <= t;
+              return (
+                <tr
+                  key={index}
+                  className={past ? "past" : undefined}
+                  tabIndex={0}
+                  onClick={() =>
+                    editor.ui.setState({
+                      t: e.time,
+                      playing: false,
+                      highlight: e.ids,
+                      selection: e.ids[0] ? { kind: "body", id: e.ids[0] } : null,
+                    })
+                  }
+                  onKeyDown={(ev) => {
+                    if (ev.key === "Enter") ev.currentTarget.click();
+                  }}
+                >
+                  <td>{index + 1}</td>
+                  <td>{formatNumber(e.time)}</td>
+                  <td>{KIND_NAMES[e.type] ?? e.type}</td>
+                  <td>{e.ids.join(", ")}</td>
+                </tr>
+              );
+            })}
+          </tbody>
+        </table>
+      </div>
+    </section>
+  );
+}

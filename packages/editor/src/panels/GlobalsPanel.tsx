@@ -1,0 +1,50 @@
+/** Globals at the current time: friction g (quick buttons 1 and 9.81) and the gravity vector. */
+import { useEditor } from "../EditorContext";
+import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
+import { useLiveFrame } from "./useLiveFrame";
+
+export function GlobalsPanel() {
+  const editor = useEditor();
+  const frame = useLiveFrame();
+  const g = frame?.g ?? editor.doc.g;
+  const gravity = frame?.gravity ?? editor.doc.gravity;
+  const num = (name: string, apply: (x: number) => Promise<string | null>) => async (text: string) => {
+    const x = parseNumber(text);
+    return x === null ? `${name}: must be a number` : apply(x);
+  };
+  return (
+    <section className="panel" aria-labelledby="globals-title">
+      <h2 id="globals-title">Globals</h2>
+      <div className="row">
+        g{" "}
+        <EditableCell
+          label="g"
+          value={formatNumber(g)}
+          size={6}
+          onCommit={num("g", (x) => editor.setGlobal({ g: x }))}
+        />
+        <button type="button" onClick={() => void editor.setGlobal({ g: 1 })}>
+          g = 1
+        </button>
+        <button type="button" onClick={() => void editor.setGlobal({ g: 9.81 })}>
+          g = 9.81
+        </button>
+      </div>
+      <div className="row">
+        gravity{" "}
+        <EditableCell
+          label="gravity x"
+          value={formatNumber(gravity[0])}
+          size={6}
+          onCommit={num("gravity x", (x) => editor.setGlobal({ gravity: [x, gravity[1]] }))}
+        />
+        <EditableCell
+          label="gravity y"
+          value={formatNumber(gravity[1])}
+          size={6}
+          onCommit={num("gravity y", (y) => editor.setGlobal({ gravity: [gravity[0], y] }))}
+        />
+      </div>
+    </section>
+  );
+}

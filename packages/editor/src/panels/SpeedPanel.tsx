@@ -1,0 +1,60 @@
+/**
+ * Speed: −0.1, Reverse (−1×), Play/Pause, 1×, +0.1 and a speed field. Negative speeds replay
+ * backwards (exactly: every frame is stateAt of its time). Speed is not an edit (no undo step).
+ */
+import { useState } from "react";
+import { useEditor, useUi } from "../EditorContext";
+import { formatNumber, parseNumber } from "./EditableCell";
+
+export function SpeedPanel() {
+  const editor = useEditor();
+  const speed = useUi((s) => s.speed);
+  const playing = useUi((s) => s.playing);
+  const [draft, setDraft] = useState<string | null>(null);
+  const commit = () => {
+    if (draft === null) return;
+    const x = parseNumber(draft);
+    if (x !== null) editor.setSpeed(x);
+    setDraft(null);
+  };
+  const play = (s: number) => {
+    editor.setSpeed(s);
+    editor.ui.setState({ playing: true });
+  };
+  return (
+    <section className="panel" aria-labelledby="speed-title">
+      <h2 id="speed-title">Speed</h2>
+      <div className="row">
+        <button type="button" aria-label="Slower" onClick={() => editor.setSpeed(speed - 0.1)}>
+          −0.1
+        </button>
+        <button type="button" aria-label="Reverse" onClick={() => play(-1)}>
+          −1×
+        </button>
+        <button type="button" className="primary" onClick={() => editor.togglePlay()}>
+          {playing ? "Pause" : "Play"}
+        </button>
+        <button type="button" aria-label="Normal speed" onClick={() => play(1)}>
+          1×
+        </button>
+        <button type="button" aria-label="Faster" onClick={() => editor.setSpeed(speed + 0.1)}>
+          +0.1
+        </button>
+        <label>
+          ×{" "}
+          <input
+            aria-label="Speed"
+            size={6}
+            value={draft ?? formatNumber(speed)}
+            onFocus={() => setDraft(formatNumber(speed))}
+            onChange={(e) => setDraft(e.target.value)}
+            onBlur={commit}
+            onKeyDown={(e) => {
+              if (e.key === "Enter") commit();
+            }}
+          />
+        </label>
+      </div>
+    </section>
+  );
+}

@@ -1,0 +1,125 @@
+/**
+ * State: Copy / Paste the scene as JSON (format v1; a broken paste shows the validation message and
+ * keeps the current scene), Save / Load a file, Clear, a shareable link, Undo / Redo.
+ */
+import { useRef, useState } from "react";
+import { shareUrl } from "../doc/persistence";
+import { parseSceneText, sceneText } from "../doc/sceneIo";
+import { useEditor, useHistory } from "../EditorContext";
+
+export function StatePanel() {
+  const editor = useEditor();
+  const canUndo = useHistory((h) => h.past.length > 0);
+  const canRedo = useHistory((h) => h.future.length > 0);
+  const [text, setText] = useState("");
+  const fileRef = useRef<HTMLInputElement>(null);
+
+  const load = async (source: string) => {
+    try {
+      return await editor.loadScene(parseSceneText(source));
+    } catch (e) {
+      const msg = e instanceof Error ? e.message : String(e);
+      editor.ui.setState({ message: { text: msg, tone: "error" } });
+      return msg;
+    }
+  };
+
+  const copy = async () => {
+    const json = sceneText(editor.doc);
+    setText(json);
+    try {
+      await navigator.clipboard.writeText(json);
+      editor.info("Scene copied to the clipboard.");
+    } catch {
+      editor.info("Scene JSON is in the text box.");
+    }
+  };
+
+  const paste = async () => {
+    let source = text;
+    if (source.trim() === "") {
+      try {
+        source = await navigator.clipboard.readText();
+      } catch {
+        editor.ui.setState({
+          message: { text: "Paste the scene JSON into the text box first.", tone: "error" },
+        });
+        return;
+      }
+    }
+    await load(source);
+  };
+
+  const save = () => {
+    const blob = new Blob([sceneText(editor.doc)], { type: "application/json" });
+    const a = document.createElement("a");
+    a.href = URL.createObjectURL(blob);
+    a.download = "scene.chapgame.json";
+    a.click();
+    setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+  };
+
+  const share = async () => {
+    const url = shareUrl(window.location, editor.doc);
+    history.replaceState(null, "", url);
+    try {
+      await navigator.clipboard.writeText(url);
+      editor.info("Link copied to the clipboard (and shown in the address bar).");
+    } catch {
+      editor.info("The link is in the address bar.");
+    }
+  };
+
+  return (
+    <section className="panel" aria-labelledby="state-title">
+      <h2 id="state-title">State</h2>
+      <div className="row">
+        <button type="button" onClick={() => void editor.undo()} disabled={!canUndo}>
+          Undo
+        </button>
+        <button type="button" onClick={() => void editor.redo()} disabled={!canRedo}>
+          Redo
+        </button>
+        <button type="button" onClick={() => void editor.clear()}>
+          Clear
+        </button>
+        <button type="button" onClick={save}>
+          Save file
+        </button>
+        <button type="button" onClick={() => fileRef.current?.click()}>
+          Load file
+        </button>
+        <input
+          ref={fileRef}
+          type="file"
+          accept=".json,application/json"
+          aria-label="Scene file"
+          hidden
+          onChange={async (e) => {
+            const f = e.target.files?.[0];
+            if (f) await load(await f.text());
+            e.target.value = "";
+          }}
+        />
+        <button type="button" onClick={() => void share()}>
+          Share link
+        </button>
+      </div>
+      <textarea
+        aria-label="Scene JSON"
+        rows={4}
+        value={text}
+        placeholder="Scene JSON (format v1): Copy fills this box, Paste loads it"
+        onChange={(e) => setText(e.target.value)}
+      />
+      <div className="row">
+        <button type="button" onClick={() => void copy()}>
+          Copy
+        </button>
+        <button type="button" onClick={() => void paste()}>
+          Paste
+        </button>
+      </div>
+    </section>
+  );
+}

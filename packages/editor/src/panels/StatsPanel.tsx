@@ -1,0 +1,61 @@
+/**
+ * Stats: events per kind, actions, horizon, last event time, history size; kinetic energy and
+ * momentum at the current time; a plot of energy and events over the computed span.
+ */
+import { useEffect, useState } from "react";
+import { useEditor, useInfo, useUi } from "../EditorContext";
+import type { SeriesPoint } from "../remote/protocol";
+import { formatNumber } from "./EditableCell";
+import { EnergyPlot } from "./EnergyPlot";
+import { kinetics } from "./energy";
+import { useLiveFrame } from "./useLiveFrame";
+
+const SAMPLES = 120;
+
+export function StatsPanel() {
+  const editor = useEditor();
+  const info = useInfo();
+  const t = useUi((s) => s.t);
+  const frame = useLiveFrame(250);
+  const [series, setSeries] = useState<SeriesPoint[]>([]);
+  const revision = info.revision;
+  const busy = info.computing !== null;
+
+  useEffect(() => {
+    if (revision < 0 || busy) return;
+    const timer = setTimeout(() => editor.client.series(SAMPLES).then(setSeries, () => {}), 300);
+    return () => clearTimeout(timer);
+  }, [editor, revision, busy]);
+
+  const k = kinetics(frame);
+  const c = info.counts;
+  const rows: [string, string][] = [
+    ["body–body", String(c.bodyBody)],
+    ["body–line", String(c.bodyLine)],
+    ["body–point", String(c.bodyPoint)],
+    ["stops", String(c.stop)],
+    ["actions", String(info.doc?.actions.length ?? 0)],
+    ["events logged", String(info.eventCount)],
+    ["horizon", `${formatNumber(info.horizon)} s`],
+    ["last event", info.lastEventTime === null ? "—" : `${formatNumber(info.lastEventTime)} s`],
+    ["history", info.eventCount ? `${(info.historyBytes / 1024).toFixed(0)} KiB` : "—"],
+    ["kinetic energy", formatNumber(k.energy)],
+    ["momentum", `(${formatNumber(k.px)}, ${formatNumber(k.py)})`],
+  ];
+  return (
+    <section className="panel" aria-labelledby="stats-title">
+      <h2 id="stats-title">Stats</h2>
+      <table aria-label="Stats" className="stats">
+        <tbody>
+          {rows.map(([name, value]) => (
+            <tr key={name}>
+              <th scope="row">{name}</th>
+              <td>{value}</td>
+            </tr>
+          ))}
+        </tbody>
+      </table>
+      <EnergyPlot series={series} t={t} />
+    </section>
+  );
+}

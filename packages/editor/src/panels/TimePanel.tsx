@@ -1,0 +1,90 @@
+/**
+ * Time: the `Time` scrubber over [0, horizon] with event ticks, a time field, −1 / 0 / +1 s and
+ * stepping to the previous / next event. Scrubbing is not an edit (no undo step).
+ */
+import { useEffect, useState } from "react";
+import { useEditor, useInfoValue, useUi } from "../EditorContext";
+import { formatNumber, parseNumber } from "./EditableCell";
+
+const TICKS = 300;
+
+export function TimePanel() {
+  const editor = useEditor();
+  const t = useUi((s) => s.t);
+  const horizon = useInfoValue((i) => i.horizon);
+  const revision = useInfoValue((i) => i.revision);
+  const [ticks, setTicks] = useState<number[]>([]);
+  const [draft, setDraft] = useState<string | null>(null);
+
+  useEffect(() => {
+    if (revision < 0) return;
+    const timer = setTimeout(() => {
+      editor.client.ticks(TICKS).then(setTicks, () => {});
+    }, 200);
+    return () => clearTimeout(timer);
+  }, [editor, revision]);
+
+  const commitDraft = () => {
+    if (draft === null) return;
+    const x = parseNumber(draft);
+    if (x !== null && Number.isFinite(x)) editor.setTime(x);
+    setDraft(null);
+  };
+
+  return (
+    <section className="panel time-panel" aria-labelledby="time-title">
+      <h2 id="time-title">Time</h2>
+      <div className="scrubber">
+        <input
+          type="range"
+          aria-label="Time"
+          min={0}
+          max={horizon}
+          step="any"
+          value={Math.min(t, horizon)}
+          onChange={(e) => editor.setTime(Number(e.target.value))}
+        />
+        <svg className="ticks" viewBox="0 0 1000 10" preserveAspectRatio="none" aria-hidden="true">
+          {horizon > 0 &&
+            ticks.map((x, i) => (
+              <line key={i} x1={(x / horizon) * 1000} x2={(x / horizon) * 1000} y1={0} y2={10} />
+            ))}
+        </svg>
+      </div>
+      <div className="row">
+        <label>
+          t ={" "}
+          <input
+            aria-label="Time (s)"
+            size={9}
+            value={draft ?? formatNumber(t)}
+            onFocus={() => setDraft(formatNumber(t))}
+            onChange={(e) => setDraft(e.target.value)}
+            onBlur={commitDraft}
+            onKeyDown={(e) => {
+              if (e.key === "Enter") commitDraft();
+            }}
+          />{" "}
+          s of <output aria-label="Horizon">{formatNumber(horizon)}</output> s
+        </label>
+      </div>
+      <div className="row">
+        <button type="button" aria-label="Back 1 second" onClick={() => editor.setTime(t - 1)}>
+          −1 s
+        </button>
+        <button type="button" aria-label="Go to start" onClick={() => editor.setTime(0)}>
+          0
+        </button>
+        <button type="button" aria-label="Forward 1 second" onClick={() => editor.setTime(t + 1)}>
+          +1 s
+        </button>
+        <button type="button" onClick={() => void editor.stepEvent(-1)}>
+          Previous event
+        </button>
+        <button type="button" onClick={() => void editor.stepEvent(1)}>
+          Next event
+        </button>
+      </div>
+    </section>
+  );
+}

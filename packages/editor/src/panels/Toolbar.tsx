@@ -1,0 +1,55 @@
+/** The canvas tools (move/pan, velocity, cue, add disc/line/ray/segment/point), fit, trails, delete. */
+import { useEditor, useUi } from "../EditorContext";
+import type { Tool } from "../store/uiStore";
+
+const TOOLS: { tool: Tool; label: string; title: string }[] = [
+  {
+    tool: "move",
+    label: "Move",
+    title: "Select; drag a disc to move it; drag empty space to pan (Shift+drag: velocity)",
+  },
+  { tool: "velocity", label: "Velocity", title: "Drag from a disc to set its velocity" },
+  { tool: "cue", label: "Cue", title: "Click a disc to strike it away from the click point" },
+  { tool: "disc", label: "Disc", title: "Click to add a disc" },
+  { tool: "line", label: "Line", title: "Drag to add an infinite line" },
+  { tool: "ray", label: "Ray", title: "Drag to add a ray" },
+  { tool: "segment", label: "Segment", title: "Drag to add a segment" },
+  { tool: "point", label: "Point", title: "Click to add a fixed point" },
+];
+
+export function Toolbar() {
+  const editor = useEditor();
+  const tool = useUi((s) => s.tool);
+  const trails = useUi((s) => s.trails);
+  const hasSelection = useUi((s) => s.selection !== null);
+  return (
+    <div className="toolbar" role="toolbar" aria-label="Tools">
+      {TOOLS.map((t) => (
+        <button
+          key={t.tool}
+          type="button"
+          aria-pressed={tool === t.tool}
+          title={t.title}
+          onClick={() => editor.ui.setState({ tool: t.tool })}
+        >
+          {t.label}
+        </button>
+      ))}
+      <span className="sep" />
+      <button type="button" onClick={() => editor.ui.setState((s) => ({ fitRequest: s.fitRequest + 1 }))}>
+        Fit
+      </button>
+      <label>
+        <input
+          type="checkbox"
+          checked={trails}
+          onChange={(e) => editor.ui.setState({ trails: e.target.checked })}
+        />{" "}
+        Trails
+      </label>
+      <button type="button" disabled={!hasSelection} onClick={() => void editor.deleteSelection()}>
+        Delete
+      </button>
+    </div>
+  );
+}

@@ -1,0 +1,22 @@
+import { describe, expect, it } from "vitest";
+import { advanceClock, MAX_FRAME_SECONDS } from "./playback";
+
+describe("advanceClock", () => {
+  it("moves time by speed × elapsed, backwards for negative speeds", () => {
+    expect(advanceClock(1, 2, 0.05, 10, false)).toEqual({ t: 1.1, stop: false });
+    expect(advanceClock(1, -1, 0.05, 10, false)).toEqual({ t: 0.95, stop: false });
+  });
+
+  it("caps one step at MAX_FRAME_SECONDS of wall-clock time", () => {
+    expect(advanceClock(0, 1, 5, 10, false).t).toBe(MAX_FRAME_SECONDS);
+  });
+
+  it("stops at 0 going backwards", () => {
+    expect(advanceClock(0.01, -1, 0.05, 10, false)).toEqual({ t: 0, stop: true });
+  });
+
+  it("waits at the horizon while more can be computed, else stops there", () => {
+    expect(advanceClock(9.99, 1, 0.05, 10, true)).toEqual({ t: 10, stop: false });
+    expect(advanceClock(9.99, 1, 0.05, 10, false)).toEqual({ t: 10, stop: true });
+  });
+});

@@ -1,0 +1,53 @@
+/**
+ * The playback clock: on every animation frame while playing, time moves by speed × elapsed
+ * wall-clock time (negative speeds replay backwards), clamped to [0, horizon]. Playing forward near
+ * the horizon asks for more computation (auto-extend) and waits at the horizon for it; playback
+ * pauses at 0 going backwards and at the horizon when nothing more can be computed.
+ */
+import type { Editor } from "./editor";
+
+/** Longest wall-clock step taken in one frame (s): a stalled tab does not jump ahead. */
+export const MAX_FRAME_SECONDS = 0.1;
+/** Auto-extend starts when the horizon is less than this many seconds of playback away. */
+export const EXTEND_LEAD_SECONDS = 2;
+
+/** Pure step of the clock. Returns the new time and whether playback must stop. */
+export function advanceClock(
+  t: number,
+  speed: number,
+  dt: number,
+  horizon: number,
+  canExtend: boolean,
+): { t: number; stop: boolean } {
+  const next = t + speed * Math.min(dt, MAX_FRAME_SECONDS);
+  if (next <= 0 && speed < 0) return { t: 0, stop: true };
+  if (next >= horizon && speed > 0) return { t: horizon, stop: !canExtend };
+  return { t: Math.min(Math.max(next, 0), horizon), stop: false };
+}
+
+export function startPlayback(editor: Editor, now: () => number = () => performance.now()): () => void {
+  const { ui, client } = editor;
+  let last = now();
+  let askedAtRevision = -1;
+  let raf = requestAnimationFrame(function frame() {
+    raf = requestAnimationFrame(frame);
+    const time = now();
+    const dt = (time - last) / 1000;
+    last = time;
+    const s = ui.getState();
+    const info = client.getSnapshot();
+    const extend = s.calc.autoExtend && !info.idle;
+    if (s.playing && s.speed > 0 && extend && !info.computing && info.revision !== askedAtRevision) {
+      const lead = Math.max(EXTEND_LEAD_SECONDS, 2 * s.speed);
+      if (info.horizon - s.t < lead) {
+        askedAtRevision = info.revision;
+        editor.computeAhead();
+      }
+    }
+    if (!s.playing || s.speed === 0) return;
+    const waiting = extend || info.computing !== null;
+    const step = advanceClock(s.t, s.speed, dt, info.horizon, waiting);
+    ui.setState(step.stop ? { t: step.t, playing: false } : { t: step.t });
+  });
+  return () => cancelAnimationFrame(raf);
+}

@@ -1,0 +1,146 @@
+/**
+ * TimelineClient: the main thread's handle on the Timeline that lives in the worker (host.ts).
+ * - `getSnapshot()` / `subscribe()` expose the latest TimelineInfo (same object until it changes),
+ *   for React's useSyncExternalStore.
+ * - Requests return promises; failed edits reject with EditError (engine message + path).
+ * - Frames: `wantFrame(t)` keeps at most one frame request in flight and always converges on the
+ *   last wanted time (latest wins), so a 60 Hz canvas never queues work in the worker.
+ */
+import type { Action, LogEvent, SceneFile, Until } from "../engineTypes";
+import { EditError } from "./errors";
+import type {
+  EventPage,
+  Frame,
+  HostMessage,
+  Port,
+  Request,
+  RequestMessage,
+  SeriesPoint,
+  TimelineInfo,
+} from "./protocol";
+
+const EMPTY_DOC: SceneFile = { format: "chapgame", version: 1, g: 9.81, gravity: [0, 0], actions: [] };
+
+export const EMPTY_INFO: TimelineInfo = {
+  revision: -1,
+  horizon: 0,
+  eventCount: 0,
+  counts: { bodyBody: 0, bodyLine: 0, bodyPoint: 0, stop: 0, action: 0 },
+  lastEventTime: null,
+  idle: false,
+  doc: EMPTY_DOC,
+  docRevision: -1,
+  computing: null,
+  historyBytes: 0,
+};
+
+export class TimelineClient {
+  private info: TimelineInfo = EMPTY_INFO;
+  private nextId = 1;
+  private readonly pending = new Map<number, { resolve: (v: unknown) => void; reject: (e: Error) => void }>();
+  private readonly listeners = new Set<() => void>();
+  private readonly frameListeners = new Set<(f: Frame) => void>();
+  private frameInFlight = false;
+  private wantedT: number | null = null;
+  latestFrame: Frame | null = null;
+  /** The time the latest frame was asked for (the host clamps it to [0, horizon]). */
+  private latestAsked = Number.NaN;
+
+  constructor(private readonly port: Port) {
+    port.onmessage = (e) => this.receive(e.data as HostMessage);
+  }
+
+  getSnapshot = (): TimelineInfo => this.info;
+
+  subscribe = (listener: () => void): (() => void) => {
+    this.listeners.add(listener);
+    return () => this.listeners.delete(listener);
+  };
+
+  onFrame(listener: (f: Frame) => void): () => void {
+    this.frameListeners.add(listener);
+    return () => this.frameListeners.delete(listener);
+  }
+
+  private receive(m: HostMessage): void {
+    if (m.type === "info") {
+      const doc = m.info.doc ?? this.info.doc;
+      this.info = { ...m.info, doc };
+      for (const l of this.listeners) l();
+      return;
+    }
+    const p = this.pending.get(m.id);
+    if (!p) return;
+    this.pending.delete(m.id);
+    if (m.ok) p.resolve(m.value);
+    else p.reject(new EditError(m.error));
+  }
+
+  private request<T>(r: Request): Promise<T> {
+    const id = this.nextId++;
+    const msg: RequestMessage = { ...r, id };
+    return new Promise<T>((resolve, reject) => {
+      this.pending.set(id, { resolve: resolve as (v: unknown) => void, reject });
+      this.port.postMessage(msg);
+    });
+  }
+
+  load(scene: SceneFile): Promise<void> {
+    return this.request({ op: "load", scene });
+  }
+  apply(actions: Action[]): Promise<void> {
+    return this.request({ op: "apply", actions });
+  }
+  compute(until: Until | null): Promise<void> {
+    return this.request({ op: "compute", until });
+  }
+  cancel(): Promise<void> {
+    return this.request({ op: "cancel" });
+  }
+  frame(t: number): Promise<Frame> {
+    return this.request({ op: "frame", t });
+  }
+  nextEvent(t: number): Promise<number | null> {
+    return this.request({ op: "nextEvent", t });
+  }
+  prevEvent(t: number): Promise<number | null> {
+    return this.request({ op: "prevEvent", t });
+  }
+  events(t: number, before: number, after: number, body: string | null): Promise<EventPage> {
+    return this.request({ op: "events", t, before, after, body });
+  }
+  ticks(n: number): Promise<number[]> {
+    return this.request({ op: "ticks", n });
+  }
+  series(n: number): Promise<SeriesPoint[]> {
+    return this.request({ op: "series", n });
+  }
+
+  /** True when the latest frame shows time t at the current revision. */
+  hasFrame(t: number): boolean {
+    const f = this.latestFrame;
+    return f !== null && this.latestAsked === t && f.revision === this.info.revision;
+  }
+
+  /** Asks for the frame at t unless it is already shown or on its way (latest wins). */
+  wantFrame(t: number): void {
+    this.wantedT = t;
+    if (this.frameInFlight || this.hasFrame(t)) return;
+    this.frameInFlight = true;
+    const asked = t;
+    this.frame(asked).then(
+      (f) => {
+        this.frameInFlight = false;
+        this.latestFrame = f;
+        this.latestAsked = asked;
+        for (const l of this.frameListeners) l(f);
+        if (this.wantedT !== null && !this.hasFrame(this.wantedT)) this.wantFrame(this.wantedT);
+      },
+      () => {
+        this.frameInFlight = false;
+      },
+    );
+  }
+}
+
+export type { LogEvent };

@@ -1,0 +1,221 @@
+/**
+ * TimelineHost: owns the editor's Timeline (in the Web Worker) and answers the client's requests
+ * (protocol.ts). Long computations run in slices of a few milliseconds (Timeline.prolongSlice), so
+ * frame, scrub and edit requests are answered between slices and Cancel takes effect at once.
+ * The host never throws: every request gets a reply, failed edits reply with the engine's message and
+ * leave the timeline as it was.
+ */
+import type { Action, SceneFile, Until } from "../engineTypes";
+import { errorInfo } from "./errors";
+import { eventPage, eventTicks, firstEventAfter } from "./eventQueries";
+import { packFrame } from "./packFrame";
+import type {
+  ComputeStatus,
+  HostMessage,
+  Request,
+  RequestMessage,
+  SeriesPoint,
+  TimelineInfo,
+} from "./protocol";
+import type { TimelineFactory, TimelineLike } from "./timelineLike";
+
+/** Wall-clock milliseconds one round of slices may take before the host yields to messages. */
+const ROUND_MS = 12;
+/** Wall-clock milliseconds one prolongSlice call should take (the event budget adapts to it). */
+const SLICE_MS = 3;
+
+interface Job extends ComputeStatus {
+  budget: number;
+}
+
+export interface HostEnv {
+  post(message: HostMessage, transfer?: Transferable[]): void;
+  /** Runs fn soon, after pending messages were handled (setTimeout 0 or a MessageChannel). */
+  schedule(fn: () => void): void;
+  now(): number;
+}
+
+export class TimelineHost {
+  private tl: TimelineLike;
+  private revision = 0;
+  private docRevision = 0;
+  private sentDocRevision = -1;
+  private idle = false;
+  private job: Job | null = null;
+  private scheduled = false;
+  private filterCache: { revision: number; body: string; indices: number[] } | null = null;
+
+  constructor(
+    private readonly factory: TimelineFactory,
+    private readonly env: HostEnv,
+    initial: SceneFile,
+  ) {
+    this.tl = factory(initial);
+  }
+
+  handle(message: RequestMessage): void {
+    try {
+      const value = this.run(message);
+      if (value instanceof Float64Array) this.env.post({ type: "reply", id: message.id, ok: true, value });
+      else if (value && typeof value === "object" && "data" in value && value.data instanceof Float64Array) {
+        this.env.post({ type: "reply", id: message.id, ok: true, value }, [value.data.buffer]);
+      } else this.env.post({ type: "reply", id: message.id, ok: true, value });
+    } catch (e) {
+      this.env.post({ type: "reply", id: message.id, ok: false, error: errorInfo(e) });
+    }
+  }
+
+  private run(r: Request): unknown {
+    switch (r.op) {
+      case "load": {
+        const tl = this.factory(r.scene);
+        this.job = null;
+        this.tl = tl;
+        this.changed(true);
+        return null;
+      }
+      case "apply":
+        this.applyAll(r.actions);
+        return null;
+      case "compute":
+        this.startJob(r.until);
+        return null;
+      case "cancel":
+        this.job = null;
+        this.changed(false);
+        return null;
+      case "frame":
+        return packFrame(this.tl.stateAt(Math.min(Math.max(r.t, 0), this.tl.horizon)), this.revision);
+      case "nextEvent":
+        return this.tl.nextEventTime(r.t);
+      case "prevEvent":
+        return this.tl.prevEventTime(r.t);
+      case "events":
+        return eventPage(this.tl, r.t, r.before, r.after, r.body === null ? null : this.filtered(r.body));
+      case "ticks":
+        return eventTicks(this.tl, r.n);
+      case "series":
+        return this.series(r.n);
+    }
+  }
+
+  private applyAll(actions: Action[]): void {
+    const before = this.tl.actions.slice();
+    this.job = null;
+    try {
+      for (const a of actions) this.tl.apply(a);
+    } catch (e) {
+      if (actions.length > 1) this.tl.setActions(before);
+      throw e;
+    } finally {
+      this.changed(true);
+    }
+  }
+
+  private startJob(until: Until | null): void {
+    const h = this.tl.horizon;
+    this.job = {
+      events: 0,
+      targetEvents: until?.events ?? null,
+      targetTime: until?.time === undefined ? null : h + until.time,
+      startHorizon: h,
+      budget: 256,
+    };
+    this.idle = false;
+    this.changed(false);
+    this.kick();
+  }
+
+  private kick(): void {
+    if (this.scheduled) return;
+    this.scheduled = true;
+    this.env.schedule(() => {
+      this.scheduled = false;
+      this.round();
+    });
+  }
+
+  /** One round of slices: computes for about ROUND_MS, reports, then yields to pending messages. */
+  private round(): void {
+    const job = this.job;
+    if (!job) return;
+    const start = this.env.now();
+    while (this.job === job && this.env.now() - start < ROUND_MS) {
+      const until: Until = {};
+      if (job.targetTime !== null) until.time = job.targetTime - this.tl.horizon;
+      if (job.targetEvents !== null) until.events = job.targetEvents - job.events;
+      if (
+        (until.time !== undefined && until.time <= 0) ||
+        (until.events !== undefined && until.events <= 0)
+      ) {
+        this.job = null;
+        break;
+      }
+      const t0 = this.env.now();
+      const res = this.tl.prolongSlice(until, job.budget);
+      const took = this.env.now() - t0;
+      job.events += res.events;
+      job.budget = Math.max(16, Math.min(1 << 20, Math.round(job.budget * (took > 0 ? SLICE_MS / took : 2))));
+      if (res.done) {
+        const timeLeft = job.targetTime !== null && this.tl.horizon < job.targetTime;
+        const eventsLeft = job.targetEvents !== null && job.events < job.targetEvents;
+        const unlimited = job.targetTime === null && job.targetEvents === null;
+        this.idle = unlimited || timeLeft || eventsLeft;
+        this.job = null;
+      }
+    }
+    this.changed(false);
+    if (this.job) this.kick();
+  }
+
+  private filtered(body: string): number[] {
+    const c = this.filterCache;
+    if (c && c.revision === this.revision && c.body === body) return c.indices;
+    const indices: number[] = [];
+    for (let i = 0; i < this.tl.eventCount; i++) if (this.tl.event(i).ids.includes(body)) indices.push(i);
+    this.filterCache = { revision: this.revision, body, indices };
+    return indices;
+  }
+
+  private series(n: number): SeriesPoint[] {
+    const out: SeriesPoint[] = [];
+    const h = this.tl.horizon;
+    const steps = h > 0 ? n : 0;
+    for (let i = 0; i <= steps; i++) {
+      const t = steps === 0 ? 0 : (h * i) / steps;
+      const s = this.tl.stateAt(t);
+      let energy = 0;
+      for (const b of s.bodies) if (Number.isFinite(b.m)) energy += 0.5 * b.m * (b.vx * b.vx + b.vy * b.vy);
+      out.push({ t, energy, collisions: firstEventAfter(this.tl, t) });
+    }
+    return out;
+  }
+
+  private changed(docChanged: boolean): void {
+    this.revision++;
+    if (docChanged) {
+      this.docRevision++;
+      this.idle = false;
+    }
+    this.env.post({ type: "info", info: this.info() });
+  }
+
+  info(): TimelineInfo {
+    const tl = this.tl;
+    const n = tl.eventCount;
+    const sendDoc = this.sentDocRevision !== this.docRevision;
+    this.sentDocRevision = this.docRevision;
+    return {
+      revision: this.revision,
+      horizon: tl.horizon,
+      eventCount: n,
+      counts: tl.counts(),
+      lastEventTime: n > 0 ? tl.event(n - 1).time : null,
+      idle: this.idle,
+      doc: sendDoc ? tl.toScene() : null,
+      docRevision: this.docRevision,
+      computing: this.job ? { ...this.job } : null,
+      historyBytes: tl.historyBytes(),
+    };
+  }
+}

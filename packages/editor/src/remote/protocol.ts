@@ -1,0 +1,102 @@
+/**
+ * Messages between the editor's main thread (TimelineClient) and the worker that owns the Timeline
+ * (TimelineHost). Every request carries an `id`; the host answers each with exactly one `reply`.
+ * The host also pushes `info` (after every change of the timeline) unasked.
+ *
+ * Bodies in a frame are packed, FRAME_STRIDE numbers per body, in the order of `ids` (sorted by id).
+ */
+import type { Action, Counts, LineState, LogEvent, PointState, SceneFile, Until, Vec2 } from "../engineTypes";
+
+export const FRAME_STRIDE = 9;
+export const F_X = 0;
+export const F_Y = 1;
+export const F_VX = 2;
+export const F_VY = 3;
+export const F_AX = 4;
+export const F_AY = 5;
+export const F_R = 6;
+export const F_M = 7;
+export const F_MU = 8;
+
+/** The state of the scene at one time, as the canvas and the tables read it. */
+export interface Frame {
+  t: number;
+  /** The timeline revision this frame was computed at. */
+  revision: number;
+  g: number;
+  gravity: Vec2;
+  ids: string[];
+  data: Float64Array;
+  lines: LineState[];
+  points: PointState[];
+}
+
+/** What the host computes or was asked to compute. */
+export interface ComputeStatus {
+  /** Events computed since this computation started. */
+  events: number;
+  /** Target in events (null: none). */
+  targetEvents: number | null;
+  /** Target horizon in seconds (null: none). */
+  targetTime: number | null;
+  startHorizon: number;
+}
+
+export interface TimelineInfo {
+  revision: number;
+  horizon: number;
+  eventCount: number;
+  counts: Counts;
+  lastEventTime: number | null;
+  /** True when the last computation stopped because no event is left. */
+  idle: boolean;
+  /** The scene as a file; null in a message when unchanged since the last one (docRevision). */
+  doc: SceneFile | null;
+  /** Changes only when the action list or the globals change (not on prolong). */
+  docRevision: number;
+  computing: ComputeStatus | null;
+  historyBytes: number;
+}
+
+export interface ErrorInfo {
+  message: string;
+  path: string | null;
+}
+
+export interface SeriesPoint {
+  t: number;
+  energy: number;
+  collisions: number;
+}
+
+export type Request =
+  | { op: "load"; scene: SceneFile }
+  | { op: "apply"; actions: Action[] }
+  | { op: "compute"; until: Until | null }
+  | { op: "cancel" }
+  | { op: "frame"; t: number }
+  | { op: "nextEvent"; t: number }
+  | { op: "prevEvent"; t: number }
+  | { op: "events"; t: number; before: number; after: number; body: string | null }
+  | { op: "ticks"; n: number }
+  | { op: "series"; n: number };
+
+export type RequestMessage = Request & { id: number };
+
+export interface EventPage {
+  /** Index of the first returned event in the (filtered) log. */
+  first: number;
+  total: number;
+  events: LogEvent[];
+}
+
+export type HostMessage =
+  | { type: "reply"; id: number; ok: true; value: unknown }
+  | { type: "reply"; id: number; ok: false; error: ErrorInfo }
+  | { type: "info"; info: TimelineInfo };
+
+/** A two-way message channel: a Worker, or an in-process pair for tests. */
+export interface Port {
+  postMessage(message: unknown, transfer?: Transferable[]): void;
+  onmessage: ((event: { data: unknown }) => void) | null;
+}

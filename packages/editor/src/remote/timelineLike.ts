@@ -1,0 +1,24 @@
+/**
+ * The part of the engine's Timeline the editor's worker uses (docs/architecture.md), so the host can
+ * be tested with the real Timeline and typed without depending on its private members.
+ */
+import type { Action, Counts, LogEvent, SceneFile, SceneState, Until } from "../engineTypes";
+
+export interface TimelineLike {
+  readonly actions: readonly Action[];
+  readonly horizon: number;
+  readonly eventCount: number;
+  apply(action: Action): void;
+  setActions(actions: readonly Action[]): void;
+  prolongSlice(until: Until, budget: number): { done: boolean; events: number; horizon: number };
+  stateAt(t: number): SceneState;
+  nextEventTime(t: number): number | null;
+  prevEventTime(t: number): number | null;
+  event(i: number): LogEvent;
+  counts(): Counts;
+  historyBytes(): number;
+  toScene(): SceneFile;
+}
+
+/** Builds a timeline from a scene file; throws the engine's SceneError on invalid input. */
+export type TimelineFactory = (scene: SceneFile) => TimelineLike;

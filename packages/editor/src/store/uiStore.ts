@@ -1,0 +1,65 @@
+/**
+ * The editor's UI state (never the scene: the Timeline in the worker is the one source of truth for
+ * that). Time, speed, selection, tool, view and settings live here; none of them is an undo step.
+ */
+import { createStore, type Store } from "./createStore";
+
+export type Tool = "move" | "velocity" | "cue" | "disc" | "line" | "ray" | "segment" | "point";
+export type Selection = { kind: "body" | "line" | "point"; id: string } | null;
+
+/** World-to-screen view: the world point at the canvas centre and pixels per world unit. */
+export interface View {
+  cx: number;
+  cy: number;
+  scale: number;
+}
+
+export interface CalcSettings {
+  useTime: boolean;
+  seconds: number;
+  useEvents: boolean;
+  events: number;
+  autoExtend: boolean;
+}
+
+export interface Message {
+  text: string;
+  tone: "error" | "info";
+}
+
+export interface UiState {
+  t: number;
+  speed: number;
+  playing: boolean;
+  selection: Selection;
+  highlight: string[];
+  tool: Tool;
+  view: View;
+  /** Bumped to ask the canvas to fit the view to the scene. */
+  fitRequest: number;
+  trails: boolean;
+  calc: CalcSettings;
+  message: Message | null;
+  eventFilter: string;
+}
+
+export const initialUiState: UiState = {
+  t: 0,
+  speed: 1,
+  playing: false,
+  selection: null,
+  highlight: [],
+  tool: "move",
+  view: { cx: 0, cy: 0, scale: 1 },
+  fitRequest: 0,
+  trails: false,
+  calc: { useTime: true, seconds: 10, useEvents: false, events: 1000, autoExtend: true },
+  message: null,
+  eventFilter: "",
+};
+
+export type UiStore = Store<UiState>;
+
+export function createUiStore(initial: Partial<UiState> = {}): UiStore {
+  return createStore<UiState>({ ...initialUiState, ...initial });
+}
