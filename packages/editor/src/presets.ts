@@ -1,7 +1,8 @@
 /**
- * The presets menu's entries, adapted from the engine's presets. (Temporary local scenes until the
- * engine exports `presets`.)
+ * The presets menu's entries: the engine's presets (written once, shared with tests and benchmarks),
+ * plus the digit count of Galperin's billiard as a parameter.
  */
+import { galperin, presets } from "@chapgame/engine";
 import type { SceneFile } from "./engineTypes";
 
 export interface PresetEntry {
@@ -11,33 +12,20 @@ export interface PresetEntry {
   takesDigits: boolean;
 }
 
-export const PRESETS: PresetEntry[] = [
-  { id: "original", name: "Original demo", takesDigits: false },
-  { id: "galperin", name: "Galperin's π billiard", takesDigits: true },
-];
+export const GALPERIN_ID = "galperin";
 
-export const DEFAULT_PRESET = "original";
+export const PRESETS: PresetEntry[] = presets.map((p) => ({
+  id: p.id,
+  name: p.id === GALPERIN_ID ? "Galperin's π billiard" : p.title,
+  takesDigits: p.id === GALPERIN_ID,
+}));
 
-export function buildPreset(id: string, digits = 3): SceneFile {
-  const base: SceneFile = { format: "chapgame", version: 1, g: 9.81, gravity: [0, 0], actions: [] };
-  if (id === "galperin") {
-    return {
-      ...base,
-      g: 0,
-      actions: [
-        { time: 0, type: "addBody", id: "small", x: 100, y: 0, r: 10, m: 1, v: [0, 0] },
-        { time: 0, type: "addBody", id: "big", x: 200, y: 0, r: 20, m: 100 ** (digits - 1), v: [-10, 0] },
-        { time: 0, type: "addLine", id: "wall", p1: [0, -50], p2: [0, 50], kind: "line" },
-      ],
-    };
-  }
-  return {
-    ...base,
-    actions: [
-      { time: 0, type: "addBody", id: "a", x: 350, y: 200, r: 100, m: 10, mu: 1, v: [0, 0] },
-      { time: 0, type: "addBody", id: "b", x: 100, y: 150, r: 40, m: 5, mu: 1, v: [60, 10] },
-      { time: 0, type: "addLine", id: "wall", p1: [0, 0], p2: [0, 500], kind: "segment" },
-      { time: 0, type: "addPoint", id: "pin", p: [10, 10] },
-    ],
-  };
+export const DEFAULT_PRESET = "originalDemo";
+
+/** A fresh scene of preset `id` (Galperin with `digits` digits of π). Unknown ids throw. */
+export function buildPreset(id: string, digits = 4): SceneFile {
+  if (id === GALPERIN_ID) return galperin(digits);
+  const p = presets.find((q) => q.id === id);
+  if (!p) throw new Error(`preset: unknown id "${id}"`);
+  return p.make();
 }

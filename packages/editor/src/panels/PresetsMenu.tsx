@@ -6,7 +6,7 @@ import { buildPreset, PRESETS } from "../presets";
 export function PresetsMenu() {
   const editor = useEditor();
   const [id, setId] = useState(PRESETS[0]!.id);
-  const [digits, setDigits] = useState(3);
+  const [digits, setDigits] = useState(4);
   const entry = PRESETS.find((p) => p.id === id);
   return (
     <div className="presets">
