@@ -1,2 +1,10 @@
 /** Barrel of src/timeline: the public exports of this folder. */
-export {};
+export { Timeline } from "./timeline.js";
+export type {
+  LogEvent,
+  LogKind,
+  ProlongResult,
+  SceneState,
+  TimelineCounts,
+  TimelineOptions,
+} from "./types.js";

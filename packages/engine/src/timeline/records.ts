@@ -1,0 +1,144 @@
+/**
+ * Records: the compact event log of a Timeline, one fixed-size record per logged event in growable
+ * typed arrays (structure of arrays):
+ *   time f64 · kind u8 · a u32 · b u32 · new velocity of a (2 × f64) · new velocity of b (2 × f64)
+ * = 49 bytes per record. `a` is a body number (see MotionTable), or the action's index for an action
+ * record; `b` is the other body's number, or the line's / point's obstacle number. Positions are not
+ * stored: they follow from the previous motion (closed form). Contact point, normal and impulse are
+ * derived on demand from the motions before and after (see logEvents.ts).
+ * Truncation keeps the arrays (it only moves `length`), so recomputing after a cut reuses memory.
+ */
+
+export const K_BODY_BODY = 0;
+export const K_BODY_LINE = 1;
+export const K_BODY_POINT = 2;
+export const K_STOP = 3;
+export const K_ACTION = 4;
+export const KIND_NAMES = ["bodyBody", "bodyLine", "bodyPoint", "stop", "action"] as const;
+
+/** Bytes of one record. */
+export const RECORD_BYTES = 8 + 1 + 4 + 4 + 4 * 8;
+
+export class Records {
+  length = 0;
+  time: Float64Array;
+  kind: Uint8Array;
+  a: Uint32Array;
+  b: Uint32Array;
+  /** new velocities: [vax, vay, vbx, vby] per record */
+  vel: Float64Array;
+
+  constructor(capacity = 1024) {
+    this.time = new Float64Array(capacity);
+    this.kind = new Uint8Array(capacity);
+    this.a = new Uint32Array(capacity);
+    this.b = new Uint32Array(capacity);
+    this.vel = new Float64Array(capacity * 4);
+  }
+
+  get capacity(): number {
+    return this.time.length;
+  }
+
+  private grow(): void {
+    const cap = this.capacity * 2;
+    const time = new Float64Array(cap);
+    time.set(this.time);
+    this.time = time;
+    const kind = new Uint8Array(cap);
+    kind.set(this.kind);
+    this.kind = kind;
+    const a = new Uint32Array(cap);
+    a.set(this.a);
+    this.a = a;
+    const b = new Uint32Array(cap);
+    b.set(this.b);
+    this.b = b;
+    const vel = new Float64Array(cap * 4);
+    vel.set(this.vel);
+    this.vel = vel;
+  }
+
+  push(
+    time: number,
+    kind: number,
+    a: number,
+    b: number,
+    vax: number,
+    vay: number,
+    vbx: number,
+    vby: number,
+  ): void {
+    if (this.length === this.capacity) this.grow();
+    const i = this.length++;
+    this.time[i] = time;
+    this.kind[i] = kind;
+    this.a[i] = a;
+    this.b[i] = b;
+    const o = 4 * i;
+    this.vel[o] = vax;
+    this.vel[o + 1] = vay;
+    this.vel[o + 2] = vbx;
+    this.vel[o + 3] = vby;
+  }
+
+  /** Bytes of the records held (not of the spare capacity). */
+  bytes(): number {
+    return this.length * RECORD_BYTES;
+  }
+
+  /** First record index with time > t (binary search; records are in time order). */
+  upperBound(t: number): number {
+    let lo = 0;
+    let hi = this.length;
+    while (lo < hi) {
+      const mid = (lo + hi) >>> 1;
+      if ((this.time[mid] as number) <= t) lo = mid + 1;
+      else hi = mid;
+    }
+    return lo;
+  }
+
+  /** First record index with time >= t. */
+  lowerBound(t: number): number {
+    let lo = 0;
+    let hi = this.length;
+    while (lo < hi) {
+      const mid = (lo + hi) >>> 1;
+      if ((this.time[mid] as number) < t) lo = mid + 1;
+      else hi = mid;
+    }
+    return lo;
+  }
+
+  /** A copy of records [from, length) (to restore after a failed recompute). */
+  saveTail(from: number): Records {
+    const n = this.length - from;
+    const r = new Records(Math.max(1, n));
+    r.length = n;
+    r.time.set(this.time.subarray(from, this.length));
+    r.kind.set(this.kind.subarray(from, this.length));
+    r.a.set(this.a.subarray(from, this.length));
+    r.b.set(this.b.subarray(from, this.length));
+    r.vel.set(this.vel.subarray(4 * from, 4 * this.length));
+    return r;
+  }
+
+  /** Truncate to `from` records and append `tail` (undo of a cut). */
+  restoreTail(from: number, tail: Records): void {
+    this.length = from;
+    for (let i = 0; i < tail.length; i++) {
+      const o = 4 * i;
+      this.push(
+        tail.time[i] as number,
+        tail.kind[i] as number,
+        tail.a[i] as number,
+        tail.b[i] as number,
+        tail.vel[o] as number,
+        tail.vel[o + 1] as number,
+        tail.vel[o + 2] as number,
+        tail.vel[o + 3] as number,
+      );
+    }
+  }
+}

@@ -1,0 +1,172 @@
+/**
+ * Reading the history: the state at any time (last keyframe at or before t + the records up to t +
+ * closed-form evaluation) and the event log (each record expanded into a LogEvent; the contact point,
+ * normal and impulse are recomputed from the motions just before the event with the World's own
+ * formulas, so they match what the World reported).
+ */
+
+import { discDiscResponse, impulseMagnitude, reflectResponse } from "../physics/response.js";
+import type { Action } from "../scene/types.js";
+import { lineParameter, makeLine, parameterOnLine } from "../sim/obstacles.js";
+import type { TimelineCore } from "./core.js";
+import { type Keyframe, keyframeAtOrBefore, keyframeAtRecord, loadMotions } from "./keyframe.js";
+import type { MotionTable } from "./motionTable.js";
+import { K_ACTION, K_BODY_BODY, K_BODY_LINE, K_BODY_POINT, KIND_NAMES, type Records } from "./records.js";
+import type { LogEvent, SceneState } from "./types.js";
+
+const INF = Number.POSITIVE_INFINITY;
+const vel = new Float64Array(4);
+
+/** Apply record i (an event) to the motions in `table`. */
+export function applyRecord(records: Records, i: number, table: MotionTable, kf: Keyframe): void {
+  const t = records.time[i] as number;
+  const o = 4 * i;
+  const [gx, gy] = kf.gravity;
+  const v = records.vel;
+  table.rebase(records.a[i] as number, t, v[o] as number, v[o + 1] as number, kf.g, gx, gy);
+  if (records.kind[i] === K_BODY_BODY)
+    table.rebase(records.b[i] as number, t, v[o + 2] as number, v[o + 3] as number, kf.g, gx, gy);
+}
+
+/** The exact state at time t (0 <= t <= horizon), using `scratch` as work space. */
+export function stateAt(core: TimelineCore, t: number, scratch: MotionTable): SceneState {
+  const kfs = core.keyframes;
+  const kf = kfs[Math.max(0, keyframeAtOrBefore(kfs, t))] as Keyframe;
+  loadMotions(kf, scratch);
+  const rec = core.records;
+  for (let i = kf.record; i < rec.length && (rec.time[i] as number) <= t; i++) {
+    if (rec.kind[i] === K_ACTION) break; // cannot happen: a keyframe follows every action group
+    applyRecord(rec, i, scratch, kf);
+  }
+  const ids = core.bodyIds;
+  const bodies = Array.from(kf.order, (n) => scratch.state(n, ids[n] as string, t));
+  return { time: t, g: kf.g, gravity: kf.gravity, bodies, lines: kf.lines, points: kf.points };
+}
+
+/** Log event of record i, given the motions just before it in `table`. */
+function describe(core: TimelineCore, i: number, table: MotionTable, kf: Keyframe): LogEvent {
+  const rec = core.records;
+  const t = rec.time[i] as number;
+  const kind = rec.kind[i] as number;
+  const a = rec.a[i] as number;
+  const b = rec.b[i] as number;
+  if (kind === K_ACTION) {
+    const act = core.acts[a] as Action;
+    return {
+      time: t,
+      type: "action",
+      ids: "id" in act ? [act.id] : [],
+      point: null,
+      normal: null,
+      impulse: null,
+    };
+  }
+  const ida = core.bodyIds[a] as string;
+  const x = table.x(a, t);
+  const y = table.y(a, t);
+  const vx = table.vx(a, t);
+  const vy = table.vy(a, t);
+  const m = table.m(a);
+  if (kind === K_BODY_BODY) {
+    const xb = table.x(b, t);
+    const yb = table.y(b, t);
+    const approach = discDiscResponse(
+      x,
+      y,
+      vx,
+      vy,
+      m,
+      xb,
+      yb,
+      table.vx(b, t),
+      table.vy(b, t),
+      table.m(b),
+      vel,
+    );
+    const dx = xb - x;
+    const dy = yb - y;
+    const d = Math.sqrt(dx * dx + dy * dy);
+    const nx = dx / d;
+    const ny = dy / d;
+    const r = table.r(a);
+    return {
+      time: t,
+      type: "bodyBody",
+      ids: [ida, core.bodyIds[b] as string],
+      point: [x + r * nx, y + r * ny],
+      normal: [nx, ny],
+      impulse: impulseMagnitude(m, table.m(b), approach),
+    };
+  }
+  if (kind !== K_BODY_LINE && kind !== K_BODY_POINT)
+    return { time: t, type: "stop", ids: [ida], point: [x, y], normal: null, impulse: 0 };
+  let other: string;
+  let nx = 0;
+  let ny = 0;
+  let cx = 0;
+  let cy = 0;
+  let px: number | null = null;
+  let py = 0;
+  if (kind === K_BODY_LINE) {
+    other = core.lineIds[b] as string;
+    const ls = kf.lines.find((l) => l.id === other);
+    if (!ls) throw new Error(`timeline: line ${other} missing from its keyframe`);
+    const line = makeLine(other, ls.p1, ls.p2, ls.kind);
+    const lambda = lineParameter(line, x, y);
+    if (parameterOnLine(line.kind, lambda)) {
+      const side = line.nx * (x - line.x1) + line.ny * (y - line.y1);
+      nx = side > 0 ? line.ey : -line.ey;
+      ny = side > 0 ? -line.ex : line.ex;
+      const len = Math.sqrt(line.ee);
+      const r = table.r(a);
+      cx = x + (r * nx) / len;
+      cy = y + (r * ny) / len;
+    } else {
+      px = lambda < 0 ? line.x1 : line.x2;
+      py = lambda < 0 ? line.y1 : line.y2;
+    }
+  } else {
+    other = core.pointIds[b] as string;
+    const ps = kf.points.find((p) => p.id === other);
+    if (!ps) throw new Error(`timeline: point ${other} missing from its keyframe`);
+    px = ps.p[0];
+    py = ps.p[1];
+  }
+  if (px !== null) {
+    nx = px - x;
+    ny = py - y;
+    cx = px;
+    cy = py;
+  }
+  const approach = reflectResponse(vx, vy, nx, ny, vel);
+  const nn = Math.sqrt(nx * nx + ny * ny);
+  return {
+    time: t,
+    type: KIND_NAMES[kind] as "bodyLine" | "bodyPoint",
+    ids: [ida, other],
+    point: [cx, cy],
+    normal: [nx / nn, ny / nn],
+    impulse: m === INF ? (approach > 0 ? INF : 0) : 2 * m * approach,
+  };
+}
+
+/** Log events of records [from, to), replaying from the keyframe before `from`. */
+export function logEvents(core: TimelineCore, from: number, to: number, scratch: MotionTable): LogEvent[] {
+  const out: LogEvent[] = [];
+  if (from >= to) return out;
+  const kfs = core.keyframes;
+  let k = Math.max(0, keyframeAtRecord(kfs, from));
+  let kf = kfs[k] as Keyframe;
+  loadMotions(kf, scratch);
+  const rec = core.records;
+  for (let i = kf.record; i < to; i++) {
+    while (k + 1 < kfs.length && (kfs[k + 1] as Keyframe).record === i) {
+      k++;
+      kf = kfs[k] as Keyframe;
+      loadMotions(kf, scratch);
+    }
+    if (i >= from) out.push(describe(core, i, scratch, kf));
+    if (rec.kind[i] !== K_ACTION) applyRecord(rec, i, scratch, kf);
+  }
+  return out;
+}

@@ -1,0 +1,296 @@
+/**
+ * Timeline: a scene as a list of actions stamped with times, the computed history up to `horizon`,
+ * and exact time travel (contract in docs/architecture.md).
+ *
+ * - apply(action) validates the action (fields, and the scene rules against the state at its time)
+ *   and inserts it. At or after the horizon it computes forward to its time and applies it; before
+ *   the horizon it restores the last World keyframe before its time, replays to it, applies it and
+ *   recomputes up to the old horizon: the result is identical to building from scratch (the World
+ *   is deterministic and splitting a computation changes nothing). On any error nothing changes.
+ * - stateAt(t) costs one keyframe load (O(bodies)) + at most KEYFRAME_RECORDS_PER_BODY records per
+ *   body + one closed-form evaluation per body.
+ * - Storage: see records.ts (49 bytes per event) and keyframe.ts.
+ * - history: false keeps no log and no keyframes (headless runs); then only the horizon can be read.
+ */
+import { checkAction } from "../scene/action.js";
+import { SceneError } from "../scene/errors.js";
+import { count, isObject, nonNegative, onlyKeys, vec2 } from "../scene/fields.js";
+import { applyOrder, parseScene } from "../scene/parse.js";
+import type { Action, SceneFile, Until, Vec2 } from "../scene/types.js";
+import type { BodyState } from "../sim/types.js";
+import { type Goal, TimelineCore } from "./core.js";
+import { type Keyframe, keyframeBytes } from "./keyframe.js";
+import { MotionTable } from "./motionTable.js";
+import { logEvents, stateAt } from "./replay.js";
+import type { LogEvent, ProlongResult, SceneState, TimelineCounts, TimelineOptions } from "./types.js";
+
+const INF = Number.POSITIVE_INFINITY;
+/** Estimated bytes per body of a World clone's typed arrays (body store 168, grid and heap ~40). */
+const CLONE_BYTES_PER_BODY = 208;
+
+function checkUntil(raw: unknown, path: string): Until {
+  if (!isObject(raw)) throw new SceneError(path, "must be an object with optional time and events");
+  onlyKeys(raw, ["time", "events"], path);
+  const u: Until = {};
+  if (raw.time !== undefined) u.time = nonNegative(raw, "time", path);
+  if (raw.events !== undefined) u.events = count(raw, "events", path);
+  return u;
+}
+
+function sameUntil(a: Until, b: Until): boolean {
+  return a.time === b.time && a.events === b.events;
+}
+
+export class Timeline {
+  private core: TimelineCore;
+  private readonly options: TimelineOptions;
+  private revision = 0;
+  private readonly listeners = new Set<() => void>();
+  private readonly scratch = new MotionTable();
+  private slice: { until: Until; goal: Goal } | null = null;
+  private actionsView: readonly Action[] | null = null;
+
+  constructor(options: TimelineOptions = {}) {
+    const o = options as Record<string, unknown>;
+    const g = o.g === undefined ? 9.81 : nonNegative(o, "g", "");
+    const gravity = o.gravity === undefined ? ([0, 0] as Vec2) : vec2(o, "gravity", "");
+    this.options = { ...options, g, gravity };
+    this.core = new TimelineCore(g, gravity, options.history !== false, options.compute !== false);
+  }
+
+  /** A timeline of a scene (validated: SceneError naming the field). Options as the constructor's,
+   *  without g and gravity (they come from the scene). */
+  static fromScene(
+    scene: SceneFile | string,
+    options: Omit<TimelineOptions, "g" | "gravity"> = {},
+  ): Timeline {
+    const s = parseScene(scene);
+    const tl = new Timeline({ ...options, g: s.g, gravity: s.gravity });
+    tl.setActions(s.actions);
+    return tl;
+  }
+
+  /** The scene file of this timeline (round-trips with fromScene). */
+  toScene(): SceneFile {
+    return {
+      format: "chapgame",
+      version: 1,
+      g: this.core.g0,
+      gravity: this.core.gravity0,
+      actions: [...this.core.acts],
+    };
+  }
+
+  /** All actions in the order they apply (time, then insertion order). The same array until a change. */
+  get actions(): readonly Action[] {
+    if (this.actionsView === null) this.actionsView = Object.freeze([...this.core.acts]);
+    return this.actionsView;
+  }
+
+  get horizon(): number {
+    return this.core.horizon;
+  }
+
+  get history(): boolean {
+    return this.core.history;
+  }
+
+  // ---- changes ----------------------------------------------------------------------------------
+
+  private changed(): void {
+    this.revision++;
+    this.actionsView = null;
+    for (const l of [...this.listeners]) l();
+  }
+
+  /** Validate and apply one action (see the header). Throws SceneError; then nothing changes. */
+  apply(action: Action): void {
+    const a = checkAction(action, "action");
+    const c = this.core;
+    let insertAt = c.acts.length;
+    while (insertAt > 0 && (c.acts[insertAt - 1] as Action).time > a.time) insertAt--;
+    const last = c.records.length - 1;
+    const forward =
+      a.time > c.horizon ||
+      (a.time === c.horizon &&
+        (last < 0 || (c.records.time[last] as number) < a.time || c.records.kind[last] === 4));
+    if (!forward && !c.history)
+      throw new SceneError("action.time", `must be >= the horizon ${c.horizon} (history is off)`);
+    let k = 0;
+    if (!forward) {
+      const kfs = c.keyframes;
+      for (k = kfs.length - 1; k > 0; k--) {
+        const kf = kfs[k] as Keyframe;
+        if (kf.world === null) continue;
+        if (kf.time < a.time || (kf.time === a.time && kf.afterActions && kf.actionCount === insertAt)) break;
+      }
+    }
+    const undo = c.save(forward ? c.records.length : (c.keyframes[k] as Keyframe).record);
+    try {
+      const oldHorizon = c.horizon;
+      if (!forward) c.restoreKeyframe(k);
+      c.acts.splice(insertAt, 0, a);
+      c.pathOf = (i) => (i === insertAt ? "action" : `actions[${i}]`);
+      if (!forward) {
+        c.reopenGoals();
+        c.goals.push({ tLimit: oldHorizon, eLimit: INF });
+      }
+      c.drive(INF, { tLimit: a.time, eLimit: INF });
+      if (!c.eager && a.until) c.goals.push(c.goalFrom(a.until, a.time));
+      c.drive(INF, null);
+      c.pathOf = (i) => `actions[${i}]`;
+    } catch (e) {
+      undo();
+      throw e;
+    }
+    this.slice = null;
+    this.changed();
+  }
+
+  /** Replace the whole action list (undo/redo, paste), atomically: recomputed from scratch up to at
+   *  least the current horizon. Errors name `actions[i]` by the index in `actions`. */
+  setActions(actions: readonly Action[]): void {
+    const checked = actions.map((a, i) => checkAction(a, `actions[${i}]`));
+    const order = applyOrder(checked);
+    const oldHorizon = this.core.horizon;
+    const o = this.options;
+    const core = new TimelineCore(o.g as number, o.gravity as Vec2, o.history !== false, o.compute !== false);
+    core.acts = order.map((i) => checked[i] as Action);
+    core.pathOf = (k) => `actions[${order[k]}]`;
+    if (core.eager && oldHorizon > 0) core.goals.push({ tLimit: oldHorizon, eLimit: INF });
+    core.drive(INF, null);
+    core.pathOf = (k) => `actions[${k}]`;
+    this.core = core;
+    this.slice = null;
+    this.changed();
+  }
+
+  /** Compute further from the horizon: `until.time` seconds and/or `until.events` collisions and
+   *  stops, whichever first; neither = until nothing is left to happen. */
+  prolong(until: Until): ProlongResult {
+    const u = checkUntil(until, "until");
+    const res = this.core.drive(INF, this.core.goalFrom(u, this.core.horizon));
+    this.slice = null;
+    this.changed();
+    return { events: res.events, reason: res.reason ?? "events" };
+  }
+
+  /** Compute up to time t (if not computed yet). */
+  prolongTo(t: number): ProlongResult {
+    nonNegative({ t }, "t", "");
+    const res = this.core.drive(INF, { tLimit: t, eLimit: INF });
+    this.changed();
+    return { events: res.events, reason: res.reason ?? "events" };
+  }
+
+  /** Incremental prolong for UIs: at most `budget` events per call; call with the same `until` until
+   *  done (the target is fixed by the first call). */
+  prolongSlice(until: Until, budget: number): { done: boolean; events: number; horizon: number } {
+    const u = checkUntil(until, "until");
+    if (!(budget >= 1)) throw new SceneError("budget", "must be >= 1");
+    const goal =
+      this.slice && sameUntil(this.slice.until, u)
+        ? this.slice.goal
+        : this.core.goalFrom(u, this.core.horizon);
+    const res = this.core.drive(budget, goal);
+    const done = res.reason !== null;
+    this.slice = done ? null : { until: u, goal };
+    this.changed();
+    return { done, events: res.events, horizon: this.core.horizon };
+  }
+
+  // ---- reading ----------------------------------------------------------------------------------
+
+  /** The exact state at t, 0 <= t <= horizon (without history: only t = horizon). */
+  stateAt(t: number): SceneState {
+    const c = this.core;
+    if (!(t >= 0 && t <= c.horizon))
+      throw new RangeError(`stateAt: t must be in [0, ${c.horizon}], got ${t}`);
+    if (!c.history) {
+      if (t !== c.horizon) throw new RangeError("stateAt: this timeline keeps no history (only the horizon)");
+      const w = c.world;
+      return {
+        time: t,
+        g: w.g,
+        gravity: w.gravity,
+        bodies: w.bodies(),
+        lines: w.lines(),
+        points: w.points(),
+      };
+    }
+    return stateAt(c, t, this.scratch);
+  }
+
+  /** The bodies at the time of the last event or action (for a run that ended idle). */
+  lastLoggedTime(): number {
+    return this.core.lastLogged;
+  }
+
+  /** Bodies at the horizon (also without history). */
+  bodiesAtHorizon(): BodyState[] {
+    return this.core.world.bodies();
+  }
+
+  /** Time of the first logged event strictly after t, or null. */
+  nextEventTime(t: number): number | null {
+    const r = this.core.records;
+    const i = r.upperBound(t);
+    return i < r.length ? (r.time[i] as number) : null;
+  }
+
+  /** Time of the last logged event strictly before t, or null. */
+  prevEventTime(t: number): number | null {
+    const r = this.core.records;
+    const i = r.lowerBound(t) - 1;
+    return i >= 0 ? (r.time[i] as number) : null;
+  }
+
+  /** Number of logged events (collisions, stops and actions); 0 without history. */
+  get eventCount(): number {
+    return this.core.records.length;
+  }
+
+  /** The i-th logged event in time order. */
+  event(i: number): LogEvent {
+    if (!(Number.isInteger(i) && i >= 0 && i < this.eventCount))
+      throw new RangeError(`event: index must be an integer in [0, ${this.eventCount}), got ${i}`);
+    return logEvents(this.core, i, i + 1, this.scratch)[0] as LogEvent;
+  }
+
+  /** Logged events with t0 <= time <= t1, in order. */
+  eventsBetween(t0: number, t1: number): LogEvent[] {
+    const r = this.core.records;
+    return logEvents(this.core, r.lowerBound(t0), r.upperBound(t1), this.scratch);
+  }
+
+  /** Collisions and stops by kind, and actions applied, over the computed history. */
+  counts(): TimelineCounts {
+    return { ...this.core.counts };
+  }
+
+  /** Bytes of stored history: records, keyframes, and an estimate of the World clones' arrays. */
+  historyBytes(): number {
+    const c = this.core;
+    let bytes = c.records.bytes();
+    for (const kf of c.keyframes) {
+      bytes += keyframeBytes(kf);
+      if (kf.world !== null) bytes += CLONE_BYTES_PER_BODY * kf.order.length + 1024;
+    }
+    return bytes;
+  }
+
+  // ---- observing --------------------------------------------------------------------------------
+
+  /** Call `listener` after every change (apply, setActions, prolong). Returns the unsubscribe. */
+  subscribe(listener: () => void): () => void {
+    this.listeners.add(listener);
+    return () => {
+      this.listeners.delete(listener);
+    };
+  }
+
+  /** Revision number: changes on every change. */
+  getSnapshot(): number {
+    return this.revision;
+  }
+}
