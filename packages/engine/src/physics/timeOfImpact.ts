@@ -106,8 +106,9 @@ export function firstDownCrossingQuadratic(
     if (dLo < 0) return lo;
     if (dLo === 0 && c2 < 0) return lo; // resting contact under an acceleration into the contact
   }
+  // Convex and not decreasing at lo: it never comes down again (the common, cheap rejection).
+  if (c2 >= 0 && dLo >= 0) return Number.POSITIVE_INFINITY;
   if (c2 === 0) {
-    if (c1 >= 0) return Number.POSITIVE_INFINITY;
     const r = -c0 / c1;
     return r >= lo && r <= hi ? r : Number.POSITIVE_INFINITY;
   }

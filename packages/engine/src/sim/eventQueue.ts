@@ -1,19 +1,21 @@
 /**
  * Indexed binary min-heap over integer slots (one entry per body), keyed by a time. Update, insert
- * and remove are O(log n). Exact ties in time are broken by a caller-supplied canonical order, so
- * the pop order never depends on insertion order (determinism).
+ * and remove are O(log n). Keys are stored in heap order beside the slots, so sifting reads memory
+ * sequentially. Exact ties in time are broken by a caller-supplied canonical order, so the pop
+ * order never depends on insertion order (determinism).
  */
 export class IndexedHeap {
-  private heap: Int32Array;
-  private pos: Int32Array;
+  private slots: Int32Array;
   private keys: Float64Array;
+  private pos: Int32Array;
   private n = 0;
   private readonly tieLess: (a: number, b: number) => boolean;
 
   constructor(capacity: number, tieLess: (a: number, b: number) => boolean) {
-    this.heap = new Int32Array(Math.max(capacity, 4));
-    this.pos = new Int32Array(Math.max(capacity, 4)).fill(-1);
-    this.keys = new Float64Array(Math.max(capacity, 4));
+    const cap = Math.max(capacity, 4);
+    this.slots = new Int32Array(cap);
+    this.keys = new Float64Array(cap);
+    this.pos = new Int32Array(cap).fill(-1);
     this.tieLess = tieLess;
   }
 
@@ -25,24 +27,24 @@ export class IndexedHeap {
   reserve(capacity: number): void {
     if (capacity <= this.pos.length) return;
     const cap = Math.max(capacity, this.pos.length * 2);
-    const heap = new Int32Array(cap);
-    heap.set(this.heap);
-    const pos = new Int32Array(cap).fill(-1);
-    pos.set(this.pos);
+    const slots = new Int32Array(cap);
+    slots.set(this.slots);
     const keys = new Float64Array(cap);
     keys.set(this.keys);
-    this.heap = heap;
-    this.pos = pos;
+    const pos = new Int32Array(cap).fill(-1);
+    pos.set(this.pos);
+    this.slots = slots;
     this.keys = keys;
+    this.pos = pos;
   }
 
   /** The slot with the smallest key, or -1 when empty. */
   peek(): number {
-    return this.n > 0 ? (this.heap[0] as number) : -1;
+    return this.n > 0 ? (this.slots[0] as number) : -1;
   }
 
   peekKey(): number {
-    return this.n > 0 ? (this.keys[this.heap[0] as number] as number) : Number.POSITIVE_INFINITY;
+    return this.n > 0 ? (this.keys[0] as number) : Number.POSITIVE_INFINITY;
   }
 
   has(slot: number): boolean {
@@ -55,16 +57,19 @@ export class IndexedHeap {
       this.remove(slot);
       return;
     }
-    this.keys[slot] = key;
     const p = this.pos[slot] as number;
     if (p < 0) {
-      const i = this.n++;
-      this.heap[i] = slot;
-      this.pos[slot] = i;
-      this.up(i);
-    } else {
-      this.up(p);
-      this.down(this.pos[slot] as number);
+      this.up(this.n++, slot, key);
+      return;
+    }
+    const old = this.keys[p] as number;
+    if (key < old) this.up(p, slot, key);
+    else if (key > old) this.down(p, slot, key);
+    else {
+      // Same time: the tie-break may have changed (another event at the same instant).
+      this.up(p, slot, key);
+      const q = this.pos[slot] as number;
+      this.down(q, slot, key);
     }
   }
 
@@ -72,62 +77,78 @@ export class IndexedHeap {
     const p = this.pos[slot] as number;
     if (p < 0) return;
     this.pos[slot] = -1;
-    const last = this.heap[--this.n] as number;
-    if (p === this.n) return;
-    this.heap[p] = last;
-    this.pos[last] = p;
-    this.up(p);
-    this.down(this.pos[last] as number);
+    const last = --this.n;
+    if (p === last) return;
+    const ls = this.slots[last] as number;
+    const lk = this.keys[last] as number;
+    this.up(p, ls, lk);
+    const q = this.pos[ls] as number;
+    this.down(q, ls, lk);
   }
 
   /** A copy with another tie-break function (a cloned world passes its own). */
   cloneWith(tieLess: (a: number, b: number) => boolean): IndexedHeap {
     const h = new IndexedHeap(this.pos.length, tieLess);
-    h.heap.set(this.heap);
-    h.pos.set(this.pos);
+    h.slots.set(this.slots);
     h.keys.set(this.keys);
+    h.pos.set(this.pos);
     h.n = this.n;
     return h;
   }
 
-  private less(a: number, b: number): boolean {
-    const ka = this.keys[a] as number;
-    const kb = this.keys[b] as number;
+  /** Whether (slot a, key ka) sorts before (slot b, key kb). */
+  private before(a: number, ka: number, b: number, kb: number): boolean {
     return ka < kb || (ka === kb && this.tieLess(a, b));
   }
 
-  private up(i: number): void {
-    const heap = this.heap;
-    const slot = heap[i] as number;
+  /** Place (slot, key) at position i or above. */
+  private up(i: number, slot: number, key: number): void {
+    const slots = this.slots;
+    const keys = this.keys;
     while (i > 0) {
       const parent = (i - 1) >> 1;
-      const ps = heap[parent] as number;
-      if (!this.less(slot, ps)) break;
-      heap[i] = ps;
+      const ps = slots[parent] as number;
+      const pk = keys[parent] as number;
+      if (!this.before(slot, key, ps, pk)) break;
+      slots[i] = ps;
+      keys[i] = pk;
       this.pos[ps] = i;
       i = parent;
     }
-    heap[i] = slot;
+    slots[i] = slot;
+    keys[i] = key;
     this.pos[slot] = i;
   }
 
-  private down(i: number): void {
-    const heap = this.heap;
+  /** Place (slot, key) at position i or below. */
+  private down(i: number, slot: number, key: number): void {
+    const slots = this.slots;
+    const keys = this.keys;
     const n = this.n;
-    const slot = heap[i] as number;
     for (;;) {
       const l = 2 * i + 1;
       if (l >= n) break;
-      const r = l + 1;
       let c = l;
-      if (r < n && this.less(heap[r] as number, heap[l] as number)) c = r;
-      const cs = heap[c] as number;
-      if (!this.less(cs, slot)) break;
-      heap[i] = cs;
+      let cs = slots[l] as number;
+      let ck = keys[l] as number;
+      const r = l + 1;
+      if (r < n) {
+        const rs = slots[r] as number;
+        const rk = keys[r] as number;
+        if (this.before(rs, rk, cs, ck)) {
+          c = r;
+          cs = rs;
+          ck = rk;
+        }
+      }
+      if (!this.before(cs, ck, slot, key)) break;
+      slots[i] = cs;
+      keys[i] = ck;
       this.pos[cs] = i;
       i = c;
     }
-    heap[i] = slot;
+    slots[i] = slot;
+    keys[i] = key;
     this.pos[slot] = i;
   }
 }

@@ -102,6 +102,42 @@ export class Grid {
     this.insert(slot, cell);
   }
 
+  /**
+   * Static obstacles per cell in compressed rows: the codes of cell c are
+   * obstList[obstStart[c] .. obstStart[c + 1]). Codes: i >= 0 is segment i of the world's line
+   * list, -(i + 1) is point i. Filled by `setObstacles`.
+   */
+  obstStart: Int32Array = new Int32Array(2);
+  obstList: Int32Array = new Int32Array(0);
+
+  /** Fill the per-cell obstacle lists from (cell, code) pairs. */
+  setObstacles(pairs: number[]): void {
+    const nc = this.nx * this.ny;
+    const start = new Int32Array(nc + 1);
+    for (let i = 0; i < pairs.length; i += 2) start[(pairs[i] as number) + 1] = (start[(pairs[i] as number) + 1] as number) + 1;
+    for (let c = 0; c < nc; c++) start[c + 1] = (start[c + 1] as number) + (start[c] as number);
+    const fill = start.slice(0, nc);
+    const list = new Int32Array(pairs.length / 2);
+    for (let i = 0; i < pairs.length; i += 2) {
+      const c = pairs[i] as number;
+      list[fill[c] as number] = pairs[i + 1] as number;
+      fill[c] = (fill[c] as number) + 1;
+    }
+    this.obstStart = start;
+    this.obstList = list;
+  }
+
+  /** Cell rectangle [x0, x1] x [y0, y1]; edge cells extend to infinity. */
+  cellRect(cx: number, cy: number): [number, number, number, number] {
+    const inf = Number.POSITIVE_INFINITY;
+    return [
+      cx === 0 ? -inf : this.boundaryX(cx),
+      cx === this.nx - 1 ? inf : this.boundaryX(cx + 1),
+      cy === 0 ? -inf : this.boundaryY(cy),
+      cy === this.ny - 1 ? inf : this.boundaryY(cy + 1),
+    ];
+  }
+
   /** Deep copy. */
   clone(): Grid {
     const g = new Grid(this.next.length);
@@ -114,6 +150,8 @@ export class Grid {
     g.next = this.next.slice();
     g.prev = this.prev.slice();
     g.cellOf = this.cellOf.slice();
+    g.obstStart = this.obstStart;
+    g.obstList = this.obstList;
     return g;
   }
 }

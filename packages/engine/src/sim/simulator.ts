@@ -21,6 +21,7 @@ import { BodyStore, EV_BODY, EV_CROSS, EV_LINE, EV_NONE, EV_POINT, EV_STOP } fro
 import { SimulationError } from "./errors.js";
 import { IndexedHeap } from "./eventQueue.js";
 import { Grid } from "./grid.js";
+import { rasterizeSegment } from "./rasterize.js";
 import { type Line, lineParameter, type Point, parameterOnLine } from "./obstacles.js";
 import type { EventCounts, Optimizations, WorldEvent } from "./types.js";
 
@@ -44,6 +45,11 @@ export class Simulator {
   protected heap: IndexedHeap;
   protected lineList: Line[] = [];
   protected pointList: Point[] = [];
+  /** Indices of infinite lines and rays (tested against every moving body). */
+  private globalLines: number[] = [];
+  /** Per obstacle: the prediction stamp that last tested it (avoids testing it twice per prediction). */
+  private obstStamp = new Int32Array(0);
+  private stamp = 0;
   /** Largest radius the grid was built for; a larger body forces a rebuild. */
   protected gridMaxR = 0;
   /** Predictions of all bodies must be recomputed before the next event (grid rebuilt, obstacles or globals changed). */
@@ -91,6 +97,8 @@ export class Simulator {
     target.lineList = this.lineList.slice();
     target.pointList = this.pointList.slice();
     target.gridMaxR = this.gridMaxR;
+    target.globalLines = this.globalLines;
+    target.obstStamp = new Int32Array(this.obstStamp.length);
     target.dirty = this.dirty;
     Object.assign(target.counts, this.counts);
     target.sameTime = this.sameTime;
@@ -180,8 +188,8 @@ export class Simulator {
     } else {
       let w = 2 * maxR * GRID_CELL_MARGIN;
       // Leave room around the bodies so that edits nearby do not force a rebuild.
-      const padX = Math.max(0.5 * slack * (maxX - minX), 2 * w);
-      const padY = Math.max(0.5 * slack * (maxY - minY), 2 * w);
+      const padX = slack > 1 ? Math.max(0.5 * slack * (maxX - minX), 2 * w) : 2 * w;
+      const padY = slack > 1 ? Math.max(0.5 * slack * (maxY - minY), 2 * w) : 2 * w;
       const width = maxX - minX + 2 * padX;
       const height = maxY - minY + 2 * padY;
       const maxCells = Math.max(16, GRID_CELLS_PER_BODY * n);
@@ -195,6 +203,7 @@ export class Simulator {
       if (b.ids[s] === undefined) continue;
       this.grid.insert(s, this.cellAt(this.xAt(s, this.time), this.yAt(s, this.time)));
     }
+    this.rasterizeObstacles();
     this.dirty = true;
   }
 
@@ -388,40 +397,69 @@ export class Simulator {
     const cell = grid.cellOf[s] as number;
     const cx = cell % grid.nx;
     const cy = (cell - cx) / grid.nx;
+    this.stamp++;
     for (let y = cy - 1; y <= cy + 1; y++) {
       if (y < 0 || y >= grid.ny) continue;
       for (let x = cx - 1; x <= cx + 1; x++) {
         if (x < 0 || x >= grid.nx) continue;
         this.scanCell(s, y * grid.nx + x, moving);
+        if (moving) this.scanCellObstacles(s, y * grid.nx + x);
       }
     }
-    if (moving) this.predictObstacles(s);
+    if (moving) for (const i of this.globalLines) this.testLine(s, i);
     b.crossTime[s] = moving ? this.crossing(s, cx, cy) : INF;
     const key = Math.min(b.evTime[s] as number, b.crossTime[s] as number);
     this.heap.set(s, key);
   }
 
-  private predictObstacles(s: number): void {
-    const lines = this.lineList;
-    for (let i = 0; i < lines.length; i++) {
-      const line = lines[i] as Line;
-      const t = this.lineTime(s, line);
-      if (t !== INF) this.offer(s, t, EV_LINE, i, 0);
-      if (line.kind !== "line") {
-        const t1 = this.pointTime(s, line.x1, line.y1);
-        if (t1 !== INF) this.offer(s, t1, EV_LINE, i, 1);
-        if (line.kind === "segment") {
-          const t2 = this.pointTime(s, line.x2, line.y2);
-          if (t2 !== INF) this.offer(s, t2, EV_LINE, i, 2);
-        }
+  /** Test body s against line i: its interior, and the end points of rays and segments. */
+  private testLine(s: number, i: number): void {
+    const line = this.lineList[i] as Line;
+    const t = this.lineTime(s, line);
+    if (t !== INF) this.offer(s, t, EV_LINE, i, 0);
+    if (line.kind !== "line") {
+      const t1 = this.pointTime(s, line.x1, line.y1);
+      if (t1 !== INF) this.offer(s, t1, EV_LINE, i, 1);
+      if (line.kind === "segment") {
+        const t2 = this.pointTime(s, line.x2, line.y2);
+        if (t2 !== INF) this.offer(s, t2, EV_LINE, i, 2);
       }
     }
-    const points = this.pointList;
-    for (let i = 0; i < points.length; i++) {
-      const p = points[i] as Point;
-      const t = this.pointTime(s, p.x, p.y);
-      if (t !== INF) this.offer(s, t, EV_POINT, i, 0);
+  }
+
+  /** Test body s against the segments and points registered in one cell (each once per stamp). */
+  private scanCellObstacles(s: number, cell: number): void {
+    const grid = this.grid;
+    const end = grid.obstStart[cell + 1] as number;
+    for (let k = grid.obstStart[cell] as number; k < end; k++) {
+      const code = grid.obstList[k] as number;
+      const key = code >= 0 ? code : this.lineList.length - code - 1;
+      if (this.obstStamp[key] === this.stamp) continue;
+      this.obstStamp[key] = this.stamp;
+      if (code >= 0) this.testLine(s, code);
+      else {
+        const p = this.pointList[-code - 1] as Point;
+        const t = this.pointTime(s, p.x, p.y);
+        if (t !== INF) this.offer(s, t, EV_POINT, -code - 1, 0);
+      }
     }
+  }
+
+  /** Register segments and points in the grid cells they pass through; lines and rays stay global. */
+  private rasterizeObstacles(): void {
+    const pairs: number[] = [];
+    const global: number[] = [];
+    this.lineList.forEach((line, i) => {
+      if (line.kind === "segment") rasterizeSegment(this.grid, line.x1, line.y1, line.x2, line.y2, i, pairs);
+      else global.push(i);
+    });
+    this.pointList.forEach((p, i) => {
+      rasterizeSegment(this.grid, p.x, p.y, p.x, p.y, -(i + 1), pairs);
+    });
+    this.grid.setObstacles(pairs);
+    this.globalLines = global;
+    this.obstStamp = new Int32Array(this.lineList.length + this.pointList.length);
+    this.stamp = 0;
   }
 
   /** Time at which body s (in cell cx, cy) next leaves its cell; direction stored in crossDir. */
@@ -441,19 +479,31 @@ export class Simulator {
     let dir = -1;
     if (cx > 0) {
       const t = firstDownCrossingQuadratic(x0 - grid.boundaryX(cx), vx, hax, lo, hi);
-      if (t < best) [best, dir] = [t, 0];
+      if (t < best) {
+        best = t;
+        dir = 0;
+      }
     }
     if (cx < grid.nx - 1) {
       const t = firstDownCrossingQuadratic(grid.boundaryX(cx + 1) - x0, -vx, -hax, lo, hi);
-      if (t < best) [best, dir] = [t, 1];
+      if (t < best) {
+        best = t;
+        dir = 1;
+      }
     }
     if (cy > 0) {
       const t = firstDownCrossingQuadratic(y0 - grid.boundaryY(cy), vy, hay, lo, hi);
-      if (t < best) [best, dir] = [t, 2];
+      if (t < best) {
+        best = t;
+        dir = 2;
+      }
     }
     if (cy < grid.ny - 1) {
       const t = firstDownCrossingQuadratic(grid.boundaryY(cy + 1) - y0, -vy, -hay, lo, hi);
-      if (t < best) [best, dir] = [t, 3];
+      if (t < best) {
+        best = t;
+        dir = 3;
+      }
     }
     b.crossDir[s] = dir;
     if (best === INF) return INF;
@@ -554,21 +604,24 @@ export class Simulator {
     else if (dir === 2) cy--;
     else cy++;
     grid.move(s, cy * grid.nx + cx);
-    const moving = true;
     // Only the row or column that just became adjacent holds new partners.
+    this.stamp++;
     if (dir <= 1) {
       const x = dir === 0 ? cx - 1 : cx + 1;
       if (x >= 0 && x < grid.nx)
-        for (let y = cy - 1; y <= cy + 1; y++)
-          if (y >= 0 && y < grid.ny) this.scanCell(s, y * grid.nx + x, moving);
+        for (let y = cy - 1; y <= cy + 1; y++) if (y >= 0 && y < grid.ny) this.scanNewCell(s, y * grid.nx + x);
     } else {
       const y = dir === 2 ? cy - 1 : cy + 1;
       if (y >= 0 && y < grid.ny)
-        for (let x = cx - 1; x <= cx + 1; x++)
-          if (x >= 0 && x < grid.nx) this.scanCell(s, y * grid.nx + x, moving);
+        for (let x = cx - 1; x <= cx + 1; x++) if (x >= 0 && x < grid.nx) this.scanNewCell(s, y * grid.nx + x);
     }
     b.crossTime[s] = this.crossing(s, cx, cy);
     this.heap.set(s, Math.min(b.evTime[s] as number, b.crossTime[s] as number));
+  }
+
+  private scanNewCell(s: number, cell: number): void {
+    this.scanCell(s, cell, true);
+    this.scanCellObstacles(s, cell);
   }
 
   private processBodyBody(s: number, o: number): void {
