@@ -114,7 +114,8 @@ export class Grid {
   setObstacles(pairs: number[]): void {
     const nc = this.nx * this.ny;
     const start = new Int32Array(nc + 1);
-    for (let i = 0; i < pairs.length; i += 2) start[(pairs[i] as number) + 1] = (start[(pairs[i] as number) + 1] as number) + 1;
+    for (let i = 0; i < pairs.length; i += 2)
+      start[(pairs[i] as number) + 1] = (start[(pairs[i] as number) + 1] as number) + 1;
     for (let c = 0; c < nc; c++) start[c + 1] = (start[c + 1] as number) + (start[c] as number);
     const fill = start.slice(0, nc);
     const list = new Int32Array(pairs.length / 2);

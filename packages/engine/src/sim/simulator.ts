@@ -21,8 +21,8 @@ import { BodyStore, EV_BODY, EV_CROSS, EV_LINE, EV_NONE, EV_POINT, EV_STOP } fro
 import { SimulationError } from "./errors.js";
 import { IndexedHeap } from "./eventQueue.js";
 import { Grid } from "./grid.js";
-import { rasterizeSegment } from "./rasterize.js";
 import { type Line, lineParameter, type Point, parameterOnLine } from "./obstacles.js";
+import { rasterizeSegment } from "./rasterize.js";
 import type { EventCounts, Optimizations, WorldEvent } from "./types.js";
 
 const INF = Number.POSITIVE_INFINITY;
@@ -609,11 +609,13 @@ export class Simulator {
     if (dir <= 1) {
       const x = dir === 0 ? cx - 1 : cx + 1;
       if (x >= 0 && x < grid.nx)
-        for (let y = cy - 1; y <= cy + 1; y++) if (y >= 0 && y < grid.ny) this.scanNewCell(s, y * grid.nx + x);
+        for (let y = cy - 1; y <= cy + 1; y++)
+          if (y >= 0 && y < grid.ny) this.scanNewCell(s, y * grid.nx + x);
     } else {
       const y = dir === 2 ? cy - 1 : cy + 1;
       if (y >= 0 && y < grid.ny)
-        for (let x = cx - 1; x <= cx + 1; x++) if (x >= 0 && x < grid.nx) this.scanNewCell(s, y * grid.nx + x);
+        for (let x = cx - 1; x <= cx + 1; x++)
+          if (x >= 0 && x < grid.nx) this.scanNewCell(s, y * grid.nx + x);
     }
     b.crossTime[s] = this.crossing(s, cx, cy);
     this.heap.set(s, Math.min(b.evTime[s] as number, b.crossTime[s] as number));

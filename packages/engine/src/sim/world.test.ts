@@ -104,3 +104,75 @@ describe("World reference scenarios", () => {
     expect((log[0] as WorldEvent).py).toBe(10);
   });
 });
+
+describe("the original's Brownian test", () => {
+  // Bodies 5, 6, 7, 8 and 15 are dropped: they start overlapping (the original ignored that).
+  const data = `4 427.7327025816291 410.8731567269499 0.86271078967411086 19.716205904959949
+9 479.47322517677304 497.77954130594941 -70.303234441621157 0.056963218149206796
+10 542.91588368371879 551.71588572974224 -4.453993382294243 29.758713432305768
+11 510.69929211029961 438.94058675099257 40.306986579592632 93.7478943811206
+12 545.39242067561509 514.22261429002583 -9.77745919722733 54.647713187155034
+13 577.26895055792966 421.40130336625805 13.985886448574774 -55.37645958343419
+14 465.65072596185382 569.62070100613278 -25.134243364819696 58.470190427253272
+16 432.28503471693551 442.48121322319111 17.435810081585586 45.037624663398276
+17 518.82655460404681 565.76523335009551 46.805198499496925 -52.838994586484276
+18 435.13704109597023 517.22696014545977 0.94714408290828089 74.513907127285449`;
+
+  it("first event is bodies 10 and 17 at the original's time, with its velocities", () => {
+    const w = new World({ g: 1 });
+    w.addLine("l1", [400, 400], [400, 600], "segment");
+    w.addLine("l2", [400, 400], [600, 400], "segment");
+    w.addLine("l3", [600, 600], [400, 600], "segment");
+    w.addLine("l4", [600, 600], [600, 400], "segment");
+    for (const line of data.split("\n")) {
+      const [id, x, y, vx, vy] = line.trim().split(/\s+/);
+      w.addBody(id as string, { x: Number(x), y: Number(y), vx: Number(vx), vy: Number(vy), r: 10, m: 1 });
+    }
+    const log = record(w, { maxEvents: 1 });
+    const e = log[0] as WorldEvent;
+    expect([e.kind, e.a, e.b]).toEqual(["bodyBody", "10", "17"]);
+    expect(Math.abs(e.time - 0.097649490379264084)).toBeLessThan(1e-12);
+    const b10 = w.body("10");
+    const b17 = w.body("17");
+    expect(b10.vx).toBeCloseTo(65.7970158510537, 9);
+    expect(b10.vy).toBeCloseTo(7.731626502425069, 9);
+    expect(b17.vx).toBeCloseTo(-23.445810733851019, 9);
+    expect(b17.vy).toBeCloseTo(-30.811907656603577, 9);
+  });
+});
+
+describe("time reversal", () => {
+  it("an elastic scene run forward, velocities flipped and run again returns to its start", () => {
+    const start = [
+      { id: "a", x: 0, y: 0, vx: 3, vy: 0.5 },
+      { id: "b", x: 10, y: 1, vx: -2, vy: 0 },
+      { id: "c", x: 5, y: 8, vx: 0, vy: -2.5 },
+      { id: "d", x: -6, y: -6, vx: 1.5, vy: 2.5 },
+      { id: "e", x: -8, y: 7, vx: 2.2, vy: -1.1 },
+    ];
+    const box = (world: World): void => {
+      world.addLine("s", [-12, -12], [12, -12], "segment");
+      world.addLine("e", [12, -12], [12, 12], "segment");
+      world.addLine("n", [12, 12], [-12, 12], "segment");
+      world.addLine("w", [-12, 12], [-12, -12], "segment");
+    };
+    const w = new World({ g: 0 });
+    box(w);
+    for (const b of start) w.addBody(b.id, { ...b, r: 1, m: 1 });
+    const T = 30;
+    const forward = record(w, { untilTime: T });
+    expect(forward.filter((e) => e.kind === "bodyBody").length).toBeGreaterThan(4);
+    const back = new World({ g: 0, time: T });
+    box(back);
+    for (const b of w.bodies()) back.addBody(b.id, { x: b.x, y: b.y, vx: -b.vx, vy: -b.vy, r: b.r, m: b.m });
+    back.advance({ untilTime: 2 * T });
+    // Disc–disc collisions amplify round-off (the dynamics are chaotic), so a few dozen
+    // collisions leave ~1e-9 of drift: far below any visible scale, far above one ulp.
+    for (const b of start) {
+      const e = back.body(b.id);
+      expect(e.x).toBeCloseTo(b.x, 6);
+      expect(e.y).toBeCloseTo(b.y, 6);
+      expect(e.vx).toBeCloseTo(-b.vx, 6);
+    }
+  });
+});

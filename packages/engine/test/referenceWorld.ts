@@ -1,0 +1,296 @@
+/**
+ * A deliberately simple reference simulator, for tests only: after every event it recomputes every
+ * pair (the 2022 seed's method, O(n^2) per event), with no broad phase, no event queue, no caching.
+ * It shares the pure kernels (motion, time of impact, response) with the World, so any difference
+ * in the event sequence points at the World's scheduling machinery (grid, heap, invalidation).
+ */
+import { motionLaw, positionAt, velocityAt } from "../src/physics/motion.js";
+import { discDiscResponse, reflectResponse } from "../src/physics/response.js";
+import { discDiscTime, discLineCrossings } from "../src/physics/timeOfImpact.js";
+import { type Line, lineParameter, makeLine, parameterOnLine } from "../src/sim/obstacles.js";
+import type { EventKind, Vec2 } from "../src/sim/types.js";
+
+export interface SceneSpec {
+  g: number;
+  gravity: Vec2;
+  bodies: { id: string; x: number; y: number; vx: number; vy: number; r: number; m: number; mu: number }[];
+  lines: { id: string; p1: Vec2; p2: Vec2; kind: "line" | "ray" | "segment" }[];
+  points: { id: string; p: Vec2 }[];
+}
+
+export interface RefEvent {
+  time: number;
+  kind: EventKind;
+  a: string;
+  b: string | null;
+}
+
+interface RefBody {
+  id: string;
+  t0: number;
+  x0: number;
+  y0: number;
+  vx: number;
+  vy: number;
+  ax: number;
+  ay: number;
+  tEnd: number;
+  r: number;
+  m: number;
+  mu: number;
+}
+
+const INF = Number.POSITIVE_INFINITY;
+const RANK: Record<EventKind, number> = { stop: 2, bodyLine: 3, bodyPoint: 4, bodyBody: 5 };
+
+interface Candidate {
+  time: number;
+  kind: EventKind;
+  body: number;
+  other: number;
+  aux: number;
+  ids: [string, string];
+}
+
+export class ReferenceWorld {
+  time = 0;
+  private bodies: RefBody[];
+  private lines: Line[];
+  private points: { id: string; x: number; y: number }[];
+  private readonly spec: SceneSpec;
+
+  constructor(spec: SceneSpec) {
+    this.spec = spec;
+    this.lines = spec.lines.map((l) => makeLine(l.id, l.p1, l.p2, l.kind));
+    this.points = spec.points.map((p) => ({ id: p.id, x: p.p[0], y: p.p[1] }));
+    this.bodies = spec.bodies.map((b) => {
+      const body: RefBody = {
+        id: b.id,
+        t0: 0,
+        x0: 0,
+        y0: 0,
+        vx: 0,
+        vy: 0,
+        ax: 0,
+        ay: 0,
+        tEnd: INF,
+        r: b.r,
+        m: b.m,
+        mu: b.mu,
+      };
+      this.setMotion(body, 0, b.x, b.y, b.vx, b.vy);
+      return body;
+    });
+  }
+
+  private setMotion(b: RefBody, t: number, x: number, y: number, vx: number, vy: number): void {
+    const law = motionLaw(t, vx, vy, b.mu, this.spec.g, this.spec.gravity[0], this.spec.gravity[1], {
+      ax: 0,
+      ay: 0,
+      tEnd: INF,
+    });
+    Object.assign(b, { t0: t, x0: x, y0: y, vx, vy, ax: law.ax, ay: law.ay, tEnd: law.tEnd });
+  }
+
+  private pos(b: RefBody, t: number): [number, number] {
+    return [positionAt(b.t0, b.x0, b.vx, b.ax, t), positionAt(b.t0, b.y0, b.vy, b.ay, t)];
+  }
+
+  private velo(b: RefBody, t: number): [number, number] {
+    return [velocityAt(b.t0, b.vx, b.ax, t), velocityAt(b.t0, b.vy, b.ay, t)];
+  }
+
+  private pairTime(s: RefBody, o: RefBody): number {
+    const tb = Math.max(s.t0, o.t0);
+    const [xs, ys] = this.pos(s, tb);
+    const [xo, yo] = this.pos(o, tb);
+    const [vxs, vys] = this.velo(s, tb);
+    const [vxo, vyo] = this.velo(o, tb);
+    const hi = Math.min(s.tEnd, o.tEnd) - tb;
+    const tau = discDiscTime(
+      xo - xs,
+      yo - ys,
+      vxo - vxs,
+      vyo - vys,
+      o.ax - s.ax,
+      o.ay - s.ay,
+      s.r + o.r,
+      this.time - tb,
+      hi,
+    );
+    return tau === INF ? INF : Math.max(this.time, tb + tau);
+  }
+
+  private pointTime(b: RefBody, px: number, py: number): number {
+    const tau = discDiscTime(
+      b.x0 - px,
+      b.y0 - py,
+      b.vx,
+      b.vy,
+      b.ax,
+      b.ay,
+      b.r,
+      this.time - b.t0,
+      b.tEnd - b.t0,
+    );
+    return tau === INF ? INF : Math.max(this.time, b.t0 + tau);
+  }
+
+  private lineTime(b: RefBody, line: Line): number {
+    const out = new Float64Array(2);
+    const lo = this.time - b.t0;
+    discLineCrossings(
+      b.x0,
+      b.y0,
+      b.vx,
+      b.vy,
+      b.ax,
+      b.ay,
+      line.x1,
+      line.y1,
+      line.nx,
+      line.ny,
+      b.r,
+      lo,
+      b.tEnd - b.t0,
+      out,
+    );
+    let best = INF;
+    for (const tau of out) {
+      if (tau >= best) continue;
+      const x = b.x0 + tau * (b.vx + 0.5 * b.ax * tau);
+      const y = b.y0 + tau * (b.vy + 0.5 * b.ay * tau);
+      if (line.kind !== "line" && !parameterOnLine(line.kind, lineParameter(line, x, y))) continue;
+      best = tau;
+    }
+    return best === INF ? INF : Math.max(this.time, b.t0 + best);
+  }
+
+  private static before(a: Candidate, b: Candidate): boolean {
+    if (a.time !== b.time) return a.time < b.time;
+    if (RANK[a.kind] !== RANK[b.kind]) return RANK[a.kind] < RANK[b.kind];
+    if (a.ids[0] !== b.ids[0]) return a.ids[0] < b.ids[0];
+    if (a.ids[1] !== b.ids[1]) return a.ids[1] < b.ids[1];
+    return a.aux < b.aux;
+  }
+
+  /** The earliest event, by recomputing everything. */
+  private next(): Candidate | null {
+    let best: Candidate | null = null;
+    const offer = (c: Candidate): void => {
+      if (c.time !== INF && (best === null || ReferenceWorld.before(c, best))) best = c;
+    };
+    const bs = this.bodies;
+    for (let i = 0; i < bs.length; i++) {
+      const b = bs[i] as RefBody;
+      if (b.tEnd < INF)
+        offer({
+          time: Math.max(this.time, b.tEnd),
+          kind: "stop",
+          body: i,
+          other: -1,
+          aux: 0,
+          ids: [b.id, ""],
+        });
+      for (let j = i + 1; j < bs.length; j++) {
+        const o = bs[j] as RefBody;
+        const ids: [string, string] = b.id < o.id ? [b.id, o.id] : [o.id, b.id];
+        offer({ time: this.pairTime(b, o), kind: "bodyBody", body: i, other: j, aux: 0, ids });
+      }
+      this.lines.forEach((line, k) => {
+        offer({
+          time: this.lineTime(b, line),
+          kind: "bodyLine",
+          body: i,
+          other: k,
+          aux: 0,
+          ids: [b.id, line.id],
+        });
+        if (line.kind !== "line")
+          offer({
+            time: this.pointTime(b, line.x1, line.y1),
+            kind: "bodyLine",
+            body: i,
+            other: k,
+            aux: 1,
+            ids: [b.id, line.id],
+          });
+        if (line.kind === "segment")
+          offer({
+            time: this.pointTime(b, line.x2, line.y2),
+            kind: "bodyLine",
+            body: i,
+            other: k,
+            aux: 2,
+            ids: [b.id, line.id],
+          });
+      });
+      this.points.forEach((p, k) => {
+        offer({
+          time: this.pointTime(b, p.x, p.y),
+          kind: "bodyPoint",
+          body: i,
+          other: k,
+          aux: 0,
+          ids: [b.id, p.id],
+        });
+      });
+    }
+    return best;
+  }
+
+  /** Process up to maxEvents events; returns them in order. */
+  run(maxEvents: number): RefEvent[] {
+    const log: RefEvent[] = [];
+    const out = new Float64Array(4);
+    while (log.length < maxEvents) {
+      const c = this.next();
+      if (c === null) break;
+      const t = c.time;
+      this.time = t;
+      const b = this.bodies[c.body] as RefBody;
+      const [x, y] = this.pos(b, t);
+      const [vx, vy] = this.velo(b, t);
+      if (c.kind === "stop") {
+        this.setMotion(b, t, x, y, 0, 0);
+        log.push({ time: t, kind: "stop", a: b.id, b: null });
+      } else if (c.kind === "bodyBody") {
+        const o = this.bodies[c.other] as RefBody;
+        const [p, q] = b.id < o.id ? [b, o] : [o, b];
+        const [xp, yp] = this.pos(p, t);
+        const [xq, yq] = this.pos(q, t);
+        const [vxp, vyp] = this.velo(p, t);
+        const [vxq, vyq] = this.velo(q, t);
+        discDiscResponse(xp, yp, vxp, vyp, p.m, xq, yq, vxq, vyq, q.m, out);
+        this.setMotion(p, t, xp, yp, out[0] as number, out[1] as number);
+        this.setMotion(q, t, xq, yq, out[2] as number, out[3] as number);
+        log.push({ time: t, kind: "bodyBody", a: p.id, b: q.id });
+      } else {
+        let nx: number;
+        let ny: number;
+        let id: string;
+        if (c.kind === "bodyLine" && c.aux === 0) {
+          const line = this.lines[c.other] as Line;
+          const side = line.nx * (x - line.x1) + line.ny * (y - line.y1);
+          nx = side > 0 ? line.ey : -line.ey;
+          ny = side > 0 ? -line.ex : line.ex;
+          id = line.id;
+        } else if (c.kind === "bodyLine") {
+          const line = this.lines[c.other] as Line;
+          nx = (c.aux === 1 ? line.x1 : line.x2) - x;
+          ny = (c.aux === 1 ? line.y1 : line.y2) - y;
+          id = line.id;
+        } else {
+          const p = this.points[c.other] as { id: string; x: number; y: number };
+          nx = p.x - x;
+          ny = p.y - y;
+          id = p.id;
+        }
+        reflectResponse(vx, vy, nx, ny, out);
+        this.setMotion(b, t, x, y, out[0] as number, out[1] as number);
+        log.push({ time: t, kind: c.kind, a: b.id, b: id });
+      }
+    }
+    return log;
+  }
+}

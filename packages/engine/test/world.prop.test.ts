@@ -1,0 +1,148 @@
+// Property tests of the World against the all-pairs reference and its invariants (fast-check).
+// Each property prints its seed; set FC_SEED to explore other seeds.
+import fc from "fast-check";
+import { describe, expect, it } from "vitest";
+import type { WorldEvent } from "../src/sim/types.js";
+import type { World } from "../src/sim/world.js";
+import { randomScene } from "./randomScene.js";
+import { ReferenceWorld, type SceneSpec } from "./referenceWorld.js";
+import { worldFromSpec } from "./worldFromSpec.js";
+
+const SEED = Number(process.env.FC_SEED ?? 20261121);
+
+function params(name: string, numRuns: number): fc.Parameters<[number]> {
+  console.log(`[${name}] fast-check seed ${SEED} (set FC_SEED to change)`);
+  return { seed: SEED, numRuns, verbose: true };
+}
+
+const sceneSeed = fc.integer({ min: 0, max: 2 ** 31 - 1 });
+
+function log(world: World, maxEvents: number): WorldEvent[] {
+  const out: WorldEvent[] = [];
+  world.advance({ maxEvents }, (e) => out.push({ ...e }));
+  return out;
+}
+
+/** Smallest gap (distance minus contact distance, relative to the contact distance) at time t. */
+function worstOverlap(world: World, spec: SceneSpec, t: number): number {
+  const bodies = world.bodies(t);
+  let worst = 0;
+  for (let i = 0; i < bodies.length; i++) {
+    const a = bodies[i]!;
+    for (let j = i + 1; j < bodies.length; j++) {
+      const b = bodies[j]!;
+      const R = a.r + b.r;
+      worst = Math.max(worst, (R - Math.hypot(a.x - b.x, a.y - b.y)) / R);
+    }
+    for (const l of spec.lines) {
+      const ex = l.p2[0] - l.p1[0];
+      const ey = l.p2[1] - l.p1[1];
+      let u = ((a.x - l.p1[0]) * ex + (a.y - l.p1[1]) * ey) / (ex * ex + ey * ey);
+      if (l.kind !== "line") u = Math.max(0, l.kind === "segment" ? Math.min(1, u) : u);
+      const d = Math.hypot(a.x - (l.p1[0] + u * ex), a.y - (l.p1[1] + u * ey));
+      worst = Math.max(worst, (a.r - d) / a.r);
+    }
+  }
+  return worst;
+}
+
+describe("World matches the all-pairs reference", () => {
+  it("same ordered events (kinds, participants, times) on random scenes with friction, gravity, lines, points", () => {
+    fc.assert(
+      fc.property(sceneSeed, (seed) => {
+        const spec = randomScene(seed, { maxBodies: 12, mode: "any", obstacles: true, infiniteMasses: true });
+        const fast = log(worldFromSpec(spec), 150);
+        const ref = new ReferenceWorld(spec).run(150);
+        expect(fast.map((e) => `${e.kind} ${e.a} ${e.b}`)).toEqual(ref.map((e) => `${e.kind} ${e.a} ${e.b}`));
+        fast.forEach((e, i) => {
+          const rt = ref[i]!.time;
+          expect(Math.abs(e.time - rt)).toBeLessThanOrEqual(1e-12 * Math.max(1, Math.abs(rt)));
+        });
+      }),
+      params("reference", 150),
+    );
+  });
+});
+
+describe("World invariants", () => {
+  it("event times never decrease and nothing overlaps or leaves the box, at events and in between", () => {
+    fc.assert(
+      fc.property(
+        sceneSeed,
+        fc.array(fc.double({ min: 0, max: 1, noNaN: true }), { minLength: 5, maxLength: 5 }),
+        (seed, fracs) => {
+          const spec = randomScene(seed, {
+            maxBodies: 20,
+            mode: "any",
+            obstacles: true,
+            infiniteMasses: true,
+          });
+          const world = worldFromSpec(spec);
+          let last = 0;
+          world.advance({ maxEvents: 300 }, (e) => {
+            expect(e.time).toBeGreaterThanOrEqual(last);
+            last = e.time;
+          });
+          // Replay with checks at every event and at random times between.
+          const probe = worldFromSpec(spec);
+          let prev = 0;
+          probe.advance({ maxEvents: 300 }, (e) => {
+            expect(worstOverlap(probe, spec, e.time)).toBeLessThanOrEqual(1e-9);
+            prev = e.time;
+          });
+          const check = worldFromSpec(spec);
+          for (const f of [...fracs].sort()) {
+            const t = f * prev;
+            if (t < check.time) continue;
+            check.advance({ untilTime: t });
+            expect(worstOverlap(check, spec, t)).toBeLessThanOrEqual(1e-9);
+          }
+        },
+      ),
+      params("invariants", 60),
+    );
+  });
+
+  it("elastic frictionless scenes keep kinetic energy to 1e-10 relative over 10^4 events", () => {
+    fc.assert(
+      fc.property(sceneSeed, (seed) => {
+        const spec = randomScene(seed, {
+          maxBodies: 25,
+          mode: "elastic",
+          obstacles: true,
+          infiniteMasses: false,
+        });
+        const world = worldFromSpec(spec);
+        const ke = (): number =>
+          world.bodies().reduce((s, b) => s + 0.5 * b.m * (b.vx * b.vx + b.vy * b.vy), 0);
+        const e0 = ke();
+        world.advance({ maxEvents: 10_000 });
+        if (e0 > 0) expect(Math.abs(ke() - e0) / e0).toBeLessThanOrEqual(1e-10);
+      }),
+      params("energy", 8),
+    );
+  });
+
+  it("permuting the order bodies, lines and points are added changes nothing, bit for bit", () => {
+    fc.assert(
+      fc.property(sceneSeed, fc.integer({ min: 1, max: 2 ** 31 - 1 }), (seed, permSeed) => {
+        const spec = randomScene(seed, { maxBodies: 20, mode: "any", obstacles: true, infiniteMasses: true });
+        let s = permSeed;
+        const shuffle = (n: number): number[] => {
+          const a = [...Array(n).keys()];
+          for (let i = n - 1; i > 0; i--) {
+            s = (Math.imul(s, 1664525) + 1013904223) >>> 0;
+            const j = s % (i + 1);
+            [a[i], a[j]] = [a[j]!, a[i]!];
+          }
+          return a;
+        };
+        const w1 = worldFromSpec(spec);
+        const w2 = worldFromSpec(spec, shuffle);
+        expect(log(w2, 300)).toEqual(log(w1, 300));
+        expect(w2.bodies()).toEqual(w1.bodies());
+      }),
+      params("permutation", 60),
+    );
+  });
+});

@@ -1,0 +1,21 @@
+/** Build a World from a SceneSpec (test support), optionally in a permuted insertion order. */
+import { World } from "../src/sim/world.js";
+import type { SceneSpec } from "./referenceWorld.js";
+
+export function worldFromSpec(spec: SceneSpec, order?: (n: number) => number[]): World {
+  const w = new World({ g: spec.g, gravity: spec.gravity });
+  const perm = (n: number): number[] => (order ? order(n) : [...Array(n).keys()]);
+  for (const i of perm(spec.lines.length)) {
+    const l = spec.lines[i]!;
+    w.addLine(l.id, l.p1, l.p2, l.kind);
+  }
+  for (const i of perm(spec.points.length)) {
+    const p = spec.points[i]!;
+    w.addPoint(p.id, p.p);
+  }
+  for (const i of perm(spec.bodies.length)) {
+    const b = spec.bodies[i]!;
+    w.addBody(b.id, { x: b.x, y: b.y, r: b.r, m: b.m, mu: b.mu, vx: b.vx, vy: b.vy });
+  }
+  return w;
+}
