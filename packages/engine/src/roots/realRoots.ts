@@ -1,10 +1,37 @@
 /**
- * realRoots(coeffs, lo, hi): the distinct real roots of c0 + c1 t + c2 t² + … in [lo, hi], sorted.
- * Method: roots of the derivative split [lo, hi] into monotone pieces; each piece whose end values
- * differ in sign holds exactly one root, found by bisection. (First simple version; to be refined.)
+ * realRoots(coeffs, lo, hi): the distinct real roots of p(t) = c0 + c1 t + c2 t² + … in [lo, hi],
+ * sorted ascending. Any degree; `coeffs` is any array-like of finite numbers (ascending powers).
+ *
+ * Method (see README.md): trim zero leading coefficients, scale by a power of two (exact), clamp
+ * infinite or huge ends to Cauchy's root bound, drop leading terms negligible over the interval
+ * (ROOTS_DEGREE_DROP, relative), reject quickly when p's Bernstein coefficients on [lo, hi] show it keeps its sign.
+ * Otherwise the roots of p' split [lo, hi] into monotone pieces (found the same way, recursively,
+ * down to a quadratic solved in closed form without cancellation). The exact sign of p is decided at
+ * every piece end (certify.ts: plain → compensated → BigInt); each piece whose ends have opposite
+ * exact signs holds exactly one root, found by safeguarded Newton and refined on certified signs to
+ * a double within 1 ulp of it. A piece end with p exactly 0 is a root (this is how roots exactly at
+ * lo or hi, or exact multiple roots, are found). A critical point where |p| is within the plain
+ * evaluation error bound and p does not change sign on either side is a double root (a grazing
+ * contact): it is refined to the sign change of the exact p' and reported.
+ *
+ * Accuracy: every root reported for a sign change (or exact zero) is within 1 ulp of an exact root
+ * of the polynomial with the given double coefficients, and every exact sign change between
+ * consecutive piece ends is reported. A grazing root is backward stable: an exact double root of a
+ * polynomial whose coefficients differ from the given ones by at most about 2.5·n·u relatively
+ * (it cannot always be within 4 ulps of an exact root: with rounded coefficients the exact
+ * polynomial may have no real root there at all). Limits: coefficient dynamic range beyond ~2^960
+ * (scaling may underflow small coefficients), and evaluation overflow in the plain phases.
+ *
+ * Errors: a non-finite coefficient or NaN end throws RangeError naming the field; lo > hi returns [];
+ * a constant (or identically zero) polynomial has no isolated roots and returns []. Iteration caps
+ * throw RootSolverError (never expected). Not re-entrant (module scratch buffers).
  */
 
-/** Horner evaluation of c0 + c1 x + … (ascending coefficients). */
+import { ROOTS_DEGREE_DROP, UNIT_ROUNDOFF } from "../tolerances.js";
+import { certSign, criticalPoint, lastAbsValue, lastWasNoisy, load, refineRoot } from "./certify.js";
+import { newtonPlain, pieceRoots, quadRootsPlain } from "./newton.js";
+
+/** Horner evaluation of c0 + c1 x + … (ascending coefficients); 0 for an empty array. */
 export function evalPoly(coeffs: ArrayLike<number>, x: number): number {
   let n = coeffs.length - 1;
   if (n < 0) return 0;
@@ -16,53 +43,241 @@ export function evalPoly(coeffs: ArrayLike<number>, x: number): number {
   return s;
 }
 
-function bisect(c: number[], a: number, b: number, fa: number): number {
-  for (let i = 0; i < 2100; i++) {
-    const m = 0.5 * (a + b);
-    if (m <= a || m >= b) break;
-    const fm = evalPoly(c, m);
-    if (fm === 0) return m;
-    if (fm < 0 === fa < 0) {
-      a = m;
-      fa = fm;
-    } else b = m;
-  }
-  return 0.5 * (a + b);
+const BIG = 2 ** 64;
+const SMALL = 2 ** -64;
+let cap = 0;
+let P = new Float64Array(0);
+let chain = new Float64Array(0);
+let bufA = new Float64Array(0);
+let bufB = new Float64Array(0);
+let pts = new Float64Array(0);
+let sgn = new Int8Array(0);
+let absv = new Float64Array(0);
+let noisy = new Uint8Array(0);
+const crit = new Float64Array(2);
+const closed = new Float64Array(2);
+
+function ensure(n: number): void {
+  if (n <= cap) return;
+  cap = n;
+  P = new Float64Array(n + 1);
+  chain = new Float64Array((n + 1) * (n + 1));
+  bufA = new Float64Array(n + 1);
+  bufB = new Float64Array(n + 1);
+  pts = new Float64Array(n + 3);
+  sgn = new Int8Array(n + 3);
+  absv = new Float64Array(n + 3);
+  noisy = new Uint8Array(n + 3);
 }
 
-function rootsOf(c: number[], lo: number, hi: number): number[] {
-  let n = c.length - 1;
-  while (n >= 0 && c[n] === 0) n--;
-  if (n < 0) return [lo]; // identically zero: report lo (degenerate)
-  const cc = c.slice(0, n + 1);
-  if (n === 0) return [];
-  if (n === 1) {
-    const r = -(cc[0] as number) / (cc[1] as number);
-    return r >= lo && r <= hi ? [r] : [];
+/**
+ * Quick rejection: true when p provably keeps one nonzero sign on [lo, hi]. The Bernstein
+ * coefficients of p on [lo, lo + h] (h ≥ hi − lo) bound p there (convex hull property); when all
+ * exceed the rounding margin with one sign, p has no root. About 3n²/2 flops.
+ */
+function keepsSign(n: number, lo: number, hi: number): boolean {
+  const T = bufA; // Taylor coefficients at lo, then scaled by h^k, then Bernstein coefficients
+  const A = bufB; // the same for |p| at |lo| (the scale of the rounding errors)
+  const p = P;
+  for (let i = 0; i <= n; i++) {
+    const c = p[i] as number;
+    T[i] = c;
+    A[i] = c < 0 ? -c : c;
   }
-  const d: number[] = [];
-  for (let i = 1; i <= n; i++) d.push(i * (cc[i] as number));
-  const crit = rootsOf(d, lo, hi).filter((x) => x > lo && x < hi);
-  const pts = [lo, ...crit, hi];
-  const out: number[] = [];
-  let a = pts[0] as number;
-  let fa = evalPoly(cc, a);
-  if (fa === 0) out.push(a);
-  for (let i = 1; i < pts.length; i++) {
-    const b = pts[i] as number;
-    const fb = evalPoly(cc, b);
-    if (fb === 0) out.push(b);
-    else if (fa !== 0 && fa < 0 !== fb < 0) out.push(bisect(cc, a, b, fa));
-    a = b;
-    fa = fb;
+  if (lo !== 0) {
+    const al = lo < 0 ? -lo : lo;
+    for (let k = 0; k < n; k++) {
+      for (let i = n - 1; i >= k; i--) {
+        T[i] = (T[i] as number) + lo * (T[i + 1] as number);
+        A[i] = (A[i] as number) + al * (A[i + 1] as number);
+      }
+    }
   }
-  const res: number[] = [];
-  for (const x of out) if (res.length === 0 || x !== res[res.length - 1]) res.push(x);
-  return res;
+  const h = (hi - lo) * (1 + 4 * UNIT_ROUNDOFF);
+  let hk = 1;
+  let scale = A[0] as number;
+  let binom = 1; // C(n, k)
+  for (let k = 1; k <= n; k++) {
+    hk *= h;
+    binom = (binom * (n - k + 1)) / k;
+    T[k] = ((T[k] as number) * hk) / binom;
+    scale += (A[k] as number) * hk;
+  }
+  for (let r = 1; r <= n; r++) {
+    for (let j = n; j >= r; j--) T[j] = (T[j] as number) + (T[j - 1] as number);
+  }
+  const margin = 4 * (n + 2) * UNIT_ROUNDOFF * scale;
+  if (!(margin < Number.POSITIVE_INFINITY)) return false;
+  const t0 = T[0] as number;
+  if (t0 > margin) {
+    for (let j = 1; j <= n; j++) if (!((T[j] as number) > margin)) return false;
+    return true;
+  }
+  if (t0 < -margin) {
+    for (let j = 1; j <= n; j++) if (!((T[j] as number) < -margin)) return false;
+    return true;
+  }
+  return false;
 }
 
-/** Distinct real roots in [lo, hi], ascending. */
+/** Interior roots of the derivative of P[0..m] (m ≥ 2) in (lo, hi), sorted, into bufA; count. */
+function criticalPoints(m: number, lo: number, hi: number): number {
+  if (m === 2) {
+    const v = -(P[1] as number) / (2 * (P[2] as number));
+    if (v > lo && v < hi) {
+      bufA[0] = v;
+      return 1;
+    }
+    return 0;
+  }
+  const w = m + 1;
+  for (let i = 0; i <= m; i++) chain[i] = P[i] as number;
+  for (let L = 1; L <= m - 2; L++) {
+    const src = (L - 1) * w;
+    const dst = L * w;
+    for (let i = 0; i <= m - L; i++) chain[dst + i] = (i + 1) * (chain[src + i + 1] as number);
+  }
+  const q = (m - 2) * w;
+  let k = quadRootsPlain(chain[q] as number, chain[q + 1] as number, chain[q + 2] as number, lo, hi, bufA, 0);
+  for (let L = m - 3; L >= 1; L--) {
+    k = pieceRoots(chain, L * w, m - L, lo, hi, bufA, k, bufB);
+    const t = bufA;
+    bufA = bufB;
+    bufB = t;
+  }
+  return k;
+}
+
+/** The distinct real roots of c0 + c1 t + … in [lo, hi], sorted ascending (see the module header). */
 export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): number[] {
-  if (!(lo <= hi)) return [];
-  return rootsOf(Array.from(coeffs), lo, hi);
+  if (typeof lo !== "number" || Number.isNaN(lo))
+    throw new RangeError(`realRoots: lo must be a number, got ${lo}`);
+  if (typeof hi !== "number" || Number.isNaN(hi))
+    throw new RangeError(`realRoots: hi must be a number, got ${hi}`);
+  const len = coeffs.length;
+  let n = -1;
+  let maxAbs = 0;
+  for (let i = 0; i < len; i++) {
+    const c = coeffs[i] as number;
+    if (typeof c !== "number" || !(c - c === 0)) {
+      throw new RangeError(`realRoots: coeffs[${i}] must be a finite number, got ${c}`);
+    }
+    if (c !== 0) {
+      n = i;
+      const a = c < 0 ? -c : c;
+      if (a > maxAbs) maxAbs = a;
+    }
+  }
+  const out: number[] = [];
+  if (!(lo <= hi) || n < 1) return out;
+  ensure(n);
+  // Exact power-of-two scaling into [2^-64, 2^64]: same roots, no overflow in the error terms.
+  let scale = 1;
+  while (maxAbs * scale > BIG) scale *= 2 ** -128;
+  while (maxAbs * scale < SMALL) scale *= 2 ** 128;
+  for (let i = 0; i <= n; i++) P[i] = (coeffs[i] as number) * scale;
+  // Cauchy's bound: every root has |t| < 1 + max|c_i / c_n|.
+  let mx = 0;
+  for (let i = 0; i < n; i++) {
+    const a = Math.abs(P[i] as number);
+    if (a > mx) mx = a;
+  }
+  const bound = (1 + mx / Math.abs(P[n] as number)) * (1 + 2 ** -48);
+  const B = bound < Number.POSITIVE_INFINITY ? bound : Number.MAX_VALUE;
+  if (lo < -B) lo = -B;
+  if (hi > B) hi = B;
+  if (lo > hi) return out;
+  load(P, n, coeffs);
+  if (lo === hi) {
+    if (certSign(lo) === 0) out.push(lo);
+    return out;
+  }
+  // Degree drop: leading terms below one rounding of a lower term over the whole interval.
+  const M = Math.max(-lo, hi, lo, -hi);
+  let m = n;
+  while (m >= 1) {
+    let t = Math.abs(P[m] as number);
+    let drop = false;
+    for (let j = m - 1; j >= 0; j--) {
+      t *= M;
+      if (t <= ROOTS_DEGREE_DROP * Math.abs(P[j] as number)) {
+        drop = true;
+        break;
+      }
+    }
+    if (!drop) break;
+    m--;
+  }
+  if (m === 0) return out; // every other term is below u·|c0|: p keeps the sign of c0
+  if (keepsSign(n, lo, hi)) return out;
+  const ns = m >= 2 ? criticalPoints(m, lo, hi) : 0;
+  return solveLevel0(n, m, lo, hi, ns, out);
+}
+
+/** Certified signs at lo, the critical points and hi; one refined root per sign change. */
+function solveLevel0(n: number, m: number, lo: number, hi: number, ns: number, out: number[]): number[] {
+  const K = ns + 2;
+  pts[0] = lo;
+  for (let i = 0; i < ns; i++) pts[i + 1] = bufA[i] as number;
+  pts[K - 1] = hi;
+  for (let i = 0; i < K; i++) {
+    sgn[i] = certSign(pts[i] as number);
+    absv[i] = lastAbsValue();
+    noisy[i] = lastWasNoisy() ? 1 : 0;
+  }
+  // Grazing (double-root) candidates: noisy critical points with no sign change on either side.
+  for (let i = 1; i < K - 1; i++) {
+    const s = sgn[i] as number;
+    if (noisy[i] === 0 || s === 0 || sgn[i - 1] === -s || sgn[i + 1] === -s) continue;
+    criticalPoint(pts[i] as number, pts[i - 1] as number, pts[i + 1] as number, crit);
+    let best = -1;
+    let bestAbs = Number.POSITIVE_INFINITY;
+    for (let j = 0; j < 2; j++) {
+      const x = crit[j] as number;
+      const sx = certSign(x);
+      if (sx !== s) {
+        pts[i] = x; // the exact p reaches zero or crosses it here: ordinary pieces take over
+        sgn[i] = sx;
+        absv[i] = lastAbsValue();
+        noisy[i] = 0;
+        best = -2;
+        break;
+      }
+      if (lastAbsValue() < bestAbs) {
+        bestAbs = lastAbsValue();
+        best = j;
+      }
+    }
+    if (best >= 0) {
+      pts[i] = crit[best] as number;
+      sgn[i] = 0; // reported as a (double) root; its pieces have no sign change
+      absv[i] = bestAbs;
+    }
+  }
+  const quad = n === 2 && m === 2;
+  let nq = 0;
+  if (quad) nq = quadRootsPlain(P[0] as number, P[1] as number, P[2] as number, lo, hi, closed, 0);
+  for (let i = 0; i < K; i++) {
+    const a = pts[i] as number;
+    const sa = sgn[i] as number;
+    if (sa === 0) push(out, a);
+    if (i === K - 1) break;
+    const sb = sgn[i + 1] as number;
+    if (sa === 0 || sb !== -sa) continue;
+    const b = pts[i + 1] as number;
+    const aa = absv[i] as number;
+    const ab = absv[i + 1] as number;
+    let x0 = Number.NaN;
+    if (quad) {
+      for (let j = 0; j < nq; j++)
+        if ((closed[j] as number) > a && (closed[j] as number) < b) x0 = closed[j] as number;
+    }
+    if (Number.isNaN(x0)) x0 = newtonPlain(P, 0, n, a, b, sa * (aa > 0 ? aa : 1), -sa * (ab > 0 ? ab : 1));
+    push(out, refineRoot(a, b, sa, aa, ab, x0));
+  }
+  return out;
+}
+
+function push(out: number[], x: number): void {
+  if (out.length === 0 || x > (out[out.length - 1] as number)) out.push(x);
 }

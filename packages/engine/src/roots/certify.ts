@@ -1,0 +1,226 @@
+/**
+ * Certified signs and certified root refinement for the polynomial being solved.
+ *
+ * The solver's decisions (which piece holds a root, which side of a root a point is on) are taken
+ * on exact signs: `certSign(x)` first tries plain Horner with its error bound, then compensated
+ * Horner with its bound, and only when both are inconclusive (|p(x)| at the rounding-noise level,
+ * i.e. within a hair of a root, or overflow) computes the exact sign with BigInt (exactPoly.ts).
+ *
+ * `refineRoot(a, b, sa, x0)` takes a bracket a < b whose exact signs are sa at a and −sa at b and
+ * returns a double within one ulp of an exact root in [a, b]: a few Newton steps driven by
+ * compensated values (each step's sign certified, so the bracket stays valid), then halving in the
+ * ordering of doubles until the bracket is two adjacent doubles; it returns the end with the smaller
+ * |p| (or a point where p is exactly 0). Bounded by ROOTS_MAX_ITERATIONS, else RootSolverError.
+ *
+ * `criticalPoint(x, lo, hi)`: refines x to a sign change of the exact derivative p' (double-double
+ * coefficients i·cᵢ, compensated, exact fallback), for grazing (double-root) detection.
+ *
+ * State: the polynomial is loaded once per realRoots call with `load` (module scratch, no allocation
+ * on the hot path; the solver is not re-entrant and needs no re-entrancy).
+ */
+
+import { ROOTS_MAX_ITERATIONS } from "../tolerances.js";
+import { RootSolverError, splitPoint } from "./bracket.js";
+import { compHorner, compHornerDD, hornerBound } from "./compHorner.js";
+import { exactDerivativeSign, exactPolySign, nextDown, nextUp } from "./exactPoly.js";
+
+const ev = new Float64Array(2);
+let P: Float64Array = new Float64Array(8);
+let dHi = new Float64Array(8);
+let dLo = new Float64Array(8);
+let deg = 0;
+let orig: ArrayLike<number> = P;
+/** |value| of the last certSign evaluation (compensated when it was computed), for choosing ends. */
+let lastAbs = 0;
+/** The last certSign value (compensated when plain was inconclusive), for Newton steps. */
+let lastVal = 0;
+/** Whether the last certSign found |p| within the plain Horner error bound (rounding noise). */
+let lastNoisy = false;
+/** Counts of exact (BigInt) fallbacks, for tests and the benchmark. */
+export const certStats = { exact: 0 };
+
+/** Load the (scaled) polynomial P of degree n; `original` holds the caller's exact coefficients. */
+export function load(scaled: Float64Array, n: number, original: ArrayLike<number>): void {
+  P = scaled;
+  deg = n;
+  orig = original;
+}
+
+/** Exact sign of P at x (plain, then compensated, then BigInt). Sets lastAbs. */
+export function certSign(x: number): number {
+  if (x === 0) {
+    const c0 = orig[0] as number;
+    lastNoisy = c0 === 0;
+    lastVal = P[0] as number;
+    lastAbs = Math.abs(lastVal);
+    return c0 > 0 ? 1 : c0 < 0 ? -1 : 0;
+  }
+  hornerBound(P, deg, x, ev);
+  let v = ev[0] as number;
+  lastVal = v;
+  if (Math.abs(v) > (ev[1] as number)) {
+    lastNoisy = false;
+    lastAbs = Math.abs(v);
+    return v > 0 ? 1 : -1;
+  }
+  lastNoisy = true;
+  compHorner(P, deg, x, ev);
+  v = ev[0] as number;
+  lastVal = v;
+  lastAbs = Math.abs(v);
+  const bound = ev[1] as number;
+  if (lastAbs > bound || bound === 0) return v > 0 ? 1 : v < 0 ? -1 : 0;
+  certStats.exact++;
+  return exactPolySign(orig, x);
+}
+
+/** |value| at the last certSign point. */
+export function lastAbsValue(): number {
+  return lastAbs;
+}
+
+/** Whether the last certSign point had |p| within the plain evaluation error bound. */
+export function lastWasNoisy(): boolean {
+  return lastNoisy;
+}
+
+/** Plain P'(x). */
+function derivAt(x: number): number {
+  let f = P[deg] as number;
+  let df = 0;
+  for (let i = deg - 1; i >= 0; i--) {
+    df = df * x + f;
+    f = f * x + (P[i] as number);
+  }
+  return df;
+}
+
+/** A double within one ulp of an exact root in [a, b] (exact signs sa at a, −sa at b). */
+export function refineRoot(a: number, b: number, sa: number, absA: number, absB: number, x0: number): number {
+  let x = x0 > a && x0 < b ? x0 : splitPoint(a, b);
+  let step = 1;
+  let lastDir = 0;
+  for (let it = 0; it < ROOTS_MAX_ITERATIONS; it++) {
+    const s = certSign(x);
+    if (s === 0) return x;
+    const dir = s === sa ? 1 : -1;
+    if (dir > 0) {
+      a = x;
+      absA = lastAbs;
+    } else {
+      b = x;
+      absB = lastAbs;
+    }
+    if (nextUp(a) >= b) return absA <= absB ? a : b;
+    let xn: number;
+    if (it < 8) {
+      xn = x - lastVal / derivAt(x);
+      // At least one ulp towards the root, doubling while the steps keep the same direction.
+      step = dir === lastDir ? step * 2 : 1;
+      if (dir > 0 ? !(xn > x) : !(xn < x)) {
+        xn = x;
+        for (let k = 0; k < step; k++) xn = dir > 0 ? nextUp(xn) : nextDown(xn);
+      }
+      if (!(xn > a && xn < b)) xn = splitPoint(a, b);
+    } else {
+      xn = splitPoint(a, b);
+    }
+    lastDir = dir;
+    x = xn;
+  }
+  throw new RootSolverError(
+    `refineRoot: no convergence in ${ROOTS_MAX_ITERATIONS} iterations on [${a}, ${b}]`,
+  );
+}
+
+/** Load the exact derivative i·cᵢ as double-double pairs (lazy: only for grazing checks). */
+function loadDerivative(): void {
+  if (dHi.length < deg) {
+    dHi = new Float64Array(deg);
+    dLo = new Float64Array(deg);
+  }
+  for (let i = 1; i <= deg; i++) {
+    const c = P[i] as number;
+    const h = i * c;
+    // TwoProduct(i, c) by splitting: i is a small integer (exact in 26 bits), so only c is split.
+    const t = 134217729 * c;
+    const ch = t - (t - c);
+    const cl = c - ch;
+    dHi[i - 1] = h;
+    dLo[i - 1] = i * cl - (h - i * ch);
+  }
+}
+
+/** Exact sign of P' at x (compensated double-double, then BigInt). */
+function certDerivSign(x: number): number {
+  compHornerDD(dHi, dLo, deg - 1, x, ev);
+  const v = ev[0] as number;
+  if (Math.abs(v) > (ev[1] as number)) return v > 0 ? 1 : -1;
+  certStats.exact++;
+  return exactDerivativeSign(orig, x);
+}
+
+/**
+ * Refine an approximate critical point x of P inside (lo, hi) to where the exact P' changes sign.
+ * Writes the two adjacent doubles around the sign change (equal when P' is exactly 0 there) into
+ * out[0], out[1]; leaves x (both) when no sign change of P' is found near x.
+ */
+export function criticalPoint(x: number, lo: number, hi: number, out: Float64Array): void {
+  out[0] = x;
+  out[1] = x;
+  if (deg < 2) return;
+  loadDerivative();
+  const s0 = certDerivSign(x);
+  if (s0 === 0) return;
+  // Search both directions, with steps of 1, 2, 4, … 64 ulps, for the nearest sign change of P'.
+  let up = x;
+  let down = x;
+  for (let w = 1; w <= 64; w *= 2) {
+    const prevUp = up;
+    const prevDown = down;
+    for (let k = 0; k < w; k++) {
+      up = nextUp(up);
+      down = nextDown(down);
+    }
+    if (up < hi) {
+      const s = certDerivSign(up);
+      if (s !== s0) {
+        bisectDerivative(prevUp, up, s0, s, out);
+        return;
+      }
+    }
+    if (down > lo) {
+      const s = certDerivSign(down);
+      if (s !== s0) {
+        bisectDerivative(down, prevDown, s, s0, out);
+        return;
+      }
+    }
+  }
+}
+
+/** Bisect a sign change of P' between a < b (exact signs sa, sb) down to adjacent doubles. */
+function bisectDerivative(a: number, b: number, sa: number, sb: number, out: Float64Array): void {
+  if (sa === 0 || sb === 0) {
+    out[0] = out[1] = sa === 0 ? a : b;
+    return;
+  }
+  for (let it = 0; it < ROOTS_MAX_ITERATIONS; it++) {
+    const m = splitPoint(a, b);
+    if (m === a) {
+      out[0] = a;
+      out[1] = b;
+      return;
+    }
+    const s = certDerivSign(m);
+    if (s === 0) {
+      out[0] = out[1] = m;
+      return;
+    }
+    if (s === sa) a = m;
+    else b = m;
+  }
+  throw new RootSolverError(
+    `criticalPoint: no convergence in ${ROOTS_MAX_ITERATIONS} iterations on [${a}, ${b}]`,
+  );
+}

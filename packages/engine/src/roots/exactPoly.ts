@@ -1,0 +1,126 @@
+/**
+ * Exact arithmetic on polynomials with double coefficients, for verification and for the solver's
+ * rare fallback when a compensated evaluation cannot decide a sign.
+ *
+ * Contract:
+ * - `exactPolySign(coeffs, x)`: the exact sign of c0 + c1 x + … + cn xⁿ, with the doubles taken at
+ *   their exact values (every finite double is m·2^e with integer m, e). Computed with BigInt dyadic
+ *   numbers, so no rounding at all. Throws a RangeError naming the field for a non-finite input.
+ * - `exactDerivativeSign(coeffs, x)`: the same for the first derivative c1 + 2 c2 x + … (exact).
+ * - `nextUp(x)` / `nextDown(x)`: the adjacent double above / below (IEEE-754 nextUp/nextDown).
+ * - `ulpsToExactRoot(coeffs, x, maxUlps = 64)`: the smallest k ≥ 0 such that the exact polynomial is
+ *   zero at, or changes sign between x and, the double k steps above or below x (so an exact root lies
+ *   within k ulps of x); Infinity when there is none within maxUlps steps.
+ * Pure functions; the typed-array views are module scratch (no allocation besides BigInts).
+ */
+
+const f64 = new Float64Array(1);
+const u32 = new Uint32Array(f64.buffer);
+/** Index of the high (sign/exponent) word in the Uint32 view: 1 on little-endian platforms. */
+const HI = (() => {
+  f64[0] = 1;
+  return u32[1] === 0x3ff00000 ? 1 : 0;
+})();
+const LO = 1 - HI;
+
+/** The adjacent double above x (nextUp(-0) = nextUp(0) = the smallest subnormal). */
+export function nextUp(x: number): number {
+  if (Number.isNaN(x) || x === Number.POSITIVE_INFINITY) return x;
+  if (x === 0) return Number.MIN_VALUE;
+  f64[0] = x;
+  let lo = u32[LO] as number;
+  let hi = u32[HI] as number;
+  if (x > 0) {
+    lo = (lo + 1) >>> 0;
+    if (lo === 0) hi = (hi + 1) >>> 0;
+  } else {
+    if (lo === 0) hi = (hi - 1) >>> 0;
+    lo = (lo - 1) >>> 0;
+  }
+  u32[LO] = lo;
+  u32[HI] = hi;
+  return f64[0] as number;
+}
+
+/** The adjacent double below x. */
+export function nextDown(x: number): number {
+  return -nextUp(-x);
+}
+
+/** A finite double as an exact dyadic: mantissa·2^exponent (mantissa a signed BigInt). */
+interface Dyadic {
+  m: bigint;
+  e: number;
+}
+
+function toDyadic(x: number, field: string): Dyadic {
+  if (!Number.isFinite(x)) throw new RangeError(`${field} must be a finite number, got ${x}`);
+  if (x === 0) return { m: 0n, e: 0 };
+  f64[0] = x;
+  const hi = u32[HI] as number;
+  const lo = u32[LO] as number;
+  const biased = (hi >>> 20) & 0x7ff;
+  let mant = (BigInt(hi & 0xfffff) << 32n) | BigInt(lo);
+  let e: number;
+  if (biased === 0) e = -1074;
+  else {
+    mant |= 1n << 52n;
+    e = biased - 1075;
+  }
+  return { m: x < 0 ? -mant : mant, e };
+}
+
+/** a + b exactly (aligning to the smaller exponent). */
+function add(a: Dyadic, b: Dyadic): Dyadic {
+  if (a.m === 0n) return b;
+  if (b.m === 0n) return a;
+  if (a.e === b.e) return { m: a.m + b.m, e: a.e };
+  if (a.e > b.e) return { m: (a.m << BigInt(a.e - b.e)) + b.m, e: b.e };
+  return { m: a.m + (b.m << BigInt(b.e - a.e)), e: a.e };
+}
+
+function signOf(m: bigint): -1 | 0 | 1 {
+  return m > 0n ? 1 : m < 0n ? -1 : 0;
+}
+
+/** Exact sign of Σ k_i c_i x^(i-shift) for i ≥ shift, where k_i = i (derivative) or 1. */
+function hornerSign(coeffs: ArrayLike<number>, x: number, derivative: boolean): -1 | 0 | 1 {
+  const xd = toDyadic(x, "x");
+  const start = derivative ? 1 : 0;
+  let s: Dyadic = { m: 0n, e: 0 };
+  for (let i = coeffs.length - 1; i >= start; i--) {
+    const c = toDyadic(coeffs[i] as number, `coeffs[${i}]`);
+    if (derivative) c.m *= BigInt(i);
+    s = s.m === 0n ? c : add({ m: s.m * xd.m, e: s.e + xd.e }, c);
+  }
+  return signOf(s.m);
+}
+
+/** Exact sign of the polynomial with double coefficients `coeffs` (ascending) at the double x. */
+export function exactPolySign(coeffs: ArrayLike<number>, x: number): -1 | 0 | 1 {
+  return hornerSign(coeffs, x, false);
+}
+
+/** Exact sign of the first derivative of the polynomial at the double x. */
+export function exactDerivativeSign(coeffs: ArrayLike<number>, x: number): -1 | 0 | 1 {
+  return hornerSign(coeffs, x, true);
+}
+
+/**
+ * How many ulps x is from an exact root of the polynomial: the smallest k such that the exact sign
+ * is 0 at, or differs from the sign at x at, the double k steps above or below x. Infinity when
+ * no such k ≤ maxUlps exists (walking stops at ±Infinity).
+ */
+export function ulpsToExactRoot(coeffs: ArrayLike<number>, x: number, maxUlps = 64): number {
+  const s0 = exactPolySign(coeffs, x);
+  if (s0 === 0) return 0;
+  let up = x;
+  let down = x;
+  for (let k = 1; k <= maxUlps; k++) {
+    up = nextUp(up);
+    down = nextDown(down);
+    if (Number.isFinite(up) && exactPolySign(coeffs, up) !== s0) return k;
+    if (Number.isFinite(down) && exactPolySign(coeffs, down) !== s0) return k;
+  }
+  return Number.POSITIVE_INFINITY;
+}

@@ -1,0 +1,150 @@
+/**
+ * Plain-arithmetic kernels of the solver: safeguarded Newton on a bracket, the cancellation-free
+ * quadratic formula, and the roots of a polynomial on monotone pieces.
+ *
+ * - `newtonPlain(c, off, n, a, b, fa, fb)`: a root of the degree-n polynomial c[off..off+n] in
+ *   (a, b), given plain values fa, fb of opposite signs. Halley steps (Newton with the second
+ *   derivative: cubic convergence, so fewer evaluations) are accepted only inside the current
+ *   bracket and while they at least halve the step before last; otherwise the bracket is
+ *   split (splitPoint); after NEWTON_STEPS steps only splitting. Stops when a step is below 2^-26 relative (the next error is then far below
+ *   an ulp at a simple root) or the bracket is two adjacent
+ *   doubles. Signs here are plain Horner signs: the result is as good as plain evaluation allows;
+ *   callers that need certainty refine it (see certify.ts).
+ * - `quadRootsPlain(c0, c1, c2, lo, hi, out, k)`: roots of c2 t² + c1 t + c0 strictly inside (lo, hi)
+ *   with q = −(c1 + sign(c1)√disc)/2, roots q/c2 and c0/q (no cancellation), appended to out[k…];
+ *   returns the new count.
+ * - `pieceRoots(c, off, n, lo, hi, splits, ns, out)`: the roots strictly inside (lo, hi) of a
+ *   polynomial monotone between consecutive splits (its critical points), sorted, into out; returns
+ *   the count.
+ */
+
+import { ROOTS_MAX_ITERATIONS } from "../tolerances.js";
+import { RootSolverError, splitPoint } from "./bracket.js";
+
+/**
+ * Stop once a Halley step is below 2^-26 of |x|: with cubic (or Newton's quadratic) convergence the
+ * step just taken leaves an error far below one ulp for a simple root; at multiple or clustered roots
+ * the result is less precise, which is harmless here (split points only need to be close, and
+ * level-0 roots are certified afterwards by certify.ts).
+ */
+const EARLY = 2 ** -26;
+/**
+ * Newton steps allowed before pure halving: Newton converges in a handful of steps at simple roots
+ * but only linearly (halving) at multiple roots, which near 0 could take ~1000 steps; halving in the
+ * ordering of doubles then ends in at most about 120 more.
+ */
+const NEWTON_STEPS = 20;
+
+/** Safeguarded Halley/Newton on a bracket with plain values of opposite signs at its ends. */
+export function newtonPlain(
+  c: ArrayLike<number>,
+  off: number,
+  n: number,
+  a: number,
+  b: number,
+  fa: number,
+  fb: number,
+): number {
+  const aNeg = fa < 0;
+  let x = a - fa * ((b - a) / (fb - fa));
+  if (!(x > a && x < b)) x = splitPoint(a, b);
+  let dxOld = Number.POSITIVE_INFINITY;
+  let dx = Number.POSITIVE_INFINITY;
+  for (let it = 0; it < ROOTS_MAX_ITERATIONS; it++) {
+    // p, p' and p''/2 at x in one Horner pass.
+    let f = c[off + n] as number;
+    let d1 = 0;
+    let d2 = 0;
+    for (let i = n - 1; i >= 0; i--) {
+      d2 = d2 * x + d1;
+      d1 = d1 * x + f;
+      f = f * x + (c[off + i] as number);
+    }
+    if (f === 0) return x;
+    if (f < 0 === aNeg) a = x;
+    else b = x;
+    // Halley's step (cubic convergence); Newton's where its denominator degenerates.
+    const den = d1 * d1 - f * d2;
+    const step = den !== 0 && it < NEWTON_STEPS ? (f * d1) / den : f / d1;
+    const as = step < 0 ? -step : step;
+    const ax = x < 0 ? -x : x;
+    let xn = x - step;
+    if (as <= EARLY * ax && xn >= a && xn <= b) return xn; // the next error is far below one ulp
+    if (it >= NEWTON_STEPS || !(xn > a && xn < b) || as > 0.5 * (dxOld < 0 ? -dxOld : dxOld)) {
+      xn = splitPoint(a, b);
+      if (xn === a) return x; // a and b adjacent
+    }
+    dxOld = dx;
+    dx = xn - x;
+    x = xn;
+  }
+  throw new RootSolverError(`newton: no convergence in ${ROOTS_MAX_ITERATIONS} iterations on [${a}, ${b}]`);
+}
+
+/** Roots of c2 t² + c1 t + c0 (c2 ≠ 0) strictly inside (lo, hi), sorted, appended at out[k]. */
+export function quadRootsPlain(
+  c0: number,
+  c1: number,
+  c2: number,
+  lo: number,
+  hi: number,
+  out: Float64Array,
+  k: number,
+): number {
+  const disc = c1 * c1 - 4 * c2 * c0;
+  if (!(disc >= 0)) return k;
+  let r1: number;
+  let r2: number;
+  if (disc === 0) {
+    r1 = r2 = -c1 / (2 * c2);
+  } else {
+    const sq = Math.sqrt(disc);
+    const q = c1 >= 0 ? -0.5 * (c1 + sq) : -0.5 * (c1 - sq);
+    r1 = q / c2;
+    r2 = c0 / q;
+    if (r1 > r2) {
+      const t = r1;
+      r1 = r2;
+      r2 = t;
+    }
+  }
+  if (r1 > lo && r1 < hi) out[k++] = r1;
+  if (r2 !== r1 && r2 > lo && r2 < hi) out[k++] = r2;
+  return k;
+}
+
+/** Horner value of c[off..off+n] at x. */
+function hornerAt(c: ArrayLike<number>, off: number, n: number, x: number): number {
+  let f = c[off + n] as number;
+  for (let i = n - 1; i >= 0; i--) f = f * x + (c[off + i] as number);
+  return f;
+}
+
+/** Roots strictly inside (lo, hi) of a polynomial monotone between consecutive sorted splits. */
+export function pieceRoots(
+  c: ArrayLike<number>,
+  off: number,
+  n: number,
+  lo: number,
+  hi: number,
+  splits: Float64Array,
+  ns: number,
+  out: Float64Array,
+): number {
+  let k = 0;
+  let a = lo;
+  let fa = hornerAt(c, off, n, lo);
+  for (let i = 0; i <= ns; i++) {
+    const b = i < ns ? (splits[i] as number) : hi;
+    const fb = hornerAt(c, off, n, b);
+    if (fa !== 0 && fb !== 0 && fa < 0 !== fb < 0) {
+      const r = newtonPlain(c, off, n, a, b, fa, fb);
+      if (r > lo && r < hi && (k === 0 || r > (out[k - 1] as number))) out[k++] = r;
+    } else if (fb === 0 && i < ns && (k === 0 || b > (out[k - 1] as number))) {
+      out[k++] = b;
+    }
+    a = b;
+    fa = fb;
+  }
+  return k;
+}
