@@ -9,7 +9,8 @@ export function galperinCount(digits) {
   return Number(PI_DIGITS.slice(0, digits));
 }
 
-export function galperin(digits, { span = 20 } = {}) {
+/** Span: 2 s past the last collision of the 1D reference loop (so every collision is inside it). */
+export function galperin(digits, { span = Math.ceil(galperin1D(digits).lastTime) + 2 } = {}) {
   return {
     id: `galperin-${digits}`,
     title: `Galperin's billiard, ${digits} digit${digits > 1 ? "s" : ""}`,
@@ -28,4 +29,35 @@ export function galperin(digits, { span = 20 } = {}) {
     escaped: (s) => (s[0].x < 0 || s[0].x > s[1].x ? 1 : 0),
     exact: { collisions: galperinCount(digits) },
   };
+}
+
+/**
+ * The same billiard as a plain 1D event loop in doubles (wall contact at x = 1, disc contact at a
+ * gap of 2): the collision count and the time of the last collision. Used to size the span that
+ * the step-based peers simulate, so that every collision falls inside it.
+ */
+export function galperin1D(digits) {
+  const M = 100 ** (digits - 1);
+  let xl = 5;
+  let xh = 10;
+  let vl = 0;
+  let vh = -1;
+  let t = 0;
+  let count = 0;
+  for (;;) {
+    const tw = vl < 0 ? (xl - 1) / -vl : Number.POSITIVE_INFINITY;
+    const td = vl > vh ? (xh - xl - 2) / (vl - vh) : Number.POSITIVE_INFINITY;
+    const dt = Math.min(tw, td);
+    if (dt === Number.POSITIVE_INFINITY) return { count, lastTime: t };
+    xl += vl * dt;
+    xh += vh * dt;
+    t += dt;
+    count++;
+    if (tw <= td) vl = -vl;
+    else {
+      const nl = ((1 - M) * vl + 2 * M * vh) / (1 + M);
+      vh = ((M - 1) * vh + 2 * vl) / (1 + M);
+      vl = nl;
+    }
+  }
 }

@@ -19,9 +19,9 @@ function methods(engine) {
 }
 
 /** ns per call over the whole set, median of `runs` passes after a warm-up pass. */
-function timePerCall(fn, polys, lo, hi, runs) {
+function timePerCall(fn, polys, lo, hi, runs, calls) {
   let sink = 0;
-  const reps = Math.max(1, Math.round(100000 / polys.length));
+  const reps = Math.max(1, Math.round(calls / polys.length));
   const pass = () => {
     for (let r = 0; r < reps; r++) for (const c of polys) sink += fn(c, lo, hi).length;
   };
@@ -49,7 +49,7 @@ function summarize(errors) {
 export function runSolver({ quick, engine, log }) {
   const sign = engine.exactPolySign;
   if (typeof sign !== "function") throw new Error("exactPolySign missing from the built engine");
-  const count = quick ? 500 : 4000;
+  const count = quick ? 300 : 4000;
   const runs = quick ? 5 : 9;
   const { polys, lo, hi } = collisionQuartics(count, 7);
   const ms = methods(engine);
@@ -63,7 +63,7 @@ export function runSolver({ quick, engine, log }) {
     Math.max(...errorsPer.map((e) => e[k].filter(Number.isFinite).length)),
   );
   ms.forEach((m, i) => {
-    const t = timePerCall(m.fn, polys, lo, hi, runs);
+    const t = timePerCall(m.fn, polys, lo, hi, runs, quick ? 30000 : 200000);
     let missed = 0;
     errorsPer[i].forEach((e, k) => {
       missed += Math.max(0, expected[k] - e.filter(Number.isFinite).length);
@@ -101,7 +101,7 @@ export function runSolver({ quick, engine, log }) {
   const hardPolys = hardQuartics();
   const hardTiming = ms.map((m) => {
     let sink = 0;
-    const reps = 5000;
+    const reps = quick ? 1000 : 5000;
     const r = measure(
       () => {
         for (let k = 0; k < reps; k++) for (const h of hardPolys) sink += m.fn(h.coeffs, h.lo, h.hi).length;

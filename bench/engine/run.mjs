@@ -1,0 +1,266 @@
+/**
+ * Section "engine": chapgame alone.
+ * - scaling: events/s of the dilute gas (10 % packing, speed 10) against N, per-event cost ratio
+ *   N = 1e5 vs 1e3 (target ≤ 2) and events/s at N = 1e4 (target ≥ 1e6); heap bytes per body.
+ * - galperin7: Galperin's billiard with 7 digits run to idle (target < 2 s, 3,141,592 collisions).
+ * - ablations: each World `optimizations` switch off in turn, on the scene where it should matter,
+ *   same span, same events (checked), time ratio off/on.
+ * - timeline: stateAt latency and history bytes per event, when the engine exports Timeline.
+ */
+
+import { lcg } from "../lib/lcg.mjs";
+import { gc, median, nowNs, timedRuns } from "../lib/timing.mjs";
+import { buildWorld } from "../peers/chapgame.mjs";
+import { galperin } from "../scenes/galperin.mjs";
+import { gas } from "../scenes/gas.mjs";
+
+const collisions = (c) => c.bodyBody + c.bodyLine + c.bodyPoint;
+
+/** Advance in chunks until `events` events or `seconds` of wall time, whichever comes first. */
+function warmUp(world, events, seconds) {
+  const a = nowNs();
+  let done = 0;
+  while (done < events && nowNs() - a < seconds * 1e9) done += world.advance({ maxEvents: 2000 }).events;
+  return { events: done, ns: nowNs() - a };
+}
+
+function scaling({ quick, engine, log }) {
+  const ns = quick ? [1000, 10000, 100000] : [1000, 3000, 10000, 30000, 100000];
+  const target = quick ? 0.3 : 1.5; // seconds per timed batch
+  const runs = quick ? 3 : 5;
+  const rows = [];
+  for (const n of ns) {
+    try {
+      gc();
+      const heap0 = process.memoryUsage().heapUsed;
+      const scene = gas({ n, packing: 0.1, speed: 10, seed: 11, span: 1e9 });
+      const t0 = nowNs();
+      const world = buildWorld(engine, scene);
+      const buildNs = nowNs() - t0;
+      gc();
+      const heapBytesPerBody = (process.memoryUsage().heapUsed - heap0) / n;
+      // warm-up: leaves the grid start (about two events per disc) and measures the rate
+      const w = warmUp(world, 2 * n, quick ? 1 : 4);
+      const rate = w.events / (w.ns / 1e9);
+      const batch = Math.max(5000, Math.min(2e6, Math.round((rate * target) / 1000) * 1000));
+      const t = timedRuns(
+        () => {
+          const a = nowNs();
+          const r = world.advance({ maxEvents: batch });
+          if (r.events !== batch) throw new Error(`advance stopped after ${r.events} events (${r.reason})`);
+          return nowNs() - a;
+        },
+        { runs, budgetNs: 30e9 },
+      );
+      const eventsPerSecond = batch / (t.medianNs / 1e9);
+      rows.push({
+        n,
+        batch,
+        warmupEvents: w.events,
+        runs: t.runs,
+        eventsPerSecond,
+        nsPerEvent: t.medianNs / batch,
+        buildNs,
+        heapBytesPerBody,
+        simTime: world.time,
+      });
+      log(
+        `  scaling N=${n}: ${(eventsPerSecond / 1e6).toFixed(3)} M events/s, ${heapBytesPerBody.toFixed(0)} B/body`,
+      );
+    } catch (e) {
+      rows.push({ n, error: String(e.message ?? e) });
+      log(`  scaling N=${n}: ERROR ${e.message}`);
+    }
+  }
+  const at = (n) => rows.find((r) => r.n === n && !r.error);
+  const r3 = at(1000);
+  const r5 = at(100000);
+  const r4 = at(10000);
+  return {
+    rows,
+    eventsPerSecondAt1e4: r4?.eventsPerSecond ?? null,
+    costRatio1e5over1e3: r3 && r5 ? r5.nsPerEvent / r3.nsPerEvent : null,
+    targets: { eventsPerSecondAt1e4: 1e6, costRatio: 2 },
+  };
+}
+
+function galperinRun({ quick, engine, log }, digits) {
+  const scene = galperin(digits, { span: 1e9 });
+  try {
+    const once = () => {
+      const world = buildWorld(engine, scene);
+      const a = nowNs();
+      world.advance({});
+      const ns = nowNs() - a;
+      return { ns, count: collisions(world.counts), world };
+    };
+    buildWorld(engine, galperin(5)).advance({}); // warm-up (JIT) on a smaller count
+    const first = once();
+    const t = quick
+      ? { medianNs: first.ns, runs: 0 }
+      : timedRuns(() => once().ns, { runs: 2, budgetNs: 20e9 });
+    const all = quick ? [first.ns] : [first.ns, ...t.allNs];
+    t.medianNs = median(all);
+    const b = first.world.bodies();
+    log(`  galperin ${digits}: ${first.count} collisions in ${(t.medianNs / 1e9).toFixed(3)} s`);
+    return {
+      digits,
+      expected: scene.exact.collisions,
+      count: first.count,
+      correct: first.count === scene.exact.collisions,
+      seconds: t.medianNs / 1e9,
+      runs: all.length,
+      final: b.map((s) => ({ id: s.id, vx: s.vx })),
+    };
+  } catch (e) {
+    log(`  galperin ${digits}: ERROR ${e.message}`);
+    return { digits, expected: scene.exact.collisions, error: String(e.message ?? e) };
+  }
+}
+
+/** Friction gas: every disc decelerates at μg and stops; paths are finite segments. */
+function frictionGas(n, seed) {
+  const s = gas({ n, packing: 0.1, speed: 10, seed, span: 6 });
+  s.g = 10;
+  for (const b of s.bodies) b.mu = 0.2;
+  s.id = "friction-gas";
+  s.description = `${n} discs, 10 % packing, speed 10, μ = 0.2, g = 10 (all stop within 5 s); simulate 6 s`;
+  return s;
+}
+
+/** Mostly resting: n discs at rest on a grid and n/50 moving discs. */
+function mostlyResting(n, seed) {
+  const s = gas({ n, packing: 0.1, speed: 10, seed, span: 5 });
+  const rnd = lcg(seed + 1);
+  for (const b of s.bodies) {
+    if (rnd() >= 0.02) {
+      b.vx = 0;
+      b.vy = 0;
+    }
+  }
+  s.id = "mostly-resting";
+  s.description = `${n} discs, 10 % packing, 98 % at rest, the rest at speed 10, no friction; simulate 5 s`;
+  return s;
+}
+
+function ablations({ quick, engine, log }) {
+  const n = quick ? 1000 : 3000;
+  const cases = [
+    { flag: "broadPhase", scene: gas({ n, packing: 0.1, speed: 10, seed: 5, span: quick ? 2 : 4 }) },
+    { flag: "quadraticFastPath", scene: gas({ n, packing: 0.1, speed: 10, seed: 5, span: quick ? 2 : 4 }) },
+    { flag: "pathBounds", scene: frictionGas(n, 6) },
+    { flag: "restingSkip", scene: mostlyResting(n, 7) },
+  ];
+  const out = [];
+  for (const c of cases) {
+    try {
+      const run = (opt) => {
+        const world = buildWorld(engine, c.scene, { optimizations: opt });
+        const a = nowNs();
+        const r = world.advance({ untilTime: c.scene.span });
+        return { ns: nowNs() - a, events: r.events };
+      };
+      run({});
+      const on = [];
+      const off = [];
+      let evOn = 0;
+      let evOff = 0;
+      const reps = quick ? 2 : 3;
+      for (let i = 0; i < reps; i++) {
+        const a = run({});
+        const b = run({ [c.flag]: false });
+        on.push(a.ns);
+        off.push(b.ns);
+        evOn = a.events;
+        evOff = b.events;
+      }
+      const row = {
+        flag: c.flag,
+        scene: c.scene.id,
+        description: c.scene.description,
+        bodies: c.scene.bodies.length,
+        events: evOn,
+        eventsOff: evOff,
+        sameEvents: evOn === evOff,
+        msOn: median(on) / 1e6,
+        msOff: median(off) / 1e6,
+        speedup: median(off) / median(on),
+        runs: reps,
+      };
+      out.push(row);
+      log(
+        `  ablation ${c.flag}: ${row.msOn.toFixed(1)} ms on, ${row.msOff.toFixed(1)} ms off (×${row.speedup.toFixed(2)})`,
+      );
+    } catch (e) {
+      out.push({ flag: c.flag, scene: c.scene.id, error: String(e.message ?? e) });
+      log(`  ablation ${c.flag}: ERROR ${e.message}`);
+    }
+  }
+  return out;
+}
+
+function timeline({ quick, engine, log }) {
+  if (typeof engine.Timeline !== "function")
+    return { error: "Timeline is not exported by @chapgame/engine yet" };
+  try {
+    const n = 1000;
+    const scene = gas({ n, packing: 0.1, speed: 10, seed: 3, span: quick ? 5 : 20 });
+    const tl = new engine.Timeline({ g: 0 });
+    for (const w of scene.walls)
+      tl.apply({ time: 0, type: "addLine", id: w.id, p1: w.p1, p2: w.p2, kind: w.kind });
+    for (const b of scene.bodies)
+      tl.apply({
+        time: 0,
+        type: "addBody",
+        id: b.id,
+        x: b.x,
+        y: b.y,
+        r: b.r,
+        m: b.m,
+        mu: 0,
+        v: [b.vx, b.vy],
+      });
+    const a = nowNs();
+    tl.prolong({ time: scene.span });
+    const prolongNs = nowNs() - a;
+    const events = tl.eventCount;
+    const rnd = lcg(99);
+    const lat = [];
+    for (let i = 0; i < 200; i++) tl.stateAt(rnd() * scene.span); // warm-up
+    for (let i = 0; i < (quick ? 300 : 2000); i++) {
+      const t = rnd() * scene.span;
+      const s = nowNs();
+      tl.stateAt(t);
+      lat.push(nowNs() - s);
+    }
+    lat.sort((x, y) => x - y);
+    const res = {
+      bodies: n,
+      span: scene.span,
+      events,
+      prolongEventsPerSecond: events / (prolongNs / 1e9),
+      stateAtMedianUs: lat[Math.floor(lat.length / 2)] / 1e3,
+      stateAtP95Us: lat[Math.floor(lat.length * 0.95)] / 1e3,
+      historyBytes: tl.historyBytes(),
+      bytesPerEvent: tl.historyBytes() / Math.max(1, events),
+    };
+    log(
+      `  timeline: stateAt median ${res.stateAtMedianUs.toFixed(1)} µs, ${res.bytesPerEvent.toFixed(1)} B/event`,
+    );
+    return res;
+  } catch (e) {
+    log(`  timeline: ERROR ${e.message}`);
+    return { error: String(e.message ?? e) };
+  }
+}
+
+export function runEngine(ctx) {
+  if (typeof ctx.engine.World !== "function")
+    return { error: "World is not exported by @chapgame/engine yet" };
+  const out = {};
+  out.scaling = scaling(ctx);
+  out.galperin7 = galperinRun(ctx, 7);
+  out.ablations = ablations(ctx);
+  out.timeline = timeline(ctx);
+  return out;
+}

@@ -1,0 +1,23 @@
+/** Number formatting for the generated report (pure helpers). */
+export const dash = "—";
+
+export function sig(v, digits = 3) {
+  if (v === null || v === undefined || Number.isNaN(v)) return dash;
+  if (!Number.isFinite(v)) return v > 0 ? "∞" : "−∞";
+  if (v === 0) return "0";
+  const a = Math.abs(v);
+  if (a >= 1e6 || a < 1e-3) return v.toExponential(digits - 1).replace("e+", "e");
+  return String(Number(v.toPrecision(digits)));
+}
+
+export const pct = (v) => (v === null || v === undefined ? dash : `${sig(100 * v)} %`);
+export const ms = (ns) => (ns === null || ns === undefined ? dash : `${sig(ns / 1e6)} ms`);
+export const int = (v) => (v === null || v === undefined ? dash : Math.round(v).toLocaleString("en-US"));
+
+export function table(head, rows) {
+  const line = (cells) => `| ${cells.map((c) => String(c).replace(/\|/g, "\\|")).join(" | ")} |`;
+  return [line(head), line(head.map(() => "---")), ...rows.map(line)].join("\n");
+}
+
+export const status = (ok) =>
+  ok === null || ok === undefined ? "not measured" : ok ? "**met**" : "**missed**";

@@ -1,0 +1,549 @@
+/**
+ * Report generator: results JSON → docs/benchmarks.md, docs/bench/*.svg and
+ * docs/benchmarks-headline.md. Nothing in the report is typed by hand: every number comes from the
+ * JSON; the prose here only names what was measured and the fixed caveats of the method.
+ * Usage: node bench/report/generate.mjs [results.json]   (default bench/results/latest.json)
+ */
+import { mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { dirname, join } from "node:path";
+import { fileURLToPath } from "node:url";
+import { dash, int, ms, sig, status, table } from "./format.mjs";
+import { galperinTable, scenePlot, sceneTable, settingsSection } from "./peers.mjs";
+import { plot } from "./svg.mjs";
+
+const ROOT = join(dirname(fileURLToPath(import.meta.url)), "..", "..");
+
+const CAVEATS = [
+  "Peers are stepped at a fixed rate; only `step()` is timed (plus, in the friction break, the harness's per-step friction decrement, which a user of those engines must write too). chapgame is timed for one `advance({ untilTime: span })`; scene construction is never timed.",
+  "Overlap and escape are sampled at 240 Hz for every engine (every step when the step rate is 240 Hz or lower); the final state is read at the end of the span.",
+  "Peer collision counts are the engines' own contact-begin events (matter `collisionStart` pairs, planck `begin-contact`, rapier started collision events). A contact that persists over several steps counts once, so repeated bounces inside one contact are invisible: on Galperin's billiard these counts are a lower bound of what the engine resolved.",
+  "Walls: chapgame uses the segments/lines themselves; every peer gets solid boxes behind them (10 units thick for box walls, 0.001 for the thin wall of the tunnelling scene), which helps the peers.",
+  "matter-js works in pixels (30 px per unit) and has polygonal circles (25 sides by default, 64 in the tuned run); its resting threshold is a private module-global (`Resolver._restingThresh`) that the harness sets per run and restores.",
+  "rapier2d-compat computes in 32-bit floats inside WASM; masses of 1e10 and above (Galperin ≥ 6 digits) are beyond what f32 mass ratios resolve.",
+  "The peers have no sliding friction for a top-down table: the break applies μ·g·dt per step to each speed (clamped at zero). Energy is not conserved there by design; the break's error column is the worst overlap.",
+  "For the gas scenes there is no exact final state (the dynamics is chaotic); collision counts there are compared with chapgame's count over the same span, which is only a statistical reference.",
+  "Timings are medians of the runs listed (after a warm-up pass that also collects the metrics), on the machine printed above; ratios measured in the same run are the headline, absolute times are context.",
+];
+
+function machineBlock(r) {
+  const m = r.machine;
+  return table(
+    ["cpu", "cores", "memory", "platform", "node", "v8", "mode", "run took", "date"],
+    [
+      [
+        m.cpu,
+        m.cores,
+        `${m.memoryGiB} GiB`,
+        m.platform,
+        m.node,
+        m.v8,
+        r.quick ? "quick (`--quick`)" : "full",
+        `${sig(r.seconds)} s`,
+        r.date,
+      ],
+    ],
+  );
+}
+
+function solverSection(s, out, svgs) {
+  if (!s) return;
+  out.push("## 1. Root solver: time per call against error\n");
+  if (s.error) {
+    out.push(`Not measured: ${s.error}\n`);
+    return;
+  }
+  const rnd = s.random;
+  out.push(
+    `${int(rnd.count)} random collision quartics |d + u t + w t²/2|² − R² (seeded LCG ${rnd.seed}, interval [${rnd.interval.join(", ")}]). ` +
+      "Error = ulps from the computed root to the nearest point where the exact polynomial (the double coefficients taken exactly, BigInt arithmetic via the engine's `exactPolySign`) is zero or changes sign, found by a doubling search then bisection on the ulp index. " +
+      '"missed" = roots that the best method found near a true sign change but this one did not return; "spurious" = returned roots with no sign change within 2^62 ulps.\n',
+  );
+  const rr = rnd.methods.find((m) => m.id === "realRoots");
+  const bis = rnd.methods.find((m) => m.id === "bisection");
+  out.push(
+    table(
+      [
+        "method",
+        "ns per call (random)",
+        "ns per call (hard set)",
+        "median ulps",
+        "p99 ulps",
+        "worst ulps",
+        "missed",
+        "spurious",
+      ],
+      rnd.methods.map((m) => [
+        m.label,
+        sig(m.nsPerCall),
+        sig(s.hardTiming.find((h) => h.id === m.id)?.nsPerCall),
+        sig(m.medianUlps),
+        sig(m.p99Ulps),
+        sig(m.worstUlps),
+        m.missed,
+        m.spurious,
+      ]),
+    ),
+  );
+  out.push("");
+  if (rr && bis)
+    out.push(
+      `Target: realRoots ≤ ${s.targetNs} ns per call (median) — measured ${sig(rr.nsPerCall)} ns: ${status(rr.nsPerCall <= s.targetNs)}. ` +
+        `Same run: ${sig(bis.nsPerCall / rr.nsPerCall)}× the speed of the seed's bisection, with median error ${sig(rr.medianUlps)} ulps against ${sig(bis.medianUlps)}.\n`,
+    );
+  svgs["solver.svg"] = plot({
+    title: "Root solvers: time per call vs error",
+    xLabel: "median ns per call (random collision quartics)",
+    yLabel: "error in ulps + 1",
+    xLog: true,
+    yLog: true,
+    series: rnd.methods.flatMap((m, i) => [
+      {
+        name: `${m.id} median`,
+        marker: "circle",
+        line: false,
+        color: ["#000", "#d62728", "#1f77b4", "#2ca02c"][i],
+        points: [[m.nsPerCall, (m.medianUlps ?? Number.NaN) + 1]],
+      },
+      {
+        name: `${m.id} worst`,
+        marker: "square",
+        line: false,
+        color: ["#000", "#d62728", "#1f77b4", "#2ca02c"][i],
+        points: [[m.nsPerCall, (m.worstUlps ?? Number.NaN) + 1]],
+      },
+    ]),
+  });
+  out.push("![solver: time vs error](bench/solver.svg)\n");
+  out.push(
+    "Hard cases (kinds used in published quartic test sets: extreme spread, clusters, double and near-double roots, grazing, a near-tangent minimum without real roots). Each cell: roots returned / roots expected, worst error in ulps (exact double roots are measured against the known root).\n",
+  );
+  const ids = s.hard[0]?.results.map((r) => r.id) ?? [];
+  out.push(
+    table(
+      ["case", "polynomial", ...ids],
+      s.hard.map((h) => [
+        h.id,
+        h.note,
+        ...h.results.map(
+          (r) => `${r.found}/${h.expected}, ${r.worstUlps === null ? dash : `${sig(r.worstUlps)} ulps`}`,
+        ),
+      ]),
+    ),
+  );
+  out.push("");
+}
+
+function peersSection(p, out, svgs) {
+  if (!p) return;
+  out.push("## 2. chapgame against the peers\n");
+  out.push(
+    `Fixed steps: ${p.rates.join(", ")} Hz. Configurations: **tuned** = restitution 1, friction 0, thresholds off, CCD/bullets on where they exist; **defaults** = the same scene physics (restitution 1, friction 0, no damping, no sleeping, rotations locked) with every engine knob at its default.\n`,
+  );
+  out.push("### Peer settings\n");
+  out.push(settingsSection(p.settings));
+  out.push("### Galperin's billiard: collisions counted\n");
+  out.push(galperinTable(p.scenes, p.rates));
+  out.push("");
+  const names = Object.keys(p.settings);
+  for (const scene of p.scenes) {
+    out.push(`### ${scene.title}\n`);
+    out.push(`${scene.description}\n`);
+    const file = `peers-${scene.id}.svg`;
+    svgs[file] = scenePlot(scene, names);
+    out.push(`![${scene.id}](bench/${file})\n`);
+    out.push(sceneTable(scene));
+    out.push("");
+  }
+}
+
+function engineSection(e, out, svgs) {
+  if (!e) return;
+  out.push("## 3. Engine scaling, Galperin 7 digits, optimisations\n");
+  if (e.error) {
+    out.push(`Not measured: ${e.error}\n`);
+    return;
+  }
+  const sc = e.scaling;
+  out.push(
+    "Dilute gas (10 % packing, r = 1, speed 10, box walls), timed batches of events after a warm-up that leaves the grid start; events/s = batch / median batch time. Heap per body = heap growth when building the world / N.\n",
+  );
+  out.push(
+    table(
+      ["N", "events per batch", "runs", "events/s", "ns per event", "heap bytes per body", "build time"],
+      sc.rows.map((r) =>
+        r.error
+          ? [int(r.n), `error: ${r.error}`, "", "", "", "", ""]
+          : [
+              int(r.n),
+              int(r.batch),
+              r.runs,
+              int(r.eventsPerSecond),
+              sig(r.nsPerEvent),
+              int(r.heapBytesPerBody),
+              ms(r.buildNs),
+            ],
+      ),
+    ),
+  );
+  out.push("");
+  out.push(
+    `- Events/s at N = 10,000: ${int(sc.eventsPerSecondAt1e4)} (target ≥ ${int(sc.targets.eventsPerSecondAt1e4)}): ${status(sc.eventsPerSecondAt1e4 === null ? null : sc.eventsPerSecondAt1e4 >= sc.targets.eventsPerSecondAt1e4)}.`,
+  );
+  out.push(
+    `- Cost per event at N = 100,000 / N = 1,000: ${sig(sc.costRatio1e5over1e3)} (target ≤ ${sc.targets.costRatio}): ${status(sc.costRatio1e5over1e3 === null ? null : sc.costRatio1e5over1e3 <= sc.targets.costRatio)}.`,
+  );
+  const g = e.galperin7;
+  if (g.error) out.push(`- Galperin's billiard, 7 digits: error: ${g.error}.`);
+  else
+    out.push(
+      `- Galperin's billiard, 7 digits: ${int(g.count)} collisions (exact ${int(g.expected)}${g.correct ? ", correct" : ", WRONG"}) in ${sig(g.seconds)} s (target < 2 s): ${status(g.correct && g.seconds < 2)}.`,
+    );
+  out.push("");
+  const ok = sc.rows.filter((r) => !r.error);
+  svgs["scaling.svg"] = plot({
+    title: "Dilute gas: events per second against N",
+    xLabel: "N (discs)",
+    yLabel: "events per second",
+    xLog: true,
+    yLog: true,
+    series: [
+      { name: "chapgame", points: ok.map((r) => [r.n, r.eventsPerSecond]) },
+      {
+        name: "target at 1e4",
+        marker: "diamond",
+        line: false,
+        points: [[1e4, sc.targets.eventsPerSecondAt1e4]],
+      },
+    ],
+  });
+  out.push("![scaling](bench/scaling.svg)\n");
+  out.push(
+    'Each "skip what the scene does not need" optimisation switched off in turn (World option `optimizations: { <flag>: false }`), same scene and span; "same events" checks that the switch changes only the time.\n',
+  );
+  out.push(
+    table(
+      ["optimisation off", "scene", "bodies", "events", "same events", "time on", "time off", "off / on"],
+      e.ablations.map((a) =>
+        a.error
+          ? [a.flag, a.scene, "", `error: ${a.error}`, "", "", "", ""]
+          : [
+              a.flag,
+              a.description,
+              a.bodies,
+              int(a.events),
+              a.sameEvents ? "yes" : `no (${int(a.eventsOff)})`,
+              `${sig(a.msOn)} ms`,
+              `${sig(a.msOff)} ms`,
+              `${sig(a.speedup)}×`,
+            ],
+      ),
+    ),
+  );
+  out.push("");
+  out.push(
+    "The all-pairs reference simulator of the engine's tests is TypeScript test support, not part of the built package; `broadPhase: false` (every body tested against every body) stands in for it above.\n",
+  );
+  const t = e.timeline;
+  out.push("### Timeline\n");
+  if (!t || t.error) out.push(`Not measured: ${t?.error ?? "no data"}\n`);
+  else
+    out.push(
+      `${table(
+        [
+          "bodies",
+          "span",
+          "events",
+          "prolong events/s",
+          "stateAt median",
+          "stateAt p95",
+          "history bytes",
+          "bytes per event",
+        ],
+        [
+          [
+            t.bodies,
+            t.span,
+            int(t.events),
+            int(t.prolongEventsPerSecond),
+            `${sig(t.stateAtMedianUs)} µs`,
+            `${sig(t.stateAtP95Us)} µs`,
+            int(t.historyBytes),
+            sig(t.bytesPerEvent),
+          ],
+        ],
+      )}\n`,
+    );
+}
+
+function stressSection(s, out, svgs) {
+  if (!s) return;
+  out.push("## 4. Numerical stress\n");
+  if (s.error) {
+    out.push(`Not measured: ${s.error}\n`);
+    return;
+  }
+  out.push(
+    `Overlap sampled at ${s.samples} instants over each span (all pairs, relative to the contact distance) against the scene's tolerance (1e-9, or a few ulps of a coordinate where coordinates are ~1e6); contact error = |distance − (r1 + r2)| / (r1 + r2) of the two discs at every disc–disc event. The same scenes run as fast invariant tests in \`tests/stress/\`.\n`,
+  );
+  out.push(
+    table(
+      [
+        "case",
+        "bodies",
+        "events",
+        "time",
+        "worst overlap",
+        "tolerance",
+        "contact error at events",
+        "ΔE/E",
+        "escaped",
+      ],
+      s.cases.map((c) =>
+        c.error
+          ? [c.id, c.bodies, `error: ${c.error}`, "", "", "", "", "", ""]
+          : [
+              c.id,
+              c.bodies,
+              int(c.events),
+              `${sig(c.ms)} ms`,
+              `${sig(c.worstOverlap)}${c.overlapOk ? "" : " ✘"}`,
+              sig(c.tolerance),
+              sig(c.contactError),
+              sig(c.energyError),
+              c.escaped,
+            ],
+      ),
+    ),
+  );
+  out.push("");
+  const L = s.longRun;
+  out.push("### Long run: energy drift against event count\n");
+  if (L.error) out.push(`error: ${L.error}\n`);
+  else {
+    out.push(
+      `Dilute gas of ${L.bodies} discs, ${int(L.events)} events in ${sig(L.seconds)} s; worst |ΔE/E| ${sig(L.worstDrift)}, at the end ${sig(L.finalDrift)}.\n`,
+    );
+    svgs["energy-drift.svg"] = plot({
+      title: "Energy drift over a long run",
+      xLabel: "events processed",
+      yLabel: "|ΔE/E| (relative kinetic-energy error)",
+      xLog: true,
+      yLog: true,
+      series: [
+        {
+          name: "chapgame",
+          marker: "circle",
+          points: L.series.map(([n, e]) => [n, Math.max(1e-17, Math.abs(e))]),
+        },
+      ],
+    });
+    out.push("![energy drift](bench/energy-drift.svg)\n");
+  }
+  const P = s.galperinPush;
+  out.push("### Galperin's billiard pushed until it fails\n");
+  out.push(
+    table(
+      [
+        "digits",
+        "exact",
+        "counted",
+        "correct",
+        "time",
+        "smallest gap between event times",
+        "events at an identical time",
+        "last event at",
+        "error",
+      ],
+      P.rows.map((r) =>
+        r.skipped
+          ? [r.digits, "", "", "not run", "", "", "", "", r.skipped]
+          : [
+              r.digits,
+              int(r.expected),
+              int(r.count),
+              r.correct ? "yes" : "**no**",
+              `${sig(r.seconds)} s`,
+              sig(r.minGap),
+              int(r.sameTime),
+              sig(r.lastTime, 17),
+              r.error ?? "",
+            ],
+      ),
+    ),
+  );
+  out.push("");
+  out.push(galperinExplanation(P));
+}
+
+/** The why, in terms of the measured numbers of the failing (or last) row. */
+function galperinExplanation(P) {
+  const bad = P.rows.find((r) => r.correct === false);
+  const last = P.rows.filter((r) => r.correct).at(-1);
+  const lines = [];
+  if (!bad) {
+    lines.push(
+      `Every digit count run was correct (up to ${last?.digits ?? 0} digits); the next one was not run within the time budget, so the first wrong digit count is not measured in this run.`,
+    );
+  } else {
+    const M = 100 ** (bad.digits - 1);
+    const ulpT = 2 ** (Math.floor(Math.log2(Math.max(bad.lastTime, 1e-300))) - 52);
+    lines.push(
+      `First wrong digit count: **${bad.digits}** (counted ${int(bad.count)}, exact ${int(bad.expected)}${bad.error ? `; the run stopped with: ${bad.error}` : ""}).`,
+    );
+    lines.push(
+      `Why: with mass ratio M = 100^${bad.digits - 1} = ${sig(M)} the light disc reaches speed ≈ √M = ${sig(Math.sqrt(M))} and, near the heavy disc's turning point, gaps of ≈ ${sig(1 / Math.sqrt(M))}, so consecutive collisions are ≈ 1/M = ${sig(1 / M)} apart in time. ` +
+        `Event times are doubles near t ≈ ${sig(bad.lastTime)}, where one ulp is ${sig(ulpT)}; the smallest gap measured between distinct event times was ${sig(bad.minGap)} and ${int(bad.sameTime)} events fell on an identical time. ` +
+        `Once 1/M approaches the ulp of t, collision times can no longer be told apart (and the velocity update's (M − m)/(M + m) loses the light disc's contribution: M + 1 = M in doubles once M > 2^53 ≈ 9.0e15), so the count drifts off π's digits. This is a limit of double precision, not of the method; exact (rational) time and velocity arithmetic would push it further.`,
+    );
+  }
+  return `${lines.join("\n\n")}\n`;
+}
+
+function headline(r) {
+  const rows = [];
+  const s = r.solver;
+  const rr = s?.random?.methods.find((m) => m.id === "realRoots");
+  const bis = s?.random?.methods.find((m) => m.id === "bisection");
+  if (rr && bis)
+    rows.push([
+      "root solver, ns per call (collision quartics)",
+      `${sig(rr.nsPerCall)} ns, median ${sig(rr.medianUlps)} ulps`,
+      `seed bisection: ${sig(bis.nsPerCall)} ns, median ${sig(bis.medianUlps)} ulps`,
+      `≤ ${s.targetNs} ns`,
+      status(rr.nsPerCall <= s.targetNs),
+    ]);
+  const e = r.engine;
+  if (e && !e.error) {
+    const sc = e.scaling;
+    rows.push([
+      "dilute gas, events/s at N = 10,000",
+      int(sc.eventsPerSecondAt1e4),
+      dash,
+      "≥ 1,000,000",
+      status(sc.eventsPerSecondAt1e4 === null ? null : sc.eventsPerSecondAt1e4 >= 1e6),
+    ]);
+    rows.push([
+      "cost per event, N = 100,000 vs 1,000",
+      `${sig(sc.costRatio1e5over1e3)}×`,
+      dash,
+      "≤ 2×",
+      status(sc.costRatio1e5over1e3 === null ? null : sc.costRatio1e5over1e3 <= 2),
+    ]);
+    const g = e.galperin7;
+    rows.push([
+      "Galperin 7 digits (3,141,592 collisions)",
+      g.error ? `error` : `${int(g.count)} in ${sig(g.seconds)} s`,
+      dash,
+      "< 2 s, exact count",
+      status(g.error ? false : g.correct && g.seconds < 2),
+    ]);
+  }
+  const p = r.peers;
+  if (p) {
+    const find = (id) => p.scenes.find((x) => x.id === id);
+    const gas = find("dilute-gas");
+    if (gas?.chapgame && !gas.chapgame.error) {
+      const best = gas.peers
+        .filter((q) => !q.error && q.hz === 60 && q.config === "tuned")
+        .sort((a, b) => a.ns - b.ns)[0];
+      rows.push([
+        `dilute gas, 1,000 discs, ${gas.span} s`,
+        `${ms(gas.chapgame.ns)}, ΔE/E ${sig(gas.chapgame.metrics.energyError)}`,
+        best
+          ? `fastest peer at 60 Hz: ${best.peer} ${ms(best.ns)}, ΔE/E ${sig(best.metrics.energyError)}`
+          : dash,
+        dash,
+        dash,
+      ]);
+    }
+    const gal = p.scenes.filter((x) => x.id.startsWith("galperin"));
+    const digitsOk = (pred) => {
+      let d = 0;
+      for (const x of gal) if (pred(x)) d = Math.max(d, Number(x.id.split("-")[1]));
+      return d;
+    };
+    const cg = digitsOk((x) => x.chapgame?.metrics && x.chapgame.metrics.collisions === x.exact.collisions);
+    const peerBest = digitsOk((x) =>
+      x.peers.some(
+        (q) => q.metrics && q.metrics.collisions === x.exact.collisions && q.metrics.escaped === 0,
+      ),
+    );
+    rows.push([
+      "Galperin's billiard: most digits right (side-by-side run)",
+      `${cg}`,
+      `best peer: ${peerBest}`,
+      dash,
+      dash,
+    ]);
+    const bullets = p.scenes.filter((x) => x.id.startsWith("bullet"));
+    const maxSpeed = (pred) => Math.max(0, ...bullets.filter(pred).map((x) => Number(x.id.split("-")[1])));
+    rows.push([
+      "thin wall: fastest disc stopped (units/s)",
+      sig(maxSpeed((x) => x.chapgame?.metrics?.escaped === 0)),
+      `best peer: ${sig(maxSpeed((x) => x.peers.some((q) => q.metrics?.escaped === 0 && q.metrics.finalError && q.metrics.finalError.position < 1e-3)))} (escaped 0 and within 1e-3 of the exact end)`,
+      dash,
+      dash,
+    ]);
+    const cr = find("cradle");
+    if (cr?.chapgame?.metrics) {
+      const bestCr = cr.peers
+        .filter((q) => q.metrics?.finalError)
+        .sort((a, b) => a.metrics.finalError.position - b.metrics.finalError.position)[0];
+      rows.push([
+        "Newton's cradle: distance from the exact end state",
+        sig(cr.chapgame.metrics.finalError?.position),
+        bestCr
+          ? `best peer: ${bestCr.peer} ${bestCr.config} ${bestCr.hz} Hz: ${sig(bestCr.metrics.finalError.position)}`
+          : dash,
+        dash,
+        dash,
+      ]);
+    }
+  }
+  return table(["benchmark", "chapgame", "comparison (same run)", "target", "status"], rows);
+}
+
+export function generate(results, { root = ROOT } = {}) {
+  const svgs = {};
+  const out = [];
+  out.push("# Benchmarks\n");
+  out.push(
+    `Generated by \`npm run bench${results.quick ? " -- --quick" : ""}\` from \`${results.file}\`; do not edit by hand (rerun the benchmark).\n`,
+  );
+  out.push(machineBlock(results));
+  out.push("");
+  if (results.notes?.length) out.push(`Notes: ${results.notes.join("; ")}.\n`);
+  out.push("## Headline\n");
+  const head = headline(results);
+  out.push(head);
+  out.push("");
+  solverSection(results.solver, out, svgs);
+  peersSection(results.peers, out, svgs);
+  engineSection(results.engine, out, svgs);
+  stressSection(results.stress, out, svgs);
+  out.push("## Caveats\n");
+  out.push(CAVEATS.map((c) => `- ${c}`).join("\n"));
+  out.push("");
+  const dir = join(root, "docs", "bench");
+  mkdirSync(dir, { recursive: true });
+  for (const f of readdirSync(dir)) if (f.endsWith(".svg")) rmSync(join(dir, f));
+  for (const [f, text] of Object.entries(svgs)) writeFileSync(join(root, "docs", "bench", f), `${text}\n`);
+  writeFileSync(join(root, "docs", "benchmarks.md"), `${out.join("\n")}\n`);
+  writeFileSync(
+    join(root, "docs", "benchmarks-headline.md"),
+    `<!-- generated by npm run bench from ${results.file}; details in docs/benchmarks.md -->\n${head}\n\nMachine: ${results.machine.cpu}, ${results.machine.cores} cores, Node ${results.machine.node}${results.quick ? " (quick run)" : ""}. Details: [docs/benchmarks.md](docs/benchmarks.md).\n`,
+  );
+  return {
+    files: [
+      "docs/benchmarks.md",
+      "docs/benchmarks-headline.md",
+      ...Object.keys(svgs).map((f) => `docs/bench/${f}`),
+    ],
+  };
+}
+
+if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {
+  const file = process.argv[2] ?? join(ROOT, "bench", "results", "latest.json");
+  const r = generate(JSON.parse(readFileSync(file, "utf8")));
+  console.log(`wrote ${r.files.length} files`);
+}

@@ -1,0 +1,71 @@
+/**
+ * `npm run bench [-- --quick] [-- --only=solver,peers,engine,stress]`: runs the benchmark sections
+ * against the BUILT engine, writes bench/results/latest.json (quick runs: bench/results/quick.json),
+ * then generates docs/benchmarks.md, docs/benchmarks-headline.md and docs/bench/*.svg from it.
+ * Re-executes itself with --expose-gc so runs can collect garbage between measurements.
+ */
+import { spawnSync } from "node:child_process";
+import { mkdirSync, writeFileSync } from "node:fs";
+import { dirname, join, relative } from "node:path";
+import { fileURLToPath } from "node:url";
+
+if (typeof globalThis.gc !== "function" && !process.env.CHAPGAME_BENCH_CHILD) {
+  const r = spawnSync(
+    process.execPath,
+    ["--expose-gc", fileURLToPath(import.meta.url), ...process.argv.slice(2)],
+    {
+      stdio: "inherit",
+      env: { ...process.env, CHAPGAME_BENCH_CHILD: "1" },
+    },
+  );
+  process.exit(r.status ?? 1);
+}
+
+const { loadEngine } = await import("./lib/engine.mjs");
+const { machine, nowNs } = await import("./lib/timing.mjs");
+const { runSolver } = await import("./solver/run.mjs");
+const { runPeers } = await import("./peers/run.mjs");
+const { runEngine } = await import("./engine/run.mjs");
+const { runStress } = await import("./stress/run.mjs");
+const { generate } = await import("./report/generate.mjs");
+
+const ROOT = join(dirname(fileURLToPath(import.meta.url)), "..");
+const args = process.argv.slice(2);
+const quick = args.includes("--quick");
+const onlyArg = args.find((a) => a.startsWith("--only="));
+const only = onlyArg ? new Set(onlyArg.slice(7).split(",")) : null;
+const want = (s) => !only || only.has(s);
+const log = (m) => console.log(m);
+
+const t0 = nowNs();
+const { engine, notes } = await loadEngine();
+const results = { quick, date: new Date().toISOString(), machine: machine(), notes };
+log(
+  `chapgame bench (${quick ? "quick" : "full"}) on ${results.machine.cpu}, ${results.machine.cores} cores, Node ${results.machine.node}`,
+);
+
+const section = async (name, fn) => {
+  if (!want(name)) return;
+  log(`== ${name}`);
+  const a = nowNs();
+  try {
+    results[name] = await fn({ quick, engine, log });
+  } catch (e) {
+    log(`${name}: ERROR ${e.stack ?? e}`);
+    results[name] = { error: String(e.message ?? e) };
+  }
+  log(`   ${name} took ${((nowNs() - a) / 1e9).toFixed(1)} s`);
+};
+
+await section("solver", runSolver);
+await section("peers", runPeers);
+await section("engine", runEngine);
+await section("stress", runStress);
+
+results.seconds = (nowNs() - t0) / 1e9;
+const file = join(ROOT, "bench", "results", quick ? "quick.json" : "latest.json");
+results.file = relative(ROOT, file);
+mkdirSync(dirname(file), { recursive: true });
+writeFileSync(file, `${JSON.stringify(results, null, 1)}\n`);
+const rep = generate(results, { root: ROOT });
+log(`wrote ${results.file} and ${rep.files.length} report files in ${results.seconds.toFixed(1)} s`);
