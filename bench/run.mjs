@@ -1,6 +1,6 @@
 /**
  * `npm run bench [-- --quick] [-- --only=solver,peers,engine,stress]`: runs the benchmark sections
- * against the BUILT engine, writes bench/results/latest.json (quick runs: bench/results/quick.json),
+ * against the BUILT engine, writes bench/results/latest.json (quick runs: bench/results/tmp/quick.json, not committed),
  * then generates docs/benchmarks.md, docs/benchmarks-headline.md and docs/bench/*.svg from it.
  * Re-executes itself with --expose-gc so runs can collect garbage between measurements.
  */
@@ -63,7 +63,7 @@ await section("engine", runEngine);
 await section("stress", runStress);
 
 results.seconds = (nowNs() - t0) / 1e9;
-const file = join(ROOT, "bench", "results", quick ? "quick.json" : "latest.json");
+const file = join(ROOT, "bench", "results", quick ? "tmp/quick.json" : "latest.json");
 results.file = relative(ROOT, file);
 mkdirSync(dirname(file), { recursive: true });
 writeFileSync(file, `${JSON.stringify(results, null, 1)}\n`);
