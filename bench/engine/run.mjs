@@ -3,6 +3,7 @@
  * - scaling: events/s of the dilute gas (10 % packing, speed 10) against N, per-event cost ratio
  *   N = 1e5 vs 1e3 (target ≤ 2) and events/s at N = 1e4 (target ≥ 1e6); heap bytes per body.
  * - galperin7: Galperin's billiard with 7 digits run to idle (target < 2 s, 3,141,592 collisions).
+ * - reference: the fast engine against the tests' all-pairs reference simulator (reference.mjs).
  * - ablations: each World `optimizations` switch off in turn, on the scene where it should matter,
  *   same span, same events (checked), time ratio off/on.
  * - timeline: stateAt latency and history bytes per event, when the engine exports Timeline.
@@ -13,6 +14,7 @@ import { gc, median, nowNs, timedRuns } from "../lib/timing.mjs";
 import { buildWorld } from "../peers/chapgame.mjs";
 import { galperin } from "../scenes/galperin.mjs";
 import { gas } from "../scenes/gas.mjs";
+import { againstReference } from "./reference.mjs";
 
 const collisions = (c) => c.bodyBody + c.bodyLine + c.bodyPoint;
 
@@ -254,12 +256,13 @@ function timeline({ quick, engine, log }) {
   }
 }
 
-export function runEngine(ctx) {
+export async function runEngine(ctx) {
   if (typeof ctx.engine.World !== "function")
     return { error: "World is not exported by @chapgame/engine yet" };
   const out = {};
   out.scaling = scaling(ctx);
   out.galperin7 = galperinRun(ctx, 7);
+  out.reference = await againstReference(ctx);
   out.ablations = ablations(ctx);
   out.timeline = timeline(ctx);
   return out;
