@@ -23,6 +23,7 @@ import { ROOTS_MAX_ITERATIONS } from "../tolerances.js";
 import { RootSolverError, splitPoint } from "./bracket.js";
 import { compHorner, compHornerDD, hornerBound } from "./compHorner.js";
 import { exactDerivativeSign, exactPolySign, nextDown, nextUp } from "./exactPoly.js";
+import { mulPow2 } from "./pow2.js";
 
 const ev = new Float64Array(2);
 let P: Float64Array = new Float64Array(8);
@@ -39,11 +40,18 @@ let lastNoisy = false;
 /** Counts of exact (BigInt) fallbacks, for tests and the benchmark. */
 export const certStats = { exact: 0 };
 
-/** Load the (scaled) polynomial P of degree n; `original` holds the caller's exact coefficients. */
-export function load(scaled: Float64Array, n: number, original: ArrayLike<number>): void {
+/** Exponent of the variable scaling: the caller's t is 2^xScale times the solver's s. */
+let xScale = 0;
+
+/**
+ * Load the scaled polynomial P of degree n; `original` holds the caller's exact coefficients, and
+ * P(s) has the sign of original(2^xs·s).
+ */
+export function load(scaled: Float64Array, n: number, original: ArrayLike<number>, xs: number): void {
   P = scaled;
   deg = n;
   orig = original;
+  xScale = xs;
 }
 
 /** Exact sign of P at x (plain, then compensated, then BigInt). Sets lastAbs. */
@@ -71,7 +79,7 @@ export function certSign(x: number): number {
   const bound = ev[1] as number;
   if (lastAbs > bound || bound === 0) return v > 0 ? 1 : v < 0 ? -1 : 0;
   certStats.exact++;
-  return exactPolySign(orig, x);
+  return exactPolySign(orig, xScale === 0 ? x : mulPow2(x, xScale));
 }
 
 /** |value| at the last certSign point. */
@@ -157,21 +165,22 @@ function certDerivSign(x: number): number {
   const v = ev[0] as number;
   if (Math.abs(v) > (ev[1] as number)) return v > 0 ? 1 : -1;
   certStats.exact++;
-  return exactDerivativeSign(orig, x);
+  return exactDerivativeSign(orig, xScale === 0 ? x : mulPow2(x, xScale));
 }
 
 /**
  * Refine an approximate critical point x of P inside (lo, hi) to where the exact P' changes sign.
  * Writes the two adjacent doubles around the sign change (equal when P' is exactly 0 there) into
- * out[0], out[1]; leaves x (both) when no sign change of P' is found near x.
+ * out[0], out[1] and returns true; returns false (out = x, x) when P' has no sign change within
+ * 64 ulps of x (then x is not a confirmed critical point).
  */
-export function criticalPoint(x: number, lo: number, hi: number, out: Float64Array): void {
+export function criticalPoint(x: number, lo: number, hi: number, out: Float64Array): boolean {
   out[0] = x;
   out[1] = x;
-  if (deg < 2) return;
+  if (deg < 2) return false;
   loadDerivative();
   const s0 = certDerivSign(x);
-  if (s0 === 0) return;
+  if (s0 === 0) return true;
   // Search both directions, with steps of 1, 2, 4, … 64 ulps, for the nearest sign change of P'.
   let up = x;
   let down = x;
@@ -186,17 +195,18 @@ export function criticalPoint(x: number, lo: number, hi: number, out: Float64Arr
       const s = certDerivSign(up);
       if (s !== s0) {
         bisectDerivative(prevUp, up, s0, s, out);
-        return;
+        return true;
       }
     }
     if (down > lo) {
       const s = certDerivSign(down);
       if (s !== s0) {
         bisectDerivative(down, prevDown, s, s0, out);
-        return;
+        return true;
       }
     }
   }
+  return false;
 }
 
 /** Bisect a sign change of P' between a < b (exact signs sa, sb) down to adjacent doubles. */

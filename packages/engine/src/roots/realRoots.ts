@@ -30,6 +30,7 @@
 import { ROOTS_DEGREE_DROP, UNIT_ROUNDOFF } from "../tolerances.js";
 import { certSign, criticalPoint, lastAbsValue, lastWasNoisy, load, refineRoot } from "./certify.js";
 import { newtonPlain, pieceRoots, quadRootsPlain } from "./newton.js";
+import { exponentOf, mulPow2 } from "./pow2.js";
 
 /** Horner evaluation of c0 + c1 x + … (ascending coefficients); 0 for an empty array. */
 export function evalPoly(coeffs: ArrayLike<number>, x: number): number {
@@ -171,27 +172,59 @@ export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): nu
   const out: number[] = [];
   if (!(lo <= hi) || n < 1) return out;
   ensure(n);
-  // Exact power-of-two scaling into [2^-64, 2^64]: same roots, no overflow in the error terms.
-  let scale = 1;
-  while (maxAbs * scale > BIG) scale *= 2 ** -128;
-  while (maxAbs * scale < SMALL) scale *= 2 ** 128;
-  for (let i = 0; i <= n; i++) P[i] = (coeffs[i] as number) * scale;
   // Cauchy's bound: every root has |t| < 1 + max|c_i / c_n|.
+  const lead = Math.abs(coeffs[n] as number);
   let mx = 0;
   for (let i = 0; i < n; i++) {
-    const a = Math.abs(P[i] as number);
+    const a = Math.abs(coeffs[i] as number);
     if (a > mx) mx = a;
   }
-  const bound = (1 + mx / Math.abs(P[n] as number)) * (1 + 2 ** -48);
+  const bound = (1 + mx / lead) * (1 + 2 ** -48);
   const B = bound < Number.POSITIVE_INFINITY ? bound : Number.MAX_VALUE;
   if (lo < -B) lo = -B;
   if (hi > B) hi = B;
   if (lo > hi) return out;
-  load(P, n, coeffs);
+  // Exact power-of-two scaling: coefficients to about 1 and, for extreme intervals, the variable
+  // (t = 2^xs·s) so that |s| ≤ 1; the roots are unchanged (up to that exact factor).
+  const xs = normalise(coeffs, n, maxAbs, Math.max(-lo, hi, lo, -hi));
+  if (xs !== 0) {
+    lo = mulPow2(lo, -xs);
+    hi = mulPow2(hi, -xs);
+  }
+  load(P, n, coeffs, xs);
   if (lo === hi) {
     if (certSign(lo) === 0) out.push(lo);
-    return out;
+  } else {
+    solveScaled(n, lo, hi, out);
   }
+  if (xs !== 0) for (let i = 0; i < out.length; i++) out[i] = mulPow2(out[i] as number, xs);
+  return out;
+}
+
+/**
+ * Fill P with the coefficients, scaled by exact powers of two when needed: returns xs, the exponent
+ * of the variable scaling (0 when the interval is moderate: |log2 M|·n ≤ 256). Coefficients are then
+ * scaled to a largest magnitude near 1, unless it is already within [2^-64, 2^64]. Coefficients more
+ * than ~2^1070 below the largest underflow (documented limit).
+ */
+function normalise(coeffs: ArrayLike<number>, n: number, maxAbs: number, M: number): number {
+  const eM = M > 0 && M < Number.POSITIVE_INFINITY ? exponentOf(M) : 0;
+  const xs = n * Math.abs(eM) > 256 ? eM + 1 : 0;
+  if (xs === 0 && maxAbs >= SMALL && maxAbs <= BIG) {
+    for (let i = 0; i <= n; i++) P[i] = coeffs[i] as number;
+    return 0;
+  }
+  let E = Number.NEGATIVE_INFINITY;
+  for (let i = 0; i <= n; i++) {
+    const c = coeffs[i] as number;
+    if (c !== 0) E = Math.max(E, exponentOf(c) + xs * i);
+  }
+  for (let i = 0; i <= n; i++) P[i] = mulPow2(coeffs[i] as number, xs * i - E);
+  return xs;
+}
+
+/** The solve proper on the normalised polynomial P (degree n) over lo < hi; appends to out. */
+function solveScaled(n: number, lo: number, hi: number, out: number[]): void {
   // Degree drop: leading terms below one rounding of a lower term over the whole interval.
   const M = Math.max(-lo, hi, lo, -hi);
   let m = n;
@@ -200,7 +233,7 @@ export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): nu
     let drop = false;
     for (let j = m - 1; j >= 0; j--) {
       t *= M;
-      if (t <= ROOTS_DEGREE_DROP * Math.abs(P[j] as number)) {
+      if (t < ROOTS_DEGREE_DROP * Math.abs(P[j] as number)) {
         drop = true;
         break;
       }
@@ -208,14 +241,14 @@ export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): nu
     if (!drop) break;
     m--;
   }
-  if (m === 0) return out; // every other term is below u·|c0|: p keeps the sign of c0
-  if (keepsSign(n, lo, hi)) return out;
+  if (m === 0) return; // every other term is below u·|c0|: p keeps the sign of c0
+  if (keepsSign(n, lo, hi)) return;
   const ns = m >= 2 ? criticalPoints(m, lo, hi) : 0;
-  return solveLevel0(n, m, lo, hi, ns, out);
+  solveLevel0(n, m, lo, hi, ns, out);
 }
 
 /** Certified signs at lo, the critical points and hi; one refined root per sign change. */
-function solveLevel0(n: number, m: number, lo: number, hi: number, ns: number, out: number[]): number[] {
+function solveLevel0(n: number, m: number, lo: number, hi: number, ns: number, out: number[]): void {
   const K = ns + 2;
   pts[0] = lo;
   for (let i = 0; i < ns; i++) pts[i + 1] = bufA[i] as number;
@@ -229,7 +262,7 @@ function solveLevel0(n: number, m: number, lo: number, hi: number, ns: number, o
   for (let i = 1; i < K - 1; i++) {
     const s = sgn[i] as number;
     if (noisy[i] === 0 || s === 0 || sgn[i - 1] === -s || sgn[i + 1] === -s) continue;
-    criticalPoint(pts[i] as number, pts[i - 1] as number, pts[i + 1] as number, crit);
+    if (!criticalPoint(pts[i] as number, pts[i - 1] as number, pts[i + 1] as number, crit)) continue;
     let best = -1;
     let bestAbs = Number.POSITIVE_INFINITY;
     for (let j = 0; j < 2; j++) {
@@ -275,7 +308,6 @@ function solveLevel0(n: number, m: number, lo: number, hi: number, ns: number, o
     if (Number.isNaN(x0)) x0 = newtonPlain(P, 0, n, a, b, sa * (aa > 0 ? aa : 1), -sa * (ab > 0 ? ab : 1));
     push(out, refineRoot(a, b, sa, aa, ab, x0));
   }
-  return out;
 }
 
 function push(out: number[], x: number): void {
