@@ -2,6 +2,7 @@
  * Start-up: the worker and its client, the Editor, the first scene (a shared link in the URL, else
  * the autosave, else the default preset), autosave on every scene change, playback and keyboard.
  */
+import { drawStats, resetDrawStats } from "./canvas/drawStats";
 import { loadAutosave, saveAutosave, sceneFromHash } from "./doc/persistence";
 import { Editor } from "./editor";
 import type { SceneFile } from "./engineTypes";
@@ -56,6 +57,6 @@ export async function boot(): Promise<Editor> {
   });
   startPlayback(editor);
   bindKeyboard(editor);
-  (window as unknown as { chapgame: Editor }).chapgame = editor;
+  Object.assign(window, { chapgame: editor, chapgameStats: drawStats, chapgameResetStats: resetDrawStats });
   return editor;
 }

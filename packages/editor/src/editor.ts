@@ -60,6 +60,22 @@ export class Editor {
     this.client.compute(this.computeUntil()).catch((e) => this.fail(e));
   }
 
+  /** After an edit: computes ahead unless the horizon is already far enough past the current time. */
+  private ensureAhead(): void {
+    const c = this.ui.getState().calc;
+    const h = this.client.getSnapshot().horizon;
+    if (c.useTime && !c.useEvents && h >= this.now() + c.seconds) return;
+    this.computeAhead();
+  }
+
+  /** After reloading at the same time (undo, redo, rename): recomputes at least the old horizon. */
+  private recompute(oldHorizon: number): void {
+    const c = this.ui.getState().calc;
+    const target = Math.max(oldHorizon, this.now() + (c.useTime ? c.seconds : 0));
+    if (target > 0) this.client.compute({ time: target }).catch((e) => this.fail(e));
+    else this.computeAhead();
+  }
+
   cancelCompute(): void {
     this.client.cancel().catch((e) => this.fail(e));
   }
@@ -70,6 +86,7 @@ export class Editor {
     options: { undoable?: boolean; fit?: boolean; keepTime?: boolean } = {},
   ): Promise<string | null> {
     const before = this.doc;
+    const oldHorizon = this.client.getSnapshot().horizon;
     try {
       await this.client.load(scene);
     } catch (e) {
@@ -84,7 +101,8 @@ export class Editor {
       message: null,
       fitRequest: options.fit === false ? s.fitRequest : s.fitRequest + 1,
     }));
-    this.computeAhead();
+    if (options.keepTime) this.recompute(oldHorizon);
+    else this.computeAhead();
     return null;
   }
 
@@ -98,7 +116,7 @@ export class Editor {
     }
     this.history.setState(record(this.history.getState(), before));
     this.ui.setState({ message: null });
-    this.computeAhead();
+    this.ensureAhead();
     return null;
   }
 
@@ -133,6 +151,7 @@ export class Editor {
   }
 
   private async restore(scene: SceneFile, history: History): Promise<void> {
+    const oldHorizon = this.client.getSnapshot().horizon;
     try {
       await this.client.load(scene);
     } catch (e) {
@@ -141,7 +160,7 @@ export class Editor {
     }
     this.history.setState(history);
     this.ui.setState({ message: null });
-    this.computeAhead();
+    this.recompute(oldHorizon);
   }
 
   // ---- edits at the current time -------------------------------------------------------------
@@ -150,6 +169,7 @@ export class Editor {
     return this.ui.getState().t;
   }
 
+  /** Edits carry no `until`: the host computes ahead in slices (Calculation settings) after them. */
   private stamp<A extends Action>(a: A): A {
     return a;
   }

@@ -1,6 +1,6 @@
 /**
- * The engine contract types the editor uses (docs/architecture.md), in one place so the rest of the
- * editor imports them from here. Timeline types not yet exported by the engine are copied here until they are.
+ * The engine contract types the editor uses (docs/architecture.md), re-exported in one place so the
+ * rest of the editor imports them from here.
  */
 export type {
   Action,
@@ -8,34 +8,11 @@ export type {
   EventKind,
   LineKind,
   LineState,
+  LogEvent,
   PointState,
   SceneFile,
+  SceneState,
+  TimelineCounts as Counts,
   Until,
   Vec2,
 } from "@chapgame/engine";
-
-import type { BodyState, EventKind, LineState, PointState, Vec2 } from "@chapgame/engine";
-
-export interface LogEvent {
-  time: number;
-  type: EventKind | "action";
-  ids: string[];
-  point: Vec2 | null;
-  normal: Vec2 | null;
-  impulse: number | null;
-}
-export interface SceneState {
-  time: number;
-  g: number;
-  gravity: Vec2;
-  bodies: BodyState[];
-  lines: LineState[];
-  points: PointState[];
-}
-export interface Counts {
-  bodyBody: number;
-  bodyLine: number;
-  bodyPoint: number;
-  stop: number;
-  action: number;
-}

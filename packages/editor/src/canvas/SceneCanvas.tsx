@@ -8,6 +8,7 @@ import { useEditor } from "../EditorContext";
 import type { Vec2 } from "../engineTypes";
 import { F_R, F_X, F_Y, FRAME_STRIDE, type Frame } from "../remote/protocol";
 import { ARROW_SECONDS, drawFrame, type Overlay } from "./draw";
+import { drawStats } from "./drawStats";
 import { bodyIndex, frameBounds, hitTest } from "./hitTest";
 import { TrailRecorder } from "./trails";
 import { fit, pan, type Size, toWorld, zoomAt } from "./viewTransform";
@@ -89,12 +90,15 @@ export function SceneCanvas() {
       }
       if (!dirty) return;
       dirty = false;
+      const started = performance.now();
       drawFrame(ctx, f, s.view, size, {
         selection: s.selection,
         highlight: new Set(s.highlight),
         trails: s.trails ? trails.paths : null,
         overlay,
       });
+      drawStats.draws++;
+      drawStats.drawMs += performance.now() - started;
     };
     raf = requestAnimationFrame(tick);
 

@@ -6,6 +6,7 @@
  * - Frames: `wantFrame(t)` keeps at most one frame request in flight and always converges on the
  *   last wanted time (latest wins), so a 60 Hz canvas never queues work in the worker.
  */
+import { drawStats } from "../canvas/drawStats";
 import type { Action, LogEvent, SceneFile, Until } from "../engineTypes";
 import { EditError } from "./errors";
 import type {
@@ -128,8 +129,13 @@ export class TimelineClient {
     if (this.frameInFlight || this.hasFrame(t)) return;
     this.frameInFlight = true;
     const asked = t;
+    const started = performance.now();
     this.frame(asked).then(
       (f) => {
+        const latency = performance.now() - started;
+        drawStats.frames++;
+        drawStats.frameLatencyMs += latency;
+        if (latency > drawStats.maxFrameLatencyMs) drawStats.maxFrameLatencyMs = latency;
         this.frameInFlight = false;
         this.latestFrame = f;
         this.latestAsked = asked;

@@ -1,6 +1,11 @@
-/** The Web Worker entry: a TimelineHost over the engine's Timeline, bound to the worker's port. */
+/**
+ * The Web Worker entry: a TimelineHost over the engine's Timeline, bound to the worker's port.
+ * Timelines are built with `compute: false`: loading a scene only schedules its actions (their
+ * `until`s are not run inside the load), and the host computes ahead in slices it can report and
+ * cancel.
+ */
+import { Timeline } from "@chapgame/engine";
 import type { SceneFile } from "../engineTypes";
-import { fakeTimeline } from "./fakeTimeline";
 import { TimelineHost } from "./host";
 import type { HostMessage, RequestMessage } from "./protocol";
 
@@ -10,7 +15,7 @@ const tasks: (() => void)[] = [];
 channel.port1.onmessage = () => tasks.shift()?.();
 
 const host = new TimelineHost(
-  fakeTimeline,
+  (scene) => Timeline.fromScene(scene, { compute: false }),
   {
     post: (m: HostMessage, transfer?: Transferable[]) => self.postMessage(m, { transfer: transfer ?? [] }),
     schedule: (fn) => {

@@ -1,0 +1,157 @@
+/**
+ * End-to-end: the built editor in Debian's Chromium, driven by accessible names like a user.
+ * Scenes come from the engine's presets; expected times are exact consequences of the preset
+ * (Newton's cradle: the striker at x = −6 moves at 4 towards c1 at x = 0, both r = 1, so the first
+ * collision is at t = (6 − 2) / 4 = 1).
+ */
+import type { Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { currentTime, openEditor, type Session, screenshot, scrubTo, waitFor } from "./harness";
+
+let s: Session;
+let page: Page;
+
+const bodies = () => page.getByRole("table", { name: "Bodies" });
+const cell = (name: string) => bodies().getByRole("textbox", { name, exact: true });
+const cellValue = async (name: string) => Number(await cell(name).inputValue());
+
+async function loadPreset(title: RegExp | string) {
+  const select = page.getByRole("combobox", { name: "Preset" });
+  const value = await select.locator("option", { hasText: title }).first().getAttribute("value");
+  await select.selectOption(value!);
+  await page.getByRole("button", { name: "Load preset" }).click();
+  await waitFor(async () => (await currentTime(page)) === 0);
+}
+
+async function editCell(name: string, text: string) {
+  const c = cell(name);
+  await c.click();
+  await c.fill(text);
+  await c.press("Enter");
+}
+
+beforeAll(async () => {
+  s = await openEditor();
+  page = s.page;
+});
+
+afterAll(async () => {
+  await s?.close();
+});
+
+describe("editor end to end", () => {
+  it("starts with the default scene and loads a preset", async () => {
+    await expect.poll(() => bodies().getByRole("row").count()).toBeGreaterThan(1);
+    await screenshot(page, "01-default-scene");
+    await loadPreset("Newton's cradle");
+    await expect.poll(() => bodies().getByRole("row").count()).toBe(7);
+    expect(await cellValue("striker x")).toBe(-6);
+    expect(await cellValue("c5 x")).toBe(8);
+    await screenshot(page, "02-newtons-cradle");
+  });
+
+  it("plays and pauses", async () => {
+    await page.getByRole("button", { name: "Play" }).click();
+    await waitFor(async () => (await currentTime(page)) > 0.3);
+    await page.getByRole("button", { name: "Pause" }).click();
+    const t = await currentTime(page);
+    await page.waitForTimeout(300);
+    expect(await currentTime(page)).toBe(t);
+    await screenshot(page, "03-paused");
+  });
+
+  it("scrubs to a time and shows the exact state there", async () => {
+    await scrubTo(page, 0.5);
+    expect(await currentTime(page)).toBe(0.5);
+    await expect.poll(() => cellValue("striker x")).toBe(-4);
+  });
+
+  it("steps to the next and previous event", async () => {
+    await scrubTo(page, 0);
+    await page.getByRole("button", { name: "Next event" }).click();
+    await expect.poll(() => currentTime(page)).toBe(1);
+    await expect.poll(() => cellValue("striker vx")).toBe(0);
+    await page.getByRole("button", { name: "Previous event" }).click();
+    await expect.poll(() => currentTime(page)).toBe(0);
+    await expect.poll(() => cellValue("striker vx")).toBe(4);
+    await page.keyboard.press("ArrowRight");
+    await expect.poll(() => currentTime(page)).toBe(1);
+    await screenshot(page, "04-first-collision");
+  });
+
+  it("replays backwards with the Reverse button", async () => {
+    await scrubTo(page, 2);
+    await page.getByRole("button", { name: "Reverse" }).click();
+    await waitFor(async () => (await currentTime(page)) < 1.7);
+    const t1 = await currentTime(page);
+    await page.waitForTimeout(200);
+    const t2 = await currentTime(page);
+    expect(t2).toBeLessThan(t1);
+    await page.getByRole("button", { name: "Pause" }).click();
+    expect(await page.getByRole("textbox", { name: "Speed", exact: true }).inputValue()).toBe("-1");
+  });
+
+  it("edits a body in the table; a refused value shows the message in place and changes nothing", async () => {
+    await scrubTo(page, 0);
+    await editCell("striker vx", "8");
+    await expect.poll(() => cellValue("striker vx")).toBe(8);
+    await page.getByRole("button", { name: "Next event" }).click();
+    await expect.poll(() => currentTime(page)).toBe(0.5);
+    await scrubTo(page, 0);
+    await editCell("c3 r", "-1");
+    const alert = bodies().getByRole("alert");
+    await expect.poll(() => alert.textContent()).toMatch(/r: must be/);
+    await screenshot(page, "05-refused-cell");
+    await cell("c3 r").press("Escape");
+    expect(await cellValue("c3 r")).toBe(1);
+  });
+
+  it("undoes the edit with Ctrl+Z and redoes it with Ctrl+Shift+Z", async () => {
+    await page.getByRole("slider", { name: "Time" }).focus();
+    await page.locator("body").click({ position: { x: 5, y: 5 } });
+    await page.keyboard.press("Control+z");
+    await expect.poll(() => cellValue("striker vx")).toBe(4);
+    await page.keyboard.press("Control+Shift+z");
+    await expect.poll(() => cellValue("striker vx")).toBe(8);
+    await page.getByRole("button", { name: "Undo" }).click();
+    await expect.poll(() => cellValue("striker vx")).toBe(4);
+  });
+
+  it("a broken paste shows the validation message and keeps the scene", async () => {
+    const broken = JSON.stringify({
+      format: "chapgame",
+      version: 1,
+      actions: [{ time: 0, type: "addBody", id: "x", x: 0, y: 0, r: -2, m: 1 }],
+    });
+    await page.getByRole("textbox", { name: "Scene JSON" }).fill(broken);
+    await page.getByRole("button", { name: "Paste", exact: true }).click();
+    await expect.poll(() => page.getByRole("alert").first().textContent()).toContain("actions[0].r");
+    expect(await cellValue("striker x")).toBe(-6);
+    expect(await bodies().getByRole("row").count()).toBe(7);
+    await screenshot(page, "06-broken-paste");
+  });
+
+  it("keeps the scene across a reload (autosave)", async () => {
+    await scrubTo(page, 0);
+    await editCell("c1 m", "3");
+    await expect.poll(() => cellValue("c1 m")).toBe(3);
+    await page.waitForTimeout(600);
+    await page.reload();
+    await page.getByRole("slider", { name: "Time" }).waitFor();
+    await expect.poll(() => cellValue("c1 m")).toBe(3);
+    expect(await cellValue("striker x")).toBe(-6);
+    await screenshot(page, "07-after-reload");
+  });
+
+  it("space plays and pauses; the event log jumps to an event", async () => {
+    await page.locator("body").click({ position: { x: 5, y: 5 } });
+    await page.keyboard.press("Space");
+    await waitFor(async () => (await currentTime(page)) > 0.2);
+    await page.keyboard.press("Space");
+    const log = page.getByRole("table", { name: "Event log" });
+    const row = log.getByRole("row").filter({ hasText: "body–body" }).first();
+    await row.click();
+    await expect.poll(() => currentTime(page)).toBe(1);
+    await screenshot(page, "08-event-log-jump");
+  });
+});
