@@ -63,13 +63,17 @@ export function newtonPlain(
     if (f === 0) return x;
     if (f < 0 === aNeg) a = x;
     else b = x;
-    // Halley's step (cubic convergence); Newton's where its denominator degenerates.
-    const den = d1 * d1 - f * d2;
-    const step = den !== 0 && it < NEWTON_STEPS ? (f * d1) / den : f / d1;
+    // Halley's step (cubic convergence) where it is a small correction of Newton's step
+    // (|f p''/2| ≤ d1²/2); Newton's elsewhere. Near a critical point (d1 → 0) Halley's step tends
+    // to 0 although no root is near, so convergence is judged on Newton's step |f/d1| only.
+    const fd2 = f * d2;
+    const d11 = d1 * d1;
+    const halley = (fd2 < 0 ? -fd2 : fd2) <= 0.5 * d11;
+    const step = halley && it < NEWTON_STEPS ? (f * d1) / (d11 - fd2) : f / d1;
     const as = step < 0 ? -step : step;
     const ax = x < 0 ? -x : x;
     let xn = x - step;
-    if (as <= EARLY * ax && xn >= a && xn <= b) return xn; // the next error is far below one ulp
+    if (halley && (f < 0 ? -f : f) <= EARLY * ax * (d1 < 0 ? -d1 : d1) && xn >= a && xn <= b) return xn;
     if (it >= NEWTON_STEPS || !(xn > a && xn < b) || as > 0.5 * (dxOld < 0 ? -dxOld : dxOld)) {
       xn = splitPoint(a, b);
       if (xn === a) return x; // a and b adjacent
@@ -92,10 +96,19 @@ export function quadRootsPlain(
   k: number,
 ): number {
   const disc = c1 * c1 - 4 * c2 * c0;
-  if (!(disc >= 0)) return k;
   let r1: number;
   let r2: number;
-  if (disc === 0) {
+  if (c0 === 0) {
+    // Exact root 0 (also when c1² underflows, which would merge the two roots).
+    r1 = 0;
+    r2 = -c1 / c2;
+    if (r1 > r2) {
+      r1 = r2;
+      r2 = 0;
+    }
+  } else if (!(disc >= 0)) {
+    return k;
+  } else if (disc === 0) {
     r1 = r2 = -c1 / (2 * c2);
   } else {
     const sq = Math.sqrt(disc);

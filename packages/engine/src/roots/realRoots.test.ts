@@ -211,6 +211,19 @@ describe("realRoots: hard published cases", () => {
   });
 });
 
+describe("realRoots: regressions found by fast-check (shrunk)", () => {
+  it("t³ + 1.5e-323 t²: the exact double root 0 next to a subnormal root (c1² underflows)", () => {
+    expect(realRoots([0, 0, 1.5e-323, 1], -1, 1)).toEqual([-1.5e-323, 0]);
+  });
+  it("t²(t + 1e-4)²: Halley's step vanishing at a critical point of p' is not convergence", () => {
+    const c = [0, 0, 9.999999999999999e-9, 0.00019999999999999998, 1];
+    const r = realRoots(c, -1, 1);
+    expect(r.length).toBe(2);
+    expect(r[1]).toBe(0);
+    expect(r[0] as number).toBeCloseTo(-1e-4, 12);
+  });
+});
+
 describe("realRoots: input validation", () => {
   it("refuses non-finite coefficients, naming the field", () => {
     expect(() => realRoots([1, Number.NaN, 2], 0, 1)).toThrow(/coeffs\[1\] must be a finite number/);

@@ -9,9 +9,15 @@
  *   points where it is exactly 0 that are not returned;
  * - `ordered`: the roots are strictly increasing and inside [lo, hi].
  * Pure; exact (BigInt) signs only, so it is slow: use a few dozen samples.
+ *
+ * `isGrazingRoot(coeffs, x)`: the contract of a grazing (double-root) report, which is not a sign
+ * change: the exact p' is 0 at x or changes sign within one ulp of x, and shifting c0 by the plain
+ * Horner error bound B = PLAIN_HORNER_BOUND_FACTOR·n·u·Σ|cᵢ||x|ⁱ (doubled, plus the gradual-underflow
+ * slack) towards zero makes x a root or flips the sign, i.e. p(x) is within rounding noise of 0.
  */
 
-import { exactPolySign, ulpsToExactRoot } from "./exactPoly.js";
+import { PLAIN_HORNER_BOUND_FACTOR, UNIT_ROUNDOFF } from "../tolerances.js";
+import { exactDerivativeSign, exactPolySign, nextDown, nextUp, ulpsToExactRoot } from "./exactPoly.js";
 
 export interface RootCheck {
   maxUlps: number;
@@ -57,4 +63,27 @@ export function verifyRoots(
     prevS = s;
   }
   return { maxUlps: worstU, worst, missed, ordered };
+}
+
+/** Whether x satisfies the grazing-root contract (see the module header). */
+export function isGrazingRoot(coeffs: ArrayLike<number>, x: number): boolean {
+  const d = exactDerivativeSign(coeffs, x);
+  const critical =
+    d === 0 || exactDerivativeSign(coeffs, nextUp(x)) !== d || exactDerivativeSign(coeffs, nextDown(x)) !== d;
+  if (!critical) return false;
+  const n = coeffs.length - 1;
+  let abs = 0;
+  let pw = 1;
+  const ax = Math.abs(x);
+  for (let i = n; i >= 0; i--) {
+    abs = abs * ax + Math.abs(coeffs[i] as number);
+    if (i > 0) pw *= Math.max(1, ax);
+  }
+  // The solver's plain bound, doubled, plus its gradual-underflow slack (values below ~2^-1000).
+  const bound = 2 * PLAIN_HORNER_BOUND_FACTOR * n * UNIT_ROUNDOFF * abs + 2 ** -1069 * (n + 1) * pw;
+  const s = exactPolySign(coeffs, x);
+  if (s === 0) return true;
+  const shifted = Array.from(coeffs);
+  shifted[0] = (shifted[0] as number) - s * bound;
+  return exactPolySign(shifted, x) !== s;
 }
