@@ -4,7 +4,7 @@
  * collision quartics and on hard cases. Errors are ulps to the nearest exact sign change (or exact
  * double root) of the polynomial with the given double coefficients, via the engine's exactPolySign.
  */
-import { measure, median, quantile } from "../lib/timing.mjs";
+import { median, nowNs, quantile } from "../lib/timing.mjs";
 import { bisection, ferrari, ferrariNewton } from "./methods.mjs";
 import { collisionQuartics, hardQuartics } from "./quartics.mjs";
 import { ulpDistance, ulpsToSignChange } from "./ulps.mjs";
@@ -18,15 +18,23 @@ function methods(engine) {
   ];
 }
 
-/** ns per call over the whole set, median of `runs` passes after a warm-up pass. */
-function timePerCall(fn, polys, lo, hi, runs, calls) {
+/**
+ * ns per call of every method over a set of polynomials: the methods are timed round-robin (one
+ * pass each, `runs` rounds, after two warm-up rounds) so that load from other processes hits them
+ * alike; the median pass time per method / calls per pass.
+ */
+function interleaved(ms, items, runs, calls) {
+  const reps = Math.max(1, Math.round(calls / items.length));
+  const times = ms.map(() => []);
   let sink = 0;
-  const reps = Math.max(1, Math.round(calls / polys.length));
-  const pass = () => {
-    for (let r = 0; r < reps; r++) for (const c of polys) sink += fn(c, lo, hi).length;
-  };
-  const m = measure(pass, { warmup: 2, runs });
-  return { nsPerCall: m.medianNs / (reps * polys.length), runs, sink };
+  for (let round = -2; round < runs; round++) {
+    ms.forEach((m, i) => {
+      const a = nowNs();
+      for (let r = 0; r < reps; r++) for (const it of items) sink += m.fn(it.c, it.lo, it.hi).length;
+      if (round >= 0) times[i].push(nowNs() - a);
+    });
+  }
+  return { nsPerCall: times.map((t) => median(t) / (reps * items.length)), sink };
 }
 
 function rootError(sign, c, x, exactRoots) {
@@ -62,8 +70,15 @@ export function runSolver({ quick, engine, log }) {
   const expected = polys.map((_, k) =>
     Math.max(...errorsPer.map((e) => e[k].filter(Number.isFinite).length)),
   );
+  const calls = quick ? 30000 : 200000;
+  const timing = interleaved(
+    ms,
+    polys.map((c) => ({ c, lo, hi })),
+    runs,
+    calls,
+  );
   ms.forEach((m, i) => {
-    const t = timePerCall(m.fn, polys, lo, hi, runs, quick ? 30000 : 200000);
+    const t = { nsPerCall: timing.nsPerCall[i], runs };
     let missed = 0;
     errorsPer[i].forEach((e, k) => {
       missed += Math.max(0, expected[k] - e.filter(Number.isFinite).length);
@@ -98,18 +113,9 @@ export function runSolver({ quick, engine, log }) {
     }
     return entry;
   });
-  const hardPolys = hardQuartics();
-  const hardTiming = ms.map((m) => {
-    let sink = 0;
-    const reps = quick ? 1000 : 5000;
-    const r = measure(
-      () => {
-        for (let k = 0; k < reps; k++) for (const h of hardPolys) sink += m.fn(h.coeffs, h.lo, h.hi).length;
-      },
-      { warmup: 1, runs },
-    );
-    return { id: m.id, nsPerCall: r.medianNs / (reps * hardPolys.length), sink };
-  });
+  const hardItems = hardQuartics().map((h) => ({ c: h.coeffs, lo: h.lo, hi: h.hi }));
+  const hardNs = interleaved(ms, hardItems, runs, quick ? 10000 : 50000).nsPerCall;
+  const hardTiming = ms.map((m, i) => ({ id: m.id, nsPerCall: hardNs[i] }));
   return {
     random: { count, seed: 7, interval: [lo, hi], methods: random },
     hard,
