@@ -20,7 +20,7 @@ export const PEERS = [matter, planck, rapier];
 const CONFIGS = ["tuned", "defaults"];
 
 export function peerScenes(quick) {
-  const gasSpan = quick ? 0.5 : 5;
+  const gasSpan = quick ? 0.5 : 2;
   const digits = quick ? [1, 2, 3, 5] : [1, 2, 3, 4, 5, 6, 7, 8];
   const speeds = quick ? [10, 1e3, 1e6] : [10, 1e2, 1e3, 1e4, 1e5, 1e6];
   return [

@@ -44,6 +44,8 @@ function niceTicks(lo, hi, log) {
 
 function markerSvg(kind, x, y, color) {
   const s = 4;
+  if (kind === "none")
+    return `<line x1="${x - 8}" y1="${y}" x2="${x + 8}" y2="${y}" stroke="${color}" stroke-width="1.6" stroke-dasharray="5 3"/>`;
   if (kind === "square")
     return `<rect x="${x - s}" y="${y - s}" width="${2 * s}" height="${2 * s}" fill="${color}"/>`;
   if (kind === "diamond")
