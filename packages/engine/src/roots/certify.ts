@@ -25,7 +25,7 @@ import { compHorner, compHornerDD, hornerBound } from "./compHorner.js";
 import { exactDerivativeSign, exactPolySign, nextDown, nextUp } from "./exactPoly.js";
 import { mulPow2 } from "./pow2.js";
 
-const ev = new Float64Array(2);
+const ev = new Float64Array(3);
 let P: Float64Array = new Float64Array(8);
 let dHi = new Float64Array(8);
 let dLo = new Float64Array(8);
@@ -33,8 +33,6 @@ let deg = 0;
 let orig: ArrayLike<number> = P;
 /** |value| of the last certSign evaluation (compensated when it was computed), for choosing ends. */
 let lastAbs = 0;
-/** The last certSign value (compensated when plain was inconclusive), for Newton steps. */
-let lastVal = 0;
 /** Whether the last certSign found |p| within the plain Horner error bound (rounding noise). */
 let lastNoisy = false;
 /** Counts of exact (BigInt) fallbacks, for tests and the benchmark. */
@@ -59,13 +57,11 @@ export function certSign(x: number): number {
   if (x === 0) {
     const c0 = orig[0] as number;
     lastNoisy = c0 === 0;
-    lastVal = P[0] as number;
-    lastAbs = Math.abs(lastVal);
+    lastAbs = Math.abs(P[0] as number);
     return c0 > 0 ? 1 : c0 < 0 ? -1 : 0;
   }
   hornerBound(P, deg, x, ev);
   let v = ev[0] as number;
-  lastVal = v;
   if (Math.abs(v) > (ev[1] as number)) {
     lastNoisy = false;
     lastAbs = Math.abs(v);
@@ -74,7 +70,6 @@ export function certSign(x: number): number {
   lastNoisy = true;
   compHorner(P, deg, x, ev);
   v = ev[0] as number;
-  lastVal = v;
   lastAbs = Math.abs(v);
   const bound = ev[1] as number;
   if (lastAbs > bound || bound === 0) return v > 0 ? 1 : v < 0 ? -1 : 0;
@@ -92,37 +87,36 @@ export function lastWasNoisy(): boolean {
   return lastNoisy;
 }
 
-/** Plain P'(x). */
-function derivAt(x: number): number {
-  let f = P[deg] as number;
-  let df = 0;
-  for (let i = deg - 1; i >= 0; i--) {
-    df = df * x + f;
-    f = f * x + (P[i] as number);
-  }
-  return df;
-}
-
 /** A double within one ulp of an exact root in [a, b] (exact signs sa at a, −sa at b). */
 export function refineRoot(a: number, b: number, sa: number, absA: number, absB: number, x0: number): number {
   let x = x0 > a && x0 < b ? x0 : splitPoint(a, b);
   let step = 1;
   let lastDir = 0;
   for (let it = 0; it < ROOTS_MAX_ITERATIONS; it++) {
-    const s = certSign(x);
+    // Near a root plain Horner cannot decide: go straight to the compensated evaluation.
+    compHorner(P, deg, x, ev);
+    const v = ev[0] as number;
+    const av = v < 0 ? -v : v;
+    const bound = ev[1] as number;
+    let s: number;
+    if (av > bound || bound === 0) s = v > 0 ? 1 : v < 0 ? -1 : 0;
+    else {
+      certStats.exact++;
+      s = exactPolySign(orig, xScale === 0 ? x : mulPow2(x, xScale));
+    }
     if (s === 0) return x;
     const dir = s === sa ? 1 : -1;
     if (dir > 0) {
       a = x;
-      absA = lastAbs;
+      absA = av;
     } else {
       b = x;
-      absB = lastAbs;
+      absB = av;
     }
     if (nextUp(a) >= b) return absA <= absB ? a : b;
     let xn: number;
     if (it < 8) {
-      xn = x - lastVal / derivAt(x);
+      xn = x - v / (ev[2] as number);
       // At least one ulp towards the root, doubling while the steps keep the same direction.
       step = dir === lastDir ? step * 2 : 1;
       if (dir > 0 ? !(xn > x) : !(xn < x)) {

@@ -14,7 +14,9 @@
  *   whose coefficients i·cᵢ are kept exact as a pair).
  * When no rounding happened at all (every error term 0, no product near underflow) compHorner's
  * bound is 0: its value, and so its sign, even 0, is exact. Both bounds add an absolute underflow slack (2^-1070 (n+1) max(1,|x|)ⁿ) because error-free
- * transformations lose exactness for results below 2^-969. Only + − × ÷ are used.
+ * transformations lose exactness for results below 2^-969 (needed only where p̃ is that small:
+ * elsewhere the factors' margin covers it, and subnormal arithmetic, very slow, stays off the hot
+ * path). Only + − × ÷ are used.
  */
 
 import { COMP_HORNER_BOUND_FACTOR, PLAIN_HORNER_BOUND_FACTOR, UNIT_ROUNDOFF } from "../tolerances.js";
@@ -24,6 +26,11 @@ const SPLIT = 134217729;
 const U = UNIT_ROUNDOFF;
 /** Absolute slack per operation for lost exactness under gradual underflow. */
 const TINY = 2 ** -1070;
+/**
+ * When p̃ ≥ 2^-900·max(1,|x|)ⁿ the margin already built into the bound factors exceeds the underflow
+ * slack by far, so the slack is skipped: it is subnormal, and subnormal arithmetic is very slow.
+ */
+const SLACK_FREE = 2 ** -900;
 /** Below this magnitude a product's TwoProduct error term may be inexact (gradual underflow). */
 const UNDERFLOW = 2 ** -968;
 
@@ -41,11 +48,12 @@ export function hornerBound(c: ArrayLike<number>, n: number, x: number, out: Flo
     pw *= xm;
   }
   out[0] = s;
-  out[1] = PLAIN_HORNER_BOUND_FACTOR * (n * U) * a + TINY * (n + 1) * pw;
+  const main = PLAIN_HORNER_BOUND_FACTOR * (n * U) * a;
+  out[1] = a >= pw * SLACK_FREE ? main : main + TINY * (n + 1) * pw;
 }
 
 /** Compensated Horner: value accurate as if computed with 106-bit precision, with a rigorous bound
- * (0 when the evaluation was exact). */
+ * (0 when the evaluation was exact); out[2] = the plain derivative p'(x), for Newton steps. */
 export function compHorner(c: ArrayLike<number>, n: number, x: number, out: Float64Array): void {
   let e = 0;
   let uf = 0;
@@ -58,7 +66,9 @@ export function compHorner(c: ArrayLike<number>, n: number, x: number, out: Floa
   let a = s < 0 ? -s : s;
   let r = 0;
   let pw = 1;
+  let d = 0;
   for (let i = n - 1; i >= 0; i--) {
+    d = d * x + s;
     const p = s * x;
     t = SPLIT * s;
     const sh = t - (t - s);
@@ -77,11 +87,13 @@ export function compHorner(c: ArrayLike<number>, n: number, x: number, out: Floa
   }
   const v = s + r;
   out[0] = v;
+  out[2] = d;
   // No rounding error anywhere (all error terms 0, no product in the underflow range): v is exact.
-  out[1] =
-    e === 0 && uf === 0
-      ? 0
-      : COMP_HORNER_BOUND_FACTOR * (U * (v < 0 ? -v : v) + n * n * U * U * a) + TINY * (n + 1) * pw;
+  if (e === 0 && uf === 0) out[1] = 0;
+  else {
+    const main = COMP_HORNER_BOUND_FACTOR * (U * (v < 0 ? -v : v) + n * n * U * U * a);
+    out[1] = a >= pw * SLACK_FREE ? main : main + TINY * (n + 1) * pw;
+  }
 }
 
 /** Compensated Horner for double-double coefficients c[i] + clo[i]. */
@@ -117,5 +129,6 @@ export function compHornerDD(
   }
   const v = s + r;
   out[0] = v;
-  out[1] = 2 * COMP_HORNER_BOUND_FACTOR * (U * (v < 0 ? -v : v) + n * n * U * U * a) + TINY * (n + 1) * pw;
+  const main = 2 * COMP_HORNER_BOUND_FACTOR * (U * (v < 0 ? -v : v) + n * n * U * U * a);
+  out[1] = a >= pw * SLACK_FREE ? main : main + TINY * (n + 1) * pw;
 }

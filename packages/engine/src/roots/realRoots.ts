@@ -8,7 +8,7 @@
  * Otherwise the roots of p' split [lo, hi] into monotone pieces (found the same way, recursively,
  * down to a quadratic solved in closed form without cancellation). The exact sign of p is decided at
  * every piece end (certify.ts: plain → compensated → BigInt); each piece whose ends have opposite
- * exact signs holds exactly one root, found by safeguarded Newton and refined on certified signs to
+ * exact signs holds exactly one root, found by safeguarded Halley/Newton and refined on certified signs to
  * a double within 1 ulp of it. A piece end with p exactly 0 is a root (this is how roots exactly at
  * lo or hi, or exact multiple roots, are found). A critical point where |p| is within the plain
  * evaluation error bound and p does not change sign on either side is a double root (a grazing
@@ -44,6 +44,19 @@ export function evalPoly(coeffs: ArrayLike<number>, x: number): number {
   return s;
 }
 
+/** 1/C(n, k) for k = 0…n (rounded; the Bernstein test's margin covers that rounding). */
+function invBinom(n: number): Float64Array {
+  const r = new Float64Array(n + 1);
+  let b = 1;
+  for (let k = 0; k <= n; k++) {
+    r[k] = 1 / b;
+    b = (b * (n - k)) / (k + 1);
+  }
+  return r;
+}
+const INV_BINOM = Array.from({ length: 21 }, (_, n) => invBinom(n));
+/** 2^⌊256/n⌋: intervals with max(|lo|, |hi|) within [1/MOD_LIMIT[n], MOD_LIMIT[n]] need no variable scaling. */
+const MOD_LIMIT = Array.from({ length: 65 }, (_, n) => (n === 0 ? 1 : mulPow2(1, Math.floor(256 / n))));
 const BIG = 2 ** 64;
 const SMALL = 2 ** -64;
 let cap = 0;
@@ -97,11 +110,10 @@ function keepsSign(n: number, lo: number, hi: number): boolean {
   const h = (hi - lo) * (1 + 4 * UNIT_ROUNDOFF);
   let hk = 1;
   let scale = A[0] as number;
-  let binom = 1; // C(n, k)
+  const inv = n < INV_BINOM.length ? (INV_BINOM[n] as Float64Array) : invBinom(n);
   for (let k = 1; k <= n; k++) {
     hk *= h;
-    binom = (binom * (n - k + 1)) / k;
-    T[k] = ((T[k] as number) * hk) / binom;
+    T[k] = (T[k] as number) * hk * (inv[k] as number);
     scale += (A[k] as number) * hk;
   }
   for (let r = 1; r <= n; r++) {
@@ -208,10 +220,16 @@ export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): nu
  * than ~2^1070 below the largest underflow (documented limit).
  */
 function normalise(coeffs: ArrayLike<number>, n: number, maxAbs: number, M: number): number {
-  const eM = M > 0 && M < Number.POSITIVE_INFINITY ? exponentOf(M) : 0;
-  const xs = n * Math.abs(eM) > 256 ? eM + 1 : 0;
+  // Fast test first (|log2 M|·n ≤ 256 ⇐ 2^(-256/n) ≤ M ≤ 2^(256/n)); exponents only when it fails.
+  const lim = n < MOD_LIMIT.length ? (MOD_LIMIT[n] as number) : 1;
+  let xs = 0;
+  if (!(M <= lim && (M >= 1 / lim || M === 0))) {
+    const eM = M > 0 && M < Number.POSITIVE_INFINITY ? exponentOf(M) : 0;
+    xs = n * Math.abs(eM) > 256 ? eM + 1 : 0;
+  }
   if (xs === 0 && maxAbs >= SMALL && maxAbs <= BIG) {
-    for (let i = 0; i <= n; i++) P[i] = coeffs[i] as number;
+    const p = P;
+    for (let i = 0; i <= n; i++) p[i] = coeffs[i] as number;
     return 0;
   }
   let E = Number.NEGATIVE_INFINITY;
