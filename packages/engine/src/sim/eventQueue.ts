@@ -1,5 +1,5 @@
 /**
- * Indexed binary min-heap over integer slots (one entry per body), keyed by a time. Update, insert
+ * Indexed 4-ary min-heap over integer slots (one entry per body), keyed by a time. Update, insert
  * and remove are O(log n). Keys are stored in heap order beside the slots, so sifting reads memory
  * sequentially. Exact ties in time are broken by a caller-supplied canonical order, so the pop
  * order never depends on insertion order (determinism).
@@ -106,7 +106,7 @@ export class IndexedHeap {
     const slots = this.slots;
     const keys = this.keys;
     while (i > 0) {
-      const parent = (i - 1) >> 1;
+      const parent = (i - 1) >> 2;
       const ps = slots[parent] as number;
       const pk = keys[parent] as number;
       if (!this.before(slot, key, ps, pk)) break;
@@ -126,19 +126,19 @@ export class IndexedHeap {
     const keys = this.keys;
     const n = this.n;
     for (;;) {
-      const l = 2 * i + 1;
-      if (l >= n) break;
-      let c = l;
-      let cs = slots[l] as number;
-      let ck = keys[l] as number;
-      const r = l + 1;
-      if (r < n) {
-        const rs = slots[r] as number;
-        const rk = keys[r] as number;
-        if (this.before(rs, rk, cs, ck)) {
-          c = r;
-          cs = rs;
-          ck = rk;
+      const first = 4 * i + 1;
+      if (first >= n) break;
+      let c = first;
+      let cs = slots[first] as number;
+      let ck = keys[first] as number;
+      const last = first + 4 < n ? first + 4 : n;
+      for (let j = first + 1; j < last; j++) {
+        const js = slots[j] as number;
+        const jk = keys[j] as number;
+        if (this.before(js, jk, cs, ck)) {
+          c = j;
+          cs = js;
+          ck = jk;
         }
       }
       if (!this.before(cs, ck, slot, key)) break;

@@ -477,6 +477,31 @@ export class Simulator {
     const hay = 0.5 * (b.ay[s] as number);
     let best = INF;
     let dir = -1;
+    if (hax === 0 && hay === 0) {
+      // Uniform motion (the common case): only the boundaries ahead can be crossed.
+      if (vx > 0 && cx < grid.nx - 1) {
+        best = Math.max(lo, (grid.boundaryX(cx + 1) - x0) / vx);
+        dir = 1;
+      } else if (vx < 0 && cx > 0) {
+        best = Math.max(lo, (grid.boundaryX(cx) - x0) / vx);
+        dir = 0;
+      }
+      if (vy > 0 && cy < grid.ny - 1) {
+        const t = Math.max(lo, (grid.boundaryY(cy + 1) - y0) / vy);
+        if (t < best) {
+          best = t;
+          dir = 3;
+        }
+      } else if (vy < 0 && cy > 0) {
+        const t = Math.max(lo, (grid.boundaryY(cy) - y0) / vy);
+        if (t < best) {
+          best = t;
+          dir = 2;
+        }
+      }
+      b.crossDir[s] = dir;
+      return best === INF ? INF : Math.max(this.time, t0 + best);
+    }
     if (cx > 0) {
       const t = firstDownCrossingQuadratic(x0 - grid.boundaryX(cx), vx, hax, lo, hi);
       if (t < best) {
