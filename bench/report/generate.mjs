@@ -13,6 +13,15 @@ import { plot } from "./svg.mjs";
 
 const ROOT = join(dirname(fileURLToPath(import.meta.url)), "..", "..");
 
+/** What each World `optimizations` switch skips (from the engine's Optimizations contract). */
+const SKIPS = {
+  broadPhase: "cell grid with crossing events (off: every body against every body)",
+  quadraticFastPath: "closed-form quadratic when the relative acceleration is zero (off: the quartic solver)",
+  pathBounds:
+    "pairs whose remaining paths (friction: finite segments) cannot meet are rejected before solving",
+  restingSkip: "pairs of resting bodies are never tested",
+};
+
 const CAVEATS = [
   "Peers are stepped at a fixed rate; only `step()` is timed (plus, in the friction break, the harness's per-step friction decrement, which a user of those engines must write too). chapgame is timed for one `advance({ untilTime: span })`; scene construction is never timed.",
   "Overlap and escape are sampled at 240 Hz for every engine (every step when the step rate is 240 Hz or lower); the final state is read at the end of the span.",
@@ -22,7 +31,8 @@ const CAVEATS = [
   "rapier2d-compat computes in 32-bit floats inside WASM; masses of 1e10 and above (Galperin ≥ 6 digits) are beyond what f32 mass ratios resolve.",
   "The peers have no sliding friction for a top-down table: the break applies μ·g·dt per step to each speed (clamped at zero). Energy is not conserved there by design; the break's error column is the worst overlap.",
   "For the gas scenes there is no exact final state (the dynamics is chaotic); collision counts there are compared with chapgame's count over the same span, which is only a statistical reference.",
-  "Timings are medians of the runs listed (after a warm-up pass that also collects the metrics), on the machine printed above; ratios measured in the same run are the headline, absolute times are context.",
+  "Timings are medians of the runs listed (after a warm-up pass that also collects the metrics), on the machine printed above; ratios measured in the same run are the headline, absolute times are context. A peer pass longer than 3 s is timed once: the metrics pass itself, which times only `step()` (its JIT warm-up is negligible at that length).",
+  "The machine is shared: other processes (builds and test runs in the same checkout) may run during the benchmark, which inflates absolute times unevenly; the solver methods are therefore timed round-robin, and every ratio in the headline is between numbers of the same run.",
 ];
 
 function machineBlock(r) {
@@ -243,7 +253,7 @@ function engineSection(e, out, svgs) {
         a.error
           ? [a.flag, a.scene, "", `error: ${a.error}`, "", "", "", ""]
           : [
-              a.flag,
+              `${a.flag}: ${SKIPS[a.flag] ?? ""}`,
               a.description,
               a.bodies,
               int(a.events),
