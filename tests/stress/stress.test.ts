@@ -115,3 +115,16 @@ describe("stress: speeds up to 1e6", () => {
     });
   }
 });
+
+describe("stress: long run", () => {
+  const scene = { ...highSpeed(1, 100, 0), span: 1e4 };
+  const run = lazy(() => runChecked(scene, 50, 20000));
+  it("20,000 events in a box gas: energy drift bounded, no overlap, no escape", () => {
+    const r = run();
+    expect(r.events).toBe(20000);
+    expect(r.energyError).toBeLessThanOrEqual(ENERGY);
+    expect(r.worstOverlap).toBeLessThanOrEqual(scene.tolerance);
+    expect(r.contactError).toBeLessThanOrEqual(scene.tolerance);
+    expect(r.escaped).toBe(0);
+  });
+});
