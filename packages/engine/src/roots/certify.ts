@@ -19,13 +19,13 @@
  * on the hot path; the solver is not re-entrant and needs no re-entrancy).
  */
 
-import { ROOTS_MAX_ITERATIONS } from "../tolerances.js";
+import { PLAIN_HORNER_BOUND_FACTOR, ROOTS_MAX_ITERATIONS, UNIT_ROUNDOFF } from "../tolerances.js";
 import { RootSolverError, splitPoint } from "./bracket.js";
 import { compHorner, compHornerDD, hornerBound } from "./compHorner.js";
 import { exactDerivativeSign, exactPolySign, nextDown, nextUp } from "./exactPoly.js";
 import { mulPow2 } from "./pow2.js";
 
-const ev = new Float64Array(3);
+const ev = new Float64Array(5);
 let P: Float64Array = new Float64Array(8);
 let dHi = new Float64Array(8);
 let dLo = new Float64Array(8);
@@ -87,13 +87,81 @@ export function lastWasNoisy(): boolean {
   return lastNoisy;
 }
 
-/** A double within one ulp of an exact root in [a, b] (exact signs sa at a, −sa at b). */
+/**
+ * A double within one ulp of an exact root in [a, b] (exact signs sa at a, −sa at b). One
+ * compensated evaluation at x0 gives p(x0) ± B0 and p'(x0) ± B1; nearby doubles y = x0 + h
+ * (|h| ≤ 2^-30 |x0|, h exact by Sterbenz) are then decided by the certified local model
+ * p(y) ∈ p(x0) + p'(x0) h ± (B0 + |h| B1 + p̃''(|x0|)/2 · h² + rounding), walking from the Newton
+ * estimate one ulp at a time: usually one compensated evaluation and two model checks per root.
+ * When the model cannot decide, `refineGeneric` continues with full evaluations.
+ */
 export function refineRoot(a: number, b: number, sa: number, absA: number, absB: number, x0: number): number {
+  const x = x0 > a && x0 < b ? x0 : splitPoint(a, b);
+  compHorner(P, deg, x, ev);
+  const t0 = ev[0] as number;
+  const b0 = ev[1] as number;
+  const t1 = ev[2] as number;
+  const at0 = t0 < 0 ? -t0 : t0;
+  let s: number;
+  if (at0 > b0 || b0 === 0) s = t0 > 0 ? 1 : t0 < 0 ? -1 : 0;
+  else {
+    certStats.exact++;
+    s = exactPolySign(orig, xScale === 0 ? x : mulPow2(x, xScale));
+  }
+  if (s === 0) return x;
+  if (s === sa) {
+    a = x;
+    absA = at0;
+  } else {
+    b = x;
+    absB = at0;
+  }
+  if (nextUp(a) >= b) return absA <= absB ? a : b;
+  const ax = x < 0 ? -x : x;
+  let y = x - t0 / t1;
+  if (ax >= MODEL_MIN_X) {
+    const H = ax * MODEL_SPAN;
+    const e1 =
+      PLAIN_HORNER_BOUND_FACTOR * deg * UNIT_ROUNDOFF * (ev[3] as number) + UNIT_ROUNDOFF * Math.abs(t1);
+    const a2 = ev[4] as number;
+    if (!(y > a && y < b) || y === x) y = s === sa ? nextUp(x) : nextDown(x);
+    for (let k = 0; k < 8; k++) {
+      const h = y - x;
+      const ah = h < 0 ? -h : h;
+      if (!(ah <= H)) break;
+      const v = t0 + t1 * h;
+      const av = v < 0 ? -v : v;
+      const err = MODEL_SAFETY * (b0 + ah * e1 + a2 * h * h + UNIT_ROUNDOFF * av);
+      if (!(av > err)) break; // undecided: full evaluation below
+      if ((v > 0 ? 1 : -1) === sa) {
+        a = y;
+        absA = av;
+        if (nextUp(a) >= b) return absA <= absB ? a : b;
+        y = nextUp(y);
+      } else {
+        b = y;
+        absB = av;
+        if (nextUp(a) >= b) return absA <= absB ? a : b;
+        y = nextDown(y);
+      }
+    }
+  }
+  return refineGeneric(a, b, sa, absA, absB, y);
+}
+
+/** The model's span: |h| ≤ 2^-30 |x0| keeps p̃'' within 1 + n·2^-30 of its value at |x0|. */
+const MODEL_SPAN = 2 ** -30;
+/** Below this |x0| the model's h² terms could reach the subnormal range: no model. */
+const MODEL_MIN_X = 2 ** -400;
+/** Covers the rounding in computing the error terms and the growth of p̃'' over the span. */
+const MODEL_SAFETY = 1.01;
+
+/** Certified refinement by full evaluations (Newton steps, then halving). */
+function refineGeneric(a: number, b: number, sa: number, absA: number, absB: number, x0: number): number {
   let x = x0 > a && x0 < b ? x0 : splitPoint(a, b);
   let step = 1;
   let lastDir = 0;
   for (let it = 0; it < ROOTS_MAX_ITERATIONS; it++) {
-    // Near a root plain Horner cannot decide: go straight to the compensated evaluation.
     compHorner(P, deg, x, ev);
     const v = ev[0] as number;
     const av = v < 0 ? -v : v;

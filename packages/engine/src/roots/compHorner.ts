@@ -52,8 +52,11 @@ export function hornerBound(c: ArrayLike<number>, n: number, x: number, out: Flo
   out[1] = a >= pw * SLACK_FREE ? main : main + TINY * (n + 1) * pw;
 }
 
-/** Compensated Horner: value accurate as if computed with 106-bit precision, with a rigorous bound
- * (0 when the evaluation was exact); out[2] = the plain derivative p'(x), for Newton steps. */
+/**
+ * Compensated Horner: value accurate as if computed with 106-bit precision, with a rigorous bound
+ * (0 when the evaluation was exact). Also out[2] = plain p'(x), out[3] = p̃'(|x|) = Σ i|cᵢ||x|^(i−1)
+ * and out[4] = p̃''(|x|)/2 (for certify.ts's local model). `out` needs 5 entries.
+ */
 export function compHorner(c: ArrayLike<number>, n: number, x: number, out: Float64Array): void {
   let e = 0;
   let uf = 0;
@@ -67,8 +70,12 @@ export function compHorner(c: ArrayLike<number>, n: number, x: number, out: Floa
   let r = 0;
   let pw = 1;
   let d = 0;
+  let a1 = 0;
+  let a2 = 0;
   for (let i = n - 1; i >= 0; i--) {
     d = d * x + s;
+    a2 = a2 * ax + a1;
+    a1 = a1 * ax + a;
     const p = s * x;
     t = SPLIT * s;
     const sh = t - (t - s);
@@ -88,6 +95,8 @@ export function compHorner(c: ArrayLike<number>, n: number, x: number, out: Floa
   const v = s + r;
   out[0] = v;
   out[2] = d;
+  out[3] = a1;
+  out[4] = a2;
   // No rounding error anywhere (all error terms 0, no product in the underflow range): v is exact.
   if (e === 0 && uf === 0) out[1] = 0;
   else {

@@ -2,12 +2,13 @@
  * Plain-arithmetic kernels of the solver: safeguarded Newton on a bracket, the cancellation-free
  * quadratic formula, and the roots of a polynomial on monotone pieces.
  *
- * - `newtonPlain(c, off, n, a, b, fa, fb)`: a root of the degree-n polynomial c[off..off+n] in
- *   (a, b), given plain values fa, fb of opposite signs. Halley steps (Newton with the second
+ * - `newtonPlain(c, off, n, a, b, fa, fb, critical)`: a root of the degree-n polynomial
+ *   c[off..off+n] in (a, b), given plain values fa, fb of opposite signs (`critical` marks ends
+ *   that are critical points, for a better start). Halley steps (Newton with the second
  *   derivative: cubic convergence, so fewer evaluations) are accepted only inside the current
  *   bracket and while they at least halve the step before last; otherwise the bracket is
- *   split (splitPoint); after NEWTON_STEPS steps only splitting. Stops when a step is below 2^-26 relative (the next error is then far below
- *   an ulp at a simple root) or the bracket is two adjacent
+ *   split (splitPoint); after NEWTON_STEPS steps only splitting. Stops when a Halley step follows a Newton step below 2^-17 relative (the error
+ *   left is then about an ulp at a simple root) or the bracket is two adjacent
  *   doubles. Signs here are plain Horner signs: the result is as good as plain evaluation allows;
  *   callers that need certainty refine it (see certify.ts).
  * - `quadRootsPlain(c0, c1, c2, lo, hi, out, k)`: roots of c2 t² + c1 t + c0 strictly inside (lo, hi)
@@ -22,12 +23,12 @@ import { ROOTS_MAX_ITERATIONS } from "../tolerances.js";
 import { RootSolverError, splitPoint } from "./bracket.js";
 
 /**
- * Stop once a Halley step is below 2^-26 of |x|: with cubic (or Newton's quadratic) convergence the
- * step just taken leaves an error far below one ulp for a simple root; at multiple or clustered roots
- * the result is less precise, which is harmless here (split points only need to be close, and
- * level-0 roots are certified afterwards by certify.ts).
+ * Stop once Newton's step is below 2^-17 of |x| and Halley's step is taken: with cubic convergence
+ * the error left is about (2^-17)³ = 2^-51 relative (an ulp or two) at a simple root; at multiple or
+ * clustered roots the result is less precise, which is harmless here (split points only need to be
+ * close, and level-0 roots are certified afterwards by certify.ts).
  */
-const EARLY = 2 ** -26;
+const EARLY = 2 ** -17;
 /**
  * Newton steps allowed before pure halving: Newton converges in a handful of steps at simple roots
  * but only linearly (halving) at multiple roots, which near 0 could take ~1000 steps; halving in the
@@ -44,9 +45,10 @@ export function newtonPlain(
   b: number,
   fa: number,
   fb: number,
+  critical = 0,
 ): number {
   const aNeg = fa < 0;
-  let x = a - fa * ((b - a) / (fb - fa));
+  let x = start(c, off, n, a, b, fa, fb, critical);
   if (!(x > a && x < b)) x = splitPoint(a, b);
   let dxOld = Number.POSITIVE_INFINITY;
   let dx = Number.POSITIVE_INFINITY;
@@ -83,6 +85,43 @@ export function newtonPlain(
     x = xn;
   }
   throw new RootSolverError(`newton: no convergence in ${ROOTS_MAX_ITERATIONS} iterations on [${a}, ${b}]`);
+}
+
+/**
+ * Starting point in (a, b). At an end that is a critical point (bit 1: a, bit 2: b; p' = 0 there)
+ * p(e + δ) ≈ p(e) + p''(e) δ²/2, so δ = √(−2p(e)/p''(e)): much closer than the secant, which is
+ * poor next to a flat end. With two critical ends the one with the smaller |p| is used. Otherwise
+ * (or when the model fails) regula falsi.
+ */
+function start(
+  c: ArrayLike<number>,
+  off: number,
+  n: number,
+  a: number,
+  b: number,
+  fa: number,
+  fb: number,
+  critical: number,
+): number {
+  if (critical !== 0) {
+    const useA = critical === 1 || (critical === 3 && Math.abs(fa) <= Math.abs(fb));
+    const e = useA ? a : b;
+    const fe = useA ? fa : fb;
+    let d1 = 0;
+    let d2 = 0;
+    let f = c[off + n] as number;
+    for (let i = n - 1; i >= 0; i--) {
+      d2 = d2 * e + d1;
+      d1 = d1 * e + f;
+      f = f * e + (c[off + i] as number);
+    }
+    const q = -fe / d2; // δ² (d2 = p''/2)
+    if (q > 0) {
+      const x = useA ? a + Math.sqrt(q) : b - Math.sqrt(q);
+      if (x > a && x < b) return x;
+    }
+  }
+  return a - fa * ((b - a) / (fb - fa));
 }
 
 /** Roots of c2 t² + c1 t + c0 (c2 ≠ 0) strictly inside (lo, hi), sorted, appended at out[k]. */
@@ -151,7 +190,7 @@ export function pieceRoots(
     const b = i < ns ? (splits[i] as number) : hi;
     const fb = hornerAt(c, off, n, b);
     if (fa !== 0 && fb !== 0 && fa < 0 !== fb < 0) {
-      const r = newtonPlain(c, off, n, a, b, fa, fb);
+      const r = newtonPlain(c, off, n, a, b, fa, fb, (i > 0 ? 1 : 0) | (i < ns ? 2 : 0));
       if (r > lo && r < hi && (k === 0 || r > (out[k - 1] as number))) out[k++] = r;
     } else if (fb === 0 && i < ns && (k === 0 || b > (out[k - 1] as number))) {
       out[k++] = b;

@@ -323,7 +323,10 @@ function solveLevel0(n: number, m: number, lo: number, hi: number, ns: number, o
       for (let j = 0; j < nq; j++)
         if ((closed[j] as number) > a && (closed[j] as number) < b) x0 = closed[j] as number;
     }
-    if (Number.isNaN(x0)) x0 = newtonPlain(P, 0, n, a, b, sa * (aa > 0 ? aa : 1), -sa * (ab > 0 ? ab : 1));
+    if (Number.isNaN(x0)) {
+      const crit = (i > 0 ? 1 : 0) | (i + 1 < K - 1 ? 2 : 0);
+      x0 = newtonPlain(P, 0, n, a, b, sa * (aa > 0 ? aa : 1), -sa * (ab > 0 ? ab : 1), crit);
+    }
     push(out, refineRoot(a, b, sa, aa, ab, x0));
   }
 }
