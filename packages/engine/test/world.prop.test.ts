@@ -10,7 +10,7 @@ import { worldFromSpec } from "./worldFromSpec.js";
 
 const SEED = Number(process.env.FC_SEED ?? 20261121);
 
-function params(name: string, numRuns: number): fc.Parameters<[number]> {
+function params<T extends unknown[]>(name: string, numRuns: number): fc.Parameters<T> {
   console.log(`[${name}] fast-check seed ${SEED} (set FC_SEED to change)`);
   return { seed: SEED, numRuns, verbose: true };
 }
