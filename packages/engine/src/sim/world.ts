@@ -174,6 +174,34 @@ export class World extends Simulator {
     };
   }
 
+  /**
+   * The exact current motion of a body (a copy): p(t) = (x0, y0) + (t - t0) * ((vx, vy) + (t - t0) * (ax, ay) / 2)
+   * for t0 <= t <= tStop (positionAt / velocityAt in physics/motion.ts evaluate it bit for bit).
+   */
+  motion(id: string): {
+    t0: number;
+    x0: number;
+    y0: number;
+    vx: number;
+    vy: number;
+    ax: number;
+    ay: number;
+    tStop: number;
+  } {
+    const s = this.slotOf(id);
+    const b = this.store;
+    return {
+      t0: b.t0[s] as number,
+      x0: b.x0[s] as number,
+      y0: b.y0[s] as number,
+      vx: b.vx0[s] as number,
+      vy: b.vy0[s] as number,
+      ax: b.ax[s] as number,
+      ay: b.ay[s] as number,
+      tStop: b.tEnd[s] as number,
+    };
+  }
+
   private slotOf(id: string): number {
     const s = this.index.get(id);
     if (s === undefined) throw new ChapgameError("id", `no body with id '${id}'`);
