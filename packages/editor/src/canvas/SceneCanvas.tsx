@@ -57,8 +57,8 @@ export function SceneCanvas() {
       ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
       dirty = true;
     };
-    const ro = new ResizeObserver(resize);
-    ro.observe(canvas);
+    const ro = typeof ResizeObserver === "undefined" ? null : new ResizeObserver(resize);
+    ro?.observe(canvas);
     resize();
 
     const unsubUi = ui.subscribe((s, p) => {
@@ -225,7 +225,7 @@ export function SceneCanvas() {
     canvas.addEventListener("pointercancel", onUp);
     return () => {
       cancelAnimationFrame(raf);
-      ro.disconnect();
+      ro?.disconnect();
       unsubUi();
       canvas.removeEventListener("wheel", onWheel);
       canvas.removeEventListener("pointerdown", onDown);

@@ -15,7 +15,13 @@ export interface DrawStats {
   maxFrameLatencyMs: number;
 }
 
-export const drawStats: DrawStats = { draws: 0, drawMs: 0, frames: 0, frameLatencyMs: 0, maxFrameLatencyMs: 0 };
+export const drawStats: DrawStats = {
+  draws: 0,
+  drawMs: 0,
+  frames: 0,
+  frameLatencyMs: 0,
+  maxFrameLatencyMs: 0,
+};
 
 export function resetDrawStats(): void {
   drawStats.draws = 0;

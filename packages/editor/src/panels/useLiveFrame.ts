@@ -1,13 +1,14 @@
 /**
  * The latest Frame for panels, re-rendering at most every `intervalMs` (tables show live values
- * during playback without re-rendering per animation frame).
+ * during playback without re-rendering per animation frame). Asks for the frame of the current time
+ * itself, so panels work without the canvas (and in tests).
  */
 import { useEffect, useState } from "react";
 import { useEditor } from "../EditorContext";
 import type { Frame } from "../remote/protocol";
 
 export function useLiveFrame(intervalMs = 150): Frame | null {
-  const { client } = useEditor();
+  const { client, ui } = useEditor();
   const [frame, setFrame] = useState<Frame | null>(client.latestFrame);
   useEffect(() => {
     let timer: ReturnType<typeof setTimeout> | null = null;
@@ -22,10 +23,18 @@ export function useLiveFrame(intervalMs = 150): Frame | null {
       const wait = Math.max(0, lastShown + intervalMs - Date.now());
       timer = setTimeout(show, wait);
     });
+    const want = () => client.wantFrame(ui.getState().t);
+    const offUi = ui.subscribe((s, p) => {
+      if (s.t !== p.t) want();
+    });
+    const offInfo = client.subscribe(want);
+    want();
     return () => {
       off();
+      offUi();
+      offInfo();
       if (timer !== null) clearTimeout(timer);
     };
-  }, [client, intervalMs]);
+  }, [client, ui, intervalMs]);
   return frame;
 }

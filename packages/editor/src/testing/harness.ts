@@ -1,0 +1,39 @@
+/**
+ * Test harness: an Editor whose TimelineHost runs in-process over a port pair (the same protocol as
+ * the Web Worker, delivered asynchronously), with the engine's real Timeline.
+ */
+import { Timeline } from "@chapgame/engine";
+import { Editor } from "../editor";
+import { TimelineClient } from "../remote/client";
+import { TimelineHost } from "../remote/host";
+import { portPair } from "../remote/localPort";
+import type { RequestMessage } from "../remote/protocol";
+import { createUiStore } from "../store/uiStore";
+
+export function testEditor(): { editor: Editor; client: TimelineClient; host: TimelineHost } {
+  const [main, worker] = portPair();
+  const host = new TimelineHost(
+    (scene) => Timeline.fromScene(scene, { compute: false }),
+    {
+      post: (m) => worker.postMessage(m),
+      schedule: (fn) => setTimeout(fn, 0),
+      now: () => performance.now(),
+    },
+    { format: "chapgame", version: 1, g: 9.81, gravity: [0, 0], actions: [] },
+  );
+  worker.onmessage = (e) => host.handle(e.data as RequestMessage);
+  const client = new TimelineClient(main);
+  const editor = new Editor(client, createUiStore());
+  return { editor, client, host };
+}
+
+/** Resolves when the host has no computation running (after a load, edit or compute). */
+export async function settled(client: TimelineClient, timeoutMs = 10_000): Promise<void> {
+  const end = Date.now() + timeoutMs;
+  await new Promise((r) => setTimeout(r, 0));
+  while (client.getSnapshot().computing !== null || client.getSnapshot().revision < 0) {
+    if (Date.now() > end) throw new Error("host did not settle");
+    await new Promise((r) => setTimeout(r, 5));
+  }
+  await new Promise((r) => setTimeout(r, 5));
+}
