@@ -58,6 +58,12 @@ export const OVERLAP_REL = 1e-9;
 export const GRID_CELL_MARGIN = 1 + 1e-6;
 
 /**
+ * Below this many bodies the broad phase is a single cell: testing every pair costs less than the
+ * cell-crossing events a grid would add (Galperin's billiard: 2 bodies, millions of events).
+ */
+export const GRID_MIN_BODIES = 32;
+
+/**
  * Target number of grid cells per body. Cells never get smaller than GRID_CELL_MARGIN * the largest
  * diameter; in dilute scenes they are made larger so that there are at most this many cells per
  * body: fewer cell crossings per collision at the price of a few more pair tests (measured on the

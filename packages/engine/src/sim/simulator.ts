@@ -16,7 +16,12 @@
 import { type MotionLaw, motionLaw, positionAt, velocityAt } from "../physics/motion.js";
 import { discDiscResponse, impulseMagnitude, reflectResponse } from "../physics/response.js";
 import { discDiscTime, discLineCrossings, firstDownCrossingQuadratic } from "../physics/timeOfImpact.js";
-import { GRID_CELL_MARGIN, GRID_CELLS_PER_BODY, SIMULTANEOUS_EVENTS_PER_BODY } from "../tolerances.js";
+import {
+  GRID_CELL_MARGIN,
+  GRID_CELLS_PER_BODY,
+  GRID_MIN_BODIES,
+  SIMULTANEOUS_EVENTS_PER_BODY,
+} from "../tolerances.js";
 import { BodyStore, EV_BODY, EV_CROSS, EV_LINE, EV_NONE, EV_POINT, EV_STOP } from "./bodyStore.js";
 import { SimulationError } from "./errors.js";
 import { IndexedHeap } from "./eventQueue.js";
@@ -182,7 +187,7 @@ export class Simulator {
     }
     this.grid.reserve(b.capacity);
     this.heap.reserve(b.capacity);
-    if (n === 0 || !this.opt.broadPhase) {
+    if (n < GRID_MIN_BODIES || !this.opt.broadPhase) {
       this.grid.reset(0, 0, 1, 1, 1);
       this.gridMaxR = INF;
     } else {
