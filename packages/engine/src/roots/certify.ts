@@ -234,7 +234,7 @@ function certDerivSign(x: number): number {
  * Refine an approximate critical point x of P inside (lo, hi) to where the exact P' changes sign.
  * Writes the two adjacent doubles around the sign change (equal when P' is exactly 0 there) into
  * out[0], out[1] and returns true; returns false (out = x, x) when P' has no sign change within
- * 64 ulps of x (then x is not a confirmed critical point).
+ * 2^48 ulps of x inside (lo, hi) (then x is not a confirmed critical point).
  */
 export function criticalPoint(x: number, lo: number, hi: number, out: Float64Array): boolean {
   out[0] = x;
@@ -243,30 +243,35 @@ export function criticalPoint(x: number, lo: number, hi: number, out: Float64Arr
   loadDerivative();
   const s0 = certDerivSign(x);
   if (s0 === 0) return true;
-  // Search both directions, with steps of 1, 2, 4, … 64 ulps, for the nearest sign change of P'.
-  let up = x;
-  let down = x;
-  for (let w = 1; w <= 64; w *= 2) {
-    const prevUp = up;
-    const prevDown = down;
-    for (let k = 0; k < w; k++) {
-      up = nextUp(up);
-      down = nextDown(down);
-    }
-    if (up < hi) {
+  // Search both directions at 1, 2, 4, … 2^48 ulps for the nearest sign change of P' (the structural
+  // critical point may be off by many ulps next to a multiple root), then bisect it.
+  const ax = x < 0 ? -x : x;
+  const ulp = x === 0 ? Number.MIN_VALUE : nextUp(ax) - ax;
+  let prevUp = x;
+  let prevDown = x;
+  let off = ulp;
+  for (let k = 0; k <= 48; k++, off *= 2) {
+    const up = x + off;
+    const down = x - off;
+    const upIn = up < hi && up > prevUp;
+    const downIn = down > lo && down < prevDown;
+    if (upIn) {
       const s = certDerivSign(up);
       if (s !== s0) {
         bisectDerivative(prevUp, up, s0, s, out);
         return true;
       }
+      prevUp = up;
     }
-    if (down > lo) {
+    if (downIn) {
       const s = certDerivSign(down);
       if (s !== s0) {
         bisectDerivative(down, prevDown, s, s0, out);
         return true;
       }
+      prevDown = down;
     }
+    if (!upIn && !downIn && !(up < hi) && !(down > lo)) break;
   }
   return false;
 }

@@ -7,7 +7,7 @@ import { isGrazingRoot, verifyRoots } from "./verifyRoots.js";
 // One seed per run, printed so that any failure can be replayed: FC_SEED=<seed> npx vitest run …
 const seed = Number(process.env.FC_SEED ?? Math.floor(Math.random() * 2 ** 31));
 console.log(`realRoots.prop.test seed: ${seed} (replay with FC_SEED=${seed})`);
-const params = { seed, numRuns: 300, verbose: true } as const;
+const params = { seed, numRuns: Number(process.env.FC_RUNS ?? 300), verbose: true } as const;
 
 const num = (min: number, max: number) => fc.double({ min, max, noNaN: true, noDefaultInfinity: true });
 

@@ -224,6 +224,14 @@ describe("realRoots: regressions found by fast-check (shrunk)", () => {
   });
 });
 
+describe("realRoots: more regressions (fast-check, seed 824665292)", () => {
+  it("t(t − 3.53125)(t − 4.5)²(t + 1.0625): the exact double root 4.5 although the structural critical point is ~160 ulps off", () => {
+    const c = fromRoots([0, 3.53125, 4.5, 4.5, -1.0625]);
+    expect(exactPolySign(c, 4.5)).toBe(0);
+    expect(realRoots(c, 0, 5)).toEqual([0, 3.53125, 4.5]);
+  });
+});
+
 describe("realRoots: input validation", () => {
   it("refuses non-finite coefficients, naming the field", () => {
     expect(() => realRoots([1, Number.NaN, 2], 0, 1)).toThrow(/coeffs\[1\] must be a finite number/);
