@@ -253,6 +253,8 @@ export class Simulator {
       positionAt(ts, b.y0[s] as number, b.vy0[s] as number, ays, tb);
     const ux = velocityAt(to, b.vx0[o] as number, axo, tb) - velocityAt(ts, b.vx0[s] as number, axs, tb);
     const uy = velocityAt(to, b.vy0[o] as number, ayo, tb) - velocityAt(ts, b.vy0[s] as number, ays, tb);
+    // Cheap rejection before any solve: with no relative acceleration a receding pair never meets.
+    if (axo === axs && ayo === ays && dx * ux + dy * uy >= 0 && this.opt.quadraticFastPath) return INF;
     const R = (b.r[s] as number) + (b.r[o] as number);
     const tau = discDiscTime(
       dx,
