@@ -1,0 +1,29 @@
+// The README's usage example is real: extract it, run it with plain Node against the built
+// engine (npm test builds first), and check what it says it prints.
+import { execFileSync } from "node:child_process";
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { join } from "node:path";
+import { expect, it } from "vitest";
+
+const root = join(import.meta.dirname, "..", "..");
+
+it("the README usage example runs and prints the digits of pi it promises", () => {
+  const readme = readFileSync(join(root, "README.md"), "utf8");
+  const code = /```js\n([\s\S]*?)```/.exec(readme)?.[1];
+  expect(code, "README has a ```js example").toBeDefined();
+  // Inside the repository so that "@chapgame/engine" resolves through the workspace link.
+  const dir = mkdtempSync(join(root, "tests", "readme", ".tmp-"));
+  try {
+    const file = join(dir, "example.mjs");
+    writeFileSync(file, code as string);
+    const out = execFileSync(process.execPath, [file], { encoding: "utf8" });
+    const lines = out.split("\n");
+    expect(lines[0]).toBe("3141");
+    expect(out).toContain("time: 3,");
+    expect(out).toContain("kind: 'bodyBody'");
+    expect(out).toContain("px: 6,");
+    expect(out).toContain("id: 'big'");
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
