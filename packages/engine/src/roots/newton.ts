@@ -4,7 +4,7 @@
  *
  * - `newtonPlain(c, off, n, a, b, fa, fb, critical)`: a root of the degree-n polynomial
  *   c[off..off+n] in (a, b), given plain values fa, fb of opposite signs (`critical` marks ends
- *   that are critical points, for a better start). Halley steps (Newton with the second
+ *   that are critical points, for a better start; `guess`, when inside, is the start). Halley steps (Newton with the second
  *   derivative: cubic convergence, so fewer evaluations) are accepted only inside the current
  *   bracket and while they at least halve the step before last; otherwise the bracket is
  *   split (splitPoint); after NEWTON_STEPS steps only splitting. Stops when a Halley step follows a Newton step below 2^-17 relative (the error
@@ -46,9 +46,10 @@ export function newtonPlain(
   fa: number,
   fb: number,
   critical = 0,
+  guess = Number.NaN,
 ): number {
   const aNeg = fa < 0;
-  let x = start(c, off, n, a, b, fa, fb, critical);
+  let x = guess > a && guess < b ? guess : start(c, off, n, a, b, fa, fb, critical);
   if (!(x > a && x < b)) x = splitPoint(a, b);
   let dxOld = Number.POSITIVE_INFINITY;
   let dx = Number.POSITIVE_INFINITY;

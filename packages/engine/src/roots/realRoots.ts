@@ -4,7 +4,8 @@
  *
  * Method (see README.md): trim zero leading coefficients, scale by a power of two (exact), clamp
  * infinite or huge ends to Cauchy's root bound, drop leading terms negligible over the interval
- * (ROOTS_DEGREE_DROP, relative), reject quickly when p's Bernstein coefficients on [lo, hi] show it keeps its sign.
+ * (ROOTS_DEGREE_DROP, relative), reject quickly when p's Bernstein coefficients on [lo, hi] show it keeps its sign, and take a
+ * fast path when they show exactly one simple root between ends of opposite signs.
  * Otherwise the roots of p' split [lo, hi] into monotone pieces (found the same way, recursively,
  * down to a quadratic solved in closed form without cancellation). The exact sign of p is decided at
  * every piece end (certify.ts: plain → compensated → BigInt); each piece whose ends have opposite
@@ -85,11 +86,14 @@ function ensure(n: number): void {
 }
 
 /**
- * Quick rejection: true when p provably keeps one nonzero sign on [lo, hi]. The Bernstein
- * coefficients of p on [lo, lo + h] (h ≥ hi − lo) bound p there (convex hull property); when all
- * exceed the rounding margin with one sign, p has no root. About 3n²/2 flops.
+ * Quick sign checks with the Bernstein coefficients of p on [lo, lo + h] (h ≥ hi − lo, from a
+ * Taylor shift): they bound p there (convex hull property), and their number of sign changes V
+ * bounds the number of roots, with the same parity (Descartes' rule for the Bernstein basis).
+ * Returns 0 when every coefficient has one sign beyond its rounding margin (no root), 1 when all
+ * signs are certain and V = 1 (exactly one simple root; `bernsteinGuess` is where the control
+ * polygon crosses zero), −1 otherwise. About 3n²/2 flops.
  */
-function keepsSign(n: number, lo: number, hi: number): boolean {
+function bernstein(n: number, lo: number, hi: number): number {
   const T = bufA; // Taylor coefficients at lo, then scaled by h^k, then Bernstein coefficients
   const A = bufB; // the same for |p| at |lo| (the scale of the rounding errors)
   const p = P;
@@ -120,18 +124,22 @@ function keepsSign(n: number, lo: number, hi: number): boolean {
     for (let j = n; j >= r; j--) T[j] = (T[j] as number) + (T[j - 1] as number);
   }
   const margin = 4 * (n + 2) * UNIT_ROUNDOFF * scale;
-  if (!(margin < Number.POSITIVE_INFINITY)) return false;
-  const t0 = T[0] as number;
-  if (t0 > margin) {
-    for (let j = 1; j <= n; j++) if (!((T[j] as number) > margin)) return false;
-    return true;
+  if (!(margin < Number.POSITIVE_INFINITY)) return -1;
+  let prev = T[0] as number;
+  if (!(prev > margin || prev < -margin)) return -1;
+  let changes = 0;
+  for (let j = 1; j <= n; j++) {
+    const t = T[j] as number;
+    if (!(t > margin || t < -margin)) return -1;
+    if (t < 0 !== prev < 0) {
+      if (++changes > 1) return -1;
+      bernsteinGuess = lo + (h * (j - 1 + prev / (prev - t))) / n;
+    }
+    prev = t;
   }
-  if (t0 < -margin) {
-    for (let j = 1; j <= n; j++) if (!((T[j] as number) < -margin)) return false;
-    return true;
-  }
-  return false;
+  return changes;
 }
+let bernsteinGuess = 0;
 
 /** Interior roots of the derivative of P[0..m] (m ≥ 2) in (lo, hi), sorted, into bufA; count. */
 function criticalPoints(m: number, lo: number, hi: number): number {
@@ -260,7 +268,21 @@ function solveScaled(n: number, lo: number, hi: number, out: number[]): void {
     m--;
   }
   if (m === 0) return; // every other term is below u·|c0|: p keeps the sign of c0
-  if (keepsSign(n, lo, hi)) return;
+  const v = bernstein(n, lo, hi);
+  if (v === 0) return;
+  if (v === 1) {
+    // Exactly one simple root in (lo, lo + h): when p(lo) and p(hi) have opposite exact signs it is
+    // inside (lo, hi) and no structure is needed (fast path); otherwise the full method decides.
+    const sa = certSign(lo);
+    const absLo = lastAbsValue();
+    const sb = certSign(hi);
+    if (sa !== 0 && sb === -sa) {
+      const absHi = lastAbsValue();
+      const x0 = newtonPlain(P, 0, n, lo, hi, sa * absLo, sb * absHi, 0, bernsteinGuess);
+      push(out, refineRoot(lo, hi, sa, absLo, absHi, x0));
+      return;
+    }
+  }
   const ns = m >= 2 ? criticalPoints(m, lo, hi) : 0;
   solveLevel0(n, m, lo, hi, ns, out);
 }
