@@ -47,13 +47,14 @@ export function newtonPlain(
   fb: number,
   critical = 0,
   guess = Number.NaN,
+  maxIterations = ROOTS_MAX_ITERATIONS,
 ): number {
   const aNeg = fa < 0;
   let x = guess > a && guess < b ? guess : start(c, off, n, a, b, fa, fb, critical);
   if (!(x > a && x < b)) x = splitPoint(a, b);
   let dxOld = Number.POSITIVE_INFINITY;
   let dx = Number.POSITIVE_INFINITY;
-  for (let it = 0; it < ROOTS_MAX_ITERATIONS; it++) {
+  for (let it = 0; it < maxIterations; it++) {
     // p, p' and p''/2 at x in one Horner pass.
     let f = c[off + n] as number;
     let d1 = 0;
@@ -85,7 +86,7 @@ export function newtonPlain(
     dx = xn - x;
     x = xn;
   }
-  throw new RootSolverError(`newton: no convergence in ${ROOTS_MAX_ITERATIONS} iterations on [${a}, ${b}]`);
+  throw new RootSolverError(`newton: no convergence in ${maxIterations} iterations on [${a}, ${b}]`);
 }
 
 /**
