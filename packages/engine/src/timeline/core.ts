@@ -265,7 +265,7 @@ export class TimelineCore {
       if (events >= budget) return { events, reason: null };
       let untilTime = INF;
       let maxEvents = budget - events;
-      for (const g of focus ? [focus, ...this.goals] : this.goals) {
+      for (const g of focus && reason === null ? [focus, ...this.goals] : this.goals) {
         if (g.tLimit < untilTime) untilTime = g.tLimit;
         if (g.eLimit - this.eventTotal < maxEvents) maxEvents = g.eLimit - this.eventTotal;
       }
