@@ -131,7 +131,7 @@ export class IndexedHeap {
       let c = first;
       let cs = slots[first] as number;
       let ck = keys[first] as number;
-      const last = first + 4 < n ? first + 4 : n;
+      const last = Math.min(first + 4, n);
       for (let j = first + 1; j < last; j++) {
         const js = slots[j] as number;
         const jk = keys[j] as number;

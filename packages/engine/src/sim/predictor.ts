@@ -1,0 +1,329 @@
+/**
+ * Prediction: what each body runs into next. Each body holds its earliest predicted interaction
+ * (collision or stop) and its next cell crossing; the heap key is the earlier of the two. Every pair
+ * prediction is a pure function of the two motions (solved from the later of their start times),
+ * so it gives the same bits whenever and from whichever side it is computed.
+ */
+import { positionAt, velocityAt } from "../physics/motion.js";
+import { discDiscTime, discLineCrossings, firstDownCrossingQuadratic } from "../physics/timeOfImpact.js";
+import { EV_BODY, EV_LINE, EV_NONE, EV_POINT, EV_STOP } from "./bodyStore.js";
+import { type Line, lineParameter, type Point, parameterOnLine } from "./obstacles.js";
+import { SimState } from "./state.js";
+
+const INF = Number.POSITIVE_INFINITY;
+const sides = new Float64Array(2);
+
+function idLess(a: string, b: string): boolean {
+  return a < b;
+}
+export class Predictor extends SimState {
+  /** Recompute every body's predictions (after a rebuild or a change of obstacles or globals). */
+  protected predictAll(): void {
+    const b = this.store;
+    for (let s = 0; s < b.slotCount; s++) if (b.ids[s] !== undefined) this.predict(s);
+    this.dirty = false;
+  }
+
+  // ---- prediction ---------------------------------------------------------------------------
+
+  /** Earliest contact time of bodies s and o, or +Infinity. */
+  protected pairTime(s: number, o: number): number {
+    const b = this.store;
+    if (this.opt.pathBounds) {
+      if (
+        (b.boxMinX[s] as number) > (b.boxMaxX[o] as number) ||
+        (b.boxMinX[o] as number) > (b.boxMaxX[s] as number) ||
+        (b.boxMinY[s] as number) > (b.boxMaxY[o] as number) ||
+        (b.boxMinY[o] as number) > (b.boxMaxY[s] as number)
+      )
+        return INF;
+    }
+    const ts = b.t0[s] as number;
+    const to = b.t0[o] as number;
+    const tb = Math.max(ts, to);
+    const hi = Math.min(b.tEnd[s] as number, b.tEnd[o] as number) - tb;
+    const axs = b.ax[s] as number;
+    const ays = b.ay[s] as number;
+    const axo = b.ax[o] as number;
+    const ayo = b.ay[o] as number;
+    const dx =
+      positionAt(to, b.x0[o] as number, b.vx0[o] as number, axo, tb) -
+      positionAt(ts, b.x0[s] as number, b.vx0[s] as number, axs, tb);
+    const dy =
+      positionAt(to, b.y0[o] as number, b.vy0[o] as number, ayo, tb) -
+      positionAt(ts, b.y0[s] as number, b.vy0[s] as number, ays, tb);
+    const ux = velocityAt(to, b.vx0[o] as number, axo, tb) - velocityAt(ts, b.vx0[s] as number, axs, tb);
+    const uy = velocityAt(to, b.vy0[o] as number, ayo, tb) - velocityAt(ts, b.vy0[s] as number, ays, tb);
+    // Cheap rejection before any solve: with no relative acceleration a receding pair never meets.
+    if (axo === axs && ayo === ays && dx * ux + dy * uy >= 0 && this.opt.quadraticFastPath) return INF;
+    const R = (b.r[s] as number) + (b.r[o] as number);
+    const tau = discDiscTime(
+      dx,
+      dy,
+      ux,
+      uy,
+      axo - axs,
+      ayo - ays,
+      R,
+      this.time - tb,
+      hi,
+      this.opt.quadraticFastPath,
+    );
+    if (tau === INF) return INF;
+    const t = tb + tau;
+    return Math.max(t, this.time);
+  }
+
+  /** Earliest contact of body s with a point at (px, py), or +Infinity. */
+  protected pointTime(s: number, px: number, py: number): number {
+    const b = this.store;
+    const t0 = b.t0[s] as number;
+    const tau = discDiscTime(
+      (b.x0[s] as number) - px,
+      (b.y0[s] as number) - py,
+      b.vx0[s] as number,
+      b.vy0[s] as number,
+      b.ax[s] as number,
+      b.ay[s] as number,
+      b.r[s] as number,
+      this.time - t0,
+      (b.tEnd[s] as number) - t0,
+      this.opt.quadraticFastPath,
+    );
+    if (tau === INF) return INF;
+    const t = t0 + tau;
+    return Math.max(t, this.time);
+  }
+
+  /**
+   * Earliest contact of body s with the line (its interior for rays and segments; their end points
+   * are tested as points). Returns the time, or +Infinity.
+   */
+  protected lineTime(s: number, line: Line): number {
+    const b = this.store;
+    const t0 = b.t0[s] as number;
+    const lo = this.time - t0;
+    const hi = (b.tEnd[s] as number) - t0;
+    const x0 = b.x0[s] as number;
+    const y0 = b.y0[s] as number;
+    const vx = b.vx0[s] as number;
+    const vy = b.vy0[s] as number;
+    const ax = b.ax[s] as number;
+    const ay = b.ay[s] as number;
+    discLineCrossings(
+      x0,
+      y0,
+      vx,
+      vy,
+      ax,
+      ay,
+      line.x1,
+      line.y1,
+      line.nx,
+      line.ny,
+      b.r[s] as number,
+      lo,
+      hi,
+      sides,
+    );
+    let best = INF;
+    for (let k = 0; k < 2; k++) {
+      const tau = sides[k] as number;
+      if (tau >= best) continue;
+      if (line.kind !== "line") {
+        const lambda = lineParameter(
+          line,
+          x0 + tau * (vx + 0.5 * ax * tau),
+          y0 + tau * (vy + 0.5 * ay * tau),
+        );
+        if (!parameterOnLine(line.kind, lambda)) continue;
+      }
+      best = tau;
+    }
+    if (best === INF) return INF;
+    const t = t0 + best;
+    return Math.max(t, this.time);
+  }
+
+  /** Whether candidate (kind k1, other o1) comes before (k2, o2) for body s at the same time. */
+  protected candidateLess(k1: number, o1: number, a1: number, k2: number, o2: number, a2: number): boolean {
+    if (k1 !== k2) return k1 < k2;
+    if (k1 === EV_BODY) return idLess(this.store.ids[o1] as string, this.store.ids[o2] as string);
+    if (k1 === EV_LINE) {
+      const i1 = (this.lineList[o1] as Line).id;
+      const i2 = (this.lineList[o2] as Line).id;
+      return i1 !== i2 ? idLess(i1, i2) : a1 < a2;
+    }
+    if (k1 === EV_POINT) return idLess((this.pointList[o1] as Point).id, (this.pointList[o2] as Point).id);
+    return false;
+  }
+
+  /** Offer a candidate event to body s; it is kept if earlier (or canonically first at the same time). */
+  protected offer(s: number, t: number, kind: number, other: number, aux: number): void {
+    const b = this.store;
+    const cur = b.evTime[s] as number;
+    if (t > cur) return;
+    if (
+      t === cur &&
+      !this.candidateLess(
+        kind,
+        other,
+        aux,
+        b.evKind[s] as number,
+        b.evOther[s] as number,
+        b.evAux[s] as number,
+      )
+    )
+      return;
+    b.evTime[s] = t;
+    b.evKind[s] = kind;
+    b.evOther[s] = other;
+    b.evAux[s] = aux;
+    b.evOtherVersion[s] = kind === EV_BODY ? (b.version[other] as number) : 0;
+  }
+
+  /** Test body s against the bodies in one grid cell. */
+  protected scanCell(s: number, cell: number, moving: boolean): void {
+    const grid = this.grid;
+    for (let o = grid.head[cell] as number; o >= 0; o = grid.next[o] as number) {
+      if (o === s) continue;
+      if (!moving && this.opt.restingSkip && !this.isMoving(o)) continue;
+      const t = this.pairTime(s, o);
+      if (t !== INF) this.offer(s, t, EV_BODY, o, 0);
+    }
+  }
+
+  /** Recompute everything body s can run into next, and its next cell crossing. */
+  protected predict(s: number): void {
+    const b = this.store;
+    const moving = this.isMoving(s);
+    b.evTime[s] = INF;
+    b.evKind[s] = EV_NONE;
+    const tEnd = b.tEnd[s] as number;
+    if (tEnd < INF) this.offer(s, Math.max(tEnd, this.time), EV_STOP, -1, 0);
+    const grid = this.grid;
+    const cell = grid.cellOf[s] as number;
+    const cx = cell % grid.nx;
+    const cy = (cell - cx) / grid.nx;
+    this.stamp++;
+    for (let y = cy - 1; y <= cy + 1; y++) {
+      if (y < 0 || y >= grid.ny) continue;
+      for (let x = cx - 1; x <= cx + 1; x++) {
+        if (x < 0 || x >= grid.nx) continue;
+        this.scanCell(s, y * grid.nx + x, moving);
+        if (moving) this.scanCellObstacles(s, y * grid.nx + x);
+      }
+    }
+    if (moving) for (const i of this.globalLines) this.testLine(s, i);
+    b.crossTime[s] = moving ? this.crossing(s, cx, cy) : INF;
+    const key = Math.min(b.evTime[s] as number, b.crossTime[s] as number);
+    this.heap.set(s, key);
+  }
+
+  /** Test body s against line i: its interior, and the end points of rays and segments. */
+  protected testLine(s: number, i: number): void {
+    const line = this.lineList[i] as Line;
+    const t = this.lineTime(s, line);
+    if (t !== INF) this.offer(s, t, EV_LINE, i, 0);
+    if (line.kind !== "line") {
+      const t1 = this.pointTime(s, line.x1, line.y1);
+      if (t1 !== INF) this.offer(s, t1, EV_LINE, i, 1);
+      if (line.kind === "segment") {
+        const t2 = this.pointTime(s, line.x2, line.y2);
+        if (t2 !== INF) this.offer(s, t2, EV_LINE, i, 2);
+      }
+    }
+  }
+
+  /** Test body s against the segments and points registered in one cell (each once per stamp). */
+  protected scanCellObstacles(s: number, cell: number): void {
+    const grid = this.grid;
+    const end = grid.obstStart[cell + 1] as number;
+    for (let k = grid.obstStart[cell] as number; k < end; k++) {
+      const code = grid.obstList[k] as number;
+      const key = code >= 0 ? code : this.lineList.length - code - 1;
+      if (this.obstStamp[key] === this.stamp) continue;
+      this.obstStamp[key] = this.stamp;
+      if (code >= 0) this.testLine(s, code);
+      else {
+        const p = this.pointList[-code - 1] as Point;
+        const t = this.pointTime(s, p.x, p.y);
+        if (t !== INF) this.offer(s, t, EV_POINT, -code - 1, 0);
+      }
+    }
+  }
+
+  /** Time at which body s (in cell cx, cy) next leaves its cell; direction stored in crossDir. */
+  protected crossing(s: number, cx: number, cy: number): number {
+    const b = this.store;
+    const grid = this.grid;
+    const t0 = b.t0[s] as number;
+    const lo = this.time - t0;
+    const hi = (b.tEnd[s] as number) - t0;
+    const x0 = b.x0[s] as number;
+    const y0 = b.y0[s] as number;
+    const vx = b.vx0[s] as number;
+    const vy = b.vy0[s] as number;
+    const hax = 0.5 * (b.ax[s] as number);
+    const hay = 0.5 * (b.ay[s] as number);
+    let best = INF;
+    let dir = -1;
+    if (hax === 0 && hay === 0) {
+      // Uniform motion (the common case): only the boundaries ahead can be crossed.
+      if (vx > 0 && cx < grid.nx - 1) {
+        best = Math.max(lo, (grid.boundaryX(cx + 1) - x0) / vx);
+        dir = 1;
+      } else if (vx < 0 && cx > 0) {
+        best = Math.max(lo, (grid.boundaryX(cx) - x0) / vx);
+        dir = 0;
+      }
+      if (vy > 0 && cy < grid.ny - 1) {
+        const t = Math.max(lo, (grid.boundaryY(cy + 1) - y0) / vy);
+        if (t < best) {
+          best = t;
+          dir = 3;
+        }
+      } else if (vy < 0 && cy > 0) {
+        const t = Math.max(lo, (grid.boundaryY(cy) - y0) / vy);
+        if (t < best) {
+          best = t;
+          dir = 2;
+        }
+      }
+      b.crossDir[s] = dir;
+      return best === INF ? INF : Math.max(this.time, t0 + best);
+    }
+    if (cx > 0) {
+      const t = firstDownCrossingQuadratic(x0 - grid.boundaryX(cx), vx, hax, lo, hi);
+      if (t < best) {
+        best = t;
+        dir = 0;
+      }
+    }
+    if (cx < grid.nx - 1) {
+      const t = firstDownCrossingQuadratic(grid.boundaryX(cx + 1) - x0, -vx, -hax, lo, hi);
+      if (t < best) {
+        best = t;
+        dir = 1;
+      }
+    }
+    if (cy > 0) {
+      const t = firstDownCrossingQuadratic(y0 - grid.boundaryY(cy), vy, hay, lo, hi);
+      if (t < best) {
+        best = t;
+        dir = 2;
+      }
+    }
+    if (cy < grid.ny - 1) {
+      const t = firstDownCrossingQuadratic(grid.boundaryY(cy + 1) - y0, -vy, -hay, lo, hi);
+      if (t < best) {
+        best = t;
+        dir = 3;
+      }
+    }
+    b.crossDir[s] = dir;
+    if (best === INF) return INF;
+    const t = t0 + best;
+    return Math.max(t, this.time);
+  }
+}

@@ -1,0 +1,245 @@
+/**
+ * The state of the event-driven simulation: bodies (their current motions), obstacles, the grid,
+ * the event heap, globals and counters; the motion and broad-phase helpers; and the canonical order
+ * of simultaneous events. Prediction (predictor.ts) and processing (simulator.ts) build on it.
+ *
+ * Cell crossings never change a motion: the grid only decides which pairs are tested.
+ */
+import { type MotionLaw, motionLaw, positionAt } from "../physics/motion.js";
+import { GRID_CELL_MARGIN, GRID_CELLS_PER_BODY, GRID_MIN_BODIES } from "../tolerances.js";
+import { BodyStore, EV_BODY, EV_CROSS, EV_LINE, EV_POINT } from "./bodyStore.js";
+import { IndexedHeap } from "./eventQueue.js";
+import { Grid } from "./grid.js";
+import type { Line, Point } from "./obstacles.js";
+import { rasterizeSegment } from "./rasterize.js";
+import type { EventCounts, Optimizations, WorldEvent } from "./types.js";
+
+const INF = Number.POSITIVE_INFINITY;
+const law: MotionLaw = { ax: 0, ay: 0, tEnd: INF };
+
+export class SimState {
+  time: number;
+  g: number;
+  gx: number;
+  gy: number;
+  readonly opt: Required<Optimizations>;
+  protected store: BodyStore;
+  protected grid: Grid;
+  protected heap: IndexedHeap;
+  protected lineList: Line[] = [];
+  protected pointList: Point[] = [];
+  /** Indices of infinite lines and rays (tested against every moving body). */
+  protected globalLines: number[] = [];
+  /** Per obstacle: the prediction stamp that last tested it (avoids testing it twice per prediction). */
+  protected obstStamp = new Int32Array(0);
+  protected stamp = 0;
+  /** Largest radius the grid was built for; a larger body forces a rebuild. */
+  protected gridMaxR = 0;
+  /** Predictions of all bodies must be recomputed before the next event (grid rebuilt, obstacles or globals changed). */
+  protected dirty = true;
+  readonly counts: EventCounts = { bodyBody: 0, bodyLine: 0, bodyPoint: 0, stop: 0 };
+  protected sameTime = -INF;
+  protected sameTimeCount = 0;
+  protected readonly ev: WorldEvent = {
+    time: 0,
+    kind: "stop",
+    a: "",
+    b: null,
+    px: 0,
+    py: 0,
+    nx: 0,
+    ny: 0,
+    impulse: 0,
+  };
+
+  constructor(time: number, g: number, gx: number, gy: number, opt: Optimizations) {
+    this.time = time;
+    this.g = g;
+    this.gx = gx;
+    this.gy = gy;
+    this.opt = {
+      broadPhase: opt.broadPhase ?? true,
+      pathBounds: opt.pathBounds ?? true,
+      quadraticFastPath: opt.quadraticFastPath ?? true,
+      restingSkip: opt.restingSkip ?? true,
+    };
+    this.store = new BodyStore();
+    this.grid = new Grid(this.store.capacity);
+    this.heap = new IndexedHeap(this.store.capacity, (a, b) => this.tieLess(a, b));
+  }
+
+  /** Copy all state into `target` (a fresh Simulator of the same class). */
+  protected copyInto(target: SimState): void {
+    target.time = this.time;
+    target.g = this.g;
+    target.gx = this.gx;
+    target.gy = this.gy;
+    target.store = this.store.clone();
+    target.grid = this.grid.clone();
+    target.heap = this.heap.cloneWith((a, b) => target.tieLess(a, b));
+    target.lineList = this.lineList.slice();
+    target.pointList = this.pointList.slice();
+    target.gridMaxR = this.gridMaxR;
+    target.globalLines = this.globalLines;
+    target.obstStamp = new Int32Array(this.obstStamp.length);
+    target.dirty = this.dirty;
+    Object.assign(target.counts, this.counts);
+    target.sameTime = this.sameTime;
+    target.sameTimeCount = this.sameTimeCount;
+  }
+
+  // ---- motion -------------------------------------------------------------------------------
+
+  /** Start a new motion of body s at time t from (x, y) with velocity (vx, vy). */
+  protected setMotion(s: number, t: number, x: number, y: number, vx: number, vy: number): void {
+    const b = this.store;
+    motionLaw(t, vx, vy, b.mu[s] as number, this.g, this.gx, this.gy, law);
+    b.t0[s] = t;
+    b.x0[s] = x;
+    b.y0[s] = y;
+    b.vx0[s] = vx;
+    b.vy0[s] = vy;
+    b.ax[s] = law.ax;
+    b.ay[s] = law.ay;
+    b.tEnd[s] = law.tEnd;
+    b.version[s] = (b.version[s] as number) + 1;
+    const r = b.r[s] as number;
+    const still = vx === 0 && vy === 0 && law.ax === 0 && law.ay === 0;
+    if (still || law.tEnd < INF) {
+      const xe = still ? x : positionAt(t, x, vx, law.ax, law.tEnd);
+      const ye = still ? y : positionAt(t, y, vy, law.ay, law.tEnd);
+      b.boxMinX[s] = Math.min(x, xe) - r;
+      b.boxMaxX[s] = Math.max(x, xe) + r;
+      b.boxMinY[s] = Math.min(y, ye) - r;
+      b.boxMaxY[s] = Math.max(y, ye) + r;
+    } else {
+      b.boxMinX[s] = -INF;
+      b.boxMinY[s] = -INF;
+      b.boxMaxX[s] = INF;
+      b.boxMaxY[s] = INF;
+    }
+  }
+
+  /** Position of body s at time t (t within its current motion). */
+  protected xAt(s: number, t: number): number {
+    const b = this.store;
+    return positionAt(b.t0[s] as number, b.x0[s] as number, b.vx0[s] as number, b.ax[s] as number, t);
+  }
+
+  protected yAt(s: number, t: number): number {
+    const b = this.store;
+    return positionAt(b.t0[s] as number, b.y0[s] as number, b.vy0[s] as number, b.ay[s] as number, t);
+  }
+
+  protected isMoving(s: number): boolean {
+    const b = this.store;
+    return b.vx0[s] !== 0 || b.vy0[s] !== 0 || b.ax[s] !== 0 || b.ay[s] !== 0;
+  }
+
+  // ---- broad phase --------------------------------------------------------------------------
+
+  /**
+   * Rebuild the grid around the current positions (never changes a motion). A disc (ex, ey, er)
+   * about to be added is included; while editing (`slack` > 1) the grid is made roomier so that
+   * a stream of additions rebuilds it only O(log n) times; `advance` rebuilds it tight.
+   */
+  protected rebuildGrid(ex = Number.NaN, ey = Number.NaN, er = 0, slack = 1): void {
+    const b = this.store;
+    const extra = !Number.isNaN(ex);
+    let maxR = er * slack;
+    let minX = extra ? ex : INF;
+    let minY = extra ? ey : INF;
+    let maxX = extra ? ex : -INF;
+    let maxY = extra ? ey : -INF;
+    let n = extra ? 1 : 0;
+    for (let s = 0; s < b.slotCount; s++) {
+      if (b.ids[s] === undefined) continue;
+      n++;
+      const x = this.xAt(s, this.time);
+      const y = this.yAt(s, this.time);
+      maxR = Math.max(maxR, (b.r[s] as number) * slack);
+      minX = Math.min(minX, x);
+      maxX = Math.max(maxX, x);
+      minY = Math.min(minY, y);
+      maxY = Math.max(maxY, y);
+    }
+    this.grid.reserve(b.capacity);
+    this.heap.reserve(b.capacity);
+    if (n < GRID_MIN_BODIES || !this.opt.broadPhase) {
+      this.grid.reset(0, 0, 1, 1, 1);
+      this.gridMaxR = INF;
+    } else {
+      let w = 2 * maxR * GRID_CELL_MARGIN;
+      // Leave room around the bodies so that edits nearby do not force a rebuild.
+      const padX = slack > 1 ? Math.max(0.5 * slack * (maxX - minX), 2 * w) : 2 * w;
+      const padY = slack > 1 ? Math.max(0.5 * slack * (maxY - minY), 2 * w) : 2 * w;
+      const width = maxX - minX + 2 * padX;
+      const height = maxY - minY + 2 * padY;
+      const maxCells = Math.max(16, GRID_CELLS_PER_BODY * n);
+      if ((width / w) * (height / w) > maxCells) w = Math.sqrt((width * height) / maxCells);
+      const nx = Math.max(1, Math.min(maxCells, Math.ceil(width / w)));
+      const ny = Math.max(1, Math.min(maxCells, Math.ceil(height / w)));
+      this.grid.reset(minX - padX, minY - padY, w, nx, ny);
+      this.gridMaxR = w / (2 * GRID_CELL_MARGIN);
+    }
+    for (let s = 0; s < b.slotCount; s++) {
+      if (b.ids[s] === undefined) continue;
+      this.grid.insert(s, this.cellAt(this.xAt(s, this.time), this.yAt(s, this.time)));
+    }
+    this.rasterizeObstacles();
+    this.dirty = true;
+  }
+
+  protected cellAt(x: number, y: number): number {
+    return this.grid.row(y) * this.grid.nx + this.grid.column(x);
+  }
+
+  /** Register segments and points in the grid cells they pass through; lines and rays stay global. */
+  protected rasterizeObstacles(): void {
+    const pairs: number[] = [];
+    const global: number[] = [];
+    this.lineList.forEach((line, i) => {
+      if (line.kind === "segment") rasterizeSegment(this.grid, line.x1, line.y1, line.x2, line.y2, i, pairs);
+      else global.push(i);
+    });
+    this.pointList.forEach((p, i) => {
+      rasterizeSegment(this.grid, p.x, p.y, p.x, p.y, -(i + 1), pairs);
+    });
+    this.grid.setObstacles(pairs);
+    this.globalLines = global;
+    this.obstStamp = new Int32Array(this.lineList.length + this.pointList.length);
+    this.stamp = 0;
+  }
+
+  // ---- canonical order of simultaneous events -----------------------------------------------
+
+  protected rankOf(s: number): number {
+    const b = this.store;
+    return (b.crossTime[s] as number) <= (b.evTime[s] as number) ? EV_CROSS : (b.evKind[s] as number);
+  }
+
+  /** The two ids that name slot s's next event canonically: [first, second]. */
+  protected eventIds(s: number, rank: number): [string, string] {
+    const b = this.store;
+    const id = b.ids[s] as string;
+    if (rank === EV_BODY) {
+      const other = b.ids[b.evOther[s] as number] as string;
+      return id < other ? [id, other] : [other, id];
+    }
+    if (rank === EV_LINE) return [id, (this.lineList[b.evOther[s] as number] as Line).id];
+    if (rank === EV_POINT) return [id, (this.pointList[b.evOther[s] as number] as Point).id];
+    return [id, ""];
+  }
+
+  /** Heap tie-break for two slots whose next events are at exactly the same time. */
+  protected tieLess(a: number, c: number): boolean {
+    const ra = this.rankOf(a);
+    const rc = this.rankOf(c);
+    if (ra !== rc) return ra < rc;
+    const [a1, a2] = this.eventIds(a, ra);
+    const [c1, c2] = this.eventIds(c, rc);
+    if (a1 !== c1) return a1 < c1;
+    if (a2 !== c2) return a2 < c2;
+    return (this.store.evAux[a] as number) < (this.store.evAux[c] as number);
+  }
+}
