@@ -13,13 +13,15 @@
  *   callers that need certainty refine it (see certify.ts).
  * - `quadRootsPlain(c0, c1, c2, lo, hi, out, k)`: roots of c2 t² + c1 t + c0 strictly inside (lo, hi)
  *   with q = −(c1 + sign(c1)√disc)/2, roots q/c2 and c0/q (no cancellation), appended to out[k…];
- *   returns the new count.
+ *   returns the new count. A discriminant within its rounding error of 0 gives the vertex (a
+ *   possible double root): these roots are split points, where an extra one is harmless.
  * - `pieceRoots(c, off, n, lo, hi, splits, ns, out)`: the roots strictly inside (lo, hi) of a
  *   polynomial monotone between consecutive splits (its critical points), sorted, into out; returns
- *   the count.
+ *   the count. Critical points where the value is at rounding-noise level without a sign change are
+ *   included (possible double roots).
  */
 
-import { ROOTS_MAX_ITERATIONS } from "../tolerances.js";
+import { PLAIN_HORNER_BOUND_FACTOR, ROOTS_MAX_ITERATIONS, UNIT_ROUNDOFF } from "../tolerances.js";
 import { RootSolverError, splitPoint } from "./bracket.js";
 
 /**
@@ -136,7 +138,17 @@ export function quadRootsPlain(
   out: Float64Array,
   k: number,
 ): number {
-  const disc = c1 * c1 - 4 * c2 * c0;
+  // Discriminant with error-free products (Dekker): b² and 4ac exactly as double-doubles, so
+  // nearly double roots (critical points a hair apart) are still told apart.
+  const b2 = c1 * c1;
+  const b2e = twoProductError(c1, c1, b2);
+  const ac = c2 * c0;
+  const ace = twoProductError(c2, c0, ac);
+  const ac4 = 4 * ac;
+  const disc = b2 - ac4 + (b2e - 4 * ace);
+  const noiseD =
+    8 * UNIT_ROUNDOFF * UNIT_ROUNDOFF * (b2 + (ac4 < 0 ? -ac4 : ac4)) +
+    4 * UNIT_ROUNDOFF * (disc < 0 ? -disc : disc);
   let r1: number;
   let r2: number;
   if (c0 === 0) {
@@ -147,9 +159,10 @@ export function quadRootsPlain(
       r1 = r2;
       r2 = 0;
     }
-  } else if (!(disc >= 0)) {
-    return k;
-  } else if (disc === 0) {
+  } else if (disc <= noiseD) {
+    // No real roots, or a double root within the discriminant's rounding: report the vertex (a
+    // possible double root; for splitting, an extra point is harmless, a missing one is not).
+    if (!(disc >= -noiseD)) return k;
     r1 = r2 = -c1 / (2 * c2);
   } else {
     const sq = Math.sqrt(disc);
@@ -167,14 +180,27 @@ export function quadRootsPlain(
   return k;
 }
 
-/** Horner value of c[off..off+n] at x. */
-function hornerAt(c: ArrayLike<number>, off: number, n: number, x: number): number {
-  let f = c[off + n] as number;
-  for (let i = n - 1; i >= 0; i--) f = f * x + (c[off + i] as number);
-  return f;
+/** The rounding error of the product p = fl(a·b): a·b − p exactly (Dekker's TwoProduct). */
+function twoProductError(a: number, b: number, p: number): number {
+  let t = 134217729 * a;
+  const ah = t - (t - a);
+  const al = a - ah;
+  t = 134217729 * b;
+  const bh = t - (t - b);
+  const bl = b - bh;
+  return al * bl - (p - ah * bh - al * bh - ah * bl);
 }
 
-/** Roots strictly inside (lo, hi) of a polynomial monotone between consecutive sorted splits. */
+let vals = new Float64Array(8);
+let noise = new Uint8Array(8);
+const hb = new Float64Array(2);
+
+/**
+ * Roots strictly inside (lo, hi) of a polynomial monotone between consecutive sorted splits. A split
+ * (critical point) where the value is 0, or within the plain error bound with no sign change on
+ * either side, is reported as a (possibly double) root: for the next level it is a split point,
+ * and an extra split point is harmless while a missing one could hide a multiple root.
+ */
 export function pieceRoots(
   c: ArrayLike<number>,
   off: number,
@@ -185,20 +211,50 @@ export function pieceRoots(
   ns: number,
   out: Float64Array,
 ): number {
+  if (vals.length < ns + 2) {
+    vals = new Float64Array(ns + 2);
+    noise = new Uint8Array(ns + 2);
+  }
+  const K = ns + 2;
+  for (let i = 0; i < K; i++) {
+    const x = i === 0 ? lo : i === K - 1 ? hi : (splits[i - 1] as number);
+    boundAt(c, off, n, x, hb);
+    const v = hb[0] as number;
+    vals[i] = v;
+    noise[i] = (v < 0 ? -v : v) <= (hb[1] as number) ? 1 : 0;
+  }
   let k = 0;
-  let a = lo;
-  let fa = hornerAt(c, off, n, lo);
-  for (let i = 0; i <= ns; i++) {
-    const b = i < ns ? (splits[i] as number) : hi;
-    const fb = hornerAt(c, off, n, b);
+  for (let i = 0; i < K; i++) {
+    const fa = vals[i] as number;
+    if (i > 0 && i < K - 1) {
+      const b = splits[i - 1] as number;
+      const fp = vals[i - 1] as number;
+      const fn = vals[i + 1] as number;
+      const graze = noise[i] === 1 && !(fp < 0 !== fa < 0 && fp !== 0) && !(fn < 0 !== fa < 0 && fn !== 0);
+      if ((fa === 0 || graze) && (k === 0 || b > (out[k - 1] as number))) out[k++] = b;
+    }
+    if (i === K - 1) break;
+    const fb = vals[i + 1] as number;
     if (fa !== 0 && fb !== 0 && fa < 0 !== fb < 0) {
+      const a = i === 0 ? lo : (splits[i - 1] as number);
+      const b = i + 1 === K - 1 ? hi : (splits[i] as number);
       const r = newtonPlain(c, off, n, a, b, fa, fb, (i > 0 ? 1 : 0) | (i < ns ? 2 : 0));
       if (r > lo && r < hi && (k === 0 || r > (out[k - 1] as number))) out[k++] = r;
-    } else if (fb === 0 && i < ns && (k === 0 || b > (out[k - 1] as number))) {
-      out[k++] = b;
     }
-    a = b;
-    fa = fb;
   }
   return k;
+}
+
+/** Plain Horner value and its error bound (hornerBound on an offset coefficient array). */
+function boundAt(c: ArrayLike<number>, off: number, n: number, x: number, o: Float64Array): void {
+  const ax = x < 0 ? -x : x;
+  let s = c[off + n] as number;
+  let a = s < 0 ? -s : s;
+  for (let i = n - 1; i >= 0; i--) {
+    const ci = c[off + i] as number;
+    s = s * x + ci;
+    a = a * ax + (ci < 0 ? -ci : ci);
+  }
+  o[0] = s;
+  o[1] = PLAIN_HORNER_BOUND_FACTOR * n * UNIT_ROUNDOFF * a;
 }

@@ -232,6 +232,15 @@ describe("realRoots: more regressions (fast-check, seed 824665292)", () => {
   });
 });
 
+describe("realRoots: regression (fast-check clusters)", () => {
+  it("(t − 10)²(t − 10 − 6e-11) rounded: the exact double root 10 next to a root 6e-11 away", () => {
+    // The critical points 10 and 10 + 4e-11 are told apart only with an accurate discriminant.
+    const c = [-1000.0000000059998, 300.00000000119996, -30.00000000006, 1];
+    expect(exactPolySign(c, 10)).toBe(0);
+    expect(realRoots(c, 9, 11)).toEqual([10, 10.000000000059998]);
+  });
+});
+
 describe("realRoots: input validation", () => {
   it("refuses non-finite coefficients, naming the field", () => {
     expect(() => realRoots([1, Number.NaN, 2], 0, 1)).toThrow(/coeffs\[1\] must be a finite number/);

@@ -124,7 +124,27 @@ function bernstein(n: number, lo: number, hi: number): number {
     for (let j = n; j >= r; j--) T[j] = (T[j] as number) + (T[j - 1] as number);
   }
   const margin = 4 * (n + 2) * UNIT_ROUNDOFF * scale;
+  derivChanges = -1;
   if (!(margin < Number.POSITIVE_INFINITY)) return -1;
+  // p′ on the same interval has the Bernstein coefficients (n/h)(b[j+1] − b[j]): count their signs.
+  const dMargin = 3 * margin;
+  let dPrev = (T[1] as number) - (T[0] as number);
+  if (dPrev > dMargin || dPrev < -dMargin) {
+    let dChanges = 0;
+    for (let j = 1; j < n && dChanges <= 1; j++) {
+      const d = (T[j + 1] as number) - (T[j] as number);
+      if (!(d > dMargin || d < -dMargin)) {
+        dChanges = -1;
+        break;
+      }
+      if (d < 0 !== dPrev < 0) {
+        dChanges++;
+        derivGuess = lo + (h * (j - 1 + dPrev / (dPrev - d))) / (n - 1);
+      }
+      dPrev = d;
+    }
+    derivChanges = dChanges <= 1 ? dChanges : -1;
+  }
   let prev = T[0] as number;
   if (!(prev > margin || prev < -margin)) return -1;
   let changes = 0;
@@ -140,6 +160,28 @@ function bernstein(n: number, lo: number, hi: number): number {
   return changes;
 }
 let bernsteinGuess = 0;
+/** Certified sign changes of p′'s Bernstein coefficients on the same interval: 0, 1, or −1 (more/unknown). */
+let derivChanges = -1;
+/** Where p′'s control polygon crosses zero when derivChanges = 1. */
+let derivGuess = 0;
+
+/**
+ * p′ has exactly one simple root in (lo, lo + h) (Bernstein count): find it directly when p′(lo) and
+ * p′(hi) have opposite signs (it is then inside (lo, hi)); otherwise the full recursion decides.
+ * Result in bufA[0]; returns the number of critical points.
+ */
+function oneCriticalPoint(n: number, lo: number, hi: number): number {
+  for (let i = 0; i < n; i++) chain[i] = (i + 1) * (P[i + 1] as number);
+  let fa = chain[n - 1] as number;
+  let fb = fa;
+  for (let i = n - 2; i >= 0; i--) {
+    fa = fa * lo + (chain[i] as number);
+    fb = fb * hi + (chain[i] as number);
+  }
+  if (fa === 0 || fb === 0 || fa < 0 === fb < 0) return criticalPoints(n, lo, hi);
+  bufA[0] = newtonPlain(chain, 0, n - 1, lo, hi, fa, fb, 0, derivGuess);
+  return 1;
+}
 
 /** Interior roots of the derivative of P[0..m] (m ≥ 2) in (lo, hi), sorted, into bufA; count. */
 function criticalPoints(m: number, lo: number, hi: number): number {
@@ -192,14 +234,8 @@ export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): nu
   const out: number[] = [];
   if (!(lo <= hi) || n < 1) return out;
   ensure(n);
-  // Cauchy's bound: every root has |t| < 1 + max|c_i / c_n|.
-  const lead = Math.abs(coeffs[n] as number);
-  let mx = 0;
-  for (let i = 0; i < n; i++) {
-    const a = Math.abs(coeffs[i] as number);
-    if (a > mx) mx = a;
-  }
-  const bound = (1 + mx / lead) * (1 + 2 ** -48);
+  // Cauchy's bound: every root has |t| < 1 + max_{i<n} |c_i / c_n| ≤ 1 + max_i |c_i| / |c_n|.
+  const bound = (1 + maxAbs / Math.abs(coeffs[n] as number)) * (1 + 2 ** -48);
   const B = bound < Number.POSITIVE_INFINITY ? bound : Number.MAX_VALUE;
   if (lo < -B) lo = -B;
   if (hi > B) hi = B;
@@ -283,7 +319,14 @@ function solveScaled(n: number, lo: number, hi: number, out: number[]): void {
       return;
     }
   }
-  const ns = m >= 2 ? criticalPoints(m, lo, hi) : 0;
+  let ns: number;
+  if (m === n && derivChanges === 0) {
+    ns = 0; // p′ keeps its sign: p is monotone on [lo, hi]
+  } else if (m === n && derivChanges === 1 && n >= 2) {
+    ns = oneCriticalPoint(n, lo, hi);
+  } else {
+    ns = m >= 2 ? criticalPoints(m, lo, hi) : 0;
+  }
   solveLevel0(n, m, lo, hi, ns, out);
 }
 
