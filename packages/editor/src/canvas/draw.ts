@@ -25,6 +25,8 @@ export interface DrawOptions {
 /** Seconds of motion an arrow shows: the arrow ends where the disc would be after ARROW_SECONDS. */
 export const ARROW_SECONDS = 0.5;
 const LABEL_MIN_RADIUS_PX = 9;
+/** Above this many discs they are drawn as outlines only (a translucent fill costs a quarter of the frame). */
+const FILL_MAX_DISCS = 500;
 const COLORS = { disc: "#1d2a3a", fill: "rgba(70,110,160,0.12)", selected: "#d9480f", highlight: "#e8590c" };
 
 export function drawFrame(
@@ -78,41 +80,53 @@ export function drawFrame(
     }
     ctx.stroke();
   }
-  // discs
+  // discs: screen coordinates computed once into a reused buffer (no allocation per disc)
   const d = f.data;
   const n = f.ids.length;
+  const scr = screenBuffer(n);
+  const hw = size.width / 2;
+  const hh = size.height / 2;
+  const k = view.scale;
   const margin = 2;
   ctx.beginPath();
   for (let i = 0; i < n; i++) {
     const b = i * FRAME_STRIDE;
-    const rs = d[b + F_R]! * view.scale;
-    const [sx, sy] = toScreen(view, size, d[b + F_X]!, d[b + F_Y]!);
-    if (
+    const rs = d[b + F_R]! * k;
+    const sx = hw + (d[b + F_X]! - view.cx) * k;
+    const sy = hh - (d[b + F_Y]! - view.cy) * k;
+    const visible = !(
       sx + rs < -margin ||
       sx - rs > size.width + margin ||
       sy + rs < -margin ||
       sy - rs > size.height + margin
-    )
-      continue;
-    ctx.moveTo(sx + Math.max(rs, 0.5), sy);
-    ctx.arc(sx, sy, Math.max(rs, 0.5), 0, 2 * Math.PI);
+    );
+    scr[3 * i] = sx;
+    scr[3 * i + 1] = sy;
+    scr[3 * i + 2] = visible ? rs : -1;
+    if (!visible) continue;
+    const r = rs > 0.5 ? rs : 0.5;
+    ctx.moveTo(sx + r, sy);
+    ctx.arc(sx, sy, r, 0, 2 * Math.PI);
   }
-  ctx.fillStyle = COLORS.fill;
-  ctx.fill();
+  if (n <= FILL_MAX_DISCS) {
+    ctx.fillStyle = COLORS.fill;
+    ctx.fill();
+  }
   ctx.strokeStyle = COLORS.disc;
   ctx.lineWidth = 1.25;
   ctx.stroke();
   // velocity arrows
   ctx.beginPath();
+  const arrowK = ARROW_SECONDS * k;
   for (let i = 0; i < n; i++) {
+    if (scr[3 * i + 2]! < 0) continue;
     const b = i * FRAME_STRIDE;
     const vx = d[b + F_VX]!;
     const vy = d[b + F_VY]!;
     if (vx === 0 && vy === 0) continue;
-    const [sx, sy] = toScreen(view, size, d[b + F_X]!, d[b + F_Y]!);
-    const ex = sx + vx * ARROW_SECONDS * view.scale;
-    const ey = sy - vy * ARROW_SECONDS * view.scale;
-    arrowPath(ctx, sx, sy, ex, ey);
+    const sx = scr[3 * i]!;
+    const sy = scr[3 * i + 1]!;
+    arrowPath(ctx, sx, sy, sx + vx * arrowK, sy - vy * arrowK);
   }
   ctx.strokeStyle = "#2b8a3e";
   ctx.lineWidth = 1.25;
@@ -121,14 +135,15 @@ export function drawFrame(
   ctx.font = "11px system-ui, sans-serif";
   ctx.textAlign = "center";
   ctx.textBaseline = "middle";
+  const anyHot = o.highlight.size > 0 || sel?.kind === "body";
   for (let i = 0; i < n; i++) {
+    const rs = scr[3 * i + 2]!;
+    if (rs < 0 || (rs < LABEL_MIN_RADIUS_PX && !anyHot)) continue;
     const id = f.ids[i]!;
-    const b = i * FRAME_STRIDE;
-    const rs = d[b + F_R]! * view.scale;
-    const hot = (sel?.kind === "body" && sel.id === id) || o.highlight.has(id);
+    const hot = anyHot && ((sel?.kind === "body" && sel.id === id) || o.highlight.has(id));
     if (!hot && rs < LABEL_MIN_RADIUS_PX) continue;
-    const [sx, sy] = toScreen(view, size, d[b + F_X]!, d[b + F_Y]!);
-    if (sx + rs < 0 || sx - rs > size.width || sy + rs < 0 || sy - rs > size.height) continue;
+    const sx = scr[3 * i]!;
+    const sy = scr[3 * i + 1]!;
     if (hot) {
       ctx.strokeStyle = COLORS.selected;
       ctx.lineWidth = 2.5;
@@ -142,6 +157,13 @@ export function drawFrame(
     }
   }
   drawOverlay(ctx, view, size, rect, o.overlay);
+}
+
+let buffer = new Float64Array(0);
+/** A scratch buffer of 3 numbers per disc (screen x, y, radius or −1 when off screen). */
+function screenBuffer(n: number): Float64Array {
+  if (buffer.length < 3 * n) buffer = new Float64Array(3 * n);
+  return buffer;
 }
 
 function arrowPath(ctx: CanvasRenderingContext2D, sx: number, sy: number, ex: number, ey: number) {

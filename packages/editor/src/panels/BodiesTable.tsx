@@ -10,7 +10,7 @@ import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
 import { useLiveFrame } from "./useLiveFrame";
 
 /** Rows shown at most (the selected body is always shown); the canvas shows them all. */
-export const MAX_ROWS = 200;
+export const MAX_ROWS = 60;
 
 type Field = "x" | "y" | "vx" | "vy" | "speed" | "r" | "m" | "mu";
 const COLUMNS: { field: Field; title: string; offset: number | null }[] = [
@@ -26,7 +26,7 @@ const COLUMNS: { field: Field; title: string; offset: number | null }[] = [
 
 export function BodiesTable() {
   const editor = useEditor();
-  const frame = useLiveFrame();
+  const frame = useLiveFrame(250);
   const selection = useUi((s) => s.selection);
   const selectedId = selection?.kind === "body" ? selection.id : null;
 

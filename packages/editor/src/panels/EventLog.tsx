@@ -6,6 +6,7 @@ import { useEffect, useState } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { EventPage } from "../remote/protocol";
 import { formatNumber } from "./EditableCell";
+import { useSlowTime } from "./useSlowTime";
 
 const BEFORE = 30;
 const AFTER = 30;
@@ -19,7 +20,7 @@ const KIND_NAMES: Record<string, string> = {
 
 export function EventLog() {
   const editor = useEditor();
-  const t = useUi((s) => s.t);
+  const t = useSlowTime();
   const filter = useUi((s) => s.eventFilter);
   const revision = useInfoValue((i) => i.revision);
   const [page, setPage] = useState<EventPage | null>(null);
@@ -32,7 +33,7 @@ export function EventLog() {
         (p) => live && setPage(p),
         () => {},
       );
-    }, 120);
+    }, 30);
     return () => {
       live = false;
       clearTimeout(timer);

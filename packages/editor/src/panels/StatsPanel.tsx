@@ -3,19 +3,20 @@
  * momentum at the current time; a plot of energy and events over the computed span.
  */
 import { useEffect, useState } from "react";
-import { useEditor, useInfo, useUi } from "../EditorContext";
+import { useEditor, useInfo } from "../EditorContext";
 import type { SeriesPoint } from "../remote/protocol";
 import { formatNumber } from "./EditableCell";
 import { EnergyPlot } from "./EnergyPlot";
 import { kinetics } from "./energy";
 import { useLiveFrame } from "./useLiveFrame";
+import { useSlowTime } from "./useSlowTime";
 
 const SAMPLES = 120;
 
 export function StatsPanel() {
   const editor = useEditor();
   const info = useInfo();
-  const t = useUi((s) => s.t);
+  const t = useSlowTime();
   const frame = useLiveFrame(250);
   const [series, setSeries] = useState<SeriesPoint[]>([]);
   const revision = info.revision;

@@ -2,7 +2,7 @@
  * Time: the `Time` scrubber over [0, horizon] with event ticks, a time field, −1 / 0 / +1 s and
  * stepping to the previous / next event. Scrubbing is not an edit (no undo step).
  */
-import { useEffect, useState } from "react";
+import { useEffect, useMemo, useState } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import { formatNumber, parseNumber } from "./EditableCell";
 
@@ -23,6 +23,16 @@ export function TimePanel() {
     }, 200);
     return () => clearTimeout(timer);
   }, [editor, revision]);
+
+  const tickLines = useMemo(
+    () =>
+      horizon > 0
+        ? ticks.map((x, i) => (
+            <line key={i} x1={(x / horizon) * 1000} x2={(x / horizon) * 1000} y1={0} y2={10} />
+          ))
+        : null,
+    [ticks, horizon],
+  );
 
   const commitDraft = () => {
     if (draft === null) return;
@@ -45,10 +55,7 @@ export function TimePanel() {
           onChange={(e) => editor.setTime(Number(e.target.value))}
         />
         <svg className="ticks" viewBox="0 0 1000 10" preserveAspectRatio="none" aria-hidden="true">
-          {horizon > 0 &&
-            ticks.map((x, i) => (
-              <line key={i} x1={(x / horizon) * 1000} x2={(x / horizon) * 1000} y1={0} y2={10} />
-            ))}
+          {tickLines}
         </svg>
       </div>
       <div className="row">

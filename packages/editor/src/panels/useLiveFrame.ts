@@ -7,6 +7,9 @@ import { useEffect, useState } from "react";
 import { useEditor } from "../EditorContext";
 import type { Frame } from "../remote/protocol";
 
+/** Slowest refresh while playing (ms). */
+export const PLAYING_INTERVAL_MS = 500;
+
 export function useLiveFrame(intervalMs = 150): Frame | null {
   const { client, ui } = useEditor();
   const [frame, setFrame] = useState<Frame | null>(client.latestFrame);
@@ -20,7 +23,9 @@ export function useLiveFrame(intervalMs = 150): Frame | null {
     };
     const off = client.onFrame(() => {
       if (timer !== null) return;
-      const wait = Math.max(0, lastShown + intervalMs - Date.now());
+      // While playing, tables refresh at most twice a second (their DOM is costly to repaint).
+      const every = ui.getState().playing ? Math.max(intervalMs, PLAYING_INTERVAL_MS) : intervalMs;
+      const wait = Math.max(0, lastShown + every - Date.now());
       timer = setTimeout(show, wait);
     });
     const want = () => client.wantFrame(ui.getState().t);

@@ -1,0 +1,102 @@
+import { newtonsCradle } from "@chapgame/engine";
+import { describe, expect, it } from "vitest";
+import { F_VX, F_X, FRAME_STRIDE } from "./remote/protocol";
+import { settled, testEditor } from "./testing/harness";
+
+/** Newton's cradle: the striker (x = −6, v = 4) hits c1 (x = 0) at t = 1 exactly. */
+async function cradle() {
+  const h = testEditor();
+  expect(await h.editor.loadScene(newtonsCradle(), { undoable: false })).toBeNull();
+  await settled(h.client);
+  return h;
+}
+
+async function bodyAt(h: Awaited<ReturnType<typeof cradle>>, id: string, t: number) {
+  const f = await h.client.frame(t);
+  const i = f.ids.indexOf(id) * FRAME_STRIDE;
+  return { x: f.data[i + F_X]!, vx: f.data[i + F_VX]! };
+}
+
+describe("Editor over the worker protocol", () => {
+  it("loading computes ahead by the Calculation settings and frames are exact", async () => {
+    const h = await cradle();
+    expect(h.client.getSnapshot().horizon).toBe(10);
+    expect(await bodyAt(h, "striker", 0.5)).toEqual({ x: -4, vx: 4 });
+    expect(await h.client.nextEvent(0)).toBe(1);
+  });
+
+  it("an edit is one undo step; undo and redo restore the scene", async () => {
+    const h = await cradle();
+    h.editor.ui.setState({ t: 0 });
+    expect(await h.editor.updateBody("striker", { v: [8, 0] })).toBeNull();
+    await settled(h.client);
+    expect(await h.client.nextEvent(0)).toBe(0.5);
+    expect(h.editor.history.getState().past.length).toBe(1);
+    await h.editor.undo();
+    await settled(h.client);
+    expect(await h.client.nextEvent(0)).toBe(1);
+    await h.editor.redo();
+    await settled(h.client);
+    expect(await h.client.nextEvent(0)).toBe(0.5);
+  });
+
+  it("a refused edit returns the engine's message and changes nothing", async () => {
+    const h = await cradle();
+    const before = h.client.getSnapshot().doc;
+    const err = await h.editor.updateBody("c3", { r: -1 });
+    expect(err).toMatch(/r: must be a positive finite number/);
+    expect(h.editor.ui.getState().message?.text).toBe(err);
+    expect(h.client.getSnapshot().doc).toBe(before);
+    expect(h.editor.history.getState().past.length).toBe(0);
+  });
+
+  it("scrubbing, speed and selection are not undo steps", async () => {
+    const h = await cradle();
+    h.editor.setTime(3);
+    h.editor.setSpeed(-1);
+    h.editor.ui.setState({ selection: { kind: "body", id: "c1" } });
+    h.editor.togglePlay();
+    expect(h.editor.history.getState().past.length).toBe(0);
+    expect(h.editor.ui.getState()).toMatchObject({ t: 3, speed: -1, playing: true });
+  });
+
+  it("deleting the selection removes the body at the current time only", async () => {
+    const h = await cradle();
+    h.editor.ui.setState({ t: 2, selection: { kind: "body", id: "c5" } });
+    expect(await h.editor.deleteSelection()).toBeNull();
+    await settled(h.client);
+    expect((await h.client.frame(2.5)).ids).not.toContain("c5");
+    expect((await h.client.frame(1.5)).ids).toContain("c5");
+    expect(h.editor.ui.getState().selection).toBeNull();
+  });
+
+  it("renaming a body rewrites every action of it", async () => {
+    const h = await cradle();
+    expect(await h.editor.rename("body", "striker", "cue")).toBeNull();
+    await settled(h.client);
+    const ids = h.client.getSnapshot().doc!.actions.map((a) => ("id" in a ? a.id : ""));
+    expect(ids).toContain("cue");
+    expect(ids).not.toContain("striker");
+    expect(await h.editor.rename("body", "cue", "c1")).toMatch(/already used/);
+  });
+
+  it("a cue strike gives a velocity away from the click point", async () => {
+    const h = await cradle();
+    h.editor.ui.setState({ t: 0 });
+    expect(await h.editor.strike("c5", [8, 0], [8, 0.5])).toBeNull();
+    await settled(h.client);
+    expect((await bodyAt(h, "c5", 0)).vx).toBe(0);
+    const f = await h.client.frame(0.1);
+    const i = f.ids.indexOf("c5") * FRAME_STRIDE;
+    expect(f.data[i + F_VX + 1]).toBeLessThan(0);
+  });
+
+  it("Cancel stops a computation without limit", async () => {
+    const h = await cradle();
+    h.editor.ui.setState((s) => ({ calc: { ...s.calc, useTime: false, useEvents: false } }));
+    h.editor.computeAhead();
+    h.editor.cancelCompute();
+    await settled(h.client);
+    expect(h.client.getSnapshot().computing).toBeNull();
+  });
+});
