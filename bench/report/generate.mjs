@@ -173,7 +173,9 @@ function peersSection(p, out, svgs) {
   const names = Object.keys(p.settings);
   for (const scene of p.scenes) {
     out.push(`### ${scene.title}\n`);
-    out.push(`${scene.description}\n`);
+    out.push(
+      `${scene.description}${scene.peersSkipped ? ` Peers: ${scene.peersSkipped} (they already fail at 3 digits).` : ""}\n`,
+    );
     const file = `peers-${scene.id}.svg`;
     svgs[file] = scenePlot(scene, names);
     out.push(`![${scene.id}](bench/${file})\n`);
@@ -375,7 +377,7 @@ function stressSection(s, out, svgs) {
   if (L.error) out.push(`error: ${L.error}\n`);
   else {
     out.push(
-      `Dilute gas of ${L.bodies} discs, ${int(L.events)} events in ${sig(L.seconds)} s; worst |ΔE/E| ${sig(L.worstDrift)}, at the end ${sig(L.finalDrift)}.\n`,
+      `Dilute gas of ${L.bodies} discs, ${int(L.events)} events in ${sig(L.seconds)} s (planned ${int(L.target)} events, or ${L.maxSeconds} s at most${L.events < L.target ? ": **stopped by the time limit**" : ""}); worst |ΔE/E| ${sig(L.worstDrift)}, at the end ${sig(L.finalDrift)}.\n`,
     );
     svgs["energy-drift.svg"] = plot({
       title: "Energy drift over a long run",
@@ -555,6 +557,17 @@ function headline(r) {
       ]);
     }
   }
+  const push = r.stress?.galperinPush;
+  if (push)
+    rows.push([
+      "Galperin's billiard pushed: first wrong digit count",
+      push.firstWrong === null
+        ? `none up to ${push.lastCorrect} digits`
+        : `${push.firstWrong} (correct up to ${push.lastCorrect})`,
+      dash,
+      dash,
+      dash,
+    ]);
   return table(["benchmark", "chapgame", "comparison (same run)", "target", "status"], rows);
 }
 

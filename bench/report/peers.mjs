@@ -143,7 +143,9 @@ export function galperinTable(scenes, rates) {
     for (const p of peers)
       for (const hz of rates) {
         const r = s.peers.find((q) => q.peer === p && q.hz === hz && q.config === "tuned");
-        row.push(r?.error ? "error" : mark(r?.metrics?.collisions, r?.metrics?.escaped));
+        row.push(
+          s.peersSkipped ? "not run" : r?.error ? "error" : mark(r?.metrics?.collisions, r?.metrics?.escaped),
+        );
       }
     return row;
   });
