@@ -56,24 +56,29 @@ export class Editor {
     return c.useTime || c.useEvents ? u : null;
   }
 
-  computeAhead(): void {
-    this.client.compute(this.computeUntil()).catch((e) => this.fail(e));
+  computeAhead(): Promise<void> {
+    return this.client.compute(this.computeUntil()).catch((e) => {
+      this.fail(e);
+    });
   }
 
   /** After an edit: computes ahead unless the horizon is already far enough past the current time. */
-  private ensureAhead(): void {
+  private async ensureAhead(): Promise<void> {
     const c = this.ui.getState().calc;
     const h = this.client.getSnapshot().horizon;
     if (c.useTime && !c.useEvents && h >= this.now() + c.seconds) return;
-    this.computeAhead();
+    await this.computeAhead();
   }
 
   /** After reloading at the same time (undo, redo, rename): recomputes at least the old horizon. */
-  private recompute(oldHorizon: number): void {
+  private async recompute(oldHorizon: number): Promise<void> {
     const c = this.ui.getState().calc;
     const target = Math.max(oldHorizon, this.now() + (c.useTime ? c.seconds : 0));
-    if (target > 0) this.client.compute({ time: target }).catch((e) => this.fail(e));
-    else this.computeAhead();
+    if (target > 0)
+      await this.client.compute({ time: target }).catch((e) => {
+        this.fail(e);
+      });
+    else await this.computeAhead();
   }
 
   cancelCompute(): void {
@@ -101,8 +106,8 @@ export class Editor {
       message: null,
       fitRequest: options.fit === false ? s.fitRequest : s.fitRequest + 1,
     }));
-    if (options.keepTime) this.recompute(oldHorizon);
-    else this.computeAhead();
+    if (options.keepTime) await this.recompute(oldHorizon);
+    else await this.computeAhead();
     return null;
   }
 
@@ -116,7 +121,7 @@ export class Editor {
     }
     this.history.setState(record(this.history.getState(), before));
     this.ui.setState({ message: null });
-    this.ensureAhead();
+    await this.ensureAhead();
     return null;
   }
 
@@ -160,7 +165,7 @@ export class Editor {
     }
     this.history.setState(history);
     this.ui.setState({ message: null });
-    this.recompute(oldHorizon);
+    await this.recompute(oldHorizon);
   }
 
   // ---- edits at the current time -------------------------------------------------------------

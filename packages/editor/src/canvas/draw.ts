@@ -104,7 +104,7 @@ export function drawFrame(
     scr[3 * i + 1] = sy;
     scr[3 * i + 2] = visible ? rs : -1;
     if (!visible) continue;
-    const r = rs > 0.5 ? rs : 0.5;
+    const r = Math.max(rs, 0.5);
     ctx.moveTo(sx + r, sy);
     ctx.arc(sx, sy, r, 0, 2 * Math.PI);
   }

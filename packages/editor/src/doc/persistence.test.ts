@@ -13,7 +13,7 @@ const scene: SceneFile = {
   format: "chapgame",
   version: 1,
   g: 9.81,
-  gravity: [0, -1],
+  gravity: [0, 0],
   actions: [{ time: 0, type: "addBody", id: "ä/β", x: 1, y: 2, r: 3, m: 4, mu: 0.5, v: [1, -1] }],
 };
 

@@ -101,15 +101,24 @@ export class TimelineHost {
 
   private applyAll(actions: Action[]): void {
     const before = this.tl.actions.slice();
+    const horizon = this.tl.horizon;
     this.job = null;
+    let applied = 0;
     try {
-      for (const a of actions) this.tl.apply(a);
+      for (const a of actions) {
+        this.tl.apply(a);
+        applied++;
+      }
     } catch (e) {
-      if (actions.length > 1) this.tl.setActions(before);
+      if (applied > 0) {
+        // Undo the part that was applied: rebuild the old list and recompute the old horizon.
+        this.tl.setActions(before);
+        this.changed(true);
+        this.startJob({ time: horizon - this.tl.horizon });
+      }
       throw e;
-    } finally {
-      this.changed(true);
     }
+    this.changed(true);
   }
 
   private startJob(until: Until | null): void {
