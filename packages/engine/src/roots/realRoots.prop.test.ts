@@ -113,9 +113,15 @@ describe("realRoots properties (fast-check)", () => {
   });
 
   it("rounded products of linear factors (any roots): certified and complete", () => {
+    // Roots below 1e-60 in magnitude (other than 0) are left out on purpose: products of five of them
+    // underflow, giving coefficients spread over more than 2^1000, the documented range limit.
+    const root = fc.oneof(
+      fc.constant(0),
+      num(-100, 100).filter((x) => Math.abs(x) >= 1e-60),
+    );
     fc.assert(
       fc.property(
-        fc.array(num(-100, 100), { minLength: 1, maxLength: 5 }),
+        fc.array(root, { minLength: 1, maxLength: 5 }),
         num(0.001, 1000),
         num(-120, 120),
         num(0, 240),
