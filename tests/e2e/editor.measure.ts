@@ -12,7 +12,30 @@ import { join } from "node:path";
 import { dilutedGas } from "@chapgame/engine";
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, it } from "vitest";
-import { ARTIFACTS, openEditor, type Session, screenshot } from "./harness";
+import { ARTIFACTS, openEditor, type Session, screenshot } from "./harness.js";
+
+/** The part of the page's `window.chapgame` (the Editor) these measurements use. */
+interface PageEditor {
+  ui: {
+    getState(): { t: number };
+    setState(patch: object | ((s: { calc: object }) => object)): void;
+  };
+  client: {
+    getSnapshot(): {
+      computing: unknown;
+      revision: number;
+      horizon: number;
+      eventCount: number;
+      historyBytes: number;
+    };
+  };
+  loadScene(scene: unknown, options: object): Promise<string | null>;
+}
+type PageWindow = {
+  chapgame: PageEditor;
+  chapgameStats: Record<string, number>;
+  chapgameResetStats: () => void;
+};
 
 let s: Session;
 let page: Page;
@@ -34,8 +57,8 @@ afterAll(async () => {
 async function load(scene: unknown, calc: Record<string, unknown>, timeoutMs: number) {
   await page.evaluate(
     async ({ scene, calc }) => {
-      const w = window as unknown as { chapgame: any };
-      w.chapgame.ui.setState((st: any) => ({ calc: { ...st.calc, ...calc }, playing: false }));
+      const w = window as unknown as PageWindow;
+      w.chapgame.ui.setState((st) => ({ calc: { ...st.calc, ...calc }, playing: false }));
       await w.chapgame.loadScene(scene, { undoable: false });
     },
     { scene, calc },
@@ -43,7 +66,7 @@ async function load(scene: unknown, calc: Record<string, unknown>, timeoutMs: nu
   const start = Date.now();
   await page.waitForFunction(
     () => {
-      const info = (window as unknown as { chapgame: any }).chapgame.client.getSnapshot();
+      const info = (window as unknown as PageWindow).chapgame.client.getSnapshot();
       return info.computing === null && info.revision > 0;
     },
     undefined,
@@ -56,7 +79,7 @@ async function load(scene: unknown, calc: Record<string, unknown>, timeoutMs: nu
 async function sample(ms: number, mode: "play" | "scrub") {
   return page.evaluate(
     async ({ ms, mode }) => {
-      const w = window as unknown as { chapgame: any; chapgameStats: any; chapgameResetStats: () => void };
+      const w = window as unknown as PageWindow;
       const ed = w.chapgame;
       const horizon = ed.client.getSnapshot().horizon;
       w.chapgameResetStats();
@@ -109,9 +132,7 @@ it("plays 2,000 moving discs", async () => {
     { useTime: true, seconds: 20, useEvents: false, autoExtend: true },
     300_000,
   );
-  const info = await page.evaluate(() =>
-    (window as unknown as { chapgame: any }).chapgame.client.getSnapshot(),
-  );
+  const info = await page.evaluate(() => (window as unknown as PageWindow).chapgame.client.getSnapshot());
   results.play2000 = {
     bodies: 2000,
     computeAheadMs: computeMs,
@@ -128,9 +149,7 @@ it("scrubs a timeline with 10^6 recorded events", async () => {
     { useTime: false, useEvents: true, events: 1_000_000, autoExtend: false },
     600_000,
   );
-  const info = await page.evaluate(() =>
-    (window as unknown as { chapgame: any }).chapgame.client.getSnapshot(),
-  );
+  const info = await page.evaluate(() => (window as unknown as PageWindow).chapgame.client.getSnapshot());
   results.scrub1e6 = {
     bodies: 1000,
     events: info.eventCount,

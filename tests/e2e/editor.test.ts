@@ -6,7 +6,10 @@
  */
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { currentTime, openEditor, type Session, screenshot, scrubTo, waitFor } from "./harness";
+import { currentTime, openEditor, type Session, screenshot, scrubTo, waitFor } from "./harness.js";
+
+/** Polls like expect.poll, patient enough for a loaded CI machine. */
+const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
 
 let s: Session;
 let page: Page;
@@ -41,10 +44,10 @@ afterAll(async () => {
 
 describe("editor end to end", () => {
   it("starts with the default scene and loads a preset", async () => {
-    await expect.poll(() => bodies().getByRole("row").count()).toBeGreaterThan(1);
+    await poll(() => bodies().getByRole("row").count()).toBeGreaterThan(1);
     await screenshot(page, "01-default-scene");
     await loadPreset("Newton's cradle");
-    await expect.poll(() => bodies().getByRole("row").count()).toBe(7);
+    await poll(() => bodies().getByRole("row").count()).toBe(7);
     expect(await cellValue("striker x")).toBe(-6);
     expect(await cellValue("c5 x")).toBe(8);
     await screenshot(page, "02-newtons-cradle");
@@ -63,19 +66,19 @@ describe("editor end to end", () => {
   it("scrubs to a time and shows the exact state there", async () => {
     await scrubTo(page, 0.5);
     expect(await currentTime(page)).toBe(0.5);
-    await expect.poll(() => cellValue("striker x")).toBe(-4);
+    await poll(() => cellValue("striker x")).toBe(-4);
   });
 
   it("steps to the next and previous event", async () => {
     await scrubTo(page, 0);
     await page.getByRole("button", { name: "Next event" }).click();
-    await expect.poll(() => currentTime(page)).toBe(1);
-    await expect.poll(() => cellValue("striker vx")).toBe(0);
+    await poll(() => currentTime(page)).toBe(1);
+    await poll(() => cellValue("striker vx")).toBe(0);
     await page.getByRole("button", { name: "Previous event" }).click();
-    await expect.poll(() => currentTime(page)).toBe(0);
-    await expect.poll(() => cellValue("striker vx")).toBe(4);
+    await poll(() => currentTime(page)).toBe(0);
+    await poll(() => cellValue("striker vx")).toBe(4);
     await page.keyboard.press("ArrowRight");
-    await expect.poll(() => currentTime(page)).toBe(1);
+    await poll(() => currentTime(page)).toBe(1);
     await screenshot(page, "04-first-collision");
   });
 
@@ -94,13 +97,13 @@ describe("editor end to end", () => {
   it("edits a body in the table; a refused value shows the message in place and changes nothing", async () => {
     await scrubTo(page, 0);
     await editCell("striker vx", "8");
-    await expect.poll(() => cellValue("striker vx")).toBe(8);
+    await poll(() => cellValue("striker vx")).toBe(8);
     await page.getByRole("button", { name: "Next event" }).click();
-    await expect.poll(() => currentTime(page)).toBe(0.5);
+    await poll(() => currentTime(page)).toBe(0.5);
     await scrubTo(page, 0);
     await editCell("c3 r", "-1");
     const alert = bodies().getByRole("alert");
-    await expect.poll(() => alert.textContent()).toMatch(/r: must be/);
+    await poll(() => alert.textContent()).toMatch(/r: must be/);
     await screenshot(page, "05-refused-cell");
     await cell("c3 r").press("Escape");
     expect(await cellValue("c3 r")).toBe(1);
@@ -110,11 +113,11 @@ describe("editor end to end", () => {
     await page.getByRole("slider", { name: "Time" }).focus();
     await page.locator("body").click({ position: { x: 5, y: 5 } });
     await page.keyboard.press("Control+z");
-    await expect.poll(() => cellValue("striker vx")).toBe(4);
+    await poll(() => cellValue("striker vx")).toBe(4);
     await page.keyboard.press("Control+Shift+z");
-    await expect.poll(() => cellValue("striker vx")).toBe(8);
+    await poll(() => cellValue("striker vx")).toBe(8);
     await page.getByRole("button", { name: "Undo" }).click();
-    await expect.poll(() => cellValue("striker vx")).toBe(4);
+    await poll(() => cellValue("striker vx")).toBe(4);
   });
 
   it("a broken paste shows the validation message and keeps the scene", async () => {
@@ -125,7 +128,7 @@ describe("editor end to end", () => {
     });
     await page.getByRole("textbox", { name: "Scene JSON" }).fill(broken);
     await page.getByRole("button", { name: "Paste", exact: true }).click();
-    await expect.poll(() => page.getByRole("alert").first().textContent()).toContain("actions[0].r");
+    await poll(() => page.getByRole("alert").first().textContent()).toContain("actions[0].r");
     expect(await cellValue("striker x")).toBe(-6);
     expect(await bodies().getByRole("row").count()).toBe(7);
     await screenshot(page, "06-broken-paste");
@@ -134,11 +137,11 @@ describe("editor end to end", () => {
   it("keeps the scene across a reload (autosave)", async () => {
     await scrubTo(page, 0);
     await editCell("c1 m", "3");
-    await expect.poll(() => cellValue("c1 m")).toBe(3);
+    await poll(() => cellValue("c1 m")).toBe(3);
     await page.waitForTimeout(600);
     await page.reload();
     await page.getByRole("slider", { name: "Time" }).waitFor();
-    await expect.poll(() => cellValue("c1 m")).toBe(3);
+    await poll(() => cellValue("c1 m")).toBe(3);
     expect(await cellValue("striker x")).toBe(-6);
     await screenshot(page, "07-after-reload");
   });
@@ -151,7 +154,7 @@ describe("editor end to end", () => {
     const log = page.getByRole("table", { name: "Event log" });
     const row = log.getByRole("row").filter({ hasText: "body–body" }).first();
     await row.click();
-    await expect.poll(() => currentTime(page)).toBe(1);
+    await poll(() => currentTime(page)).toBe(1);
     await screenshot(page, "08-event-log-jump");
   });
 });

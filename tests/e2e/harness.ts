@@ -4,19 +4,39 @@
  * (play, pause, scrubTo, time, ...) that drive the editor by its accessible names.
  */
 import { execFileSync } from "node:child_process";
-import { existsSync, mkdirSync, mkdtempSync, rmSync } from "node:fs";
+import { existsSync, mkdirSync, mkdtempSync, readdirSync, rmSync, statSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
 import { type BrowserContext, chromium, type Page } from "playwright-core";
-import { type StaticServer, serveStatic } from "./server";
+import { type StaticServer, serveStatic } from "./server.js";
 
 export const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
 export const DIST = join(ROOT, "packages/editor/dist");
 export const ARTIFACTS = join(ROOT, "test-artifacts");
 
+/** Newest modification time (ms) of the files under `path`. */
+function newest(path: string): number {
+  if (!existsSync(path)) return 0;
+  const st = statSync(path);
+  if (!st.isDirectory()) return st.mtimeMs;
+  let m = st.mtimeMs;
+  for (const name of readdirSync(path)) m = Math.max(m, newest(join(path, name)));
+  return m;
+}
+
+/** Builds the editor when its dist is missing or older than its sources (editor, engine, public). */
 export function ensureBuilt(): void {
-  if (existsSync(join(DIST, "index.html"))) return;
+  const index = join(DIST, "index.html");
+  const sources = [
+    "packages/editor/src",
+    "packages/editor/index.html",
+    "packages/editor/vite.config.ts",
+    "packages/engine/src",
+    "public",
+  ];
+  const built = existsSync(index) ? statSync(index).mtimeMs : 0;
+  if (built > 0 && sources.every((p) => newest(join(ROOT, p)) < built)) return;
   execFileSync("npx", ["vite", "build"], { cwd: join(ROOT, "packages/editor"), stdio: "inherit" });
 }
 
