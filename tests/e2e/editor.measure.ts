@@ -33,7 +33,13 @@ interface PageEditor {
 }
 type PageWindow = {
   chapgame: PageEditor;
-  chapgameStats: Record<string, number>;
+  chapgameStats: {
+    draws: number;
+    drawMs: number;
+    frames: number;
+    frameLatencyMs: number;
+    maxFrameLatencyMs: number;
+  };
   chapgameResetStats: () => void;
 };
 
