@@ -131,6 +131,28 @@ describe("realRoots properties (fast-check)", () => {
     );
   });
 
+  it("grazing collisions: a path passing at distance R (plus a tiny offset): certified and complete", () => {
+    fc.assert(
+      fc.property(
+        num(0.1, 10),
+        num(0.1, 5),
+        num(0.1, 8),
+        num(-1, 1),
+        num(-1e-6, 1e-6),
+        (R, v, t0, w, eps) => {
+          // Relative position d + u t + w t²/2 with d = (−v t0, R + eps), u = (v, 0), w = (0, w):
+          // the gap |·|² − R² has a (near-)double root near t0 when w = 0 and eps = 0.
+          const dx = -v * t0;
+          const dy = R + eps;
+          const wy = w * 1e-3;
+          const c = [dx * dx + dy * dy - R * R, 2 * (dx * v), v * v + dy * wy, 0, 0.25 * wy * wy];
+          return certified(c, 0, 2 * t0, 64);
+        },
+      ),
+      params,
+    );
+  });
+
   it("clusters: roots c + k·δ with tiny δ, rounded coefficients: certified and complete", () => {
     fc.assert(
       fc.property(
