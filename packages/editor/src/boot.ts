@@ -38,6 +38,8 @@ export async function boot(): Promise<Editor> {
   const client = new TimelineClient(worker as unknown as Port);
   const editor = new Editor(client, createUiStore());
   const first = firstScene();
+  // A shared link is loaded once; from then on the autosave keeps the user's edits across reloads.
+  if (first.from === "url") history.replaceState(null, "", window.location.pathname + window.location.search);
   let err = await editor.loadScene(first.scene, { undoable: false });
   if (err !== null && first.from !== "preset")
     err = await editor.loadScene(buildPreset(DEFAULT_PRESET), { undoable: false });

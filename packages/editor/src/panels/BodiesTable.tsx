@@ -67,7 +67,7 @@ export function BodiesTable() {
           <EditableCell
             label={`${id} id`}
             value={id}
-            size={5}
+            size={6}
             onCommit={(text) => editor.rename("body", id, text)}
           />
         </td>

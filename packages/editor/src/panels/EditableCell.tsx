@@ -13,7 +13,7 @@ export interface EditableCellProps {
   size?: number;
 }
 
-export function EditableCell({ label, value, onCommit, size = 8 }: EditableCellProps) {
+export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellProps) {
   const [draft, setDraft] = useState<string | null>(null);
   const [error, setError] = useState<string | null>(null);
   const errorId = useId();

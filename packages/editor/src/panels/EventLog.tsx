@@ -67,11 +67,11 @@ export function EventLog() {
           <tbody>
             {page?.events.map((e, k) => {
               const index = page.first + k;
-              const past = e.time <= t;
+              const cls = e.time === t ? "current" : e.time < t ? "past" : undefined;
               return (
                 <tr
                   key={index}
-                  className={past ? "past" : undefined}
+                  className={cls}
                   tabIndex={0}
                   onClick={() =>
                     editor.ui.setState({
