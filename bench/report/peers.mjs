@@ -42,7 +42,11 @@ export function scenePlot(scene, peerNames) {
         name: `${name} (${config})`,
         dash: config === "defaults",
         marker: config === "tuned" ? "circle" : "square",
-        points: rows.map((p) => [p.ns / 1e6, Math.max(FLOOR, sceneError(scene, p.metrics) ?? Number.NaN)]),
+        points: rows.map((p) => [
+          p.ns / 1e6,
+          Math.max(FLOOR, sceneError(scene, p.metrics) ?? Number.NaN),
+          `${p.hz}`,
+        ]),
       });
     }
   }
@@ -59,7 +63,7 @@ export function scenePlot(scene, peerNames) {
   return plot({
     title: `${scene.title}: run time vs error`,
     xLabel: "wall time to simulate the span (ms)",
-    yLabel: errorLabel(scene.id),
+    yLabel: `${errorLabel(scene.id)} (0 drawn at ${FLOOR}; labels: Hz)`,
     xLog: true,
     yLog: true,
     series,

@@ -2,7 +2,8 @@
  * A tiny SVG plot writer (no plotting dependency): x/y axes (linear or log10), decade or nice
  * ticks, series drawn as lines and/or markers, a legend. plot(spec) returns the SVG text.
  * spec: { title, xLabel, yLabel, xLog, yLog, width, height,
- *         series: [{ name, points: [[x, y], …], line: bool, marker: "circle"|"square"|"diamond", color }] }
+ *         series: [{ name, points: [[x, y, label?], …], line: bool, dash: bool,
+ *                   marker: "circle"|"square"|"diamond"|"star"|"none" (a dashed line only), color }] }
  * Points with a non-finite or (on a log axis) non-positive coordinate are dropped.
  */
 const COLORS = ["#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"];
@@ -112,8 +113,14 @@ export function plot(spec) {
         `<path d="${d}" fill="none" stroke="${s.color}" stroke-width="1.6"${s.dash ? ' stroke-dasharray="5 3"' : ""}/>`,
       );
     }
-    for (const [x, y] of pts)
-      parts.push(markerSvg(s.marker ?? "circle", Number(px(x)), Number(py(y)), s.color));
+    if (s.marker !== "none")
+      for (const [x, y] of pts)
+        parts.push(markerSvg(s.marker ?? "circle", Number(px(x)), Number(py(y)), s.color));
+    for (const [x, y, label] of pts)
+      if (label !== undefined)
+        parts.push(
+          `<text x="${Number(px(x)) + 6}" y="${Number(py(y)) - 6}" font-size="10" fill="${s.color}">${esc(label)}</text>`,
+        );
     const ly = m.t + 8 + i * 18;
     parts.push(markerSvg(s.marker ?? "circle", W - m.r + 16, ly, s.color));
     parts.push(`<text x="${W - m.r + 28}" y="${ly + 4}">${esc(s.name)}</text>`);
