@@ -32,7 +32,7 @@ let dLo = new Float64Array(8);
 let deg = 0;
 let orig: ArrayLike<number> = P;
 /** |value| of the last certSign evaluation (compensated when it was computed), for choosing ends. */
-let lastAbs = 0;
+const last = new Float64Array(1); // |value| at the last certSign point (typed array: no boxing)
 /** Whether the last certSign found |p| within the plain Horner error bound (rounding noise). */
 let lastNoisy = false;
 /** Counts of exact (BigInt) fallbacks, for tests and the benchmark. */
@@ -52,34 +52,34 @@ export function load(scaled: Float64Array, n: number, original: ArrayLike<number
   xScale = xs;
 }
 
-/** Exact sign of P at x (plain, then compensated, then BigInt). Sets lastAbs. */
+/** Exact sign of P at x (plain, then compensated, then BigInt). Sets last[0] = |value|. */
 export function certSign(x: number): number {
   if (x === 0) {
     const c0 = orig[0] as number;
     lastNoisy = c0 === 0;
-    lastAbs = Math.abs(P[0] as number);
+    last[0] = Math.abs(P[0] as number);
     return c0 > 0 ? 1 : c0 < 0 ? -1 : 0;
   }
   hornerBound(P, deg, x, ev);
   let v = ev[0] as number;
   if (Math.abs(v) > (ev[1] as number)) {
     lastNoisy = false;
-    lastAbs = Math.abs(v);
+    last[0] = Math.abs(v);
     return v > 0 ? 1 : -1;
   }
   lastNoisy = true;
   compHorner(P, deg, x, ev);
   v = ev[0] as number;
-  lastAbs = Math.abs(v);
+  last[0] = Math.abs(v);
   const bound = ev[1] as number;
-  if (lastAbs > bound || bound === 0) return v > 0 ? 1 : v < 0 ? -1 : 0;
+  if (Math.abs(v) > bound || bound === 0) return v > 0 ? 1 : v < 0 ? -1 : 0;
   certStats.exact++;
   return exactPolySign(orig, xScale === 0 ? x : mulPow2(x, xScale));
 }
 
 /** |value| at the last certSign point. */
 export function lastAbsValue(): number {
-  return lastAbs;
+  return last[0] as number;
 }
 
 /** Whether the last certSign point had |p| within the plain evaluation error bound. */

@@ -90,8 +90,8 @@ function ensure(n: number): void {
  * Taylor shift): they bound p there (convex hull property), and their number of sign changes V
  * bounds the number of roots, with the same parity (Descartes' rule for the Bernstein basis).
  * Returns 0 when every coefficient has one sign beyond its rounding margin (no root), 1 when all
- * signs are certain and V = 1 (exactly one simple root; `bernsteinGuess` is where the control
- * polygon crosses zero), −1 otherwise. About 3n²/2 flops.
+ * signs are certain and V = 1 (exactly one simple root; guesses[0] is where the control
+ * polygon crosses zero: guesses[0]), −1 otherwise. About 3n²/2 flops.
  */
 function bernstein(n: number, lo: number, hi: number): number {
   const T = bufA; // Taylor coefficients at lo, then scaled by h^k, then Bernstein coefficients
@@ -139,7 +139,7 @@ function bernstein(n: number, lo: number, hi: number): number {
       }
       if (d < 0 !== dPrev < 0) {
         dChanges++;
-        derivGuess = lo + (h * (j - 1 + dPrev / (dPrev - d))) / (n - 1);
+        guesses[1] = lo + (h * (j - 1 + dPrev / (dPrev - d))) / (n - 1);
       }
       dPrev = d;
     }
@@ -153,17 +153,20 @@ function bernstein(n: number, lo: number, hi: number): number {
     if (!(t > margin || t < -margin)) return -1;
     if (t < 0 !== prev < 0) {
       if (++changes > 1) return -1;
-      bernsteinGuess = lo + (h * (j - 1 + prev / (prev - t))) / n;
+      guesses[0] = lo + (h * (j - 1 + prev / (prev - t))) / n;
     }
     prev = t;
   }
   return changes;
 }
-let bernsteinGuess = 0;
+/**
+ * Double-valued results of bernstein(), kept in a typed array: storing a double into a module-level
+ * `let` allocates a heap number on every store, which showed up in profiles. [0] = where p's control
+ * polygon crosses zero (one sign change), [1] = the same for p′.
+ */
+const guesses = new Float64Array(2);
 /** Certified sign changes of p′'s Bernstein coefficients on the same interval: 0, 1, or −1 (more/unknown). */
 let derivChanges = -1;
-/** Where p′'s control polygon crosses zero when derivChanges = 1. */
-let derivGuess = 0;
 
 /**
  * p′ has exactly one simple root in (lo, lo + h) (Bernstein count): find it directly when p′(lo) and
@@ -179,8 +182,117 @@ function oneCriticalPoint(n: number, lo: number, hi: number): number {
     fb = fb * hi + (chain[i] as number);
   }
   if (fa === 0 || fb === 0 || fa < 0 === fb < 0) return criticalPoints(n, lo, hi);
-  bufA[0] = newtonPlain(chain, 0, n - 1, lo, hi, fa, fb, 0, derivGuess);
+  bufA[0] = newtonPlain(chain, 0, n - 1, lo, hi, fa, fb, 0, guesses[1] as number);
   return 1;
+}
+
+/**
+ * bernstein() for degree 4 in scalar arithmetic (no typed-array traffic: this is the hot path of
+ * collision quartics, most of which stop here). Same results contract as bernstein(); its
+ * Bernstein coefficients are computed directly as b_j = Σ_k C(j,k) a_k, a_k = T_k h^k / C(4,k).
+ */
+function bernstein4(
+  c0: number,
+  c1: number,
+  c2: number,
+  c3: number,
+  c4: number,
+  lo: number,
+  hi: number,
+): number {
+  let t0 = c0;
+  let t1 = c1;
+  let t2 = c2;
+  let t3 = c3;
+  let s0 = c0 < 0 ? -c0 : c0;
+  let s1 = c1 < 0 ? -c1 : c1;
+  let s2 = c2 < 0 ? -c2 : c2;
+  let s3 = c3 < 0 ? -c3 : c3;
+  const s4 = c4 < 0 ? -c4 : c4;
+  if (lo !== 0) {
+    // Taylor shift to lo (synthetic division), and of |p| to |lo| for the error scale.
+    const al = lo < 0 ? -lo : lo;
+    t3 += lo * c4;
+    t2 += lo * t3;
+    t1 += lo * t2;
+    t0 += lo * t1;
+    t3 += lo * c4;
+    t2 += lo * t3;
+    t1 += lo * t2;
+    t3 += lo * c4;
+    t2 += lo * t3;
+    t3 += lo * c4;
+    s3 += al * s4;
+    s2 += al * s3;
+    s1 += al * s2;
+    s0 += al * s1;
+    s3 += al * s4;
+    s2 += al * s3;
+    s1 += al * s2;
+    s3 += al * s4;
+    s2 += al * s3;
+    s3 += al * s4;
+  }
+  const h = (hi - lo) * (1 + 4 * UNIT_ROUNDOFF);
+  const h2 = h * h;
+  const h3 = h2 * h;
+  const h4 = h2 * h2;
+  const a1 = t1 * h * 0.25;
+  const a2 = (t2 * h2) / 6;
+  const a3 = t3 * h3 * 0.25;
+  const a4 = c4 * h4;
+  const margin = 24 * UNIT_ROUNDOFF * (s0 + s1 * h + s2 * h2 + s3 * h3 + s4 * h4);
+  derivChanges = -1;
+  if (!(margin < Number.POSITIVE_INFINITY)) return -1;
+  // p′'s Bernstein coefficients (up to the factor 4/h): d_j = b_{j+1} − b_j.
+  const d0 = a1;
+  const d1 = a1 + a2;
+  const d2 = a1 + 2 * a2 + a3;
+  const d3 = a1 + 3 * a2 + 3 * a3 + a4;
+  const dm = 3 * margin;
+  if ((d0 > dm || d0 < -dm) && (d1 > dm || d1 < -dm) && (d2 > dm || d2 < -dm) && (d3 > dm || d3 < -dm)) {
+    let k = 0;
+    if (d1 < 0 !== d0 < 0) {
+      k++;
+      guesses[1] = lo + (h * (d0 / (d0 - d1))) / 3;
+    }
+    if (d2 < 0 !== d1 < 0) {
+      k++;
+      guesses[1] = lo + (h * (1 + d1 / (d1 - d2))) / 3;
+    }
+    if (d3 < 0 !== d2 < 0) {
+      k++;
+      guesses[1] = lo + (h * (2 + d2 / (d2 - d3))) / 3;
+    }
+    derivChanges = k <= 1 ? k : -1;
+  }
+  const b0 = t0;
+  const b1 = t0 + a1;
+  const b2 = t0 + 2 * a1 + a2;
+  const b3 = t0 + 3 * a1 + 3 * a2 + a3;
+  const b4 = t0 + 4 * a1 + 6 * a2 + 4 * a3 + a4;
+  if (!(b0 > margin || b0 < -margin) || !(b1 > margin || b1 < -margin)) return -1;
+  if (!(b2 > margin || b2 < -margin) || !(b3 > margin || b3 < -margin) || !(b4 > margin || b4 < -margin)) {
+    return -1;
+  }
+  let k = 0;
+  if (b1 < 0 !== b0 < 0) {
+    k++;
+    guesses[0] = lo + (h * (b0 / (b0 - b1))) / 4;
+  }
+  if (b2 < 0 !== b1 < 0) {
+    k++;
+    guesses[0] = lo + (h * (1 + b1 / (b1 - b2))) / 4;
+  }
+  if (b3 < 0 !== b2 < 0) {
+    k++;
+    guesses[0] = lo + (h * (2 + b2 / (b2 - b3))) / 4;
+  }
+  if (b4 < 0 !== b3 < 0) {
+    k++;
+    guesses[0] = lo + (h * (3 + b3 / (b3 - b4))) / 4;
+  }
+  return k <= 1 ? k : -1;
 }
 
 /** Interior roots of the derivative of P[0..m] (m ≥ 2) in (lo, hi), sorted, into bufA; count. */
@@ -240,9 +352,32 @@ export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): nu
   if (lo < -B) lo = -B;
   if (hi > B) hi = B;
   if (lo > hi) return out;
+  const M = Math.max(-lo, hi, lo, -hi);
+  // Hot path (collision quartics): a quartic needing no scaling is first tested by the scalar
+  // Bernstein check, before anything is copied; most stop here.
+  let v = -2;
+  if (
+    n === 4 &&
+    lo < hi &&
+    maxAbs >= SMALL &&
+    maxAbs <= BIG &&
+    M <= (MOD_LIMIT[4] as number) &&
+    M * (MOD_LIMIT[4] as number) >= 1
+  ) {
+    v = bernstein4(
+      coeffs[0] as number,
+      coeffs[1] as number,
+      coeffs[2] as number,
+      coeffs[3] as number,
+      coeffs[4] as number,
+      lo,
+      hi,
+    );
+    if (v === 0) return out;
+  }
   // Exact power-of-two scaling: coefficients to about 1 and, for extreme intervals, the variable
   // (t = 2^xs·s) so that |s| ≤ 1; the roots are unchanged (up to that exact factor).
-  const xs = normalise(coeffs, n, maxAbs, Math.max(-lo, hi, lo, -hi));
+  const xs = normalise(coeffs, n, maxAbs, M);
   if (xs !== 0) {
     lo = mulPow2(lo, -xs);
     hi = mulPow2(hi, -xs);
@@ -251,7 +386,7 @@ export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): nu
   if (lo === hi) {
     if (certSign(lo) === 0) out.push(lo);
   } else {
-    solveScaled(n, lo, hi, out);
+    solveScaled(n, lo, hi, out, xs === 0 ? v : -2);
   }
   if (xs !== 0) for (let i = 0; i < out.length; i++) out[i] = mulPow2(out[i] as number, xs);
   return out;
@@ -285,8 +420,11 @@ function normalise(coeffs: ArrayLike<number>, n: number, maxAbs: number, M: numb
   return xs;
 }
 
-/** The solve proper on the normalised polynomial P (degree n) over lo < hi; appends to out. */
-function solveScaled(n: number, lo: number, hi: number, out: number[]): void {
+/**
+ * The solve proper on the normalised polynomial P (degree n) over lo < hi; appends to out. `known`
+ * is bernstein()'s result when the caller already computed it (−2 otherwise).
+ */
+function solveScaled(n: number, lo: number, hi: number, out: number[], known: number): void {
   // Degree drop: leading terms below one rounding of a lower term over the whole interval.
   const M = Math.max(-lo, hi, lo, -hi);
   let m = n;
@@ -304,7 +442,7 @@ function solveScaled(n: number, lo: number, hi: number, out: number[]): void {
     m--;
   }
   if (m === 0) return; // every other term is below u·|c0|: p keeps the sign of c0
-  const v = bernstein(n, lo, hi);
+  const v = known !== -2 ? known : bernstein(n, lo, hi); // −2: not computed yet
   if (v === 0) return;
   if (v === 1) {
     // Exactly one simple root in (lo, lo + h): when p(lo) and p(hi) have opposite exact signs it is
@@ -314,7 +452,7 @@ function solveScaled(n: number, lo: number, hi: number, out: number[]): void {
     const sb = certSign(hi);
     if (sa !== 0 && sb === -sa) {
       const absHi = lastAbsValue();
-      const x0 = newtonPlain(P, 0, n, lo, hi, sa * absLo, sb * absHi, 0, bernsteinGuess);
+      const x0 = newtonPlain(P, 0, n, lo, hi, sa * absLo, sb * absHi, 0, guesses[0] as number);
       push(out, refineRoot(lo, hi, sa, absLo, absHi, x0));
       return;
     }
