@@ -58,7 +58,6 @@ export function EventLog() {
         <table aria-label="Event log">
           <thead>
             <tr>
-              <th>#</th>
               <th>time</th>
               <th>kind</th>
               <th>participants</th>
@@ -66,11 +65,11 @@ export function EventLog() {
           </thead>
           <tbody>
             {page?.events.map((e, k) => {
-              const index = page.first + k;
+              const key = `${e.time}:${e.type}:${e.ids.join(",")}:${k}`;
               const cls = e.time === t ? "current" : e.time < t ? "past" : undefined;
               return (
                 <tr
-                  key={index}
+                  key={key}
                   className={cls}
                   tabIndex={0}
                   onClick={() =>
@@ -85,7 +84,6 @@ export function EventLog() {
                     if (ev.key === "Enter") ev.currentTarget.click();
                   }}
                 >
-                  <td>{index + 1}</td>
                   <td>{formatNumber(e.time)}</td>
                   <td>{KIND_NAMES[e.type] ?? e.type}</td>
                   <td>{e.ids.join(", ")}</td>

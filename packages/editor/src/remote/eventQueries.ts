@@ -1,23 +1,16 @@
 /**
- * Read-only queries over a timeline's event log for the UI: the page of events around a time
- * (optionally only those of one body), downsampled event times for the scrubber's ticks.
- * All are O(log n) in the log size except building a body filter (done once per revision by the host).
+ * Read-only queries over a timeline's event log for the UI. Built on nextEventTime / prevEventTime
+ * (O(log n)) and one eventsBetween per query: reading single events by index is costly in the
+ * engine (each read reconstructs its contact data), reading a time window is not.
  */
 import type { LogEvent } from "../engineTypes";
 import type { EventPage } from "./protocol";
 import type { TimelineLike } from "./timelineLike";
 
-/** Number of logged events with time <= t (the index of the first event after t). */
-export function firstEventAfter(tl: Pick<TimelineLike, "eventCount" | "event">, t: number): number {
-  let lo = 0;
-  let hi = tl.eventCount;
-  while (lo < hi) {
-    const mid = (lo + hi) >>> 1;
-    if (tl.event(mid).time <= t) lo = mid + 1;
-    else hi = mid;
-  }
-  return lo;
-}
+type Log = Pick<TimelineLike, "eventCount" | "nextEventTime" | "prevEventTime" | "eventsBetween" | "horizon">;
+
+/** Largest number of events one filtered query may read on each side of t. */
+export const FILTER_SCAN_LIMIT = 200_000;
 
 function copy(e: LogEvent): LogEvent {
   return {
@@ -30,41 +23,94 @@ function copy(e: LogEvent): LogEvent {
   };
 }
 
-/**
- * Up to `before` events at or before t and `after` events after t, in time order. With `indices`
- * (the log indices of one body's events, ascending) only those events count.
- */
-export function eventPage(
-  tl: Pick<TimelineLike, "eventCount" | "event">,
-  t: number,
-  before: number,
-  after: number,
-  indices: number[] | null,
-): EventPage {
-  const total = indices ? indices.length : tl.eventCount;
-  const at = (k: number) => tl.event(indices ? indices[k]! : k);
-  let lo = 0;
-  let hi = total;
-  while (lo < hi) {
-    const mid = (lo + hi) >>> 1;
-    if (at(mid).time <= t) lo = mid + 1;
-    else hi = mid;
+/** The time `steps` distinct event times after t (null when there is none). */
+function walkForward(tl: Log, t: number, steps: number): number | null {
+  let last: number | null = null;
+  for (let k = 0; k < steps; k++) {
+    const n = tl.nextEventTime(last ?? t);
+    if (n === null) break;
+    last = n;
   }
-  const first = Math.max(0, lo - before);
-  const end = Math.min(total, lo + after);
-  const events: LogEvent[] = [];
-  for (let k = first; k < end; k++) events.push(copy(at(k)));
-  return { first, total, events };
+  return last;
 }
 
-/** At most n event times spread evenly over the log (all of them when there are few). */
-export function eventTicks(tl: Pick<TimelineLike, "eventCount" | "event">, n: number): number[] {
-  const count = tl.eventCount;
-  const out: number[] = [];
-  if (count <= n) {
-    for (let i = 0; i < count; i++) out.push(tl.event(i).time);
-    return out;
+/** The earliest of the `steps` distinct event times before t (t itself when there is none). */
+function walkBack(tl: Log, t: number, steps: number): number {
+  let at = t;
+  for (let k = 0; k < steps; k++) {
+    const p = tl.prevEventTime(at);
+    if (p === null) break;
+    at = p;
   }
-  for (let k = 0; k < n; k++) out.push(tl.event(Math.floor((k * (count - 1)) / (n - 1))).time);
+  return at;
+}
+
+/**
+ * Up to `before` events at or before t and `after` events after t, in time order (events sharing a
+ * time count once per time when walking). With `body`, only that body's events, found by scanning
+ * windows outward from t (at most FILTER_SCAN_LIMIT events per side).
+ */
+export function eventPage(tl: Log, t: number, before: number, after: number, body: string | null): EventPage {
+  const total = tl.eventCount;
+  if (total === 0) return { first: -1, total, events: [] };
+  if (body === null) {
+    const t0 = walkBack(tl, t, before);
+    const t1 = walkForward(tl, t, after) ?? t;
+    const all = tl.eventsBetween(t0, t1);
+    const split = all.findIndex((e) => e.time > t);
+    const mid = split < 0 ? all.length : split;
+    const events = all.slice(Math.max(0, mid - before), mid + after).map(copy);
+    return { first: -1, total, events };
+  }
+  const mine = (e: LogEvent) => e.ids.includes(body);
+  const density = Math.max(tl.horizon / total, 1e-12);
+  const back: LogEvent[] = [];
+  const ahead: LogEvent[] = [];
+  // backwards from t
+  let hi = t;
+  let span = density * 1000;
+  let scanned = 0;
+  while (back.length < before && hi > 0 && scanned < FILTER_SCAN_LIMIT) {
+    const lo = Math.max(0, hi - span);
+    const win = tl.eventsBetween(lo, hi);
+    scanned += win.length;
+    const found = win.filter((e) => mine(e) && e.time <= t && (e.time < hi || hi === t));
+    back.unshift(...found);
+    if (lo === 0) break;
+    hi = lo;
+    span *= 2;
+  }
+  // forwards from t
+  let lo = t;
+  span = density * 1000;
+  scanned = 0;
+  while (ahead.length < after && lo < tl.horizon && scanned < FILTER_SCAN_LIMIT) {
+    const top = Math.min(tl.horizon, lo + span);
+    const win = tl.eventsBetween(lo, top);
+    scanned += win.length;
+    ahead.push(...win.filter((e) => mine(e) && e.time > lo));
+    lo = top;
+    span *= 2;
+  }
+  // Windows share their edges; each window keeps only events strictly inside its far edge.
+  const events = [...back.slice(-before), ...ahead.slice(0, after)].map(copy);
+  return { first: -1, total, events };
+}
+
+/** Event times for the scrubber: for each of n equal bins of [0, horizon], the first event in it. */
+export function eventTicks(tl: Log, n: number): number[] {
+  const out: number[] = [];
+  const h = tl.horizon;
+  if (tl.eventCount === 0 || !(h > 0)) return out;
+  let k = 0;
+  let from = -1;
+  while (k < n) {
+    const next = tl.nextEventTime(from);
+    if (next === null) break;
+    out.push(next);
+    // jump to the bin after the one holding `next`
+    k = Math.floor((next / h) * n) + 1;
+    from = Math.max((k * h) / n, next);
+  }
   return out;
 }

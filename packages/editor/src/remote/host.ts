@@ -7,7 +7,7 @@
  */
 import type { Action, SceneFile, Until } from "../engineTypes";
 import { errorInfo } from "./errors";
-import { eventPage, eventTicks, firstEventAfter } from "./eventQueries";
+import { eventPage, eventTicks } from "./eventQueries";
 import { packFrame } from "./packFrame";
 import type {
   ComputeStatus,
@@ -17,6 +17,7 @@ import type {
   SeriesPoint,
   TimelineInfo,
 } from "./protocol";
+import { SeriesRecorder } from "./series";
 import type { TimelineFactory, TimelineLike } from "./timelineLike";
 
 /** Wall-clock milliseconds one round of slices may take before the host yields to messages. */
@@ -43,7 +44,7 @@ export class TimelineHost {
   private idle = false;
   private job: Job | null = null;
   private scheduled = false;
-  private filterCache: { revision: number; body: string; indices: number[] } | null = null;
+  private readonly series = new SeriesRecorder();
 
   constructor(
     private readonly factory: TimelineFactory,
@@ -71,6 +72,7 @@ export class TimelineHost {
         const tl = this.factory(r.scene);
         this.job = null;
         this.tl = tl;
+        this.series.clear();
         this.changed(true);
         return null;
       }
@@ -91,11 +93,11 @@ export class TimelineHost {
       case "prevEvent":
         return this.tl.prevEventTime(r.t);
       case "events":
-        return eventPage(this.tl, r.t, r.before, r.after, r.body === null ? null : this.filtered(r.body));
+        return eventPage(this.tl, r.t, r.before, r.after, r.body);
       case "ticks":
         return eventTicks(this.tl, r.n);
       case "series":
-        return this.series(r.n);
+        return this.series.points(r.n);
     }
   }
 
@@ -104,6 +106,7 @@ export class TimelineHost {
     const horizon = this.tl.horizon;
     this.job = null;
     let applied = 0;
+    this.series.cut(Math.min(...actions.map((a) => a.time)));
     try {
       for (const a of actions) {
         this.tl.apply(a);
@@ -177,31 +180,9 @@ export class TimelineHost {
     if (this.job) this.kick();
   }
 
-  private filtered(body: string): number[] {
-    const c = this.filterCache;
-    if (c && c.revision === this.revision && c.body === body) return c.indices;
-    const indices: number[] = [];
-    for (let i = 0; i < this.tl.eventCount; i++) if (this.tl.event(i).ids.includes(body)) indices.push(i);
-    this.filterCache = { revision: this.revision, body, indices };
-    return indices;
-  }
-
-  private series(n: number): SeriesPoint[] {
-    const out: SeriesPoint[] = [];
-    const h = this.tl.horizon;
-    const steps = h > 0 ? n : 0;
-    for (let i = 0; i <= steps; i++) {
-      const t = steps === 0 ? 0 : (h * i) / steps;
-      const s = this.tl.stateAt(t);
-      let energy = 0;
-      for (const b of s.bodies) if (Number.isFinite(b.m)) energy += 0.5 * b.m * (b.vx * b.vx + b.vy * b.vy);
-      out.push({ t, energy, collisions: firstEventAfter(this.tl, t) });
-    }
-    return out;
-  }
-
   private changed(docChanged: boolean): void {
     this.revision++;
+    this.series.record(this.tl);
     if (docChanged) {
       this.docRevision++;
       this.idle = false;
@@ -219,7 +200,7 @@ export class TimelineHost {
       horizon: tl.horizon,
       eventCount: n,
       counts: tl.counts(),
-      lastEventTime: n > 0 ? tl.event(n - 1).time : null,
+      lastEventTime: n > 0 ? tl.lastLoggedTime() : null,
       idle: this.idle,
       doc: sendDoc ? tl.toScene() : null,
       docRevision: this.docRevision,

@@ -84,8 +84,9 @@ export type Request =
 export type RequestMessage = Request & { id: number };
 
 export interface EventPage {
-  /** Index of the first returned event in the (filtered) log. */
+  /** Index of the first returned event in the log, or -1 when not known (the log is read by time). */
   first: number;
+  /** Number of events in the whole log. */
   total: number;
   events: LogEvent[];
 }
