@@ -9,14 +9,7 @@ import type { Action, SceneFile, Until } from "../engineTypes";
 import { errorInfo } from "./errors";
 import { eventPage, eventTicks } from "./eventQueries";
 import { packFrame } from "./packFrame";
-import type {
-  ComputeStatus,
-  HostMessage,
-  Request,
-  RequestMessage,
-  SeriesPoint,
-  TimelineInfo,
-} from "./protocol";
+import type { ComputeStatus, HostMessage, Request, RequestMessage, TimelineInfo } from "./protocol";
 import { SeriesRecorder } from "./series";
 import type { TimelineFactory, TimelineLike } from "./timelineLike";
 
