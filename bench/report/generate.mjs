@@ -440,15 +440,23 @@ function galperinExplanation(P) {
     lines.push(
       `Every digit count run was correct (up to ${last?.digits ?? 0} digits); the next one was not run within the time budget, so the first wrong digit count is not measured in this run.`,
     );
+    if (last && Number.isFinite(last.minGap)) {
+      const at = last.minGapAt ?? last.lastTime;
+      const ulpT = 2 ** (Math.floor(Math.log2(at)) - 52);
+      lines.push(
+        `Extrapolation (not a measurement): the smallest gap between event times shrinks 100× per digit (${sig(last.minGap)} at ${last.digits} digits), so at ${last.digits + 1} digits it would be ≈ ${sig(last.minGap / 100)}, against one ulp of the event time (${sig(ulpT)} near t = ${sig(at)}, where that smallest gap occurs): collision times then stop being distinguishable in doubles, which is where the count is expected to break.`,
+      );
+    }
   } else {
     const M = 100 ** (bad.digits - 1);
-    const ulpT = 2 ** (Math.floor(Math.log2(Math.max(bad.lastTime, 1e-300))) - 52);
+    const at = bad.minGapAt || bad.lastTime;
+    const ulpT = 2 ** (Math.floor(Math.log2(Math.max(at, 1e-300))) - 52);
     lines.push(
       `First wrong digit count: **${bad.digits}** (counted ${int(bad.count)}, exact ${int(bad.expected)}${bad.error ? `; the run stopped with: ${bad.error}` : ""}).`,
     );
     lines.push(
       `Why: with mass ratio M = 100^${bad.digits - 1} = ${sig(M)} the light disc reaches speed ≈ √M = ${sig(Math.sqrt(M))} and, near the heavy disc's turning point, gaps of ≈ ${sig(1 / Math.sqrt(M))}, so consecutive collisions are ≈ 1/M = ${sig(1 / M)} apart in time. ` +
-        `Event times are doubles near t ≈ ${sig(bad.lastTime)}, where one ulp is ${sig(ulpT)}; the smallest gap measured between distinct event times was ${sig(bad.minGap)} and ${int(bad.sameTime)} events fell on an identical time. ` +
+        `Event times are doubles near t ≈ ${sig(at)} (where the collisions crowd), where one ulp is ${sig(ulpT)}; the smallest gap measured between distinct event times was ${sig(bad.minGap)} and ${int(bad.sameTime)} events fell on an identical time. ` +
         `Once 1/M approaches the ulp of t, collision times can no longer be told apart (and the velocity update's (M − m)/(M + m) loses the light disc's contribution: M + 1 = M in doubles once M > 2^53 ≈ 9.0e15), so the count drifts off π's digits. This is a limit of double precision, not of the method; exact (rational) time and velocity arithmetic would push it further.`,
     );
   }

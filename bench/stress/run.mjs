@@ -115,9 +115,13 @@ function galperinPush(engine, { maxDigits, budgetSeconds, log }) {
     let minGap = Number.POSITIVE_INFINITY;
     let sameTime = 0;
     let lastTime = 0;
+    let minGapAt = 0;
     const onEvent = (e) => {
       if (e.time === prev) sameTime++;
-      else if (prev > Number.NEGATIVE_INFINITY) minGap = Math.min(minGap, e.time - prev);
+      else if (prev > Number.NEGATIVE_INFINITY && e.time - prev < minGap) {
+        minGap = e.time - prev;
+        minGapAt = e.time;
+      }
       prev = e.time;
       lastTime = e.time;
     };
@@ -139,6 +143,7 @@ function galperinPush(engine, { maxDigits, budgetSeconds, log }) {
       correct: !error && count === expected,
       seconds: lastSeconds,
       minGap,
+      minGapAt,
       sameTime,
       lastTime,
       error,
