@@ -271,6 +271,26 @@ function bernstein4(
   const b2 = t0 + 2 * a1 + a2;
   const b3 = t0 + 3 * a1 + 3 * a2 + a3;
   const b4 = t0 + 4 * a1 + 6 * a2 + 4 * a3 + a4;
+  if ((b0 > margin && b4 > margin) || (b0 < -margin && b4 < -margin)) {
+    // Same sign at both ends: no root, or an even number. One de Casteljau split at the middle
+    // often proves none (the halves' coefficients are averages: error ≤ margin + 4u·max|b| ≤ 2·margin).
+    const l1 = 0.5 * (b0 + b1);
+    const m1 = 0.5 * (b1 + b2);
+    const m2 = 0.5 * (b2 + b3);
+    const r3 = 0.5 * (b3 + b4);
+    const l2 = 0.5 * (l1 + m1);
+    const m3 = 0.5 * (m1 + m2);
+    const r2 = 0.5 * (m2 + r3);
+    const l3 = 0.5 * (l2 + m3);
+    const r1 = 0.5 * (m3 + r2);
+    const mid = 0.5 * (l3 + r1);
+    const m2x = 2 * margin;
+    if (b0 > 0) {
+      if (l1 > m2x && l2 > m2x && l3 > m2x && mid > m2x && r1 > m2x && r2 > m2x && r3 > m2x) return 0;
+    } else if (l1 < -m2x && l2 < -m2x && l3 < -m2x && mid < -m2x && r1 < -m2x && r2 < -m2x && r3 < -m2x) {
+      return 0;
+    }
+  }
   if (!(b0 > margin || b0 < -margin) || !(b1 > margin || b1 < -margin)) return -1;
   if (!(b2 > margin || b2 < -margin) || !(b3 > margin || b3 < -margin) || !(b4 > margin || b4 < -margin)) {
     return -1;
