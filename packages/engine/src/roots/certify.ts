@@ -233,8 +233,8 @@ function certDerivSign(x: number): number {
 /**
  * Refine an approximate critical point x of P inside (lo, hi) to where the exact P' changes sign.
  * Writes the two adjacent doubles around the sign change (equal when P' is exactly 0 there) into
- * out[0], out[1] and returns true; returns false (out = x, x) when P' has no sign change within
- * 2^48 ulps of x inside (lo, hi) (then x is not a confirmed critical point).
+ * out[0], out[1] and returns true; returns false (out = x, x) when P' has no sign change in
+ * (lo, hi) found by probing at 1, 2, 4, … ulps from x (then x is not a confirmed critical point).
  */
 export function criticalPoint(x: number, lo: number, hi: number, out: Float64Array): boolean {
   out[0] = x;
@@ -243,35 +243,49 @@ export function criticalPoint(x: number, lo: number, hi: number, out: Float64Arr
   loadDerivative();
   const s0 = certDerivSign(x);
   if (s0 === 0) return true;
-  // Search both directions at 1, 2, 4, … 2^48 ulps for the nearest sign change of P' (the structural
-  // critical point may be off by many ulps next to a multiple root), then bisect it.
+  // Search both directions at 1, 2, 4, … ulps (up to the neighbouring points) for the nearest sign
+  // change of P' (the structural critical point may be far off next to a multiple root), then bisect.
   const ax = x < 0 ? -x : x;
   const ulp = x === 0 ? Number.MIN_VALUE : nextUp(ax) - ax;
+  // The last probe on each side is the double next to the limit, so the whole of (lo, hi) is covered.
+  const upLimit = nextDown(hi);
+  const downLimit = nextUp(lo);
   let prevUp = x;
   let prevDown = x;
+  let upDone = !(x < upLimit);
+  let downDone = !(x > downLimit);
   let off = ulp;
-  for (let k = 0; k <= 48; k++, off *= 2) {
-    const up = x + off;
-    const down = x - off;
-    const upIn = up < hi && up > prevUp;
-    const downIn = down > lo && down < prevDown;
-    if (upIn) {
-      const s = certDerivSign(up);
-      if (s !== s0) {
-        bisectDerivative(prevUp, up, s0, s, out);
-        return true;
+  for (let k = 0; k <= 60 && !(upDone && downDone); k++, off *= 2) {
+    if (!upDone) {
+      let up = x + off;
+      if (!(up < upLimit)) {
+        up = upLimit;
+        upDone = true;
       }
-      prevUp = up;
-    }
-    if (downIn) {
-      const s = certDerivSign(down);
-      if (s !== s0) {
-        bisectDerivative(down, prevDown, s, s0, out);
-        return true;
+      if (up > prevUp) {
+        const s = certDerivSign(up);
+        if (s !== s0) {
+          bisectDerivative(prevUp, up, s0, s, out);
+          return true;
+        }
+        prevUp = up;
       }
-      prevDown = down;
     }
-    if (!upIn && !downIn && !(up < hi) && !(down > lo)) break;
+    if (!downDone) {
+      let down = x - off;
+      if (!(down > downLimit)) {
+        down = downLimit;
+        downDone = true;
+      }
+      if (down < prevDown) {
+        const s = certDerivSign(down);
+        if (s !== s0) {
+          bisectDerivative(down, prevDown, s, s0, out);
+          return true;
+        }
+        prevDown = down;
+      }
+    }
   }
   return false;
 }

@@ -241,6 +241,17 @@ describe("realRoots: regression (fast-check clusters)", () => {
   });
 });
 
+describe("realRoots: regression (fast-check clusters, a rounded 4-fold cluster)", () => {
+  it("roots c + {1, 1, −3, 3}·1e-7 near −10: the critical point ~1e-4 off is corrected by exact p′ signs", () => {
+    const c = [9999.999799996767, 3999.999939999031, 599.9999939999032, 39.99999979999677, 1];
+    const lo = -10.999999999999194;
+    const hi = -8.999999999999194;
+    const r = expectCertified(c, lo, hi, 64);
+    expect(r.length).toBe(2);
+    expect(r[0]).toBe(-10);
+  });
+});
+
 describe("realRoots: input validation", () => {
   it("refuses non-finite coefficients, naming the field", () => {
     expect(() => realRoots([1, Number.NaN, 2], 0, 1)).toThrow(/coeffs\[1\] must be a finite number/);
