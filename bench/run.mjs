@@ -1,7 +1,9 @@
 /**
  * `npm run bench [-- --quick] [-- --only=solver,peers,engine,stress]`: runs the benchmark sections
- * against the BUILT engine, writes bench/results/latest.json (quick runs: bench/results/tmp/quick.json, not committed),
- * then generates docs/benchmarks.md, docs/benchmarks-headline.md and docs/bench/*.svg from it.
+ * against the BUILT engine, writes bench/results/latest.json (quick runs: bench/results/tmp/quick.json,
+ * not committed), then generates docs/benchmarks.md, docs/benchmarks-headline.md and docs/bench/*.svg.
+ * `--push-digits=N` instead runs only Galperin's billiard pushed to N digits with no time budget
+ * (9 digits take about ten minutes) into bench/results/galperin-push.json, which the report merges.
  * Re-executes itself with --expose-gc so runs can collect garbage between measurements.
  */
 import { spawnSync } from "node:child_process";
@@ -39,6 +41,7 @@ const log = (m) => console.log(m);
 
 const t0 = nowNs();
 const { engine, notes } = await loadEngine();
+const pushArg = args.find((a) => a.startsWith("--push-digits="));
 const results = { quick, date: new Date().toISOString(), machine: machine(), notes };
 log(
   `chapgame bench (${quick ? "quick" : "full"}) on ${results.machine.cpu}, ${results.machine.cores} cores, Node ${results.machine.node}`,
@@ -56,6 +59,23 @@ const section = async (name, fn) => {
   }
   log(`   ${name} took ${((nowNs() - a) / 1e9).toFixed(1)} s`);
 };
+
+if (pushArg) {
+  // Long separate run: Galperin's billiard digit by digit up to N with no time budget, written to
+  // bench/results/galperin-push.json; the report merges its rows beyond the main run's.
+  const { galperinPush } = await import("./stress/run.mjs");
+  const maxDigits = Number(pushArg.slice("--push-digits=".length));
+  const push = galperinPush(engine, { maxDigits, budgetSeconds: Number.POSITIVE_INFINITY, log });
+  const out = {
+    date: new Date().toISOString(),
+    machine: machine(),
+    seconds: (nowNs() - t0) / 1e9,
+    galperinPush: push,
+  };
+  writeFileSync(join(ROOT, "bench", "results", "galperin-push.json"), `${JSON.stringify(out, null, 1)}\n`);
+  log(`wrote bench/results/galperin-push.json; rerun the report with node bench/report/generate.mjs`);
+  process.exit(0);
+}
 
 await section("solver", runSolver);
 await section("peers", runPeers);

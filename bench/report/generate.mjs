@@ -4,7 +4,7 @@
  * JSON; the prose here only names what was measured and the fixed caveats of the method.
  * Usage: node bench/report/generate.mjs [results.json]   (default bench/results/latest.json)
  */
-import { mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
 import { dash, int, ms, sig, status, table } from "./format.mjs";
@@ -405,10 +405,10 @@ function stressSection(s, out, svgs) {
         "counted",
         "correct",
         "time",
-        "smallest gap between event times",
+        "smallest gap between event times (at t)",
         "events at an identical time",
         "last event at",
-        "error",
+        "error / note",
       ],
       P.rows.map((r) =>
         r.skipped
@@ -419,10 +419,10 @@ function stressSection(s, out, svgs) {
               int(r.count),
               r.correct ? "yes" : "**no**",
               `${sig(r.seconds)} s`,
-              sig(r.minGap),
+              `${sig(r.minGap)}${r.minGapAt ? ` (${sig(r.minGapAt)})` : ""}`,
               int(r.sameTime),
               sig(r.lastTime, 17),
-              r.error ?? "",
+              [r.error, r.source].filter(Boolean).join("; "),
             ],
       ),
     ),
@@ -438,7 +438,7 @@ function galperinExplanation(P) {
   const lines = [];
   if (!bad) {
     lines.push(
-      `Every digit count run was correct (up to ${last?.digits ?? 0} digits); the next one was not run within the time budget, so the first wrong digit count is not measured in this run.`,
+      `Every digit count run was correct (up to ${last?.digits ?? 0} digits); the next one was not run (each digit costs 10× the events of the one before), so the first wrong digit count is not measured.`,
     );
     if (last && Number.isFinite(last.minGap)) {
       const at = last.minGapAt ?? last.lastTime;
@@ -579,7 +579,27 @@ function headline(r) {
   return table(["benchmark", "chapgame", "comparison (same run)", "target", "status"], rows);
 }
 
+/**
+ * Merge the rows of a separate `--push-digits` run (bench/results/galperin-push.json) that go beyond
+ * what the main run measured; those rows say where they come from.
+ */
+function mergePush(results, root) {
+  const file = join(root, "bench", "results", "galperin-push.json");
+  const P = results.stress?.galperinPush;
+  if (!P || !existsSync(file)) return;
+  const extra = JSON.parse(readFileSync(file, "utf8"));
+  const measured = new Set(P.rows.filter((r) => !r.skipped).map((r) => r.digits));
+  const add = extra.galperinPush.rows
+    .filter((r) => !r.skipped && !measured.has(r.digits))
+    .map((r) => ({ ...r, source: `separate run \`--push-digits\` of ${extra.date.slice(0, 10)}` }));
+  if (add.length === 0) return;
+  P.rows = [...P.rows.filter((r) => !r.skipped), ...add].sort((a, b) => a.digits - b.digits);
+  P.firstWrong = P.rows.find((r) => r.correct === false)?.digits ?? null;
+  P.lastCorrect = P.rows.filter((r) => r.correct).at(-1)?.digits ?? 0;
+}
+
 export function generate(results, { root = ROOT } = {}) {
+  mergePush(results, root);
   const svgs = {};
   const out = [];
   out.push("# Benchmarks\n");

@@ -96,12 +96,12 @@ function longRun(engine, total, maxSeconds, log) {
   };
 }
 
-function galperinPush(engine, { maxDigits, budgetSeconds, log }) {
+export function galperinPush(engine, { maxDigits, budgetSeconds, log }) {
   const rows = [];
   let lastSeconds = 0;
   for (let d = 1; d <= maxDigits; d++) {
     const estimate = lastSeconds * 10;
-    if (d > 7 && estimate > budgetSeconds) {
+    if (d > 7 && estimate > budgetSeconds && Number.isFinite(budgetSeconds)) {
       rows.push({
         digits: d,
         skipped: `estimated ${estimate.toFixed(0)} s (10× the previous digit) exceeds the ${budgetSeconds} s budget`,
