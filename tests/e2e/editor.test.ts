@@ -15,8 +15,10 @@ let s: Session;
 let page: Page;
 
 const bodies = () => page.getByRole("table", { name: "Bodies" });
-const cell = (name: string) => bodies().getByRole("textbox", { name, exact: true });
-const cellValue = async (name: string) => Number(await cell(name).inputValue());
+/** A Bodies cell by its accessible name ("striker vx"): a button at rest, an input while edited. */
+const cell = (name: string) => bodies().getByLabel(name, { exact: true });
+const cellValue = async (name: string) =>
+  Number(await cell(name).evaluate((el) => (el instanceof HTMLInputElement ? el.value : el.textContent)));
 
 async function loadPreset(title: RegExp | string) {
   const select = page.getByRole("combobox", { name: "Preset" });
@@ -27,10 +29,10 @@ async function loadPreset(title: RegExp | string) {
 }
 
 async function editCell(name: string, text: string) {
-  const c = cell(name);
-  await c.click();
-  await c.fill(text);
-  await c.press("Enter");
+  await cell(name).click();
+  const input = bodies().getByRole("textbox", { name, exact: true });
+  await input.fill(text);
+  await input.press("Enter");
 }
 
 beforeAll(async () => {

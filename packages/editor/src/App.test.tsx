@@ -34,7 +34,7 @@ describe("App", () => {
 
   it("the Bodies table shows the state at the current time", async () => {
     const { editor, bodies } = await renderApp();
-    const x = () => (within(bodies).getByRole("textbox", { name: "striker x" }) as HTMLInputElement).value;
+    const x = () => within(bodies).getByRole("button", { name: "striker x" }).textContent;
     expect(x()).toBe("-6");
     act(() => editor.setTime(0.25));
     await waitFor(() => expect(x()).toBe("-5"), { timeout: 4000 });

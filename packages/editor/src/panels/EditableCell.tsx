@@ -1,8 +1,10 @@
 /**
- * An editable table cell: an input showing a live value; while focused it holds the user's draft.
- * Enter or leaving the cell commits a changed draft through `onCommit`, which resolves to an error
- * message (the value is refused and the message shown in place, the draft kept for correction) or
- * null (accepted). Escape restores the live value.
+ * An editable table cell. At rest it is a button showing the live value (cheap: tables of hundreds
+ * of cells stay light to lay out and paint while values change); clicking or focusing it opens an
+ * input holding the user's draft. Enter or leaving the input commits a changed draft through
+ * `onCommit`, which resolves to an error message (the value is refused, the message shown in place,
+ * the draft kept for correction) or null (accepted). Escape closes without committing.
+ * Both the button and the input carry `label` as their accessible name.
  */
 import { useId, useState } from "react";
 
@@ -18,18 +20,33 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
   const [error, setError] = useState<string | null>(null);
   const errorId = useId();
 
+  const close = () => {
+    setDraft(null);
+    setError(null);
+  };
+
   const commit = async () => {
     if (draft === null || draft === value) {
-      setDraft(null);
-      setError(null);
+      close();
       return;
     }
     const err = await onCommit(draft.trim());
-    if (err === null) {
-      setDraft(null);
-      setError(null);
-    } else setError(err);
+    if (err === null) close();
+    else setError(err);
   };
+
+  if (draft === null)
+    return (
+      <button
+        type="button"
+        className="cell-view"
+        aria-label={label}
+        onClick={() => setDraft(value)}
+        onFocus={() => setDraft(value)}
+      >
+        {value}
+      </button>
+    );
 
   return (
     <span className="cell">
@@ -38,19 +55,16 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
         aria-invalid={error !== null}
         aria-describedby={error ? errorId : undefined}
         size={size}
-        value={draft ?? value}
-        onFocus={() => setDraft(value)}
+        // biome-ignore lint/a11y/noAutofocus: the input replaces the focused cell button
+        autoFocus
+        value={draft}
         onChange={(e) => setDraft(e.target.value)}
         onBlur={() => {
           if (error === null) void commit();
         }}
         onKeyDown={(e) => {
           if (e.key === "Enter") void commit();
-          if (e.key === "Escape") {
-            setDraft(null);
-            setError(null);
-            e.currentTarget.blur();
-          }
+          if (e.key === "Escape") close();
         }}
       />
       {error && (
