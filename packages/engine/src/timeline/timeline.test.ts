@@ -3,6 +3,7 @@ import { SceneError } from "../scene/errors.js";
 import { parseScene } from "../scene/parse.js";
 import { dilutedGas, galperin, newtonsCradle, originalDemo } from "../scene/presets.js";
 import type { Action, SceneFile } from "../scene/types.js";
+import { SimulationError } from "../sim/errors.js";
 import type { WorldEvent } from "../sim/types.js";
 import { World } from "../sim/world.js";
 import { applyToWorld } from "./applyAction.js";
@@ -151,6 +152,27 @@ describe("Timeline agrees with the World", () => {
     expect(tl.prevEventTime(t)).toBe(stepped[stepped.length - 2]);
     expect(tl.prevEventTime(0)).toBeNull();
     expect(() => tl.event(all.length)).toThrow(RangeError);
+  });
+});
+
+describe("a scene the exact model cannot continue (Zeno)", () => {
+  it("a frictionless disc pushing a braking one: prolong throws, the history before it stays readable", () => {
+    // found by the slices property (seed 7): collisions and stops converge geometrically to t ≈ 52.249
+    const s = scene(
+      [
+        { time: 0, type: "addBody", id: "b0", x: 3, y: 3, r: 0.3, m: 0.7401641156608975, mu: 0, v: [0.1, 0] },
+        { time: 0, type: "addBody", id: "b1", x: 7, y: 3, r: 0.3, m: 0.5, mu: 0.05 },
+      ],
+      0.5,
+    );
+    const tl = Timeline.fromScene(s);
+    expect(() => tl.prolong({ time: 60 })).toThrow(SimulationError);
+    expect(tl.horizon).toBeCloseTo(52.24895312777856, 9);
+    expect(tl.counts().stop).toBeGreaterThan(60);
+    const at40 = tl.stateAt(40).bodies;
+    const bare = Timeline.fromScene(s);
+    bare.prolongTo(40);
+    expect(bare.stateAt(40).bodies).toStrictEqual(at40);
   });
 });
 
