@@ -8,7 +8,7 @@
 import { positionAt, velocityAt } from "../physics/motion.js";
 import { ChapgameError } from "./errors.js";
 import { distanceToLine, type Line, type LineKind, makeLine, type Point } from "./obstacles.js";
-import { Simulator } from "./simulator.js";
+import { Placement } from "./placement.js";
 import type {
   AdvanceLimits,
   AdvanceResult,
@@ -33,12 +33,8 @@ import {
 } from "./validate.js";
 
 const INF = Number.POSITIVE_INFINITY;
-/** Below this many bodies an overlap check scans them all instead of using the grid. */
-const LINEAR_SCAN_BODIES = 64;
 
-export class World extends Simulator {
-  private index = new Map<string, number>();
-
+export class World extends Placement {
   constructor(options: WorldOptions = {}) {
     const g = requireNonNegativeFinite("g", options.g ?? 9.81);
     const gravity = requireVec("gravity", options.gravity ?? [0, 0]);
@@ -272,31 +268,6 @@ export class World extends Simulator {
       .map((p) => ({ id: p.id, p: [p.x, p.y] as Vec2 }));
   }
 
-  private checkedLine(id: string, p1: Vec2, p2: Vec2, kind: LineKind): Line {
-    const a = requireVec("p1", p1);
-    const c = requireVec("p2", p2);
-    requireLineKind("kind", kind);
-    if (a[0] === c[0] && a[1] === c[1]) throw new ChapgameError("p2", "must differ from p1");
-    const line = makeLine(id, a, c, kind);
-    for (const [bid, s] of this.index) {
-      const r = this.store.r[s] as number;
-      if (distanceToLine(line, this.xAt(s, this.time), this.yAt(s, this.time)) < r)
-        throw new ChapgameError("p1", `the line would overlap body '${bid}'`);
-    }
-    return line;
-  }
-
-  private checkedPoint(id: string, p: Vec2): Point {
-    const [x, y] = requireVec("p", p);
-    for (const [bid, s] of this.index) {
-      const dx = this.xAt(s, this.time) - x;
-      const dy = this.yAt(s, this.time) - y;
-      const r = this.store.r[s] as number;
-      if (dx * dx + dy * dy < r * r) throw new ChapgameError("p", `the point would lie inside body '${bid}'`);
-    }
-    return { id, x, y };
-  }
-
   // ---- globals ------------------------------------------------------------------------------
 
   setGlobal(patch: { g?: number; gravity?: Vec2 }): void {
@@ -359,46 +330,5 @@ export class World extends Simulator {
     if (!this.dirty) return;
     this.rebuildGrid();
     this.predictAll();
-  }
-
-  /** Make sure the grid can answer overlap queries for a disc (x, y, r); rebuild it if not. */
-  private prepareGridFor(x: number, y: number, r: number): void {
-    if (this.index.size < LINEAR_SCAN_BODIES) {
-      if (r > this.gridMaxR) this.rebuildGrid(x, y, r, 2);
-      return;
-    }
-    const g = this.grid;
-    const inside = x >= g.ox && x <= g.ox + g.nx * g.w && y >= g.oy && y <= g.oy + g.ny * g.w;
-    if (r > this.gridMaxR || !inside) this.rebuildGrid(x, y, r, 2);
-  }
-
-  /** Throw if a disc (x, y, r) would overlap any body (other than slot `self`), line or point. */
-  private checkOverlap(x: number, y: number, r: number, self: number): void {
-    const b = this.store;
-    const now = this.time;
-    const test = (s: number): void => {
-      if (s === self) return;
-      const dx = this.xAt(s, now) - x;
-      const dy = this.yAt(s, now) - y;
-      const R = r + (b.r[s] as number);
-      if (dx * dx + dy * dy < R * R)
-        throw new ChapgameError("x", `the body would overlap body '${b.ids[s]}'`);
-    };
-    if (this.index.size < LINEAR_SCAN_BODIES) {
-      for (const s of this.index.values()) test(s);
-    } else {
-      const g = this.grid;
-      const cx = g.column(x);
-      const cy = g.row(y);
-      for (let yy = Math.max(0, cy - 1); yy <= Math.min(g.ny - 1, cy + 1); yy++)
-        for (let xx = Math.max(0, cx - 1); xx <= Math.min(g.nx - 1, cx + 1); xx++)
-          for (let s = g.head[yy * g.nx + xx] as number; s >= 0; s = g.next[s] as number) test(s);
-    }
-    for (const line of this.lineList)
-      if (distanceToLine(line, x, y) < r)
-        throw new ChapgameError("x", `the body would overlap line '${line.id}'`);
-    for (const p of this.pointList)
-      if ((p.x - x) * (p.x - x) + (p.y - y) * (p.y - y) < r * r)
-        throw new ChapgameError("x", `the body would overlap point '${p.id}'`);
   }
 }
