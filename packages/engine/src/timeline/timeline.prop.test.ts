@@ -55,7 +55,7 @@ function makeScene(p: {
     { time: 0, type: "addLine", id: "w", p1: [0, 20], p2: [0, 0], kind: "segment" },
     { time: 0, type: "addPoint", id: "pin", p: [18.5, 18.5] },
   ];
-  p.bodies.forEach((b, i) =>
+  p.bodies.forEach((b, i) => {
     actions.push({
       time: 0,
       type: "addBody",
@@ -66,8 +66,8 @@ function makeScene(p: {
       m: b.m,
       mu: p.mu,
       v: b.m === Number.POSITIVE_INFINITY ? [0, 0] : [b.vx, b.vy],
-    }),
-  );
+    });
+  });
   return { format: "chapgame", version: 1, g: p.g, gravity: [0, 0], actions };
 }
 
