@@ -7,7 +7,7 @@
  */
 import { positionAt, velocityAt } from "../physics/motion.js";
 import { ChapgameError } from "./errors.js";
-import { distanceToLine, type Line, type LineKind, makeLine, type Point } from "./obstacles.js";
+import type { Line, LineKind } from "./obstacles.js";
 import { Placement } from "./placement.js";
 import type {
   AdvanceLimits,
@@ -25,7 +25,6 @@ import {
   checkFrictionGravity,
   requireFinite,
   requireId,
-  requireLineKind,
   requireMass,
   requireNonNegativeFinite,
   requirePositiveFinite,
