@@ -60,8 +60,8 @@ export async function againstReference({ quick, engine, log }) {
   }
   const sizes = quick
     ? [
-        [100, 2000],
-        [300, 500],
+        [100, 1000],
+        [300, 200],
       ]
     : [
         [100, 5000],
