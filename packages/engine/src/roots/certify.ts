@@ -290,6 +290,45 @@ export function criticalPoint(x: number, lo: number, hi: number, out: Float64Arr
   return false;
 }
 
+/**
+ * The nearest sign change of the exact P' strictly between x and limit (either side of x): probes
+ * at 1, 2, 4, … ulps from x towards limit (the last probe is the double next to limit), starting
+ * from the sign just beside x, then bisects. Writes the two adjacent doubles around it into out[0] <
+ * out[1] (equal when P' is exactly 0 there) and returns true; false when there is none.
+ */
+export function nearestCritical(x: number, limit: number, out: Float64Array): boolean {
+  if (deg < 2 || x === limit) return false;
+  loadDerivative();
+  const up = limit > x;
+  const start = up ? nextUp(x) : nextDown(x);
+  const end = up ? nextDown(limit) : nextUp(limit);
+  if (up ? !(start < end) : !(start > end)) return false;
+  const s0 = certDerivSign(start);
+  if (s0 === 0) {
+    out[0] = out[1] = start;
+    return true;
+  }
+  const ax = x < 0 ? -x : x;
+  let off = x === 0 ? Number.MIN_VALUE : nextUp(ax) - ax;
+  let prev = start;
+  for (let k = 0; k <= 1100; k++, off *= 2) {
+    let y = up ? start + off : start - off;
+    const last = up ? !(y < end) : !(y > end);
+    if (last) y = end;
+    if (up ? y > prev : y < prev) {
+      const s = certDerivSign(y);
+      if (s !== s0) {
+        if (up) bisectDerivative(prev, y, s0, s, out);
+        else bisectDerivative(y, prev, s, s0, out);
+        return true;
+      }
+      prev = y;
+    }
+    if (last) return false;
+  }
+  return false;
+}
+
 /** Bisect a sign change of P' between a < b (exact signs sa, sb) down to adjacent doubles. */
 function bisectDerivative(a: number, b: number, sa: number, sb: number, out: Float64Array): void {
   if (sa === 0 || sb === 0) {

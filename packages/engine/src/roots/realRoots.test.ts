@@ -252,6 +252,23 @@ describe("realRoots: regression (fast-check clusters, a rounded 4-fold cluster)"
   });
 });
 
+describe("realRoots: regressions (fast-check clusters sampled at the cluster's own scale)", () => {
+  it("−10 + {−3, 1, 3, −1}·1e-5: roots on both sides of an exact double root found by exact p′ signs", () => {
+    const c = [9999.999999900001, 3999.99999998, 599.999999999, 40, 1];
+    const r = expectCertified(c, -10.00005, -9.99995, 64);
+    expect(r.length).toBe(3);
+    expect(r[1]).toBe(-10);
+    expect(realRoots(c, -11, -9)).toEqual(r);
+  });
+  it("10 + {1, 3, −2, −1}·1e-6: the search goes on beyond an exact critical point still at noise level", () => {
+    const c = [10000.000999996564, -4000.0002999990397, 600.000029999911, -40.00000099999727, 1];
+    const ctr = 9.999999999999316;
+    const r = expectCertified(c, ctr - 5e-6, ctr + 5e-6, 64);
+    expect(r.length).toBe(3);
+    expect(realRoots(c, ctr - 1, ctr + 1)).toEqual(r);
+  });
+});
+
 describe("realRoots: input validation", () => {
   it("refuses non-finite coefficients, naming the field", () => {
     expect(() => realRoots([1, Number.NaN, 2], 0, 1)).toThrow(/coeffs\[1\] must be a finite number/);

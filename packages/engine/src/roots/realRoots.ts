@@ -29,7 +29,15 @@
  */
 
 import { ROOTS_DEGREE_DROP, UNIT_ROUNDOFF } from "../tolerances.js";
-import { certSign, criticalPoint, lastAbsValue, lastWasNoisy, load, refineRoot } from "./certify.js";
+import {
+  certSign,
+  criticalPoint,
+  lastAbsValue,
+  lastWasNoisy,
+  load,
+  nearestCritical,
+  refineRoot,
+} from "./certify.js";
 import { newtonPlain, pieceRoots, quadRootsPlain } from "./newton.js";
 import { exponentOf, mulPow2 } from "./pow2.js";
 
@@ -79,10 +87,11 @@ function ensure(n: number): void {
   chain = new Float64Array((n + 1) * (n + 1));
   bufA = new Float64Array(n + 1);
   bufB = new Float64Array(n + 1);
-  pts = new Float64Array(n + 3);
-  sgn = new Int8Array(n + 3);
-  absv = new Float64Array(n + 3);
-  noisy = new Uint8Array(n + 3);
+  // Room for lo, hi, n − 1 critical points and two exact critical points beside each of them.
+  pts = new Float64Array(3 * n + 3);
+  sgn = new Int8Array(3 * n + 3);
+  absv = new Float64Array(3 * n + 3);
+  noisy = new Uint8Array(3 * n + 3);
 }
 
 /**
@@ -408,7 +417,16 @@ export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): nu
   } else {
     solveScaled(n, lo, hi, out, xs === 0 ? v : -2);
   }
-  if (xs !== 0) for (let i = 0; i < out.length; i++) out[i] = mulPow2(out[i] as number, xs);
+  if (xs !== 0) {
+    // Back to the caller's variable (exact unless the root is subnormal, where distinct scaled
+    // roots can round to one double: keep them distinct).
+    let k = 0;
+    for (let i = 0; i < out.length; i++) {
+      const r = mulPow2(out[i] as number, xs) + 0;
+      if (k === 0 || r > (out[k - 1] as number)) out[k++] = r;
+    }
+    out.length = k;
+  }
   return out;
 }
 
@@ -490,15 +508,18 @@ function solveScaled(n: number, lo: number, hi: number, out: number[], known: nu
 
 /** Certified signs at lo, the critical points and hi; one refined root per sign change. */
 function solveLevel0(n: number, m: number, lo: number, hi: number, ns: number, out: number[]): void {
-  const K = ns + 2;
+  let K = ns + 2;
   pts[0] = lo;
   for (let i = 0; i < ns; i++) pts[i + 1] = bufA[i] as number;
   pts[K - 1] = hi;
+  let anyNoisy = false;
   for (let i = 0; i < K; i++) {
     sgn[i] = certSign(pts[i] as number);
     absv[i] = lastAbsValue();
     noisy[i] = lastWasNoisy() ? 1 : 0;
+    if (noisy[i] === 1 && i > 0 && i < K - 1) anyNoisy = true;
   }
+  if (anyNoisy) K = exactCriticalNeighbours(K, n);
   // Grazing (double-root) candidates: noisy critical points with no sign change on either side.
   for (let i = 1; i < K - 1; i++) {
     const s = sgn[i] as number;
@@ -554,6 +575,62 @@ function solveLevel0(n: number, m: number, lo: number, hi: number, ns: number, o
   }
 }
 
+/**
+ * Where p is at rounding-noise level at a critical point, plain arithmetic cannot resolve the
+ * structure around it (a cluster of roots of p′): the nearest exact sign changes of p′ on each side
+ * (found with certified signs, see certify.ts) are inserted as further piece ends with their exact
+ * signs of p, and the search goes on beyond each inserted point while p is still at noise level
+ * there, so that no root hides in a non-monotone piece. Returns the new number of points.
+ */
+function exactCriticalNeighbours(K: number, n: number): number {
+  let k = K;
+  const cap = 2 * n + 1; // lo, hi, and at most n − 1 structural plus n − 1 exact critical points
+  // From the end, so that insertions do not disturb the indices still to visit.
+  for (let i = K - 2; i >= 1; i--) {
+    if (noisy[i] !== 1) continue;
+    // Downwards: insert below, keep going while the inserted point is at noise level.
+    let j = i;
+    while (k < cap && nearestCritical(pts[j] as number, pts[j - 1] as number, crit)) {
+      const y = pick(crit[1] as number, crit[0] as number);
+      if (!(y < (pts[j] as number) && y > (pts[j - 1] as number))) break;
+      k = insertPoint(k, j, y);
+      if (noisy[j] !== 1) break;
+    }
+    // Upwards from the original point, which moved up by the insertions below it.
+    j = i + (k - K);
+    while (k < cap && nearestCritical(pts[j] as number, pts[j + 1] as number, crit)) {
+      const y = pick(crit[0] as number, crit[1] as number);
+      if (!(y > (pts[j] as number) && y < (pts[j + 1] as number))) break;
+      k = insertPoint(k, j + 1, y);
+      j++;
+      if (noisy[j] !== 1) break;
+    }
+    K = k;
+  }
+  return k;
+}
+
+/** Of the two doubles around a sign change of p′, one where p is exactly 0 if any, else `first`. */
+function pick(first: number, second: number): number {
+  if (first === second || certSign(first) === 0) return first;
+  return certSign(second) === 0 ? second : first;
+}
+
+/** Insert x (with its exact sign of p) at index j of the point list of length k; returns k + 1. */
+function insertPoint(k: number, j: number, x: number): number {
+  for (let t = k; t > j; t--) {
+    pts[t] = pts[t - 1] as number;
+    sgn[t] = sgn[t - 1] as number;
+    absv[t] = absv[t - 1] as number;
+    noisy[t] = noisy[t - 1] as number;
+  }
+  pts[j] = x;
+  sgn[j] = certSign(x);
+  absv[j] = lastAbsValue();
+  noisy[j] = lastWasNoisy() ? 1 : 0;
+  return k + 1;
+}
+
 function push(out: number[], x: number): void {
-  if (out.length === 0 || x > (out[out.length - 1] as number)) out.push(x);
+  if (out.length === 0 || x > (out[out.length - 1] as number)) out.push(x + 0); // −0 → +0
 }
