@@ -17,7 +17,6 @@ import { SceneError } from "../scene/errors.js";
 import { count, isObject, nonNegative, onlyKeys, vec2 } from "../scene/fields.js";
 import { applyOrder, parseScene } from "../scene/parse.js";
 import type { Action, SceneFile, Until, Vec2 } from "../scene/types.js";
-import type { BodyState } from "../sim/types.js";
 import { type Goal, TimelineCore } from "./core.js";
 import { type Keyframe, keyframeBytes } from "./keyframe.js";
 import { MotionTable } from "./motionTable.js";
@@ -185,7 +184,10 @@ export class Timeline {
 
   /** Incremental prolong for UIs: at most `budget` events per call; call with the same `until` until
    *  done (the target is fixed by the first call). */
-  prolongSlice(until: Until, budget: number): { done: boolean; events: number; horizon: number } {
+  prolongSlice(
+    until: Until,
+    budget: number,
+  ): { done: boolean; events: number; horizon: number; reason?: ProlongResult["reason"] } {
     const u = checkUntil(until, "until");
     if (!(budget >= 1)) throw new SceneError("budget", "must be >= 1");
     const goal =
@@ -196,24 +198,34 @@ export class Timeline {
     const done = res.reason !== null;
     this.slice = done ? null : { until: u, goal };
     this.changed();
-    return { done, events: res.events, horizon: this.core.horizon };
+    const out: { done: boolean; events: number; horizon: number; reason?: ProlongResult["reason"] } = {
+      done,
+      events: res.events,
+      horizon: this.core.horizon,
+    };
+    if (res.reason !== null) out.reason = res.reason;
+    return out;
   }
 
   // ---- reading ----------------------------------------------------------------------------------
 
-  /** The exact state at t, 0 <= t <= horizon (without history: only t = horizon). */
+  /** The exact state at t, 0 <= t <= horizon (without history: from the last event or action on). */
   stateAt(t: number): SceneState {
     const c = this.core;
     if (!(t >= 0 && t <= c.horizon))
       throw new RangeError(`stateAt: t must be in [0, ${c.horizon}], got ${t}`);
     if (!c.history) {
-      if (t !== c.horizon) throw new RangeError("stateAt: this timeline keeps no history (only the horizon)");
+      // No event or action lies in (lastLogged, horizon]: every current motion holds over that span.
+      if (t < c.lastLogged)
+        throw new RangeError(
+          `stateAt: this timeline keeps no history: t must be in [${c.lastLogged}, ${c.horizon}]`,
+        );
       const w = c.world;
       return {
         time: t,
         g: w.g,
         gravity: w.gravity,
-        bodies: w.bodies(),
+        bodies: w.bodies(t),
         lines: w.lines(),
         points: w.points(),
       };
@@ -221,14 +233,9 @@ export class Timeline {
     return stateAt(c, t, this.scratch);
   }
 
-  /** The bodies at the time of the last event or action (for a run that ended idle). */
+  /** Time of the last event or action computed (where a run that ended idle ends). */
   lastLoggedTime(): number {
     return this.core.lastLogged;
-  }
-
-  /** Bodies at the horizon (also without history). */
-  bodiesAtHorizon(): BodyState[] {
-    return this.core.world.bodies();
   }
 
   /** Time of the first logged event strictly after t, or null. */

@@ -1,0 +1,59 @@
+import { describe, expect, it } from "vitest";
+import { dilutedGas, galperin } from "../scene/presets.js";
+import { serializeScene } from "../scene/serialize.js";
+import { type CliIO, runCli } from "./run.js";
+
+function io(files: Record<string, string>, progress = false) {
+  const out = { stdout: "", stderr: "" };
+  const cli: CliIO = {
+    readFile: (p) => {
+      const f = files[p];
+      if (f === undefined) throw new Error(`ENOENT: no such file or directory, open '${p}'`);
+      return f;
+    },
+    stdout: (t) => {
+      out.stdout += t;
+    },
+    stderr: (t) => {
+      out.stderr += t;
+    },
+    progress,
+  };
+  return { cli, out };
+}
+
+describe("runCli in-process", () => {
+  it("shows progress on stderr when asked (a terminal), and the same result", () => {
+    const files = { "gas.json": serializeScene(dilutedGas({ n: 200, packing: 0.2 })) };
+    const quiet = io(files);
+    const loud = io(files, true);
+    expect(runCli(["simulate", "gas.json", "--max-events", "450000"], quiet.cli)).toBe(0);
+    expect(runCli(["simulate", "gas.json", "--max-events", "450000"], loud.cli)).toBe(0);
+    expect(quiet.out.stderr).toBe("");
+    const lines = loud.out.stderr.split("\r");
+    expect(lines.slice(1, 3).map((l) => l.replace(/t = [\d.e+]+/, "t = T"))).toEqual([
+      "chapgame: t = T, 200000 events",
+      "chapgame: t = T, 400000 events",
+    ]);
+    expect(lines[3]).toBe(`${String.fromCharCode(27)}[K`);
+    expect(loud.out.stdout).toBe(quiet.out.stdout);
+    expect(JSON.parse(quiet.out.stdout).events).toBe(450000);
+  });
+
+  it("counts Galperin's collisions (3 digits: 314)", () => {
+    const { cli, out } = io({ "g.json": serializeScene(galperin(3)) });
+    expect(runCli(["simulate", "g.json"], cli)).toBe(0);
+    const r = JSON.parse(out.stdout);
+    expect(r.events).toBe(314);
+    expect(r.counts.bodyBody + r.counts.bodyLine).toBe(314);
+  });
+
+  it("an internal error exits 1 with one line", () => {
+    const { cli, out } = io({ "g.json": serializeScene(galperin(1)) });
+    cli.stdout = () => {
+      throw new Error("disk full");
+    };
+    expect(runCli(["simulate", "g.json"], cli)).toBe(1);
+    expect(out.stderr).toBe("chapgame: internal error: disk full\n");
+  });
+});

@@ -1,0 +1,171 @@
+/**
+ * The `chapgame` bin, run for real: `node packages/engine/dist/cli/main.js` (built by `npm run build`;
+ * built here first when missing) and `npx chapgame` from the repository root, on scene files written
+ * to a temporary directory.
+ */
+import { execFileSync, spawnSync } from "node:child_process";
+import { existsSync, mkdtempSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join, resolve } from "node:path";
+import { beforeAll, describe, expect, it } from "vitest";
+import {
+  galperin,
+  newtonsCradle,
+  originalDemo,
+  serializeScene,
+} from "../../packages/engine/src/scene/index.js";
+
+const root = resolve(import.meta.dirname, "../..");
+const bin = join(root, "packages/engine/dist/cli/main.js");
+const dir = mkdtempSync(join(tmpdir(), "chapgame-cli-"));
+
+function file(name: string, text: string): string {
+  const p = join(dir, name);
+  writeFileSync(p, text);
+  return p;
+}
+
+function run(args: string[], input?: string): { code: number | null; stdout: string; stderr: string } {
+  const r = spawnSync("node", [bin, ...args], { cwd: root, encoding: "utf8", input: input ?? "" });
+  return { code: r.status, stdout: r.stdout, stderr: r.stderr };
+}
+
+beforeAll(() => {
+  if (!existsSync(bin)) execFileSync("npm", ["run", "build"], { cwd: root, stdio: "ignore" });
+});
+
+describe("chapgame simulate", () => {
+  it("runs the original's sample until nothing is left: time of the last event, the bodies then", () => {
+    const r = run(["simulate", file("demo.json", serializeScene(originalDemo()))]);
+    expect(r.code).toBe(0);
+    expect(r.stderr).toBe("");
+    const out = JSON.parse(r.stdout);
+    expect(Object.keys(out)).toEqual(["time", "events", "counts", "bodies"]);
+    expect(out.time).toBe(100); // A stops at t = 100 (v = 98.49 under deceleration 1… after the hit)
+    expect(out.events).toBe(2);
+    expect(out.counts).toEqual({ bodyBody: 1, bodyLine: 0, bodyPoint: 0, stop: 1 });
+    expect(out.bodies.map((b: { id: string }) => b.id)).toEqual(["A", "B"]);
+    expect(Object.keys(out.bodies[0])).toEqual(["id", "x", "y", "vx", "vy", "r", "m", "mu"]);
+    expect(out.bodies[1].x).toBeCloseTo(550, 9);
+    expect(out.bodies[0].vx).toBe(0);
+  });
+
+  it("stops at --until-time and at --max-events, whichever first", () => {
+    const demo = file("demo2.json", serializeScene(originalDemo()));
+    const t = JSON.parse(run(["simulate", demo, "--until-time", "1"]).stdout);
+    expect(t.time).toBe(1);
+    expect(t.events).toBe(0);
+    expect(t.bodies[1].x).toBe(600.5); // 700 − 100·1 + 1²/2
+    const e = JSON.parse(run(["simulate", demo, "--max-events", "1", "--until-time", "50"]).stdout);
+    expect(e.events).toBe(1);
+    expect(e.time).toBeCloseTo(100 - Math.sqrt(9700), 14);
+  });
+
+  it("--events adds the log: actions, then each collision with its contact point, normal and impulse", () => {
+    const r = run(["simulate", file("demo3.json", serializeScene(originalDemo())), "--events"]);
+    const out = JSON.parse(r.stdout);
+    expect(out.log.map((l: { type: string }) => l.type)).toEqual([
+      "action",
+      "action",
+      "action",
+      "bodyBody",
+      "stop",
+    ]);
+    const hit = out.log[3];
+    expect(Object.keys(hit)).toEqual(["time", "type", "ids", "point", "normal", "impulse"]);
+    expect(hit.ids).toEqual(["A", "B"]);
+    expect(hit.point).toEqual([450, 200]);
+    expect(hit.normal).toEqual([1, 0]);
+    expect(hit.impulse).toBeCloseTo(10 * 98.4886, 2);
+  });
+
+  it('counts Galperin\'s collisions and writes an infinite mass as "Infinity"', () => {
+    const g = run(["simulate", file("g4.json", serializeScene(galperin(4)))]);
+    expect(JSON.parse(g.stdout).events).toBe(3141);
+    const s = galperin(2);
+    s.actions.push({ time: 0, type: "addBody", id: "post", x: 20, y: 50, r: 1, m: Number.POSITIVE_INFINITY });
+    const out = run(["simulate", file("inf.json", serializeScene(s))]);
+    expect(out.stdout).toContain('"m": "Infinity"');
+  });
+
+  it("reads the scene from standard input with -", () => {
+    const r = run(["simulate", "-", "--until-time", "10"], serializeScene(newtonsCradle()));
+    expect(r.code).toBe(0);
+    const c5 = JSON.parse(r.stdout).bodies.find((b: { id: string }) => b.id === "c5");
+    expect([c5.vx, c5.vy]).toEqual([4, 0]);
+  });
+});
+
+describe("chapgame state", () => {
+  it("prints the bodies at --at T", () => {
+    const out = JSON.parse(
+      run(["state", file("demo4.json", serializeScene(originalDemo())), "--at", "2"]).stdout,
+    );
+    expect(out.time).toBe(2);
+    expect(out.events).toBe(1);
+    expect(out.bodies[1].vx).toBe(0);
+    expect(out.bodies[0].vx).toBeLessThan(-90);
+  });
+});
+
+describe("chapgame on invalid input: exit 2, one line on stderr, no stack trace", () => {
+  const overlapLater = serializeScene({
+    format: "chapgame",
+    version: 1,
+    g: 9.81,
+    gravity: [0, 0],
+    actions: [
+      { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [1, 0] },
+      { time: 3, type: "addBody", id: "b", x: 4.5, y: 0, r: 1, m: 1 },
+    ],
+  });
+  const cases: [string, string[], string | undefined, string][] = [
+    ["broken JSON", ["simulate", "-"], "{ nope", "chapgame: json: invalid JSON"],
+    ["a missing file", ["simulate", join(dir, "nope.json")], undefined, "chapgame: cannot read"],
+    ["bad arguments", ["simulate"], undefined, "chapgame: simulate: missing SCENE file"],
+    [
+      "a bad option value",
+      ["state", "-", "--at", "x"],
+      "{}",
+      "chapgame: --at: must be a non-negative number",
+    ],
+    [
+      "an invalid field",
+      ["simulate", "-"],
+      '{"format":"chapgame","version":1,"actions":[{"time":0,"type":"addBody","id":"a","x":0,"y":0,"r":-1,"m":1}]}',
+      "chapgame: actions[0].r: must be a positive finite number",
+    ],
+    [
+      "an overlap found while simulating",
+      ["simulate", "-"],
+      overlapLater,
+      'chapgame: actions[1]: body "b" would overlap body "a" at time 3',
+    ],
+  ];
+  for (const [name, args, input, message] of cases)
+    it(name, () => {
+      const r = run(args, input);
+      expect(r.code).toBe(2);
+      expect(r.stdout).toBe("");
+      expect(r.stderr.startsWith(message)).toBe(true);
+      expect(r.stderr.trimEnd().split("\n")).toHaveLength(1);
+    });
+
+  it("--help prints the usage and exits 0", () => {
+    const r = run(["--help"]);
+    expect(r.code).toBe(0);
+    expect(r.stdout).toContain("chapgame simulate SCENE");
+  });
+});
+
+describe("npx chapgame", () => {
+  it("works from the repository root", () => {
+    const scene = file("npx.json", serializeScene(galperin(2)));
+    const r = spawnSync("npx", ["--no-install", "chapgame", "simulate", scene], {
+      cwd: root,
+      encoding: "utf8",
+    });
+    expect(r.status).toBe(0);
+    expect(JSON.parse(r.stdout).events).toBe(31);
+  });
+});
