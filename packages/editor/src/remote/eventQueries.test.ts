@@ -1,6 +1,6 @@
 import { newtonsCradle, originalDemo, Timeline } from "@chapgame/engine";
 import { describe, expect, it } from "vitest";
-import { eventPage, eventTicks } from "./eventQueries";
+import { eventPage, eventTicks, lastEventTime } from "./eventQueries";
 import { SeriesRecorder } from "./series";
 
 /** Newton's cradle computed 10 s: 6 actions at 0, then 5 collisions at t = 1. */
@@ -42,6 +42,19 @@ describe("event queries", () => {
     for (const t of ticks) expect(times).toContain(t);
     expect(ticks).toEqual([...new Set(ticks)].sort((a, b) => a - b));
     expect(eventTicks(tl, 100)[0]).toBe(0);
+  });
+});
+
+describe("lastEventTime", () => {
+  it("is the time of the last logged event, also when it is at the horizon", () => {
+    const tl = cradle();
+    expect(lastEventTime(tl)).toBe(1);
+    const empty = new Timeline();
+    expect(lastEventTime(empty)).toBeNull();
+    const demo = Timeline.fromScene(originalDemo(), { compute: false });
+    demo.prolong({ time: 0 });
+    expect(demo.eventCount).toBeGreaterThan(0);
+    expect(lastEventTime(demo)).toBe(0);
   });
 });
 

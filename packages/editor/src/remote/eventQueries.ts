@@ -97,6 +97,14 @@ export function eventPage(tl: Log, t: number, before: number, after: number, bod
   return { first: -1, total, events };
 }
 
+/** Time of the last logged event (at most the horizon), or null when the log is empty. */
+export function lastEventTime(tl: Log): number | null {
+  if (tl.eventCount === 0) return null;
+  const before = tl.prevEventTime(tl.horizon);
+  if (before === null) return tl.nextEventTime(Number.NEGATIVE_INFINITY);
+  return tl.nextEventTime(before) ?? before;
+}
+
 /** Event times for the scrubber: for each of n equal bins of [0, horizon], the first event in it. */
 export function eventTicks(tl: Log, n: number): number[] {
   const out: number[] = [];

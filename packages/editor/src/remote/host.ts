@@ -7,7 +7,7 @@
  */
 import type { Action, SceneFile, Until } from "../engineTypes";
 import { errorInfo } from "./errors";
-import { eventPage, eventTicks } from "./eventQueries";
+import { eventPage, eventTicks, lastEventTime } from "./eventQueries";
 import { packFrame } from "./packFrame";
 import type { ComputeStatus, HostMessage, Request, RequestMessage, TimelineInfo } from "./protocol";
 import { SeriesRecorder } from "./series";
@@ -17,6 +17,8 @@ import type { TimelineFactory, TimelineLike } from "./timelineLike";
 const ROUND_MS = 12;
 /** Wall-clock milliseconds one prolongSlice call should take (the event budget adapts to it). */
 const SLICE_MS = 3;
+/** While computing, energy/event samples are recorded at most this often (ms of wall-clock time). */
+const RECORD_EVERY_MS = 100;
 
 interface Job extends ComputeStatus {
   budget: number;
@@ -38,6 +40,7 @@ export class TimelineHost {
   private job: Job | null = null;
   private scheduled = false;
   private readonly series = new SeriesRecorder();
+  private lastRecord = Number.NEGATIVE_INFINITY;
 
   constructor(
     private readonly factory: TimelineFactory,
@@ -175,7 +178,11 @@ export class TimelineHost {
 
   private changed(docChanged: boolean): void {
     this.revision++;
-    this.series.record(this.tl);
+    const now = this.env.now();
+    if (docChanged || this.job === null || now - this.lastRecord >= RECORD_EVERY_MS) {
+      this.lastRecord = now;
+      this.series.record(this.tl);
+    }
     if (docChanged) {
       this.docRevision++;
       this.idle = false;
@@ -193,7 +200,7 @@ export class TimelineHost {
       horizon: tl.horizon,
       eventCount: n,
       counts: tl.counts(),
-      lastEventTime: n > 0 ? tl.lastLoggedTime() : null,
+      lastEventTime: lastEventTime(tl),
       idle: this.idle,
       doc: sendDoc ? tl.toScene() : null,
       docRevision: this.docRevision,

@@ -1,6 +1,6 @@
 /**
- * Energy and event count over time, recorded at the horizon as the timeline is computed (one cheap
- * reading of the bodies at the horizon per computation round, no replay). A cut in the past drops
+ * Energy and event count over time, recorded at the horizon as the timeline is computed (the host
+ * records at most every RECORD_EVERY_MS of computing, so the readings cost little). A cut in the past drops
  * the samples after the new horizon; the list is thinned by half when it grows past MAX_SAMPLES.
  */
 import type { SeriesPoint } from "./protocol";
@@ -20,13 +20,13 @@ export class SeriesRecorder {
     while (this.samples.length > 0 && this.samples[this.samples.length - 1]!.t > t) this.samples.pop();
   }
 
-  record(tl: Pick<TimelineLike, "horizon" | "eventCount" | "bodiesAtHorizon">): void {
+  record(tl: Pick<TimelineLike, "horizon" | "eventCount" | "stateAt">): void {
     const t = tl.horizon;
     while (this.samples.length > 0 && this.samples[this.samples.length - 1]!.t > t) this.samples.pop();
     const last = this.samples[this.samples.length - 1];
     if (last && last.t === t && last.collisions === tl.eventCount) return;
     let energy = 0;
-    for (const b of tl.bodiesAtHorizon())
+    for (const b of tl.stateAt(t).bodies)
       if (Number.isFinite(b.m)) energy += 0.5 * b.m * (b.vx * b.vx + b.vy * b.vy);
     if (last && last.t === t) this.samples.pop();
     this.samples.push({ t, energy, collisions: tl.eventCount });

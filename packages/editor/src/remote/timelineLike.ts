@@ -2,7 +2,7 @@
  * The part of the engine's Timeline the editor's worker uses (docs/architecture.md), so the host can
  * be tested with the real Timeline and typed without depending on its private members.
  */
-import type { Action, BodyState, Counts, LogEvent, SceneFile, SceneState, Until } from "../engineTypes";
+import type { Action, Counts, LogEvent, SceneFile, SceneState, Until } from "../engineTypes";
 
 export interface TimelineLike {
   readonly actions: readonly Action[];
@@ -16,10 +16,6 @@ export interface TimelineLike {
   prevEventTime(t: number): number | null;
   event(i: number): LogEvent;
   eventsBetween(t0: number, t1: number): LogEvent[];
-  /** The bodies at the horizon (cheap: no replay). */
-  bodiesAtHorizon(): BodyState[];
-  /** Time of the last logged event or action. */
-  lastLoggedTime(): number;
   counts(): Counts;
   historyBytes(): number;
   toScene(): SceneFile;
