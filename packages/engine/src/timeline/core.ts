@@ -169,6 +169,7 @@ export class TimelineCore {
   private applyGroup(): void {
     const w = this.world;
     const t = w.time;
+    const groupStart = this.records.length;
     const view = SceneView.of({
       time: t,
       g: w.g,
@@ -192,7 +193,13 @@ export class TimelineCore {
       this.applied++;
     }
     this.idle = false;
-    if (this.history) this.keyframe(true, true);
+    if (!this.history) return;
+    // Actions applied one call at a time at the same instant (an editor or a script adding bodies)
+    // would stack one keyframe each: the previous one is redundant when nothing happened since.
+    const last = this.keyframes[this.keyframes.length - 1] as Keyframe;
+    if (this.keyframes.length > 1 && last.afterActions && last.time === t && last.record === groupStart)
+      this.keyframes.pop();
+    this.keyframe(true, true);
   }
 
   /** Update the registry and the motion table after action `a` at time t. */

@@ -190,6 +190,18 @@ describe("history storage", () => {
     expect(tl.historyBytes() / tl.eventCount).toBeLessThan(64);
   });
 
+  it("adding bodies one apply() at a time at t = 0 stores what fromScene stores, and the same history", () => {
+    const s = dilutedGas({ n: 300, packing: 0.1, seed: 2 });
+    const whole = Timeline.fromScene(s);
+    const oneByOne = new Timeline({ g: s.g });
+    for (const a of s.actions) oneByOne.apply(a);
+    expect(oneByOne.historyBytes()).toBe(whole.historyBytes());
+    whole.prolongTo(5);
+    oneByOne.prolongTo(5);
+    expect(oneByOne.eventsBetween(0, 5)).toEqual(whole.eventsBetween(0, 5));
+    expect(oneByOne.stateAt(5)).toEqual(whole.stateAt(5));
+  });
+
   it("history: false keeps no log, gives the same state at the horizon, and refuses the past", () => {
     const s = dilutedGas({ n: 40, packing: 0.2, seed: 5 });
     const full = Timeline.fromScene(s);
