@@ -2,26 +2,28 @@
  * realRoots(coeffs, lo, hi): the distinct real roots of p(t) = c0 + c1 t + c2 t² + … in [lo, hi],
  * sorted ascending. Any degree; `coeffs` is any array-like of finite numbers (ascending powers).
  *
- * Method (see README.md): trim zero leading coefficients, scale by a power of two (exact), clamp
+ * Method (see README.md): trim zero leading coefficients, scale by powers of two (exact), clamp
  * infinite or huge ends to Cauchy's root bound, drop leading terms negligible over the interval
- * (ROOTS_DEGREE_DROP, relative), reject quickly when p's Bernstein coefficients on [lo, hi] show it keeps its sign, and take a
- * fast path when they show exactly one simple root between ends of opposite signs.
- * Otherwise the roots of p' split [lo, hi] into monotone pieces (found the same way, recursively,
- * down to a quadratic solved in closed form without cancellation). The exact sign of p is decided at
- * every piece end (certify.ts: plain → compensated → BigInt); each piece whose ends have opposite
- * exact signs holds exactly one root, found by safeguarded Halley/Newton and refined on certified signs to
- * a double within 1 ulp of it. A piece end with p exactly 0 is a root (this is how roots exactly at
- * lo or hi, or exact multiple roots, are found). A critical point where |p| is within the plain
- * evaluation error bound and p does not change sign on either side is a double root (a grazing
- * contact): it is refined to the sign change of the exact p' and reported.
+ * (ROOTS_DEGREE_DROP, relative). Quick sign checks on p's Bernstein coefficients over [lo, hi]:
+ * one sign → no root; one sign change between ends of opposite signs → exactly one root, solved
+ * directly; their differences (p′'s) tell when p is monotone or has one critical point. Otherwise
+ * the roots of p′ split [lo, hi] into monotone pieces (found the same way, recursively, down to a
+ * quadratic solved in closed form without cancellation). The exact sign of p is decided at every
+ * piece end (certify.ts: plain → compensated → BigInt); each piece whose ends have opposite exact
+ * signs holds exactly one root, found by safeguarded Halley/Newton and refined on certified signs to
+ * a double within 1 ulp of it. A piece end with p exactly 0 is a root (roots exactly at lo or hi,
+ * exact multiple roots). Around a critical point where |p| is within the plain evaluation error
+ * bound, the nearest exact sign changes of p′ become further piece ends (clusters). Such a critical
+ * point where p does not change sign on either side is a double root (a grazing contact): it is
+ * refined to the sign change of the exact p′ and reported.
  *
  * Accuracy: every root reported for a sign change (or exact zero) is within 1 ulp of an exact root
  * of the polynomial with the given double coefficients, and every exact sign change between
  * consecutive piece ends is reported. A grazing root is backward stable: an exact double root of a
  * polynomial whose coefficients differ from the given ones by at most about 2.5·n·u relatively
  * (it cannot always be within 4 ulps of an exact root: with rounded coefficients the exact
- * polynomial may have no real root there at all). Limits: coefficient dynamic range beyond ~2^960
- * (scaling may underflow small coefficients), and evaluation overflow in the plain phases.
+ * polynomial may have no real root there at all). Limits: coefficients spread over more than
+ * ~2^1000 (scaling underflows the small ones), and evaluation overflow in the plain phases.
  *
  * Errors: a non-finite coefficient or NaN end throws RangeError naming the field; lo > hi returns [];
  * a constant (or identically zero) polynomial has no isolated roots and returns []. Iteration caps
