@@ -44,6 +44,7 @@ export class TimelineClient {
   private frameInFlight = false;
   private wantedT: number | null = null;
   latestFrame: Frame | null = null;
+  private frameIds: string[] = [];
   /** The time the latest frame was asked for (the host clamps it to [0, horizon]). */
   private latestAsked = Number.NaN;
 
@@ -98,8 +99,12 @@ export class TimelineClient {
   cancel(): Promise<void> {
     return this.request({ op: "cancel" });
   }
-  frame(t: number): Promise<Frame> {
-    return this.request({ op: "frame", t });
+  /** The frame at t. Only this client may ask for frames: the host leaves out ids it already sent. */
+  async frame(t: number): Promise<Frame> {
+    const f = await this.request<Frame & { ids: string[] | null }>({ op: "frame", t });
+    if (f.ids === null) f.ids = this.frameIds;
+    this.frameIds = f.ids;
+    return f;
   }
   nextEvent(t: number): Promise<number | null> {
     return this.request({ op: "nextEvent", t });

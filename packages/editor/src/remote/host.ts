@@ -41,6 +41,8 @@ export class TimelineHost {
   private scheduled = false;
   private readonly series = new SeriesRecorder();
   private lastRecord = Number.NEGATIVE_INFINITY;
+  /** Ids of the last frame sent (frames with the same ids are sent with `ids: null`). */
+  private sentIds: string[] | null = null;
 
   constructor(
     private readonly factory: TimelineFactory,
@@ -82,8 +84,16 @@ export class TimelineHost {
         this.job = null;
         this.changed(false);
         return null;
-      case "frame":
-        return packFrame(this.tl.stateAt(Math.min(Math.max(r.t, 0), this.tl.horizon)), this.revision);
+      case "frame": {
+        const f = packFrame(
+          this.tl.stateAt(Math.min(Math.max(r.t, 0), this.tl.horizon)),
+          this.revision,
+          this.sentIds,
+        );
+        const unchanged = f.ids === this.sentIds;
+        this.sentIds = f.ids;
+        return unchanged ? { ...f, ids: null } : f;
+      }
       case "nextEvent":
         return this.tl.nextEventTime(r.t);
       case "prevEvent":

@@ -2,14 +2,21 @@
 import type { SceneState } from "../engineTypes";
 import { F_AX, F_AY, F_M, F_MU, F_R, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE, type Frame } from "./protocol";
 
-export function packFrame(s: SceneState, revision: number): Frame {
+/**
+ * `previousIds`: the ids of the last frame sent; when unchanged, the frame carries the same array
+ * (the host then sends `ids: null` and the client reuses its copy, saving thousands of strings per
+ * frame).
+ */
+export function packFrame(s: SceneState, revision: number, previousIds: string[] | null = null): Frame {
   const n = s.bodies.length;
   const data = new Float64Array(n * FRAME_STRIDE);
-  const ids: string[] = new Array(n);
+  let ids: string[] = new Array(n);
+  let same = previousIds !== null && previousIds.length === n;
   for (let i = 0; i < n; i++) {
     const b = s.bodies[i]!;
     const o = i * FRAME_STRIDE;
     ids[i] = b.id;
+    if (same && previousIds![i] !== b.id) same = false;
     data[o + F_X] = b.x;
     data[o + F_Y] = b.y;
     data[o + F_VX] = b.vx;
@@ -20,5 +27,6 @@ export function packFrame(s: SceneState, revision: number): Frame {
     data[o + F_M] = b.m;
     data[o + F_MU] = b.mu;
   }
+  if (same) ids = previousIds!;
   return { t: s.time, revision, g: s.g, gravity: s.gravity, ids, data, lines: s.lines, points: s.points };
 }
