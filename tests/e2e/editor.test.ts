@@ -148,7 +148,35 @@ describe("editor end to end", () => {
     await screenshot(page, "07-after-reload");
   });
 
+  it("adds a disc with the Disc tool, moves it by dragging, and deletes it with the Delete key", async () => {
+    await loadPreset("Bouncing balls");
+    await poll(() => bodies().getByRole("row").count()).toBe(7);
+    const canvas = page.getByTestId("scene-canvas");
+    const box = (await canvas.boundingBox())!;
+    await page.getByRole("button", { name: "Disc", exact: true }).click();
+    await canvas.click({ position: { x: box.width * 0.5, y: 40 } });
+    await poll(() => bodies().getByRole("row").count()).toBe(8);
+    const y0 = await cellValue("b1 y");
+    await page.getByRole("button", { name: "Move", exact: true }).click();
+    await page.mouse.move(box.x + box.width * 0.5, box.y + 40);
+    await page.mouse.down();
+    await page.mouse.move(box.x + box.width * 0.5, box.y + 90, { steps: 5 });
+    await page.mouse.up();
+    await poll(() => cellValue("b1 y")).toBeLessThan(y0);
+    await page.getByRole("checkbox", { name: "Trails" }).check();
+    await page.getByRole("button", { name: "Play" }).click();
+    await waitFor(async () => (await currentTime(page)) > 1);
+    await page.getByRole("button", { name: "Pause" }).click();
+    await screenshot(page, "09-bouncing-balls-trails");
+    await scrubTo(page, 0);
+    await page.locator("body").click({ position: { x: 5, y: 5 } });
+    await canvas.click({ position: { x: box.width * 0.5, y: 90 } });
+    await page.keyboard.press("Delete");
+    await poll(() => bodies().getByRole("row").count()).toBe(7);
+  });
+
   it("space plays and pauses; the event log jumps to an event", async () => {
+    await loadPreset("Newton's cradle");
     await page.locator("body").click({ position: { x: 5, y: 5 } });
     await page.keyboard.press("Space");
     await waitFor(async () => (await currentTime(page)) > 0.2);
