@@ -30,16 +30,10 @@
  * throw RootSolverError (never expected). Not re-entrant (module scratch buffers).
  */
 
-import { ROOTS_DEGREE_DROP, UNIT_ROUNDOFF } from "../tolerances.js";
-import {
-  certSign,
-  criticalPoint,
-  lastAbsValue,
-  lastWasNoisy,
-  load,
-  nearestCritical,
-  refineRoot,
-} from "./certify.js";
+import { ROOTS_DEGREE_DROP } from "../tolerances.js";
+import { bernstein, bernstein4, derivChanges, guesses } from "./bernstein.js";
+import { certSign, lastAbsValue, load, refineRoot } from "./certify.js";
+import { push, solveLevel0 } from "./level0.js";
 import { newtonPlain, pieceRoots, quadRootsPlain } from "./newton.js";
 import { exponentOf, mulPow2 } from "./pow2.js";
 
@@ -55,17 +49,6 @@ export function evalPoly(coeffs: ArrayLike<number>, x: number): number {
   return s;
 }
 
-/** 1/C(n, k) for k = 0…n (rounded; the Bernstein test's margin covers that rounding). */
-function invBinom(n: number): Float64Array {
-  const r = new Float64Array(n + 1);
-  let b = 1;
-  for (let k = 0; k <= n; k++) {
-    r[k] = 1 / b;
-    b = (b * (n - k)) / (k + 1);
-  }
-  return r;
-}
-const INV_BINOM = Array.from({ length: 21 }, (_, n) => invBinom(n));
 /** 2^⌊256/n⌋: intervals with max(|lo|, |hi|) within [1/MOD_LIMIT[n], MOD_LIMIT[n]] need no variable scaling. */
 const MOD_LIMIT = Array.from({ length: 65 }, (_, n) => (n === 0 ? 1 : mulPow2(1, Math.floor(256 / n))));
 const BIG = 2 ** 64;
@@ -75,12 +58,6 @@ let P = new Float64Array(0);
 let chain = new Float64Array(0);
 let bufA = new Float64Array(0);
 let bufB = new Float64Array(0);
-let pts = new Float64Array(0);
-let sgn = new Int8Array(0);
-let absv = new Float64Array(0);
-let noisy = new Uint8Array(0);
-const crit = new Float64Array(2);
-const closed = new Float64Array(2);
 
 function ensure(n: number): void {
   if (n <= cap) return;
@@ -89,95 +66,7 @@ function ensure(n: number): void {
   chain = new Float64Array((n + 1) * (n + 1));
   bufA = new Float64Array(n + 1);
   bufB = new Float64Array(n + 1);
-  // Room for lo, hi, n − 1 critical points and two exact critical points beside each of them.
-  pts = new Float64Array(3 * n + 3);
-  sgn = new Int8Array(3 * n + 3);
-  absv = new Float64Array(3 * n + 3);
-  noisy = new Uint8Array(3 * n + 3);
 }
-
-/**
- * Quick sign checks with the Bernstein coefficients of p on [lo, lo + h] (h ≥ hi − lo, from a
- * Taylor shift): they bound p there (convex hull property), and their number of sign changes V
- * bounds the number of roots, with the same parity (Descartes' rule for the Bernstein basis).
- * Returns 0 when every coefficient has one sign beyond its rounding margin (no root), 1 when all
- * signs are certain and V = 1 (exactly one simple root; guesses[0] is where the control
- * polygon crosses zero: guesses[0]), −1 otherwise. About 3n²/2 flops.
- */
-function bernstein(n: number, lo: number, hi: number): number {
-  const T = bufA; // Taylor coefficients at lo, then scaled by h^k, then Bernstein coefficients
-  const A = bufB; // the same for |p| at |lo| (the scale of the rounding errors)
-  const p = P;
-  for (let i = 0; i <= n; i++) {
-    const c = p[i] as number;
-    T[i] = c;
-    A[i] = c < 0 ? -c : c;
-  }
-  if (lo !== 0) {
-    const al = lo < 0 ? -lo : lo;
-    for (let k = 0; k < n; k++) {
-      for (let i = n - 1; i >= k; i--) {
-        T[i] = (T[i] as number) + lo * (T[i + 1] as number);
-        A[i] = (A[i] as number) + al * (A[i + 1] as number);
-      }
-    }
-  }
-  const h = (hi - lo) * (1 + 4 * UNIT_ROUNDOFF);
-  let hk = 1;
-  let scale = A[0] as number;
-  const inv = n < INV_BINOM.length ? (INV_BINOM[n] as Float64Array) : invBinom(n);
-  for (let k = 1; k <= n; k++) {
-    hk *= h;
-    T[k] = (T[k] as number) * hk * (inv[k] as number);
-    scale += (A[k] as number) * hk;
-  }
-  for (let r = 1; r <= n; r++) {
-    for (let j = n; j >= r; j--) T[j] = (T[j] as number) + (T[j - 1] as number);
-  }
-  const margin = 4 * (n + 2) * UNIT_ROUNDOFF * scale;
-  derivChanges = -1;
-  if (!(margin < Number.POSITIVE_INFINITY)) return -1;
-  // p′ on the same interval has the Bernstein coefficients (n/h)(b[j+1] − b[j]): count their signs.
-  const dMargin = 3 * margin;
-  let dPrev = (T[1] as number) - (T[0] as number);
-  if (dPrev > dMargin || dPrev < -dMargin) {
-    let dChanges = 0;
-    for (let j = 1; j < n && dChanges <= 1; j++) {
-      const d = (T[j + 1] as number) - (T[j] as number);
-      if (!(d > dMargin || d < -dMargin)) {
-        dChanges = -1;
-        break;
-      }
-      if (d < 0 !== dPrev < 0) {
-        dChanges++;
-        guesses[1] = lo + (h * (j - 1 + dPrev / (dPrev - d))) / (n - 1);
-      }
-      dPrev = d;
-    }
-    derivChanges = dChanges <= 1 ? dChanges : -1;
-  }
-  let prev = T[0] as number;
-  if (!(prev > margin || prev < -margin)) return -1;
-  let changes = 0;
-  for (let j = 1; j <= n; j++) {
-    const t = T[j] as number;
-    if (!(t > margin || t < -margin)) return -1;
-    if (t < 0 !== prev < 0) {
-      if (++changes > 1) return -1;
-      guesses[0] = lo + (h * (j - 1 + prev / (prev - t))) / n;
-    }
-    prev = t;
-  }
-  return changes;
-}
-/**
- * Double-valued results of bernstein(), kept in a typed array: storing a double into a module-level
- * `let` allocates a heap number on every store, which showed up in profiles. [0] = where p's control
- * polygon crosses zero (one sign change), [1] = the same for p′.
- */
-const guesses = new Float64Array(2);
-/** Certified sign changes of p′'s Bernstein coefficients on the same interval: 0, 1, or −1 (more/unknown). */
-let derivChanges = -1;
 
 /**
  * p′ has exactly one simple root in (lo, lo + h) (Bernstein count): find it directly when p′(lo) and
@@ -195,135 +84,6 @@ function oneCriticalPoint(n: number, lo: number, hi: number): number {
   if (fa === 0 || fb === 0 || fa < 0 === fb < 0) return criticalPoints(n, lo, hi);
   bufA[0] = newtonPlain(chain, 0, n - 1, lo, hi, fa, fb, 0, guesses[1] as number);
   return 1;
-}
-
-/**
- * bernstein() for degree 4 in scalar arithmetic (no typed-array traffic: this is the hot path of
- * collision quartics, most of which stop here). Same results contract as bernstein(); its
- * Bernstein coefficients are computed directly as b_j = Σ_k C(j,k) a_k, a_k = T_k h^k / C(4,k).
- */
-function bernstein4(
-  c0: number,
-  c1: number,
-  c2: number,
-  c3: number,
-  c4: number,
-  lo: number,
-  hi: number,
-): number {
-  let t0 = c0;
-  let t1 = c1;
-  let t2 = c2;
-  let t3 = c3;
-  let s0 = c0 < 0 ? -c0 : c0;
-  let s1 = c1 < 0 ? -c1 : c1;
-  let s2 = c2 < 0 ? -c2 : c2;
-  let s3 = c3 < 0 ? -c3 : c3;
-  const s4 = c4 < 0 ? -c4 : c4;
-  if (lo !== 0) {
-    // Taylor shift to lo (synthetic division), and of |p| to |lo| for the error scale.
-    const al = lo < 0 ? -lo : lo;
-    t3 += lo * c4;
-    t2 += lo * t3;
-    t1 += lo * t2;
-    t0 += lo * t1;
-    t3 += lo * c4;
-    t2 += lo * t3;
-    t1 += lo * t2;
-    t3 += lo * c4;
-    t2 += lo * t3;
-    t3 += lo * c4;
-    s3 += al * s4;
-    s2 += al * s3;
-    s1 += al * s2;
-    s0 += al * s1;
-    s3 += al * s4;
-    s2 += al * s3;
-    s1 += al * s2;
-    s3 += al * s4;
-    s2 += al * s3;
-    s3 += al * s4;
-  }
-  const h = (hi - lo) * (1 + 4 * UNIT_ROUNDOFF);
-  const h2 = h * h;
-  const h3 = h2 * h;
-  const h4 = h2 * h2;
-  const a1 = t1 * h * 0.25;
-  const a2 = (t2 * h2) / 6;
-  const a3 = t3 * h3 * 0.25;
-  const a4 = c4 * h4;
-  const margin = 24 * UNIT_ROUNDOFF * (s0 + s1 * h + s2 * h2 + s3 * h3 + s4 * h4);
-  derivChanges = -1;
-  if (!(margin < Number.POSITIVE_INFINITY)) return -1;
-  // p′'s Bernstein coefficients (up to the factor 4/h): d_j = b_{j+1} − b_j.
-  const d0 = a1;
-  const d1 = a1 + a2;
-  const d2 = a1 + 2 * a2 + a3;
-  const d3 = a1 + 3 * a2 + 3 * a3 + a4;
-  const dm = 3 * margin;
-  if ((d0 > dm || d0 < -dm) && (d1 > dm || d1 < -dm) && (d2 > dm || d2 < -dm) && (d3 > dm || d3 < -dm)) {
-    let k = 0;
-    if (d1 < 0 !== d0 < 0) {
-      k++;
-      guesses[1] = lo + (h * (d0 / (d0 - d1))) / 3;
-    }
-    if (d2 < 0 !== d1 < 0) {
-      k++;
-      guesses[1] = lo + (h * (1 + d1 / (d1 - d2))) / 3;
-    }
-    if (d3 < 0 !== d2 < 0) {
-      k++;
-      guesses[1] = lo + (h * (2 + d2 / (d2 - d3))) / 3;
-    }
-    derivChanges = k <= 1 ? k : -1;
-  }
-  const b0 = t0;
-  const b1 = t0 + a1;
-  const b2 = t0 + 2 * a1 + a2;
-  const b3 = t0 + 3 * a1 + 3 * a2 + a3;
-  const b4 = t0 + 4 * a1 + 6 * a2 + 4 * a3 + a4;
-  if ((b0 > margin && b4 > margin) || (b0 < -margin && b4 < -margin)) {
-    // Same sign at both ends: no root, or an even number. One de Casteljau split at the middle
-    // often proves none (the halves' coefficients are averages: error ≤ margin + 4u·max|b| ≤ 2·margin).
-    const l1 = 0.5 * (b0 + b1);
-    const m1 = 0.5 * (b1 + b2);
-    const m2 = 0.5 * (b2 + b3);
-    const r3 = 0.5 * (b3 + b4);
-    const l2 = 0.5 * (l1 + m1);
-    const m3 = 0.5 * (m1 + m2);
-    const r2 = 0.5 * (m2 + r3);
-    const l3 = 0.5 * (l2 + m3);
-    const r1 = 0.5 * (m3 + r2);
-    const mid = 0.5 * (l3 + r1);
-    const m2x = 2 * margin;
-    if (b0 > 0) {
-      if (l1 > m2x && l2 > m2x && l3 > m2x && mid > m2x && r1 > m2x && r2 > m2x && r3 > m2x) return 0;
-    } else if (l1 < -m2x && l2 < -m2x && l3 < -m2x && mid < -m2x && r1 < -m2x && r2 < -m2x && r3 < -m2x) {
-      return 0;
-    }
-  }
-  if (!(b0 > margin || b0 < -margin) || !(b1 > margin || b1 < -margin)) return -1;
-  if (!(b2 > margin || b2 < -margin) || !(b3 > margin || b3 < -margin) || !(b4 > margin || b4 < -margin)) {
-    return -1;
-  }
-  let k = 0;
-  if (b1 < 0 !== b0 < 0) {
-    k++;
-    guesses[0] = lo + (h * (b0 / (b0 - b1))) / 4;
-  }
-  if (b2 < 0 !== b1 < 0) {
-    k++;
-    guesses[0] = lo + (h * (1 + b1 / (b1 - b2))) / 4;
-  }
-  if (b3 < 0 !== b2 < 0) {
-    k++;
-    guesses[0] = lo + (h * (2 + b2 / (b2 - b3))) / 4;
-  }
-  if (b4 < 0 !== b3 < 0) {
-    k++;
-    guesses[0] = lo + (h * (3 + b3 / (b3 - b4))) / 4;
-  }
-  return k <= 1 ? k : -1;
 }
 
 /** Interior roots of the derivative of P[0..m] (m ≥ 2) in (lo, hi), sorted, into bufA; count. */
@@ -482,7 +242,7 @@ function solveScaled(n: number, lo: number, hi: number, out: number[], known: nu
     m--;
   }
   if (m === 0) return; // every other term is below u·|c0|: p keeps the sign of c0
-  const v = known !== -2 ? known : bernstein(n, lo, hi); // −2: not computed yet
+  const v = known !== -2 ? known : bernstein(P, n, lo, hi, bufA, bufB); // −2: not computed yet
   if (v === 0) return;
   if (v === 1) {
     // Exactly one simple root in (lo, lo + h): when p(lo) and p(hi) have opposite exact signs it is
@@ -505,134 +265,5 @@ function solveScaled(n: number, lo: number, hi: number, out: number[], known: nu
   } else {
     ns = m >= 2 ? criticalPoints(m, lo, hi) : 0;
   }
-  solveLevel0(n, m, lo, hi, ns, out);
-}
-
-/** Certified signs at lo, the critical points and hi; one refined root per sign change. */
-function solveLevel0(n: number, m: number, lo: number, hi: number, ns: number, out: number[]): void {
-  let K = ns + 2;
-  pts[0] = lo;
-  for (let i = 0; i < ns; i++) pts[i + 1] = bufA[i] as number;
-  pts[K - 1] = hi;
-  let anyNoisy = false;
-  for (let i = 0; i < K; i++) {
-    sgn[i] = certSign(pts[i] as number);
-    absv[i] = lastAbsValue();
-    noisy[i] = lastWasNoisy() ? 1 : 0;
-    if (noisy[i] === 1 && i > 0 && i < K - 1) anyNoisy = true;
-  }
-  if (anyNoisy) K = exactCriticalNeighbours(K, n);
-  // Grazing (double-root) candidates: noisy critical points with no sign change on either side.
-  for (let i = 1; i < K - 1; i++) {
-    const s = sgn[i] as number;
-    if (noisy[i] === 0 || s === 0 || sgn[i - 1] === -s || sgn[i + 1] === -s) continue;
-    if (!criticalPoint(pts[i] as number, pts[i - 1] as number, pts[i + 1] as number, crit)) continue;
-    let best = -1;
-    let bestAbs = Number.POSITIVE_INFINITY;
-    for (let j = 0; j < 2; j++) {
-      const x = crit[j] as number;
-      const sx = certSign(x);
-      if (sx !== s) {
-        pts[i] = x; // the exact p reaches zero or crosses it here: ordinary pieces take over
-        sgn[i] = sx;
-        absv[i] = lastAbsValue();
-        noisy[i] = 0;
-        best = -2;
-        break;
-      }
-      if (lastAbsValue() < bestAbs) {
-        bestAbs = lastAbsValue();
-        best = j;
-      }
-    }
-    if (best >= 0) {
-      pts[i] = crit[best] as number;
-      sgn[i] = 0; // reported as a (double) root; its pieces have no sign change
-      absv[i] = bestAbs;
-    }
-  }
-  const quad = n === 2 && m === 2;
-  let nq = 0;
-  if (quad) nq = quadRootsPlain(P[0] as number, P[1] as number, P[2] as number, lo, hi, closed, 0);
-  for (let i = 0; i < K; i++) {
-    const a = pts[i] as number;
-    const sa = sgn[i] as number;
-    if (sa === 0) push(out, a);
-    if (i === K - 1) break;
-    const sb = sgn[i + 1] as number;
-    if (sa === 0 || sb !== -sa) continue;
-    const b = pts[i + 1] as number;
-    const aa = absv[i] as number;
-    const ab = absv[i + 1] as number;
-    let x0 = Number.NaN;
-    if (quad) {
-      for (let j = 0; j < nq; j++)
-        if ((closed[j] as number) > a && (closed[j] as number) < b) x0 = closed[j] as number;
-    }
-    if (Number.isNaN(x0)) {
-      const crit = (i > 0 ? 1 : 0) | (i + 1 < K - 1 ? 2 : 0);
-      x0 = newtonPlain(P, 0, n, a, b, sa * (aa > 0 ? aa : 1), -sa * (ab > 0 ? ab : 1), crit);
-    }
-    push(out, refineRoot(a, b, sa, aa, ab, x0));
-  }
-}
-
-/**
- * Where p is at rounding-noise level at a critical point, plain arithmetic cannot resolve the
- * structure around it (a cluster of roots of p′): the nearest exact sign changes of p′ on each side
- * (found with certified signs, see certify.ts) are inserted as further piece ends with their exact
- * signs of p, and the search goes on beyond each inserted point while p is still at noise level
- * there, so that no root hides in a non-monotone piece. Returns the new number of points.
- */
-function exactCriticalNeighbours(K: number, n: number): number {
-  let k = K;
-  const cap = 2 * n + 1; // lo, hi, and at most n − 1 structural plus n − 1 exact critical points
-  // From the end, so that insertions do not disturb the indices still to visit.
-  for (let i = K - 2; i >= 1; i--) {
-    if (noisy[i] !== 1) continue;
-    // Downwards: insert below, keep going while the inserted point is at noise level.
-    let j = i;
-    while (k < cap && nearestCritical(pts[j] as number, pts[j - 1] as number, crit)) {
-      const y = pick(crit[1] as number, crit[0] as number);
-      if (!(y < (pts[j] as number) && y > (pts[j - 1] as number))) break;
-      k = insertPoint(k, j, y);
-      if (noisy[j] !== 1) break;
-    }
-    // Upwards from the original point, which moved up by the insertions below it.
-    j = i + (k - K);
-    while (k < cap && nearestCritical(pts[j] as number, pts[j + 1] as number, crit)) {
-      const y = pick(crit[0] as number, crit[1] as number);
-      if (!(y > (pts[j] as number) && y < (pts[j + 1] as number))) break;
-      k = insertPoint(k, j + 1, y);
-      j++;
-      if (noisy[j] !== 1) break;
-    }
-    K = k;
-  }
-  return k;
-}
-
-/** Of the two doubles around a sign change of p′, one where p is exactly 0 if any, else `first`. */
-function pick(first: number, second: number): number {
-  if (first === second || certSign(first) === 0) return first;
-  return certSign(second) === 0 ? second : first;
-}
-
-/** Insert x (with its exact sign of p) at index j of the point list of length k; returns k + 1. */
-function insertPoint(k: number, j: number, x: number): number {
-  for (let t = k; t > j; t--) {
-    pts[t] = pts[t - 1] as number;
-    sgn[t] = sgn[t - 1] as number;
-    absv[t] = absv[t - 1] as number;
-    noisy[t] = noisy[t - 1] as number;
-  }
-  pts[j] = x;
-  sgn[j] = certSign(x);
-  absv[j] = lastAbsValue();
-  noisy[j] = lastWasNoisy() ? 1 : 0;
-  return k + 1;
-}
-
-function push(out: number[], x: number): void {
-  if (out.length === 0 || x > (out[out.length - 1] as number)) out.push(x + 0); // −0 → +0
+  solveLevel0(P, n, m, lo, hi, bufA, ns, out);
 }
