@@ -5,13 +5,15 @@
  * so it gives the same bits whenever and from whichever side it is computed.
  */
 import { positionAt, velocityAt } from "../physics/motion.js";
-import { discDiscTime, discLineCrossings, firstDownCrossingQuadratic } from "../physics/timeOfImpact.js";
+import { discDiscTime, discLineCrossings } from "../physics/timeOfImpact.js";
 import { EV_BODY, EV_LINE, EV_NONE, EV_POINT, EV_STOP } from "./bodyStore.js";
+import { axisExit } from "./cellExit.js";
 import { type Line, lineParameter, type Point, parameterOnLine } from "./obstacles.js";
 import { SimState } from "./state.js";
 
 const INF = Number.POSITIVE_INFINITY;
 const sides = new Float64Array(2);
+const side = new Float64Array(1);
 
 function idLess(a: string, b: string): boolean {
   return a < b;
@@ -260,70 +262,36 @@ export class Predictor extends SimState {
     const t0 = b.t0[s] as number;
     const lo = this.time - t0;
     const hi = (b.tEnd[s] as number) - t0;
-    const x0 = b.x0[s] as number;
-    const y0 = b.y0[s] as number;
-    const vx = b.vx0[s] as number;
-    const vy = b.vy0[s] as number;
-    const hax = 0.5 * (b.ax[s] as number);
-    const hay = 0.5 * (b.ay[s] as number);
-    let best = INF;
-    let dir = -1;
-    if (hax === 0 && hay === 0) {
-      // Uniform motion (the common case): only the boundaries ahead can be crossed.
-      if (vx > 0 && cx < grid.nx - 1) {
-        best = Math.max(lo, (grid.boundaryX(cx + 1) - x0) / vx);
-        dir = 1;
-      } else if (vx < 0 && cx > 0) {
-        best = Math.max(lo, (grid.boundaryX(cx) - x0) / vx);
-        dir = 0;
-      }
-      if (vy > 0 && cy < grid.ny - 1) {
-        const t = Math.max(lo, (grid.boundaryY(cy + 1) - y0) / vy);
-        if (t < best) {
-          best = t;
-          dir = 3;
-        }
-      } else if (vy < 0 && cy > 0) {
-        const t = Math.max(lo, (grid.boundaryY(cy) - y0) / vy);
-        if (t < best) {
-          best = t;
-          dir = 2;
-        }
-      }
-      b.crossDir[s] = dir;
-      return best === INF ? INF : Math.max(this.time, t0 + best);
-    }
-    if (cx > 0) {
-      const t = firstDownCrossingQuadratic(x0 - grid.boundaryX(cx), vx, hax, lo, hi);
-      if (t < best) {
-        best = t;
-        dir = 0;
-      }
-    }
-    if (cx < grid.nx - 1) {
-      const t = firstDownCrossingQuadratic(grid.boundaryX(cx + 1) - x0, -vx, -hax, lo, hi);
-      if (t < best) {
-        best = t;
-        dir = 1;
-      }
-    }
-    if (cy > 0) {
-      const t = firstDownCrossingQuadratic(y0 - grid.boundaryY(cy), vy, hay, lo, hi);
-      if (t < best) {
-        best = t;
-        dir = 2;
-      }
-    }
-    if (cy < grid.ny - 1) {
-      const t = firstDownCrossingQuadratic(grid.boundaryY(cy + 1) - y0, -vy, -hay, lo, hi);
-      if (t < best) {
-        best = t;
-        dir = 3;
-      }
-    }
-    b.crossDir[s] = dir;
-    if (best === INF) return INF;
-    const t = t0 + best;
-    return Math.max(t, this.time);
+    // Cell bounds without allocation; edge cells extend to infinity.
+    const x0 = cx === 0 ? -INF : grid.boundaryX(cx);
+    const x1 = cx === grid.nx - 1 ? INF : grid.boundaryX(cx + 1);
+    const y0 = cy === 0 ? -INF : grid.boundaryY(cy);
+    const y1 = cy === grid.ny - 1 ? INF : grid.boundaryY(cy + 1);
+    const tx = axisExit(
+      b.x0[s] as number,
+      b.vx0[s] as number,
+      0.5 * (b.ax[s] as number),
+      lo,
+      hi,
+      x0,
+      x1,
+      side,
+    );
+    const sx = side[0] as number;
+    const ty = axisExit(
+      b.y0[s] as number,
+      b.vy0[s] as number,
+      0.5 * (b.ay[s] as number),
+      lo,
+      hi,
+      y0,
+      y1,
+      side,
+    );
+    const sy = side[0] as number;
+    // Directions: 0 -x, 1 +x, 2 -y, 3 +y.
+    const best = Math.min(tx, ty);
+    b.crossDir[s] = best === INF ? -1 : tx <= ty ? (sx < 0 ? 0 : 1) : sy < 0 ? 2 : 3;
+    return best === INF ? INF : Math.max(this.time, t0 + best);
   }
 }
