@@ -14,7 +14,7 @@ import type { Action, Until, Vec2 } from "../scene/types.js";
 import type { WorldEvent } from "../sim/types.js";
 import { World } from "../sim/world.js";
 import { applyToWorld, touchedBodies } from "./applyAction.js";
-import { type Keyframe, loadMotions, snapshotMotions } from "./keyframe.js";
+import { type Keyframe, loadMotions, snapshotMotions, snapshotProps } from "./keyframe.js";
 import { MotionTable } from "./motionTable.js";
 import { K_ACTION, K_BODY_BODY, K_BODY_LINE, K_BODY_POINT, K_STOP, Records } from "./records.js";
 import type { TimelineCounts } from "./types.js";
@@ -23,12 +23,12 @@ const INF = Number.POSITIVE_INFINITY;
 
 /** Records between keyframes: at least this many, so small scenes do not drown in keyframes… */
 export const KEYFRAME_MIN_RECORDS = 1024;
-/** …and this many per live body, so a keyframe (88 bytes per body) costs about 7 bytes per record,
+/** …and this many per live body, so a keyframe (40 bytes per body) costs about 7 bytes per record,
  *  while stateAt replays at most this many records per body (constant work per body). */
-export const KEYFRAME_RECORDS_PER_BODY = 12;
+export const KEYFRAME_RECORDS_PER_BODY = 6;
 /** Every this many keyframes (and after every group of actions) a World clone is kept: the points
  *  a recomputation restarts from. A restart replays at most this many keyframe intervals. */
-export const CLONE_EVERY_KEYFRAMES = 8;
+export const CLONE_EVERY_KEYFRAMES = 16;
 
 /** Compute at least until `tLimit` or until `eLimit` collisions and stops in total, whichever first
  *  (or until nothing is left to happen). */
@@ -135,7 +135,9 @@ export class TimelineCore {
 
   keyframe(afterActions: boolean, withWorld: boolean): void {
     const w = this.world;
-    const order = this.liveOrder();
+    const prev = this.keyframes[this.keyframes.length - 1];
+    const share = !afterActions && prev !== undefined;
+    const order = share ? prev.order : this.liveOrder();
     this.keyframes.push({
       time: w.time,
       record: this.records.length,
@@ -147,9 +149,10 @@ export class TimelineCore {
       g: w.g,
       gravity: [w.gx, w.gy],
       order,
+      props: share ? prev.props : snapshotProps(this.table, order),
       motions: snapshotMotions(this.table, order),
-      lines: w.lines(),
-      points: w.points(),
+      lines: share ? prev.lines : w.lines(),
+      points: share ? prev.points : w.points(),
       bodyCount: this.bodyIds.length,
       lineCount: this.lineIds.length,
       pointCount: this.pointIds.length,

@@ -26,9 +26,12 @@ export interface Keyframe {
   eventTotal: number;
   g: number;
   gravity: Vec2;
-  /** live body numbers sorted by id */
+  /** live body numbers sorted by id (shared with the keyframes since the last group of actions) */
   order: Uint32Array;
-  /** STRIDE numbers per body of `order` */
+  /** r, m, mu per body of `order` (shared like `order`: only actions change them) */
+  props: Float64Array;
+  /** t0, x0, y0, vx0, vy0 per body of `order`; ax, ay and the end time are recomputed on loading
+   *  with motionLaw, exactly as the World computed them */
   motions: Float64Array;
   lines: LineState[];
   points: PointState[];
@@ -43,21 +46,58 @@ export interface Keyframe {
   world: World | null;
 }
 
-/** Copy the motions of the bodies in `order` out of `table`. */
+/** Numbers per body in Keyframe.motions. */
+export const KF_MOTION = 5;
+
+/** Copy the motion starts (t0, x0, y0, vx0, vy0) of the bodies in `order` out of `table`. */
 export function snapshotMotions(table: MotionTable, order: Uint32Array): Float64Array {
-  const out = new Float64Array(order.length * STRIDE);
+  const out = new Float64Array(order.length * KF_MOTION);
   const d = table.data;
   for (let k = 0; k < order.length; k++) {
     const o = (order[k] as number) * STRIDE;
-    out.set(d.subarray(o, o + STRIDE), k * STRIDE);
+    const q = k * KF_MOTION;
+    out[q] = d[o] as number;
+    out[q + 1] = d[o + 1] as number;
+    out[q + 2] = d[o + 2] as number;
+    out[q + 3] = d[o + 3] as number;
+    out[q + 4] = d[o + 4] as number;
   }
   return out;
 }
 
-/** Load a keyframe's motions into `table` (which must have room for kf.bodyCount bodies). */
+/** r, m, mu of the bodies in `order`. */
+export function snapshotProps(table: MotionTable, order: Uint32Array): Float64Array {
+  const out = new Float64Array(order.length * 3);
+  for (let k = 0; k < order.length; k++) {
+    const i = order[k] as number;
+    out[3 * k] = table.r(i);
+    out[3 * k + 1] = table.m(i);
+    out[3 * k + 2] = table.mu(i);
+  }
+  return out;
+}
+
+/** Load a keyframe's motions into `table` (made large enough for kf.bodyCount bodies). */
 export function loadMotions(kf: Keyframe, table: MotionTable): void {
   table.ensure(kf.bodyCount);
-  for (let k = 0; k < kf.order.length; k++) table.load(kf.order[k] as number, kf.motions, k * STRIDE);
+  const m = kf.motions;
+  const p = kf.props;
+  const [gx, gy] = kf.gravity;
+  for (let k = 0; k < kf.order.length; k++) {
+    const q = k * KF_MOTION;
+    table.setProps(kf.order[k] as number, p[3 * k] as number, p[3 * k + 1] as number, p[3 * k + 2] as number);
+    table.start(
+      kf.order[k] as number,
+      m[q] as number,
+      m[q + 1] as number,
+      m[q + 2] as number,
+      m[q + 3] as number,
+      m[q + 4] as number,
+      kf.g,
+      gx,
+      gy,
+    );
+  }
 }
 
 /** Index of the last keyframe with time <= t (keyframes are in time order), or -1. */
@@ -84,7 +124,12 @@ export function keyframeAtRecord(kfs: readonly Keyframe[], i: number): number {
   return lo - 1;
 }
 
-/** Bytes held by a keyframe, not counting its World clone. */
-export function keyframeBytes(kf: Keyframe): number {
-  return kf.order.byteLength + kf.motions.byteLength + 48 * (kf.lines.length + kf.points.length) + 128;
+/** Bytes held by a keyframe, not counting its World clone nor what it shares with `prev`. */
+export function keyframeBytes(kf: Keyframe, prev: Keyframe | undefined): number {
+  let bytes = kf.motions.byteLength + 160;
+  if (prev?.order !== kf.order) bytes += kf.order.byteLength;
+  if (prev?.props !== kf.props) bytes += kf.props.byteLength;
+  if (prev?.lines !== kf.lines) bytes += 48 * kf.lines.length;
+  if (prev?.points !== kf.points) bytes += 32 * kf.points.length;
+  return bytes;
 }

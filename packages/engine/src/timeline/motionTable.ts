@@ -31,18 +31,17 @@ export class MotionTable {
     this.data = d;
   }
 
-  /** Copy one body's 11 numbers from `src` at `srcOffset`. */
-  load(i: number, src: Float64Array, srcOffset: number): void {
-    this.data.set(src.subarray(srcOffset, srcOffset + STRIDE), i * STRIDE);
+  /** Set body i's radius, mass and friction coefficient (before start()). */
+  setProps(i: number, r: number, m: number, mu: number): void {
+    const o = i * STRIDE;
+    this.data[o + 8] = r;
+    this.data[o + 9] = m;
+    this.data[o + 10] = mu;
   }
 
   /** Set body i from a World state taken at t0 (the World rebases edited bodies at the edit time). */
   setFromState(i: number, t0: number, s: BodyState, g: number, gx: number, gy: number): void {
-    const d = this.data;
-    const o = i * STRIDE;
-    d[o + 8] = s.r;
-    d[o + 9] = s.m;
-    d[o + 10] = s.mu;
+    this.setProps(i, s.r, s.m, s.mu);
     this.start(i, t0, s.x, s.y, s.vx, s.vy, g, gx, gy);
   }
 

@@ -21,7 +21,8 @@ const vel = new Float64Array(4);
 export function applyRecord(records: Records, i: number, table: MotionTable, kf: Keyframe): void {
   const t = records.time[i] as number;
   const o = 4 * i;
-  const [gx, gy] = kf.gravity;
+  const gx = kf.gravity[0];
+  const gy = kf.gravity[1];
   const v = records.vel;
   table.rebase(records.a[i] as number, t, v[o] as number, v[o + 1] as number, kf.g, gx, gy);
   if (records.kind[i] === K_BODY_BODY)

@@ -279,10 +279,10 @@ export class Timeline {
   historyBytes(): number {
     const c = this.core;
     let bytes = c.records.bytes();
-    for (const kf of c.keyframes) {
-      bytes += keyframeBytes(kf);
+    c.keyframes.forEach((kf, k) => {
+      bytes += keyframeBytes(kf, c.keyframes[k - 1]);
       if (kf.world !== null) bytes += CLONE_BYTES_PER_BODY * kf.order.length + 1024;
-    }
+    });
     return bytes;
   }
 
