@@ -48,8 +48,9 @@ export function SceneCanvas() {
     let fitPending = ui.getState().fitRequest > 0;
     const trails = new TrailRecorder();
 
+    let dpr = 1;
     const resize = () => {
-      const dpr = window.devicePixelRatio || 1;
+      dpr = window.devicePixelRatio || 1;
       const r = canvas.getBoundingClientRect();
       size = { width: Math.max(r.width, 1), height: Math.max(r.height, 1) };
       canvas.width = Math.round(size.width * dpr);
@@ -75,6 +76,7 @@ export function SceneCanvas() {
     let raf = 0;
     const tick = () => {
       raf = requestAnimationFrame(tick);
+      if ((window.devicePixelRatio || 1) !== dpr) resize(); // browser zoom or another screen
       const s = ui.getState();
       client.wantFrame(s.t);
       const f = client.latestFrame;

@@ -1,7 +1,7 @@
 import { newtonsCradle, originalDemo, Timeline } from "@chapgame/engine";
 import { describe, expect, it } from "vitest";
 import { eventPage, eventTicks, lastEventTime } from "./eventQueries";
-import { SeriesRecorder } from "./series";
+import { exactSeries, SeriesRecorder } from "./series";
 
 /** Newton's cradle computed 10 s: 6 actions at 0, then 5 collisions at t = 1. */
 function cradle() {
@@ -67,5 +67,15 @@ describe("SeriesRecorder", () => {
     expect(p).toEqual({ t: 10, energy: 0.5 * 1 * 16, collisions: tl.eventCount });
     r.cut(5);
     expect(r.points(10)).toEqual([]);
+  });
+});
+
+describe("exactSeries", () => {
+  it("counts the logged events up to each sample time; the cradle keeps its energy", () => {
+    const tl = cradle();
+    const s = exactSeries(tl, 10);
+    expect(s.map((p) => p.t)).toEqual([0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10]);
+    expect(s.map((p) => p.collisions)).toEqual([6, 11, 11, 11, 11, 11, 11, 11, 11, 11, 11]);
+    for (const p of s) expect(p.energy).toBe(8);
   });
 });

@@ -10,7 +10,7 @@ import { errorInfo } from "./errors";
 import { eventPage, eventTicks, lastEventTime } from "./eventQueries";
 import { packFrame } from "./packFrame";
 import type { ComputeStatus, HostMessage, Request, RequestMessage, TimelineInfo } from "./protocol";
-import { SeriesRecorder } from "./series";
+import { EXACT_MAX_BODIES, EXACT_MAX_EVENTS, exactSeries, SeriesRecorder } from "./series";
 import type { TimelineFactory, TimelineLike } from "./timelineLike";
 
 /** Wall-clock milliseconds one round of slices may take before the host yields to messages. */
@@ -102,8 +102,14 @@ export class TimelineHost {
         return eventPage(this.tl, r.t, r.before, r.after, r.body);
       case "ticks":
         return eventTicks(this.tl, r.n);
-      case "series":
-        return this.series.points(r.n);
+      case "series": {
+        const tl = this.tl;
+        const small =
+          tl.horizon > 0 &&
+          tl.eventCount <= EXACT_MAX_EVENTS &&
+          tl.stateAt(tl.horizon).bodies.length <= EXACT_MAX_BODIES;
+        return small ? exactSeries(tl, r.n) : this.series.points(r.n);
+      }
     }
   }
 

@@ -42,3 +42,31 @@ export class SeriesRecorder {
     return out;
   }
 }
+
+/** Logs up to this many events get an exact series (one log read + stateAt per sample). */
+export const EXACT_MAX_EVENTS = 20_000;
+/** ... and up to this many bodies (stateAt costs per body). */
+export const EXACT_MAX_BODIES = 300;
+
+/**
+ * The exact series of a small timeline: energy at n + 1 evenly spaced times, and the number of
+ * logged events up to each of them (counted from one read of the whole log).
+ */
+export function exactSeries(
+  tl: Pick<TimelineLike, "horizon" | "stateAt" | "eventsBetween">,
+  n: number,
+): SeriesPoint[] {
+  const h = tl.horizon;
+  const times = tl.eventsBetween(0, h).map((e) => e.time);
+  const out: SeriesPoint[] = [];
+  let k = 0;
+  for (let i = 0; i <= n; i++) {
+    const t = i === n ? h : (h * i) / n;
+    while (k < times.length && times[k]! <= t) k++;
+    let energy = 0;
+    for (const b of tl.stateAt(t).bodies)
+      if (Number.isFinite(b.m)) energy += 0.5 * b.m * (b.vx * b.vx + b.vy * b.vy);
+    out.push({ t, energy, collisions: k });
+  }
+  return out;
+}
