@@ -106,7 +106,7 @@ describe("Timeline properties", () => {
     );
   });
 
-  it("inserting an action in the past equals building from scratch with it (or is refused, changing nothing)", () => {
+  it("inserting an action in the past (and undo/redo by setActions) equals building from scratch (or is refused, changing nothing)", () => {
     const actionArb = fc.record({
       kind: fc.constantFrom("giveVelocity", "updateBody", "removeBody", "addPoint", "setGlobal"),
       frac: num(0, 0.999),
@@ -144,6 +144,13 @@ describe("Timeline properties", () => {
         expect(tl.toScene().actions).toEqual([...s.actions, action]);
         const scratch = Timeline.fromScene({ ...s, actions: [...s.actions, action] });
         scratch.prolongTo(H);
+        expect(observe(tl, H, at)).toStrictEqual(observe(scratch, H, at));
+        // undo and redo through setActions (recomputed from the last keyframe before the change)
+        tl.setActions(s.actions);
+        const original = Timeline.fromScene(s);
+        original.prolongTo(H);
+        expect(observe(tl, H, at)).toStrictEqual(observe(original, H, at));
+        tl.setActions([...s.actions, action]);
         expect(observe(tl, H, at)).toStrictEqual(observe(scratch, H, at));
         // and saving and loading gives the same timeline
         const loaded = Timeline.fromScene(tl.toScene());

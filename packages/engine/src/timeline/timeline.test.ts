@@ -303,6 +303,24 @@ describe("actions and their validation against the simulated state", () => {
     expect(fingerprint(tl)).toEqual(before);
   });
 
+  it("undo/redo by setActions in a long history restarts from a World keyframe and equals from scratch", () => {
+    const s = dilutedGas({ n: 100, packing: 0.2, seed: 4 });
+    const tl = Timeline.fromScene(s);
+    tl.prolong({ events: 40_000 });
+    const H = tl.horizon;
+    const late: Action = { time: 0.9 * H, type: "giveVelocity", id: "d7", v: [0.5, 0.5] };
+    tl.apply(late);
+    const withLate = Timeline.fromScene({ ...s, actions: [...s.actions, late] });
+    withLate.prolongTo(H);
+    expect(tl.eventsBetween(0.85 * H, H)).toEqual(withLate.eventsBetween(0.85 * H, H));
+    tl.setActions(s.actions);
+    const original = Timeline.fromScene(s);
+    original.prolongTo(H);
+    expect(tl.eventsBetween(0.85 * H, H)).toEqual(original.eventsBetween(0.85 * H, H));
+    expect(tl.stateAt(H)).toEqual(original.stateAt(H));
+    expect(tl.counts()).toEqual(original.counts());
+  });
+
   it("an action's until computes that far ahead: seconds, events, or until idle", () => {
     const tl = Timeline.fromScene(scene([disc("a", 0, 0), disc("b", 10, 0)]));
     expect(tl.horizon).toBe(0);

@@ -36,6 +36,18 @@ function checkUntil(raw: unknown, path: string): Until {
   return u;
 }
 
+/** Deep equality of plain data (numbers by Object.is, so -0 and 0 differ). */
+function sameValue(a: unknown, b: unknown): boolean {
+  if (typeof a === "number" || typeof b === "number") return Object.is(a, b);
+  if (typeof a !== "object" || typeof b !== "object" || a === null || b === null) return a === b;
+  const ka = Object.keys(a);
+  const kb = Object.keys(b);
+  if (ka.length !== kb.length) return false;
+  const ra = a as Record<string, unknown>;
+  const rb = b as Record<string, unknown>;
+  return ka.every((key) => Object.hasOwn(rb, key) && sameValue(ra[key], rb[key]));
+}
+
 function sameUntil(a: Until, b: Until): boolean {
   return a.time === b.time && a.events === b.events;
 }
@@ -146,22 +158,63 @@ export class Timeline {
     this.changed();
   }
 
-  /** Replace the whole action list (undo/redo, paste), atomically: recomputed from scratch up to at
-   *  least the current horizon. Errors name `actions[i]` by the index in `actions`. */
+  /** Replace the whole action list (undo/redo, paste), atomically, recomputing up to at least the
+   *  current horizon. Only the part after the first changed action is recomputed (from the last World
+   *  keyframe before it). Errors name `actions[i]` by the index in `actions`. */
   setActions(actions: readonly Action[]): void {
     const checked = actions.map((a, i) => checkAction(a, `actions[${i}]`));
     const order = applyOrder(checked);
-    const oldHorizon = this.core.horizon;
-    const o = this.options;
-    const core = new TimelineCore(o.g as number, o.gravity as Vec2, o.history !== false, o.compute !== false);
-    core.acts = order.map((i) => checked[i] as Action);
-    core.pathOf = (k) => `actions[${order[k]}]`;
-    if (core.eager && oldHorizon > 0) core.goals.push({ tLimit: oldHorizon, eLimit: INF });
-    core.drive(INF, null);
-    core.pathOf = (k) => `actions[${k}]`;
-    this.core = core;
+    const sorted = order.map((i) => checked[i] as Action);
+    const c = this.core;
+    const oldHorizon = c.horizon;
+    const pathOf = (k: number) => `actions[${order[k]}]`;
+    const k = c.history && c.eager ? this.restartFor(sorted) : 0;
+    if (k > 0) {
+      const undo = c.save((c.keyframes[k] as Keyframe).record);
+      try {
+        c.restoreKeyframe(k);
+        c.acts = sorted;
+        c.pathOf = pathOf;
+        c.reopenGoals();
+        c.goals.push({ tLimit: oldHorizon, eLimit: INF });
+        c.drive(INF, null);
+        c.pathOf = (i) => `actions[${i}]`;
+      } catch (e) {
+        undo();
+        throw e;
+      }
+    } else {
+      const o = this.options;
+      const core = new TimelineCore(
+        o.g as number,
+        o.gravity as Vec2,
+        o.history !== false,
+        o.compute !== false,
+      );
+      core.acts = sorted;
+      core.pathOf = pathOf;
+      if (core.eager && oldHorizon > 0) core.goals.push({ tLimit: oldHorizon, eLimit: INF });
+      core.drive(INF, null);
+      core.pathOf = (i) => `actions[${i}]`;
+      this.core = core;
+    }
     this.slice = null;
     this.changed();
+  }
+
+  /** The keyframe (holding a World) to recompute from when the action list becomes `sorted`: the
+   *  last one before the first changed action, taken when only unchanged actions were applied
+   *  (0 = from scratch). */
+  private restartFor(sorted: readonly Action[]): number {
+    const c = this.core;
+    let d = 0;
+    while (d < sorted.length && d < c.acts.length && sameValue(sorted[d], c.acts[d])) d++;
+    const cut = Math.min(sorted[d]?.time ?? INF, c.acts[d]?.time ?? INF);
+    for (let k = c.keyframes.length - 1; k > 0; k--) {
+      const kf = c.keyframes[k] as Keyframe;
+      if (kf.world !== null && kf.actionCount <= d && kf.time < cut) return k;
+    }
+    return 0;
   }
 
   /** Compute further from the horizon: `until.time` seconds and/or `until.events` collisions and
