@@ -12,8 +12,9 @@ export const UNIT_ROUNDOFF = 2 ** -53;
 
 /**
  * Degree drop in realRoots: the leading coefficient c_n is dropped when, for some j < n,
- * |c_n|·M^(n−j) ≤ ROOTS_DEGREE_DROP·|c_j| with M = max(|lo|, |hi|). Then |c_n tⁿ| ≤ u·|c_j t^j| on the
- * whole interval: the term is below one rounding of a lower coefficient, so it cannot change the
+ * |c_n|·M^(n−j) < ROOTS_DEGREE_DROP·|c_j| with M = max(|lo|, |hi|) (strict, so a zero c_j never
+ * qualifies). Then |c_n tⁿ| < u·|c_j t^j| on the whole interval: the term is below one rounding of a
+ * lower coefficient, so it cannot change the
  * monotone structure except where p is at its rounding-noise level. Relative, never absolute: scaling
  * the coefficients or the interval by any factor gives the same decision. Roots are still certified
  * against the full polynomial, so the drop only decides the splitting and the cost.
@@ -23,6 +24,7 @@ export const ROOTS_DEGREE_DROP = UNIT_ROUNDOFF;
 /**
  * Plain Horner error bound factor: |fl(p(x)) − p(x)| ≤ γ₂ₙ·p̃(|x|) with γ₂ₙ = 2nu/(1 − 2nu)
  * (Higham, Accuracy and Stability, eq. 5.3). 2.5·n·u covers γ₂ₙ and the rounding of the computed p̃.
+ * |p(x)| within this bound is also the solver's "rounding noise" test for grazing (double) roots.
  */
 export const PLAIN_HORNER_BOUND_FACTOR = 2.5;
 
