@@ -20,6 +20,7 @@ import type { Action, SceneFile, Until, Vec2 } from "../scene/types.js";
 import { type Goal, TimelineCore } from "./core.js";
 import { type Keyframe, keyframeBytes } from "./keyframe.js";
 import { MotionTable } from "./motionTable.js";
+import { K_ACTION } from "./records.js";
 import { logEvents, stateAt } from "./replay.js";
 import type { LogEvent, ProlongResult, SceneState, TimelineCounts, TimelineOptions } from "./types.js";
 
@@ -124,7 +125,7 @@ export class Timeline {
     const forward =
       a.time > c.horizon ||
       (a.time === c.horizon &&
-        (last < 0 || (c.records.time[last] as number) < a.time || c.records.kind[last] === 4));
+        (last < 0 || (c.records.time[last] as number) < a.time || c.records.kind[last] === K_ACTION));
     if (!forward && !c.history)
       throw new SceneError("action.time", `must be >= the horizon ${c.horizon} (history is off)`);
     let k = 0;
