@@ -175,6 +175,21 @@ describe("editor end to end", () => {
     await poll(() => bodies().getByRole("row").count()).toBe(7);
   });
 
+  it("Galperin's billiard with 3 digits, computed until idle, counts 314 collisions", async () => {
+    await page.getByRole("button", { name: "∞" }).click();
+    const select = page.getByRole("combobox", { name: "Preset" });
+    await select.selectOption("galperin");
+    await page.getByRole("spinbutton", { name: "Digits of π" }).fill("3");
+    await page.getByRole("button", { name: "Load preset" }).click();
+    const stats = page.getByRole("table", { name: "Stats" });
+    const stat = async (name: string) =>
+      Number(await stats.getByRole("row").filter({ hasText: name }).getByRole("cell").textContent());
+    await poll(async () => (await stat("body–body")) + (await stat("body–line"))).toBe(314);
+    await poll(() => page.getByText("(no more events)").count()).toBe(1);
+    await screenshot(page, "10-galperin-314");
+    await page.getByRole("checkbox", { name: "Time" }).check();
+  });
+
   it("space plays and pauses; the event log jumps to an event", async () => {
     await loadPreset("Newton's cradle");
     await page.locator("body").click({ position: { x: 5, y: 5 } });
