@@ -72,8 +72,12 @@ export class TimelineCore {
   counts = emptyCounts();
   eventTotal = 0;
   goals: Goal[] = [];
-  /** the last advance reached its time limit (all events at world.time are processed) */
+  /** every event at world.time is processed (the last advance stopped at its time limit, and no
+   *  action was applied since) */
   atTimeLimit = true;
+  /** a group of actions was applied at world.time and nothing was computed since: an action at the
+   *  same time joins that group (as it would when building from scratch) */
+  groupOpen = false;
   /** nothing is queued in the World */
   idle = true;
   /** time of the last event or action */
@@ -196,6 +200,9 @@ export class TimelineCore {
       this.applied++;
     }
     this.idle = false;
+    // events at t that the actions cause are still to be processed (advance up to t does it)
+    this.atTimeLimit = false;
+    this.groupOpen = true;
     if (!this.history) return;
     // Actions applied one call at a time at the same instant (an editor or a script adding bodies)
     // would stack one keyframe each: the previous one is redundant when nothing happened since.
@@ -252,7 +259,7 @@ export class TimelineCore {
   private due(): boolean {
     return (
       this.applied < this.acts.length &&
-      this.atTimeLimit &&
+      (this.atTimeLimit || this.groupOpen) &&
       (this.acts[this.applied] as Action).time === this.world.time
     );
   }
@@ -292,6 +299,7 @@ export class TimelineCore {
       const res = this.world.advance(limits, this.onEvent);
       events += res.events;
       this.atTimeLimit = res.reason !== "events";
+      this.groupOpen = false;
       this.idle = res.reason === "idle";
       if (this.history) {
         const last = this.keyframes[this.keyframes.length - 1] as Keyframe;
@@ -336,6 +344,7 @@ export class TimelineCore {
     this.table = new MotionTable(Math.max(16, kf.bodyCount));
     loadMotions(kf, this.table);
     this.atTimeLimit = kf.atTimeLimit;
+    this.groupOpen = kf.afterActions;
     this.idle = false;
     this.lastLogged = kf.record > 0 ? (this.records.time[kf.record - 1] as number) : 0;
   }
@@ -380,6 +389,7 @@ export class TimelineCore {
       eventTotal: this.eventTotal,
       goals: this.goals.slice(),
       atTimeLimit: this.atTimeLimit,
+      groupOpen: this.groupOpen,
       idle: this.idle,
       lastLogged: this.lastLogged,
       sortedLive: this.sortedLive,
@@ -404,6 +414,7 @@ export class TimelineCore {
       this.eventTotal = saved.eventTotal;
       this.goals = saved.goals;
       this.atTimeLimit = saved.atTimeLimit;
+      this.groupOpen = saved.groupOpen;
       this.idle = saved.idle;
       this.lastLogged = saved.lastLogged;
       this.sortedLive = saved.sortedLive;

@@ -321,6 +321,26 @@ describe("actions and their validation against the simulated state", () => {
     expect(tl.counts()).toEqual(original.counts());
   });
 
+  it("events an action causes at its own time are part of the state at that time (touching cradle at t = 0)", () => {
+    const s = newtonsCradle();
+    const striker = s.actions.find((a) => a.type === "addBody" && a.id === "striker");
+    if (striker?.type === "addBody") striker.x = -2; // touching c1, moving towards it
+    const tl = Timeline.fromScene(s);
+    tl.prolongTo(0);
+    expect(tl.stateAt(0).bodies.map((b) => b.vx)).toEqual([0, 0, 0, 0, 4, 0]);
+    expect(tl.counts().bodyBody).toBe(5);
+    // the same actions one apply() at a time, and one more at t = 0 afterwards (recomputed)
+    const one = new Timeline({ g: s.g });
+    for (const a of s.actions) one.apply(a);
+    expect(one.eventsBetween(0, 0)).toEqual(tl.eventsBetween(0, 0));
+    const extra: Action = { time: 0, type: "addPoint", id: "p", p: [50, 50] };
+    one.apply(extra);
+    const scratch = Timeline.fromScene({ ...s, actions: [...s.actions, extra] });
+    scratch.prolongTo(0);
+    expect(one.eventsBetween(0, 0)).toEqual(scratch.eventsBetween(0, 0));
+    expect(one.stateAt(0)).toEqual(scratch.stateAt(0));
+  });
+
   it("an action's until computes that far ahead: seconds, events, or until idle", () => {
     const tl = Timeline.fromScene(scene([disc("a", 0, 0), disc("b", 10, 0)]));
     expect(tl.horizon).toBe(0);
