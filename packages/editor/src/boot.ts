@@ -34,9 +34,15 @@ export function firstScene(): {
 }
 
 export async function boot(): Promise<Editor> {
-  const worker = new Worker(new URL("./remote/worker.ts", import.meta.url), { type: "module" });
-  const client = new TimelineClient(worker as unknown as Port);
+  let worker: Worker | null = null;
+  const newPort = (): Port => {
+    worker?.terminate();
+    worker = new Worker(new URL("./remote/worker.ts", import.meta.url), { type: "module" });
+    return worker as unknown as Port;
+  };
+  const client = new TimelineClient(newPort());
   const editor = new Editor(client, createUiStore());
+  editor.portFactory = newPort;
   const first = firstScene();
   // A shared link is loaded once; from then on the autosave keeps the user's edits across reloads.
   if (first.from === "url") history.replaceState(null, "", window.location.pathname + window.location.search);

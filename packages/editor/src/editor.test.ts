@@ -99,4 +99,23 @@ describe("Editor over the worker protocol", () => {
     await settled(h.client);
     expect(h.client.getSnapshot().computing).toBeNull();
   });
+
+  it("an engine that stopped answering is restarted with the same scene", async () => {
+    const h = await cradle();
+    h.editor.ui.setState({ t: 0.5 });
+    h.host.handle = () => {}; // the old worker never answers again
+    const lost = h.client.nextEvent(0).then(
+      () => "answered",
+      (e: Error) => e.message,
+    );
+    await new Promise((r) => setTimeout(r, 20));
+    expect(h.client.stalledFor()).toBeGreaterThan(0);
+    await h.editor.restartEngine();
+    await settled(h.client);
+    expect(await lost).toBe("engine restarted");
+    expect(h.client.stalledFor()).toBe(0);
+    expect(await bodyAt(h, "striker", 0.5)).toEqual({ x: -4, vx: 4 });
+    expect(h.editor.ui.getState().t).toBe(0.5);
+    expect(h.editor.ui.getState().message?.text).toBe("The engine was restarted.");
+  });
 });

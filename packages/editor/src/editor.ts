@@ -11,6 +11,7 @@ import { nextFreeId } from "./doc/ids";
 import { type ObjectKind, renameObject } from "./doc/rename";
 import type { Action, SceneFile, Until, Vec2 } from "./engineTypes";
 import type { TimelineClient } from "./remote/client";
+import type { Port } from "./remote/protocol";
 import { createStore, type Store } from "./store/createStore";
 import type { UiStore } from "./store/uiStore";
 
@@ -27,6 +28,8 @@ export const EMPTY_SCENE: SceneFile = {
 
 export class Editor {
   readonly history: Store<History> = createStore<History>(EMPTY_HISTORY);
+  /** Makes a fresh host (a new Web Worker) for restartEngine; null where none can be made. */
+  portFactory: (() => Port) | null = null;
 
   constructor(
     readonly client: TimelineClient,
@@ -166,6 +169,25 @@ export class Editor {
     this.history.setState(history);
     this.ui.setState({ message: null });
     await this.recompute(oldHorizon);
+  }
+
+  /**
+   * Replaces a host that stopped answering (a computation that runs away) with a fresh one holding
+   * the same scene; the history and the current time are kept.
+   */
+  async restartEngine(): Promise<void> {
+    if (!this.portFactory) return;
+    const doc = this.doc;
+    const oldHorizon = this.client.getSnapshot().horizon;
+    this.client.replacePort(this.portFactory());
+    try {
+      await this.client.load(doc);
+    } catch (e) {
+      this.fail(e);
+      return;
+    }
+    this.info("The engine was restarted.");
+    await this.recompute(Math.min(oldHorizon, this.now()));
   }
 
   // ---- edits at the current time -------------------------------------------------------------

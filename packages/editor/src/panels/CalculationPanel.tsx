@@ -5,6 +5,7 @@
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { CalcSettings } from "../store/uiStore";
 import { formatNumber, parseNumber } from "./EditableCell";
+import { EngineWatch } from "./EngineWatch";
 
 export function CalculationPanel() {
   const editor = useEditor();
@@ -93,6 +94,7 @@ export function CalculationPanel() {
           {idle ? " (no more events)" : ""}
         </span>
       </div>
+      <EngineWatch />
       {computing && (
         <div className="row">
           <progress aria-label="Computation progress" max={1} value={progress ?? undefined} />

@@ -38,7 +38,10 @@ export const EMPTY_INFO: TimelineInfo = {
 export class TimelineClient {
   private info: TimelineInfo = EMPTY_INFO;
   private nextId = 1;
-  private readonly pending = new Map<number, { resolve: (v: unknown) => void; reject: (e: Error) => void }>();
+  private readonly pending = new Map<
+    number,
+    { resolve: (v: unknown) => void; reject: (e: Error) => void; sent: number }
+  >();
   private readonly listeners = new Set<() => void>();
   private readonly frameListeners = new Set<(f: Frame) => void>();
   private frameInFlight = false;
@@ -48,8 +51,29 @@ export class TimelineClient {
   /** The time the latest frame was asked for (the host clamps it to [0, horizon]). */
   private latestAsked = Number.NaN;
 
-  constructor(private readonly port: Port) {
+  constructor(private port: Port) {
     port.onmessage = (e) => this.receive(e.data as HostMessage);
+  }
+
+  /**
+   * Switches to a new host (after the old worker stopped answering): pending requests reject, the
+   * frame feed restarts. The caller loads the scene into the new host.
+   */
+  replacePort(port: Port): void {
+    this.port.onmessage = null;
+    this.port = port;
+    port.onmessage = (e) => this.receive(e.data as HostMessage);
+    for (const p of this.pending.values()) p.reject(new Error("engine restarted"));
+    this.pending.clear();
+    this.frameInFlight = false;
+    this.latestAsked = Number.NaN;
+  }
+
+  /** Milliseconds the oldest unanswered request has been waiting (0 when none). */
+  stalledFor(now: number = performance.now()): number {
+    let oldest = now;
+    for (const p of this.pending.values()) oldest = Math.min(oldest, p.sent);
+    return now - oldest;
   }
 
   getSnapshot = (): TimelineInfo => this.info;
@@ -82,7 +106,7 @@ export class TimelineClient {
     const id = this.nextId++;
     const msg: RequestMessage = { ...r, id };
     return new Promise<T>((resolve, reject) => {
-      this.pending.set(id, { resolve: resolve as (v: unknown) => void, reject });
+      this.pending.set(id, { resolve: resolve as (v: unknown) => void, reject, sent: performance.now() });
       this.port.postMessage(msg);
     });
   }

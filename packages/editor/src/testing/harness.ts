@@ -7,10 +7,11 @@ import { Editor } from "../editor";
 import { TimelineClient } from "../remote/client";
 import { TimelineHost } from "../remote/host";
 import { portPair } from "../remote/localPort";
-import type { RequestMessage } from "../remote/protocol";
+import type { Port, RequestMessage } from "../remote/protocol";
 import { createUiStore } from "../store/uiStore";
 
-export function testEditor(): { editor: Editor; client: TimelineClient; host: TimelineHost } {
+/** A host in-process behind a fresh port pair; `host.handle` may be replaced to simulate a hang. */
+export function hostPort(): { port: Port; host: TimelineHost } {
   const [main, worker] = portPair();
   const host = new TimelineHost(
     (scene) => Timeline.fromScene(scene, { compute: false }),
@@ -22,8 +23,14 @@ export function testEditor(): { editor: Editor; client: TimelineClient; host: Ti
     { format: "chapgame", version: 1, g: 9.81, gravity: [0, 0], actions: [] },
   );
   worker.onmessage = (e) => host.handle(e.data as RequestMessage);
-  const client = new TimelineClient(main);
+  return { port: main, host };
+}
+
+export function testEditor(): { editor: Editor; client: TimelineClient; host: TimelineHost } {
+  const { port, host } = hostPort();
+  const client = new TimelineClient(port);
   const editor = new Editor(client, createUiStore());
+  editor.portFactory = () => hostPort().port;
   return { editor, client, host };
 }
 
