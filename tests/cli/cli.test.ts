@@ -4,7 +4,7 @@
  * to a temporary directory.
  */
 import { execFileSync, spawnSync } from "node:child_process";
-import { existsSync, mkdtempSync, writeFileSync } from "node:fs";
+import { existsSync, mkdtempSync, readdirSync, statSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
 import { beforeAll, describe, expect, it } from "vitest";
@@ -30,8 +30,19 @@ function run(args: string[], input?: string): { code: number | null; stdout: str
   return { code: r.status, stdout: r.stdout, stderr: r.stderr };
 }
 
+/** Newest modification time of the engine's sources. */
+function newestSource(dir: string): number {
+  let t = 0;
+  for (const e of readdirSync(dir, { withFileTypes: true })) {
+    const p = join(dir, e.name);
+    t = Math.max(t, e.isDirectory() ? newestSource(p) : statSync(p).mtimeMs);
+  }
+  return t;
+}
+
 beforeAll(() => {
-  if (!existsSync(bin)) execFileSync("npm", ["run", "build"], { cwd: root, stdio: "ignore" });
+  const stale = !existsSync(bin) || statSync(bin).mtimeMs < newestSource(join(root, "packages/engine/src"));
+  if (stale) execFileSync("npm", ["run", "build"], { cwd: root, stdio: "ignore" });
 });
 
 describe("chapgame simulate", () => {
