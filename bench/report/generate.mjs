@@ -440,12 +440,27 @@ function galperinExplanation(P) {
     lines.push(
       `Every digit count run was correct (up to ${last?.digits ?? 0} digits); the next one was not run (each digit costs 10× the events of the one before), so the first wrong digit count is not measured.`,
     );
-    if (last && Number.isFinite(last.minGap)) {
-      const at = last.minGapAt ?? last.lastTime;
-      const ulpT = 2 ** (Math.floor(Math.log2(at)) - 52);
-      lines.push(
-        `Extrapolation (not a measurement): the smallest gap between event times shrinks 100× per digit (${sig(last.minGap)} at ${last.digits} digits), so at ${last.digits + 1} digits it would be ≈ ${sig(last.minGap / 100)}, against one ulp of the event time (${sig(ulpT)} near t = ${sig(at)}, where that smallest gap occurs): collision times then stop being distinguishable in doubles, which is where the count is expected to break.`,
+    const ulpAt = (t) => 2 ** (Math.floor(Math.log2(t)) - 52);
+    const resolved = P.rows.filter(
+      (r) => r.correct && Number.isFinite(r.minGap) && r.minGap > 4 * ulpAt(r.minGapAt || r.lastTime),
+    );
+    const trend = resolved.at(-1);
+    if (trend && last) {
+      const at = trend.minGapAt || trend.lastTime;
+      const gapAt = (d) => trend.minGap / 100 ** (d - trend.digits);
+      const next = last.digits + 1;
+      const parts = [
+        `Why it should break, and where (an extrapolation, labelled as such): the smallest gap between event times shrinks 100× per digit (${sig(trend.minGap)} at ${trend.digits} digits, near t = ${sig(at)}, where one ulp of t is ${sig(ulpAt(at))}).`,
+      ];
+      const saturated = P.rows.filter((r) => r.correct && r.digits > trend.digits);
+      for (const r of saturated)
+        parts.push(
+          `At ${r.digits} digits the unrounded gap would be ≈ ${sig(gapAt(r.digits))}, and the measured smallest gap is ${sig(r.minGap)}, i.e. ${sig(r.minGap / ulpAt(r.minGapAt || r.lastTime))} ulp: collision times are already rounded to neighbouring doubles, yet the count is right, because wall and disc collisions strictly alternate in this billiard (after a disc–disc collision the light disc can only reach the wall), so rounding cannot reorder events; the count is decided by the velocities, which each collision updates to round-off.`,
+        );
+      parts.push(
+        `At ${next} digits the gaps would be ≈ ${sig(gapAt(next))}, ${sig(ulpAt(at) / gapAt(next))}× below one ulp: many collisions would have to share one double time and positions move by less than their own ulp between them, so the count is expected to go wrong there. Not measured: ${int(10 * last.expected)} events, about ${sig((10 * last.seconds) / 3600)} h at the measured rate.`,
       );
+      lines.push(parts.join(" "));
     }
   } else {
     const M = 100 ** (bad.digits - 1);
