@@ -165,3 +165,33 @@ it("scrubs a timeline with 10^6 recorded events", async () => {
   };
   await screenshot(page, "perf-scrub-1e6");
 });
+
+it("baseline: a bare page drawing 2,000 circles per frame (the machine's ceiling under its current load)", async () => {
+  const other = await s.context.newPage();
+  await other.setContent('<canvas id="c" width="1000" height="800"></canvas>');
+  results.bareCanvas2000 = await other.evaluate(async () => {
+    const ctx = (document.getElementById("c") as HTMLCanvasElement).getContext("2d")!;
+    let frames = 0;
+    const start = performance.now();
+    await new Promise<void>((resolve) => {
+      const tick = () => {
+        frames++;
+        ctx.fillStyle = "#fff";
+        ctx.fillRect(0, 0, 1000, 800);
+        ctx.beginPath();
+        for (let i = 0; i < 2000; i++) {
+          const x = (i * 37 + frames) % 1000;
+          const y = (i * 91) % 800;
+          ctx.moveTo(x + 3, y);
+          ctx.arc(x, y, 3, 0, 2 * Math.PI);
+        }
+        ctx.stroke();
+        if (performance.now() - start < 5000) requestAnimationFrame(tick);
+        else resolve();
+      };
+      requestAnimationFrame(tick);
+    });
+    return { pageFps: frames / ((performance.now() - start) / 1000) };
+  });
+  await other.close();
+});
