@@ -84,7 +84,8 @@ export class TimelineCore {
   lastLogged = 0;
   /** how to name action k in error messages */
   pathOf: (k: number) => string = (k) => `actions[${k}]`;
-  private sortedLive: Uint32Array | null = null;
+  /** live body numbers sorted by id (cache; null after an add or remove) */
+  sortedLive: Uint32Array | null = null;
   private readonly onEvent: (e: WorldEvent) => void;
 
   constructor(g: number, gravity: Vec2, history: boolean, eager: boolean) {
@@ -362,63 +363,5 @@ export class TimelineCore {
       };
       if (this.satisfied(g) === null) this.goals.push(g);
     }
-  }
-
-  // ---- atomic operations ------------------------------------------------------------------------
-
-  /**
-   * Everything needed to undo the next operation, which may cut the records back to `cutRecord`
-   * (pass records.length when it only appends). Costs O(bodies + records after cutRecord).
-   */
-  save(cutRecord: number): () => void {
-    const saved = {
-      world: this.world.clone(),
-      acts: this.acts.slice(),
-      actEvents: this.actEvents.slice(),
-      applied: this.applied,
-      table: this.table.data.slice(),
-      bodyIds: this.bodyIds.slice(),
-      live: new Map(this.live),
-      lineIds: this.lineIds.slice(),
-      lineNums: new Map(this.lineNums),
-      pointIds: this.pointIds.slice(),
-      pointNums: new Map(this.pointNums),
-      tail: this.records.saveTail(cutRecord),
-      keyframes: this.keyframes.slice(),
-      counts: { ...this.counts },
-      eventTotal: this.eventTotal,
-      goals: this.goals.slice(),
-      atTimeLimit: this.atTimeLimit,
-      groupOpen: this.groupOpen,
-      idle: this.idle,
-      lastLogged: this.lastLogged,
-      sortedLive: this.sortedLive,
-      pathOf: this.pathOf,
-    };
-    return () => {
-      this.world = saved.world;
-      this.acts = saved.acts;
-      this.actEvents = saved.actEvents;
-      this.applied = saved.applied;
-      this.table = new MotionTable();
-      this.table.data = saved.table;
-      this.bodyIds = saved.bodyIds;
-      this.live = saved.live;
-      this.lineIds = saved.lineIds;
-      this.lineNums = saved.lineNums;
-      this.pointIds = saved.pointIds;
-      this.pointNums = saved.pointNums;
-      this.records.restoreTail(cutRecord, saved.tail);
-      this.keyframes = saved.keyframes;
-      this.counts = saved.counts;
-      this.eventTotal = saved.eventTotal;
-      this.goals = saved.goals;
-      this.atTimeLimit = saved.atTimeLimit;
-      this.groupOpen = saved.groupOpen;
-      this.idle = saved.idle;
-      this.lastLogged = saved.lastLogged;
-      this.sortedLive = saved.sortedLive;
-      this.pathOf = saved.pathOf;
-    };
   }
 }

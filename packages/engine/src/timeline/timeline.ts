@@ -23,6 +23,7 @@ import { MotionTable } from "./motionTable.js";
 import { K_ACTION } from "./records.js";
 import { logEvents, stateAt } from "./replay.js";
 import type { LogEvent, ProlongResult, SceneState, TimelineCounts, TimelineOptions } from "./types.js";
+import { saveCore } from "./undo.js";
 
 const INF = Number.POSITIVE_INFINITY;
 /** Estimated bytes per body of a World clone's typed arrays (body store 168, grid and heap ~40). */
@@ -137,7 +138,7 @@ export class Timeline {
         if (kf.time < a.time || (kf.time === a.time && kf.afterActions && kf.actionCount === insertAt)) break;
       }
     }
-    const undo = c.save(forward ? c.records.length : (c.keyframes[k] as Keyframe).record);
+    const undo = saveCore(c, forward ? c.records.length : (c.keyframes[k] as Keyframe).record);
     try {
       const oldHorizon = c.horizon;
       if (!forward) c.restoreKeyframe(k);
@@ -171,7 +172,7 @@ export class Timeline {
     const pathOf = (k: number) => `actions[${order[k]}]`;
     const k = c.history && c.eager ? this.restartFor(sorted) : 0;
     if (k > 0) {
-      const undo = c.save((c.keyframes[k] as Keyframe).record);
+      const undo = saveCore(c, (c.keyframes[k] as Keyframe).record);
       try {
         c.restoreKeyframe(k);
         c.acts = sorted;
