@@ -1,41 +1,30 @@
 /**
- * A minimal zustand-style store: getState / setState (merge) / subscribe, read in React with
- * useStore(store, selector) through useSyncExternalStore, so a component re-renders only when its
- * selected value changes (Object.is).
+ * The editor's UI stores are zustand stores: `createStore` makes a vanilla store (getState /
+ * setState (shallow merge) / subscribe), and `useStore(store, selector)` reads it in React so that
+ * a component re-renders only when its selected value changes. Setting values equal to the current
+ * ones notifies nobody (so a panel that re-sends the same time does not re-render its readers).
  */
-import { useSyncExternalStore } from "react";
+import { useStore as useZustandStore } from "zustand";
+import { createStore as createZustandStore, type StoreApi } from "zustand/vanilla";
 
-export interface Store<T> {
-  getState(): T;
-  setState(patch: Partial<T> | ((s: T) => Partial<T>)): void;
-  subscribe(listener: (state: T, previous: T) => void): () => void;
-}
+export type Store<T> = StoreApi<T>;
 
 export function createStore<T extends object>(initial: T): Store<T> {
-  let state = initial;
-  const listeners = new Set<(s: T, p: T) => void>();
-  return {
-    getState: () => state,
-    setState(patch) {
-      const part = typeof patch === "function" ? patch(state) : patch;
+  const store = createZustandStore<T>()(() => initial);
+  const set = store.setState;
+  const setState: StoreApi<T>["setState"] = (patch, replace) => {
+    const state = store.getState();
+    const part = typeof patch === "function" ? patch(state) : patch;
+    if (!replace) {
       let changed = false;
-      for (const k in part) if (!Object.is(part[k], state[k])) changed = true;
+      for (const k in part) if (!Object.is((part as T)[k as keyof T], state[k as keyof T])) changed = true;
       if (!changed) return;
-      const previous = state;
-      state = { ...state, ...part };
-      for (const l of listeners) l(state, previous);
-    },
-    subscribe(listener) {
-      listeners.add(listener);
-      return () => listeners.delete(listener);
-    },
+    }
+    (set as (p: typeof part, r?: boolean) => void)(part, replace);
   };
+  return { ...store, setState };
 }
 
 export function useStore<T, U>(store: Store<T>, selector: (s: T) => U): U {
-  return useSyncExternalStore(
-    store.subscribe,
-    () => selector(store.getState()),
-    () => selector(store.getState()),
-  );
+  return useZustandStore(store, selector);
 }
