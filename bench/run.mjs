@@ -1,7 +1,8 @@
 /**
  * `npm run bench [-- --quick] [-- --only=solver,peers,engine,stress]`: runs the benchmark sections
  * against the BUILT engine, writes bench/results/latest.json (quick runs: bench/results/tmp/quick.json,
- * not committed), then generates docs/benchmarks.md, docs/benchmarks-headline.md and docs/bench/*.svg.
+ * not committed), then generates docs/benchmarks.md, docs/benchmarks-headline.md and docs/bench/*.svg
+ * (quick runs: the same files under bench/results/tmp/quick-report/, so the committed report stays full).
  * `--push-digits=N` instead runs only Galperin's billiard pushed to N digits with no time budget
  * (9 digits take about ten minutes) into bench/results/galperin-push.json, which the report merges.
  * Re-executes itself with --expose-gc so runs can collect garbage between measurements.
@@ -87,5 +88,9 @@ const file = join(ROOT, "bench", "results", quick ? "tmp/quick.json" : "latest.j
 results.file = relative(ROOT, file);
 mkdirSync(dirname(file), { recursive: true });
 writeFileSync(file, `${JSON.stringify(results, null, 1)}\n`);
-const rep = generate(results, { root: ROOT });
-log(`wrote ${results.file} and ${rep.files.length} report files in ${results.seconds.toFixed(1)} s`);
+// A quick run never overwrites the committed report: its report goes under the ignored tmp folder.
+const reportRoot = quick ? join(ROOT, "bench", "results", "tmp", "quick-report") : ROOT;
+const rep = generate(results, { root: reportRoot });
+log(
+  `wrote ${results.file} and ${rep.files.length} report files under ${relative(ROOT, reportRoot) || "."} in ${results.seconds.toFixed(1)} s`,
+);

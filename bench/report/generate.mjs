@@ -598,8 +598,8 @@ function headline(r) {
  * Merge the rows of a separate `--push-digits` run (bench/results/galperin-push.json) that go beyond
  * what the main run measured; those rows say where they come from.
  */
-function mergePush(results, root) {
-  const file = join(root, "bench", "results", "galperin-push.json");
+function mergePush(results) {
+  const file = join(ROOT, "bench", "results", "galperin-push.json");
   const P = results.stress?.galperinPush;
   if (!P || !existsSync(file)) return;
   const extra = JSON.parse(readFileSync(file, "utf8"));
@@ -614,7 +614,7 @@ function mergePush(results, root) {
 }
 
 export function generate(results, { root = ROOT } = {}) {
-  mergePush(results, root);
+  if (!results.quick) mergePush(results);
   const svgs = {};
   const out = [];
   out.push("# Benchmarks\n");
