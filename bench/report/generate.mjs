@@ -529,7 +529,7 @@ function headline(r) {
         `dilute gas, 1,000 discs, ${gas.span} s`,
         `${ms(gas.chapgame.ns)}, ΔE/E ${sig(gas.chapgame.metrics.energyError)}`,
         best
-          ? `fastest peer at 60 Hz: ${best.peer} ${ms(best.ns)}, ΔE/E ${sig(best.metrics.energyError)}`
+          ? `fastest peer at 60 Hz (tuned): ${best.peer} ${ms(best.ns)}, ΔE/E ${sig(best.metrics.energyError)}`
           : dash,
         dash,
         dash,
