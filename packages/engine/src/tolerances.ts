@@ -79,3 +79,14 @@ export const GRID_CELLS_PER_BODY = 3;
  * per body so that large simultaneous chains are still allowed.
  */
 export const SIMULTANEOUS_EVENTS_PER_BODY = 64;
+
+/**
+ * Zeno watch over runs of events, active while an immovable (infinite-mass) body moves (without one,
+ * elastic and frictional collisions cannot feed energy in, so events cannot converge on a finite
+ * time): every ZENO_WINDOW_EVENTS events (at least; ZENO_WINDOW_EVENTS_PER_BODY per body in large
+ * scenes) time must have advanced by more than ZENO_MIN_PROGRESS relative to max(1, |t|). A disc
+ * crushed between an immovable disc and a wall fails it within about a million events.
+ */
+export const ZENO_WINDOW_EVENTS = 200_000;
+export const ZENO_WINDOW_EVENTS_PER_BODY = 20;
+export const ZENO_MIN_PROGRESS = 1e-6;

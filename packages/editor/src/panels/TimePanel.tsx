@@ -28,6 +28,7 @@ export function TimePanel() {
     () =>
       horizon > 0
         ? ticks.map((x, i) => (
+            // biome-ignore lint/suspicious/noArrayIndexKey: ticks are positional (equal times repeat) and never reordered
             <line key={i} x1={(x / horizon) * 1000} x2={(x / horizon) * 1000} y1={0} y2={10} />
           ))
         : null,

@@ -21,6 +21,7 @@ describe("createStore", () => {
   it("useStore re-renders a component only when its selected value changes", () => {
     const store = createStore({ a: 1, b: 1 });
     let renders = 0;
+    // biome-ignore lint/correctness/noComponentHookFactories: a test-local component over this test's store
     function ShowA() {
       renders++;
       return <span>a={useStore(store, (s) => s.a)}</span>;

@@ -7,7 +7,12 @@
  */
 import { velocityAt } from "../physics/motion.js";
 import { discDiscResponse, impulseMagnitude, reflectResponse } from "../physics/response.js";
-import { SIMULTANEOUS_EVENTS_PER_BODY } from "../tolerances.js";
+import {
+  SIMULTANEOUS_EVENTS_PER_BODY,
+  ZENO_MIN_PROGRESS,
+  ZENO_WINDOW_EVENTS,
+  ZENO_WINDOW_EVENTS_PER_BODY,
+} from "../tolerances.js";
 import { EV_BODY, EV_LINE, EV_STOP } from "./bodyStore.js";
 import { SimulationError } from "./errors.js";
 import type { Line, Point } from "./obstacles.js";
@@ -51,19 +56,43 @@ export class Simulator extends Predictor {
     return 1;
   }
 
+  /**
+   * Report a Zeno state instead of looping: too many events at one instant (resting contact), or,
+   * while an immovable body moves, a long run of events over which time hardly advances (a disc
+   * crushed between an immovable disc and a wall collides infinitely often before the crush).
+   */
   protected guardZeno(): void {
+    const n = Math.max(1, this.store.slotCount);
     if (this.time !== this.sameTime) {
       this.sameTime = this.time;
       this.sameTimeCount = 0;
-      return;
-    }
-    this.sameTimeCount++;
-    if (this.sameTimeCount > SIMULTANEOUS_EVENTS_PER_BODY * Math.max(1, this.store.slotCount)) {
+    } else if (++this.sameTimeCount > SIMULTANEOUS_EVENTS_PER_BODY * n) {
       throw new SimulationError(
         `more than ${this.sameTimeCount} events at the same instant t=${this.time}: a Zeno state (resting contact or an inelastic collapse) that the exact model cannot resolve`,
         this.time,
       );
     }
+    if (++this.windowCount < Math.max(ZENO_WINDOW_EVENTS, ZENO_WINDOW_EVENTS_PER_BODY * n)) return;
+    const progress = this.time - this.windowStart;
+    if (progress <= ZENO_MIN_PROGRESS * Math.max(1, Math.abs(this.time)) && this.pumpsEnergy()) {
+      throw new SimulationError(
+        `${this.windowCount} events while time advanced only ${progress} (to t=${this.time}): events accumulate at a finite time (a Zeno state, e.g. a disc crushed by an immovable body), which the exact model cannot pass`,
+        this.time,
+      );
+    }
+    this.windowStart = this.time;
+    this.windowCount = 0;
+  }
+
+  /**
+   * Whether an immovable (infinite-mass) body is moving: the only way elastic collisions can feed
+   * energy in without bound, which a run of events converging on a finite time needs.
+   */
+  private pumpsEnergy(): boolean {
+    const b = this.store;
+    for (let s = 0; s < b.slotCount; s++)
+      if (b.ids[s] !== undefined && b.m[s] === Number.POSITIVE_INFINITY && this.isMoving(s)) return true;
+    return false;
   }
 
   protected processCrossing(s: number): void {

@@ -40,6 +40,9 @@ export class SimState {
   readonly counts: EventCounts = { bodyBody: 0, bodyLine: 0, bodyPoint: 0, stop: 0 };
   protected sameTime = -INF;
   protected sameTimeCount = 0;
+  /** Start time and event count of the current Zeno-watch window. */
+  protected windowStart = -INF;
+  protected windowCount = 0;
   protected readonly ev: WorldEvent = {
     time: 0,
     kind: "stop",
@@ -86,6 +89,8 @@ export class SimState {
     Object.assign(target.counts, this.counts);
     target.sameTime = this.sameTime;
     target.sameTimeCount = this.sameTimeCount;
+    target.windowStart = this.windowStart;
+    target.windowCount = this.windowCount;
   }
 
   // ---- motion -------------------------------------------------------------------------------

@@ -1,5 +1,6 @@
 // Reference scenarios with exact answers (see shared reference-cases): the World's behaviour.
 import { describe, expect, it } from "vitest";
+import { SimulationError } from "./errors.js";
 import type { WorldEvent } from "./types.js";
 import { World } from "./world.js";
 
@@ -174,5 +175,29 @@ describe("time reversal", () => {
       expect(e.y).toBeCloseTo(b.y, 6);
       expect(e.vx).toBeCloseTo(-b.vx, 6);
     }
+  });
+});
+
+describe("Zeno states are reported, not looped over", () => {
+  // Regression (found by the timeline's fuzzer): the light disc is crushed between an immovable
+  // disc and the wall; its collisions converge on the crush time at distinct instants.
+  it("a disc crushed between an immovable disc and a wall", () => {
+    const w = new World({ g: 1.32 });
+    w.addLine("s", [0, 0], [20, 0], "segment");
+    w.addLine("e", [20, 0], [20, 20], "segment");
+    w.addLine("n", [20, 20], [0, 20], "segment");
+    w.addLine("w", [0, 20], [0, 0], "segment");
+    w.addBody("b0", { x: 3, y: 3, r: 0.3, m: 4.58, mu: 1, vx: 0.96 });
+    w.addBody("b1", { x: 7, y: 3, r: 0.687, m: Number.POSITIVE_INFINITY, vx: -5 });
+    expect(() => w.advance({})).toThrow(SimulationError);
+    expect(w.time).toBeGreaterThan(1.1425);
+    expect(w.time).toBeLessThan(1.1426);
+  });
+
+  it("a disc resting on a floor under gravity", () => {
+    const w = new World({ g: 0, gravity: [0, -10] });
+    w.addLine("floor", [-10, 0], [10, 0], "segment");
+    w.addBody("ball", { x: 0, y: 1, r: 1, m: 1 });
+    expect(() => w.advance({ untilTime: 1 })).toThrow(/resting contact/);
   });
 });

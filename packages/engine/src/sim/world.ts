@@ -136,7 +136,10 @@ export class World extends Placement {
     this.index.delete(id);
   }
 
-  /** State of a body at time t (default: now). Valid for t in [time, the body's next event]. */
+  /**
+   * State of a body at time t (default: now). Exact for t from the body's last event or edit (its
+   * current motion's start, `motion(id).t0`) up to its next event.
+   */
   body(id: string, t: number = this.time): BodyState {
     return this.stateOf(this.slotOf(id), t);
   }
