@@ -15,7 +15,8 @@ export function buildWorld(engine, scene, worldOptions = {}) {
   return world;
 }
 
-function read(world, scene, s) {
+/** Copy every body's state at the world's time into the metrics arrays `s`. */
+export function read(world, scene, s) {
   scene.bodies.forEach((b, i) => {
     const st = world.body(b.id);
     s.x[i] = st.x;

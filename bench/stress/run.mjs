@@ -6,22 +6,11 @@
  */
 
 import { nowNs } from "../lib/timing.mjs";
-import { buildWorld } from "../peers/chapgame.mjs";
+import { buildWorld, read as readAll } from "../peers/chapgame.mjs";
 import { emptyState, escaped, kineticEnergy, worstOverlap } from "../peers/metrics.mjs";
 import { galperin } from "../scenes/galperin.mjs";
 import { gas } from "../scenes/gas.mjs";
 import { grazing, highSpeed, largeOffset, massRatio, nearSimultaneous, roundOffContacts } from "./cases.mjs";
-
-function readAll(world, scene, s) {
-  scene.bodies.forEach((b, i) => {
-    const st = world.body(b.id);
-    s.x[i] = st.x;
-    s.y[i] = st.y;
-    s.vx[i] = st.vx;
-    s.vy[i] = st.vy;
-  });
-  return s;
-}
 
 function stressCase(engine, scene, samples) {
   const world = buildWorld(engine, scene);
