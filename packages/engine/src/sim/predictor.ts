@@ -28,8 +28,41 @@ export class Predictor extends SimState {
 
   // ---- prediction ---------------------------------------------------------------------------
 
-  /** Earliest contact time of bodies s and o, or +Infinity. */
+  /**
+   * Earliest contact time of bodies s and o, or +Infinity. The result is symmetric (it depends
+   * only on the two motions), so the last pair solved is remembered: after a collision both
+   * participants are re-predicted and the second would solve the same pair again.
+   */
   protected pairTime(s: number, o: number): number {
+    const b = this.store;
+    const vs = b.version[s] as number;
+    const vo = b.version[o] as number;
+    if (
+      o === this.memoS &&
+      s === this.memoO &&
+      vo === this.memoVS &&
+      vs === this.memoVO &&
+      this.time === this.memoTime
+    )
+      return this.memoResult;
+    const t = this.solvePair(s, o);
+    this.memoS = s;
+    this.memoO = o;
+    this.memoVS = vs;
+    this.memoVO = vo;
+    this.memoTime = this.time;
+    this.memoResult = t;
+    return t;
+  }
+
+  private memoS = -1;
+  private memoO = -1;
+  private memoVS = -1;
+  private memoVO = -1;
+  private memoTime = Number.NaN;
+  private memoResult = INF;
+
+  private solvePair(s: number, o: number): number {
     const b = this.store;
     if (this.opt.pathBounds) {
       if (
@@ -217,7 +250,7 @@ export class Predictor extends SimState {
       }
     }
     if (moving) for (const i of this.globalLines) this.testLine(s, i);
-    b.crossTime[s] = moving ? this.crossing(s, cx, cy) : INF;
+    b.crossTime[s] = moving && (grid.nx > 1 || grid.ny > 1) ? this.crossing(s, cx, cy) : INF;
     const key = Math.min(b.evTime[s] as number, b.crossTime[s] as number);
     this.heap.set(s, key);
   }
