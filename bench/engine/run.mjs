@@ -86,7 +86,7 @@ function scaling({ quick, engine, log }) {
   };
 }
 
-function galperinRun({ quick, engine, log }, digits) {
+export function galperinRun({ quick, engine, log }, digits) {
   const scene = galperin(digits, { span: 1e9 });
   try {
     const once = () => {
