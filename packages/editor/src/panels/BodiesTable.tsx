@@ -6,6 +6,7 @@
 import type { ReactNode } from "react";
 import { useEditor, useUi } from "../EditorContext";
 import { F_M, F_MU, F_R, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE } from "../remote/protocol";
+import { DeleteRowButton } from "./DeleteRowButton";
 import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
 import { useLiveFrame } from "./useLiveFrame";
 
@@ -81,16 +82,7 @@ export function BodiesTable() {
           </td>
         ))}
         <td>
-          <button
-            type="button"
-            aria-label={`Delete ${id}`}
-            onClick={() => {
-              editor.ui.setState({ selection: { kind: "body", id } });
-              void editor.deleteSelection();
-            }}
-          >
-            ✕
-          </button>
+          <DeleteRowButton kind="body" id={id} />
         </td>
       </tr>,
     );

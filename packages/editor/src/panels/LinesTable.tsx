@@ -2,6 +2,7 @@
 
 import { useEditor, useUi } from "../EditorContext";
 import type { LineKind, Vec2 } from "../engineTypes";
+import { DeleteRowButton } from "./DeleteRowButton";
 import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
 import { useLiveFrame } from "./useLiveFrame";
 
@@ -90,16 +91,7 @@ export function LinesTable() {
                     </td>
                   ))}
                   <td>
-                    <button
-                      type="button"
-                      aria-label={`Delete ${l.id}`}
-                      onClick={() => {
-                        editor.ui.setState({ selection: { kind: "line", id: l.id } });
-                        void editor.deleteSelection();
-                      }}
-                    >
-                      ✕
-                    </button>
+                    <DeleteRowButton kind="line" id={l.id} />
                   </td>
                 </tr>
               );

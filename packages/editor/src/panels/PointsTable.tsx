@@ -2,6 +2,7 @@
 
 import { useEditor, useUi } from "../EditorContext";
 import type { Vec2 } from "../engineTypes";
+import { DeleteRowButton } from "./DeleteRowButton";
 import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
 import { useLiveFrame } from "./useLiveFrame";
 
@@ -69,16 +70,7 @@ export function PointsTable() {
                   <td>{cell(0)}</td>
                   <td>{cell(1)}</td>
                   <td>
-                    <button
-                      type="button"
-                      aria-label={`Delete ${p.id}`}
-                      onClick={() => {
-                        editor.ui.setState({ selection: { kind: "point", id: p.id } });
-                        void editor.deleteSelection();
-                      }}
-                    >
-                      ✕
-                    </button>
+                    <DeleteRowButton kind="point" id={p.id} />
                   </td>
                 </tr>
               );
