@@ -74,8 +74,8 @@ export class IndexedHeap {
   }
 
   remove(slot: number): void {
-    const p = this.pos[slot] as number;
-    if (p < 0) return;
+    const p = this.pos[slot];
+    if (p === undefined || p < 0) return; // not queued (or beyond the reserved range)
     this.pos[slot] = -1;
     const last = --this.n;
     if (p === last) return;
@@ -96,59 +96,86 @@ export class IndexedHeap {
     return h;
   }
 
-  /** Whether (slot a, key ka) sorts before (slot b, key kb). */
-  private before(a: number, ka: number, b: number, kb: number): boolean {
-    return ka < kb || (ka === kb && this.tieLess(a, b));
-  }
-
   /** Place (slot, key) at position i or above. */
   private up(i: number, slot: number, key: number): void {
     const slots = this.slots;
     const keys = this.keys;
+    const pos = this.pos;
     while (i > 0) {
       const parent = (i - 1) >> 2;
-      const ps = slots[parent] as number;
       const pk = keys[parent] as number;
-      if (!this.before(slot, key, ps, pk)) break;
+      if (key > pk) break;
+      const ps = slots[parent] as number;
+      if (key === pk && !this.tieLess(slot, ps)) break;
       slots[i] = ps;
       keys[i] = pk;
-      this.pos[ps] = i;
+      pos[ps] = i;
       i = parent;
     }
     slots[i] = slot;
     keys[i] = key;
-    this.pos[slot] = i;
+    pos[slot] = i;
   }
 
   /** Place (slot, key) at position i or below. */
   private down(i: number, slot: number, key: number): void {
     const slots = this.slots;
     const keys = this.keys;
+    const pos = this.pos;
     const n = this.n;
     for (;;) {
       const first = 4 * i + 1;
       if (first >= n) break;
       let c = first;
-      let cs = slots[first] as number;
       let ck = keys[first] as number;
-      const last = Math.min(first + 4, n);
-      for (let j = first + 1; j < last; j++) {
-        const js = slots[j] as number;
-        const jk = keys[j] as number;
-        if (this.before(js, jk, cs, ck)) {
-          c = j;
-          cs = js;
-          ck = jk;
+      if (first + 3 < n) {
+        // Unrolled smallest of four (the hot loop); exact ties in key go to the canonical order.
+        const k0 = ck;
+        const k1 = keys[first + 1] as number;
+        const k2 = keys[first + 2] as number;
+        const k3 = keys[first + 3] as number;
+        if (k1 < ck) {
+          c = first + 1;
+          ck = k1;
         }
-      }
-      if (!this.before(cs, ck, slot, key)) break;
+        if (k2 < ck) {
+          c = first + 2;
+          ck = k2;
+        }
+        if (k3 < ck) {
+          c = first + 3;
+          ck = k3;
+        }
+        if ((k0 === ck ? 1 : 0) + (k1 === ck ? 1 : 0) + (k2 === ck ? 1 : 0) + (k3 === ck ? 1 : 0) > 1)
+          c = this.minOfFew(first, first + 4);
+      } else c = this.minOfFew(first, n);
+      ck = keys[c] as number;
+      if (ck > key) break;
+      const cs = slots[c] as number;
+      if (ck === key && !this.tieLess(cs, slot)) break;
       slots[i] = cs;
       keys[i] = ck;
-      this.pos[cs] = i;
+      pos[cs] = i;
       i = c;
     }
     slots[i] = slot;
     keys[i] = key;
-    this.pos[slot] = i;
+    pos[slot] = i;
+  }
+
+  /** Position of the smallest entry in [first, last), exact ties in key by the canonical order. */
+  private minOfFew(first: number, last: number): number {
+    const slots = this.slots;
+    const keys = this.keys;
+    let c = first;
+    let ck = keys[first] as number;
+    for (let j = first + 1; j < last; j++) {
+      const jk = keys[j] as number;
+      if (jk < ck || (jk === ck && this.tieLess(slots[j] as number, slots[c] as number))) {
+        c = j;
+        ck = jk;
+      }
+    }
+    return c;
   }
 }
