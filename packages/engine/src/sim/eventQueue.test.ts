@@ -26,15 +26,13 @@ function expectedOrder(keys: Map<number, number>): number[] {
 describe("IndexedHeap", () => {
   it("pops by key, exact ties by the canonical order, after any inserts, re-keys and removals", () => {
     console.log(`[IndexedHeap] fast-check seed ${SEED} (set FC_SEED to change)`);
+    // Keys from three values: most comparisons are exact ties, the case the tie-break must get right.
     const op: fc.Arbitrary<Op> = fc.oneof(
-      fc.record({
-        slot: fc.nat(40),
-        key: fc.oneof(fc.integer({ min: 0, max: 5 }), fc.double({ min: 0, max: 5, noNaN: true })),
-      }),
-      fc.record({ remove: fc.nat(40) }),
+      { weight: 4, arbitrary: fc.record({ slot: fc.nat(30), key: fc.constantFrom(0, 0.5, 1) }) },
+      { weight: 1, arbitrary: fc.record({ remove: fc.nat(30) }) },
     );
     fc.assert(
-      fc.property(fc.array(op, { maxLength: 300 }), (ops) => {
+      fc.property(fc.array(op, { minLength: 20, maxLength: 200 }), (ops) => {
         const heap = new IndexedHeap(4, (a, b) => a > b);
         const model = new Map<number, number>();
         for (const o of ops) {
