@@ -7,8 +7,8 @@
  *   no root), 1 (exactly one sign change: one simple root; `guesses[0]` = where the control polygon
  *   crosses zero) or −1; also sets `derivChanges` (the same count for p′, from the differences of the
  *   coefficients: 0, 1 or −1) and `guesses[1]`.
- * - `bernstein4(c0, …, c4, lo, hi)`: the same for degree 4 in scalar arithmetic (the collision hot
- *   path), plus one de Casteljau split at the middle when both ends have one sign.
+ * (The quartic hot path, quartic.ts, computes the same coefficients in scalar arithmetic and
+ * subdivides them.)
  * Convex hull property: p lies within the range of its Bernstein coefficients; Descartes' rule for
  * the Bernstein basis: roots in the interval ≤ sign changes, with the same parity.
  */
@@ -107,139 +107,10 @@ export function bernstein(
   return changes;
 }
 /**
- * Double-valued results of bernstein() and bernstein4(), kept in a typed array: storing a double into a module-level
+ * Double-valued results of bernstein(), kept in a typed array: storing a double into a module-level
  * `let` allocates a heap number on every store, which showed up in profiles. [0] = where p's control
  * polygon crosses zero (one sign change), [1] = the same for p′.
  */
 export const guesses = new Float64Array(2);
 /** Certified sign changes of p′'s Bernstein coefficients on the same interval: 0, 1, or −1 (more/unknown). */
 export let derivChanges = -1;
-
-/**
- * bernstein() for degree 4 in scalar arithmetic (no typed-array traffic: this is the hot path of
- * collision quartics, most of which stop here). Same results contract as bernstein(); its
- * Bernstein coefficients are computed directly as b_j = Σ_k C(j,k) a_k, a_k = T_k h^k / C(4,k).
- */
-export function bernstein4(
-  c0: number,
-  c1: number,
-  c2: number,
-  c3: number,
-  c4: number,
-  lo: number,
-  hi: number,
-): number {
-  let t0 = c0;
-  let t1 = c1;
-  let t2 = c2;
-  let t3 = c3;
-  let s0 = c0 < 0 ? -c0 : c0;
-  let s1 = c1 < 0 ? -c1 : c1;
-  let s2 = c2 < 0 ? -c2 : c2;
-  let s3 = c3 < 0 ? -c3 : c3;
-  const s4 = c4 < 0 ? -c4 : c4;
-  if (lo !== 0) {
-    // Taylor shift to lo (synthetic division), and of |p| to |lo| for the error scale.
-    const al = lo < 0 ? -lo : lo;
-    t3 += lo * c4;
-    t2 += lo * t3;
-    t1 += lo * t2;
-    t0 += lo * t1;
-    t3 += lo * c4;
-    t2 += lo * t3;
-    t1 += lo * t2;
-    t3 += lo * c4;
-    t2 += lo * t3;
-    t3 += lo * c4;
-    s3 += al * s4;
-    s2 += al * s3;
-    s1 += al * s2;
-    s0 += al * s1;
-    s3 += al * s4;
-    s2 += al * s3;
-    s1 += al * s2;
-    s3 += al * s4;
-    s2 += al * s3;
-    s3 += al * s4;
-  }
-  const h = (hi - lo) * (1 + 4 * UNIT_ROUNDOFF);
-  const h2 = h * h;
-  const h3 = h2 * h;
-  const h4 = h2 * h2;
-  const a1 = t1 * h * 0.25;
-  const a2 = (t2 * h2) / 6;
-  const a3 = t3 * h3 * 0.25;
-  const a4 = c4 * h4;
-  const margin = 24 * UNIT_ROUNDOFF * (s0 + s1 * h + s2 * h2 + s3 * h3 + s4 * h4);
-  derivChanges = -1;
-  if (!(margin < Number.POSITIVE_INFINITY)) return -1;
-  // p′'s Bernstein coefficients (up to the factor 4/h): d_j = b_{j+1} − b_j.
-  const d0 = a1;
-  const d1 = a1 + a2;
-  const d2 = a1 + 2 * a2 + a3;
-  const d3 = a1 + 3 * a2 + 3 * a3 + a4;
-  const dm = 3 * margin;
-  if ((d0 > dm || d0 < -dm) && (d1 > dm || d1 < -dm) && (d2 > dm || d2 < -dm) && (d3 > dm || d3 < -dm)) {
-    let k = 0;
-    if (d1 < 0 !== d0 < 0) {
-      k++;
-      guesses[1] = lo + (h * (d0 / (d0 - d1))) / 3;
-    }
-    if (d2 < 0 !== d1 < 0) {
-      k++;
-      guesses[1] = lo + (h * (1 + d1 / (d1 - d2))) / 3;
-    }
-    if (d3 < 0 !== d2 < 0) {
-      k++;
-      guesses[1] = lo + (h * (2 + d2 / (d2 - d3))) / 3;
-    }
-    derivChanges = k <= 1 ? k : -1;
-  }
-  const b0 = t0;
-  const b1 = t0 + a1;
-  const b2 = t0 + 2 * a1 + a2;
-  const b3 = t0 + 3 * a1 + 3 * a2 + a3;
-  const b4 = t0 + 4 * a1 + 6 * a2 + 4 * a3 + a4;
-  if ((b0 > margin && b4 > margin) || (b0 < -margin && b4 < -margin)) {
-    // Same sign at both ends: no root, or an even number. One de Casteljau split at the middle
-    // often proves none (the halves' coefficients are averages: error ≤ margin + 4u·max|b| ≤ 2·margin).
-    const l1 = 0.5 * (b0 + b1);
-    const m1 = 0.5 * (b1 + b2);
-    const m2 = 0.5 * (b2 + b3);
-    const r3 = 0.5 * (b3 + b4);
-    const l2 = 0.5 * (l1 + m1);
-    const m3 = 0.5 * (m1 + m2);
-    const r2 = 0.5 * (m2 + r3);
-    const l3 = 0.5 * (l2 + m3);
-    const r1 = 0.5 * (m3 + r2);
-    const mid = 0.5 * (l3 + r1);
-    const m2x = 2 * margin;
-    if (b0 > 0) {
-      if (l1 > m2x && l2 > m2x && l3 > m2x && mid > m2x && r1 > m2x && r2 > m2x && r3 > m2x) return 0;
-    } else if (l1 < -m2x && l2 < -m2x && l3 < -m2x && mid < -m2x && r1 < -m2x && r2 < -m2x && r3 < -m2x) {
-      return 0;
-    }
-  }
-  if (!(b0 > margin || b0 < -margin) || !(b1 > margin || b1 < -margin)) return -1;
-  if (!(b2 > margin || b2 < -margin) || !(b3 > margin || b3 < -margin) || !(b4 > margin || b4 < -margin)) {
-    return -1;
-  }
-  let k = 0;
-  if (b1 < 0 !== b0 < 0) {
-    k++;
-    guesses[0] = lo + (h * (b0 / (b0 - b1))) / 4;
-  }
-  if (b2 < 0 !== b1 < 0) {
-    k++;
-    guesses[0] = lo + (h * (1 + b1 / (b1 - b2))) / 4;
-  }
-  if (b3 < 0 !== b2 < 0) {
-    k++;
-    guesses[0] = lo + (h * (2 + b2 / (b2 - b3))) / 4;
-  }
-  if (b4 < 0 !== b3 < 0) {
-    k++;
-    guesses[0] = lo + (h * (3 + b3 / (b3 - b4))) / 4;
-  }
-  return k <= 1 ? k : -1;
-}

@@ -4,7 +4,9 @@
  *
  * Method (see README.md): trim zero leading coefficients, scale by powers of two (exact), clamp
  * infinite or huge ends to Cauchy's root bound, drop leading terms negligible over the interval
- * (ROOTS_DEGREE_DROP, relative). Quick sign checks on p's Bernstein coefficients over [lo, hi]:
+ * (ROOTS_DEGREE_DROP, relative). Quartics first go through the hot path of quartic.ts (Bernstein
+ * subdivision: no root, or every root alone in a piece and solved there), which settles almost all
+ * collision quartics; what it hands back takes the method below. Quick sign checks on p's Bernstein coefficients over [lo, hi]:
  * one sign → no root; one sign change between ends of opposite signs → exactly one root, solved
  * directly; their differences (p′'s) tell when p is monotone or has one critical point. Otherwise
  * the roots of p′ split [lo, hi] into monotone pieces (found the same way, recursively, down to a
@@ -28,14 +30,16 @@
  * Errors: a non-finite coefficient or NaN end throws RangeError naming the field; lo > hi returns [];
  * a constant (or identically zero) polynomial has no isolated roots and returns []. Iteration caps
  * throw RootSolverError (never expected). Not re-entrant (module scratch buffers).
+ * `realRootsInto(coeffs, lo, hi, out)`: the same into a caller's array (cleared; returns the count).
  */
 
 import { ROOTS_DEGREE_DROP } from "../tolerances.js";
-import { bernstein, bernstein4, derivChanges, guesses } from "./bernstein.js";
+import { bernstein, derivChanges, guesses } from "./bernstein.js";
 import { certSign, lastAbsValue, load, refineRoot } from "./certify.js";
 import { push, solveLevel0 } from "./level0.js";
 import { newtonPlain, pieceRoots, quadRootsPlain } from "./newton.js";
 import { exponentOf, mulPow2 } from "./pow2.js";
+import { quarticRoots } from "./quartic.js";
 
 /** Horner evaluation of c0 + c1 x + … (ascending coefficients); 0 for an empty array. */
 export function evalPoly(coeffs: ArrayLike<number>, x: number): number {
@@ -116,6 +120,23 @@ function criticalPoints(m: number, lo: number, hi: number): number {
 
 /** The distinct real roots of c0 + c1 t + … in [lo, hi], sorted ascending (see the module header). */
 export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): number[] {
+  const out: number[] = [];
+  if (coeffs.length === 5 && quarticRoots(coeffs, lo, hi, out)) return out;
+  return general(coeffs, lo, hi, out);
+}
+
+/**
+ * realRoots into a caller's array (cleared first; no allocation once it has grown): for callers that
+ * solve in a loop. Returns the number of roots. Same contract and results as realRoots.
+ */
+export function realRootsInto(coeffs: ArrayLike<number>, lo: number, hi: number, out: number[]): number {
+  out.length = 0;
+  if (coeffs.length === 5 && quarticRoots(coeffs, lo, hi, out)) return out.length;
+  return general(coeffs, lo, hi, out).length;
+}
+
+/** Everything but the quartic hot path (quartic.ts); out is empty. */
+function general(coeffs: ArrayLike<number>, lo: number, hi: number, out: number[]): number[] {
   if (typeof lo !== "number" || Number.isNaN(lo))
     throw new RangeError(`realRoots: lo must be a number, got ${lo}`);
   if (typeof hi !== "number" || Number.isNaN(hi))
@@ -134,7 +155,6 @@ export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): nu
       if (a > maxAbs) maxAbs = a;
     }
   }
-  const out: number[] = [];
   if (!(lo <= hi) || n < 1) return out;
   ensure(n);
   // Cauchy's bound: every root has |t| < 1 + max_{i<n} |c_i / c_n| ≤ 1 + max_i |c_i| / |c_n|.
@@ -144,28 +164,6 @@ export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): nu
   if (hi > B) hi = B;
   if (lo > hi) return out;
   const M = Math.max(-lo, hi, lo, -hi);
-  // Hot path (collision quartics): a quartic needing no scaling is first tested by the scalar
-  // Bernstein check, before anything is copied; most stop here.
-  let v = -2;
-  if (
-    n === 4 &&
-    lo < hi &&
-    maxAbs >= SMALL &&
-    maxAbs <= BIG &&
-    M <= (MOD_LIMIT[4] as number) &&
-    M * (MOD_LIMIT[4] as number) >= 1
-  ) {
-    v = bernstein4(
-      coeffs[0] as number,
-      coeffs[1] as number,
-      coeffs[2] as number,
-      coeffs[3] as number,
-      coeffs[4] as number,
-      lo,
-      hi,
-    );
-    if (v === 0) return out;
-  }
   // Exact power-of-two scaling: coefficients to about 1 and, for extreme intervals, the variable
   // (t = 2^xs·s) so that |s| ≤ 1; the roots are unchanged (up to that exact factor).
   const xs = normalise(coeffs, n, maxAbs, M);
@@ -177,7 +175,7 @@ export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): nu
   if (lo === hi) {
     if (certSign(lo) === 0) out.push(lo);
   } else {
-    solveScaled(n, lo, hi, out, xs === 0 ? v : -2);
+    solveScaled(n, lo, hi, out);
   }
   if (xs !== 0) {
     // Back to the caller's variable (exact unless the root is subnormal, where distinct scaled
@@ -220,11 +218,8 @@ function normalise(coeffs: ArrayLike<number>, n: number, maxAbs: number, M: numb
   return xs;
 }
 
-/**
- * The solve proper on the normalised polynomial P (degree n) over lo < hi; appends to out. `known`
- * is bernstein()'s result when the caller already computed it (−2 otherwise).
- */
-function solveScaled(n: number, lo: number, hi: number, out: number[], known: number): void {
+/** The solve proper on the normalised polynomial P (degree n) over lo < hi; appends to out. */
+function solveScaled(n: number, lo: number, hi: number, out: number[]): void {
   // Degree drop: leading terms below one rounding of a lower term over the whole interval.
   const M = Math.max(-lo, hi, lo, -hi);
   let m = n;
@@ -242,7 +237,7 @@ function solveScaled(n: number, lo: number, hi: number, out: number[], known: nu
     m--;
   }
   if (m === 0) return; // every other term is below u·|c0|: p keeps the sign of c0
-  const v = known !== -2 ? known : bernstein(P, n, lo, hi, bufA, bufB); // −2: not computed yet
+  const v = bernstein(P, n, lo, hi, bufA, bufB);
   if (v === 0) return;
   if (v === 1) {
     // Exactly one simple root in (lo, lo + h): when p(lo) and p(hi) have opposite exact signs it is

@@ -1,0 +1,155 @@
+import fc from "fast-check";
+import { describe, expect, it } from "vitest";
+import { exactPolySign, nextDown, nextUp } from "./exactPoly.js";
+import { quarticRoots } from "./quartic.js";
+import { realRoots, realRootsInto } from "./realRoots.js";
+import { verifyRoots } from "./verifyRoots.js";
+
+// One seed per run, printed so that any failure can be replayed: FC_SEED=<seed> npx vitest run …
+const seed = Number(process.env.FC_SEED ?? Math.floor(Math.random() * 2 ** 31));
+console.log(`quartic.test seed: ${seed} (replay with FC_SEED=${seed})`);
+const params = { seed, numRuns: Number(process.env.FC_RUNS ?? 400), verbose: true } as const;
+
+const num = (min: number, max: number) => fc.double({ min, max, noNaN: true, noDefaultInfinity: true });
+
+/** Ascending coefficients of lead·∏(t − rᵢ), expanded in double arithmetic. */
+function fromRoots(roots: readonly number[], lead = 1): number[] {
+  let c = [lead];
+  for (const r of roots) {
+    const n: number[] = new Array(c.length + 1).fill(0);
+    for (let i = 0; i < c.length; i++) {
+      n[i + 1] = (n[i + 1] as number) + (c[i] as number);
+      n[i] = (n[i] as number) - r * (c[i] as number);
+    }
+    c = n;
+  }
+  return c;
+}
+
+/** quarticRoots's answer when it settles the call (null when it hands back), checked exactly. */
+function hot(c: readonly number[], lo: number, hi: number): number[] | null {
+  const out: number[] = [];
+  if (!quarticRoots(c, lo, hi, out)) {
+    expect(out, "nothing appended when handing back").toEqual([]);
+    return null;
+  }
+  const check = verifyRoots(c, lo, hi, out, 48, 4);
+  expect(check.ordered, `ordered: ${out}`).toBe(true);
+  expect(check.maxUlps, `roots ${out} of ${c} on [${lo}, ${hi}]`).toBeLessThanOrEqual(4);
+  expect(check.missed, `missed sign changes for ${c} on [${lo}, ${hi}], roots ${out}`).toEqual([]);
+  return out;
+}
+
+describe("quarticRoots (the quartic hot path)", () => {
+  it("collision quartics: when it settles a call, every root within 4 ulps, none missed, as the general path", () => {
+    let settled = 0;
+    fc.assert(
+      fc.property(
+        num(-10, 10),
+        num(-10, 10),
+        num(-10, 10),
+        num(-10, 10),
+        num(-2, 2),
+        num(-2, 2),
+        num(0.5, 3),
+        num(0.01, 20),
+        num(-5, 0),
+        (dx, dy, ux, uy, wx, wy, R, hi, lo) => {
+          if (wx === 0 && wy === 0) return true;
+          const c = [
+            dx * dx + dy * dy - R * R,
+            2 * (dx * ux + dy * uy),
+            ux * ux + uy * uy + dx * wx + dy * wy,
+            ux * wx + uy * wy,
+            (wx * wx + wy * wy) / 4,
+          ];
+          for (const a of [0, lo]) {
+            const r = hot(c, a, hi);
+            if (r === null) continue;
+            settled++;
+            expect(r).toEqual(realRoots([...c, 0], a, hi)); // length 6: the general path
+          }
+          return true;
+        },
+      ),
+      params,
+    );
+    expect(settled).toBeGreaterThan(params.numRuns); // the hot path does settle most calls
+  });
+
+  it("products of four linear factors, roots spread or paired: settled calls are certified and complete", () => {
+    let settled = 0;
+    fc.assert(
+      fc.property(
+        // (fc.double favours values near 0, i.e. multiple roots at 0: decimals spread the roots)
+        fc.array(
+          fc.integer({ min: -4000, max: 4000 }).map((k) => k / 1000),
+          { minLength: 4, maxLength: 4 },
+        ),
+        fc.oneof(
+          num(-1e-3, 1e-3),
+          fc.integer({ min: -1000, max: 1000 }).map((k) => k / 1000),
+        ),
+        fc.constantFrom(1, -0.5, 3e-7, 1e5),
+        (r, gap, lead) => {
+          const roots = [r[0] as number, (r[0] as number) + gap, r[2] as number, r[3] as number];
+          if (hot(fromRoots(roots, lead), -5, 5) !== null) settled++;
+          return true;
+        },
+      ),
+      params,
+    );
+    expect(settled).toBeGreaterThan(params.numRuns / 10);
+  });
+
+  it("a root exactly at hi is reported (the hot path hands it back)", () => {
+    const c = fromRoots([1, 2, 3, 4]); // exact coefficients
+    expect(exactPolySign(c, 3)).toBe(0);
+    expect(hot(c, 0, 3)).toBeNull();
+    expect(realRoots(c, 0, 3)).toEqual([1, 2, 3]);
+    expect(realRoots(c, 0, 3.5)).toEqual([1, 2, 3]);
+  });
+
+  it("a root one ulp beyond hi is not reported, one ulp inside is", () => {
+    const c = fromRoots([1, 2, 3, 4]);
+    expect(realRoots(c, 0, nextDown(3))).toEqual([1, 2]);
+    expect(realRoots(c, 0, nextUp(3))).toEqual([1, 2, 3]);
+    expect(realRoots(c, nextUp(1), 10)).toEqual([2, 3, 4]);
+  });
+
+  it("touching discs (p(lo) = 0 exactly) are handed back to the general path", () => {
+    const c = [0, 2, -1, 0.25, 0.0625];
+    expect(hot(c, 0, 10)).toBeNull();
+    const r = realRoots(c, 0, 10);
+    expect(r[0]).toBe(0);
+    expect(verifyRoots(c, 0, 10, r, 64, 4).missed).toEqual([]);
+  });
+
+  it("roots closer than the subdivision depth resolves are handed back, and realRoots still finds both", () => {
+    const c = fromRoots([1, 1 + 2 ** -30, 5, 7]);
+    expect(hot(c, 0, 10)).toBeNull();
+    const r = realRoots(c, 0, 10);
+    expect(r).toHaveLength(4);
+    expect(verifyRoots(c, 0, 10, r, 64, 4).maxUlps).toBeLessThanOrEqual(4);
+  });
+
+  it("input it does not handle is handed back untouched (errors come from realRoots)", () => {
+    const out: number[] = [];
+    expect(quarticRoots([1, 2, 3, 4, Number.NaN], 0, 1, out)).toBe(false);
+    expect(quarticRoots([1, 2, 3, 4, 0], 0, 1, out)).toBe(false);
+    expect(quarticRoots([1, 2, 3, 4, 5], 1, 1, out)).toBe(false);
+    expect(quarticRoots([1, 2, 3, 4, 5], 0, Number.NaN, out)).toBe(false);
+    expect(quarticRoots([1e30, 2, 3, 4, 5], 0, 1, out)).toBe(false); // needs scaling
+    expect(out).toEqual([]);
+    expect(() => realRoots([1, 2, 3, 4, Number.NaN], 0, 1)).toThrow(/coeffs\[4\]/);
+  });
+
+  it("realRootsInto clears and fills the caller's array with realRoots's answer", () => {
+    const out = [42, 43];
+    const c = fromRoots([0.5, 1.5, 2.5, 3.5], -2);
+    expect(realRootsInto(c, 0, 3, out)).toBe(3);
+    expect(out).toEqual(realRoots(c, 0, 3));
+    expect(realRootsInto([1, 0, 1], 0, 3, out)).toBe(0);
+    expect(out).toEqual([]);
+  });
+});

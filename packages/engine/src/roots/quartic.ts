@@ -1,0 +1,390 @@
+/**
+ * The quartic hot path of realRoots (collision quartics): early exits by Bernstein subdivision that
+ * either prove [lo, hi] holds no root or isolate every root in a piece holding exactly one simple
+ * root, solved there directly; anything else is handed back to the derivative splitting.
+ *
+ * `quarticRoots(coeffs, lo, hi, out)`: coeffs of length 5. Returns true when it settled the call:
+ * the roots in [lo, hi] (ascending, distinct, each within 1 ulp of an exact root) were appended to
+ * the empty `out` (none at all in most calls). Returns false, with `out` left empty, for everything
+ * it does not handle: invalid input (realRoots reports it), c4 = 0, lo ≥ hi, coefficients or
+ * interval needing scaling, a piece end where p is at rounding-noise level (a root at or near a
+ * piece end, e.g. touching discs at lo), roots closer than h/2^MAX_DEPTH (clusters, double roots).
+ *
+ * Method: Cauchy's clamp of [lo, hi] (as realRoots); the Bernstein coefficients of p on
+ * [lo, lo + h], h = (hi − lo)(1 + 4u) ≥ hi − lo, from a Taylor shift, with a margin bounding their
+ * rounding errors (as bernstein.ts); then de Casteljau halving, left to right, at most MAX_DEPTH
+ * levels, the margin grown by MARGIN_PER_LEVEL per halving (a halving's four rounds of averaging
+ * add at most 4u·max|b| ≤ 4u·scale). Descartes' rule for the Bernstein basis on each piece whose
+ * coefficients all have certified signs: no sign change → no root; exactly one → exactly one root,
+ * simple, inside. Otherwise halve, or give up. A one-root piece's real ends lo + s·h are replaced
+ * by the nearest doubles, whose exact signs (plain Horner with its bound, certSign when noisy) must
+ * match the certified signs at the real ends, so no root lies between a double and its real end;
+ * the root is then found by safeguarded Halley from the control polygon's zero and refined on
+ * certified signs (certify.ts refineRoot). Pieces are certified one by one and cover [lo, hi], so
+ * every root is found exactly once.
+ *
+ * Speed notes (V8): doubles pass between the functions here through module-local typed arrays,
+ * never as arguments or results (V8 boxes those for calls it does not inline); module-local typed
+ * arrays are constants to the optimiser, imported ones are not.
+ */
+
+import { PLAIN_HORNER_BOUND_FACTOR, ROOTS_MAX_ITERATIONS, UNIT_ROUNDOFF } from "../tolerances.js";
+import { RootSolverError, splitPoint } from "./bracket.js";
+import { certSign, lastAbsValue, load, refineRoot } from "./certify.js";
+
+const U = UNIT_ROUNDOFF;
+/** Coefficient magnitudes and interval ends realRoots uses unscaled (as realRoots.ts). */
+const SMALL = 2 ** -64;
+const BIG = 2 ** 64;
+/** Plain Horner error bound for degree 4 (Higham, see compHorner.ts). */
+const B4 = PLAIN_HORNER_BOUND_FACTOR * 4 * U;
+/**
+ * Below this p̃(|x|) the plain bound would need compHorner's underflow slack (|x| ≤ 2^64 here, so
+ * max(1,|x|)⁴·2^-900 ≤ 2^-600): such points are decided by certSign.
+ */
+const TINY_SCALE = 2 ** -600;
+/** Halving depth limit: pieces of h/256. Deeper cases (near-double roots) take the general path. */
+const MAX_DEPTH = 8;
+/** Margin growth per halving, relative to the depth-0 margin 24u·scale: 6u·scale ≥ 1.5 × 4u·scale. */
+const MARGIN_PER_LEVEL = 0.25;
+/** Same constants as newton.ts (see there). */
+const EARLY = 2 ** -17;
+const NEWTON_STEPS = 20;
+
+/** Registers: c0…c4, lo, hi, h. */
+const Q = new Float64Array(8);
+/** Halley's arguments and result: bracket a, b; plain values fa, fb of opposite signs; guess; root. */
+const H = new Float64Array(6);
+/** Bernstein coefficients b0…b4 on [lo, lo + h] and their margin. */
+const BC = new Float64Array(6);
+/** Pending pieces of the subdivision: 5 coefficients, left end s (fraction of h), depth. */
+const stack = new Float64Array(7 * (MAX_DEPTH + 2));
+/** One-root pieces: left end s, right end s, control-polygon zero s, certified sign at the left end. */
+const ones = new Float64Array(4 * 4);
+/** |p| at the last two signAt points. */
+const absAt = new Float64Array(2);
+
+export function quarticRoots(coeffs: ArrayLike<number>, lo: number, hi: number, out: number[]): boolean {
+  const c0 = coeffs[0] as number;
+  const c1 = coeffs[1] as number;
+  const c2 = coeffs[2] as number;
+  const c3 = coeffs[3] as number;
+  const c4 = coeffs[4] as number;
+  if (
+    typeof c0 !== "number" ||
+    typeof c1 !== "number" ||
+    typeof c2 !== "number" ||
+    typeof c3 !== "number" ||
+    typeof c4 !== "number" ||
+    typeof lo !== "number" ||
+    typeof hi !== "number" ||
+    !(lo < hi) ||
+    c4 === 0 ||
+    !(c0 - c0 + (c1 - c1) + (c2 - c2) + (c3 - c3) + (c4 - c4) === 0)
+  ) {
+    return false;
+  }
+  const a0 = c0 < 0 ? -c0 : c0;
+  const a1 = c1 < 0 ? -c1 : c1;
+  const a2 = c2 < 0 ? -c2 : c2;
+  const a3 = c3 < 0 ? -c3 : c3;
+  const a4 = c4 < 0 ? -c4 : c4;
+  const maxAbs = Math.max(a0, a1, a2, a3, a4);
+  if (!(maxAbs >= SMALL && maxAbs <= BIG)) return false;
+  // Cauchy's bound, as realRoots: every root has |t| < 1 + max|c_i| / |c4|.
+  const bound = (1 + maxAbs / a4) * (1 + 2 ** -48);
+  if (lo < -bound) lo = -bound;
+  if (hi > bound) hi = bound;
+  if (lo > hi) return true;
+  const M = lo < 0 ? (-lo > hi ? -lo : hi < 0 ? -hi : hi) : hi;
+  if (!(lo < hi && M <= BIG && M >= SMALL)) return false;
+  // Bernstein coefficients on [lo, lo + h]: Taylor shift to lo (and of |p| to |lo|, the scale).
+  let t0 = c0;
+  let t1 = c1;
+  let t2 = c2;
+  let t3 = c3;
+  let s0 = a0;
+  let s1 = a1;
+  let s2 = a2;
+  let s3 = a3;
+  if (lo !== 0) {
+    const al = lo < 0 ? -lo : lo;
+    t3 += lo * c4;
+    t2 += lo * t3;
+    t1 += lo * t2;
+    t0 += lo * t1;
+    t3 += lo * c4;
+    t2 += lo * t3;
+    t1 += lo * t2;
+    t3 += lo * c4;
+    t2 += lo * t3;
+    t3 += lo * c4;
+    s3 += al * a4;
+    s2 += al * s3;
+    s1 += al * s2;
+    s0 += al * s1;
+    s3 += al * a4;
+    s2 += al * s3;
+    s1 += al * s2;
+    s3 += al * a4;
+    s2 += al * s3;
+    s3 += al * a4;
+  }
+  const h = (hi - lo) * (1 + 4 * U);
+  const h2 = h * h;
+  const h3 = h2 * h;
+  const h4 = h2 * h2;
+  const e1 = t1 * h * 0.25;
+  const e2 = (t2 * h2) / 6;
+  const e3 = t3 * h3 * 0.25;
+  const e4 = c4 * h4;
+  const margin = 24 * U * (s0 + s1 * h + s2 * h2 + s3 * h3 + a4 * h4);
+  if (!(margin < Number.POSITIVE_INFINITY)) return false;
+  const b0 = t0;
+  const b1 = t0 + e1;
+  const b2 = t0 + 2 * e1 + e2;
+  const b3 = t0 + 3 * e1 + 3 * e2 + e3;
+  const b4 = t0 + 4 * e1 + 6 * e2 + 4 * e3 + e4;
+  // Depth 0 (most calls end here): every coefficient of one sign, no root.
+  if (b0 > margin && b1 > margin && b2 > margin && b3 > margin && b4 > margin) return true;
+  if (b0 < -margin && b1 < -margin && b2 < -margin && b3 < -margin && b4 < -margin) return true;
+  BC[0] = b0;
+  BC[1] = b1;
+  BC[2] = b2;
+  BC[3] = b3;
+  BC[4] = b4;
+  BC[5] = margin;
+  const nOnes = isolate();
+  if (nOnes === 0) return true;
+  if (nOnes < 0) return false;
+  Q[0] = c0;
+  Q[1] = c1;
+  Q[2] = c2;
+  Q[3] = c3;
+  Q[4] = c4;
+  Q[5] = lo;
+  Q[6] = hi;
+  Q[7] = h;
+  load(Q, 4, coeffs, 0);
+  if (solveOnes(nOnes, out)) return true;
+  out.length = 0;
+  return false;
+}
+
+/**
+ * Subdivision of BC: records the one-root pieces in `ones`, left to right; returns their number,
+ * or −1 when a piece end is at noise level or MAX_DEPTH is reached undecided.
+ */
+function isolate(): number {
+  const margin = BC[5] as number;
+  let b0 = BC[0] as number;
+  let b1 = BC[1] as number;
+  let b2 = BC[2] as number;
+  let b3 = BC[3] as number;
+  let b4 = BC[4] as number;
+  let sp = 0;
+  let nOnes = 0;
+  let s = 0;
+  let depth = 0;
+  let w = 1;
+  for (;;) {
+    const m = margin * (1 + MARGIN_PER_LEVEL * depth);
+    if (!(b0 > m || b0 < -m) || !(b4 > m || b4 < -m)) return -1; // a piece end at noise level
+    const n0 = b0 < 0;
+    const n1 = b1 < 0;
+    const n2 = b2 < 0;
+    const n3 = b3 < 0;
+    const n4 = b4 < 0;
+    const sure = (b1 > m || b1 < -m) && (b2 > m || b2 < -m) && (b3 > m || b3 < -m);
+    const changes = (n0 !== n1 ? 1 : 0) + (n1 !== n2 ? 1 : 0) + (n2 !== n3 ? 1 : 0) + (n3 !== n4 ? 1 : 0);
+    if (!sure || changes > 1) {
+      if (depth >= MAX_DEPTH) return -1;
+      // de Casteljau at the middle: push the right half, continue with the left.
+      const l1 = 0.5 * (b0 + b1);
+      const m1 = 0.5 * (b1 + b2);
+      const m2 = 0.5 * (b2 + b3);
+      const r3 = 0.5 * (b3 + b4);
+      const l2 = 0.5 * (l1 + m1);
+      const m3 = 0.5 * (m1 + m2);
+      const r2 = 0.5 * (m2 + r3);
+      const l3 = 0.5 * (l2 + m3);
+      const r1 = 0.5 * (m3 + r2);
+      const mid = 0.5 * (l3 + r1);
+      depth++;
+      w *= 0.5;
+      const e = 7 * sp++;
+      stack[e] = mid;
+      stack[e + 1] = r1;
+      stack[e + 2] = r2;
+      stack[e + 3] = r3;
+      stack[e + 4] = b4;
+      stack[e + 5] = s + w;
+      stack[e + 6] = depth;
+      b1 = l1;
+      b2 = l2;
+      b3 = l3;
+      b4 = mid;
+      continue;
+    }
+    if (changes === 1) {
+      // Exactly one simple root: the piece, and where its control polygon crosses zero.
+      let g: number;
+      if (n0 !== n1) g = b0 / (b0 - b1);
+      else if (n1 !== n2) g = 1 + b1 / (b1 - b2);
+      else if (n2 !== n3) g = 2 + b2 / (b2 - b3);
+      else g = 3 + b3 / (b3 - b4);
+      const o = 4 * nOnes++;
+      ones[o] = s;
+      ones[o + 1] = s + w;
+      ones[o + 2] = s + 0.25 * w * g;
+      ones[o + 3] = n0 ? -1 : 1;
+    }
+    if (sp === 0) return nOnes;
+    const e = 7 * --sp;
+    b0 = stack[e] as number;
+    b1 = stack[e + 1] as number;
+    b2 = stack[e + 2] as number;
+    b3 = stack[e + 3] as number;
+    b4 = stack[e + 4] as number;
+    s = stack[e + 5] as number;
+    depth = stack[e + 6] as number;
+    w = 1 / (1 << depth);
+  }
+}
+
+/**
+ * One certified root per one-root piece (see the module header): false on any doubt (a double end
+ * whose exact sign differs from the real end's, an exact zero, ends that round together).
+ */
+function solveOnes(nOnes: number, out: number[]): boolean {
+  const lo = Q[5] as number;
+  const hi = Q[6] as number;
+  const h = Q[7] as number;
+  for (let k = 0; k < nOnes; k++) {
+    const o = 4 * k;
+    const sl = ones[o] as number;
+    const sr = ones[o + 1] as number;
+    const sg = ones[o + 3] as number;
+    const last = sr === 1; // the piece reaching lo + h > hi
+    let a = sl === 0 ? lo : lo + sl * h;
+    if (a > hi) a = hi;
+    const b = last ? hi : lo + sr * h;
+    if (!(a < b) || b > hi) {
+      // A last piece starting at hi (rounded): its root lies beyond hi iff p(hi) keeps its sign.
+      if (last && a === hi && signAt(hi, 0) === sg) continue;
+      return false;
+    }
+    if (signAt(a, 0) !== sg) return false;
+    const sb = signAt(b, 1);
+    if (sb === 0) return false;
+    if (sb === sg) {
+      if (last) continue; // the last piece's root lies beyond hi
+      return false;
+    }
+    const fa = absAt[0] as number;
+    const fb = absAt[1] as number;
+    H[0] = a;
+    H[1] = b;
+    H[2] = sg * fa;
+    H[3] = sb * fb;
+    H[4] = lo + (ones[o + 2] as number) * h;
+    halley();
+    pushRoot(out, refineRoot(a, b, sg, fa, fb, H[5] as number));
+  }
+  return true;
+}
+
+/** Exact sign of p (registers Q) at x; |p(x)| into absAt[slot]. */
+function signAt(x: number, slot: number): number {
+  const c0 = Q[0] as number;
+  const c1 = Q[1] as number;
+  const c2 = Q[2] as number;
+  const c3 = Q[3] as number;
+  const c4 = Q[4] as number;
+  const ax = x < 0 ? -x : x;
+  const v = (((c4 * x + c3) * x + c2) * x + c1) * x + c0;
+  const a =
+    ((((c4 < 0 ? -c4 : c4) * ax + (c3 < 0 ? -c3 : c3)) * ax + (c2 < 0 ? -c2 : c2)) * ax +
+      (c1 < 0 ? -c1 : c1)) *
+      ax +
+    (c0 < 0 ? -c0 : c0);
+  const av = v < 0 ? -v : v;
+  if (av > B4 * a && a >= TINY_SCALE) {
+    absAt[slot] = av;
+    return v > 0 ? 1 : -1;
+  }
+  const sg = certSign(x);
+  absAt[slot] = lastAbsValue();
+  return sg;
+}
+
+/**
+ * newtonPlain (newton.ts) on p (registers Q) over the bracket H[0..1] with plain values H[2..3] of
+ * opposite signs, started from H[4] when inside (else regula falsi): the same steps, safeguards and
+ * stopping rule; the result into H[5]. Throws RootSolverError after ROOTS_MAX_ITERATIONS steps.
+ */
+function halley(): void {
+  const c0 = Q[0] as number;
+  const c1 = Q[1] as number;
+  const c2 = Q[2] as number;
+  const c3 = Q[3] as number;
+  const c4 = Q[4] as number;
+  let a = H[0] as number;
+  let b = H[1] as number;
+  const fa = H[2] as number;
+  const fb = H[3] as number;
+  const guess = H[4] as number;
+  const aNeg = fa < 0;
+  let x = guess > a && guess < b ? guess : a - fa * ((b - a) / (fb - fa));
+  if (!(x > a && x < b)) x = splitPoint(a, b);
+  let dxOld = Number.POSITIVE_INFINITY;
+  let dx = Number.POSITIVE_INFINITY;
+  for (let it = 0; it < ROOTS_MAX_ITERATIONS; it++) {
+    // p, p′ and p″/2 at x in one Horner pass (newtonPlain's loop unrolled; the first line is the
+    // x³ step, after which p″/2 = c4 and p′ = c4·x + (c4·x + c3)).
+    let f = c4 * x + c3;
+    let d1 = c4 * x + f;
+    let d2 = c4;
+    f = f * x + c2;
+    d2 = d2 * x + d1;
+    d1 = d1 * x + f;
+    f = f * x + c1;
+    d2 = d2 * x + d1;
+    d1 = d1 * x + f;
+    f = f * x + c0;
+    if (f === 0) {
+      H[5] = x;
+      return;
+    }
+    if (f < 0 === aNeg) a = x;
+    else b = x;
+    // Halley's step where it is a small correction of Newton's, Newton's elsewhere (newton.ts).
+    const fd2 = f * d2;
+    const d11 = d1 * d1;
+    const hal = (fd2 < 0 ? -fd2 : fd2) <= 0.5 * d11;
+    const step = hal && it < NEWTON_STEPS ? (f * d1) / (d11 - fd2) : f / d1;
+    const as = step < 0 ? -step : step;
+    const ax = x < 0 ? -x : x;
+    let xn = x - step;
+    if (hal && (f < 0 ? -f : f) <= EARLY * ax * (d1 < 0 ? -d1 : d1) && xn >= a && xn <= b) {
+      H[5] = xn;
+      return;
+    }
+    if (it >= NEWTON_STEPS || !(xn > a && xn < b) || as > 0.5 * (dxOld < 0 ? -dxOld : dxOld)) {
+      xn = splitPoint(a, b);
+      if (xn === a) {
+        H[5] = x;
+        return;
+      }
+    }
+    dxOld = dx;
+    dx = xn - x;
+    x = xn;
+  }
+  throw new RootSolverError(`newton: no convergence in ${ROOTS_MAX_ITERATIONS} iterations on [${a}, ${b}]`);
+}
+
+/** Append x to out keeping it strictly increasing (−0 as +0). */
+function pushRoot(out: number[], x: number): void {
+  if (out.length === 0 || x > (out[out.length - 1] as number)) out.push(x + 0);
+}
