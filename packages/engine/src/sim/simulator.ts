@@ -132,7 +132,9 @@ export class Simulator extends Predictor {
   protected processBodyBody(s: number, o: number): void {
     const b = this.store;
     // Canonical order: `a` is the body with the smaller id, so the arithmetic is the same whichever body held the event.
-    const [p, q] = (b.ids[s] as string) < (b.ids[o] as string) ? [s, o] : [o, s];
+    const sFirst = (b.ids[s] as string) < (b.ids[o] as string);
+    const p = sFirst ? s : o;
+    const q = sFirst ? o : s;
     const t = this.time;
     const xp = this.xAt(p, t);
     const yp = this.yAt(p, t);
