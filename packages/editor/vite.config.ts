@@ -4,7 +4,8 @@
  * - "@chapgame/engine" is aliased to the engine's TypeScript source, so the editor (and its Web
  *   Worker) always builds from the current engine source: no stale dist, one bundle, and dev-mode
  *   edits to the engine reload the editor. The engine has no runtime dependencies, so bundling its
- *   source is the same as bundling its dist.
+ *   source is the same as bundling its dist. CHAPGAME_ENGINE_SRC (a path to another copy's index.ts)
+ *   builds against that copy instead (measuring the editor while the engine is being edited).
  */
 import { fileURLToPath } from "node:url";
 import react from "@vitejs/plugin-react";
@@ -17,7 +18,9 @@ export default defineConfig({
   base: "./",
   publicDir: here("../../public"),
   plugins: [react()],
-  resolve: { alias: { "@chapgame/engine": here("../engine/src/index.ts") } },
+  resolve: {
+    alias: { "@chapgame/engine": process.env.CHAPGAME_ENGINE_SRC ?? here("../engine/src/index.ts") },
+  },
   worker: { format: "es" },
   build: { outDir: here("dist"), emptyOutDir: true, sourcemap: true },
   server: { host: "127.0.0.1" },

@@ -4,6 +4,8 @@
  *  1. Playing 2,000 moving discs (a dilute gas): animation frames per second of the page, canvas
  *     redraws per second, drawing time per frame, frame round trip to the worker.
  *  2. Scrubbing a timeline with 10^6 recorded events: a new random time every animation frame.
+ * Each sample runs MEASURE_RUNS times (default 3) and reports every run (with the load average
+ * before and after it) and the medians of frames per second and of the 95th percentile frame gap.
  * Run: npm run build && (cd packages/editor && npx vite build) && npx vitest run --config tests/e2e/measure.config.ts
  */
 import { writeFileSync } from "node:fs";
@@ -13,35 +15,7 @@ import { dilutedGas } from "@chapgame/engine";
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, it } from "vitest";
 import { ARTIFACTS, openEditor, type Session, screenshot } from "./harness.js";
-
-/** The part of the page's `window.chapgame` (the Editor) these measurements use. */
-interface PageEditor {
-  ui: {
-    getState(): { t: number };
-    setState(patch: object | ((s: { calc: object }) => object)): void;
-  };
-  client: {
-    getSnapshot(): {
-      computing: unknown;
-      revision: number;
-      horizon: number;
-      eventCount: number;
-      historyBytes: number;
-    };
-  };
-  loadScene(scene: unknown, options: object): Promise<string | null>;
-}
-type PageWindow = {
-  chapgame: PageEditor;
-  chapgameStats: {
-    draws: number;
-    drawMs: number;
-    frames: number;
-    frameLatencyMs: number;
-    maxFrameLatencyMs: number;
-  };
-  chapgameResetStats: () => void;
-};
+import { loadScene, type PageWindow } from "./pageEditor.js";
 
 let s: Session;
 let page: Page;
@@ -59,38 +33,42 @@ afterAll(async () => {
   await s?.close();
 });
 
-/** Loads a scene and sets the Calculation settings, then waits until the worker is idle. */
-async function load(scene: unknown, calc: Record<string, unknown>, timeoutMs: number) {
-  await page.evaluate(
-    async ({ scene, calc }) => {
-      const w = window as unknown as PageWindow;
-      w.chapgame.ui.setState((st) => ({ calc: { ...st.calc, ...calc }, playing: false }));
-      await w.chapgame.loadScene(scene, { undoable: false });
-    },
-    { scene, calc },
-  );
-  const start = Date.now();
-  await page.waitForFunction(
-    () => {
-      const info = (window as unknown as PageWindow).chapgame.client.getSnapshot();
-      return info.computing === null && info.revision > 0;
-    },
-    undefined,
-    { timeout: timeoutMs, polling: 200 },
-  );
-  return Date.now() - start;
-}
+/** How many times each sample is taken (the report gives each run and the median). */
+const RUNS = Number(process.env.MEASURE_RUNS ?? 3);
 
-/** Counts animation frames and editor draws during `ms` while `perFrame` runs on every frame. */
-async function sample(ms: number, mode: "play" | "scrub") {
-  return page.evaluate(
+/**
+ * Counts animation frames and editor draws during `ms` (playing, or scrubbing to a new random time
+ * every animation frame). Frame gaps are the times between animation frames (p50/p95/p99); long
+ * tasks (> 50 ms) and long animation frames (with the scripts that took the most time in them) come
+ * from Chromium's PerformanceObservers.
+ */
+async function sampleOnce(ms: number, mode: "play" | "scrub") {
+  const load = loadavg()[0];
+  const r = await page.evaluate(
     async ({ ms, mode }) => {
       const w = window as unknown as PageWindow;
       const ed = w.chapgame;
       const horizon = ed.client.getSnapshot().horizon;
+      const longTasks: number[] = [];
+      const scripts = new Map<string, number>();
+      const observers: PerformanceObserver[] = [];
+      const observe = (type: string, fn: (e: PerformanceEntry) => void) => {
+        if (!PerformanceObserver.supportedEntryTypes.includes(type)) return;
+        const o = new PerformanceObserver((list) => list.getEntries().forEach(fn));
+        o.observe({ type });
+        observers.push(o);
+      };
+      observe("longtask", (e) => longTasks.push(e.duration));
+      observe("long-animation-frame", (e) => {
+        for (const sc of (
+          e as unknown as { scripts: { invoker: string; sourceFunctionName: string; duration: number }[] }
+        ).scripts) {
+          const k = `${sc.invoker} ${sc.sourceFunctionName}`;
+          scripts.set(k, (scripts.get(k) ?? 0) + sc.duration);
+        }
+      });
       w.chapgameResetStats();
-      let frames = 0;
-      let worst = 0;
+      const gaps: number[] = [];
       let last = performance.now();
       const start = last;
       let seed = 12345;
@@ -102,8 +80,7 @@ async function sample(ms: number, mode: "play" | "scrub") {
       await new Promise<void>((resolve) => {
         const tick = () => {
           const now = performance.now();
-          frames++;
-          worst = Math.max(worst, now - last);
+          gaps.push(now - last);
           last = now;
           if (mode === "scrub") ed.ui.setState({ t: rand() * horizon });
           if (now - start < ms) requestAnimationFrame(tick);
@@ -112,12 +89,26 @@ async function sample(ms: number, mode: "play" | "scrub") {
         requestAnimationFrame(tick);
       });
       ed.ui.setState({ playing: false });
+      await new Promise((r) => setTimeout(r, 100)); // let the observers report
+      for (const o of observers) o.disconnect();
       const secs = (performance.now() - start) / 1000;
       const st = w.chapgameStats;
+      gaps.shift(); // from the start to the first frame
+      gaps.sort((a, b) => a - b);
+      const pct = (q: number) => gaps[Math.min(gaps.length - 1, Math.floor(q * gaps.length))] ?? null;
       return {
         seconds: secs,
-        pageFps: frames / secs,
-        worstFrameGapMs: worst,
+        pageFps: gaps.length / secs,
+        frameGapMs: { p50: pct(0.5), p95: pct(0.95), p99: pct(0.99), max: gaps[gaps.length - 1] ?? null },
+        longTasks: {
+          count: longTasks.length,
+          totalMs: longTasks.reduce((a, b) => a + b, 0),
+          maxMs: Math.max(0, ...longTasks),
+        },
+        longFrameScripts: [...scripts.entries()]
+          .sort((a, b) => b[1] - a[1])
+          .slice(0, 6)
+          .map(([k, v]) => `${v.toFixed(0)} ms ${k}`),
         canvasDrawsPerSecond: st.draws / secs,
         meanDrawMs: st.draws ? st.drawMs / st.draws : null,
         framesFromWorkerPerSecond: st.frames / secs,
@@ -129,11 +120,25 @@ async function sample(ms: number, mode: "play" | "scrub") {
     },
     { ms, mode },
   );
+  return { loadAverage1min: [load, loadavg()[0]], ...r };
+}
+
+/** RUNS samples; the summary gives the medians of fps and p95 frame gap. */
+async function sample(ms: number, mode: "play" | "scrub") {
+  const runs = [];
+  for (let i = 0; i < RUNS; i++) runs.push(await sampleOnce(ms, mode));
+  const median = (xs: number[]) => xs.sort((a, b) => a - b)[Math.floor(xs.length / 2)]!;
+  return {
+    medianPageFps: median(runs.map((r) => r.pageFps)),
+    medianP95FrameGapMs: median(runs.map((r) => r.frameGapMs.p95 ?? Number.NaN)),
+    runs,
+  };
 }
 
 it("plays 2,000 moving discs", async () => {
   const scene = dilutedGas({ n: 2000, packing: 0.1, seed: 7 });
-  const computeMs = await load(
+  const computeMs = await loadScene(
+    page,
     scene,
     { useTime: true, seconds: 20, useEvents: false, autoExtend: true },
     300_000,
@@ -143,14 +148,15 @@ it("plays 2,000 moving discs", async () => {
     bodies: 2000,
     computeAheadMs: computeMs,
     eventsIn20s: info.eventCount,
-    ...(await sample(8000, "play")),
+    ...(await sample(6000, "play")),
   };
   await screenshot(page, "perf-2000-discs");
 });
 
 it("scrubs a timeline with 10^6 recorded events", async () => {
   const scene = dilutedGas({ n: 1000, packing: 0.3, seed: 3 });
-  const computeMs = await load(
+  const computeMs = await loadScene(
+    page,
     scene,
     { useTime: false, useEvents: true, events: 1_000_000, autoExtend: false },
     600_000,
@@ -161,7 +167,7 @@ it("scrubs a timeline with 10^6 recorded events", async () => {
     events: info.eventCount,
     historyBytes: info.historyBytes,
     computeMs,
-    ...(await sample(8000, "scrub")),
+    ...(await sample(6000, "scrub")),
   };
   await screenshot(page, "perf-scrub-1e6");
 });
@@ -169,13 +175,18 @@ it("scrubs a timeline with 10^6 recorded events", async () => {
 it("baseline: a bare page drawing 2,000 circles per frame (the machine's ceiling under its current load)", async () => {
   const other = await s.context.newPage();
   await other.setContent('<canvas id="c" width="1000" height="800"></canvas>');
-  results.bareCanvas2000 = await other.evaluate(async () => {
+  const load = loadavg()[0];
+  const bare = await other.evaluate(async () => {
     const ctx = (document.getElementById("c") as HTMLCanvasElement).getContext("2d")!;
     let frames = 0;
     const start = performance.now();
+    let last = start;
+    const gaps: number[] = [];
     await new Promise<void>((resolve) => {
       const tick = () => {
         frames++;
+        gaps.push(performance.now() - last);
+        last = performance.now();
         ctx.fillStyle = "#fff";
         ctx.fillRect(0, 0, 1000, 800);
         ctx.beginPath();
@@ -191,7 +202,13 @@ it("baseline: a bare page drawing 2,000 circles per frame (the machine's ceiling
       };
       requestAnimationFrame(tick);
     });
-    return { pageFps: frames / ((performance.now() - start) / 1000) };
+    gaps.shift();
+    gaps.sort((a, b) => a - b);
+    return {
+      pageFps: frames / ((performance.now() - start) / 1000),
+      p95FrameGapMs: gaps[Math.floor(0.95 * gaps.length)],
+    };
   });
+  results.bareCanvas2000 = { loadAverage1min: [load, loadavg()[0]], ...bare };
   await other.close();
 });

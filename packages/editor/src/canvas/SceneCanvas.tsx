@@ -98,6 +98,7 @@ export function SceneCanvas() {
         highlight: new Set(s.highlight),
         trails: s.trails ? trails.paths : null,
         overlay,
+        pixelRatio: dpr,
       });
       drawStats.draws++;
       drawStats.drawMs += performance.now() - started;

@@ -1,7 +1,8 @@
 /**
  * Draws one Frame on a 2D canvas context already scaled to CSS pixels. Batched for thousands of
  * discs: one path for all disc outlines, one for velocity arrows; ids are drawn only when a disc is
- * large enough on screen to hold its label.
+ * large enough on screen to hold its label (LABEL_MIN_RADIUS_PX), arrows only when at least 2 px
+ * long. Above FILL_MAX_DISCS discs, outlines and arrows are one device pixel wide (see STROKE_PX).
  */
 import type { Vec2 } from "../engineTypes";
 import { F_R, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE, type Frame } from "../remote/protocol";
@@ -20,6 +21,8 @@ export interface DrawOptions {
   /** Recent world positions per body id, oldest first: x0, y0, x1, y1, ... */
   trails: ReadonlyMap<string, number[]> | null;
   overlay: Overlay | null;
+  /** Device pixels per CSS pixel (the context is scaled by it). */
+  pixelRatio: number;
 }
 
 /** Seconds of motion an arrow shows: the arrow ends where the disc would be after ARROW_SECONDS. */
@@ -27,6 +30,14 @@ export const ARROW_SECONDS = 0.5;
 const LABEL_MIN_RADIUS_PX = 9;
 /** Above this many discs they are drawn as outlines only (a translucent fill costs a quarter of the frame). */
 const FILL_MAX_DISCS = 500;
+/**
+ * Stroke width of outlines and arrows (CSS px). Chromium's software canvas (Skia) draws strokes at
+ * most one device pixel wide as hairlines; a 1.25 px stroke is outlined and filled as a path. In a
+ * trace of 2,000 discs playing (tests/e2e/editor.profile.ts), 1.25 px outlines cost about 19 ms of
+ * main-thread CPU per frame more than hairlines, which cost about as much as no outline at all.
+ * Many discs are therefore drawn with hairlines; few keep the wider stroke.
+ */
+const STROKE_PX = 1.25;
 const COLORS = { disc: "#1d2a3a", fill: "rgba(70,110,160,0.12)", selected: "#d9480f", highlight: "#e8590c" };
 
 export function drawFrame(
@@ -112,8 +123,9 @@ export function drawFrame(
     ctx.fillStyle = COLORS.fill;
     ctx.fill();
   }
+  const thin = n > FILL_MAX_DISCS ? 1 / o.pixelRatio : STROKE_PX;
   ctx.strokeStyle = COLORS.disc;
-  ctx.lineWidth = 1.25;
+  ctx.lineWidth = thin;
   ctx.stroke();
   // velocity arrows
   ctx.beginPath();
@@ -129,7 +141,7 @@ export function drawFrame(
     arrowPath(ctx, sx, sy, sx + vx * arrowK, sy - vy * arrowK);
   }
   ctx.strokeStyle = "#2b8a3e";
-  ctx.lineWidth = 1.25;
+  ctx.lineWidth = thin;
   ctx.stroke();
   // selected / highlighted discs and labels
   ctx.font = "11px system-ui, sans-serif";

@@ -1,0 +1,61 @@
+/**
+ * The part of the page's `window.chapgame` (the Editor) and `window.chapgameStats` that the
+ * in-browser measurements and profiles use, and loading a scene through it.
+ */
+import type { Page } from "playwright-core";
+
+export interface PageEditor {
+  ui: {
+    getState(): { t: number };
+    setState(patch: object | ((s: { calc: object }) => object)): void;
+  };
+  client: {
+    getSnapshot(): {
+      computing: unknown;
+      revision: number;
+      horizon: number;
+      eventCount: number;
+      historyBytes: number;
+    };
+  };
+  loadScene(scene: unknown, options: object): Promise<string | null>;
+}
+
+export type PageWindow = {
+  chapgame: PageEditor;
+  chapgameStats: {
+    draws: number;
+    drawMs: number;
+    frames: number;
+    frameLatencyMs: number;
+    maxFrameLatencyMs: number;
+  };
+  chapgameResetStats: () => void;
+};
+
+/** Loads a scene and sets the Calculation settings, then waits until the worker is idle (ms taken). */
+export async function loadScene(
+  page: Page,
+  scene: unknown,
+  calc: Record<string, unknown>,
+  timeoutMs: number,
+): Promise<number> {
+  await page.evaluate(
+    async ({ scene, calc }) => {
+      const w = window as unknown as PageWindow;
+      w.chapgame.ui.setState((st) => ({ calc: { ...st.calc, ...calc }, playing: false }));
+      await w.chapgame.loadScene(scene, { undoable: false });
+    },
+    { scene, calc },
+  );
+  const start = Date.now();
+  await page.waitForFunction(
+    () => {
+      const info = (window as unknown as PageWindow).chapgame.client.getSnapshot();
+      return info.computing === null && info.revision > 0;
+    },
+    undefined,
+    { timeout: timeoutMs, polling: 200 },
+  );
+  return Date.now() - start;
+}
