@@ -2,6 +2,8 @@
  * Section "engine": chapgame alone.
  * - scaling: events/s of the dilute gas (10 % packing, speed 10) against N, per-event cost ratio
  *   N = 1e5 vs 1e3 (target ≤ 2) and events/s at N = 1e4 (target ≥ 1e6); heap bytes per body.
+ *   Beside each row, the same gas run by minimalGas.mjs (the algorithm with every product feature
+ *   stripped): the ceiling plain JavaScript reaches here, timed the same way.
  * - galperin7: Galperin's billiard with 7 digits run to idle (target < 2 s, 3,141,592 collisions).
  * - reference: the fast engine against the tests' all-pairs reference simulator (reference.mjs).
  * - ablations: each World `optimizations` switch off in turn, on the scene where it should matter,
@@ -14,6 +16,7 @@ import { gc, median, nowNs, timedRuns } from "../lib/timing.mjs";
 import { buildWorld } from "../peers/chapgame.mjs";
 import { galperin } from "../scenes/galperin.mjs";
 import { gas } from "../scenes/gas.mjs";
+import { createMinimalGas } from "./minimalGas.mjs";
 import { againstReference } from "./reference.mjs";
 
 const collisions = (c) => c.bodyBody + c.bodyLine + c.bodyPoint;
@@ -24,6 +27,22 @@ function warmUp(world, events, seconds) {
   let done = 0;
   while (done < events && nowNs() - a < seconds * 1e9) done += world.advance({ maxEvents: 2000 }).events;
   return { events: done, ns: nowNs() - a };
+}
+
+/** Events/s of minimalGas.mjs on the same scene: warm-up like the engine's, then `runs` batches. */
+function minimalRate(scene, batch, runs) {
+  gc();
+  const gasLoop = createMinimalGas(scene);
+  gasLoop.advance(2 * scene.bodies.length);
+  const t = timedRuns(
+    () => {
+      const a = nowNs();
+      gasLoop.advance(batch);
+      return nowNs() - a;
+    },
+    { runs, budgetNs: 30e9 },
+  );
+  return { eventsPerSecond: batch / (t.medianNs / 1e9), nsPerEvent: t.medianNs / batch };
 }
 
 function scaling({ quick, engine, log }) {
@@ -55,6 +74,7 @@ function scaling({ quick, engine, log }) {
         { runs, budgetNs: 30e9 },
       );
       const eventsPerSecond = batch / (t.medianNs / 1e9);
+      const minimal = minimalRate(scene, batch, runs);
       rows.push({
         n,
         batch,
@@ -65,9 +85,11 @@ function scaling({ quick, engine, log }) {
         buildNs,
         heapBytesPerBody,
         simTime: world.time,
+        minimalEventsPerSecond: minimal.eventsPerSecond,
+        minimalNsPerEvent: minimal.nsPerEvent,
       });
       log(
-        `  scaling N=${n}: ${(eventsPerSecond / 1e6).toFixed(3)} M events/s, ${heapBytesPerBody.toFixed(0)} B/body`,
+        `  scaling N=${n}: ${(eventsPerSecond / 1e6).toFixed(3)} M events/s (minimal JS loop ${(minimal.eventsPerSecond / 1e6).toFixed(3)}), ${heapBytesPerBody.toFixed(0)} B/body`,
       );
     } catch (e) {
       rows.push({ n, error: String(e.message ?? e) });
@@ -82,6 +104,8 @@ function scaling({ quick, engine, log }) {
     rows,
     eventsPerSecondAt1e4: r4?.eventsPerSecond ?? null,
     costRatio1e5over1e3: r3 && r5 ? r5.nsPerEvent / r3.nsPerEvent : null,
+    minimalEventsPerSecondAt1e4: r4?.minimalEventsPerSecond ?? null,
+    minimalCostRatio1e5over1e3: r3 && r5 ? r5.minimalNsPerEvent / r3.minimalNsPerEvent : null,
     targets: { eventsPerSecondAt1e4: 1e6, costRatio: 2 },
   };
 }

@@ -1,0 +1,50 @@
+/**
+ * The benchmark's ceiling loop (bench/engine/minimalGas.mjs) must simulate the same physics as the
+ * engine, or its events/s mean nothing: energy is kept, discs never overlap or leave the box, and
+ * after the same number of collisions the simulated time agrees with the engine's (the runs diverge
+ * chaotically, so only statistically: the mean time between collisions is a property of the gas).
+ */
+import { describe, expect, it } from "vitest";
+import { createMinimalGas } from "../../bench/engine/minimalGas.mjs";
+import { buildWorld } from "../../bench/peers/chapgame.mjs";
+import { gas } from "../../bench/scenes/gas.mjs";
+import * as engine from "../../packages/engine/src/index.js";
+
+const scene = gas({ n: 400, packing: 0.1, speed: 10, seed: 5, span: 1e9 });
+const EVENTS = 20000;
+
+function energy(s: { vx: number; vy: number }[]): number {
+  return s.reduce((e, b) => e + 0.5 * (b.vx * b.vx + b.vy * b.vy), 0);
+}
+
+describe("bench ceiling: minimalGas", () => {
+  const loop = createMinimalGas(scene);
+  const before = energy(loop.state());
+  loop.advance(EVENTS);
+  const after = loop.state();
+
+  it("keeps kinetic energy (elastic, equal masses)", () => {
+    expect(Math.abs(energy(after) - before) / before).toBeLessThan(1e-10);
+  });
+
+  it("never lets discs overlap or leave the box", () => {
+    const { x0, y0, x1, y1 } = scene.box;
+    for (let i = 0; i < after.length; i++) {
+      const a = after[i] as { x: number; y: number };
+      expect(a.x).toBeGreaterThanOrEqual(x0 + 1 - 1e-9);
+      expect(a.x).toBeLessThanOrEqual(x1 - 1 + 1e-9);
+      expect(a.y).toBeGreaterThanOrEqual(y0 + 1 - 1e-9);
+      expect(a.y).toBeLessThanOrEqual(y1 - 1 + 1e-9);
+      for (let j = i + 1; j < after.length; j++) {
+        const b = after[j] as { x: number; y: number };
+        expect(Math.hypot(a.x - b.x, a.y - b.y)).toBeGreaterThanOrEqual(2 * (1 - 1e-9));
+      }
+    }
+  });
+
+  it("reaches the same simulated time as the engine after the same number of collisions (within 5 %)", () => {
+    const w = buildWorld(engine, scene);
+    w.advance({ maxEvents: EVENTS });
+    expect(Math.abs(loop.time() - w.time) / w.time).toBeLessThan(0.05);
+  });
+});
