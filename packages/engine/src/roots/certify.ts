@@ -150,11 +150,11 @@ export function refineRoot(a: number, b: number, sa: number, absA: number, absB:
 }
 
 /** The model's span: |h| ≤ 2^-30 |x0| keeps p̃'' within 1 + n·2^-30 of its value at |x0|. */
-const MODEL_SPAN = 2 ** -30;
+export const MODEL_SPAN = 2 ** -30;
 /** Below this |x0| the model's h² terms could reach the subnormal range: no model. */
-const MODEL_MIN_X = 2 ** -400;
+export const MODEL_MIN_X = 2 ** -400;
 /** Covers the rounding in computing the error terms and the growth of p̃'' over the span. */
-const MODEL_SAFETY = 1.01;
+export const MODEL_SAFETY = 1.01;
 
 /** Certified refinement by full evaluations (Newton steps, then halving). */
 function refineGeneric(a: number, b: number, sa: number, absA: number, absB: number, x0: number): number {

@@ -28,9 +28,22 @@
  * arrays are constants to the optimiser, imported ones are not.
  */
 
-import { PLAIN_HORNER_BOUND_FACTOR, ROOTS_MAX_ITERATIONS, UNIT_ROUNDOFF } from "../tolerances.js";
+import {
+  COMP_HORNER_BOUND_FACTOR,
+  PLAIN_HORNER_BOUND_FACTOR,
+  ROOTS_MAX_ITERATIONS,
+  UNIT_ROUNDOFF,
+} from "../tolerances.js";
 import { RootSolverError, splitPoint } from "./bracket.js";
-import { certSign, lastAbsValue, load, refineRoot } from "./certify.js";
+import {
+  certSign,
+  lastAbsValue,
+  load,
+  MODEL_MIN_X,
+  MODEL_SAFETY,
+  MODEL_SPAN,
+  refineRoot,
+} from "./certify.js";
 
 const U = UNIT_ROUNDOFF;
 /** Coefficient magnitudes and interval ends realRoots uses unscaled (as realRoots.ts). */
@@ -47,9 +60,31 @@ const TINY_SCALE = 2 ** -600;
 const MAX_DEPTH = 8;
 /** Margin growth per halving, relative to the depth-0 margin 24u·scale: 6u·scale ≥ 1.5 × 4u·scale. */
 const MARGIN_PER_LEVEL = 0.25;
-/** Same constants as newton.ts (see there). */
-const EARLY = 2 ** -17;
+/** 1/C(4,2), rounded (the margin covers it, as bernstein.ts's 1/C(n,k)). */
+const SIXTH = 1 / 6;
+/**
+ * Halley stops once Newton's step is below EARLY of |x| and Halley's step is taken (newton.ts uses
+ * 2^-17 for ~1 ulp): with cubic convergence the error left is about EARLY³ = 2^-33 relative at a
+ * simple root, and refine's first step (Newton's, from the compensated value) takes it to rounding
+ * level, within the span of its certified model (2^-30 relative); when it does not, refineRoot
+ * finishes. NEWTON_STEPS as newton.ts.
+ */
+const EARLY = 2 ** -11;
 const NEWTON_STEPS = 20;
+/**
+ * Local copies of imported constants: V8 folds a module's own constants into its optimised code,
+ * not imported ones (each use of an import is a load and a check).
+ */
+const MAX_IT = ROOTS_MAX_ITERATIONS;
+const SPAN = MODEL_SPAN;
+const MIN_X = MODEL_MIN_X;
+const SAFETY = MODEL_SAFETY;
+const COMP = COMP_HORNER_BOUND_FACTOR;
+/** compHorner.ts's constants: Dekker's split, underflow limits (see there). */
+const SPLIT = 134217729;
+const UNDERFLOW = 2 ** -968;
+const SLACK_FREE = 2 ** -900;
+const TINY = 2 ** -1070;
 
 /** Registers: c0…c4, lo, hi, h. */
 const Q = new Float64Array(8);
@@ -57,8 +92,8 @@ const Q = new Float64Array(8);
 const H = new Float64Array(6);
 /** Bernstein coefficients b0…b4 on [lo, lo + h] and their margin. */
 const BC = new Float64Array(6);
-/** Pending pieces of the subdivision: 5 coefficients, left end s (fraction of h), depth. */
-const stack = new Float64Array(7 * (MAX_DEPTH + 2));
+/** Pending pieces of the subdivision: 5 coefficients, left end s and width w (fractions of h), depth. */
+const stack = new Float64Array(8 * (MAX_DEPTH + 2));
 /** One-root pieces: left end s, right end s, control-polygon zero s, certified sign at the left end. */
 const ones = new Float64Array(4 * 4);
 /** |p| at the last two signAt points. */
@@ -84,18 +119,21 @@ export function quarticRoots(coeffs: ArrayLike<number>, lo: number, hi: number, 
   ) {
     return false;
   }
-  const a0 = c0 < 0 ? -c0 : c0;
-  const a1 = c1 < 0 ? -c1 : c1;
-  const a2 = c2 < 0 ? -c2 : c2;
-  const a3 = c3 < 0 ? -c3 : c3;
-  const a4 = c4 < 0 ? -c4 : c4;
+  const a0 = Math.abs(c0);
+  const a1 = Math.abs(c1);
+  const a2 = Math.abs(c2);
+  const a3 = Math.abs(c3);
+  const a4 = Math.abs(c4);
   const maxAbs = Math.max(a0, a1, a2, a3, a4);
   if (!(maxAbs >= SMALL && maxAbs <= BIG)) return false;
-  // Cauchy's bound, as realRoots: every root has |t| < 1 + max|c_i| / |c4|.
-  const bound = (1 + maxAbs / a4) * (1 + 2 ** -48);
-  if (lo < -bound) lo = -bound;
-  if (hi > bound) hi = bound;
-  if (lo > hi) return true;
+  // Cauchy's bound, as realRoots: every root has |t| < 1 + max|c_i| / |c4|. (No division unless
+  // an end may lie beyond it: |x|·|c4| ≤ maxAbs, computed, gives |x| < the bound.)
+  if (hi * a4 > maxAbs || -lo * a4 > maxAbs) {
+    const bound = (1 + maxAbs / a4) * (1 + 2 ** -48);
+    if (lo < -bound) lo = -bound;
+    if (hi > bound) hi = bound;
+    if (lo > hi) return true;
+  }
   const M = lo < 0 ? (-lo > hi ? -lo : hi < 0 ? -hi : hi) : hi;
   if (!(lo < hi && M <= BIG && M >= SMALL)) return false;
   // Bernstein coefficients on [lo, lo + h]: Taylor shift to lo (and of |p| to |lo|, the scale).
@@ -108,7 +146,7 @@ export function quarticRoots(coeffs: ArrayLike<number>, lo: number, hi: number, 
   let s2 = a2;
   let s3 = a3;
   if (lo !== 0) {
-    const al = lo < 0 ? -lo : lo;
+    const al = Math.abs(lo);
     t3 += lo * c4;
     t2 += lo * t3;
     t1 += lo * t2;
@@ -135,7 +173,7 @@ export function quarticRoots(coeffs: ArrayLike<number>, lo: number, hi: number, 
   const h3 = h2 * h;
   const h4 = h2 * h2;
   const e1 = t1 * h * 0.25;
-  const e2 = (t2 * h2) / 6;
+  const e2 = t2 * h2 * SIXTH;
   const e3 = t3 * h3 * 0.25;
   const e4 = c4 * h4;
   const margin = 24 * U * (s0 + s1 * h + s2 * h2 + s3 * h3 + a4 * h4);
@@ -189,13 +227,13 @@ function isolate(): number {
   let w = 1;
   for (;;) {
     const m = margin * (1 + MARGIN_PER_LEVEL * depth);
-    if (!(b0 > m || b0 < -m) || !(b4 > m || b4 < -m)) return -1; // a piece end at noise level
+    if (!(Math.abs(b0) > m && Math.abs(b4) > m)) return -1; // a piece end at noise level
     const n0 = b0 < 0;
     const n1 = b1 < 0;
     const n2 = b2 < 0;
     const n3 = b3 < 0;
     const n4 = b4 < 0;
-    const sure = (b1 > m || b1 < -m) && (b2 > m || b2 < -m) && (b3 > m || b3 < -m);
+    const sure = Math.abs(b1) > m && Math.abs(b2) > m && Math.abs(b3) > m;
     const changes = (n0 !== n1 ? 1 : 0) + (n1 !== n2 ? 1 : 0) + (n2 !== n3 ? 1 : 0) + (n3 !== n4 ? 1 : 0);
     if (!sure || changes > 1) {
       if (depth >= MAX_DEPTH) return -1;
@@ -212,7 +250,7 @@ function isolate(): number {
       const mid = 0.5 * (l3 + r1);
       depth++;
       w *= 0.5;
-      const e = 7 * sp++;
+      const e = 8 * sp++;
       stack[e] = mid;
       stack[e + 1] = r1;
       stack[e + 2] = r2;
@@ -220,6 +258,7 @@ function isolate(): number {
       stack[e + 4] = b4;
       stack[e + 5] = s + w;
       stack[e + 6] = depth;
+      stack[e + 7] = w;
       b1 = l1;
       b2 = l2;
       b3 = l3;
@@ -240,7 +279,7 @@ function isolate(): number {
       ones[o + 3] = n0 ? -1 : 1;
     }
     if (sp === 0) return nOnes;
-    const e = 7 * --sp;
+    const e = 8 * --sp;
     b0 = stack[e] as number;
     b1 = stack[e + 1] as number;
     b2 = stack[e + 2] as number;
@@ -248,7 +287,7 @@ function isolate(): number {
     b4 = stack[e + 4] as number;
     s = stack[e + 5] as number;
     depth = stack[e + 6] as number;
-    w = 1 / (1 << depth);
+    w = stack[e + 7] as number;
   }
 }
 
@@ -289,7 +328,17 @@ function solveOnes(nOnes: number, out: number[]): boolean {
     H[3] = sb * fb;
     H[4] = lo + (ones[o + 2] as number) * h;
     halley();
-    pushRoot(out, refineRoot(a, b, sg, fa, fb, H[5] as number));
+    H[0] = a;
+    H[1] = b;
+    H[2] = fa;
+    H[3] = fb;
+    H[4] = H[5] as number;
+    pushRoot(
+      out,
+      refine(sg)
+        ? (H[5] as number)
+        : refineRoot(H[0] as number, H[1] as number, sg, H[2] as number, H[3] as number, H[4] as number),
+    );
   }
   return true;
 }
@@ -301,14 +350,11 @@ function signAt(x: number, slot: number): number {
   const c2 = Q[2] as number;
   const c3 = Q[3] as number;
   const c4 = Q[4] as number;
-  const ax = x < 0 ? -x : x;
+  const ax = Math.abs(x);
   const v = (((c4 * x + c3) * x + c2) * x + c1) * x + c0;
   const a =
-    ((((c4 < 0 ? -c4 : c4) * ax + (c3 < 0 ? -c3 : c3)) * ax + (c2 < 0 ? -c2 : c2)) * ax +
-      (c1 < 0 ? -c1 : c1)) *
-      ax +
-    (c0 < 0 ? -c0 : c0);
-  const av = v < 0 ? -v : v;
+    (((Math.abs(c4) * ax + Math.abs(c3)) * ax + Math.abs(c2)) * ax + Math.abs(c1)) * ax + Math.abs(c0);
+  const av = Math.abs(v);
   if (av > B4 * a && a >= TINY_SCALE) {
     absAt[slot] = av;
     return v > 0 ? 1 : -1;
@@ -339,7 +385,7 @@ function halley(): void {
   if (!(x > a && x < b)) x = splitPoint(a, b);
   let dxOld = Number.POSITIVE_INFINITY;
   let dx = Number.POSITIVE_INFINITY;
-  for (let it = 0; it < ROOTS_MAX_ITERATIONS; it++) {
+  for (let it = 0; it < MAX_IT; it++) {
     // p, p′ and p″/2 at x in one Horner pass (newtonPlain's loop unrolled; the first line is the
     // x³ step, after which p″/2 = c4 and p′ = c4·x + (c4·x + c3)).
     let f = c4 * x + c3;
@@ -361,16 +407,16 @@ function halley(): void {
     // Halley's step where it is a small correction of Newton's, Newton's elsewhere (newton.ts).
     const fd2 = f * d2;
     const d11 = d1 * d1;
-    const hal = (fd2 < 0 ? -fd2 : fd2) <= 0.5 * d11;
+    const hal = Math.abs(fd2) <= 0.5 * d11;
     const step = hal && it < NEWTON_STEPS ? (f * d1) / (d11 - fd2) : f / d1;
-    const as = step < 0 ? -step : step;
-    const ax = x < 0 ? -x : x;
+    const as = Math.abs(step);
+    const ax = Math.abs(x);
     let xn = x - step;
-    if (hal && (f < 0 ? -f : f) <= EARLY * ax * (d1 < 0 ? -d1 : d1) && xn >= a && xn <= b) {
+    if (hal && Math.abs(f) <= EARLY * ax * Math.abs(d1) && xn >= a && xn <= b) {
       H[5] = xn;
       return;
     }
-    if (it >= NEWTON_STEPS || !(xn > a && xn < b) || as > 0.5 * (dxOld < 0 ? -dxOld : dxOld)) {
+    if (it >= NEWTON_STEPS || !(xn > a && xn < b) || as > 0.5 * Math.abs(dxOld)) {
       xn = splitPoint(a, b);
       if (xn === a) {
         H[5] = x;
@@ -381,7 +427,156 @@ function halley(): void {
     dx = xn - x;
     x = xn;
   }
-  throw new RootSolverError(`newton: no convergence in ${ROOTS_MAX_ITERATIONS} iterations on [${a}, ${b}]`);
+  throw new RootSolverError(`newton: no convergence in ${MAX_IT} iterations on [${a}, ${b}]`);
+}
+
+/**
+ * certify.ts's refineRoot for p (registers Q) in scalar arithmetic, for the common case: H[0..1] =
+ * bracket a < b with exact signs sa at a and −sa at b, H[2..3] = |p| there, H[4] = the start x0
+ * (inside). One compensated Horner evaluation at x0 (as compHorner: value, rigorous bound, p′(x0),
+ * p̃′(|x0|), p̃″(|x0|)/2) decides its exact sign; then the certified local model walks ulp by ulp
+ * to two adjacent doubles (as refineRoot). Returns true with the root in H[5]; false when the
+ * compensated sign is uncertain, underflow is near or the model cannot decide: H[0..4] then hold
+ * the (narrowed) bracket, its |p| and a start for refineRoot, which finishes with full
+ * evaluations (exact fallback included).
+ */
+function refine(sa: number): boolean {
+  let a = H[0] as number;
+  let b = H[1] as number;
+  let absA = H[2] as number;
+  let absB = H[3] as number;
+  const x = H[4] as number;
+  if (!(x > a && x < b)) return false;
+  // Compensated Horner (compHorner.ts, degree 4).
+  let t = SPLIT * x;
+  const xh = t - (t - x);
+  const xl = x - xh;
+  const ax = Math.abs(x);
+  const xm = Math.max(ax, 1);
+  let s = Q[4] as number;
+  let aa = Math.abs(s);
+  let r = 0;
+  let d = 0;
+  let a1 = 0;
+  let a2 = 0;
+  let e = 0;
+  let uf = false;
+  for (let i = 3; i >= 0; i--) {
+    d = d * x + s;
+    a2 = a2 * ax + a1;
+    a1 = a1 * ax + aa;
+    const p = s * x;
+    t = SPLIT * s;
+    const sh = t - (t - s);
+    const sl = s - sh;
+    const pe = sl * xl - (p - sh * xh - sl * xh - sh * xl);
+    const ci = Q[i] as number;
+    s = p + ci;
+    const z = s - p;
+    const se = p - (s - z) + (ci - z);
+    const q = pe + se;
+    r = r * x + q;
+    e += Math.abs(q);
+    if (!(p >= UNDERFLOW || p <= -UNDERFLOW)) uf = true;
+    aa = aa * ax + Math.abs(ci);
+  }
+  const v = s + r;
+  const av = Math.abs(v);
+  const xm2 = xm * xm;
+  const pw = xm2 * xm2;
+  let bound = 0;
+  if (e !== 0 || uf) {
+    bound = COMP * (U * av + 16 * U * U * aa);
+    if (!(aa >= pw * SLACK_FREE)) bound += TINY * 5 * pw;
+  }
+  if (!(av > bound || bound === 0)) return false; // uncertain: refineRoot decides exactly
+  const sx = v > 0 ? 1 : v < 0 ? -1 : 0;
+  if (sx === 0) {
+    H[5] = x;
+    return true;
+  }
+  if (sx === sa) {
+    a = x;
+    absA = av;
+  } else {
+    b = x;
+    absB = av;
+  }
+  if (nextUp(a) >= b) {
+    H[5] = absA <= absB ? a : b;
+    return true;
+  }
+  // The certified local model p(x + h) ∈ v + d·h ± (bound + |h|·e1 + a2·h² + u|·|), as refineRoot.
+  let y = x - v / d;
+  if (ax >= MIN_X) {
+    const span = ax * SPAN;
+    const e1 = B4 * a1 + U * Math.abs(d);
+    if (!(y > a && y < b) || y === x) y = sx === sa ? nextUp(x) : nextDown(x);
+    for (let k = 0; k < 8; k++) {
+      const hh = y - x;
+      const ah = Math.abs(hh);
+      if (!(ah <= span)) break;
+      const m = v + d * hh;
+      const am = Math.abs(m);
+      const err = SAFETY * (bound + ah * e1 + a2 * hh * hh + U * am);
+      if (!(am > err)) break;
+      if ((m > 0 ? 1 : -1) === sa) {
+        a = y;
+        absA = am;
+        if (nextUp(a) >= b) {
+          H[5] = absA <= absB ? a : b;
+          return true;
+        }
+        y = nextUp(y);
+      } else {
+        b = y;
+        absB = am;
+        if (nextUp(a) >= b) {
+          H[5] = absA <= absB ? a : b;
+          return true;
+        }
+        y = nextDown(y);
+      }
+    }
+  }
+  H[0] = a;
+  H[1] = b;
+  H[2] = absA;
+  H[3] = absB;
+  H[4] = y;
+  return false;
+}
+
+const f64 = new Float64Array(1);
+const u32 = new Uint32Array(f64.buffer);
+/** Index of the high 32 bits of a double in u32 (1 on little-endian platforms). */
+const HI = (() => {
+  f64[0] = 1;
+  return u32[1] === 0x3ff00000 ? 1 : 0;
+})();
+const LO = 1 - HI;
+
+/** The adjacent double above a finite x (exactPoly.ts's nextUp, local for speed). */
+function nextUp(x: number): number {
+  if (x === 0) return Number.MIN_VALUE;
+  f64[0] = x;
+  let lo = u32[LO] as number;
+  let hi = u32[HI] as number;
+  if (x > 0) {
+    lo = (lo + 1) >>> 0;
+    if (lo === 0) hi = (hi + 1) >>> 0;
+  } else {
+    if (lo === 0) hi = (hi - 1) >>> 0;
+    lo = (lo - 1) >>> 0;
+  }
+  u32[LO] = lo;
+  u32[HI] = hi;
+  return f64[0] as number;
+}
+
+/** The adjacent double below a finite x. */
+function nextDown(x: number): number {
+  return -nextUp(-x);
 }
 
 /** Append x to out keeping it strictly increasing (−0 as +0). */
