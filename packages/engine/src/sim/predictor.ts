@@ -64,7 +64,13 @@ export class Predictor extends SimState {
 
   private solvePair(s: number, o: number): number {
     const b = this.store;
-    if (this.opt.pathBounds) {
+    const ts = b.t0[s] as number;
+    const to = b.t0[o] as number;
+    const ends = b.tEnd[s] as number;
+    const endo = b.tEnd[o] as number;
+    // Path boxes are finite only for motions that end (friction) or rest: when s's box is
+    // unbounded the boxes cannot be disjoint, and the partner's box is not even loaded.
+    if (this.opt.pathBounds && (b.boxMaxX[s] as number) < INF) {
       if (
         (b.boxMinX[s] as number) > (b.boxMaxX[o] as number) ||
         (b.boxMinX[o] as number) > (b.boxMaxX[s] as number) ||
@@ -73,10 +79,8 @@ export class Predictor extends SimState {
       )
         return INF;
     }
-    const ts = b.t0[s] as number;
-    const to = b.t0[o] as number;
     const tb = Math.max(ts, to);
-    const hi = Math.min(b.tEnd[s] as number, b.tEnd[o] as number) - tb;
+    const hi = Math.min(ends, endo) - tb;
     const axs = b.ax[s] as number;
     const ays = b.ay[s] as number;
     const axo = b.ax[o] as number;
