@@ -1,16 +1,20 @@
 /**
  * Time: the `Time` scrubber over [0, horizon] with event ticks, a time field, −1 / 0 / +1 s and
  * stepping to the previous / next event. Scrubbing is not an edit (no undo step).
+ * While playing, this panel re-renders about 10 times a second (useShownTime); the slider's thumb
+ * follows every frame by itself (TimeSlider).
  */
 import { useEffect, useMemo, useState } from "react";
-import { useEditor, useInfoValue, useUi } from "../EditorContext";
+import { useEditor, useInfoValue } from "../EditorContext";
 import { formatNumber, parseNumber } from "./EditableCell";
+import { TimeSlider } from "./TimeSlider";
+import { useShownTime } from "./useShownTime";
 
 const TICKS = 300;
 
 export function TimePanel() {
   const editor = useEditor();
-  const t = useUi((s) => s.t);
+  const t = useShownTime();
   const horizon = useInfoValue((i) => i.horizon);
   const revision = useInfoValue((i) => i.revision);
   const [ticks, setTicks] = useState<number[]>([]);
@@ -46,15 +50,7 @@ export function TimePanel() {
     <section className="panel time-panel" aria-labelledby="time-title">
       <h2 id="time-title">Time</h2>
       <div className="scrubber">
-        <input
-          type="range"
-          aria-label="Time"
-          min={0}
-          max={horizon}
-          step="any"
-          value={Math.min(t, horizon)}
-          onChange={(e) => editor.setTime(Number(e.target.value))}
-        />
+        <TimeSlider />
         <svg className="ticks" viewBox="0 0 1000 10" preserveAspectRatio="none" aria-hidden="true">
           {tickLines}
         </svg>
@@ -66,7 +62,7 @@ export function TimePanel() {
             aria-label="Time (s)"
             size={9}
             value={draft ?? formatNumber(t)}
-            onFocus={() => setDraft(formatNumber(t))}
+            onFocus={() => setDraft(formatNumber(editor.ui.getState().t))}
             onChange={(e) => setDraft(e.target.value)}
             onBlur={commitDraft}
             onKeyDown={(e) => {
@@ -77,13 +73,21 @@ export function TimePanel() {
         </label>
       </div>
       <div className="row">
-        <button type="button" aria-label="Back 1 second" onClick={() => editor.setTime(t - 1)}>
+        <button
+          type="button"
+          aria-label="Back 1 second"
+          onClick={() => editor.setTime(editor.ui.getState().t - 1)}
+        >
           −1 s
         </button>
         <button type="button" aria-label="Go to start" onClick={() => editor.setTime(0)}>
           0
         </button>
-        <button type="button" aria-label="Forward 1 second" onClick={() => editor.setTime(t + 1)}>
+        <button
+          type="button"
+          aria-label="Forward 1 second"
+          onClick={() => editor.setTime(editor.ui.getState().t + 1)}
+        >
           +1 s
         </button>
         <button type="button" onClick={() => void editor.stepEvent(-1)}>

@@ -1,0 +1,51 @@
+// @vitest-environment jsdom
+import { newtonsCradle } from "@chapgame/engine";
+import { act, cleanup, render, screen, waitFor } from "@testing-library/react";
+import { afterEach, describe, expect, it } from "vitest";
+import { EditorContext } from "../EditorContext";
+import { settled, testEditor } from "../testing/harness";
+import { TimePanel } from "./TimePanel";
+
+afterEach(cleanup);
+
+async function renderPanel() {
+  const h = testEditor();
+  await h.editor.loadScene(newtonsCradle(), { undoable: false });
+  await settled(h.client);
+  render(
+    <EditorContext.Provider value={h.editor}>
+      <TimePanel />
+    </EditorContext.Provider>,
+  );
+  const slider = screen.getByRole("slider", { name: "Time" }) as HTMLInputElement;
+  const field = screen.getByRole("textbox", { name: "Time (s)" }) as HTMLInputElement;
+  return { ...h, slider, field };
+}
+
+describe("TimePanel", () => {
+  it("paused, the slider and the time field show every time exactly and at once", async () => {
+    const { editor, slider, field } = await renderPanel();
+    const h = editor.client.getSnapshot().horizon;
+    expect(h).toBeGreaterThan(2);
+    expect(slider.max).toBe(String(h));
+    for (const t of [1.25, 1.2500001, 0]) {
+      act(() => editor.setTime(t));
+      expect(slider.value).toBe(String(t));
+      expect(field.value).toBe(String(Number(t.toPrecision(6))));
+    }
+  });
+
+  it("playing, sub-pixel moves of the thumb are not written; pausing shows the exact time", async () => {
+    const { editor, slider, field } = await renderPanel();
+    // jsdom lays nothing out: the slider is taken as 1 px wide, so a move of less than the whole
+    // horizon is sub-pixel.
+    act(() => editor.ui.setState({ playing: true, t: 0.5 }));
+    expect(slider.value).toBe("0");
+    act(() => editor.ui.setState({ t: 0.75 }));
+    expect(slider.value).toBe("0");
+    await waitFor(() => expect(field.value).toBe("0.75")); // throttled, but it ends on the latest
+    act(() => editor.ui.setState({ playing: false }));
+    expect(slider.value).toBe("0.75");
+    expect(field.value).toBe("0.75");
+  });
+});
