@@ -86,8 +86,9 @@ const UNDERFLOW = 2 ** -968;
 const SLACK_FREE = 2 ** -900;
 const TINY = 2 ** -1070;
 
-/** Registers: c0…c4, lo, hi, h. */
-const Q = new Float64Array(8);
+/** Registers: c0…c4, lo, hi, h, then p′'s coefficients c1, 2c2, 3c3, 4c4, 0 (at P1). */
+const Q = new Float64Array(13);
+const P1 = 8;
 /** Halley's arguments and result: bracket a, b; plain values fa, fb of opposite signs; guess; root. */
 const H = new Float64Array(6);
 /** Bernstein coefficients b0…b4 on [lo, lo + h] and their margin. */
@@ -184,8 +185,42 @@ export function quarticRoots(coeffs: ArrayLike<number>, lo: number, hi: number, 
   const b3 = t0 + 3 * e1 + 3 * e2 + e3;
   const b4 = t0 + 4 * e1 + 6 * e2 + 4 * e3 + e4;
   // Depth 0 (most calls end here): every coefficient of one sign, no root.
-  if (b0 > margin && b1 > margin && b2 > margin && b3 > margin && b4 > margin) return true;
-  if (b0 < -margin && b1 < -margin && b2 < -margin && b3 < -margin && b4 < -margin) return true;
+  if (Math.min(b0, b1, b2, b3, b4) > margin || Math.max(b0, b1, b2, b3, b4) < -margin) return true;
+  Q[0] = c0;
+  Q[1] = c1;
+  Q[2] = c2;
+  Q[3] = c3;
+  Q[4] = c4;
+  Q[5] = lo;
+  Q[6] = hi;
+  Q[7] = h;
+  // Ends of one sign and p′'s Bernstein coefficients (differences of p's, as bernstein.ts: margin
+  // 3·margin) with exactly one certified sign change: p has exactly one critical point in
+  // [lo, lo + h], where it is smallest (or largest). The derivative splitting then needs one
+  // critical point and at most two roots, with no subdivision (the common near miss).
+  if (b0 < 0 === b4 < 0 && Math.abs(b0) > margin && Math.abs(b4) > margin) {
+    const d0 = e1;
+    const d1 = e1 + e2;
+    const d2 = e1 + 2 * e2 + e3;
+    const d3 = e1 + 3 * e2 + 3 * e3 + e4;
+    const dm = 3 * margin;
+    if (Math.min(Math.abs(d0), Math.abs(d1), Math.abs(d2), Math.abs(d3)) > dm) {
+      const k01 = d0 < 0 !== d1 < 0;
+      const k12 = d1 < 0 !== d2 < 0;
+      const k23 = d2 < 0 !== d3 < 0;
+      if ((k01 ? 1 : 0) + (k12 ? 1 : 0) + (k23 ? 1 : 0) === 1) {
+        // Start: where p′'s control polygon crosses zero.
+        const g = k01 ? d0 / (d0 - d1) : k12 ? 1 + d1 / (d1 - d2) : 2 + d2 / (d2 - d3);
+        H[4] = lo + (h * g) / 3;
+        BC[0] = b0;
+        load(Q, 4, coeffs, 0);
+        const r = unimodal(b0 < 0 ? -1 : 1, out);
+        if (r > 0) return true;
+        out.length = 0;
+        if (r < 0) return false;
+      }
+    }
+  }
   BC[0] = b0;
   BC[1] = b1;
   BC[2] = b2;
@@ -195,18 +230,109 @@ export function quarticRoots(coeffs: ArrayLike<number>, lo: number, hi: number, 
   const nOnes = isolate();
   if (nOnes === 0) return true;
   if (nOnes < 0) return false;
-  Q[0] = c0;
-  Q[1] = c1;
-  Q[2] = c2;
-  Q[3] = c3;
-  Q[4] = c4;
-  Q[5] = lo;
-  Q[6] = hi;
-  Q[7] = h;
   load(Q, 4, coeffs, 0);
   if (solveOnes(nOnes, out)) return true;
   out.length = 0;
   return false;
+}
+
+/**
+ * p has exactly one critical point in [lo, lo + h] and the certified sign s0 at lo (and at lo + h;
+ * BC[0] = p(lo)):
+ * the critical point x* by safeguarded Halley on p′ over [lo, hi] from H[4] (when p′ changes sign
+ * there), then the exact sign of p at x* (plain Horner with its bound) and at hi: p is monotone on
+ * [lo, x*] and [x*, hi], so each side whose ends differ in sign holds exactly one root, solved as a
+ * one-root piece. Returns 1 when done, 0 when p′(lo), p′(hi) do not change sign (the caller
+ * subdivides instead), −1 when p(x*) is at rounding-noise level or p(hi) = 0 (the general path,
+ * with its exact repair around noisy critical points, decides).
+ */
+function unimodal(s0: number, out: number[]): number {
+  const c1 = Q[1] as number;
+  const c2 = Q[2] as number;
+  const c3 = Q[3] as number;
+  const c4 = Q[4] as number;
+  const lo = Q[5] as number;
+  const hi = Q[6] as number;
+  const q1 = 2 * c2;
+  const q2 = 3 * c3;
+  const q3 = 4 * c4;
+  const fa = ((q3 * lo + q2) * lo + q1) * lo + c1;
+  const fb = ((q3 * hi + q2) * hi + q1) * hi + c1;
+  if (fa === 0 || fb === 0 || fa < 0 === fb < 0) return 0;
+  Q[P1] = c1;
+  Q[P1 + 1] = q1;
+  Q[P1 + 2] = q2;
+  Q[P1 + 3] = q3;
+  Q[P1 + 4] = 0;
+  H[0] = lo;
+  H[1] = hi;
+  H[2] = fa;
+  H[3] = fb;
+  halley(P1, 0);
+  const xs = H[5] as number;
+  const sx = signPlain(xs);
+  if (sx === 0) return -1;
+  const ax = absAt[0] as number;
+  const sh = signAt(hi, 1);
+  if (sh === 0) return -1;
+  const ah = absAt[1] as number;
+  // (p(lo + h) has the sign s0 too, so p(hi) must, unless p dips to the other sign at x*.)
+  if (sx === s0) return sh === s0 ? 1 : -1;
+  // One root in (lo, x*), and one in (x*, hi) unless it lies beyond hi.
+  if (!rootIn(lo, xs, s0, Math.abs(BC[0] as number), ax, 2, out)) return -1;
+  if (sh !== sx && !rootIn(xs, hi, sx, ax, ah, 1, out)) return -1;
+  return 1;
+}
+
+/** Exact sign of p at x when plain Horner with its bound decides it (|p(x)| into absAt[0]), else 0. */
+function signPlain(x: number): number {
+  const c0 = Q[0] as number;
+  const c1 = Q[1] as number;
+  const c2 = Q[2] as number;
+  const c3 = Q[3] as number;
+  const c4 = Q[4] as number;
+  const ax = Math.abs(x);
+  const v = (((c4 * x + c3) * x + c2) * x + c1) * x + c0;
+  const a =
+    (((Math.abs(c4) * ax + Math.abs(c3)) * ax + Math.abs(c2)) * ax + Math.abs(c1)) * ax + Math.abs(c0);
+  const av = Math.abs(v);
+  absAt[0] = av;
+  return av > B4 * a && a >= TINY_SCALE ? (v > 0 ? 1 : -1) : 0;
+}
+
+/**
+ * The root in (a, b) where p's exact signs are sa at a and −sa at b (|p| there fa, fb): Halley
+ * (critical: bit 1 = a, bit 2 = b is a critical point, for the start), then refine. False when the
+ * bracket's ends round together.
+ */
+function rootIn(
+  a: number,
+  b: number,
+  sa: number,
+  fa: number,
+  fb: number,
+  critical: number,
+  out: number[],
+): boolean {
+  if (!(a < b)) return false;
+  H[0] = a;
+  H[1] = b;
+  H[2] = sa * (fa > 0 ? fa : 1);
+  H[3] = -sa * (fb > 0 ? fb : 1);
+  H[4] = Number.NaN;
+  halley(0, critical);
+  H[0] = a;
+  H[1] = b;
+  H[2] = fa;
+  H[3] = fb;
+  H[4] = H[5] as number;
+  pushRoot(
+    out,
+    refine(sa)
+      ? (H[5] as number)
+      : refineRoot(H[0] as number, H[1] as number, sa, H[2] as number, H[3] as number, H[4] as number),
+  );
+  return true;
 }
 
 /**
@@ -227,15 +353,19 @@ function isolate(): number {
   let w = 1;
   for (;;) {
     const m = margin * (1 + MARGIN_PER_LEVEL * depth);
-    if (!(Math.abs(b0) > m && Math.abs(b4) > m)) return -1; // a piece end at noise level
-    const n0 = b0 < 0;
-    const n1 = b1 < 0;
-    const n2 = b2 < 0;
-    const n3 = b3 < 0;
-    const n4 = b4 < 0;
-    const sure = Math.abs(b1) > m && Math.abs(b2) > m && Math.abs(b3) > m;
-    const changes = (n0 !== n1 ? 1 : 0) + (n1 !== n2 ? 1 : 0) + (n2 !== n3 ? 1 : 0) + (n3 !== n4 ? 1 : 0);
-    if (!sure || changes > 1) {
+    // One sign beyond the margin: no root (the common leaf). Else, with certified ends of
+    // opposite signs and certain interior signs, count the sign changes (odd: 1 or 3).
+    let leaf = Math.min(b0, b1, b2, b3, b4) > m || Math.max(b0, b1, b2, b3, b4) < -m;
+    let changes = 0;
+    if (!leaf) {
+      if (!(Math.abs(b0) > m && Math.abs(b4) > m)) return -1; // a piece end at noise level
+      if (b0 < 0 !== b4 < 0 && Math.abs(b1) > m && Math.abs(b2) > m && Math.abs(b3) > m) {
+        changes = (b0 < 0 !== b1 < 0 ? 1 : 0) + (b1 < 0 !== b2 < 0 ? 1 : 0) + (b2 < 0 !== b3 < 0 ? 1 : 0);
+        changes += b3 < 0 !== b4 < 0 ? 1 : 0;
+        leaf = changes === 1;
+      }
+    }
+    if (!leaf) {
       if (depth >= MAX_DEPTH) return -1;
       // de Casteljau at the middle: push the right half, continue with the left.
       const l1 = 0.5 * (b0 + b1);
@@ -268,15 +398,15 @@ function isolate(): number {
     if (changes === 1) {
       // Exactly one simple root: the piece, and where its control polygon crosses zero.
       let g: number;
-      if (n0 !== n1) g = b0 / (b0 - b1);
-      else if (n1 !== n2) g = 1 + b1 / (b1 - b2);
-      else if (n2 !== n3) g = 2 + b2 / (b2 - b3);
+      if (b0 < 0 !== b1 < 0) g = b0 / (b0 - b1);
+      else if (b1 < 0 !== b2 < 0) g = 1 + b1 / (b1 - b2);
+      else if (b2 < 0 !== b3 < 0) g = 2 + b2 / (b2 - b3);
       else g = 3 + b3 / (b3 - b4);
       const o = 4 * nOnes++;
       ones[o] = s;
       ones[o + 1] = s + w;
       ones[o + 2] = s + 0.25 * w * g;
-      ones[o + 3] = n0 ? -1 : 1;
+      ones[o + 3] = b0 < 0 ? -1 : 1;
     }
     if (sp === 0) return nOnes;
     const e = 8 * --sp;
@@ -327,7 +457,7 @@ function solveOnes(nOnes: number, out: number[]): boolean {
     H[2] = sg * fa;
     H[3] = sb * fb;
     H[4] = lo + (ones[o + 2] as number) * h;
-    halley();
+    halley(0, 0);
     H[0] = a;
     H[1] = b;
     H[2] = fa;
@@ -369,19 +499,33 @@ function signAt(x: number, slot: number): number {
  * opposite signs, started from H[4] when inside (else regula falsi): the same steps, safeguards and
  * stopping rule; the result into H[5]. Throws RootSolverError after ROOTS_MAX_ITERATIONS steps.
  */
-function halley(): void {
-  const c0 = Q[0] as number;
-  const c1 = Q[1] as number;
-  const c2 = Q[2] as number;
-  const c3 = Q[3] as number;
-  const c4 = Q[4] as number;
+function halley(off: number, critical: number): void {
+  const c0 = Q[off] as number;
+  const c1 = Q[off + 1] as number;
+  const c2 = Q[off + 2] as number;
+  const c3 = Q[off + 3] as number;
+  const c4 = Q[off + 4] as number;
   let a = H[0] as number;
   let b = H[1] as number;
   const fa = H[2] as number;
   const fb = H[3] as number;
   const guess = H[4] as number;
   const aNeg = fa < 0;
-  let x = guess > a && guess < b ? guess : a - fa * ((b - a) / (fb - fa));
+  let x = guess;
+  if (!(x > a && x < b) && critical !== 0) {
+    // newton.ts's start at a critical end e (p′(e) = 0): p(e + δ) ≈ p(e) + p″(e)δ²/2.
+    const e = critical === 1 ? a : b;
+    let f = c4 * e + c3;
+    let d1 = c4 * e + f;
+    let d2 = c4;
+    f = f * e + c2;
+    d2 = d2 * e + d1;
+    d1 = d1 * e + f;
+    d2 = d2 * e + d1;
+    const q = -(critical === 1 ? fa : fb) / d2;
+    if (q > 0) x = critical === 1 ? a + Math.sqrt(q) : b - Math.sqrt(q);
+  }
+  if (!(x > a && x < b)) x = a - fa * ((b - a) / (fb - fa));
   if (!(x > a && x < b)) x = splitPoint(a, b);
   let dxOld = Number.POSITIVE_INFINITY;
   let dx = Number.POSITIVE_INFINITY;
@@ -556,8 +700,28 @@ const HI = (() => {
 })();
 const LO = 1 - HI;
 
-/** The adjacent double above a finite x (exactPoly.ts's nextUp, local for speed). */
-function nextUp(x: number): number {
+/**
+ * The adjacent double above a finite x. For 2^-960 ≤ |x| < 2^1023 it is x + |x|·(2^-53 + 2^-105)
+ * in round-to-nearest (the addend lies strictly between half an ulp and 1.5 ulps of x, also at
+ * binade ends; checked against the bit version in quartic.test.ts); else the bit version.
+ */
+export function nextUp(x: number): number {
+  const ax = Math.abs(x);
+  return ax >= NEXT_MIN && ax < NEXT_MAX ? x + ax * NEXT : nextUpBits(x);
+}
+
+/** The adjacent double below a finite x (as nextUp). */
+export function nextDown(x: number): number {
+  const ax = Math.abs(x);
+  return ax >= NEXT_MIN && ax < NEXT_MAX ? x - ax * NEXT : -nextUpBits(-x);
+}
+
+const NEXT = 2 ** -53 + 2 ** -105;
+const NEXT_MIN = 2 ** -960;
+const NEXT_MAX = 2 ** 1023;
+
+/** The adjacent double above a finite x from its bit pattern (exactPoly.ts's nextUp). */
+function nextUpBits(x: number): number {
   if (x === 0) return Number.MIN_VALUE;
   f64[0] = x;
   let lo = u32[LO] as number;
@@ -572,11 +736,6 @@ function nextUp(x: number): number {
   u32[LO] = lo;
   u32[HI] = hi;
   return f64[0] as number;
-}
-
-/** The adjacent double below a finite x. */
-function nextDown(x: number): number {
-  return -nextUp(-x);
 }
 
 /** Append x to out keeping it strictly increasing (−0 as +0). */
