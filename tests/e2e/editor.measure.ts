@@ -15,7 +15,7 @@ import { dilutedGas } from "@chapgame/engine";
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, it } from "vitest";
 import { ARTIFACTS, openEditor, type Session, screenshot } from "./harness.js";
-import { loadScene, type PageWindow } from "./pageEditor.js";
+import { assertProductionBuild, loadScene, type PageWindow } from "./pageEditor.js";
 
 let s: Session;
 let page: Page;
@@ -24,6 +24,7 @@ const results: Record<string, unknown> = {};
 beforeAll(async () => {
   s = await openEditor({ width: 1400, height: 900 });
   page = s.page;
+  assertProductionBuild();
 });
 
 afterAll(async () => {

@@ -14,7 +14,7 @@ import { dilutedGas } from "@chapgame/engine";
 import type { CDPSession, Page } from "playwright-core";
 import { afterAll, beforeAll, it } from "vitest";
 import { ARTIFACTS, openEditor, type Session } from "./harness.js";
-import { loadScene, type PageWindow } from "./pageEditor.js";
+import { assertProductionBuild, loadScene, type PageWindow } from "./pageEditor.js";
 
 interface ProfileNode {
   id: number;
@@ -36,6 +36,7 @@ const results: Record<string, unknown> = {};
 beforeAll(async () => {
   s = await openEditor({ width: 1400, height: 900 });
   page = s.page;
+  assertProductionBuild();
 });
 
 afterAll(async () => {

@@ -2,7 +2,23 @@
  * The part of the page's `window.chapgame` (the Editor) and `window.chapgameStats` that the
  * in-browser measurements and profiles use, and loading a scene through it.
  */
+import { readdirSync, readFileSync } from "node:fs";
+import { join } from "node:path";
 import type { Page } from "playwright-core";
+import { DIST } from "./harness.js";
+
+/**
+ * Throws when the built editor bundles React's development build (a build run with NODE_ENV other
+ * than production): its timings say nothing about the editor users get.
+ */
+export function assertProductionBuild(): void {
+  const dir = join(DIST, "assets");
+  for (const f of readdirSync(dir)) {
+    if (!/^index-.*\.js$/.test(f)) continue;
+    if (readFileSync(join(dir, f), "utf8").includes('unique "key" prop'))
+      throw new Error(`${f} bundles React's development build: rebuild with NODE_ENV=production`);
+  }
+}
 
 export interface PageEditor {
   ui: {
