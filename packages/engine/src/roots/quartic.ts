@@ -240,9 +240,9 @@ export function quarticRoots(coeffs: ArrayLike<number>, lo: number, hi: number, 
  * p has exactly one critical point in [lo, lo + h] and the certified sign s0 at lo (and at lo + h;
  * BC[0] = p(lo)):
  * the critical point x* by safeguarded Halley on p′ over [lo, hi] from H[4] (when p′ changes sign
- * there), then the exact sign of p at x* (plain Horner with its bound) and at hi: p is monotone on
- * [lo, x*] and [x*, hi], so each side whose ends differ in sign holds exactly one root, solved as a
- * one-root piece. Returns 1 when done, 0 when p′(lo), p′(hi) do not change sign (the caller
+ * there), then the exact sign of p at x* (plain Horner with its bound): p is monotone on [lo, x*]
+ * and [x*, lo + h], so p keeping the sign s0 at x* means no root; else one root in (lo, x*) and one
+ * in (x*, hi) when p(hi) has the sign s0 again, each solved as a one-root piece. Returns 1 when done, 0 when p′(lo), p′(hi) do not change sign (the caller
  * subdivides instead), −1 when p(x*) is at rounding-noise level or p(hi) = 0 (the general path,
  * with its exact repair around noisy critical points, decides).
  */
@@ -272,12 +272,13 @@ function unimodal(s0: number, out: number[]): number {
   const xs = H[5] as number;
   const sx = signPlain(xs);
   if (sx === 0) return -1;
+  // p keeps the sign s0 at its only extremum: no root (p(lo + h) has the sign s0 too, and p is
+  // monotone from x* to there, so p(hi) has it).
+  if (sx === s0) return 1;
   const ax = absAt[0] as number;
   const sh = signAt(hi, 1);
   if (sh === 0) return -1;
   const ah = absAt[1] as number;
-  // (p(lo + h) has the sign s0 too, so p(hi) must, unless p dips to the other sign at x*.)
-  if (sx === s0) return sh === s0 ? 1 : -1;
   // One root in (lo, x*), and one in (x*, hi) unless it lies beyond hi.
   if (!rootIn(lo, xs, s0, Math.abs(BC[0] as number), ax, 2, out)) return -1;
   if (sh !== sx && !rootIn(xs, hi, sx, ax, ah, 1, out)) return -1;
