@@ -186,6 +186,24 @@ export function quarticRoots(coeffs: ArrayLike<number>, lo: number, hi: number, 
   const b4 = t0 + 4 * e1 + 6 * e2 + 4 * e3 + e4;
   // Depth 0 (most calls end here): every coefficient of one sign, no root.
   if (Math.min(b0, b1, b2, b3, b4) > margin || Math.max(b0, b1, b2, b3, b4) < -margin) return true;
+  const sameEnds = b0 < 0 === b4 < 0 && Math.abs(b0) > margin && Math.abs(b4) > margin;
+  if (sameEnds) {
+    // One de Casteljau halving often proves one sign on both halves (margin grown as in isolate).
+    const l1 = 0.5 * (b0 + b1);
+    const m1 = 0.5 * (b1 + b2);
+    const m2 = 0.5 * (b2 + b3);
+    const r3 = 0.5 * (b3 + b4);
+    const l2 = 0.5 * (l1 + m1);
+    const m3 = 0.5 * (m1 + m2);
+    const r2 = 0.5 * (m2 + r3);
+    const l3 = 0.5 * (l2 + m3);
+    const r1 = 0.5 * (m3 + r2);
+    const mid = 0.5 * (l3 + r1);
+    const m = margin * (1 + MARGIN_PER_LEVEL);
+    if (b0 > 0 ? Math.min(l1, l2, l3, mid, r1, r2, r3) > m : Math.max(l1, l2, l3, mid, r1, r2, r3) < -m) {
+      return true;
+    }
+  }
   Q[0] = c0;
   Q[1] = c1;
   Q[2] = c2;
@@ -198,7 +216,7 @@ export function quarticRoots(coeffs: ArrayLike<number>, lo: number, hi: number, 
   // 3·margin) with exactly one certified sign change: p has exactly one critical point in
   // [lo, lo + h], where it is smallest (or largest). The derivative splitting then needs one
   // critical point and at most two roots, with no subdivision (the common near miss).
-  if (b0 < 0 === b4 < 0 && Math.abs(b0) > margin && Math.abs(b4) > margin) {
+  if (sameEnds) {
     const d0 = e1;
     const d1 = e1 + e2;
     const d2 = e1 + 2 * e2 + e3;
