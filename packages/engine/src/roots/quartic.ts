@@ -120,6 +120,13 @@ export function quarticRoots(coeffs: ArrayLike<number>, lo: number, hi: number, 
   ) {
     return false;
   }
+  // Exact early exit (no rounding): on t ≥ 0, coefficients all of the sign of c0 ≠ 0 keep p there.
+  if (
+    lo >= 0 &&
+    (c0 > 0 ? c1 >= 0 && c2 >= 0 && c3 >= 0 && c4 >= 0 : c0 < 0 && c1 <= 0 && c2 <= 0 && c3 <= 0 && c4 <= 0)
+  ) {
+    return true;
+  }
   const a0 = Math.abs(c0);
   const a1 = Math.abs(c1);
   const a2 = Math.abs(c2);
@@ -610,45 +617,91 @@ function refine(sa: number): boolean {
   let absB = H[3] as number;
   const x = H[4] as number;
   if (!(x > a && x < b)) return false;
-  // Compensated Horner (compHorner.ts, degree 4).
+  // Compensated Horner (compHorner.ts, degree 4, unrolled): s + r the value, e the sum of the
+  // |error terms|, pmin the smallest |product| (underflow check), d = p′, a1 = p̃′, a2 = p̃″/2.
+  const c0 = Q[0] as number;
+  const c1 = Q[1] as number;
+  const c2 = Q[2] as number;
+  const c3 = Q[3] as number;
+  const c4 = Q[4] as number;
   let t = SPLIT * x;
   const xh = t - (t - x);
   const xl = x - xh;
   const ax = Math.abs(x);
   const xm = Math.max(ax, 1);
-  let s = Q[4] as number;
-  let aa = Math.abs(s);
-  let r = 0;
-  let d = 0;
-  let a1 = 0;
+  let s = c4;
+  let aa = Math.abs(c4);
+  let pmin: number;
+  // x^3 step
+  let d = c4;
   let a2 = 0;
-  let e = 0;
-  let uf = false;
-  for (let i = 3; i >= 0; i--) {
-    d = d * x + s;
-    a2 = a2 * ax + a1;
-    a1 = a1 * ax + aa;
-    const p = s * x;
-    t = SPLIT * s;
-    const sh = t - (t - s);
-    const sl = s - sh;
-    const pe = sl * xl - (p - sh * xh - sl * xh - sh * xl);
-    const ci = Q[i] as number;
-    s = p + ci;
-    const z = s - p;
-    const se = p - (s - z) + (ci - z);
-    const q = pe + se;
-    r = r * x + q;
-    e += Math.abs(q);
-    if (!(p >= UNDERFLOW || p <= -UNDERFLOW)) uf = true;
-    aa = aa * ax + Math.abs(ci);
-  }
+  let a1 = aa;
+  let p = s * x;
+  t = SPLIT * s;
+  let sh = t - (t - s);
+  let sl = s - sh;
+  let pe = sl * xl - (p - sh * xh - sl * xh - sh * xl);
+  s = p + c3;
+  let z = s - p;
+  let q = pe + (p - (s - z) + (c3 - z));
+  let r = q;
+  let e = Math.abs(q);
+  pmin = Math.abs(p);
+  aa = aa * ax + Math.abs(c3);
+  // x^2 step
+  d = d * x + s;
+  a2 = a2 * ax + a1;
+  a1 = a1 * ax + aa;
+  p = s * x;
+  t = SPLIT * s;
+  sh = t - (t - s);
+  sl = s - sh;
+  pe = sl * xl - (p - sh * xh - sl * xh - sh * xl);
+  s = p + c2;
+  z = s - p;
+  q = pe + (p - (s - z) + (c2 - z));
+  r = r * x + q;
+  e += Math.abs(q);
+  pmin = Math.min(pmin, Math.abs(p));
+  aa = aa * ax + Math.abs(c2);
+  // x^1 step
+  d = d * x + s;
+  a2 = a2 * ax + a1;
+  a1 = a1 * ax + aa;
+  p = s * x;
+  t = SPLIT * s;
+  sh = t - (t - s);
+  sl = s - sh;
+  pe = sl * xl - (p - sh * xh - sl * xh - sh * xl);
+  s = p + c1;
+  z = s - p;
+  q = pe + (p - (s - z) + (c1 - z));
+  r = r * x + q;
+  e += Math.abs(q);
+  pmin = Math.min(pmin, Math.abs(p));
+  aa = aa * ax + Math.abs(c1);
+  // x^0 step
+  d = d * x + s;
+  a2 = a2 * ax + a1;
+  a1 = a1 * ax + aa;
+  p = s * x;
+  t = SPLIT * s;
+  sh = t - (t - s);
+  sl = s - sh;
+  pe = sl * xl - (p - sh * xh - sl * xh - sh * xl);
+  s = p + c0;
+  z = s - p;
+  q = pe + (p - (s - z) + (c0 - z));
+  r = r * x + q;
+  e += Math.abs(q);
+  pmin = Math.min(pmin, Math.abs(p));
+  aa = aa * ax + Math.abs(c0);
   const v = s + r;
   const av = Math.abs(v);
   const xm2 = xm * xm;
   const pw = xm2 * xm2;
   let bound = 0;
-  if (e !== 0 || uf) {
+  if (e !== 0 || !(pmin >= UNDERFLOW)) {
     bound = COMP * (U * av + 16 * U * U * aa);
     if (!(aa >= pw * SLACK_FREE)) bound += TINY * 5 * pw;
   }
@@ -674,6 +727,37 @@ function refine(sa: number): boolean {
   if (ax >= MIN_X) {
     const span = ax * SPAN;
     const e1 = B4 * a1 + U * Math.abs(d);
+    if (y > a && y < b) {
+      // Common case: the root lies within an ulp of y. The model at y and both neighbours at
+      // once; done when y and one neighbour have certified opposite signs.
+      const yu = nextUp(y);
+      const yd = nextDown(y);
+      const h0 = y - x;
+      const hu = yu - x;
+      const hd = yd - x;
+      const m0 = v + d * h0;
+      const mu = v + d * hu;
+      const md = v + d * hd;
+      const am0 = Math.abs(m0);
+      const amu = Math.abs(mu);
+      const amd = Math.abs(md);
+      const hm = Math.max(Math.abs(hu), Math.abs(hd));
+      // One error bound for the three points (the largest |h|, the largest |m|).
+      const err = SAFETY * (bound + hm * e1 + a2 * hm * hm + U * Math.max(am0, amu, amd));
+      if (hm <= span && am0 > err) {
+        const s0 = m0 > 0 ? 1 : -1;
+        if (s0 === sa) {
+          // p(y) has a's sign: the root is above y.
+          if (amu > err && (mu > 0 ? 1 : -1) !== sa && yu <= b) {
+            H[5] = am0 <= amu ? y : yu;
+            return true;
+          }
+        } else if (amd > err && (md > 0 ? 1 : -1) === sa && yd >= a) {
+          H[5] = amd <= am0 ? yd : y;
+          return true;
+        }
+      }
+    }
     if (!(y > a && y < b) || y === x) y = sx === sa ? nextUp(x) : nextDown(x);
     for (let k = 0; k < 8; k++) {
       const hh = y - x;
