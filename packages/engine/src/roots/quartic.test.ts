@@ -139,7 +139,11 @@ describe("quarticRoots (the quartic hot path)", () => {
     expect(quarticRoots([1, 2, 3, 4, 0], 0, 1, out)).toBe(false);
     expect(quarticRoots([1, 2, 3, 4, 5], 1, 1, out)).toBe(false);
     expect(quarticRoots([1, 2, 3, 4, 5], 0, Number.NaN, out)).toBe(false);
-    expect(quarticRoots([1e30, 2, 3, 4, 5], 0, 1, out)).toBe(false); // needs scaling
+    expect(quarticRoots([1e30, -2, 3, 4, 5], 0, 1, out)).toBe(false); // needs scaling
+    expect(out).toEqual([]);
+    // Every coefficient of c0's sign on t ≥ 0: settled exactly, whatever the magnitudes.
+    expect(quarticRoots([1e30, 2, 3, 4, 5], 0, 1, out)).toBe(true);
+    expect(quarticRoots([-1, 0, -3, -1e-300, -5], 2, 1e6, out)).toBe(true);
     expect(out).toEqual([]);
     expect(() => realRoots([1, 2, 3, 4, Number.NaN], 0, 1)).toThrow(/coeffs\[4\]/);
   });
