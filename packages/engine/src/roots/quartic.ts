@@ -1,31 +1,41 @@
 /**
- * The quartic hot path of realRoots (collision quartics): early exits by Bernstein subdivision that
- * either prove [lo, hi] holds no root or isolate every root in a piece holding exactly one simple
- * root, solved there directly; anything else is handed back to the derivative splitting.
+ * The quartic hot path of realRoots (collision quartics): cheap certified early exits that settle
+ * almost every call; anything unusual is handed back to the general method (realRoots.ts).
  *
- * `quarticRoots(coeffs, lo, hi, out)`: coeffs of length 5. Returns true when it settled the call:
- * the roots in [lo, hi] (ascending, distinct, each within 1 ulp of an exact root) were appended to
- * the empty `out` (none at all in most calls). Returns false, with `out` left empty, for everything
- * it does not handle: invalid input (realRoots reports it), c4 = 0, lo ≥ hi, coefficients or
- * interval needing scaling, a piece end where p is at rounding-noise level (a root at or near a
- * piece end, e.g. touching discs at lo), roots closer than h/2^MAX_DEPTH (clusters, double roots).
+ * `quarticRoots(coeffs, lo, hi)`: coeffs of length 5. Returns the number of roots in [lo, hi]
+ * (ascending and distinct in `found[0..count)`, each within 1 ulp of an exact root of the
+ * polynomial with the given double coefficients) when it settled the call, −1 when it hands it
+ * back: invalid input (realRoots reports it), c4 = 0, lo ≥ hi, coefficients or interval needing
+ * scaling, p at rounding-noise level at a piece end or at the critical point (a root at or near
+ * lo or hi, touching discs, grazing), roots closer than h/2^MAX_DEPTH (clusters, double roots).
  *
- * Method: Cauchy's clamp of [lo, hi] (as realRoots); the Bernstein coefficients of p on
- * [lo, lo + h], h = (hi − lo)(1 + 4u) ≥ hi − lo, from a Taylor shift, with a margin bounding their
- * rounding errors (as bernstein.ts); then de Casteljau halving, left to right, at most MAX_DEPTH
- * levels, the margin grown by MARGIN_PER_LEVEL per halving (a halving's four rounds of averaging
- * add at most 4u·max|b| ≤ 4u·scale). Descartes' rule for the Bernstein basis on each piece whose
- * coefficients all have certified signs: no sign change → no root; exactly one → exactly one root,
- * simple, inside. Otherwise halve, or give up. A one-root piece's real ends lo + s·h are replaced
- * by the nearest doubles, whose exact signs (plain Horner with its bound, certSign when noisy) must
- * match the certified signs at the real ends, so no root lies between a double and its real end;
- * the root is then found by safeguarded Halley from the control polygon's zero and refined on
- * certified signs (certify.ts refineRoot). Pieces are certified one by one and cover [lo, hi], so
- * every root is found exactly once.
+ * Steps, cheapest first:
+ * 1. Exact: lo ≥ 0 and every coefficient of the sign of c0 ≠ 0 → no root (no rounding at all).
+ * 2. Cauchy's clamp of [lo, hi] (as realRoots); the Bernstein coefficients b0…b4 of p on
+ *    [lo, lo + h], h = (hi − lo)(1 + 4u) ≥ hi − lo, from a Taylor shift, with a margin bounding
+ *    their rounding errors (as bernstein.ts). All of one sign → no root (convex hull property).
+ * 3. Ends of one sign: one de Casteljau halving; both halves of one sign → no root.
+ * 4. Ends of one sign and p′'s Bernstein coefficients (the differences) with exactly one certified
+ *    sign change: p has exactly one critical point in [lo, lo + h] — the derivative splitting of
+ *    the issue with a single split point: the critical point x* by safeguarded Halley on p′, the
+ *    exact sign of p at x* (plain Horner with its bound; at noise level → handed back, as the
+ *    general method repairs such points exactly), then p is monotone on [lo, x*] and [x*, lo + h]:
+ *    no root, or one root on each side whose ends differ in sign.
+ * 5. Otherwise, Bernstein subdivision: de Casteljau halving, left to right, at most MAX_DEPTH
+ *    levels, the margin grown by MARGIN_PER_LEVEL per halving (a halving's four rounds of averaging
+ *    add at most 4u·max|b| ≤ 4u·scale). Descartes' rule for the Bernstein basis on each piece whose
+ *    coefficients all have certified signs: no sign change → no root; exactly one → exactly one
+ *    simple root inside. A one-root piece's real ends lo + s·h are replaced by the nearest doubles,
+ *    whose exact signs must match the certified signs at the real ends (so no root lies between a
+ *    double and its real end). Pieces cover [lo, lo + h], so every root is found exactly once.
+ * Each root: safeguarded Halley in its bracket (newton.ts's iteration, stopped at 2^-11), then one
+ * compensated Horner evaluation and the certified local model of certify.ts's refineRoot decide
+ * the two doubles around it (refineRoot itself finishes the rare undecided cases, exact fallback
+ * included). Loops are bounded (ROOTS_MAX_ITERATIONS, MAX_DEPTH); RootSolverError as newton.ts.
  *
  * Speed notes (V8): doubles pass between the functions here through module-local typed arrays,
  * never as arguments or results (V8 boxes those for calls it does not inline); module-local typed
- * arrays are constants to the optimiser, imported ones are not.
+ * arrays and constants are constants to the optimiser, imported ones are not (hence local copies).
  */
 
 import {
@@ -100,7 +110,16 @@ const ones = new Float64Array(4 * 4);
 /** |p| at the last two signAt points. */
 const absAt = new Float64Array(2);
 
-export function quarticRoots(coeffs: ArrayLike<number>, lo: number, hi: number, out: number[]): boolean {
+export function quarticRoots(coeffs: ArrayLike<number>, lo: number, hi: number): number {
+  nFound = 0;
+  return settle(coeffs, lo, hi) ? nFound : -1;
+}
+
+/** The roots found by the last quarticRoots call (found[0..count)), ascending. */
+export const found = new Float64Array(8);
+let nFound = 0;
+
+function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
   const c0 = coeffs[0] as number;
   const c1 = coeffs[1] as number;
   const c2 = coeffs[2] as number;
@@ -239,9 +258,9 @@ export function quarticRoots(coeffs: ArrayLike<number>, lo: number, hi: number, 
         H[4] = lo + (h * g) / 3;
         BC[0] = b0;
         load(Q, 4, coeffs, 0);
-        const r = unimodal(b0 < 0 ? -1 : 1, out);
+        const r = unimodal(b0 < 0 ? -1 : 1);
         if (r > 0) return true;
-        out.length = 0;
+        nFound = 0;
         if (r < 0) return false;
       }
     }
@@ -256,8 +275,8 @@ export function quarticRoots(coeffs: ArrayLike<number>, lo: number, hi: number, 
   if (nOnes === 0) return true;
   if (nOnes < 0) return false;
   load(Q, 4, coeffs, 0);
-  if (solveOnes(nOnes, out)) return true;
-  out.length = 0;
+  if (solveOnes(nOnes)) return true;
+  nFound = 0;
   return false;
 }
 
@@ -271,7 +290,7 @@ export function quarticRoots(coeffs: ArrayLike<number>, lo: number, hi: number, 
  * subdivides instead), −1 when p(x*) is at rounding-noise level or p(hi) = 0 (the general path,
  * with its exact repair around noisy critical points, decides).
  */
-function unimodal(s0: number, out: number[]): number {
+function unimodal(s0: number): number {
   const c1 = Q[1] as number;
   const c2 = Q[2] as number;
   const c3 = Q[3] as number;
@@ -305,8 +324,8 @@ function unimodal(s0: number, out: number[]): number {
   if (sh === 0) return -1;
   const ah = absAt[1] as number;
   // One root in (lo, x*), and one in (x*, hi) unless it lies beyond hi.
-  if (!rootIn(lo, xs, s0, Math.abs(BC[0] as number), ax, 2, out)) return -1;
-  if (sh !== sx && !rootIn(xs, hi, sx, ax, ah, 1, out)) return -1;
+  if (!rootIn(lo, xs, s0, Math.abs(BC[0] as number), ax, 2)) return -1;
+  if (sh !== sx && !rootIn(xs, hi, sx, ax, ah, 1)) return -1;
   return 1;
 }
 
@@ -331,15 +350,7 @@ function signPlain(x: number): number {
  * (critical: bit 1 = a, bit 2 = b is a critical point, for the start), then refine. False when the
  * bracket's ends round together.
  */
-function rootIn(
-  a: number,
-  b: number,
-  sa: number,
-  fa: number,
-  fb: number,
-  critical: number,
-  out: number[],
-): boolean {
+function rootIn(a: number, b: number, sa: number, fa: number, fb: number, critical: number): boolean {
   if (!(a < b)) return false;
   H[0] = a;
   H[1] = b;
@@ -353,7 +364,6 @@ function rootIn(
   H[3] = fb;
   H[4] = H[5] as number;
   pushRoot(
-    out,
     refine(sa)
       ? (H[5] as number)
       : refineRoot(H[0] as number, H[1] as number, sa, H[2] as number, H[3] as number, H[4] as number),
@@ -451,7 +461,7 @@ function isolate(): number {
  * One certified root per one-root piece (see the module header): false on any doubt (a double end
  * whose exact sign differs from the real end's, an exact zero, ends that round together).
  */
-function solveOnes(nOnes: number, out: number[]): boolean {
+function solveOnes(nOnes: number): boolean {
   const lo = Q[5] as number;
   const hi = Q[6] as number;
   const h = Q[7] as number;
@@ -490,7 +500,6 @@ function solveOnes(nOnes: number, out: number[]): boolean {
     H[3] = fb;
     H[4] = H[5] as number;
     pushRoot(
-      out,
       refine(sg)
         ? (H[5] as number)
         : refineRoot(H[0] as number, H[1] as number, sg, H[2] as number, H[3] as number, H[4] as number),
@@ -841,7 +850,7 @@ function nextUpBits(x: number): number {
   return f64[0] as number;
 }
 
-/** Append x to out keeping it strictly increasing (−0 as +0). */
-function pushRoot(out: number[], x: number): void {
-  if (out.length === 0 || x > (out[out.length - 1] as number)) out.push(x + 0);
+/** Append x to `found` keeping it strictly increasing (−0 as +0). */
+function pushRoot(x: number): void {
+  if (nFound === 0 || x > (found[nFound - 1] as number)) found[nFound++] = x + 0;
 }

@@ -39,7 +39,7 @@ import { certSign, lastAbsValue, load, refineRoot } from "./certify.js";
 import { push, solveLevel0 } from "./level0.js";
 import { newtonPlain, pieceRoots, quadRootsPlain } from "./newton.js";
 import { exponentOf, mulPow2 } from "./pow2.js";
-import { quarticRoots } from "./quartic.js";
+import { found, quarticRoots } from "./quartic.js";
 
 /** Horner evaluation of c0 + c1 x + … (ascending coefficients); 0 for an empty array. */
 export function evalPoly(coeffs: ArrayLike<number>, x: number): number {
@@ -120,9 +120,19 @@ function criticalPoints(m: number, lo: number, hi: number): number {
 
 /** The distinct real roots of c0 + c1 t + … in [lo, hi], sorted ascending (see the module header). */
 export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): number[] {
-  const out: number[] = [];
-  if (coeffs.length === 5 && quarticRoots(coeffs, lo, hi, out)) return out;
-  return general(coeffs, lo, hi, out);
+  if (coeffs.length === 5) {
+    const k = quarticRoots(coeffs, lo, hi);
+    // Exact-size literals: cheaper than growing an empty array.
+    if (k === 0) return [];
+    if (k === 1) return [found[0] as number];
+    if (k === 2) return [found[0] as number, found[1] as number];
+    if (k > 0) {
+      const out: number[] = [];
+      for (let i = 0; i < k; i++) out.push(found[i] as number);
+      return out;
+    }
+  }
+  return general(coeffs, lo, hi, []);
 }
 
 /**
@@ -131,7 +141,13 @@ export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): nu
  */
 export function realRootsInto(coeffs: ArrayLike<number>, lo: number, hi: number, out: number[]): number {
   out.length = 0;
-  if (coeffs.length === 5 && quarticRoots(coeffs, lo, hi, out)) return out.length;
+  if (coeffs.length === 5) {
+    const k = quarticRoots(coeffs, lo, hi);
+    if (k >= 0) {
+      for (let i = 0; i < k; i++) out.push(found[i] as number);
+      return k;
+    }
+  }
   return general(coeffs, lo, hi, out).length;
 }
 
