@@ -42,6 +42,22 @@ export const COMP_HORNER_BOUND_FACTOR = 8;
  */
 export const ROOTS_MAX_ITERATIONS = 400;
 
+/**
+ * Bernstein subdivision in the quartic hot path (roots/quartic.ts): growth of the coefficients'
+ * rounding margin per de Casteljau halving, relative to the depth-0 margin 24u·scale. A halving's
+ * four rounds of averaging add at most 4u·max|b| ≤ 4u·scale; 0.25 gives 6u·scale (1.5× that).
+ */
+export const ROOTS_SUBDIVISION_MARGIN_GROWTH = 0.25;
+
+/**
+ * The quartic hot path's Halley iteration stops once Newton's step is below this fraction of |x|
+ * (newton.ts uses 2^-17, for about one ulp): with cubic convergence the error left is about its
+ * cube, 2^-33 relative at a simple root, and the certified refinement's first step (Newton's, from
+ * a compensated value) takes that to rounding level within its model's span (2^-30 relative);
+ * when it cannot, the general refinement finishes. Only the speed depends on it, not the result.
+ */
+export const ROOTS_HOT_HALLEY_STOP = 2 ** -11;
+
 // ---- simulation (owned by src/sim and src/physics) -----------------------------------------
 // (the simulation appends its named tolerances here)
 

@@ -41,7 +41,9 @@
 import {
   COMP_HORNER_BOUND_FACTOR,
   PLAIN_HORNER_BOUND_FACTOR,
+  ROOTS_HOT_HALLEY_STOP,
   ROOTS_MAX_ITERATIONS,
+  ROOTS_SUBDIVISION_MARGIN_GROWTH,
   UNIT_ROUNDOFF,
 } from "../tolerances.js";
 import { RootSolverError, splitPoint } from "./bracket.js";
@@ -68,18 +70,12 @@ const B4 = PLAIN_HORNER_BOUND_FACTOR * 4 * U;
 const TINY_SCALE = 2 ** -600;
 /** Halving depth limit: pieces of h/256. Deeper cases (near-double roots) take the general path. */
 const MAX_DEPTH = 8;
-/** Margin growth per halving, relative to the depth-0 margin 24u·scale: 6u·scale ≥ 1.5 × 4u·scale. */
-const MARGIN_PER_LEVEL = 0.25;
+/** Margin growth per halving (see tolerances.ts). */
+const MARGIN_PER_LEVEL = ROOTS_SUBDIVISION_MARGIN_GROWTH;
 /** 1/C(4,2), rounded (the margin covers it, as bernstein.ts's 1/C(n,k)). */
 const SIXTH = 1 / 6;
-/**
- * Halley stops once Newton's step is below EARLY of |x| and Halley's step is taken (newton.ts uses
- * 2^-17 for ~1 ulp): with cubic convergence the error left is about EARLY³ = 2^-33 relative at a
- * simple root, and refine's first step (Newton's, from the compensated value) takes it to rounding
- * level, within the span of its certified model (2^-30 relative); when it does not, refineRoot
- * finishes. NEWTON_STEPS as newton.ts.
- */
-const EARLY = 2 ** -11;
+/** Halley's stopping rule (see tolerances.ts); NEWTON_STEPS as newton.ts. */
+const EARLY = ROOTS_HOT_HALLEY_STOP;
 const NEWTON_STEPS = 20;
 /**
  * Local copies of imported constants: V8 folds a module's own constants into its optimised code,
