@@ -282,6 +282,11 @@ function engineSection(e, out, svgs) {
     ),
   );
   out.push("");
+  const weak = e.ablations.filter((a) => !a.error && a.speedup < 1.1).map((a) => a.flag);
+  if (weak.length > 0)
+    out.push(
+      `Switches without a measurable gain in this run: ${weak.join(", ")}. Why, as far as the code shows: with \`restingSkip\` off a resting pair still never reaches a polynomial, because its relative velocity and acceleration are zero and the receding test rejects it first; the switch saves only the loads. \`pathBounds\` rejects pairs whose friction paths cannot meet, but the grid already limits tests to neighbouring cells, where the paths' boxes mostly overlap; it pays only where paths are short beside the cell size. Both stay (they cost a load or two per pair, and \`optimizations\` is public API).\n`,
+    );
   const ref = e.reference;
   out.push("### Against the all-pairs reference simulator\n");
   out.push(
