@@ -253,7 +253,8 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
         const g = k01 ? d0 / (d0 - d1) : k12 ? 1 + d1 / (d1 - d2) : 2 + d2 / (d2 - d3);
         H[4] = lo + (h * g) / 3;
         BC[0] = b0;
-        load(Q, 4, coeffs, 0);
+        curCoeffs = coeffs;
+        loaded = false;
         const r = unimodal(b0 < 0 ? -1 : 1);
         if (r > 0) return true;
         nFound = 0;
@@ -270,7 +271,8 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
   const nOnes = isolate();
   if (nOnes === 0) return true;
   if (nOnes < 0) return false;
-  load(Q, 4, coeffs, 0);
+  curCoeffs = coeffs;
+  loaded = false;
   if (solveOnes(nOnes)) return true;
   nFound = 0;
   return false;
@@ -359,11 +361,7 @@ function rootIn(a: number, b: number, sa: number, fa: number, fb: number, critic
   H[2] = fa;
   H[3] = fb;
   H[4] = H[5] as number;
-  pushRoot(
-    refine(sa)
-      ? (H[5] as number)
-      : refineRoot(H[0] as number, H[1] as number, sa, H[2] as number, H[3] as number, H[4] as number),
-  );
+  pushRoot(refined(sa));
   return true;
 }
 
@@ -495,11 +493,7 @@ function solveOnes(nOnes: number): boolean {
     H[2] = fa;
     H[3] = fb;
     H[4] = H[5] as number;
-    pushRoot(
-      refine(sg)
-        ? (H[5] as number)
-        : refineRoot(H[0] as number, H[1] as number, sg, H[2] as number, H[3] as number, H[4] as number),
-    );
+    pushRoot(refined(sg));
   }
   return true;
 }
@@ -520,6 +514,7 @@ function signAt(x: number, slot: number): number {
     absAt[slot] = av;
     return v > 0 ? 1 : -1;
   }
+  ensureLoaded();
   const sg = certSign(x);
   absAt[slot] = lastAbsValue();
   return sg;
@@ -844,6 +839,27 @@ function nextUpBits(x: number): number {
   u32[LO] = lo;
   u32[HI] = hi;
   return f64[0] as number;
+}
+
+/**
+ * The caller's coefficients, loaded into certify.ts only when an exact sign or refineRoot is needed
+ * (most calls never need them).
+ */
+let curCoeffs: ArrayLike<number> = Q;
+let loaded = false;
+
+function ensureLoaded(): void {
+  if (!loaded) {
+    load(Q, 4, curCoeffs, 0);
+    loaded = true;
+  }
+}
+
+/** The root bracketed in H (see refine): refine, else refineRoot from where refine stopped. */
+function refined(sa: number): number {
+  if (refine(sa)) return H[5] as number;
+  ensureLoaded();
+  return refineRoot(H[0] as number, H[1] as number, sa, H[2] as number, H[3] as number, H[4] as number);
 }
 
 /** Append x to `found` keeping it strictly increasing (−0 as +0). */
