@@ -3,6 +3,7 @@
  * it asserts nothing about time). Writes test-artifacts/editor-perf.json and prints a summary.
  *  1. Playing 2,000 moving discs (a dilute gas): animation frames per second of the page, canvas
  *     redraws per second, drawing time per frame, frame round trip to the worker.
+ *     The same across the horizon: playing from 2.5 s before it while the worker computes ahead.
  *  2. Scrubbing a timeline with 10^6 recorded events: a new random time every animation frame.
  * Each sample runs MEASURE_RUNS times (default 3) and reports every run (with the load average
  * before and after it) and the medians of frames per second and of the 95th percentile frame gap.
@@ -34,6 +35,9 @@ afterAll(async () => {
   await s?.close();
 });
 
+/** play: from t = 0; extend: from 2.5 s before the horizon (auto-extend computes while playing). */
+type Mode = "play" | "extend" | "scrub";
+
 /** How many times each sample is taken (the report gives each run and the median). */
 const RUNS = Number(process.env.MEASURE_RUNS ?? 3);
 
@@ -43,7 +47,7 @@ const RUNS = Number(process.env.MEASURE_RUNS ?? 3);
  * tasks (> 50 ms) and long animation frames (with the scripts that took the most time in them) come
  * from Chromium's PerformanceObservers.
  */
-async function sampleOnce(ms: number, mode: "play" | "scrub") {
+async function sampleOnce(ms: number, mode: Mode) {
   const load = loadavg()[0];
   const r = await page.evaluate(
     async ({ ms, mode }) => {
@@ -78,6 +82,7 @@ async function sampleOnce(ms: number, mode: "play" | "scrub") {
         return seed / 4294967296;
       };
       if (mode === "play") ed.ui.setState({ t: 0, speed: 1, playing: true });
+      if (mode === "extend") ed.ui.setState({ t: Math.max(0, horizon - 2.5), speed: 1, playing: true });
       await new Promise<void>((resolve) => {
         const tick = () => {
           const now = performance.now();
@@ -115,8 +120,11 @@ async function sampleOnce(ms: number, mode: "play" | "scrub") {
         framesFromWorkerPerSecond: st.frames / secs,
         meanFrameRoundTripMs: st.frames ? st.frameLatencyMs / st.frames : null,
         maxFrameRoundTripMs: st.maxFrameLatencyMs,
+        /** Share of drawn bodies waiting for the worker's answer at an event (not at the exact time). */
+        heldBodiesShare: st.drawnBodies ? st.heldBodies / st.drawnBodies : null,
         reachedT: ed.ui.getState().t,
         horizon,
+        horizonAfter: ed.client.getSnapshot().horizon,
       };
     },
     { ms, mode },
@@ -125,7 +133,7 @@ async function sampleOnce(ms: number, mode: "play" | "scrub") {
 }
 
 /** RUNS samples; the summary gives the medians of fps and p95 frame gap. */
-async function sample(ms: number, mode: "play" | "scrub") {
+async function sample(ms: number, mode: Mode) {
   const runs = [];
   for (let i = 0; i < RUNS; i++) runs.push(await sampleOnce(ms, mode));
   const median = (xs: number[]) => xs.sort((a, b) => a - b)[Math.floor(xs.length / 2)]!;
@@ -152,6 +160,10 @@ it("plays 2,000 moving discs", async () => {
     ...(await sample(6000, "play")),
   };
   await screenshot(page, "perf-2000-discs");
+});
+
+it("plays 2,000 moving discs across the horizon (computing ahead while playing)", async () => {
+  results.extend2000 = await sample(6000, "extend");
 });
 
 it("scrubs a timeline with 10^6 recorded events", async () => {

@@ -45,6 +45,8 @@ export type PageWindow = {
     frames: number;
     frameLatencyMs: number;
     maxFrameLatencyMs: number;
+    heldBodies: number;
+    drawnBodies: number;
   };
   chapgameResetStats: () => void;
 };

@@ -1,6 +1,6 @@
 import { newtonsCradle } from "@chapgame/engine";
 import { describe, expect, it } from "vitest";
-import { F_VX, F_X, FRAME_STRIDE } from "./remote/protocol";
+import { F_FROM, F_UNTIL, F_VX, F_X, FRAME_STRIDE } from "./remote/protocol";
 import { settled, testEditor } from "./testing/harness";
 
 /** Newton's cradle: the striker (x = −6, v = 4) hits c1 (x = 0) at t = 1 exactly. */
@@ -23,6 +23,15 @@ describe("Editor over the worker protocol", () => {
     expect(h.client.getSnapshot().horizon).toBe(10);
     expect(await bodyAt(h, "striker", 0.5)).toEqual({ x: -4, vx: 4 });
     expect(await h.client.nextEvent(0)).toBe(1);
+  });
+
+  it("frames asked with a window carry each body's motion-law interval (up to its next event)", async () => {
+    const h = await cradle();
+    const f = await h.client.frame(0.5, 2);
+    const i = f.ids.indexOf("striker") * FRAME_STRIDE;
+    expect([f.data[i + F_FROM], f.data[i + F_UNTIL]]).toEqual([0, 1]);
+    const still = await h.client.frame(0.5);
+    expect([still.data[i + F_FROM], still.data[i + F_UNTIL]]).toEqual([0.5, 0.5]);
   });
 
   it("an edit is one undo step; undo and redo restore the scene", async () => {

@@ -11,6 +11,19 @@ export const MAX_FRAME_SECONDS = 0.1;
 /** Auto-extend starts when the horizon is less than this many seconds of playback away. */
 export const EXTEND_LEAD_SECONDS = 2;
 
+/**
+ * Wall-clock seconds of playback that one frame from the worker should cover: frames asked while
+ * playing carry motion-law intervals reaching |speed| × this many seconds around their time, so the
+ * canvas draws the exact time of each animation frame (canvas/frameAt.ts) even when the worker's
+ * answer takes several frames.
+ */
+export const LOOKAHEAD_SECONDS = 0.25;
+
+/** The motion-law window (simulation seconds) to ask frames with: 0 while paused. */
+export function motionWindow(s: { playing: boolean; speed: number }): number {
+  return s.playing ? Math.abs(s.speed) * LOOKAHEAD_SECONDS : 0;
+}
+
 /** Pure step of the clock. Returns the new time and whether playback must stop. */
 export function advanceClock(
   t: number,

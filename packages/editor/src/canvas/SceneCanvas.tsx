@@ -1,14 +1,18 @@
 /**
- * The scene view: a high-DPI canvas redrawn from the latest Frame on animation frames, outside React
- * (React renders this component once; time, view and selection are read from the store each frame).
+ * The scene view: a high-DPI canvas redrawn on animation frames, outside React (React renders this
+ * component once; time, view and selection are read from the store each frame). Each animation frame
+ * draws the current time: the latest Frame from the worker evaluated at that time (frameAt.ts), so
+ * playback is smooth even when the worker answers late.
  * Pointer gestures per tool: select/move/pan, velocity drag, cue strike, add disc/line/point.
  */
 import { useEffect, useRef } from "react";
 import { useEditor } from "../EditorContext";
 import type { Vec2 } from "../engineTypes";
+import { motionWindow } from "../playback";
 import { F_R, F_X, F_Y, FRAME_STRIDE, type Frame } from "../remote/protocol";
 import { ARROW_SECONDS, drawFrame, type Overlay } from "./draw";
 import { drawStats } from "./drawStats";
+import { emptyFrame, frameAt } from "./frameAt";
 import { bodyIndex, frameBounds, hitTest } from "./hitTest";
 import { TrailRecorder } from "./trails";
 import { fit, pan, type Size, toWorld, zoomAt } from "./viewTransform";
@@ -41,7 +45,10 @@ export function SceneCanvas() {
     const { ui, client } = editor;
     let size: Size = { width: 1, height: 1 };
     let dirty = true;
-    let drawnFrame: Frame | null = null;
+    let drawnBase: Frame | null = null;
+    let drawnT = Number.NaN;
+    const shown = emptyFrame();
+    const held = { count: 0 };
     let overlay: Overlay | null = null;
     let gesture: Gesture | null = null;
     let downAt: [number, number] = [0, 0];
@@ -78,19 +85,21 @@ export function SceneCanvas() {
       raf = requestAnimationFrame(tick);
       if ((window.devicePixelRatio || 1) !== dpr) resize(); // browser zoom or another screen
       const s = ui.getState();
-      client.wantFrame(s.t);
-      const f = client.latestFrame;
-      if (fitPending && f && client.hasFrame(s.t)) {
+      client.wantFrame(s.t, motionWindow(s));
+      const base = client.latestFrame;
+      if (fitPending && base && client.hasFrame(s.t)) {
         fitPending = false;
-        ui.setState({ view: fit(frameBounds(f), size) });
+        ui.setState({ view: fit(frameBounds(base), size) });
         return;
       }
-      if (f !== drawnFrame) {
-        drawnFrame = f;
-        dirty = true;
+      const moved = base !== drawnBase || s.t !== drawnT;
+      if (!moved && !dirty) return;
+      const f = base && (base.t === s.t ? base : frameAt(base, s.t, shown, held));
+      if (moved) {
+        drawnBase = base;
+        drawnT = s.t;
         if (s.trails && f) trails.record(f);
       }
-      if (!dirty) return;
       dirty = false;
       const started = performance.now();
       drawFrame(ctx, f, s.view, size, {
@@ -101,6 +110,9 @@ export function SceneCanvas() {
         pixelRatio: dpr,
       });
       drawStats.draws++;
+      drawStats.drawnBodies += f?.ids.length ?? 0;
+      drawStats.heldBodies += held.count;
+      held.count = 0;
       drawStats.drawMs += performance.now() - started;
     };
     raf = requestAnimationFrame(tick);

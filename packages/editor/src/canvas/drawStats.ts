@@ -13,6 +13,10 @@ export interface DrawStats {
   frameLatencyMs: number;
   /** the largest single frame latency seen */
   maxFrameLatencyMs: number;
+  /** bodies drawn waiting at the end of their motion-law interval (frameAt), summed over draws */
+  heldBodies: number;
+  /** bodies drawn, summed over draws */
+  drawnBodies: number;
 }
 
 export const drawStats: DrawStats = {
@@ -21,6 +25,8 @@ export const drawStats: DrawStats = {
   frames: 0,
   frameLatencyMs: 0,
   maxFrameLatencyMs: 0,
+  heldBodies: 0,
+  drawnBodies: 0,
 };
 
 export function resetDrawStats(): void {
@@ -29,4 +35,6 @@ export function resetDrawStats(): void {
   drawStats.frames = 0;
   drawStats.frameLatencyMs = 0;
   drawStats.maxFrameLatencyMs = 0;
+  drawStats.heldBodies = 0;
+  drawStats.drawnBodies = 0;
 }

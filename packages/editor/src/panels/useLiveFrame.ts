@@ -5,6 +5,7 @@
  */
 import { useEffect, useState } from "react";
 import { useEditor } from "../EditorContext";
+import { motionWindow } from "../playback";
 import type { Frame } from "../remote/protocol";
 
 /** Slowest refresh while playing (ms). */
@@ -28,7 +29,10 @@ export function useLiveFrame(intervalMs = 150): Frame | null {
       const wait = Math.max(0, lastShown + every - Date.now());
       timer = setTimeout(show, wait);
     });
-    const want = () => client.wantFrame(ui.getState().t);
+    const want = () => {
+      const s = ui.getState();
+      client.wantFrame(s.t, motionWindow(s));
+    };
     const offUi = ui.subscribe((s, p) => {
       if (s.t !== p.t) want();
     });

@@ -46,10 +46,13 @@ export class TimelineClient {
   private readonly frameListeners = new Set<(f: Frame) => void>();
   private frameInFlight = false;
   private wantedT: number | null = null;
+  private wantedWindow = 0;
   latestFrame: Frame | null = null;
   private frameIds: string[] = [];
   /** The time the latest frame was asked for (the host clamps it to [0, horizon]). */
   private latestAsked = Number.NaN;
+  /** The motion-law window the latest frame was asked with. */
+  private latestWindow = 0;
 
   constructor(private port: Port) {
     port.onmessage = (e) => this.receive(e.data as HostMessage);
@@ -123,9 +126,12 @@ export class TimelineClient {
   cancel(): Promise<void> {
     return this.request({ op: "cancel" });
   }
-  /** The frame at t. Only this client may ask for frames: the host leaves out ids it already sent. */
-  async frame(t: number): Promise<Frame> {
-    const f = await this.request<Frame & { ids: string[] | null }>({ op: "frame", t });
+  /**
+   * The frame at t, with motion-law intervals reaching up to `window` seconds around t (protocol.ts).
+   * Only this client may ask for frames: the host leaves out ids it already sent.
+   */
+  async frame(t: number, window = 0): Promise<Frame> {
+    const f = await this.request<Frame & { ids: string[] | null }>({ op: "frame", t, window });
     if (f.ids === null) f.ids = this.frameIds;
     this.frameIds = f.ids;
     return f;
@@ -146,20 +152,26 @@ export class TimelineClient {
     return this.request({ op: "series", n });
   }
 
-  /** True when the latest frame shows time t at the current revision. */
-  hasFrame(t: number): boolean {
+  /**
+   * True when the latest frame shows time t at the current revision (with motion-law intervals of at
+   * least `window` seconds).
+   */
+  hasFrame(t: number, window = 0): boolean {
     const f = this.latestFrame;
-    return f !== null && this.latestAsked === t && f.revision === this.info.revision;
+    return (
+      f !== null && this.latestAsked === t && this.latestWindow >= window && f.revision === this.info.revision
+    );
   }
 
   /** Asks for the frame at t unless it is already shown or on its way (latest wins). */
-  wantFrame(t: number): void {
+  wantFrame(t: number, window = 0): void {
     this.wantedT = t;
-    if (this.frameInFlight || this.hasFrame(t)) return;
+    this.wantedWindow = window;
+    if (this.frameInFlight || this.hasFrame(t, window)) return;
     this.frameInFlight = true;
     const asked = t;
     const started = performance.now();
-    this.frame(asked).then(
+    this.frame(asked, window).then(
       (f) => {
         const latency = performance.now() - started;
         drawStats.frames++;
@@ -168,8 +180,10 @@ export class TimelineClient {
         this.frameInFlight = false;
         this.latestFrame = f;
         this.latestAsked = asked;
+        this.latestWindow = window;
         for (const l of this.frameListeners) l(f);
-        if (this.wantedT !== null && !this.hasFrame(this.wantedT)) this.wantFrame(this.wantedT);
+        const t = this.wantedT;
+        if (t !== null && !this.hasFrame(t, this.wantedWindow)) this.wantFrame(t, this.wantedWindow);
       },
       () => {
         this.frameInFlight = false;

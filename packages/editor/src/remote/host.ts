@@ -12,6 +12,7 @@ import { packFrame } from "./packFrame";
 import type { ComputeStatus, HostMessage, Request, RequestMessage, TimelineInfo } from "./protocol";
 import { EXACT_MAX_BODIES, EXACT_MAX_EVENTS, exactSeries, SeriesRecorder } from "./series";
 import type { TimelineFactory, TimelineLike } from "./timelineLike";
+import { markValidity } from "./validity";
 
 /** Wall-clock milliseconds one round of slices may take before the host yields to messages. */
 const ROUND_MS = 12;
@@ -43,6 +44,9 @@ export class TimelineHost {
   private lastRecord = Number.NEGATIVE_INFINITY;
   /** Ids of the last frame sent (frames with the same ids are sent with `ids: null`). */
   private sentIds: string[] | null = null;
+  /** Body index by id for `indexIds` (rebuilt when the ids change). */
+  private index = new Map<string, number>();
+  private indexIds: string[] | null = null;
 
   constructor(
     private readonly factory: TimelineFactory,
@@ -85,11 +89,14 @@ export class TimelineHost {
         this.changed(false);
         return null;
       case "frame": {
-        const f = packFrame(
-          this.tl.stateAt(Math.min(Math.max(r.t, 0), this.tl.horizon)),
-          this.revision,
-          this.sentIds,
-        );
+        const h = this.tl.horizon;
+        const t = Math.min(Math.max(r.t, 0), h);
+        const f = packFrame(this.tl.stateAt(t), this.revision, this.sentIds);
+        const w = r.window ?? 0;
+        if (w > 0 && f.ids.length > 0) {
+          const events = this.tl.eventsBetween(Math.max(0, t - w), Math.min(h, t + w));
+          markValidity(f.data, this.indexOf(f.ids), events, t, w, h);
+        }
         const unchanged = f.ids === this.sentIds;
         this.sentIds = f.ids;
         return unchanged ? { ...f, ids: null } : f;
@@ -111,6 +118,14 @@ export class TimelineHost {
         return small ? exactSeries(tl, r.n) : this.series.points(r.n);
       }
     }
+  }
+
+  private indexOf(ids: string[]): Map<string, number> {
+    if (ids !== this.indexIds) {
+      this.index = new Map(ids.map((id, i) => [id, i]));
+      this.indexIds = ids;
+    }
+    return this.index;
   }
 
   private applyAll(actions: Action[]): void {

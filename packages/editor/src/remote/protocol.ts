@@ -4,10 +4,15 @@
  * The host also pushes `info` (after every change of the timeline) unasked.
  *
  * Bodies in a frame are packed, FRAME_STRIDE numbers per body, in the order of `ids` (sorted by id).
+ * Each body also carries the interval [F_FROM, F_UNTIL] around the frame's time over which its motion
+ * law (position, velocity and acceleration at the frame's time) holds: no event or action involves it
+ * strictly inside. The main thread evaluates positions at other times of that interval itself
+ * (canvas/frameAt.ts), so playback draws the exact time of every animation frame without waiting for
+ * a round trip to the worker.
  */
 import type { Action, Counts, LineState, LogEvent, PointState, SceneFile, Until, Vec2 } from "../engineTypes";
 
-export const FRAME_STRIDE = 9;
+export const FRAME_STRIDE = 11;
 export const F_X = 0;
 export const F_Y = 1;
 export const F_VX = 2;
@@ -17,6 +22,10 @@ export const F_AY = 5;
 export const F_R = 6;
 export const F_M = 7;
 export const F_MU = 8;
+/** Start of the interval over which the body's motion law holds (<= the frame's time). */
+export const F_FROM = 9;
+/** End of that interval (>= the frame's time). */
+export const F_UNTIL = 10;
 
 /** The state of the scene at one time, as the canvas and the tables read it. */
 export interface Frame {
@@ -74,7 +83,8 @@ export type Request =
   | { op: "apply"; actions: Action[] }
   | { op: "compute"; until: Until | null }
   | { op: "cancel" }
-  | { op: "frame"; t: number }
+  /** The frame at t; `window` > 0 asks for motion-law intervals reaching up to window seconds around t. */
+  | { op: "frame"; t: number; window: number }
   | { op: "nextEvent"; t: number }
   | { op: "prevEvent"; t: number }
   | { op: "events"; t: number; before: number; after: number; body: string | null }

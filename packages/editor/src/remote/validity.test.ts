@@ -1,0 +1,46 @@
+import { describe, expect, it } from "vitest";
+import type { LogEvent } from "../engineTypes";
+import { F_FROM, F_UNTIL, FRAME_STRIDE } from "./protocol";
+import { markValidity } from "./validity";
+
+const ev = (time: number, type: LogEvent["type"], ids: string[]): LogEvent => ({
+  time,
+  type,
+  ids,
+  point: null,
+  normal: null,
+  impulse: null,
+});
+
+function intervals(ids: string[], events: LogEvent[], t: number, window: number, horizon: number) {
+  const data = new Float64Array(ids.length * FRAME_STRIDE);
+  markValidity(data, new Map(ids.map((id, i) => [id, i])), events, t, window, horizon);
+  return ids.map((_, i) => [data[i * FRAME_STRIDE + F_FROM], data[i * FRAME_STRIDE + F_UNTIL]]);
+}
+
+describe("markValidity", () => {
+  it("a body's interval runs from its last event at or before t to its first event after t", () => {
+    const events = [ev(1, "bodyBody", ["a", "b"]), ev(2, "bodyLine", ["b", "wall"]), ev(3.5, "stop", ["a"])];
+    expect(intervals(["a", "b", "c"], events, 2, 10, 20)).toEqual([
+      [1, 3.5],
+      [2, 12], // its event at t itself starts its current law; nothing after it within the window
+      [0, 12], // no event: the window, cut at 0
+    ]);
+  });
+
+  it("an action ends every body's interval; the horizon caps them", () => {
+    const events = [ev(0.5, "action", ["a"]), ev(1.5, "action", [])];
+    expect(intervals(["a", "b"], events, 1, 5, 1.2)).toEqual([
+      [0.5, 1.2],
+      [0.5, 1.2],
+    ]);
+    expect(intervals(["a", "b"], events, 1, 5, 9)).toEqual([
+      [0.5, 1.5],
+      [0.5, 1.5],
+    ]);
+  });
+
+  it("a zero window leaves every interval empty, at t", () => {
+    expect(intervals(["a"], [ev(1, "bodyBody", ["a", "x"])], 1.25, 0, 9)).toEqual([[1.25, 1.25]]);
+  });
+});
