@@ -115,12 +115,36 @@ describe("quarticRoots (the quartic hot path)", () => {
     expect(realRoots(c, nextUp(1), 10)).toEqual([2, 3, 4]);
   });
 
-  it("touching discs (p(lo) = 0 exactly) are handed back to the general path", () => {
-    const c = [0, 2, -1, 0.25, 0.0625];
-    expect(hot(c, 0, 10)).toBeNull();
-    const r = realRoots(c, 0, 10);
-    expect(r[0]).toBe(0);
-    expect(verifyRoots(c, 0, 10, r, 64, 4).missed).toEqual([]);
+  it("touching discs (p(lo) = 0 exactly): lo, and the later roots of a re-collision, settled in the hot path", () => {
+    // Separating: only lo.
+    expect(hot([0, 2, 1, 0.25, 0.0625], 0, 10)).toEqual([0]);
+    // Separating, then pulled back by the acceleration (p = t(t − 2)(t − 3)·(t + 1)… exact): lo and two more.
+    const c = fromRoots([0, 2, 3, -1]);
+    expect(c[0]).toBe(0);
+    expect(hot(c, 0, 10)).toEqual([0, 2, 3]);
+    // A collision quartic built as the engine builds it, d on the contact circle, c0 exactly 0.
+    const d = [0.6, 0.8];
+    const u = [1.2, 0.5];
+    const w = [-0.9, -0.7];
+    const q = [
+      d[0] * d[0] + d[1] * d[1] - 1,
+      2 * (d[0] * u[0] + d[1] * u[1]),
+      u[0] * u[0] + u[1] * u[1] + d[0] * w[0] + d[1] * w[1],
+      u[0] * w[0] + u[1] * w[1],
+      (w[0] * w[0] + w[1] * w[1]) / 4,
+    ];
+    const r = hot(q, 0, 10);
+    expect(r).not.toBeNull();
+    expect(r).toEqual(realRoots([...q, 0], 0, 10)); // the general path
+  });
+
+  it("round-off overlap at lo (p(lo) tiny, its exact sign decided exactly) is settled as the general path", () => {
+    for (const c0 of [-1e-17, 1e-17, -5e-324, 5e-324]) {
+      const c = [c0, 2, -1, 0.25, 0.0625];
+      const r = hot(c, 0, 10);
+      expect(r).not.toBeNull();
+      expect(r).toEqual(realRoots([...c, 0], 0, 10));
+    }
   });
 
   it("roots closer than the subdivision depth resolves are handed back, and realRoots still finds both", () => {

@@ -99,6 +99,12 @@ const P1 = 8;
 const H = new Float64Array(6);
 /** Bernstein coefficients b0…b4 on [lo, lo + h] and their margin. */
 const BC = new Float64Array(6);
+/** After an exact zero at lo, a one-root piece [lo, b] is bracketed from lo + (b − lo)·ZERO_OFFSET. */
+const ZERO_OFFSET = 2 ** -10;
+/** p(lo) = 0 exactly (already reported); the signs below are those of p just after lo. */
+let zeroAtLo = false;
+/** Exact sign of p(lo) for isolate (the left end of its first pieces). */
+let loSign = 0;
 /** Pending pieces of the subdivision: 5 coefficients, left end s and width w (fractions of h), depth. */
 const stack = new Float64Array(8 * (MAX_DEPTH + 2));
 /** One-root pieces: left end s, right end s, control-polygon zero s, certified sign at the left end. */
@@ -208,7 +214,34 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
   const b4 = t0 + 4 * e1 + 6 * e2 + 4 * e3 + e4;
   // Depth 0 (most calls end here): every coefficient of one sign, no root.
   if (Math.min(b0, b1, b2, b3, b4) > margin || Math.max(b0, b1, b2, b3, b4) < -margin) return true;
-  const sameEnds = b0 < 0 === b4 < 0 && Math.abs(b0) > margin && Math.abs(b4) > margin;
+  // The exact sign of p(lo) = b0: certified by the margin, else (p(lo) at rounding-noise level:
+  // touching discs) decided exactly; p(lo) = 0 goes to the general path.
+  let sLo = b0 > margin ? 1 : b0 < -margin ? -1 : 0;
+  zeroAtLo = false;
+  if (sLo === 0) {
+    Q[0] = c0;
+    Q[1] = c1;
+    Q[2] = c2;
+    Q[3] = c3;
+    Q[4] = c4;
+    curCoeffs = coeffs;
+    loaded = false;
+    ensureLoaded();
+    sLo = certSign(lo);
+    if (sLo === 0) {
+      // p(lo) = 0 exactly (discs touching at lo): the Bernstein coefficients of p(t)/(t − lo) on
+      // the same interval are (4/j)·b_j, j ≥ 1, so b1…b4 of one sign leave lo as the only root.
+      pushRoot(lo);
+      if (Math.min(b1, b2, b3, b4) > margin || Math.max(b1, b2, b3, b4) < -margin) return true;
+      // Otherwise the sign just after lo is b1's, and the one-sign tests below hold for p(t)/(t − lo)
+      // as well; only the single-extremum case is settled here (lo and no other root).
+      if (!(Math.abs(b1) > margin)) return false;
+      sLo = b1 > 0 ? 1 : -1;
+      zeroAtLo = true;
+    }
+    if (sLo > 0 ? Math.min(b1, b2, b3, b4) > margin : Math.max(b1, b2, b3, b4) < -margin) return true;
+  }
+  const sameEnds = sLo > 0 ? b4 > margin : b4 < -margin;
   if (sameEnds) {
     // One de Casteljau halving often proves one sign on both halves (margin grown as in isolate).
     const l1 = 0.5 * (b0 + b1);
@@ -222,7 +255,7 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
     const r1 = 0.5 * (m3 + r2);
     const mid = 0.5 * (l3 + r1);
     const m = margin * (1 + MARGIN_PER_LEVEL);
-    if (b0 > 0 ? Math.min(l1, l2, l3, mid, r1, r2, r3) > m : Math.max(l1, l2, l3, mid, r1, r2, r3) < -m) {
+    if (sLo > 0 ? Math.min(l1, l2, l3, mid, r1, r2, r3) > m : Math.max(l1, l2, l3, mid, r1, r2, r3) < -m) {
       return true;
     }
   }
@@ -255,10 +288,10 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
         BC[0] = b0;
         curCoeffs = coeffs;
         loaded = false;
-        const r = unimodal(b0 < 0 ? -1 : 1);
+        const r = unimodal(sLo);
         if (r > 0) return true;
-        nFound = 0;
         if (r < 0) return false;
+        nFound = zeroAtLo ? 1 : 0; // (nothing was added)
       }
     }
   }
@@ -268,6 +301,7 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
   BC[3] = b3;
   BC[4] = b4;
   BC[5] = margin;
+  loSign = sLo;
   const nOnes = isolate();
   if (nOnes === 0) return true;
   if (nOnes < 0) return false;
@@ -279,14 +313,15 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
 }
 
 /**
- * p has exactly one critical point in [lo, lo + h] and the certified sign s0 at lo (and at lo + h;
- * BC[0] = p(lo)):
- * the critical point x* by safeguarded Halley on p′ over [lo, hi] from H[4] (when p′ changes sign
- * there), then the exact sign of p at x* (plain Horner with its bound): p is monotone on [lo, x*]
- * and [x*, lo + h], so p keeping the sign s0 at x* means no root; else one root in (lo, x*) and one
- * in (x*, hi) when p(hi) has the sign s0 again, each solved as a one-root piece. Returns 1 when done, 0 when p′(lo), p′(hi) do not change sign (the caller
- * subdivides instead), −1 when p(x*) is at rounding-noise level or p(hi) = 0 (the general path,
- * with its exact repair around noisy critical points, decides).
+ * p has exactly one critical point in [lo, lo + h] and the exact sign s0 at lo, or just after lo
+ * when p(lo) = 0 (and at lo + h; BC[0] = p(lo)): the critical point x* by safeguarded Halley on p′
+ * over [lo, hi] from H[4] (when p′ changes sign there), then the exact sign of p at x* (plain
+ * Horner with its bound): p is monotone on [lo, x*] and [x*, lo + h], so p keeping the sign s0 at
+ * x* means no root; else one root in (lo, x*) and one in (x*, hi) when p(hi) has the sign s0
+ * again, each solved as a one-root piece. Returns 1 when done; 0 when p′(lo), p′(hi) do not change
+ * sign or p dips after a zero at lo (the caller subdivides instead); −1 when p(x*) is at
+ * rounding-noise level or p(hi) = 0 (the general path, with its exact repair around noisy
+ * critical points, decides).
  */
 function unimodal(s0: number): number {
   const c1 = Q[1] as number;
@@ -317,6 +352,7 @@ function unimodal(s0: number): number {
   // p keeps the sign s0 at its only extremum: no root (p(lo + h) has the sign s0 too, and p is
   // monotone from x* to there, so p(hi) has it).
   if (sx === s0) return 1;
+  if (zeroAtLo) return 0; // p(lo) = 0 and a dip: subdivision brackets the roots after lo
   const ax = absAt[0] as number;
   const sh = signAt(hi, 1);
   if (sh === 0) return -1;
@@ -385,12 +421,15 @@ function isolate(): number {
     const m = margin * (1 + MARGIN_PER_LEVEL * depth);
     // One sign beyond the margin: no root (the common leaf). Else, with certified ends of
     // opposite signs and certain interior signs, count the sign changes (odd: 1 or 3).
-    let leaf = Math.min(b0, b1, b2, b3, b4) > m || Math.max(b0, b1, b2, b3, b4) < -m;
+    // The sign of the piece's left end: certified by the margin, or exact at lo (loSign).
+    const sl = s === 0 ? loSign : b0 > m ? 1 : b0 < -m ? -1 : 0;
+    let leaf = sl > 0 ? Math.min(b1, b2, b3, b4) > m : sl < 0 && Math.max(b1, b2, b3, b4) < -m;
     let changes = 0;
     if (!leaf) {
-      if (!(Math.abs(b0) > m && Math.abs(b4) > m)) return -1; // a piece end at noise level
-      if (b0 < 0 !== b4 < 0 && Math.abs(b1) > m && Math.abs(b2) > m && Math.abs(b3) > m) {
-        changes = (b0 < 0 !== b1 < 0 ? 1 : 0) + (b1 < 0 !== b2 < 0 ? 1 : 0) + (b2 < 0 !== b3 < 0 ? 1 : 0);
+      if (sl === 0 || !(Math.abs(b4) > m)) return -1; // a piece end at noise level
+      const n0 = sl < 0;
+      if (n0 !== b4 < 0 && Math.abs(b1) > m && Math.abs(b2) > m && Math.abs(b3) > m) {
+        changes = (n0 !== b1 < 0 ? 1 : 0) + (b1 < 0 !== b2 < 0 ? 1 : 0) + (b2 < 0 !== b3 < 0 ? 1 : 0);
         changes += b3 < 0 !== b4 < 0 ? 1 : 0;
         leaf = changes === 1;
       }
@@ -428,7 +467,7 @@ function isolate(): number {
     if (changes === 1) {
       // Exactly one simple root: the piece, and where its control polygon crosses zero.
       let g: number;
-      if (b0 < 0 !== b1 < 0) g = b0 / (b0 - b1);
+      if (sl < 0 !== b1 < 0) g = b0 / (b0 - b1);
       else if (b1 < 0 !== b2 < 0) g = 1 + b1 / (b1 - b2);
       else if (b2 < 0 !== b3 < 0) g = 2 + b2 / (b2 - b3);
       else g = 3 + b3 / (b3 - b4);
@@ -436,7 +475,7 @@ function isolate(): number {
       ones[o] = s;
       ones[o + 1] = s + w;
       ones[o + 2] = s + 0.25 * w * g;
-      ones[o + 3] = b0 < 0 ? -1 : 1;
+      ones[o + 3] = sl;
     }
     if (sp === 0) return nOnes;
     const e = 8 * --sp;
@@ -468,6 +507,9 @@ function solveOnes(nOnes: number): boolean {
     let a = sl === 0 ? lo : lo + sl * h;
     if (a > hi) a = hi;
     const b = last ? hi : lo + sr * h;
+    // p(lo) = 0 exactly: the piece's root is inside; start the bracket a little after lo, where p
+    // must already have the sign just after lo (else the root is right there: general path).
+    if (sl === 0 && zeroAtLo) a = lo + (b - lo) * ZERO_OFFSET;
     if (!(a < b) || b > hi) {
       // A last piece starting at hi (rounded): its root lies beyond hi iff p(hi) keeps its sign.
       if (last && a === hi && signAt(hi, 0) === sg) continue;
