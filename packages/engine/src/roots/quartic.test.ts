@@ -123,15 +123,13 @@ describe("quarticRoots (the quartic hot path)", () => {
     expect(c[0]).toBe(0);
     expect(hot(c, 0, 10)).toEqual([0, 2, 3]);
     // A collision quartic built as the engine builds it, d on the contact circle, c0 exactly 0.
-    const d = [0.6, 0.8];
-    const u = [1.2, 0.5];
-    const w = [-0.9, -0.7];
+    const [dx, dy, ux, uy, wx, wy] = [0.6, 0.8, 1.2, 0.5, -0.9, -0.7] as const;
     const q = [
-      d[0] * d[0] + d[1] * d[1] - 1,
-      2 * (d[0] * u[0] + d[1] * u[1]),
-      u[0] * u[0] + u[1] * u[1] + d[0] * w[0] + d[1] * w[1],
-      u[0] * w[0] + u[1] * w[1],
-      (w[0] * w[0] + w[1] * w[1]) / 4,
+      dx * dx + dy * dy - 1,
+      2 * (dx * ux + dy * uy),
+      ux * ux + uy * uy + dx * wx + dy * wy,
+      ux * wx + uy * wy,
+      (wx * wx + wy * wy) / 4,
     ];
     const r = hot(q, 0, 10);
     expect(r).not.toBeNull();
