@@ -255,8 +255,23 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
     const r1 = 0.5 * (m3 + r2);
     const mid = 0.5 * (l3 + r1);
     const m = margin * (1 + MARGIN_PER_LEVEL);
-    if (sLo > 0 ? Math.min(l1, l2, l3, mid, r1, r2, r3) > m : Math.max(l1, l2, l3, mid, r1, r2, r3) < -m) {
-      return true;
+    const okL = sLo > 0 ? Math.min(l1, l2, l3, mid) > m : Math.max(l1, l2, l3, mid) < -m;
+    const okR = sLo > 0 ? Math.min(mid, r1, r2, r3) > m : Math.max(mid, r1, r2, r3) < -m;
+    if (okL && okR) return true;
+    // A second halving of the undecided half (or halves) settles many more near misses (the
+    // halves' common end mid must have the sign too).
+    if (sLo > 0 ? mid > m : mid < -m) {
+      QS[0] = b0;
+      QS[1] = l1;
+      QS[2] = l2;
+      QS[3] = l3;
+      QS[4] = mid;
+      QS[5] = r1;
+      QS[6] = r2;
+      QS[7] = r3;
+      QS[8] = b4;
+      QS[9] = margin * (1 + 2 * MARGIN_PER_LEVEL);
+      if ((okL || quarters(0, sLo)) && (okR || quarters(4, sLo))) return true;
     }
   }
   Q[0] = c0;
@@ -902,6 +917,33 @@ function refined(sa: number): number {
   if (refine(sa)) return H[5] as number;
   ensureLoaded();
   return refineRoot(H[0] as number, H[1] as number, sa, H[2] as number, H[3] as number, H[4] as number);
+}
+
+/** Scratch of the second halving: the halves' coefficients (QS[0..4], QS[4..8]) and the margin. */
+const QS = new Float64Array(10);
+
+/**
+ * One de Casteljau halving of the half QS[off..off+4] (ends of the sign sg, certified): true when
+ * both quarters have all coefficients of that sign beyond the margin QS[9].
+ */
+function quarters(off: number, sg: number): boolean {
+  const b0 = QS[off] as number;
+  const b1 = QS[off + 1] as number;
+  const b2 = QS[off + 2] as number;
+  const b3 = QS[off + 3] as number;
+  const b4 = QS[off + 4] as number;
+  const m = QS[9] as number;
+  const l1 = 0.5 * (b0 + b1);
+  const m1 = 0.5 * (b1 + b2);
+  const m2 = 0.5 * (b2 + b3);
+  const r3 = 0.5 * (b3 + b4);
+  const l2 = 0.5 * (l1 + m1);
+  const m3 = 0.5 * (m1 + m2);
+  const r2 = 0.5 * (m2 + r3);
+  const l3 = 0.5 * (l2 + m3);
+  const r1 = 0.5 * (m3 + r2);
+  const mid = 0.5 * (l3 + r1);
+  return sg > 0 ? Math.min(l1, l2, l3, mid, r1, r2, r3) > m : Math.max(l1, l2, l3, mid, r1, r2, r3) < -m;
 }
 
 /** Append x to `found` keeping it strictly increasing (−0 as +0). */
