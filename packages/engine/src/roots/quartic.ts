@@ -775,10 +775,6 @@ function refine(sa: number): boolean {
     b = x;
     absB = av;
   }
-  if (nextUp(a) >= b) {
-    H[5] = absA <= absB ? a : b;
-    return true;
-  }
   // The certified local model p(x + h) ∈ v + d·h ± (bound + |h|·e1 + a2·h² + u|·|), as refineRoot.
   let y = x - v / d;
   if (ax >= MIN_X) {
@@ -814,6 +810,11 @@ function refine(sa: number): boolean {
           return true;
         }
       }
+    }
+    // (With a and b adjacent no y lies strictly between them: the common case above cannot apply.)
+    if (nextUp(a) >= b) {
+      H[5] = absA <= absB ? a : b;
+      return true;
     }
     if (!(y > a && y < b) || y === x) y = sx === sa ? nextUp(x) : nextDown(x);
     for (let k = 0; k < 8; k++) {
