@@ -4,9 +4,9 @@
  *
  * Method (see README.md): trim zero leading coefficients, scale by powers of two (exact), clamp
  * infinite or huge ends to Cauchy's root bound, drop leading terms negligible over the interval
- * (ROOTS_DEGREE_DROP, relative). Quartics first go through the hot path of quartic.ts (Bernstein
- * subdivision: no root, or every root alone in a piece and solved there), which settles almost all
- * collision quartics; what it hands back takes the method below. Quick sign checks on p's Bernstein coefficients over [lo, hi]:
+ * (ROOTS_DEGREE_DROP, relative). Quartics first go through the hot path of quartic.ts (exact and
+ * Bernstein sign tests, a single critical point, or subdivision into one-root pieces), which
+ * settles almost all collision quartics; what it hands back takes the method below. Quick sign checks on p's Bernstein coefficients over [lo, hi]:
  * one sign → no root; one sign change between ends of opposite signs → exactly one root, solved
  * directly; their differences (p′'s) tell when p is monotone or has one critical point. Otherwise
  * the roots of p′ split [lo, hi] into monotone pieces (found the same way, recursively, down to a
