@@ -1,14 +1,16 @@
 /**
  * The Bodies table: id, x, y, vx, vy, |v|, r, m, μ of every body at the current time (live while
  * playing, refreshed a few times a second). Every cell is editable; an edit is an action at the
- * current time; refused values show the engine's message in place. Rows select bodies.
+ * current time; refused values show the engine's message in place. Rows select bodies. Only the
+ * rows in view are rendered (useRowWindow).
  */
-import type { ReactNode } from "react";
+import { type ReactNode, useRef } from "react";
 import { useEditor, useUi } from "../EditorContext";
 import { F_M, F_MU, F_R, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE } from "../remote/protocol";
 import { DeleteRowButton } from "./DeleteRowButton";
 import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
 import { useLiveFrame } from "./useLiveFrame";
+import { spacerRow, useRowWindow } from "./useRowWindow";
 
 /** Rows shown at most (the selected body is always shown); the canvas shows them all. */
 export const MAX_ROWS = 60;
@@ -28,6 +30,7 @@ const COLUMNS: { field: Field; title: string; offset: number | null }[] = [
 export function BodiesTable() {
   const editor = useEditor();
   const frame = useLiveFrame(250);
+  const scrollRef = useRef<HTMLDivElement>(null);
   const selection = useUi((s) => s.selection);
   const selectedId = selection?.kind === "body" ? selection.id : null;
 
@@ -49,14 +52,18 @@ export function BodiesTable() {
     }
   };
 
-  const rows: ReactNode[] = [];
+  // The bodies listed (the first MAX_ROWS and the selected one), then the window of them rendered.
+  const listed: number[] = [];
   const n = frame?.ids.length ?? 0;
-  for (let i = 0; frame && i < n; i++) {
-    const id = frame.ids[i]!;
-    if (rows.length >= MAX_ROWS && id !== selectedId) continue;
+  for (let i = 0; frame && i < n; i++)
+    if (listed.length < MAX_ROWS || frame.ids[i] === selectedId) listed.push(i);
+  const win = useRowWindow(scrollRef, listed.length);
+  const rows: ReactNode[] = [spacerRow("before", win.before, COLUMNS.length + 2)];
+  for (const i of frame ? listed.slice(win.start, win.end) : []) {
+    const id = frame!.ids[i]!;
     const o = i * FRAME_STRIDE;
-    const vx = frame.data[o + F_VX]!;
-    const vy = frame.data[o + F_VY]!;
+    const vx = frame!.data[o + F_VX]!;
+    const vy = frame!.data[o + F_VY]!;
     rows.push(
       <tr
         key={id}
@@ -76,7 +83,7 @@ export function BodiesTable() {
           <td key={c.field}>
             <EditableCell
               label={`${id} ${c.field}`}
-              value={formatNumber(c.offset === null ? Math.hypot(vx, vy) : frame.data[o + c.offset]!)}
+              value={formatNumber(c.offset === null ? Math.hypot(vx, vy) : frame!.data[o + c.offset]!)}
               onCommit={commit(id, c.field, vx, vy)}
             />
           </td>
@@ -87,6 +94,7 @@ export function BodiesTable() {
       </tr>,
     );
   }
+  rows.push(spacerRow("after", win.after, COLUMNS.length + 2));
 
   const addBody = () => {
     const v = editor.ui.getState().view;
@@ -101,7 +109,7 @@ export function BodiesTable() {
           Add body
         </button>
       </h2>
-      <div className="table-scroll">
+      <div className="table-scroll" ref={scrollRef}>
         <table aria-label="Bodies">
           <thead>
             <tr>
@@ -115,9 +123,9 @@ export function BodiesTable() {
           <tbody>{rows}</tbody>
         </table>
       </div>
-      {n > rows.length && (
+      {n > listed.length && (
         <p className="note">
-          Showing {rows.length} of {n} bodies.
+          Showing {listed.length} of {n} bodies.
         </p>
       )}
     </section>

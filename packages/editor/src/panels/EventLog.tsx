@@ -1,11 +1,13 @@
 /**
  * The Event log: the events around the current time (time, kind, participants). Clicking an entry
  * jumps there, selects and highlights its participants; a body filter keeps only that body's events.
+ * Only the rows in view are rendered (useRowWindow).
  */
-import { useEffect, useState } from "react";
+import { useEffect, useRef, useState } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { EventPage } from "../remote/protocol";
 import { formatNumber } from "./EditableCell";
+import { spacerRow, useRowWindow } from "./useRowWindow";
 import { useSlowTime } from "./useSlowTime";
 
 const BEFORE = 30;
@@ -24,6 +26,9 @@ export function EventLog() {
   const filter = useUi((s) => s.eventFilter);
   const revision = useInfoValue((i) => i.revision);
   const [page, setPage] = useState<EventPage | null>(null);
+  const scrollRef = useRef<HTMLDivElement>(null);
+  const events = page?.events ?? [];
+  const win = useRowWindow(scrollRef, events.length);
 
   useEffect(() => {
     if (revision < 0) return;
@@ -54,7 +59,7 @@ export function EventLog() {
           onChange={(e) => editor.ui.setState({ eventFilter: e.target.value })}
         />
       </div>
-      <div className="table-scroll log">
+      <div className="table-scroll log" ref={scrollRef}>
         <table aria-label="Event log">
           <thead>
             <tr>
@@ -64,12 +69,16 @@ export function EventLog() {
             </tr>
           </thead>
           <tbody>
-            {page?.events.map((e, k) => {
-              const key = `${e.time}:${e.type}:${e.ids.join(",")}:${k}`;
+            {spacerRow("before", win.before, 3)}
+            {events.slice(win.start, win.end).map((e, j) => {
+              const k = win.start + j;
               const cls = e.time === t ? "current" : e.time < t ? "past" : undefined;
               return (
                 <tr
-                  key={key}
+                  // Rows are kept by position: while playing the page slides by dozens of events per
+                  // refresh, and updating the text of existing rows costs far less layout and paint
+                  // than replacing them (rows hold no state).
+                  key={k}
                   className={cls}
                   tabIndex={0}
                   onClick={() =>
@@ -90,6 +99,7 @@ export function EventLog() {
                 </tr>
               );
             })}
+            {spacerRow("after", win.after, 3)}
           </tbody>
         </table>
       </div>
