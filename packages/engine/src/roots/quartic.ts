@@ -36,6 +36,9 @@
  * Speed notes (V8): doubles pass between the functions here through module-local typed arrays,
  * never as arguments or results (V8 boxes those for calls it does not inline); module-local typed
  * arrays and constants are constants to the optimiser, imported ones are not (hence local copies).
+ * That is also why this is one long module rather than several: split into per-root kernels and
+ * subdivision (registers shared as imported typed arrays) it measured +9% instructions and +6%
+ * cycles per call on the benchmark's quartics.
  */
 
 import {
