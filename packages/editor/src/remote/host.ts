@@ -14,8 +14,17 @@ import { EXACT_MAX_BODIES, EXACT_MAX_EVENTS, exactSeries, SeriesRecorder } from 
 import type { TimelineFactory, TimelineLike } from "./timelineLike";
 import { markValidity } from "./validity";
 
-/** Wall-clock milliseconds one round of slices may take before the host yields to messages. */
-const ROUND_MS = 12;
+/**
+ * Wall-clock milliseconds one round of slices may take before the host yields to messages (a frame
+ * or scrub request waits at most about this long while computing).
+ */
+const ROUND_MS = 8;
+/**
+ * While computing, the host tells the client about progress at most this often (ms): each `info`
+ * re-renders the panels that show counts and the horizon on the main thread, and rounds end 100
+ * times a second. The revision moves only when info is sent, so frames and info always agree.
+ */
+const INFO_EVERY_MS = 50;
 /** Wall-clock milliseconds one prolongSlice call should take (the event budget adapts to it). */
 const SLICE_MS = 3;
 /** While computing, energy/event samples are recorded at most this often (ms of wall-clock time). */
@@ -42,6 +51,7 @@ export class TimelineHost {
   private scheduled = false;
   private readonly series = new SeriesRecorder();
   private lastRecord = Number.NEGATIVE_INFINITY;
+  private lastInfo = Number.NEGATIVE_INFINITY;
   /** Ids of the last frame sent (frames with the same ids are sent with `ids: null`). */
   private sentIds: string[] | null = null;
   /** Body index by id for `indexIds` (rebuilt when the ids change). */
@@ -203,7 +213,7 @@ export class TimelineHost {
         this.job = null;
       }
     }
-    this.changed(false);
+    if (!this.job || this.env.now() - this.lastInfo >= INFO_EVERY_MS) this.changed(false);
     if (this.job) this.kick();
   }
 
@@ -218,6 +228,7 @@ export class TimelineHost {
       this.docRevision++;
       this.idle = false;
     }
+    this.lastInfo = now;
     this.env.post({ type: "info", info: this.info() });
   }
 

@@ -1,0 +1,71 @@
+import { dilutedGas, Timeline } from "@chapgame/engine";
+import { describe, expect, it } from "vitest";
+import type { SceneFile, Until } from "../engineTypes";
+import { TimelineHost } from "./host";
+import type { Frame, HostMessage, TimelineInfo } from "./protocol";
+import type { TimelineLike } from "./timelineLike";
+
+/**
+ * A host on a fake clock: computing takes 0.5 ms per event, every reading of the clock 0.01 ms;
+ * scheduled rounds run when the test says.
+ */
+function fakeHost() {
+  let clock = 0;
+  const tasks: (() => void)[] = [];
+  const sent: HostMessage[] = [];
+  const factory = (scene: SceneFile): TimelineLike => {
+    const tl = Timeline.fromScene(scene, { compute: false });
+    const slice = tl.prolongSlice.bind(tl);
+    return Object.assign(tl, {
+      prolongSlice: (until: Until, budget: number) => {
+        const r = slice(until, budget);
+        clock += 0.5 * r.events;
+        return r;
+      },
+    });
+  };
+  const host = new TimelineHost(
+    factory,
+    {
+      post: (m) => sent.push(m),
+      schedule: (fn) => tasks.push(fn),
+      now: () => {
+        clock += 0.01;
+        return clock;
+      },
+    },
+    dilutedGas({ n: 60, packing: 0.3, seed: 5 }),
+  );
+  const infos = () =>
+    sent.filter((m): m is { type: "info"; info: TimelineInfo } => m.type === "info").map((m) => m.info);
+  return { host, tasks, sent, infos };
+}
+
+describe("TimelineHost while computing", () => {
+  it("reports progress at most every INFO_EVERY_MS, and frames carry the revision last reported", () => {
+    const { host, tasks, sent, infos } = fakeHost();
+    host.handle({ id: 1, op: "compute", until: { time: 40 } });
+    const before = infos().length;
+    let rounds = 0;
+    let checkedFrame = false;
+    while (tasks.length > 0) {
+      tasks.shift()!();
+      rounds++;
+      if (rounds === 7) {
+        host.handle({ id: 2, op: "frame", t: 0.5, window: 0 });
+        const reply = sent[sent.length - 1]!;
+        expect(reply.type).toBe("reply");
+        const f = (reply as { value: Frame }).value;
+        expect(f.revision).toBe(infos().at(-1)!.revision);
+        checkedFrame = true;
+      }
+    }
+    const during = infos().length - before;
+    expect(checkedFrame).toBe(true);
+    expect(rounds).toBeGreaterThan(20); // the job took many rounds...
+    expect(during).toBeLessThan(rounds / 3); // ...and far fewer progress reports
+    const last = infos().at(-1)!;
+    expect(last.computing).toBeNull();
+    expect(last.horizon).toBe(40);
+  });
+});
