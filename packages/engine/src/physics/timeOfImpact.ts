@@ -12,9 +12,11 @@
  *   disc–line:               h(tau) = ±s(tau) - r, s the signed distance to the line (degree <= 2)
  */
 
-import { evalPoly, realRoots } from "../roots/realRoots.js";
+import { evalPoly, realRootsInto } from "../roots/realRoots.js";
 
 const coeffs = new Float64Array(5);
+/** Roots of the last quartic solved (reused: no allocation per prediction). */
+const roots: number[] = [];
 
 /**
  * First approach root of the gap polynomial of two discs (or a disc and a point, with the point's
@@ -70,7 +72,7 @@ export function firstDownCrossingQuartic(
   coeffs[4] = c4;
   // Solve on [0, hi] rather than [lo, hi] so that the roots are a pure function of the two motions:
   // the same pair gives the same bits whenever it is (re)computed.
-  const roots = realRoots(coeffs, 0, hi);
+  realRootsInto(coeffs, 0, hi, roots);
   for (let i = 0; i < roots.length; i++) {
     const r = roots[i] as number;
     if (r < lo) continue;
