@@ -10,6 +10,42 @@ import { boxWalls } from "../scenes/walls.mjs";
 
 const id = (k) => `s${String(k).padStart(5, "0")}`;
 
+/** A scene without gravity or friction field: open (no walls) unless `box` parts are given. */
+function scene(sceneId, span, bodies, { walls = [], box = null } = {}, tolerance = 1e-9) {
+  return { id: sceneId, span, g: 0, gravity: [0, 0], bodies, walls, box, tolerance };
+}
+
+/**
+ * A box gas: n discs of radius r on a grid start at `packing` in a square box whose lower-left
+ * corner is (o, o), directions from a seeded generator; `disc(i)` gives each disc's mass and speed.
+ */
+function boxGas({ n, r = 1, packing, o = 0, seed, wall = 1, disc }) {
+  const side = Math.sqrt((n * Math.PI * r * r) / packing);
+  const k = Math.ceil(Math.sqrt(n));
+  const cell = side / k;
+  const rnd = lcg(seed);
+  const bodies = [];
+  for (let i = 0; i < n; i++) {
+    const a = 2 * Math.PI * rnd();
+    const { m, speed } = disc(i);
+    bodies.push({
+      id: id(i),
+      x: o + ((i % k) + 0.5) * cell,
+      y: o + (Math.floor(i / k) + 0.5) * cell,
+      r,
+      m,
+      vx: speed * Math.cos(a),
+      vy: speed * Math.sin(a),
+      mu: 0,
+    });
+  }
+  return {
+    bodies,
+    walls: boxWalls(o, o, o + side, o + side, wall),
+    box: { x0: o, y0: o, x1: o + side, y1: o + side },
+  };
+}
+
 /**
  * Grazing collisions: `lanes` independent pairs, each a disc moving at speed 1 past a resting one
  * with impact parameter (1 − δ)·R, δ = 10^-(lane mod 17) (δ = 1e-16 is a tangent pass), lanes 10 apart.
@@ -22,7 +58,7 @@ export function grazing(lanes = 17) {
     bodies.push({ id: id(2 * k), x: 0, y, r: 1, m: 1, vx: 0, vy: 0, mu: 0 });
     bodies.push({ id: id(2 * k + 1), x: -4, y: y + 2 * (1 - delta), r: 1, m: 1, vx: 1, vy: 0, mu: 0 });
   }
-  return { id: "grazing", span: 10, g: 0, gravity: [0, 0], bodies, walls: [], box: null, tolerance: 1e-9 };
+  return scene("grazing", 10, bodies);
 }
 
 /**
@@ -38,16 +74,7 @@ export function nearSimultaneous(lanes = 10) {
     bodies.push({ id: id(3 * k + 1), x: 0, y: y + 1.2, r: 1, m: 1, vx: 0, vy: 0, mu: 0 });
     bodies.push({ id: id(3 * k + 2), x: eps, y: y - 1.2, r: 1, m: 1, vx: 0, vy: 0, mu: 0 });
   }
-  return {
-    id: "near-simultaneous",
-    span: 10,
-    g: 0,
-    gravity: [0, 0],
-    bodies,
-    walls: [],
-    box: null,
-    tolerance: 1e-9,
-  };
+  return scene("near-simultaneous", 10, bodies);
 }
 
 /**
@@ -86,116 +113,27 @@ export function roundOffContacts(rings = 4, n = 24) {
     }
     for (const p of list) bodies.push({ id: id(k++), r, mu: 0, ...p });
   }
-  return {
-    id: "round-off-contacts",
-    span: 30,
-    g: 0,
-    gravity: [0, 0],
-    bodies,
-    walls: [],
-    box: null,
-    tolerance: 1e-9,
-  };
+  return scene("round-off-contacts", 30, bodies);
 }
 
 /** A gas of `n` discs (r = 1e-3) whose box sits at (1e6, 1e6): one ulp of a coordinate is 1.2e-10. */
 export function largeOffset(n = 200, seed = 3) {
   const r = 1e-3;
-  const side = Math.sqrt((n * Math.PI * r * r) / 0.1);
-  const k = Math.ceil(Math.sqrt(n));
-  const cell = side / k;
-  const o = 1e6;
-  const rnd = lcg(seed);
-  const bodies = [];
-  for (let i = 0; i < n; i++) {
-    const a = 2 * Math.PI * rnd();
-    bodies.push({
-      id: id(i),
-      x: o + ((i % k) + 0.5) * cell,
-      y: o + (Math.floor(i / k) + 0.5) * cell,
-      r,
-      m: 1,
-      vx: 0.01 * Math.cos(a),
-      vy: 0.01 * Math.sin(a),
-      mu: 0,
-    });
-  }
+  const gas = boxGas({ n, r, packing: 0.1, o: 1e6, seed, disc: () => ({ m: 1, speed: 0.01 }) });
   // one ulp at 1e6 relative to the contact distance 2r, times a small factor for the contact geometry
   const ulp = 2 ** -33;
-  return {
-    id: "large-offset",
-    span: 20,
-    g: 0,
-    gravity: [0, 0],
-    bodies,
-    walls: boxWalls(o, o, o + side, o + side, 1),
-    box: { x0: o, y0: o, x1: o + side, y1: o + side },
-    tolerance: Math.max(1e-9, (8 * ulp) / (2 * r)),
-  };
+  return scene("large-offset", 20, gas.bodies, gas, Math.max(1e-9, (8 * ulp) / (2 * r)));
 }
 
 /** A box gas of `n` discs with one disc `ratio` times heavier than the rest. */
 export function massRatio(ratio, n = 40, seed = 4) {
-  const side = Math.sqrt((n * Math.PI) / 0.15);
-  const k = Math.ceil(Math.sqrt(n));
-  const cell = side / k;
-  const rnd = lcg(seed);
-  const bodies = [];
-  for (let i = 0; i < n; i++) {
-    const a = 2 * Math.PI * rnd();
-    const heavy = i === 0;
-    bodies.push({
-      id: id(i),
-      x: ((i % k) + 0.5) * cell,
-      y: (Math.floor(i / k) + 0.5) * cell,
-      r: 1,
-      m: heavy ? ratio : 1,
-      vx: (heavy ? 0.1 : 3) * Math.cos(a),
-      vy: (heavy ? 0.1 : 3) * Math.sin(a),
-      mu: 0,
-    });
-  }
-  return {
-    id: `mass-ratio-${ratio}`,
-    span: 20,
-    g: 0,
-    gravity: [0, 0],
-    bodies,
-    walls: boxWalls(0, 0, side, side, 1),
-    box: { x0: 0, y0: 0, x1: side, y1: side },
-    tolerance: 1e-9,
-  };
+  const disc = (i) => (i === 0 ? { m: ratio, speed: 0.1 } : { m: 1, speed: 3 });
+  const gas = boxGas({ n, packing: 0.15, seed, disc });
+  return scene(`mass-ratio-${ratio}`, 20, gas.bodies, gas);
 }
 
 /** A box gas of `n` discs at speed 1 with `fast` of them at speed `speed`. */
 export function highSpeed(speed, n = 60, fast = 2, seed = 5) {
-  const side = Math.sqrt((n * Math.PI) / 0.1);
-  const k = Math.ceil(Math.sqrt(n));
-  const cell = side / k;
-  const rnd = lcg(seed);
-  const bodies = [];
-  for (let i = 0; i < n; i++) {
-    const a = 2 * Math.PI * rnd();
-    const v = i < fast ? speed : 1;
-    bodies.push({
-      id: id(i),
-      x: ((i % k) + 0.5) * cell,
-      y: (Math.floor(i / k) + 0.5) * cell,
-      r: 1,
-      m: 1,
-      vx: v * Math.cos(a),
-      vy: v * Math.sin(a),
-      mu: 0,
-    });
-  }
-  return {
-    id: `high-speed-${speed}`,
-    span: 20 / Math.sqrt(speed),
-    g: 0,
-    gravity: [0, 0],
-    bodies,
-    walls: boxWalls(0, 0, side, side, 1),
-    box: { x0: 0, y0: 0, x1: side, y1: side },
-    tolerance: 1e-9,
-  };
+  const gas = boxGas({ n, packing: 0.1, seed, disc: (i) => ({ m: 1, speed: i < fast ? speed : 1 }) });
+  return scene(`high-speed-${speed}`, 20 / Math.sqrt(speed), gas.bodies, gas);
 }
