@@ -1,7 +1,8 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import { exactPolySign, nextDown, nextUp } from "./exactPoly.js";
-import { nextDown as fastNextDown, nextUp as fastNextUp, found, quarticRoots } from "./quartic.js";
+import { nextDown as fastNextDown, nextUp as fastNextUp } from "./nextDouble.js";
+import { found, quarticRoots } from "./quartic.js";
 import { realRoots, realRootsInto } from "./realRoots.js";
 import { verifyRoots } from "./verifyRoots.js";
 

@@ -1,0 +1,147 @@
+/**
+ * The roots of the quartic hot path on certified monotone pieces (registers: quarticRegisters.ts):
+ * each bracket with exact signs of opposite signs at its ends holds exactly one root, found by
+ * Halley (quarticHalley.ts) and certified to 1 ulp (quarticRefine.ts), then appended to `found`.
+ *
+ * - `unimodal(s0, zeroAtLo)`: p has exactly one critical point in [lo, lo + h] and the exact sign
+ *   s0 at lo, or just after lo when p(lo) = 0 (zeroAtLo), and at lo + h; BC[0] = p(lo); H[4] a
+ *   start. The critical point x* by safeguarded Halley on p′ over [lo, hi] (when p′ changes sign
+ *   there), then the exact sign of p at x* (plain Horner with its bound): p is monotone on
+ *   [lo, x*] and [x*, lo + h], so p keeping the sign s0 at x* means no root; else one root in
+ *   (lo, x*) and one in (x*, hi) when p(hi) has the sign s0 again. Returns 1 when done; 0 when
+ *   p′(lo), p′(hi) do not change sign or p dips after a zero at lo (the caller subdivides
+ *   instead); −1 when p(x*) is at rounding-noise level or p(hi) = 0 (the general path, with its
+ *   exact repair around noisy critical points, decides) or a bracket's ends round together.
+ * - `solveOnes(nOnes, zeroAtLo)`: one certified root per one-root piece of quarticIsolate.ts. A
+ *   piece's real ends lo + s·h are replaced by the nearest doubles, whose exact signs must match
+ *   the certified signs at the real ends (so no root lies between a double and its real end).
+ *   False on any doubt (a differing sign, an exact zero, ends that round together).
+ */
+
+import { halley } from "./quarticHalley.js";
+import { ones } from "./quarticIsolate.js";
+import { refined } from "./quarticRefine.js";
+import * as reg from "./quarticRegisters.js";
+import { signAt, signPlain } from "./quarticSigns.js";
+
+/** Module-local copies (V8 folds a module's own consts, not imports; see quarticRegisters.ts). */
+const Q = reg.Q;
+const H = reg.H;
+const BC = reg.BC;
+const absAt = reg.absAt;
+const P1 = reg.P1;
+const pieces = ones;
+/** After an exact zero at lo, a one-root piece [lo, b] is bracketed from lo + (b − lo)·ZERO_OFFSET. */
+const ZERO_OFFSET = 2 ** -10;
+
+/**
+ * The root in (a, b), where p's exact signs are sa at a and −sa at b and |p| is fa, fb: Halley
+ * from the values ha, hb (of the signs sa, −sa), the start guess and the critical ends (see
+ * quarticHalley.ts), then refined and appended to `found`.
+ */
+function solveIn(
+  a: number,
+  b: number,
+  sa: number,
+  fa: number,
+  fb: number,
+  ha: number,
+  hb: number,
+  guess: number,
+  critical: number,
+): void {
+  H[0] = a;
+  H[1] = b;
+  H[2] = ha;
+  H[3] = hb;
+  H[4] = guess;
+  halley(0, critical);
+  H[0] = a;
+  H[1] = b;
+  H[2] = fa;
+  H[3] = fb;
+  H[4] = H[5] as number;
+  reg.pushRoot(refined(sa));
+}
+
+/** solveIn next to a critical end (critical: 1 = a, 2 = b); false when a and b round together. */
+function rootIn(a: number, b: number, sa: number, fa: number, fb: number, critical: number): boolean {
+  if (!(a < b)) return false;
+  solveIn(a, b, sa, fa, fb, sa * (fa > 0 ? fa : 1), -sa * (fb > 0 ? fb : 1), Number.NaN, critical);
+  return true;
+}
+
+export function unimodal(s0: number, zeroAtLo: boolean): number {
+  const c1 = Q[1] as number;
+  const c2 = Q[2] as number;
+  const c3 = Q[3] as number;
+  const c4 = Q[4] as number;
+  const lo = Q[5] as number;
+  const hi = Q[6] as number;
+  const q1 = 2 * c2;
+  const q2 = 3 * c3;
+  const q3 = 4 * c4;
+  const fa = ((q3 * lo + q2) * lo + q1) * lo + c1;
+  const fb = ((q3 * hi + q2) * hi + q1) * hi + c1;
+  if (fa === 0 || fb === 0 || fa < 0 === fb < 0) return 0;
+  Q[P1] = c1;
+  Q[P1 + 1] = q1;
+  Q[P1 + 2] = q2;
+  Q[P1 + 3] = q3;
+  Q[P1 + 4] = 0;
+  H[0] = lo;
+  H[1] = hi;
+  H[2] = fa;
+  H[3] = fb;
+  halley(P1, 0);
+  const xs = H[5] as number;
+  const sx = signPlain(xs, 0);
+  if (sx === 0) return -1;
+  // p keeps the sign s0 at its only extremum: no root (p(lo + h) has the sign s0 too, and p is
+  // monotone from x* to there, so p(hi) has it).
+  if (sx === s0) return 1;
+  if (zeroAtLo) return 0; // p(lo) = 0 and a dip: subdivision brackets the roots after lo
+  const ax = absAt[0] as number;
+  const sh = signAt(hi, 1);
+  if (sh === 0) return -1;
+  const ah = absAt[1] as number;
+  // One root in (lo, x*), and one in (x*, hi) unless it lies beyond hi.
+  if (!rootIn(lo, xs, s0, Math.abs(BC[0] as number), ax, 2)) return -1;
+  if (sh !== sx && !rootIn(xs, hi, sx, ax, ah, 1)) return -1;
+  return 1;
+}
+
+export function solveOnes(nOnes: number, zeroAtLo: boolean): boolean {
+  const lo = Q[5] as number;
+  const hi = Q[6] as number;
+  const h = Q[7] as number;
+  for (let k = 0; k < nOnes; k++) {
+    const o = 4 * k;
+    const sl = pieces[o] as number;
+    const sr = pieces[o + 1] as number;
+    const sg = pieces[o + 3] as number;
+    const last = sr === 1; // the piece reaching lo + h > hi
+    let a = sl === 0 ? lo : lo + sl * h;
+    if (a > hi) a = hi;
+    const b = last ? hi : lo + sr * h;
+    // p(lo) = 0 exactly: the piece's root is inside; start the bracket a little after lo, where p
+    // must already have the sign just after lo (else the root is right there: general path).
+    if (sl === 0 && zeroAtLo) a = lo + (b - lo) * ZERO_OFFSET;
+    if (!(a < b) || b > hi) {
+      // A last piece starting at hi (rounded): its root lies beyond hi iff p(hi) keeps its sign.
+      if (last && a === hi && signAt(hi, 0) === sg) continue;
+      return false;
+    }
+    if (signAt(a, 0) !== sg) return false;
+    const sb = signAt(b, 1);
+    if (sb === 0) return false;
+    if (sb === sg) {
+      if (last) continue; // the last piece's root lies beyond hi
+      return false;
+    }
+    const fa = absAt[0] as number;
+    const fb = absAt[1] as number;
+    solveIn(a, b, sg, fa, fb, sg * fa, sb * fb, lo + (pieces[o + 2] as number) * h, 0);
+  }
+  return true;
+}

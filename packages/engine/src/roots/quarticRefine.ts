@@ -1,0 +1,183 @@
+/**
+ * Certified refinement of a bracketed root of the quartic hot path (registers: quarticRegisters.ts):
+ * certify.ts's refineRoot in scalar arithmetic, for the common case.
+ *
+ * `refined(sa)`: the root in the bracket H[0..1] = a < b, where p's exact signs are sa at a and −sa
+ * at b, H[2..3] = |p| there, H[4] = the start x0 (Halley's result, inside): one compensated Horner
+ * evaluation at x0 (as compHorner.ts: value, rigorous bound, p′(x0), p̃′(|x0|), p̃″(|x0|)/2) decides
+ * its exact sign; then the certified local model p(x0 + h) ∈ p(x0) + p′(x0)·h ± (…) of refineRoot
+ * decides the ulp around the compensated Newton root in one step, else walks ulp by ulp to two
+ * adjacent doubles; the end with the smaller |p| is returned (within 1 ulp of an exact root).
+ * When the compensated sign is uncertain, underflow is near or the model cannot decide, refineRoot
+ * finishes from the narrowed bracket with full evaluations (exact fallback included).
+ */
+
+import { COMP_HORNER_BOUND_FACTOR, PLAIN_HORNER_BOUND_FACTOR, UNIT_ROUNDOFF } from "../tolerances.js";
+import { MODEL_MIN_X, MODEL_SAFETY, MODEL_SPAN, refineRoot } from "./certify.js";
+import { nextDown, nextUp } from "./nextDouble.js";
+import * as reg from "./quarticRegisters.js";
+
+/** Module-local copies (V8 folds a module's own consts, not imports; see quarticRegisters.ts). */
+const Q = reg.Q;
+const H = reg.H;
+const U = UNIT_ROUNDOFF;
+const B4 = PLAIN_HORNER_BOUND_FACTOR * 4 * U;
+const COMP = COMP_HORNER_BOUND_FACTOR;
+const SPAN = MODEL_SPAN;
+const MIN_X = MODEL_MIN_X;
+const SAFETY = MODEL_SAFETY;
+/** compHorner.ts's constants: Dekker's split, underflow limits (see there). */
+const SPLIT = 134217729;
+const UNDERFLOW = 2 ** -968;
+const SLACK_FREE = 2 ** -900;
+const TINY = 2 ** -1070;
+
+export function refined(sa: number): number {
+  if (refine(sa)) return H[5] as number;
+  reg.ensureLoaded();
+  return refineRoot(H[0] as number, H[1] as number, sa, H[2] as number, H[3] as number, H[4] as number);
+}
+
+/**
+ * The scalar part of refined: true with the root in H[5]; false with the (narrowed) bracket, its
+ * |p| and a start for refineRoot in H[0..4].
+ */
+function refine(sa: number): boolean {
+  let a = H[0] as number;
+  let b = H[1] as number;
+  let absA = H[2] as number;
+  let absB = H[3] as number;
+  const x = H[4] as number;
+  if (!(x > a && x < b)) return false;
+  // Compensated Horner (compHorner.ts, degree 4): s + r the value, e the sum of the |error terms|,
+  // pmin the smallest |product| (underflow check), d = p′, a1 = p̃′, a2 = p̃″/2, aa = p̃. The first
+  // round's updates of d, a1, a2, r, e and pmin from zero and +∞ are exact (d = c4, a1 = |c4|, …).
+  let t = SPLIT * x;
+  const xh = t - (t - x);
+  const xl = x - xh;
+  const ax = Math.abs(x);
+  const xm = Math.max(ax, 1);
+  let s = Q[4] as number;
+  let aa = Math.abs(s);
+  let d = 0;
+  let a2 = 0;
+  let a1 = 0;
+  let r = 0;
+  let e = 0;
+  let pmin = Number.POSITIVE_INFINITY;
+  for (let k = 3; k >= 0; k--) {
+    const ck = Q[k] as number;
+    d = d * x + s;
+    a2 = a2 * ax + a1;
+    a1 = a1 * ax + aa;
+    const p = s * x;
+    t = SPLIT * s;
+    const sh = t - (t - s);
+    const sl = s - sh;
+    const pe = sl * xl - (p - sh * xh - sl * xh - sh * xl);
+    s = p + ck;
+    const z = s - p;
+    const q = pe + (p - (s - z) + (ck - z));
+    r = r * x + q;
+    e += Math.abs(q);
+    pmin = Math.min(pmin, Math.abs(p));
+    aa = aa * ax + Math.abs(ck);
+  }
+  const v = s + r;
+  const av = Math.abs(v);
+  const xm2 = xm * xm;
+  const pw = xm2 * xm2;
+  let bound = 0;
+  if (e !== 0 || !(pmin >= UNDERFLOW)) {
+    bound = COMP * (U * av + 16 * U * U * aa);
+    if (!(aa >= pw * SLACK_FREE)) bound += TINY * 5 * pw;
+  }
+  if (!(av > bound || bound === 0)) return false; // uncertain: refineRoot decides exactly
+  const sx = v > 0 ? 1 : v < 0 ? -1 : 0;
+  if (sx === 0) {
+    H[5] = x;
+    return true;
+  }
+  if (sx === sa) {
+    a = x;
+    absA = av;
+  } else {
+    b = x;
+    absB = av;
+  }
+  // The certified local model p(x + h) ∈ v + d·h ± (bound + |h|·e1 + a2·h² + u|·|), as refineRoot.
+  let y = x - v / d;
+  if (ax >= MIN_X) {
+    const span = ax * SPAN;
+    const e1 = B4 * a1 + U * Math.abs(d);
+    if (y > a && y < b) {
+      // Common case: the root lies within an ulp of y. The model at y and both neighbours at
+      // once; done when y and one neighbour have certified opposite signs.
+      const yu = nextUp(y);
+      const yd = nextDown(y);
+      const h0 = y - x;
+      const hu = yu - x;
+      const hd = yd - x;
+      const m0 = v + d * h0;
+      const mu = v + d * hu;
+      const md = v + d * hd;
+      const am0 = Math.abs(m0);
+      const amu = Math.abs(mu);
+      const amd = Math.abs(md);
+      const hm = Math.max(Math.abs(hu), Math.abs(hd));
+      // One error bound for the three points (the largest |h|, the largest |m|).
+      const err = SAFETY * (bound + hm * e1 + a2 * hm * hm + U * Math.max(am0, amu, amd));
+      if (hm <= span && am0 > err) {
+        const s0 = m0 > 0 ? 1 : -1;
+        if (s0 === sa) {
+          // p(y) has a's sign: the root is above y.
+          if (amu > err && (mu > 0 ? 1 : -1) !== sa && yu <= b) {
+            H[5] = am0 <= amu ? y : yu;
+            return true;
+          }
+        } else if (amd > err && (md > 0 ? 1 : -1) === sa && yd >= a) {
+          H[5] = amd <= am0 ? yd : y;
+          return true;
+        }
+      }
+    }
+    // (With a and b adjacent no y lies strictly between them: the common case above cannot apply.)
+    if (nextUp(a) >= b) {
+      H[5] = absA <= absB ? a : b;
+      return true;
+    }
+    if (!(y > a && y < b) || y === x) y = sx === sa ? nextUp(x) : nextDown(x);
+    for (let k = 0; k < 8; k++) {
+      const hh = y - x;
+      const ah = Math.abs(hh);
+      if (!(ah <= span)) break;
+      const m = v + d * hh;
+      const am = Math.abs(m);
+      const err = SAFETY * (bound + ah * e1 + a2 * hh * hh + U * am);
+      if (!(am > err)) break;
+      if ((m > 0 ? 1 : -1) === sa) {
+        a = y;
+        absA = am;
+        if (nextUp(a) >= b) {
+          H[5] = absA <= absB ? a : b;
+          return true;
+        }
+        y = nextUp(y);
+      } else {
+        b = y;
+        absB = am;
+        if (nextUp(a) >= b) {
+          H[5] = absA <= absB ? a : b;
+          return true;
+        }
+        y = nextDown(y);
+      }
+    }
+  }
+  H[0] = a;
+  H[1] = b;
+  H[2] = absA;
+  H[3] = absB;
+  H[4] = y;
+  return false;
+}
