@@ -162,6 +162,8 @@ interface TraceEvent {
   tid: number;
   ts: number;
   dur?: number;
+  /** thread (CPU) duration */
+  tdur?: number;
   args?: { name?: string };
 }
 
@@ -221,8 +223,45 @@ async function trace(name: string, run: () => Promise<unknown>) {
     if ((rows[0]?.[1].ms ?? 0) < 50) continue;
     threads[th] = rows.map(([k, r]) => `${r.ms.toFixed(0).padStart(6)} ms ${String(r.n).padStart(5)}x  ${k}`);
   }
-  results[`trace-${name}`] = { loadAverage1min: [load0, loadavg()[0]], measured, threads };
+  results[`trace-${name}`] = {
+    loadAverage1min: [load0, loadavg()[0]],
+    measured,
+    cpuMsPerFrame: cpuPerFrame(events, threadNames, (measured as { frames: number }).frames),
+    threads,
+  };
   await cdp.detach();
+}
+
+/**
+ * CPU time (ms, from the trace's thread durations) per animation frame, per thread name: the sum of
+ * each thread's outermost trace events. Less sensitive to other processes' load than frame rates.
+ */
+function cpuPerFrame(events: TraceEvent[], threadNames: Map<string, string>, frames: number) {
+  const byThread = new Map<string, TraceEvent[]>();
+  for (const e of events) {
+    if (e.ph !== "X" || e.tdur === undefined || e.dur === undefined) continue;
+    const k = `${e.pid}:${e.tid}`;
+    const list = byThread.get(k) ?? [];
+    list.push(e);
+    byThread.set(k, list);
+  }
+  const out: Record<string, number> = {};
+  for (const [k, list] of byThread) {
+    list.sort((a, b) => a.ts - b.ts || (b.dur ?? 0) - (a.dur ?? 0));
+    let end = -1;
+    let cpu = 0;
+    for (const e of list)
+      if (e.ts >= end) {
+        cpu += e.tdur!;
+        end = e.ts + e.dur!;
+      }
+    const name = (threadNames.get(k) ?? k).replace(/\d+$/, "");
+    out[name] = (out[name] ?? 0) + cpu / 1000 / Math.max(frames, 1);
+  }
+  for (const [k, v] of Object.entries(out))
+    if (v < 0.1) delete out[k];
+    else out[k] = Math.round(v * 100) / 100;
+  return out;
 }
 
 /** Plays (or scrubs) for `ms` and returns the page's animation-frame rate. */
@@ -248,7 +287,7 @@ function sample(ms: number, mode: "play" | "scrub") {
         requestAnimationFrame(tick);
       });
       ed.ui.setState({ playing: false });
-      return { pageFps: frames / ((performance.now() - start) / 1000) };
+      return { frames, pageFps: frames / ((performance.now() - start) / 1000) };
     },
     { ms, mode },
   );
