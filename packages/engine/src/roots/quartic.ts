@@ -186,12 +186,12 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
   // touching discs) decided exactly; p(lo) = 0 goes to the general path.
   let sLo = b0 > margin ? 1 : b0 < -margin ? -1 : 0;
   let zeroAtLo = false;
+  Q[0] = c0;
+  Q[1] = c1;
+  Q[2] = c2;
+  Q[3] = c3;
+  Q[4] = c4;
   if (sLo === 0) {
-    Q[0] = c0;
-    Q[1] = c1;
-    Q[2] = c2;
-    Q[3] = c3;
-    Q[4] = c4;
     reg.useCoeffs(coeffs);
     reg.ensureLoaded();
     sLo = certSign(lo);
@@ -243,11 +243,6 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
       if ((okL || quarters(0, sLo)) && (okR || quarters(4, sLo))) return true;
     }
   }
-  Q[0] = c0;
-  Q[1] = c1;
-  Q[2] = c2;
-  Q[3] = c3;
-  Q[4] = c4;
   Q[5] = lo;
   Q[6] = hi;
   Q[7] = h;

@@ -36,24 +36,24 @@ const ZERO_OFFSET = 2 ** -10;
 
 /**
  * The root in (a, b), where p's exact signs are sa at a and −sa at b and |p| is fa, fb: Halley
- * from the values ha, hb (of the signs sa, −sa), the start guess and the critical ends (see
- * quarticHalley.ts), then refined and appended to `found`.
+ * (values sa·fa and −sa·fb, or ±1 where |p| underflowed to 0; the start guess when inside, else
+ * from the critical ends: 1 = a, 2 = b, see quarticHalley.ts), then refined and appended to
+ * `found`. False when a and b round together.
  */
-function solveIn(
+function rootIn(
   a: number,
   b: number,
   sa: number,
   fa: number,
   fb: number,
-  ha: number,
-  hb: number,
   guess: number,
   critical: number,
-): void {
+): boolean {
+  if (!(a < b)) return false;
   H[0] = a;
   H[1] = b;
-  H[2] = ha;
-  H[3] = hb;
+  H[2] = sa * (fa > 0 ? fa : 1);
+  H[3] = -sa * (fb > 0 ? fb : 1);
   H[4] = guess;
   halley(0, critical);
   H[0] = a;
@@ -62,12 +62,6 @@ function solveIn(
   H[3] = fb;
   H[4] = H[5] as number;
   reg.pushRoot(refined(sa));
-}
-
-/** solveIn next to a critical end (critical: 1 = a, 2 = b); false when a and b round together. */
-function rootIn(a: number, b: number, sa: number, fa: number, fb: number, critical: number): boolean {
-  if (!(a < b)) return false;
-  solveIn(a, b, sa, fa, fb, sa * (fa > 0 ? fa : 1), -sa * (fb > 0 ? fb : 1), Number.NaN, critical);
   return true;
 }
 
@@ -106,8 +100,8 @@ export function unimodal(s0: number, zeroAtLo: boolean): number {
   if (sh === 0) return -1;
   const ah = absAt[1] as number;
   // One root in (lo, x*), and one in (x*, hi) unless it lies beyond hi.
-  if (!rootIn(lo, xs, s0, Math.abs(BC[0] as number), ax, 2)) return -1;
-  if (sh !== sx && !rootIn(xs, hi, sx, ax, ah, 1)) return -1;
+  if (!rootIn(lo, xs, s0, Math.abs(BC[0] as number), ax, Number.NaN, 2)) return -1;
+  if (sh !== sx && !rootIn(xs, hi, sx, ax, ah, Number.NaN, 1)) return -1;
   return 1;
 }
 
@@ -139,9 +133,7 @@ export function solveOnes(nOnes: number, zeroAtLo: boolean): boolean {
       if (last) continue; // the last piece's root lies beyond hi
       return false;
     }
-    const fa = absAt[0] as number;
-    const fb = absAt[1] as number;
-    solveIn(a, b, sg, fa, fb, sg * fa, sb * fb, lo + (pieces[o + 2] as number) * h, 0);
+    rootIn(a, b, sg, absAt[0] as number, absAt[1] as number, lo + (pieces[o + 2] as number) * h, 0);
   }
   return true;
 }
