@@ -2,10 +2,9 @@ import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import { compHorner, compHornerDD, hornerBound } from "./compHorner.js";
 import { exactDerivativeSign, exactPolySign, nextUp } from "./exactPoly.js";
+import { fcParams, fromRoots, num } from "./testSupport.js";
 
-const seed = Number(process.env.FC_SEED ?? Math.floor(Math.random() * 2 ** 31));
-console.log(`compHorner.test seed: ${seed} (replay with FC_SEED=${seed})`);
-const num = (min: number, max: number) => fc.double({ min, max, noNaN: true, noDefaultInfinity: true });
+const params = fcParams("compHorner.test", 1000);
 
 /** Coefficients of ∏(t − rᵢ) in double arithmetic, and points a few ulps around the first root. */
 const nearRoot = fc
@@ -14,15 +13,7 @@ const nearRoot = fc
     ulps: fc.integer({ min: -40, max: 40 }),
   })
   .map(({ roots, ulps }) => {
-    let c = [1];
-    for (const r of roots) {
-      const n: number[] = new Array(c.length + 1).fill(0);
-      for (let i = 0; i < c.length; i++) {
-        n[i + 1] = (n[i + 1] as number) + (c[i] as number);
-        n[i] = (n[i] as number) - r * (c[i] as number);
-      }
-      c = n;
-    }
+    const c = fromRoots(roots);
     let x = roots[0] as number;
     for (let k = 0; k < Math.abs(ulps); k++) x = ulps > 0 ? nextUp(x) : -nextUp(-x);
     return { c, x };
@@ -48,7 +39,7 @@ describe("Horner error bounds (checked against exact signs)", () => {
           expect(Math.sign(out[0] as number) + 0).toBe(exact);
         }
       }),
-      { seed, numRuns: 2000, verbose: true },
+      { ...params, numRuns: 2 * params.numRuns },
     );
     // The compensated evaluation decides far more points than the plain one (this is its purpose).
     expect(decidedComp).toBeGreaterThan(decidedPlain);
@@ -86,7 +77,7 @@ describe("Horner error bounds (checked against exact signs)", () => {
           expect(Math.sign(out[0] as number)).toBe(exactDerivativeSign(c, x));
         }
       }),
-      { seed, numRuns: 1000, verbose: true },
+      params,
     );
   });
 });

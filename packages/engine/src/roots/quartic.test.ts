@@ -1,41 +1,19 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import { exactPolySign, nextDown, nextUp } from "./exactPoly.js";
-import { nextDown as fastNextDown, nextUp as fastNextUp } from "./nextDouble.js";
 import { found, quarticRoots } from "./quartic.js";
 import { realRoots, realRootsInto } from "./realRoots.js";
+import { expectVerified, fcParams, fromRoots, num } from "./testSupport.js";
 import { verifyRoots } from "./verifyRoots.js";
 
-// One seed per run, printed so that any failure can be replayed: FC_SEED=<seed> npx vitest run …
-const seed = Number(process.env.FC_SEED ?? Math.floor(Math.random() * 2 ** 31));
-console.log(`quartic.test seed: ${seed} (replay with FC_SEED=${seed})`);
-const params = { seed, numRuns: Number(process.env.FC_RUNS ?? 400), verbose: true } as const;
-
-const num = (min: number, max: number) => fc.double({ min, max, noNaN: true, noDefaultInfinity: true });
-
-/** Ascending coefficients of lead·∏(t − rᵢ), expanded in double arithmetic. */
-function fromRoots(roots: readonly number[], lead = 1): number[] {
-  let c = [lead];
-  for (const r of roots) {
-    const n: number[] = new Array(c.length + 1).fill(0);
-    for (let i = 0; i < c.length; i++) {
-      n[i + 1] = (n[i + 1] as number) + (c[i] as number);
-      n[i] = (n[i] as number) - r * (c[i] as number);
-    }
-    c = n;
-  }
-  return c;
-}
+const params = fcParams("quartic.test", 400);
 
 /** quarticRoots's answer when it settles the call (null when it hands back), checked exactly. */
 function hot(c: readonly number[], lo: number, hi: number): number[] | null {
   const k = quarticRoots(c, lo, hi);
   if (k < 0) return null;
   const out = Array.from(found.subarray(0, k));
-  const check = verifyRoots(c, lo, hi, out, 48, 4);
-  expect(check.ordered, `ordered: ${out}`).toBe(true);
-  expect(check.maxUlps, `roots ${out} of ${c} on [${lo}, ${hi}]`).toBeLessThanOrEqual(4);
-  expect(check.missed, `missed sign changes for ${c} on [${lo}, ${hi}], roots ${out}`).toEqual([]);
+  expectVerified(c, lo, hi, out, 48);
   return out;
 }
 
@@ -173,36 +151,5 @@ describe("quarticRoots (the quartic hot path)", () => {
     expect(out).toEqual(realRoots(c, 0, 3));
     expect(realRootsInto([1, 0, 1], 0, 3, out)).toBe(0);
     expect(out).toEqual([]);
-  });
-
-  it("the hot path's arithmetic nextUp/nextDown equal the bit-pattern ones (binade ends, signs, tiny and huge)", () => {
-    const special = [
-      1,
-      2,
-      0.5,
-      2 ** -960,
-      2 ** -1022,
-      2 ** 1022,
-      1 - 2 ** -53,
-      2 - 2 ** -52,
-      5e-324,
-      0,
-      1e300,
-    ];
-    for (const x of special) {
-      for (const y of [x, -x, nextUp(x), nextDown(x), -nextUp(x)]) {
-        expect(fastNextUp(y)).toBe(nextUp(y));
-        expect(fastNextDown(y)).toBe(nextDown(y));
-      }
-    }
-    fc.assert(
-      fc.property(fc.double({ noNaN: true, noDefaultInfinity: true }), (x) => {
-        if (Math.abs(x) === Number.MAX_VALUE) return true; // its nextUp is Infinity: never a bracket end
-        expect(fastNextUp(x)).toBe(nextUp(x));
-        expect(fastNextDown(x)).toBe(nextDown(x));
-        return true;
-      }),
-      params,
-    );
   });
 });

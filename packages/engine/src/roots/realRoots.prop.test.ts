@@ -2,28 +2,9 @@ import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import { exactPolySign } from "./exactPoly.js";
 import { realRoots } from "./realRoots.js";
-import { isGrazingRoot, verifyRoots } from "./verifyRoots.js";
+import { expectVerified, fcParams, fromRoots, num } from "./testSupport.js";
 
-// One seed per run, printed so that any failure can be replayed: FC_SEED=<seed> npx vitest run …
-const seed = Number(process.env.FC_SEED ?? Math.floor(Math.random() * 2 ** 31));
-console.log(`realRoots.prop.test seed: ${seed} (replay with FC_SEED=${seed})`);
-const params = { seed, numRuns: Number(process.env.FC_RUNS ?? 300), verbose: true } as const;
-
-const num = (min: number, max: number) => fc.double({ min, max, noNaN: true, noDefaultInfinity: true });
-
-/** Ascending coefficients of lead·∏(t − rᵢ), expanded in double arithmetic. */
-function fromRoots(roots: readonly number[], lead: number): number[] {
-  let c = [lead];
-  for (const r of roots) {
-    const n: number[] = new Array(c.length + 1).fill(0);
-    for (let i = 0; i < c.length; i++) {
-      n[i + 1] = (n[i + 1] as number) + (c[i] as number);
-      n[i] = (n[i] as number) - r * (c[i] as number);
-    }
-    c = n;
-  }
-  return c;
-}
+const params = fcParams("realRoots.prop.test", 300);
 
 /**
  * The solver's guarantee on [lo, hi]: ordered; every root within 4 ulps of an exact root, except
@@ -32,16 +13,7 @@ function fromRoots(roots: readonly number[], lead: number): number[] {
  * README "Accuracy"); no exact sign change between sample points missed.
  */
 function certified(c: readonly number[], lo: number, hi: number, samples: number): boolean {
-  const roots = realRoots(c, lo, hi);
-  const check = verifyRoots(c, lo, hi, roots, samples, 4);
-  expect(check.ordered, `ordered: ${roots}`).toBe(true);
-  if (check.maxUlps > 4) {
-    for (const r of roots) {
-      if (verifyRoots(c, lo, hi, [r], 0, 4).maxUlps <= 4) continue;
-      expect(isGrazingRoot(c, r), `root ${r} of ${roots} for ${c} on [${lo}, ${hi}]`).toBe(true);
-    }
-  }
-  expect(check.missed, `missed sign changes for ${c} on [${lo}, ${hi}], roots ${roots}`).toEqual([]);
+  expectVerified(c, lo, hi, realRoots(c, lo, hi), samples, true);
   return true;
 }
 

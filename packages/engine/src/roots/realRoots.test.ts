@@ -2,29 +2,12 @@ import { describe, expect, it } from "vitest";
 import { RootSolverError } from "./bracket.js";
 import { exactDerivativeSign, exactPolySign, nextDown, nextUp, ulpsToExactRoot } from "./exactPoly.js";
 import { evalPoly, realRoots } from "./realRoots.js";
-import { verifyRoots } from "./verifyRoots.js";
-
-/** Ascending coefficients of ∏(t − rᵢ), expanded in double arithmetic. */
-function fromRoots(roots: readonly number[], lead = 1): number[] {
-  let c = [lead];
-  for (const r of roots) {
-    const n: number[] = new Array(c.length + 1).fill(0);
-    for (let i = 0; i < c.length; i++) {
-      n[i + 1] = (n[i + 1] as number) + (c[i] as number);
-      n[i] = (n[i] as number) - r * (c[i] as number);
-    }
-    c = n;
-  }
-  return c;
-}
+import { expectVerified, fromRoots } from "./testSupport.js";
 
 /** Every root within 4 ulps of an exact root, sorted, inside, and no exact sign change missed. */
 function expectCertified(c: readonly number[], lo: number, hi: number, samples = 64): number[] {
   const roots = realRoots(c, lo, hi);
-  const check = verifyRoots(c, lo, hi, roots, samples);
-  expect(check.ordered, `ordered ${roots}`).toBe(true);
-  expect(check.maxUlps, `worst root ${check.worst} of ${roots}`).toBeLessThanOrEqual(4);
-  expect(check.missed, `missed sign changes, roots ${roots}`).toEqual([]);
+  expectVerified(c, lo, hi, roots, samples);
   return roots;
 }
 
