@@ -13,7 +13,7 @@ import { type StaticServer, serveStatic } from "./server.js";
 
 export const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
 /** The built editor; CHAPGAME_E2E_DIST serves another build as it is (to measure an older version). */
-export const DIST = process.env.CHAPGAME_E2E_DIST ?? join(ROOT, "packages/editor/dist");
+export const DIST = process.env.CHAPGAME_E2E_DIST || join(ROOT, "packages/editor/dist");
 export const ARTIFACTS = join(ROOT, "test-artifacts");
 
 /** Newest modification time (ms) of the files under `path`. */
