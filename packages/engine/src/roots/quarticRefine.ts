@@ -155,23 +155,20 @@ function refine(sa: number): boolean {
       const am = Math.abs(m);
       const err = SAFETY * (bound + ah * e1 + a2 * hh * hh + U * am);
       if (!(am > err)) break;
-      if ((m > 0 ? 1 : -1) === sa) {
+      // p(y) with a's sign: the root lies above y.
+      const above = (m > 0 ? 1 : -1) === sa;
+      if (above) {
         a = y;
         absA = am;
-        if (nextUp(a) >= b) {
-          H[5] = absA <= absB ? a : b;
-          return true;
-        }
-        y = nextUp(y);
       } else {
         b = y;
         absB = am;
-        if (nextUp(a) >= b) {
-          H[5] = absA <= absB ? a : b;
-          return true;
-        }
-        y = nextDown(y);
       }
+      if (nextUp(a) >= b) {
+        H[5] = absA <= absB ? a : b;
+        return true;
+      }
+      y = above ? nextUp(y) : nextDown(y);
     }
   }
   H[0] = a;
