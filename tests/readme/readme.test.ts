@@ -27,3 +27,29 @@ it("the README usage example runs and prints the digits of pi it promises", () =
     rmSync(dir, { recursive: true, force: true });
   }
 });
+
+it("the engine package README's examples run and print what the text describes", () => {
+  const readme = readFileSync(join(root, "packages", "engine", "README.md"), "utf8");
+  const blocks = [...readme.matchAll(/```js\n([\s\S]*?)```/g)].map((m) => m[1] as string);
+  expect(blocks.length).toBe(2);
+  const dir = mkdtempSync(join(root, "tests", "readme", ".tmp-"));
+  try {
+    const run = (code: string, name: string): string => {
+      const file = join(dir, name);
+      writeFileSync(file, code);
+      return execFileSync(process.execPath, [file], { encoding: "utf8" });
+    };
+    const world = run(blocks[0] as string, "world.mjs");
+    expect(world).toMatch(/^bodyBody [\d.]+ ball cue$/m);
+    expect(world).toMatch(/^stop [\d.]+ cue null$/m);
+    expect(world).toMatch(/^bodyLine [\d.]+ ball cushion$/m);
+    expect(world).toContain("id: 'cue'");
+    const timeline = run(blocks[1] as string, "timeline.mjs");
+    const lines = timeline.trim().split("\n");
+    expect(Number(lines[0]?.split(" ")[0])).toBeGreaterThan(0);
+    expect(timeline).toContain("id: 'a'");
+    expect(lines.at(-1)).toMatch(/^20 \d+$/);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
