@@ -17,35 +17,26 @@
  * 3. Ends of one sign: one de Casteljau halving; both halves of one sign → no root.
  * 4. Ends of one sign and p′'s Bernstein coefficients (the differences) with exactly one certified
  *    sign change: p has exactly one critical point in [lo, lo + h] — the derivative splitting of
- *    the issue with a single split point: the critical point x* by safeguarded Halley on p′, the
- *    exact sign of p at x* (plain Horner with its bound; at noise level → handed back, as the
- *    general method repairs such points exactly), then p is monotone on [lo, x*] and [x*, lo + h]:
- *    no root, or one root on each side whose ends differ in sign.
- * 5. Otherwise, Bernstein subdivision: de Casteljau halving, left to right, at most MAX_DEPTH
- *    levels, the margin grown by MARGIN_PER_LEVEL per halving (a halving's four rounds of averaging
- *    add at most 4u·max|b| ≤ 4u·scale). Descartes' rule for the Bernstein basis on each piece whose
- *    coefficients all have certified signs: no sign change → no root; exactly one → exactly one
- *    simple root inside. A one-root piece's real ends lo + s·h are replaced by the nearest doubles,
- *    whose exact signs must match the certified signs at the real ends (so no root lies between a
- *    double and its real end). Pieces cover [lo, lo + h], so every root is found exactly once.
- * Each root: safeguarded Halley in its bracket (newton.ts's iteration, stopped at 2^-11), then one
- * compensated Horner evaluation and the certified local model of certify.ts's refineRoot decide
- * the two doubles around it (refineRoot itself finishes the rare undecided cases, exact fallback
- * included). Loops are bounded (ROOTS_MAX_ITERATIONS, MAX_DEPTH); RootSolverError as newton.ts.
+ *    the issue with a single split point (quarticPieces.ts's unimodal).
+ * 5. Otherwise, Bernstein subdivision (quarticIsolate.ts), each one-root piece solved by
+ *    quarticPieces.ts's solveOnes.
+ * Each root: safeguarded Halley in its bracket (quarticHalley.ts), then one compensated Horner
+ * evaluation and certify.ts's certified local model decide the two doubles around it
+ * (quarticRefine.ts; refineRoot finishes the rare undecided cases, exact fallback included).
+ * Loops are bounded (ROOTS_MAX_ITERATIONS, MAX_DEPTH); RootSolverError as newton.ts.
  *
- * Modules: this one (the driver: input checks, steps 1–3, dispatch), quarticRegisters.ts (the
- * typed arrays that carry doubles between them), quarticSigns.ts (certified signs of p, the
- * second halving), quarticPieces.ts (step 4, and the roots of one-root pieces),
- * quarticIsolate.ts (step 5's subdivision), quarticHalley.ts and quarticRefine.ts (each root).
- *
- * Speed notes (V8): doubles pass between these functions through the registers' typed arrays,
- * never as arguments or results of calls V8 does not inline (it boxes those); each module binds
- * the registers and imported constants to module-local consts (imports are a load and a check at
- * every use). As one module this path measured 915–919 instructions and 398–432 cycles per call on
- * the benchmark's collision quartics (perf stat, 8·10⁶ calls minus an empty loop); split as now,
- * 929–932 instructions (+1.4%). Written out rather than shared: the de Casteljau halving here, in
- * quarters and in isolate (a shared halving function, inlined, storing its halves in a typed
- * array, measured +10% instructions; not inlined, worse).
+ * Speed notes (V8): doubles pass between the hot path's modules through the typed arrays of
+ * quarticRegisters.ts, never as arguments or results of calls V8 does not inline (it boxes those);
+ * each module binds the registers and imported constants to module-local consts (an import is a
+ * load and a check at every use). Measured on the benchmark's 4000 collision quartics on [0, 10]
+ * (perf stat, 24·10⁶ calls minus an empty loop, 5 interleaved runs, load average 2.7–3.2): as one
+ * module 875–895 instructions (median 878) and 370–385 cycles (median 375) per call; split as now
+ * 878–897 (median 880, +0.3%) and 376–388 cycles (median 382); results bit-identical on 752,010
+ * calls (bench set, property-test kinds). Written out rather than shared, because sharing measured
+ * more: the de Casteljau halving here, in quarticSigns.ts's quarters and in quarticIsolate.ts
+ * (a shared halving storing its halves in a typed array: +2.8% instructions; returning a bit mask
+ * with double arguments: not inlined, +10%); quarticRegisters.ts's count of roots as a module
+ * variable behind accessor functions (+4%; an object field is level).
  */
 
 import { ROOTS_SUBDIVISION_MARGIN_GROWTH, UNIT_ROUNDOFF } from "../tolerances.js";
@@ -211,8 +202,7 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
   const sameEnds = sLo > 0 ? b4 > margin : b4 < -margin;
   if (sameEnds) {
     // One de Casteljau halving often proves one sign on both halves (margin grown as in isolate).
-    // (Written out here, as in quarters and isolate: through a shared function, whose double
-    // arguments V8 boxes unless it inlines the call, it measured +10% instructions per call.)
+    // (Written out, as in quarters and isolate: see the header.)
     const l1 = 0.5 * (b0 + b1);
     const m1 = 0.5 * (b1 + b2);
     const m2 = 0.5 * (b2 + b3);

@@ -13,8 +13,9 @@
  * noise level or MAX_DEPTH is reached undecided (roots closer than h/2^MAX_DEPTH: clusters, double
  * roots). The pieces cover [lo, lo + h], so every root is found exactly once.
  *
- * The halving is written out here rather than calling quarticSigns.ts's halve: this is the
- * subdivision's inner loop, and its halves stay in registers (the right one goes to the stack).
+ * The halving is written out here (as in quartic.ts and quarticSigns.ts's quarters): this is the
+ * subdivision's inner loop, and its halves stay in registers (the right one goes to the stack);
+ * halvings through a shared function measured more instructions (see quartic.ts).
  */
 
 import { ROOTS_SUBDIVISION_MARGIN_GROWTH } from "../tolerances.js";
