@@ -3,7 +3,8 @@
  * - scaling: events/s of the dilute gas (10 % packing, speed 10) against N, per-event cost ratio
  *   N = 1e5 vs 1e3 (target ≤ 2) and events/s at N = 1e4 (target ≥ 1e6); heap bytes per body.
  *   Beside each row, the same gas run by minimalGas.mjs (the algorithm with every product feature
- *   stripped): the ceiling plain JavaScript reaches here, timed the same way.
+ *   stripped) and by its WebAssembly twin (bench/wasm): the ceilings JavaScript and WebAssembly reach
+ *   here with this algorithm, timed the same way.
  * - galperin7: Galperin's billiard with 7 digits run to idle (target < 2 s, 3,141,592 collisions).
  * - reference: the fast engine against the tests' all-pairs reference simulator (reference.mjs).
  * - ablations: each World `optimizations` switch off in turn, on the scene where it should matter,
@@ -16,6 +17,7 @@ import { gc, median, nowNs, timedRuns } from "../lib/timing.mjs";
 import { buildWorld } from "../peers/chapgame.mjs";
 import { galperin } from "../scenes/galperin.mjs";
 import { gas } from "../scenes/gas.mjs";
+import { createMinimalGasWasm } from "../wasm/minimalGasWasm.mjs";
 import { createMinimalGas } from "./minimalGas.mjs";
 import { againstReference } from "./reference.mjs";
 
@@ -29,15 +31,23 @@ function warmUp(world, events, seconds) {
   return { events: done, ns: nowNs() - a };
 }
 
-/** Events/s of minimalGas.mjs on the same scene: warm-up like the engine's, then `runs` batches. */
-function minimalRate(scene, batch, runs) {
+const warmed = new Set();
+
+/** Events/s of a ceiling loop (`create(scene)` → { advance }): warm-up like the engine's, then `runs` batches. */
+async function ceilingRate(create, scene, batch, runs) {
+  if (!warmed.has(create)) {
+    // Compile the loop once before any timing (the engine is warm from the sections before).
+    const warm = await create(gas({ n: 1000, packing: 0.1, speed: 10, seed: 2, span: 1e9 }));
+    warm.advance(300000);
+    warmed.add(create);
+  }
   gc();
-  const gasLoop = createMinimalGas(scene);
-  gasLoop.advance(2 * scene.bodies.length);
+  const loop = await create(scene);
+  loop.advance(2 * scene.bodies.length);
   const t = timedRuns(
     () => {
       const a = nowNs();
-      gasLoop.advance(batch);
+      loop.advance(batch);
       return nowNs() - a;
     },
     { runs, budgetNs: 30e9 },
@@ -45,7 +55,16 @@ function minimalRate(scene, batch, runs) {
   return { eventsPerSecond: batch / (t.medianNs / 1e9), nsPerEvent: t.medianNs / batch };
 }
 
-function scaling({ quick, engine, log }) {
+/** The WebAssembly ceiling, or its error (a failed compile must not cost the engine's numbers). */
+async function wasmRate(scene, batch, runs) {
+  try {
+    return await ceilingRate(createMinimalGasWasm, scene, batch, runs);
+  } catch (e) {
+    return { error: String(e.message ?? e) };
+  }
+}
+
+async function scaling({ quick, engine, log }) {
   const ns = quick ? [1000, 10000, 100000] : [1000, 3000, 10000, 30000, 100000];
   const target = quick ? 0.3 : 1.5; // seconds per timed batch
   const runs = quick ? 3 : 5;
@@ -74,7 +93,8 @@ function scaling({ quick, engine, log }) {
         { runs, budgetNs: 30e9 },
       );
       const eventsPerSecond = batch / (t.medianNs / 1e9);
-      const minimal = minimalRate(scene, batch, runs);
+      const minimal = await ceilingRate(createMinimalGas, scene, batch, runs);
+      const wasm = await wasmRate(scene, batch, runs);
       rows.push({
         n,
         batch,
@@ -87,9 +107,12 @@ function scaling({ quick, engine, log }) {
         simTime: world.time,
         minimalEventsPerSecond: minimal.eventsPerSecond,
         minimalNsPerEvent: minimal.nsPerEvent,
+        wasmEventsPerSecond: wasm.eventsPerSecond ?? null,
+        wasmNsPerEvent: wasm.nsPerEvent ?? null,
+        wasmError: wasm.error ?? null,
       });
       log(
-        `  scaling N=${n}: ${(eventsPerSecond / 1e6).toFixed(3)} M events/s (minimal JS loop ${(minimal.eventsPerSecond / 1e6).toFixed(3)}), ${heapBytesPerBody.toFixed(0)} B/body`,
+        `  scaling N=${n}: ${(eventsPerSecond / 1e6).toFixed(3)} M events/s (minimal loop: JS ${(minimal.eventsPerSecond / 1e6).toFixed(3)}, WebAssembly ${wasm.error ? `error: ${wasm.error}` : (wasm.eventsPerSecond / 1e6).toFixed(3)}), ${heapBytesPerBody.toFixed(0)} B/body`,
       );
     } catch (e) {
       rows.push({ n, error: String(e.message ?? e) });
@@ -106,6 +129,9 @@ function scaling({ quick, engine, log }) {
     costRatio1e5over1e3: r3 && r5 ? r5.nsPerEvent / r3.nsPerEvent : null,
     minimalEventsPerSecondAt1e4: r4?.minimalEventsPerSecond ?? null,
     minimalCostRatio1e5over1e3: r3 && r5 ? r5.minimalNsPerEvent / r3.minimalNsPerEvent : null,
+    wasmEventsPerSecondAt1e4: r4?.wasmEventsPerSecond ?? null,
+    wasmCostRatio1e5over1e3:
+      r3?.wasmNsPerEvent && r5?.wasmNsPerEvent ? r5.wasmNsPerEvent / r3.wasmNsPerEvent : null,
     targets: { eventsPerSecondAt1e4: 1e6, costRatio: 2 },
   };
 }
@@ -307,7 +333,7 @@ export async function runEngine(ctx) {
   if (typeof ctx.engine.World !== "function")
     return { error: "World is not exported by @chapgame/engine yet" };
   const out = {};
-  out.scaling = scaling(ctx);
+  out.scaling = await scaling(ctx);
   out.galperin7 = galperinRun(ctx, 7);
   out.reference = await againstReference(ctx);
   out.ablations = ablations(ctx);

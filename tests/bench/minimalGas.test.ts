@@ -1,5 +1,5 @@
 /**
- * The benchmark's ceiling loop (bench/engine/minimalGas.mjs) must simulate the same physics as the
+ * The benchmark's ceiling loops (bench/engine/minimalGas.mjs and its WebAssembly twin) must simulate the same physics as the
  * engine, or its events/s mean nothing: energy is kept, discs never overlap or leave the box, and
  * after the same number of collisions the simulated time agrees with the engine's (the runs diverge
  * chaotically, so only statistically: the mean time between collisions is a property of the gas).
@@ -8,6 +8,7 @@ import { describe, expect, it } from "vitest";
 import { createMinimalGas } from "../../bench/engine/minimalGas.mjs";
 import { buildWorld } from "../../bench/peers/chapgame.mjs";
 import { gas } from "../../bench/scenes/gas.mjs";
+import { createMinimalGasWasm } from "../../bench/wasm/minimalGasWasm.mjs";
 import * as engine from "../../packages/engine/src/index.js";
 
 const scene = gas({ n: 400, packing: 0.1, speed: 10, seed: 5, span: 1e9 });
@@ -46,5 +47,11 @@ describe("bench ceiling: minimalGas", () => {
     const w = buildWorld(engine, scene);
     w.advance({ maxEvents: EVENTS });
     expect(Math.abs(loop.time() - w.time) / w.time).toBeLessThan(0.05);
+  });
+
+  it("its WebAssembly twin runs the same event sequence: the same time after as many collisions, bit for bit", async () => {
+    const twin = await createMinimalGasWasm(scene);
+    twin.advance(EVENTS);
+    expect(Object.is(twin.time(), loop.time())).toBe(true);
   });
 });
