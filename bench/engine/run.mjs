@@ -33,6 +33,12 @@ function warmUp(world, events, seconds) {
 
 const warmed = new Set();
 
+/** Bytes in use by JS objects and by ArrayBuffer backing stores (typed arrays live outside the heap). */
+function memoryInUse() {
+  const m = process.memoryUsage();
+  return m.heapUsed + m.arrayBuffers;
+}
+
 /** Events/s of a ceiling loop (`create(scene)` → { advance }): warm-up like the engine's, then `runs` batches. */
 async function ceilingRate(create, scene, batch, runs) {
   if (!warmed.has(create)) {
@@ -71,14 +77,15 @@ async function scaling({ quick, engine, log }) {
   const rows = [];
   for (const n of ns) {
     try {
-      gc();
-      const heap0 = process.memoryUsage().heapUsed;
       const scene = gas({ n, packing: 0.1, speed: 10, seed: 11, span: 1e9 });
+      gc();
+      const heap0 = memoryInUse();
       const t0 = nowNs();
       const world = buildWorld(engine, scene);
       const buildNs = nowNs() - t0;
       gc();
-      const heapBytesPerBody = (process.memoryUsage().heapUsed - heap0) / n;
+      // The world's own memory: JS heap plus the typed arrays' backing stores (outside the heap).
+      const heapBytesPerBody = (memoryInUse() - heap0) / n;
       // warm-up: leaves the grid start (about two events per disc) and measures the rate
       const w = warmUp(world, 2 * n, quick ? 1 : 4);
       const rate = w.events / (w.ns / 1e9);

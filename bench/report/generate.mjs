@@ -193,7 +193,7 @@ function engineSection(e, out, svgs) {
   }
   const sc = e.scaling;
   out.push(
-    "Dilute gas (10 % packing, r = 1, speed 10, box walls), timed batches of events after a warm-up that leaves the grid start; events/s = batch / median batch time. Heap per body = heap growth when building the world / N.\n",
+    "Dilute gas (10 % packing, r = 1, speed 10, box walls), timed batches of events after a warm-up that leaves the grid start; events/s = batch / median batch time. Memory per body = growth of the JS heap plus ArrayBuffer memory (where typed arrays live) when building the world, / N; typed arrays grow by doubling, so it varies with how full they are.\n",
   );
   out.push(
     table(
@@ -205,7 +205,7 @@ function engineSection(e, out, svgs) {
         "ns per event",
         "minimal loop, JS, events/s",
         "minimal loop, WebAssembly, events/s",
-        "heap bytes per body",
+        "memory per body, bytes",
         "build time",
       ],
       sc.rows.map((r) =>
