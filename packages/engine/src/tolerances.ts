@@ -58,6 +58,14 @@ export const ROOTS_SUBDIVISION_MARGIN_GROWTH = 0.25;
  */
 export const ROOTS_HOT_HALLEY_STOP = 2 ** -11;
 
+/**
+ * The quartic hot path's certified local model (roots/quarticRefine.ts): |h| ≤ this·|x0|. Over the
+ * span p̃″ grows by at most (1 + 2^-12)² − 1 < 2^-10 (degree 4), inside MODEL_SAFETY's 1% (certify.ts
+ * uses 2^-30 for any degree); and y − x0 stays exact (Sterbenz). Wider than 2^-30 so that a
+ * Halley start only ~2^-25 accurate still gets its ulp from one compensated evaluation.
+ */
+export const ROOTS_HOT_MODEL_SPAN = 2 ** -12;
+
 // ---- simulation (owned by src/sim and src/physics) -----------------------------------------
 // (the simulation appends its named tolerances here)
 

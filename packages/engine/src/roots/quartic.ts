@@ -123,11 +123,24 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
   const a2 = Math.abs(c2);
   const a3 = Math.abs(c3);
   const a4 = Math.abs(c4);
-  const maxAbs = Math.max(a0, a1, a2, a3, a4);
-  if (!(maxAbs >= SMALL && maxAbs <= BIG)) return false;
+  // (Comparison chains, not Math.min/max: V8 compiles those to data-dependent branches.)
+  if (
+    !(
+      (a0 >= SMALL || a1 >= SMALL || a2 >= SMALL || a3 >= SMALL || a4 >= SMALL) &&
+      a0 <= BIG &&
+      a1 <= BIG &&
+      a2 <= BIG &&
+      a3 <= BIG &&
+      a4 <= BIG
+    )
+  )
+    return false;
   // Cauchy's bound, as realRoots: every root has |t| < 1 + max|c_i| / |c4|. (No division unless
   // an end may lie beyond it: |x|·|c4| ≤ maxAbs, computed, gives |x| < the bound.)
-  if (hi * a4 > maxAbs || -lo * a4 > maxAbs) {
+  // biome-ignore lint/complexity/useMathMinMax: Math.max compiles to data-dependent branches in V8
+  const far = (hi > -lo ? hi : -lo) * a4;
+  if (far > a0 && far > a1 && far > a2 && far > a3 && far > a4) {
+    const maxAbs = Math.max(a0, a1, a2, a3, a4);
     const bound = (1 + maxAbs / a4) * (1 + 2 ** -48);
     if (lo < -bound) lo = -bound;
     if (hi > bound) hi = bound;
@@ -172,7 +185,12 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
   const b3 = t0 + 3 * e1 + 3 * e2 + e3;
   const b4 = t0 + 4 * e1 + 6 * e2 + 4 * e3 + e4;
   // Depth 0 (most calls end here): every coefficient of one sign, no root.
-  if (Math.min(b0, b1, b2, b3, b4) > margin || Math.max(b0, b1, b2, b3, b4) < -margin) return true;
+  if (
+    b0 > margin
+      ? b1 > margin && b2 > margin && b3 > margin && b4 > margin
+      : b0 < -margin && b1 < -margin && b2 < -margin && b3 < -margin && b4 < -margin
+  )
+    return true;
   // The exact sign of p(lo) = b0: certified by the margin, else (p(lo) at rounding-noise level:
   // touching discs) decided exactly; p(lo) = 0 goes to the general path.
   let sLo = b0 > margin ? 1 : b0 < -margin ? -1 : 0;
@@ -214,8 +232,8 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
     const r1 = 0.5 * (m3 + r2);
     const mid = 0.5 * (l3 + r1);
     const m = margin * (1 + MARGIN_PER_LEVEL);
-    const okL = sLo > 0 ? Math.min(l1, l2, l3, mid) > m : Math.max(l1, l2, l3, mid) < -m;
-    const okR = sLo > 0 ? Math.min(mid, r1, r2, r3) > m : Math.max(mid, r1, r2, r3) < -m;
+    const okL = sLo > 0 ? l1 > m && l2 > m && l3 > m && mid > m : l1 < -m && l2 < -m && l3 < -m && mid < -m;
+    const okR = sLo > 0 ? mid > m && r1 > m && r2 > m && r3 > m : mid < -m && r1 < -m && r2 < -m && r3 < -m;
     if (okL && okR) return true;
     // A second halving of the undecided half (or halves) settles many more near misses (the
     // halves' common end mid must have the sign too).
@@ -246,7 +264,7 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
     const d2 = e1 + 2 * e2 + e3;
     const d3 = e1 + 3 * e2 + 3 * e3 + e4;
     const dm = 3 * margin;
-    if (Math.min(Math.abs(d0), Math.abs(d1), Math.abs(d2), Math.abs(d3)) > dm) {
+    if (Math.abs(d0) > dm && Math.abs(d1) > dm && Math.abs(d2) > dm && Math.abs(d3) > dm) {
       const k01 = d0 < 0 !== d1 < 0;
       const k12 = d1 < 0 !== d2 < 0;
       const k23 = d2 < 0 !== d3 < 0;

@@ -50,7 +50,8 @@ export function isolate(loSign: number): number {
     // opposite signs and certain interior signs, count the sign changes (odd: 1 or 3).
     // The sign of the piece's left end: certified by the margin, or exact at lo (loSign).
     const sl = s === 0 ? loSign : b0 > m ? 1 : b0 < -m ? -1 : 0;
-    let leaf = sl > 0 ? Math.min(b1, b2, b3, b4) > m : sl < 0 && Math.max(b1, b2, b3, b4) < -m;
+    let leaf =
+      sl > 0 ? b1 > m && b2 > m && b3 > m && b4 > m : sl < 0 && b1 < -m && b2 < -m && b3 < -m && b4 < -m;
     let changes = 0;
     if (!leaf) {
       if (sl === 0 || !(Math.abs(b4) > m)) return -1; // a piece end at noise level

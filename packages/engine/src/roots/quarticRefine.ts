@@ -12,8 +12,13 @@
  * finishes from the narrowed bracket with full evaluations (exact fallback included).
  */
 
-import { COMP_HORNER_BOUND_FACTOR, PLAIN_HORNER_BOUND_FACTOR, UNIT_ROUNDOFF } from "../tolerances.js";
-import { MODEL_MIN_X, MODEL_SAFETY, MODEL_SPAN, refineRoot } from "./certify.js";
+import {
+  COMP_HORNER_BOUND_FACTOR,
+  PLAIN_HORNER_BOUND_FACTOR,
+  ROOTS_HOT_MODEL_SPAN,
+  UNIT_ROUNDOFF,
+} from "../tolerances.js";
+import { MODEL_MIN_X, MODEL_SAFETY, refineRoot } from "./certify.js";
 import { nextDown, nextUp } from "./nextDouble.js";
 import * as reg from "./quarticRegisters.js";
 
@@ -23,7 +28,7 @@ const H = reg.H;
 const U = UNIT_ROUNDOFF;
 const B4 = PLAIN_HORNER_BOUND_FACTOR * 4 * U;
 const COMP = COMP_HORNER_BOUND_FACTOR;
-const SPAN = MODEL_SPAN;
+const SPAN = ROOTS_HOT_MODEL_SPAN;
 const MIN_X = MODEL_MIN_X;
 const SAFETY = MODEL_SAFETY;
 /** compHorner.ts's constants: Dekker's split, underflow limits (see there). */
@@ -50,13 +55,14 @@ function refine(sa: number): boolean {
   const x = H[4] as number;
   if (!(x > a && x < b)) return false;
   // Compensated Horner (compHorner.ts, degree 4): s + r the value, e the sum of the |error terms|,
-  // pmin the smallest |product| (underflow check), d = p′, a1 = p̃′, a2 = p̃″/2, aa = p̃. The first
-  // round's updates of d, a1, a2, r, e and pmin from zero and +∞ are exact (d = c4, a1 = |c4|, …).
+  // noUnderflow every |product| ≥ UNDERFLOW, d = p′, a1 = p̃′, a2 = p̃″/2, aa = p̃. The first
+  // round's updates of d, a1, a2, r and e from zero are exact (d = c4, a1 = |c4|, …).
   let t = SPLIT * x;
   const xh = t - (t - x);
   const xl = x - xh;
   const ax = Math.abs(x);
-  const xm = Math.max(ax, 1);
+  // biome-ignore lint/complexity/useMathMinMax: Math.max compiles to data-dependent branches in V8
+  const xm = ax > 1 ? ax : 1;
   let s = Q[4] as number;
   let aa = Math.abs(s);
   let d = 0;
@@ -64,7 +70,7 @@ function refine(sa: number): boolean {
   let a1 = 0;
   let r = 0;
   let e = 0;
-  let pmin = Number.POSITIVE_INFINITY;
+  let noUnderflow = true; // every |product| ≥ UNDERFLOW (false for NaN)
   for (let k = 3; k >= 0; k--) {
     const ck = Q[k] as number;
     d = d * x + s;
@@ -80,7 +86,7 @@ function refine(sa: number): boolean {
     const q = pe + (p - (s - z) + (ck - z));
     r = r * x + q;
     e += Math.abs(q);
-    pmin = Math.min(pmin, Math.abs(p));
+    noUnderflow = noUnderflow && Math.abs(p) >= UNDERFLOW;
     aa = aa * ax + Math.abs(ck);
   }
   const v = s + r;
@@ -88,7 +94,7 @@ function refine(sa: number): boolean {
   const xm2 = xm * xm;
   const pw = xm2 * xm2;
   let bound = 0;
-  if (e !== 0 || !(pmin >= UNDERFLOW)) {
+  if (e !== 0 || !noUnderflow) {
     bound = COMP * (U * av + 16 * U * U * aa);
     if (!(aa >= pw * SLACK_FREE)) bound += TINY * 5 * pw;
   }
@@ -124,9 +130,13 @@ function refine(sa: number): boolean {
       const am0 = Math.abs(m0);
       const amu = Math.abs(mu);
       const amd = Math.abs(md);
-      const hm = Math.max(Math.abs(hu), Math.abs(hd));
+      // max(|hu|, |hd|), as hu > hd
+      // biome-ignore lint/complexity/useMathMinMax: Math.max compiles to data-dependent branches in V8
+      const hm = -hd > hu ? -hd : hu;
       // One error bound for the three points (the largest |h|, the largest |m|).
-      const err = SAFETY * (bound + hm * e1 + a2 * hm * hm + U * Math.max(am0, amu, amd));
+      // biome-ignore lint/complexity/useMathMinMax: Math.max compiles to data-dependent branches in V8
+      const amx = am0 > amu ? (am0 > amd ? am0 : amd) : amu > amd ? amu : amd;
+      const err = SAFETY * (bound + hm * e1 + a2 * hm * hm + U * amx);
       if (hm <= span && am0 > err) {
         const s0 = m0 > 0 ? 1 : -1;
         if (s0 === sa) {

@@ -71,5 +71,8 @@ export function quarters(off: number, sg: number): boolean {
   const l3 = 0.5 * (l2 + m3);
   const r1 = 0.5 * (m3 + r2);
   const mid = 0.5 * (l3 + r1);
-  return sg > 0 ? Math.min(l1, l2, l3, mid, r1, r2, r3) > m : Math.max(l1, l2, l3, mid, r1, r2, r3) < -m;
+  // (Comparison chains, not Math.min/max: V8 compiles those to data-dependent branches.)
+  return sg > 0
+    ? l1 > m && l2 > m && l3 > m && mid > m && r1 > m && r2 > m && r3 > m
+    : l1 < -m && l2 < -m && l3 < -m && mid < -m && r1 < -m && r2 < -m && r3 < -m;
 }
