@@ -112,9 +112,12 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
     return false;
   }
   // Exact early exit (no rounding): on t ≥ 0, coefficients all of the sign of c0 ≠ 0 keep p there.
+  // (Written with & on the comparisons: one branch, not one per sign, which would mispredict.)
   if (
     lo >= 0 &&
-    (c0 > 0 ? c1 >= 0 && c2 >= 0 && c3 >= 0 && c4 >= 0 : c0 < 0 && c1 <= 0 && c2 <= 0 && c3 <= 0 && c4 <= 0)
+    (c0 > 0
+      ? (+(c1 >= 0) & +(c2 >= 0) & +(c3 >= 0) & +(c4 >= 0)) !== 0
+      : c0 < 0 && (+(c1 <= 0) & +(c2 <= 0) & +(c3 <= 0) & +(c4 <= 0)) !== 0)
   ) {
     return true;
   }
@@ -184,11 +187,11 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
   const b2 = t0 + 2 * e1 + e2;
   const b3 = t0 + 3 * e1 + 3 * e2 + e3;
   const b4 = t0 + 4 * e1 + 6 * e2 + 4 * e3 + e4;
-  // Depth 0 (most calls end here): every coefficient of one sign, no root.
+  // Depth 0 (most calls end here): every coefficient of one sign, no root. (& as above.)
   if (
     b0 > margin
-      ? b1 > margin && b2 > margin && b3 > margin && b4 > margin
-      : b0 < -margin && b1 < -margin && b2 < -margin && b3 < -margin && b4 < -margin
+      ? (+(b1 > margin) & +(b2 > margin) & +(b3 > margin) & +(b4 > margin)) !== 0
+      : b0 < -margin && (+(b1 < -margin) & +(b2 < -margin) & +(b3 < -margin) & +(b4 < -margin)) !== 0
   )
     return true;
   // The exact sign of p(lo) = b0: certified by the margin, else (p(lo) at rounding-noise level:
