@@ -8,7 +8,7 @@ import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { EventPage } from "../remote/protocol";
 import { formatNumber } from "./EditableCell";
 import { spacerRow, useRowWindow } from "./useRowWindow";
-import { useSlowTime } from "./useSlowTime";
+import { useSlowTime } from "./useThrottledTime";
 
 const BEFORE = 30;
 const AFTER = 30;

@@ -9,7 +9,7 @@ import { formatNumber } from "./EditableCell";
 import { EnergyPlot } from "./EnergyPlot";
 import { kinetics } from "./energy";
 import { useLiveFrame } from "./useLiveFrame";
-import { useSlowTime } from "./useSlowTime";
+import { useSlowTime } from "./useThrottledTime";
 
 const SAMPLES = 120;
 

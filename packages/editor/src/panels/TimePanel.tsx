@@ -8,7 +8,7 @@ import { useEffect, useMemo, useState } from "react";
 import { useEditor, useInfoValue } from "../EditorContext";
 import { formatNumber, parseNumber } from "./EditableCell";
 import { TimeSlider } from "./TimeSlider";
-import { useShownTime } from "./useShownTime";
+import { useShownTime } from "./useThrottledTime";
 
 const TICKS = 300;
 
