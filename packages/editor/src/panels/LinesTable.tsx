@@ -1,9 +1,8 @@
 /** The Lines table: id, kind, both points of every line, ray and segment; editable; Add and Delete. */
 
-import { useEditor, useUi } from "../EditorContext";
-import type { LineKind, Vec2 } from "../engineTypes";
-import { DeleteRowButton } from "./DeleteRowButton";
-import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
+import { useEditor } from "../EditorContext";
+import type { LineKind } from "../engineTypes";
+import { CoordinateCell, ObjectRow } from "./ObjectRow";
 import { useLiveFrame } from "./useLiveFrame";
 
 const KINDS: LineKind[] = ["line", "ray", "segment"];
@@ -17,7 +16,6 @@ const ENDS = [
 export function LinesTable() {
   const editor = useEditor();
   const frame = useLiveFrame();
-  const selection = useUi((s) => s.selection);
   const lines = frame?.lines ?? [];
 
   const add = () => {
@@ -47,55 +45,31 @@ export function LinesTable() {
             </tr>
           </thead>
           <tbody>
-            {lines.map((l) => {
-              const hot = selection?.kind === "line" && selection.id === l.id;
-              return (
-                <tr
-                  key={l.id}
-                  aria-selected={hot}
-                  className={hot ? "selected" : undefined}
-                  onClick={() => editor.ui.setState({ selection: { kind: "line", id: l.id } })}
-                >
-                  <td>
-                    <EditableCell
-                      label={`${l.id} id`}
-                      value={l.id}
-                      size={5}
-                      onCommit={(t) => editor.rename("line", l.id, t)}
-                    />
-                  </td>
-                  <td>
-                    <select
-                      aria-label={`${l.id} kind`}
-                      value={l.kind}
-                      onChange={(e) => void editor.updateLine(l.id, { kind: e.target.value as LineKind })}
-                    >
-                      {KINDS.map((k) => (
-                        <option key={k}>{k}</option>
-                      ))}
-                    </select>
-                  </td>
-                  {ENDS.map((e) => (
-                    <td key={e.name}>
-                      <EditableCell
-                        label={`${l.id} ${e.name}`}
-                        value={formatNumber(l[e.end][e.axis])}
-                        size={6}
-                        onCommit={async (text) => {
-                          const x = parseNumber(text);
-                          if (x === null) return `${e.name}: must be a number`;
-                          const p: Vec2 = e.axis === 0 ? [x, l[e.end][1]] : [l[e.end][0], x];
-                          return editor.updateLine(l.id, { [e.end]: p });
-                        }}
-                      />
-                    </td>
-                  ))}
-                  <td>
-                    <DeleteRowButton kind="line" id={l.id} />
-                  </td>
-                </tr>
-              );
-            })}
+            {lines.map((l) => (
+              <ObjectRow key={l.id} kind="line" id={l.id}>
+                <td>
+                  <select
+                    aria-label={`${l.id} kind`}
+                    value={l.kind}
+                    onChange={(e) => void editor.updateLine(l.id, { kind: e.target.value as LineKind })}
+                  >
+                    {KINDS.map((k) => (
+                      <option key={k}>{k}</option>
+                    ))}
+                  </select>
+                </td>
+                {ENDS.map((e) => (
+                  <CoordinateCell
+                    key={e.name}
+                    id={l.id}
+                    name={e.name}
+                    point={l[e.end]}
+                    axis={e.axis}
+                    onCommit={(p) => editor.updateLine(l.id, { [e.end]: p })}
+                  />
+                ))}
+              </ObjectRow>
+            ))}
           </tbody>
         </table>
       </div>

@@ -1,15 +1,12 @@
 /** The Points table: id and position of every fixed point; editable; Add and Delete. */
 
-import { useEditor, useUi } from "../EditorContext";
-import type { Vec2 } from "../engineTypes";
-import { DeleteRowButton } from "./DeleteRowButton";
-import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
+import { useEditor } from "../EditorContext";
+import { CoordinateCell, ObjectRow } from "./ObjectRow";
 import { useLiveFrame } from "./useLiveFrame";
 
 export function PointsTable() {
   const editor = useEditor();
   const frame = useLiveFrame();
-  const selection = useUi((s) => s.selection);
   const points = frame?.points ?? [];
 
   return (
@@ -37,44 +34,20 @@ export function PointsTable() {
             </tr>
           </thead>
           <tbody>
-            {points.map((p) => {
-              const hot = selection?.kind === "point" && selection.id === p.id;
-              const cell = (axis: 0 | 1) => (
-                <EditableCell
-                  label={`${p.id} ${axis === 0 ? "x" : "y"}`}
-                  value={formatNumber(p.p[axis])}
-                  size={6}
-                  onCommit={async (text) => {
-                    const x = parseNumber(text);
-                    if (x === null) return `${axis === 0 ? "x" : "y"}: must be a number`;
-                    const q: Vec2 = axis === 0 ? [x, p.p[1]] : [p.p[0], x];
-                    return editor.updatePoint(p.id, q);
-                  }}
-                />
-              );
-              return (
-                <tr
-                  key={p.id}
-                  aria-selected={hot}
-                  className={hot ? "selected" : undefined}
-                  onClick={() => editor.ui.setState({ selection: { kind: "point", id: p.id } })}
-                >
-                  <td>
-                    <EditableCell
-                      label={`${p.id} id`}
-                      value={p.id}
-                      size={5}
-                      onCommit={(t) => editor.rename("point", p.id, t)}
-                    />
-                  </td>
-                  <td>{cell(0)}</td>
-                  <td>{cell(1)}</td>
-                  <td>
-                    <DeleteRowButton kind="point" id={p.id} />
-                  </td>
-                </tr>
-              );
-            })}
+            {points.map((p) => (
+              <ObjectRow key={p.id} kind="point" id={p.id}>
+                {([0, 1] as const).map((axis) => (
+                  <CoordinateCell
+                    key={axis}
+                    id={p.id}
+                    name={axis === 0 ? "x" : "y"}
+                    point={p.p}
+                    axis={axis}
+                    onCommit={(q) => editor.updatePoint(p.id, q)}
+                  />
+                ))}
+              </ObjectRow>
+            ))}
           </tbody>
         </table>
       </div>

@@ -1,0 +1,66 @@
+/**
+ * Shared pieces of the Lines and Points tables.
+ * - ObjectRow: a row that selects its object when clicked and is marked while selected. It starts
+ *   with the editable id cell (a rename is one undo step) and ends with the ✕ button.
+ * - CoordinateCell: one coordinate of a point, editable. Text that is not a number is refused in
+ *   place and names the field. A number commits the point with that one coordinate replaced.
+ */
+import type { ReactNode } from "react";
+import { useEditor, useUi } from "../EditorContext";
+import type { Vec2 } from "../engineTypes";
+import { DeleteRowButton } from "./DeleteRowButton";
+import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
+
+export function ObjectRow({
+  kind,
+  id,
+  children,
+}: {
+  kind: "line" | "point";
+  id: string;
+  children: ReactNode;
+}) {
+  const editor = useEditor();
+  const hot = useUi((s) => s.selection?.kind === kind && s.selection.id === id);
+  return (
+    <tr
+      aria-selected={hot}
+      className={hot ? "selected" : undefined}
+      onClick={() => editor.ui.setState({ selection: { kind, id } })}
+    >
+      <td>
+        <EditableCell label={`${id} id`} value={id} size={5} onCommit={(t) => editor.rename(kind, id, t)} />
+      </td>
+      {children}
+      <td>
+        <DeleteRowButton kind={kind} id={id} />
+      </td>
+    </tr>
+  );
+}
+
+export function CoordinateCell(props: {
+  /** The object's id; the cell's accessible name is "<id> <name>". */
+  id: string;
+  /** The field's name, e.g. "x" or "y2". */
+  name: string;
+  point: Vec2;
+  axis: 0 | 1;
+  onCommit: (p: Vec2) => Promise<string | null>;
+}) {
+  const { id, name, point, axis, onCommit } = props;
+  return (
+    <td>
+      <EditableCell
+        label={`${id} ${name}`}
+        value={formatNumber(point[axis])}
+        size={6}
+        onCommit={async (text) => {
+          const x = parseNumber(text);
+          if (x === null) return `${name}: must be a number`;
+          return onCommit(axis === 0 ? [x, point[1]] : [point[0], x]);
+        }}
+      />
+    </td>
+  );
+}
