@@ -1,7 +1,7 @@
 /**
  * Property tests of the Timeline on random scenes (discs with and without friction, finite and
- * infinite masses, in a box of four segments with a point). Each property logs its seed; rerun one
- * with SEED=<n>.
+ * infinite masses, in a box of four segments with a point). Each property logs its seed (fixed by
+ * default, so CI is reproducible); explore others with SEED=<n>.
  */
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
@@ -13,7 +13,8 @@ import { Timeline } from "./timeline.js";
 
 const RUNS = Number(process.env.RUNS ?? 40);
 function seedFor(name: string): number {
-  const seed = process.env.SEED ? Number(process.env.SEED) : Date.now() % 2 ** 31;
+  // A fixed default keeps CI reproducible; set SEED to explore others.
+  const seed = process.env.SEED ? Number(process.env.SEED) : 20261122;
   console.log(`${name}: seed ${seed}`);
   return seed;
 }
@@ -137,7 +138,9 @@ describe("Timeline properties", () => {
         try {
           tl.apply(action);
         } catch (e) {
-          expect(String(e)).toMatch(/would overlap/);
+          // Refusals: an edit that would overlap bodies, or one that drives the scene into a Zeno
+          // state (an immovable disc given a velocity can crush a disc against a wall).
+          expect(String(e)).toMatch(/would overlap|Zeno state/);
           expect(observe(tl, H, at)).toStrictEqual(before);
           return;
         }

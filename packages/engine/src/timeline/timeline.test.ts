@@ -176,6 +176,29 @@ describe("a scene the exact model cannot continue (Zeno)", () => {
   });
 });
 
+describe("an edit that drives the scene into a Zeno state is refused and changes nothing", () => {
+  it("an immovable disc given a velocity that crushes a disc against the wall", () => {
+    // found by the "past" property (seed 15429542, shrunk by hand): apply() recomputes the future,
+    // the World reports the crush as a SimulationError, and the timeline keeps its former history.
+    const box: Action[] = [
+      { time: 0, type: "addLine", id: "s", p1: [0, 0], p2: [20, 0], kind: "segment" },
+      { time: 0, type: "addLine", id: "e", p1: [20, 0], p2: [20, 20], kind: "segment" },
+      { time: 0, type: "addLine", id: "n", p1: [20, 20], p2: [0, 20], kind: "segment" },
+      { time: 0, type: "addLine", id: "w", p1: [0, 20], p2: [0, 0], kind: "segment" },
+      { time: 0, type: "addBody", id: "b0", x: 3, y: 3, r: 0.3, m: 0.5, mu: 0, v: [-0.1, 0] },
+      { time: 0, type: "addBody", id: "b1", x: 7, y: 3, r: 0.3, m: Number.POSITIVE_INFINITY, mu: 0 },
+    ];
+    const tl = Timeline.fromScene(scene(box, 0.5));
+    tl.prolongTo(1.35);
+    const before = { horizon: tl.horizon, log: tl.eventsBetween(0, 1.35), at1: tl.stateAt(1) };
+    expect(() => tl.apply({ time: 1e-9, type: "giveVelocity", id: "b1", v: [-5, 0] })).toThrow(
+      SimulationError,
+    );
+    expect(tl.actions).toHaveLength(box.length);
+    expect({ horizon: tl.horizon, log: tl.eventsBetween(0, 1.35), at1: tl.stateAt(1) }).toStrictEqual(before);
+  });
+});
+
 describe("history storage", () => {
   it("stays under 64 bytes per recorded event (Galperin, 314,159 events)", () => {
     const tl = Timeline.fromScene(galperin(6));
