@@ -8,7 +8,7 @@ import { F_FROM, F_UNTIL, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE } from "../remote/p
 import { markValidity } from "../remote/validity";
 import { emptyFrame, frameAt } from "./frameAt";
 
-const SEED = Number(process.env.FC_SEED ?? Date.now() % 2 ** 31);
+const SEED = Number(process.env.FC_SEED ?? 20261122); // fixed by default so CI is reproducible
 console.log(`frameAt.prop.test seed: ${SEED} (FC_SEED=${SEED} to reproduce)`);
 
 const scenes = { originalDemo, bouncingBalls, billiardsBreak, brownian };

@@ -58,7 +58,7 @@ describe("serializeScene", () => {
 
 describe("serializeScene round trip (property)", () => {
   it("parse(serialize(s)) equals s for random valid scenes of spread-out bodies and lines", () => {
-    const seed = Date.now() % 1_000_000;
+    const seed = Number(process.env.FC_SEED ?? 20261122); // fixed by default so CI is reproducible
     console.log(`serialize round-trip property seed ${seed}`);
     const num = fc.double({ noNaN: true, noDefaultInfinity: true, min: -1e6, max: 1e6 });
     const pos = fc.double({ noNaN: true, noDefaultInfinity: true, min: 1e-3, max: 1 });
