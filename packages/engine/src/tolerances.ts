@@ -98,6 +98,15 @@ export const GRID_MIN_BODIES = 32;
 export const GRID_CELLS_PER_BODY = 3;
 
 /**
+ * Calendar event queue (sim/calendarQueue.ts): the bucket width aims at this many queue entries
+ * falling due per bucket (a small front heap, few empty buckets), and the queue rebuilds with a new
+ * width when the measured count drifts by more than CALENDAR_REBUILD_FACTOR either way. Only speed
+ * depends on them: the pop order is (time, canonical order) whatever the width.
+ */
+export const CALENDAR_BUCKET_TARGET = 2;
+export const CALENDAR_REBUILD_FACTOR = 4;
+
+/**
  * Events processed at one and the same instant before the world reports a Zeno state (infinitely
  * many events in no time) instead of looping. A Newton's cradle of n discs needs n; the limit is
  * per body so that large simultaneous chains are still allowed.

@@ -8,7 +8,7 @@
 import { type MotionLaw, motionLaw, positionAt } from "../physics/motion.js";
 import { GRID_CELL_MARGIN, GRID_CELLS_PER_BODY, GRID_MIN_BODIES } from "../tolerances.js";
 import { BodyStore, EV_BODY, EV_CROSS, EV_LINE, EV_POINT } from "./bodyStore.js";
-import { IndexedHeap } from "./eventQueue.js";
+import { CalendarQueue } from "./calendarQueue.js";
 import { Grid } from "./grid.js";
 import type { Line, Point } from "./obstacles.js";
 import { rasterizeSegment } from "./rasterize.js";
@@ -25,7 +25,7 @@ export class SimState {
   readonly opt: Required<Optimizations>;
   protected store: BodyStore;
   protected grid: Grid;
-  protected heap: IndexedHeap;
+  protected heap: CalendarQueue;
   protected lineList: Line[] = [];
   protected pointList: Point[] = [];
   /** Indices of infinite lines and rays (tested against every moving body). */
@@ -68,7 +68,7 @@ export class SimState {
     };
     this.store = new BodyStore();
     this.grid = new Grid(this.store.capacity);
-    this.heap = new IndexedHeap(this.store.capacity, (a, b) => this.tieLess(a, b));
+    this.heap = new CalendarQueue(this.store.capacity, (a, b) => this.tieLess(a, b));
   }
 
   /** Copy all state into `target` (a fresh Simulator of the same class). */
