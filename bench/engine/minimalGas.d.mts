@@ -6,5 +6,13 @@ export interface MinimalGas {
   advance(count: number): number;
   time(): number;
   state(): { x: number; y: number; vx: number; vy: number }[];
+  /** Each disc's queued key (+Infinity when not queued). */
+  queueKeys(): Float64Array;
+  /** Calendar width, ring length and rebuilds so far. */
+  queueStats(): { width: number; buckets: number; rebuilds: number };
 }
-export function createMinimalGas(scene: GasScene): MinimalGas;
+/** `onPop(disc, key)` is called for every popped item before it is processed (tests only). */
+export function createMinimalGas(
+  scene: GasScene,
+  onPop?: ((disc: number, key: number) => void) | null,
+): MinimalGas;

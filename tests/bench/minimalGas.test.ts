@@ -3,6 +3,8 @@
  * engine, or its events/s mean nothing: energy is kept, discs never overlap or leave the box, and
  * after the same number of collisions the simulated time agrees with the engine's (the runs diverge
  * chaotically, so only statistically: the mean time between collisions is a property of the gas).
+ * Their calendar queue must pop in exact (key, disc index) order: checked against a brute-force
+ * minimum over every queued key at each pop.
  */
 import { describe, expect, it } from "vitest";
 import { createMinimalGas } from "../../bench/engine/minimalGas.mjs";
@@ -53,5 +55,22 @@ describe("bench ceiling: minimalGas", () => {
     const twin = await createMinimalGasWasm(scene);
     twin.advance(EVENTS);
     expect(Object.is(twin.time(), loop.time())).toBe(true);
+  });
+
+  it("pops every item in (key, disc index) order: each popped key is the minimum of all queued keys", () => {
+    const small = gas({ n: 200, packing: 0.1, speed: 10, seed: 7, span: 1e9 });
+    const popped: { disc: number; key: number; min: number; argmin: number }[] = [];
+    const g: ReturnType<typeof createMinimalGas> = createMinimalGas(small, (disc, key) => {
+      const keys = g.queueKeys();
+      let argmin = 0;
+      for (let i = 1; i < keys.length; i++) if ((keys[i] as number) < (keys[argmin] as number)) argmin = i;
+      popped.push({ disc, key, min: keys[argmin] as number, argmin });
+    });
+    g.advance(2000);
+    expect(popped.length).toBeGreaterThan(2000);
+    const wrong = popped.filter((p) => p.key !== p.min || p.disc !== p.argmin);
+    expect(wrong).toEqual([]);
+    // The run went through the adaptive path (at least one rebuild of the bucket width).
+    expect(g.queueStats().rebuilds).toBeGreaterThan(0);
   });
 });
