@@ -1,6 +1,8 @@
 /**
- * Structure-of-arrays storage of the discs of a World, indexed by slot. A slot holds one body's
- * current motion (see physics/motion.ts), its properties, and its next predicted event. Slots of
+ * Storage of the discs of a World, indexed by slot. A slot holds one body's current motion (see
+ * physics/motion.ts) as one record of 8 doubles in `mot` (t0, x0, y0, vx0, vy0, ax, ay, tEnd: a
+ * pair test reads both bodies' motions, and one cache line each is fewer misses in large scenes
+ * than eight arrays), and its properties and next predicted event in one array per field. Slots of
  * removed bodies are reused; `version` only ever grows, so a prediction made against an older
  * version of a partner is recognised as stale.
  */
@@ -14,14 +16,6 @@ export const EV_POINT = 4;
 export const EV_BODY = 5;
 
 const F64_FIELDS = [
-  "t0",
-  "x0",
-  "y0",
-  "vx0",
-  "vy0",
-  "ax",
-  "ay",
-  "tEnd",
   "r",
   "m",
   "mu",
@@ -42,15 +36,8 @@ export class BodyStore {
   /** Id of each live slot; undefined for free slots. */
   ids: (string | undefined)[] = [];
   private free: number[] = [];
-  t0: Float64Array;
-  x0: Float64Array;
-  y0: Float64Array;
-  vx0: Float64Array;
-  vy0: Float64Array;
-  ax: Float64Array;
-  ay: Float64Array;
-  /** End of the current motion (friction stop), or +Infinity. */
-  tEnd: Float64Array;
+  /** Current motion, 8 doubles per slot (one cache line): t0, x0, y0, vx0, vy0, ax, ay, tEnd. */
+  mot: Float64Array;
   r: Float64Array;
   m: Float64Array;
   mu: Float64Array;
@@ -73,14 +60,7 @@ export class BodyStore {
 
   constructor(capacity = 16) {
     this.capacity = capacity;
-    this.t0 = new Float64Array(capacity);
-    this.x0 = new Float64Array(capacity);
-    this.y0 = new Float64Array(capacity);
-    this.vx0 = new Float64Array(capacity);
-    this.vy0 = new Float64Array(capacity);
-    this.ax = new Float64Array(capacity);
-    this.ay = new Float64Array(capacity);
-    this.tEnd = new Float64Array(capacity);
+    this.mot = new Float64Array(capacity * 8);
     this.r = new Float64Array(capacity);
     this.m = new Float64Array(capacity);
     this.mu = new Float64Array(capacity);
@@ -124,6 +104,9 @@ export class BodyStore {
       a.set(this[f]);
       this[f] = a;
     }
+    const mot = new Float64Array(capacity * 8);
+    mot.set(this.mot);
+    this.mot = mot;
     for (const f of I32_FIELDS) {
       const a = new Int32Array(capacity);
       a.set(this[f]);
@@ -139,6 +122,7 @@ export class BodyStore {
     s.free = this.free.slice();
     for (const f of F64_FIELDS) s[f] = this[f].slice();
     for (const f of I32_FIELDS) s[f] = this[f].slice();
+    s.mot = this.mot.slice();
     return s;
   }
 }

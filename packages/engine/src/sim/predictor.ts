@@ -64,10 +64,10 @@ export class Predictor extends SimState {
 
   private solvePair(s: number, o: number): number {
     const b = this.store;
-    const ts = b.t0[s] as number;
-    const to = b.t0[o] as number;
-    const ends = b.tEnd[s] as number;
-    const endo = b.tEnd[o] as number;
+    const ts = b.mot[s * 8 + 0] as number;
+    const to = b.mot[o * 8 + 0] as number;
+    const ends = b.mot[s * 8 + 7] as number;
+    const endo = b.mot[o * 8 + 7] as number;
     // Path boxes are finite only for motions that end (friction) or rest: when s's box is
     // unbounded the boxes cannot be disjoint, and the partner's box is not even loaded.
     if (this.opt.pathBounds && (b.boxMaxX[s] as number) < INF) {
@@ -81,18 +81,22 @@ export class Predictor extends SimState {
     }
     const tb = Math.max(ts, to);
     const hi = Math.min(ends, endo) - tb;
-    const axs = b.ax[s] as number;
-    const ays = b.ay[s] as number;
-    const axo = b.ax[o] as number;
-    const ayo = b.ay[o] as number;
+    const axs = b.mot[s * 8 + 5] as number;
+    const ays = b.mot[s * 8 + 6] as number;
+    const axo = b.mot[o * 8 + 5] as number;
+    const ayo = b.mot[o * 8 + 6] as number;
     const dx =
-      positionAt(to, b.x0[o] as number, b.vx0[o] as number, axo, tb) -
-      positionAt(ts, b.x0[s] as number, b.vx0[s] as number, axs, tb);
+      positionAt(to, b.mot[o * 8 + 1] as number, b.mot[o * 8 + 3] as number, axo, tb) -
+      positionAt(ts, b.mot[s * 8 + 1] as number, b.mot[s * 8 + 3] as number, axs, tb);
     const dy =
-      positionAt(to, b.y0[o] as number, b.vy0[o] as number, ayo, tb) -
-      positionAt(ts, b.y0[s] as number, b.vy0[s] as number, ays, tb);
-    const ux = velocityAt(to, b.vx0[o] as number, axo, tb) - velocityAt(ts, b.vx0[s] as number, axs, tb);
-    const uy = velocityAt(to, b.vy0[o] as number, ayo, tb) - velocityAt(ts, b.vy0[s] as number, ays, tb);
+      positionAt(to, b.mot[o * 8 + 2] as number, b.mot[o * 8 + 4] as number, ayo, tb) -
+      positionAt(ts, b.mot[s * 8 + 2] as number, b.mot[s * 8 + 4] as number, ays, tb);
+    const ux =
+      velocityAt(to, b.mot[o * 8 + 3] as number, axo, tb) -
+      velocityAt(ts, b.mot[s * 8 + 3] as number, axs, tb);
+    const uy =
+      velocityAt(to, b.mot[o * 8 + 4] as number, ayo, tb) -
+      velocityAt(ts, b.mot[s * 8 + 4] as number, ays, tb);
     // Cheap rejection before any solve: with no relative acceleration a receding pair never meets.
     if (axo === axs && ayo === ays && dx * ux + dy * uy >= 0 && this.opt.quadraticFastPath) return INF;
     const R = (b.r[s] as number) + (b.r[o] as number);
@@ -116,17 +120,17 @@ export class Predictor extends SimState {
   /** Earliest contact of body s with a point at (px, py), or +Infinity. */
   protected pointTime(s: number, px: number, py: number): number {
     const b = this.store;
-    const t0 = b.t0[s] as number;
+    const t0 = b.mot[s * 8 + 0] as number;
     const tau = discDiscTime(
-      (b.x0[s] as number) - px,
-      (b.y0[s] as number) - py,
-      b.vx0[s] as number,
-      b.vy0[s] as number,
-      b.ax[s] as number,
-      b.ay[s] as number,
+      (b.mot[s * 8 + 1] as number) - px,
+      (b.mot[s * 8 + 2] as number) - py,
+      b.mot[s * 8 + 3] as number,
+      b.mot[s * 8 + 4] as number,
+      b.mot[s * 8 + 5] as number,
+      b.mot[s * 8 + 6] as number,
       b.r[s] as number,
       this.time - t0,
-      (b.tEnd[s] as number) - t0,
+      (b.mot[s * 8 + 7] as number) - t0,
       this.opt.quadraticFastPath,
     );
     if (tau === INF) return INF;
@@ -140,15 +144,15 @@ export class Predictor extends SimState {
    */
   protected lineTime(s: number, line: Line): number {
     const b = this.store;
-    const t0 = b.t0[s] as number;
+    const t0 = b.mot[s * 8 + 0] as number;
     const lo = this.time - t0;
-    const hi = (b.tEnd[s] as number) - t0;
-    const x0 = b.x0[s] as number;
-    const y0 = b.y0[s] as number;
-    const vx = b.vx0[s] as number;
-    const vy = b.vy0[s] as number;
-    const ax = b.ax[s] as number;
-    const ay = b.ay[s] as number;
+    const hi = (b.mot[s * 8 + 7] as number) - t0;
+    const x0 = b.mot[s * 8 + 1] as number;
+    const y0 = b.mot[s * 8 + 2] as number;
+    const vx = b.mot[s * 8 + 3] as number;
+    const vy = b.mot[s * 8 + 4] as number;
+    const ax = b.mot[s * 8 + 5] as number;
+    const ay = b.mot[s * 8 + 6] as number;
     discLineCrossings(
       x0,
       y0,
@@ -238,7 +242,7 @@ export class Predictor extends SimState {
     const moving = this.isMoving(s);
     b.evTime[s] = INF;
     b.evKind[s] = EV_NONE;
-    const tEnd = b.tEnd[s] as number;
+    const tEnd = b.mot[s * 8 + 7] as number;
     if (tEnd < INF) this.offer(s, Math.max(tEnd, this.time), EV_STOP, -1, 0);
     const grid = this.grid;
     const cell = grid.cellOf[s] as number;
@@ -296,18 +300,18 @@ export class Predictor extends SimState {
   protected crossing(s: number, cx: number, cy: number): number {
     const b = this.store;
     const grid = this.grid;
-    const t0 = b.t0[s] as number;
+    const t0 = b.mot[s * 8 + 0] as number;
     const lo = this.time - t0;
-    const hi = (b.tEnd[s] as number) - t0;
+    const hi = (b.mot[s * 8 + 7] as number) - t0;
     // Cell bounds without allocation; edge cells extend to infinity.
     const x0 = cx === 0 ? -INF : grid.boundaryX(cx);
     const x1 = cx === grid.nx - 1 ? INF : grid.boundaryX(cx + 1);
     const y0 = cy === 0 ? -INF : grid.boundaryY(cy);
     const y1 = cy === grid.ny - 1 ? INF : grid.boundaryY(cy + 1);
     const tx = axisExit(
-      b.x0[s] as number,
-      b.vx0[s] as number,
-      0.5 * (b.ax[s] as number),
+      b.mot[s * 8 + 1] as number,
+      b.mot[s * 8 + 3] as number,
+      0.5 * (b.mot[s * 8 + 5] as number),
       lo,
       hi,
       x0,
@@ -316,9 +320,9 @@ export class Predictor extends SimState {
     );
     const sx = side[0] as number;
     const ty = axisExit(
-      b.y0[s] as number,
-      b.vy0[s] as number,
-      0.5 * (b.ay[s] as number),
+      b.mot[s * 8 + 2] as number,
+      b.mot[s * 8 + 4] as number,
+      0.5 * (b.mot[s * 8 + 6] as number),
       lo,
       hi,
       y0,

@@ -140,10 +140,30 @@ export class Simulator extends Predictor {
     const yp = this.yAt(p, t);
     const xq = this.xAt(q, t);
     const yq = this.yAt(q, t);
-    const vxp = velocityAt(b.t0[p] as number, b.vx0[p] as number, b.ax[p] as number, t);
-    const vyp = velocityAt(b.t0[p] as number, b.vy0[p] as number, b.ay[p] as number, t);
-    const vxq = velocityAt(b.t0[q] as number, b.vx0[q] as number, b.ax[q] as number, t);
-    const vyq = velocityAt(b.t0[q] as number, b.vy0[q] as number, b.ay[q] as number, t);
+    const vxp = velocityAt(
+      b.mot[p * 8 + 0] as number,
+      b.mot[p * 8 + 3] as number,
+      b.mot[p * 8 + 5] as number,
+      t,
+    );
+    const vyp = velocityAt(
+      b.mot[p * 8 + 0] as number,
+      b.mot[p * 8 + 4] as number,
+      b.mot[p * 8 + 6] as number,
+      t,
+    );
+    const vxq = velocityAt(
+      b.mot[q * 8 + 0] as number,
+      b.mot[q * 8 + 3] as number,
+      b.mot[q * 8 + 5] as number,
+      t,
+    );
+    const vyq = velocityAt(
+      b.mot[q * 8 + 0] as number,
+      b.mot[q * 8 + 4] as number,
+      b.mot[q * 8 + 6] as number,
+      t,
+    );
     const mp = b.m[p] as number;
     const mq = b.m[q] as number;
     const approach = discDiscResponse(xp, yp, vxp, vyp, mp, xq, yq, vxq, vyq, mq, vel);
@@ -193,8 +213,18 @@ export class Simulator extends Predictor {
     const t = this.time;
     const x = this.xAt(s, t);
     const y = this.yAt(s, t);
-    const vx = velocityAt(b.t0[s] as number, b.vx0[s] as number, b.ax[s] as number, t);
-    const vy = velocityAt(b.t0[s] as number, b.vy0[s] as number, b.ay[s] as number, t);
+    const vx = velocityAt(
+      b.mot[s * 8 + 0] as number,
+      b.mot[s * 8 + 3] as number,
+      b.mot[s * 8 + 5] as number,
+      t,
+    );
+    const vy = velocityAt(
+      b.mot[s * 8 + 0] as number,
+      b.mot[s * 8 + 4] as number,
+      b.mot[s * 8 + 6] as number,
+      t,
+    );
     let cx: number;
     let cy: number;
     let nx: number;
@@ -231,7 +261,7 @@ export class Simulator extends Predictor {
       cy = py;
     }
     const approach = reflectResponse(vx, vy, nx, ny, vel);
-    if (approach <= 0 && (b.ax[s] as number) * nx + (b.ay[s] as number) * ny > 0) {
+    if (approach <= 0 && (b.mot[s * 8 + 5] as number) * nx + (b.mot[s * 8 + 6] as number) * ny > 0) {
       throw new SimulationError(
         `body '${b.ids[s]}' rests against '${otherId}' under an acceleration at t=${t}: resting contact is not supported (it would take infinitely many bounces)`,
         t,

@@ -99,14 +99,14 @@ export class SimState {
   protected setMotion(s: number, t: number, x: number, y: number, vx: number, vy: number): void {
     const b = this.store;
     motionLaw(t, vx, vy, b.mu[s] as number, this.g, this.gx, this.gy, law);
-    b.t0[s] = t;
-    b.x0[s] = x;
-    b.y0[s] = y;
-    b.vx0[s] = vx;
-    b.vy0[s] = vy;
-    b.ax[s] = law.ax;
-    b.ay[s] = law.ay;
-    b.tEnd[s] = law.tEnd;
+    b.mot[s * 8 + 0] = t;
+    b.mot[s * 8 + 1] = x;
+    b.mot[s * 8 + 2] = y;
+    b.mot[s * 8 + 3] = vx;
+    b.mot[s * 8 + 4] = vy;
+    b.mot[s * 8 + 5] = law.ax;
+    b.mot[s * 8 + 6] = law.ay;
+    b.mot[s * 8 + 7] = law.tEnd;
     b.version[s] = (b.version[s] as number) + 1;
     const r = b.r[s] as number;
     const still = vx === 0 && vy === 0 && law.ax === 0 && law.ay === 0;
@@ -128,17 +128,31 @@ export class SimState {
   /** Position of body s at time t (t within its current motion). */
   protected xAt(s: number, t: number): number {
     const b = this.store;
-    return positionAt(b.t0[s] as number, b.x0[s] as number, b.vx0[s] as number, b.ax[s] as number, t);
+    return positionAt(
+      b.mot[s * 8 + 0] as number,
+      b.mot[s * 8 + 1] as number,
+      b.mot[s * 8 + 3] as number,
+      b.mot[s * 8 + 5] as number,
+      t,
+    );
   }
 
   protected yAt(s: number, t: number): number {
     const b = this.store;
-    return positionAt(b.t0[s] as number, b.y0[s] as number, b.vy0[s] as number, b.ay[s] as number, t);
+    return positionAt(
+      b.mot[s * 8 + 0] as number,
+      b.mot[s * 8 + 2] as number,
+      b.mot[s * 8 + 4] as number,
+      b.mot[s * 8 + 6] as number,
+      t,
+    );
   }
 
   protected isMoving(s: number): boolean {
     const b = this.store;
-    return b.vx0[s] !== 0 || b.vy0[s] !== 0 || b.ax[s] !== 0 || b.ay[s] !== 0;
+    return (
+      b.mot[s * 8 + 3] !== 0 || b.mot[s * 8 + 4] !== 0 || b.mot[s * 8 + 5] !== 0 || b.mot[s * 8 + 6] !== 0
+    );
   }
 
   // ---- broad phase --------------------------------------------------------------------------

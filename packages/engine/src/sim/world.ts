@@ -106,11 +106,13 @@ export class World extends Placement {
     const y = requireFinite("y", patch.y ?? this.yAt(s, now));
     const vx = requireFinite(
       "vx",
-      patch.vx ?? velocityAt(b.t0[s] as number, b.vx0[s] as number, b.ax[s] as number, now),
+      patch.vx ??
+        velocityAt(b.mot[s * 8 + 0] as number, b.mot[s * 8 + 3] as number, b.mot[s * 8 + 5] as number, now),
     );
     const vy = requireFinite(
       "vy",
-      patch.vy ?? velocityAt(b.t0[s] as number, b.vy0[s] as number, b.ay[s] as number, now),
+      patch.vy ??
+        velocityAt(b.mot[s * 8 + 0] as number, b.mot[s * 8 + 4] as number, b.mot[s * 8 + 6] as number, now),
     );
     const r = requirePositiveFinite("r", patch.r ?? b.r[s]);
     const m = requireMass("m", patch.m ?? b.m[s]);
@@ -152,18 +154,18 @@ export class World extends Placement {
 
   private stateOf(s: number, t: number): BodyState {
     const b = this.store;
-    const tEnd = b.tEnd[s] as number;
+    const tEnd = b.mot[s * 8 + 7] as number;
     const te = Math.min(t, tEnd);
-    const t0 = b.t0[s] as number;
-    const ax = b.ax[s] as number;
-    const ay = b.ay[s] as number;
+    const t0 = b.mot[s * 8 + 0] as number;
+    const ax = b.mot[s * 8 + 5] as number;
+    const ay = b.mot[s * 8 + 6] as number;
     const moving = t < tEnd;
     return {
       id: b.ids[s] as string,
-      x: positionAt(t0, b.x0[s] as number, b.vx0[s] as number, ax, te),
-      y: positionAt(t0, b.y0[s] as number, b.vy0[s] as number, ay, te),
-      vx: moving ? velocityAt(t0, b.vx0[s] as number, ax, t) : 0,
-      vy: moving ? velocityAt(t0, b.vy0[s] as number, ay, t) : 0,
+      x: positionAt(t0, b.mot[s * 8 + 1] as number, b.mot[s * 8 + 3] as number, ax, te),
+      y: positionAt(t0, b.mot[s * 8 + 2] as number, b.mot[s * 8 + 4] as number, ay, te),
+      vx: moving ? velocityAt(t0, b.mot[s * 8 + 3] as number, ax, t) : 0,
+      vy: moving ? velocityAt(t0, b.mot[s * 8 + 4] as number, ay, t) : 0,
       ax: moving ? ax : 0,
       ay: moving ? ay : 0,
       r: b.r[s] as number,
@@ -189,14 +191,14 @@ export class World extends Placement {
     const s = this.slotOf(id);
     const b = this.store;
     return {
-      t0: b.t0[s] as number,
-      x0: b.x0[s] as number,
-      y0: b.y0[s] as number,
-      vx: b.vx0[s] as number,
-      vy: b.vy0[s] as number,
-      ax: b.ax[s] as number,
-      ay: b.ay[s] as number,
-      tStop: b.tEnd[s] as number,
+      t0: b.mot[s * 8 + 0] as number,
+      x0: b.mot[s * 8 + 1] as number,
+      y0: b.mot[s * 8 + 2] as number,
+      vx: b.mot[s * 8 + 3] as number,
+      vy: b.mot[s * 8 + 4] as number,
+      ax: b.mot[s * 8 + 5] as number,
+      ay: b.mot[s * 8 + 6] as number,
+      tStop: b.mot[s * 8 + 7] as number,
     };
   }
 
@@ -283,8 +285,8 @@ export class World extends Placement {
       s,
       this.xAt(s, now),
       this.yAt(s, now),
-      velocityAt(b.t0[s] as number, b.vx0[s] as number, b.ax[s] as number, now),
-      velocityAt(b.t0[s] as number, b.vy0[s] as number, b.ay[s] as number, now),
+      velocityAt(b.mot[s * 8 + 0] as number, b.mot[s * 8 + 3] as number, b.mot[s * 8 + 5] as number, now),
+      velocityAt(b.mot[s * 8 + 0] as number, b.mot[s * 8 + 4] as number, b.mot[s * 8 + 6] as number, now),
     ]);
     this.g = g;
     this.gx = gravity[0];
