@@ -8,33 +8,18 @@
  * algorithm. It is a benchmark baseline, not part of the engine, and nothing depends on its results
  * beyond the report.
  *
- * The queue is the engine's design (packages/engine/src/sim/calendarQueue.ts), written again here
- * without its API: buckets of adaptive width; entries of the current bucket or earlier in a small
- * binary "front" heap; the next ring-length buckets in a ring of doubly linked lists; later ones in
- * an overflow list; rebuilt with a width estimated from the queued keys when the entries loaded per
- * bucket drift from CALENDAR_BUCKET_TARGET by more than CALENDAR_REBUILD_FACTOR (values copied from
- * the engine's tolerances). Pops come in (key, disc index) order: exact ties go to the smaller
- * index, whatever the width or history, so the WebAssembly twin (bench/wasm/assembly/minimalGas.ts)
- * pops the same sequence bit for bit.
+ * The queue is a calendar queue (minimalCalendar.mjs) of one entry per disc, keyed by the earlier
+ * of its next event and its next cell crossing, popped in (key, disc index) order, so the
+ * WebAssembly twin (bench/wasm/assembly/minimalGas.ts) runs the same event sequence bit for bit.
  *
  * Record layout per disc (REC doubles): 0 t0, 1 x0, 2 y0, 3 vx, 4 vy, 5 motion version,
  * 6 event time, 7 crossing time, 8 event kind (0 none, 1 disc, 2 wall), 9 partner or wall,
  * 10 partner version at prediction, 11 crossing direction (0 -x, 1 +x, 2 -y, 3 +y).
  */
+import { createCalendar } from "./minimalCalendar.mjs";
+
 const REC = 16;
 const INF = Number.POSITIVE_INFINITY;
-/** Copies of packages/engine/src/tolerances.ts (the bench does not import engine internals). */
-const CALENDAR_BUCKET_TARGET = 2;
-const CALENDAR_REBUILD_FACTOR = 4;
-/** Queue location of a disc: not queued, in the front heap, in the overflow list (>= 0: ring bucket). */
-const ABSENT = -1;
-const FRONT = -2;
-const OVERFLOW = -3;
-/** Bucket numbers stay below this so that they are exact integers. */
-const MAX_BUCKET = 2 ** 52;
-/** A front this large after this many front operations per entry means the width is too large. */
-const FRONT_CROWDED = 64;
-const FRONT_OPS_PER_ENTRY = 4;
 
 /**
  * Builds the gas of `scene` (from bench/scenes/gas.mjs). Returns advance(count) (count collisions,
@@ -58,298 +43,13 @@ export function createMinimalGas(scene, onPop = null) {
   const cellOf = new Int32Array(n);
   let now = 0;
 
-  // ---- calendar queue: one entry per disc, keyed by min(event time, crossing time) ----------
-  const qkey = new Float64Array(n);
-  const loc = new Int32Array(n).fill(ABSENT);
-  const qnext = new Int32Array(n).fill(-1);
-  const qprev = new Int32Array(n).fill(-1);
-  const fpos = new Int32Array(n);
-  const fslots = new Int32Array(n);
-  const fkeys = new Float64Array(n);
-  const allSlots = new Int32Array(n);
-  const allKeys = new Float64Array(n);
-  let fn = 0;
-  let ring = new Int32Array(16).fill(-1);
-  let mask = 15;
-  let overHead = -1;
-  let queued = 0;
-  let ringCount = 0;
-  let overCount = 0;
-  let origin = 0;
-  let bw = 1;
-  let invW = 1;
-  let cur = 0;
-  let ringEnd = 16;
-  let advances = 0;
-  let loaded = 0;
-  let frontOps = 0;
-  let overScanned = 0;
-  let rebuilds = 0;
-
-  function up(i, s, k) {
-    while (i > 0) {
-      const p = (i - 1) >> 1;
-      const pk = fkeys[p];
-      const ps = fslots[p];
-      if (!(k < pk || (k === pk && s < ps))) break;
-      fkeys[i] = pk;
-      fslots[i] = ps;
-      fpos[ps] = i;
-      i = p;
-    }
-    fkeys[i] = k;
-    fslots[i] = s;
-    fpos[s] = i;
-  }
-
-  function down(i, s, k) {
-    for (;;) {
-      let c = 2 * i + 1;
-      if (c >= fn) break;
-      let ck = fkeys[c];
-      let cs = fslots[c];
-      if (c + 1 < fn) {
-        const k2 = fkeys[c + 1];
-        const s2 = fslots[c + 1];
-        if (k2 < ck || (k2 === ck && s2 < cs)) {
-          c++;
-          ck = k2;
-          cs = s2;
-        }
-      }
-      if (!(ck < k || (ck === k && cs < s))) break;
-      fkeys[i] = ck;
-      fslots[i] = cs;
-      fpos[cs] = i;
-      i = c;
-    }
-    fkeys[i] = k;
-    fslots[i] = s;
-    fpos[s] = i;
-  }
-
-  function frontUpdate(p, s, k) {
-    const parent = (p - 1) >> 1;
-    if (p > 0 && (k < fkeys[parent] || (k === fkeys[parent] && s < fslots[parent]))) up(p, s, k);
-    else down(p, s, k);
-  }
-
-  function frontRemove(s) {
-    const p = fpos[s];
-    const last = --fn;
-    if (p !== last) frontUpdate(p, fslots[last], fkeys[last]);
-  }
-
-  function frontCrowded() {
-    return ++frontOps > FRONT_OPS_PER_ENTRY * queued + 64 && fn > FRONT_CROWDED;
-  }
-
-  /** Put a disc that is in no structure where its key belongs. */
-  function place(s, k) {
-    qkey[s] = k;
-    const b = Math.floor((k - origin) * invW);
-    if (b <= cur) {
-      loc[s] = FRONT;
-      up(fn++, s, k);
-      if (frontCrowded()) rebuild();
-    } else if (b < ringEnd) {
-      const r = (b | 0) & mask;
-      const h = ring[r];
-      qnext[s] = h;
-      qprev[s] = -1;
-      if (h >= 0) qprev[h] = s;
-      ring[r] = s;
-      loc[s] = r;
-      ringCount++;
-    } else {
-      qnext[s] = overHead;
-      qprev[s] = -1;
-      if (overHead >= 0) qprev[overHead] = s;
-      overHead = s;
-      loc[s] = OVERFLOW;
-      overCount++;
-    }
-  }
-
-  /** Take a disc out of its ring bucket (l >= 0) or the overflow list. */
-  function qunlink(s, l) {
-    const p = qprev[s];
-    const q = qnext[s];
-    if (p >= 0) qnext[p] = q;
-    else if (l === OVERFLOW) overHead = q;
-    else ring[l] = q;
-    if (q >= 0) qprev[q] = p;
-    if (l === OVERFLOW) overCount--;
-    else ringCount--;
-  }
-
-  function qremove(s) {
-    const l = loc[s];
-    if (l === ABSENT) return;
-    if (l === FRONT) frontRemove(s);
-    else qunlink(s, l);
-    loc[s] = ABSENT;
-    queued--;
-  }
+  const { set: setKey, first, firstKey, keys: queueKeys, stats: queueStats } = createCalendar(n);
 
   /** Queue disc s at its next event or crossing, whichever is earlier (never popped if infinite). */
   function queue(s) {
     const i = s * REC;
-    const k = Math.min(rec[i + 6], rec[i + 7]);
-    if (k === INF) {
-      qremove(s);
-      return;
-    }
-    const l = loc[s];
-    if (l === FRONT) {
-      if (Math.floor((k - origin) * invW) <= cur) {
-        qkey[s] = k;
-        frontUpdate(fpos[s], s, k);
-        if (frontCrowded()) rebuild();
-        return;
-      }
-      frontRemove(s);
-    } else if (l !== ABSENT) qunlink(s, l);
-    else queued++;
-    place(s, k);
+    setKey(s, Math.min(rec[i + 6], rec[i + 7]));
   }
-
-  /** Move the window until the front holds something; false when the queue is empty. */
-  function refill() {
-    while (fn === 0) {
-      if (ringCount === 0) {
-        if (overCount === 0) return false;
-        let m = INF;
-        for (let s = overHead; s >= 0; s = qnext[s]) {
-          const b = Math.floor((qkey[s] - origin) * invW);
-          if (b < m) m = b;
-        }
-        overScanned += overCount;
-        if (!(m < MAX_BUCKET)) {
-          rebuild();
-          continue;
-        }
-        cur = m - 1;
-        pullOverflow();
-      }
-      cur++;
-      advances++;
-      if (cur >= ringEnd - ((mask + 1) >> 1)) {
-        if (adaptDue()) {
-          rebuild();
-          continue;
-        }
-        pullOverflow();
-      }
-      const r = (cur | 0) & mask;
-      let s = ring[r];
-      ring[r] = -1;
-      while (s >= 0) {
-        const after = qnext[s];
-        ringCount--;
-        loaded++;
-        loc[s] = FRONT;
-        up(fn++, s, qkey[s]);
-        s = after;
-      }
-    }
-    return true;
-  }
-
-  /** Extend the window to cur + ring length and move the overflow entries it covers into the ring. */
-  function pullOverflow() {
-    ringEnd = cur + mask + 1;
-    overScanned += overCount;
-    let s = overHead;
-    while (s >= 0) {
-      const after = qnext[s];
-      if (Math.floor((qkey[s] - origin) * invW) < ringEnd) {
-        qunlink(s, OVERFLOW);
-        place(s, qkey[s]);
-      }
-      s = after;
-    }
-  }
-
-  function adaptDue() {
-    if (advances < 64) return false;
-    const perBucket = loaded / advances;
-    return (
-      perBucket > CALENDAR_BUCKET_TARGET * CALENDAR_REBUILD_FACTOR ||
-      perBucket < CALENDAR_BUCKET_TARGET / CALENDAR_REBUILD_FACTOR ||
-      overScanned > 8 * queued + 1024
-    );
-  }
-
-  /** The k-th smallest (from 0) of a[0..m), reordering a (Hoare selection). */
-  function select(a, m, k) {
-    let lo = 0;
-    let hi = m - 1;
-    while (lo < hi) {
-      const p = a[(lo + hi) >> 1];
-      let i = lo;
-      let j = hi;
-      while (i <= j) {
-        while (a[i] < p) i++;
-        while (a[j] > p) j--;
-        if (i <= j) {
-          const t = a[i];
-          a[i] = a[j];
-          a[j] = t;
-          i++;
-          j--;
-        }
-      }
-      if (k <= j) hi = j;
-      else if (k >= i) lo = i;
-      else break;
-    }
-    return a[k];
-  }
-
-  /**
-   * Re-place every entry with a width from the queued keys (CALENDAR_BUCKET_TARGET entries per
-   * bucket if the keys are spread like an exponential: median spread 0.69 tau) and a ring of
-   * about two buckets per entry.
-   */
-  function rebuild() {
-    rebuilds++;
-    let m = 0;
-    for (let i = 0; i < fn; i++) allSlots[m++] = fslots[i];
-    for (let r = 0; r <= mask; r++) for (let s = ring[r]; s >= 0; s = qnext[s]) allSlots[m++] = s;
-    for (let s = overHead; s >= 0; s = qnext[s]) allSlots[m++] = s;
-    let lo = m > 0 ? INF : 0;
-    for (let i = 0; i < m; i++) {
-      const k = qkey[allSlots[i]];
-      allKeys[i] = k;
-      if (k < lo) lo = k;
-    }
-    const spread = m > 0 ? select(allKeys, m, m >> 1) - lo : 0;
-    const nw = (CALENDAR_BUCKET_TARGET * spread) / (0.69 * Math.max(1, m));
-    if (nw > 0 && Number.isFinite(1 / nw)) {
-      bw = nw;
-      invW = 1 / nw;
-    }
-    let nb = 16;
-    while (nb < 2 * m) nb *= 2;
-    if (ring.length !== nb) ring = new Int32Array(nb);
-    ring.fill(-1);
-    mask = nb - 1;
-    origin = lo;
-    cur = 0;
-    ringEnd = nb;
-    fn = 0;
-    overHead = -1;
-    ringCount = 0;
-    overCount = 0;
-    advances = 0;
-    loaded = 0;
-    frontOps = 0;
-    overScanned = 0;
-    for (let i = 0; i < m; i++) place(allSlots[i], qkey[allSlots[i]]);
-  }
-
-  // ---- grid and physics ---------------------------------------------------------------------
 
   function link(s, c) {
     const h = head[c];
@@ -551,9 +251,9 @@ export function createMinimalGas(scene, onPop = null) {
   function advance(count) {
     let events = 0;
     while (events < count) {
-      if (fn === 0 && !refill()) break;
-      const s = fslots[0];
-      const t = fkeys[0];
+      const s = first();
+      if (s < 0) break;
+      const t = firstKey();
       if (onPop !== null) onPop(s, t);
       now = t;
       const i = s * REC;
@@ -594,14 +294,6 @@ export function createMinimalGas(scene, onPop = null) {
     }
     return out;
   }
-
-  function queueKeys() {
-    const out = new Float64Array(n);
-    for (let s = 0; s < n; s++) out[s] = loc[s] === ABSENT ? INF : qkey[s];
-    return out;
-  }
-
-  const queueStats = () => ({ width: bw, buckets: mask + 1, rebuilds });
 
   return { advance, time: () => now, state, queueKeys, queueStats };
 }
