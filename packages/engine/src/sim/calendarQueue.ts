@@ -25,11 +25,12 @@ const OVERFLOW = -3;
 /** Bucket numbers stay below this so that they are exact integers (and +1 moves them). */
 const MAX_BUCKET = 2 ** 52;
 /**
- * A front this large after this many front operations per entry since the last rebuild means the
- * width is too large (the queue has become a binary heap): rebuild. Amortised O(1).
+ * A front larger than this means the width is too large (the queue has become a binary heap). It
+ * is rebuilt once the operations on it since the last rebuild outnumber both its entries (a bulk
+ * fill, as when a world is built, is rebuilt right after it) and a quarter of all entries (so a
+ * front crowded by many equal times cannot rebuild more often than every n / 4 operations).
  */
 const FRONT_CROWDED = 64;
-const FRONT_OPS_PER_ENTRY = 4;
 
 export class CalendarQueue {
   private key: Float64Array;
@@ -126,7 +127,7 @@ export class CalendarQueue {
       if (b <= this.cur) {
         this.key[slot] = key;
         this.frontUpdate(this.fpos[slot] as number, slot, key);
-        if (++this.frontOps > FRONT_OPS_PER_ENTRY * this.n + 64 && this.fn > FRONT_CROWDED) this.rebuild();
+        if (++this.frontOps > this.crowdLimit() && this.fn > FRONT_CROWDED) this.rebuild();
         return;
       }
       this.frontRemove(slot);
@@ -188,7 +189,7 @@ export class CalendarQueue {
     const b = Math.floor((key - this.origin) * this.invW);
     if (b <= this.cur) {
       this.frontPush(slot, key);
-      if (++this.frontOps > FRONT_OPS_PER_ENTRY * this.n + 64 && this.fn > FRONT_CROWDED) this.rebuild();
+      if (++this.frontOps > this.crowdLimit() && this.fn > FRONT_CROWDED) this.rebuild();
     } else if (b < this.ringEnd) {
       const r = (b | 0) & this.mask; // b < 2^53: ToInt32 keeps the low bits exactly
       this.pushList(slot, this.ring[r] as number);
@@ -285,6 +286,10 @@ export class CalendarQueue {
     }
   }
 
+  private crowdLimit(): number {
+    return Math.max(this.fn, this.n >> 2) + FRONT_CROWDED;
+  }
+
   /** Whether the bucket width is far enough from its target to pay for a rebuild. */
   private adaptDue(): boolean {
     if (this.advances < 64) return false;
@@ -308,7 +313,9 @@ export class CalendarQueue {
     for (let r = 0; r <= this.mask; r++)
       for (let s = this.ring[r] as number; s >= 0; s = this.next[s] as number) all.push(s);
     for (let s = this.overHead; s >= 0; s = this.next[s] as number) all.push(s);
-    const keys = all.map((s) => this.key[s] as number).sort((a, b) => a - b);
+    const keys = new Float64Array(all.length);
+    for (let i = 0; i < all.length; i++) keys[i] = this.key[all[i] as number] as number;
+    keys.sort();
     const lo = keys[0] ?? 0;
     // The median spread ahead of the earliest key: with keys spread like an exponential of mean
     // tau, the median is 0.69 tau and about n / tau entries fall due per unit of time.
