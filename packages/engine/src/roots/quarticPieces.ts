@@ -18,6 +18,7 @@
  *   False on any doubt (a differing sign, an exact zero, ends that round together).
  */
 
+import { PLAIN_HORNER_BOUND_FACTOR, UNIT_ROUNDOFF } from "../tolerances.js";
 import { halley } from "./quarticHalley.js";
 import { ones } from "./quarticIsolate.js";
 import { refined } from "./quarticRefine.js";
@@ -31,6 +32,14 @@ const BC = reg.BC;
 const absAt = reg.absAt;
 const P1 = reg.P1;
 const pieces = ones;
+/** Plain Horner error bound of p and of p′ (degree 3, with 3·c3 rounded), as quarticSigns.ts. */
+const B4 = PLAIN_HORNER_BOUND_FACTOR * 4 * UNIT_ROUNDOFF;
+/** As quarticSigns.ts: below this Σ|cᵢ||x|ⁱ the plain bound needs underflow slack (not taken). */
+const TINY_SCALE = 2 ** -600;
+/** Covers the rounding of the (nonnegative) bound terms of keepsSign, ≤ 10u relative. */
+const SAFE = 1 + 2 ** -20;
+/** keepsSign's smallest bracket half-width, relative to |xs| (≥ 2 ulps). */
+const MIN_WIDTH = 2 ** -50;
 /** After an exact zero at lo, a one-root piece [lo, b] is bracketed from lo + (b − lo)·ZERO_OFFSET. */
 const ZERO_OFFSET = 2 ** -10;
 
@@ -65,6 +74,57 @@ function rootIn(
   return true;
 }
 
+/**
+ * Certifies that p has the exact sign s0 at its only critical point x* in [lo, lo + h], given
+ * Halley's approximation xs = H[5] (stopped early: far from x* where p″ is small), where plain Horner
+ * found the sign s0 with |p(xs)| = absAt[0]. With [a, b] = xs ∓ w inside [lo, hi], w = twice
+ * Newton's step (rigorous |p′(xs)| over |p″(xs)|) + 2 ulps, and W = max(xs − a, b − xs):
+ * - |p″| ≥ m > 0 on [a, b] (p″(xs) less its bound and max|p‴|·W), so p′ is strictly monotone
+ *   there and has a root within |p′(xs)|/m of xs; inside [a, b] when that is < min(xs − a, b − xs):
+ *   it is x*, p′'s only root in [lo, lo + h];
+ * - |p(x) − p(xs)| ≤ |p′(xs)|·W + max|p″|/2·W² on [a, b] (max|p″|/2 ≤ Σ C(i,2)|cᵢ|(|xs| + W)^(i−2));
+ *   |p(xs)| beyond its plain error bound by more keeps the sign s0 over [a, b], so at x*.
+ * The bounds use the plain Horner bound B4 for p, p′, p″ (3c3, 6c3, 12c4 rounded: ≤ 7u in all);
+ * SAFE covers the rounding of the nonnegative bound terms. False on any doubt.
+ */
+function keepsSign(): boolean {
+  const xs = H[5] as number;
+  const c0 = Q[0] as number;
+  const c1 = Q[1] as number;
+  const c2 = Q[2] as number;
+  const c3 = Q[3] as number;
+  const c4 = Q[4] as number;
+  const lo = Q[5] as number;
+  const hi = Q[6] as number;
+  const ac1 = Math.abs(c1);
+  const ac2 = Math.abs(c2);
+  const ac3 = Math.abs(c3);
+  const ac4 = Math.abs(c4);
+  const ax = Math.abs(xs);
+  // |p(xs)| (signPlain's), the sums Σ|cᵢ||x|ⁱ of p, p′, p″ (their plain Horner error bounds).
+  const av = (((ac4 * ax + ac3) * ax + ac2) * ax + ac1) * ax + Math.abs(c0);
+  const d = ((4 * c4 * xs + 3 * c3) * xs + 2 * c2) * xs + c1;
+  const ad = ((4 * ac4 * ax + 3 * ac3) * ax + 2 * ac2) * ax + ac1;
+  const dd = (12 * c4 * xs + 6 * c3) * xs + 2 * c2;
+  const add = (12 * ac4 * ax + 6 * ac3) * ax + 2 * ac2;
+  if (!(av >= TINY_SCALE && ad >= TINY_SCALE && add >= TINY_SCALE)) return false;
+  const dMax = Math.abs(d) + B4 * ad;
+  const w = (2 * dMax) / Math.abs(dd) + ax * MIN_WIDTH;
+  const a = xs - w;
+  const b = xs + w;
+  if (!(a >= lo && b <= hi)) return false; // (also NaN, infinite w: dd = 0)
+  const wa = xs - a;
+  const wb = b - xs;
+  // biome-ignore lint/complexity/useMathMinMax: Math.max compiles to data-dependent branches in V8
+  const W = (wb > wa ? wb : wa) * SAFE;
+  const X = ax + W;
+  const m = Math.abs(dd) - (B4 * add + (24 * ac4 * X + 6 * ac3) * W) * SAFE;
+  const dm = dMax * SAFE;
+  if (!(dm < m * wa && dm < m * wb)) return false;
+  const drift = (dMax + ((6 * ac4 * X + 3 * ac3) * X + ac2) * W) * W;
+  return (absAt[0] as number) > (B4 * av + drift) * SAFE;
+}
+
 export function unimodal(s0: number, zeroAtLo: boolean): number {
   const c1 = Q[1] as number;
   const c2 = Q[2] as number;
@@ -93,7 +153,7 @@ export function unimodal(s0: number, zeroAtLo: boolean): number {
   if (sx === 0) return -1;
   // p keeps the sign s0 at its only extremum: no root (p(lo + h) has the sign s0 too, and p is
   // monotone from x* to there, so p(hi) has it).
-  if (sx === s0) return 1;
+  if (sx === s0) return keepsSign() ? 1 : -1;
   if (zeroAtLo) return 0; // p(lo) = 0 and a dip: subdivision brackets the roots after lo
   const ax = absAt[0] as number;
   const sh = signAt(hi, 1);
