@@ -1,6 +1,7 @@
 /**
- * The WebAssembly twin of minimalGas.mjs: compiles bench/wasm/assembly/minimalGas.ts with
- * AssemblyScript (a bench devDependency) in memory, -O3, no runtime GC, and wraps it in the same
+ * The WebAssembly twin of minimalGas.mjs: compiles bench/wasm/assembly/minimalGas.ts (the entry)
+ * and the calendar.ts it imports with AssemblyScript (a bench devDependency) in memory, -O3, no
+ * runtime GC, and wraps it in the same
  * interface as createMinimalGas: advance(count), time(). Compiling takes about a second; the
  * module is compiled once per process.
  */
@@ -8,20 +9,40 @@ import { readFileSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
 
-const SOURCE = join(dirname(fileURLToPath(import.meta.url)), "assembly", "minimalGas.ts");
+const DIR = join(dirname(fileURLToPath(import.meta.url)), "assembly");
+/** The entry file (its exports are the module's) and the files it imports. */
+const ENTRY = "minimalGas.ts";
+const SOURCES = [ENTRY, "calendar.ts"];
 let compiled = null;
 
 async function compile() {
   const asc = await import("assemblyscript/asc");
-  const result = await asc.compileString(readFileSync(SOURCE, "utf8"), {
-    optimizeLevel: 3,
-    shrinkLevel: 0,
-    runtime: "stub",
-    initialMemory: 4096,
+  const files = Object.fromEntries(SOURCES.map((f) => [f, readFileSync(join(DIR, f), "utf8")]));
+  const out = {};
+  const stderr = asc.createMemoryStream();
+  const args = [
+    "--outFile",
+    "binary",
+    "--optimizeLevel",
+    "3",
+    "--shrinkLevel",
+    "0",
+    "--runtime",
+    "stub",
+    "--initialMemory",
+    "4096",
+  ];
+  const result = await asc.main([...args, ENTRY], {
+    readFile: (name) => (Object.hasOwn(files, name) ? files[name] : null),
+    writeFile: (name, contents) => {
+      out[name] = contents;
+    },
+    listFiles: () => [],
+    stderr,
   });
-  if (result.error || !result.binary)
-    throw new Error(`AssemblyScript compile failed: ${result.error?.message}\n${result.stderr.toString()}`);
-  return new WebAssembly.Module(result.binary);
+  if (result.error || !out.binary)
+    throw new Error(`AssemblyScript compile failed: ${result.error?.message}\n${stderr.toString()}`);
+  return new WebAssembly.Module(out.binary);
 }
 
 /** Builds the gas of `scene` (bench/scenes/gas.mjs) in a fresh WebAssembly instance. */
