@@ -38,8 +38,6 @@ const B4 = PLAIN_HORNER_BOUND_FACTOR * 4 * UNIT_ROUNDOFF;
 const TINY_SCALE = 2 ** -600;
 /** Covers the rounding of the (nonnegative) bound terms of keepsSign, ≤ 10u relative. */
 const SAFE = 1 + 2 ** -20;
-/** keepsSign's smallest bracket half-width, relative to |xs| (≥ 2 ulps). */
-const MIN_WIDTH = 2 ** -50;
 /** After an exact zero at lo, a one-root piece [lo, b] is bracketed from lo + (b − lo)·ZERO_OFFSET. */
 const ZERO_OFFSET = 2 ** -10;
 
@@ -77,13 +75,13 @@ function rootIn(
 /**
  * Certifies that p has the exact sign s0 at its only critical point x* in [lo, lo + h], given
  * Halley's approximation xs = H[5] (stopped early: far from x* where p″ is small), where plain Horner
- * found the sign s0 with |p(xs)| = absAt[0]. With [a, b] = xs ∓ w inside [lo, hi], w = twice
- * Newton's step (rigorous |p′(xs)| over |p″(xs)|) + 2 ulps, and W = max(xs − a, b − xs):
- * - |p″| ≥ m > 0 on [a, b] (p″(xs) less its bound and max|p‴|·W), so p′ is strictly monotone
- *   there and has a root within |p′(xs)|/m of xs; inside [a, b] when that is < min(xs − a, b − xs):
- *   it is x*, p′'s only root in [lo, lo + h];
- * - |p(x) − p(xs)| ≤ |p′(xs)|·W + max|p″|/2·W² on [a, b] (max|p″|/2 ≤ Σ C(i,2)|cᵢ|(|xs| + W)^(i−2));
- *   |p(xs)| beyond its plain error bound by more keeps the sign s0 over [a, b], so at x*.
+ * found the sign s0 with |p(xs)| = absAt[0]. On the real interval I = [xs − w, xs + w] inside
+ * [lo, hi], w = twice Newton's step (a rigorous bound of |p′(xs)| over |p″(xs)|):
+ * - |p″| ≥ m > 0 on I (p″(xs) less its bound and max|p‴|·w), so p′ is strictly monotone there and
+ *   has a root within |p′(xs)|/m of xs; inside I when that is < w: it is x*, p′'s only root in
+ *   [lo, lo + h];
+ * - |p(x) − p(xs)| ≤ |p′(xs)|·w + max|p″|/2·w² on I (max|p″|/2 ≤ Σ C(i,2)|cᵢ|(|xs| + w)^(i−2));
+ *   |p(xs)| beyond its plain error bound by more keeps the sign s0 over I, so at x*.
  * The bounds use the plain Horner bound B4 for p, p′, p″ (3c3, 6c3, 12c4 rounded: ≤ 7u in all);
  * SAFE covers the rounding of the nonnegative bound terms. False on any doubt.
  */
@@ -109,19 +107,14 @@ function keepsSign(): boolean {
   const add = (12 * ac4 * ax + 6 * ac3) * ax + 2 * ac2;
   if (!(av >= TINY_SCALE && ad >= TINY_SCALE && add >= TINY_SCALE)) return false;
   const dMax = Math.abs(d) + B4 * ad;
-  const w = (2 * dMax) / Math.abs(dd) + ax * MIN_WIDTH;
-  const a = xs - w;
-  const b = xs + w;
-  if (!(a >= lo && b <= hi)) return false; // (also NaN, infinite w: dd = 0)
-  const wa = xs - a;
-  const wb = b - xs;
-  // biome-ignore lint/complexity/useMathMinMax: Math.max compiles to data-dependent branches in V8
-  const W = (wb > wa ? wb : wa) * SAFE;
-  const X = ax + W;
-  const m = Math.abs(dd) - (B4 * add + (24 * ac4 * X + 6 * ac3) * W) * SAFE;
-  const dm = dMax * SAFE;
-  if (!(dm < m * wa && dm < m * wb)) return false;
-  const drift = (dMax + ((6 * ac4 * X + 3 * ac3) * X + ac2) * W) * W;
+  const w = (2 * dMax) / Math.abs(dd);
+  // The real bracket [xs − w, xs + w] inside [lo, hi]: rounding is monotone, so a computed end
+  // strictly inside [lo, hi] has its exact value inside. (False also for NaN, infinite w: dd = 0.)
+  if (!(xs - w > lo && xs + w < hi)) return false;
+  const X = ax + w;
+  const m = Math.abs(dd) - (B4 * add + (24 * ac4 * X + 6 * ac3) * w) * SAFE;
+  if (!(dMax * SAFE < m * w)) return false;
+  const drift = (dMax + ((6 * ac4 * X + 3 * ac3) * X + ac2) * w) * w;
   return (absAt[0] as number) > (B4 * av + drift) * SAFE;
 }
 
