@@ -17,7 +17,8 @@
  * 3. Ends of one sign: one de Casteljau halving; both halves of one sign → no root.
  * 4. Ends of one sign and p′'s Bernstein coefficients (the differences) with exactly one certified
  *    sign change: p has exactly one critical point in [lo, lo + h] — the derivative splitting of
- *    the issue with a single split point (quarticPieces.ts's unimodal).
+ *    the issue with a single split point (quarticPieces.ts's unimodal; its "no root" is certified
+ *    over an interval proven to hold the critical point, keepsSign, not read at an estimate of it).
  * 5. Otherwise, Bernstein subdivision (quarticIsolate.ts), each one-root piece solved by
  *    quarticPieces.ts's solveOnes.
  * Each root: safeguarded Halley in its bracket (quarticHalley.ts), then one compensated Horner
