@@ -33,6 +33,27 @@ function warmUp(world, events, seconds) {
 
 const warmed = new Set();
 
+/**
+ * Memory per body of a prepared world (grid and event queue built): JS heap plus the typed arrays'
+ * backing stores (outside the heap), grown over enough copies (at least 10^5 bodies in all) that
+ * the collector's noise of a few hundred kB is small against it.
+ */
+function bytesPerBody(engine, scene) {
+  const n = scene.bodies.length;
+  const copies = Math.max(1, Math.ceil(1e5 / n));
+  gc();
+  const before = memoryInUse();
+  const kept = [];
+  for (let i = 0; i < copies; i++) {
+    const world = buildWorld(engine, scene);
+    world.advance({ maxEvents: 0 });
+    kept.push(world);
+  }
+  gc();
+  const bytes = memoryInUse() - before;
+  return bytes / (kept.length * n);
+}
+
 /** Bytes in use by JS objects and by ArrayBuffer backing stores (typed arrays live outside the heap). */
 function memoryInUse() {
   const m = process.memoryUsage();
@@ -78,14 +99,11 @@ async function scaling({ quick, engine, log }) {
   for (const n of ns) {
     try {
       const scene = gas({ n, packing: 0.1, speed: 10, seed: 11, span: 1e9 });
+      const heapBytesPerBody = bytesPerBody(engine, scene);
       gc();
-      const heap0 = memoryInUse();
       const t0 = nowNs();
       const world = buildWorld(engine, scene);
       const buildNs = nowNs() - t0;
-      gc();
-      // The world's own memory: JS heap plus the typed arrays' backing stores (outside the heap).
-      const heapBytesPerBody = (memoryInUse() - heap0) / n;
       // warm-up: leaves the grid start (about two events per disc) and measures the rate
       const w = warmUp(world, 2 * n, quick ? 1 : 4);
       const rate = w.events / (w.ns / 1e9);

@@ -193,7 +193,7 @@ function engineSection(e, out, svgs) {
   }
   const sc = e.scaling;
   out.push(
-    "Dilute gas (10 % packing, r = 1, speed 10, box walls), timed batches of events after a warm-up that leaves the grid start; events/s = batch / median batch time. Memory per body = growth of the JS heap plus ArrayBuffer memory (where typed arrays live) when building the world, / N; typed arrays grow by doubling, so it varies with how full they are.\n",
+    "Dilute gas (10 % packing, r = 1, speed 10, box walls), timed batches of events after a warm-up that leaves the grid start; events/s = batch / median batch time. Memory per body = growth of the JS heap plus ArrayBuffer memory (where typed arrays live) when building and preparing (grid and event queue) copies of the world holding at least 10⁵ bodies in all, / bodies; typed arrays grow by doubling, so it varies with how full they are.\n",
   );
   out.push(
     table(
