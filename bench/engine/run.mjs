@@ -7,7 +7,7 @@
  *   here with this algorithm, timed the same way.
  * - galperin7: Galperin's billiard with 7 digits run to idle (target < 2 s, 3,141,592 collisions).
  * - reference: the fast engine against the tests' all-pairs reference simulator (reference.mjs).
- * - ablations: each World `optimizations` switch off in turn, on the scene where it should matter,
+ * - ablations (ablations.mjs): each World `optimizations` switch off in turn, on the scene where it should matter,
  *   same span, same events (checked), time ratio off/on.
  * - timeline: stateAt latency and history bytes per event, when the engine exports Timeline.
  */
@@ -18,6 +18,7 @@ import { buildWorld } from "../peers/chapgame.mjs";
 import { galperin } from "../scenes/galperin.mjs";
 import { gas } from "../scenes/gas.mjs";
 import { createMinimalGasWasm } from "../wasm/minimalGasWasm.mjs";
+import { ablations } from "./ablations.mjs";
 import { createMinimalGas } from "./minimalGas.mjs";
 import { againstReference } from "./reference.mjs";
 
@@ -193,88 +194,6 @@ export function galperinRun({ quick, engine, log }, digits) {
     log(`  galperin ${digits}: ERROR ${e.message}`);
     return { digits, expected: scene.exact.collisions, error: String(e.message ?? e) };
   }
-}
-
-/** Friction gas: every disc decelerates at μg and stops; paths are finite segments. */
-function frictionGas(n, seed) {
-  const s = gas({ n, packing: 0.1, speed: 10, seed, span: 6 });
-  s.g = 10;
-  for (const b of s.bodies) b.mu = 0.2;
-  s.id = "friction-gas";
-  s.description = `${n} discs, 10 % packing, speed 10, μ = 0.2, g = 10 (all stop within 5 s); simulate 6 s`;
-  return s;
-}
-
-/** Mostly resting: n discs at rest on a grid and n/50 moving discs. */
-function mostlyResting(n, seed) {
-  const s = gas({ n, packing: 0.1, speed: 10, seed, span: 10 });
-  const rnd = lcg(seed + 1);
-  for (const b of s.bodies) {
-    if (rnd() >= 0.02) {
-      b.vx = 0;
-      b.vy = 0;
-    }
-  }
-  s.id = "mostly-resting";
-  s.description = `${n} discs, 10 % packing, 98 % at rest, the rest at speed 10, no friction; simulate 10 s`;
-  return s;
-}
-
-function ablations({ quick, engine, log }) {
-  const n = quick ? 1000 : 3000;
-  const cases = [
-    // all pairs is O(N²) per event: keep this one small
-    { flag: "broadPhase", scene: gas({ n: 1000, packing: 0.1, speed: 10, seed: 5, span: 2 }) },
-    { flag: "quadraticFastPath", scene: gas({ n, packing: 0.1, speed: 10, seed: 5, span: quick ? 2 : 4 }) },
-    { flag: "pathBounds", scene: frictionGas(n, 6) },
-    { flag: "restingSkip", scene: mostlyResting(quick ? 3000 : 10000, 7) },
-  ];
-  const out = [];
-  for (const c of cases) {
-    try {
-      const run = (opt) => {
-        const world = buildWorld(engine, c.scene, { optimizations: opt });
-        const a = nowNs();
-        const r = world.advance({ untilTime: c.scene.span });
-        return { ns: nowNs() - a, events: r.events };
-      };
-      run({});
-      const on = [];
-      const off = [];
-      let evOn = 0;
-      let evOff = 0;
-      const reps = quick ? 2 : 3;
-      for (let i = 0; i < reps; i++) {
-        const a = run({});
-        const b = run({ [c.flag]: false });
-        on.push(a.ns);
-        off.push(b.ns);
-        evOn = a.events;
-        evOff = b.events;
-      }
-      const row = {
-        flag: c.flag,
-        scene: c.scene.id,
-        description: c.scene.description,
-        bodies: c.scene.bodies.length,
-        events: evOn,
-        eventsOff: evOff,
-        sameEvents: evOn === evOff,
-        msOn: median(on) / 1e6,
-        msOff: median(off) / 1e6,
-        speedup: median(off) / median(on),
-        runs: reps,
-      };
-      out.push(row);
-      log(
-        `  ablation ${c.flag}: ${row.msOn.toFixed(1)} ms on, ${row.msOff.toFixed(1)} ms off (×${row.speedup.toFixed(2)})`,
-      );
-    } catch (e) {
-      out.push({ flag: c.flag, scene: c.scene.id, error: String(e.message ?? e) });
-      log(`  ablation ${c.flag}: ERROR ${e.message}`);
-    }
-  }
-  return out;
 }
 
 export function timeline({ quick, engine, log }) {
