@@ -201,7 +201,7 @@ function engineSection(e, out, svgs) {
   }
   const sc = e.scaling;
   out.push(
-    "Dilute gas (10 % packing, r = 1, speed 10, box walls), timed batches of events after a warm-up that leaves the grid start; events/s = batch / median batch time. Memory per body = growth of the JS heap plus ArrayBuffer memory (where typed arrays live) when building and preparing (grid and event queue) copies of the world holding at least 10⁵ bodies in all, / bodies; typed arrays grow by doubling, so it varies with how full they are.\n",
+    "Dilute gas (10 % packing, r = 1, speed 10, box walls), timed batches of events after a warm-up that leaves the grid start; events/s = batch / median batch time. Each N runs in fresh Node processes (no JIT state from other rows or sections; the engine and both loops compiled first on a small gas), three per N in full runs with the median kept, because at 10⁵ discs one process's rate differs from the next by up to 30 % (memory placement) while its own batches agree; the per-process rates are in latest.json. Memory per body = growth of the JS heap plus ArrayBuffer memory (where typed arrays live) when building and preparing (grid and event queue) copies of the world holding at least 10⁵ bodies in all, / bodies; typed arrays grow by doubling, so it varies with how full they are.\n",
   );
   out.push(
     table(
