@@ -16,6 +16,7 @@
  * from the keys in the queue; a front that grows for long without the window moving does the same.
  */
 import { CALENDAR_BUCKET_TARGET, CALENDAR_REBUILD_FACTOR } from "../tolerances.js";
+import { FrontHeap } from "./frontHeap.js";
 
 const INF = Number.POSITIVE_INFINITY;
 /** Location of a slot: not queued, in the front heap, or in the overflow list (>= 0: ring bucket). */
@@ -35,14 +36,11 @@ const FRONT_CROWDED = 64;
 export class CalendarQueue {
   private key: Float64Array;
   private loc: Int32Array;
-  /** Ring and overflow lists (per slot); position in the front heap for front entries. */
+  /** Ring and overflow lists (per slot). */
   private next: Int32Array;
   private prev: Int32Array;
-  private fpos: Int32Array;
-  /** Front heap: slots and their keys in heap order. */
-  private fslots: Int32Array;
-  private fkeys: Float64Array;
-  private fn = 0;
+  /** Entries due in the current bucket or earlier. */
+  private front: FrontHeap;
   private ring: Int32Array = new Int32Array(16).fill(-1);
   private mask = 15;
   private overHead = -1;
@@ -62,7 +60,6 @@ export class CalendarQueue {
   private frontOps = 0;
   private overScanned = 0;
   private rebuilds = 0;
-  private readonly tieLess: (a: number, b: number) => boolean;
 
   constructor(capacity: number, tieLess: (a: number, b: number) => boolean) {
     const cap = Math.max(capacity, 4);
@@ -70,10 +67,7 @@ export class CalendarQueue {
     this.loc = new Int32Array(cap).fill(ABSENT);
     this.next = new Int32Array(cap).fill(-1);
     this.prev = new Int32Array(cap).fill(-1);
-    this.fpos = new Int32Array(cap).fill(-1);
-    this.fslots = new Int32Array(cap);
-    this.fkeys = new Float64Array(cap);
-    this.tieLess = tieLess;
+    this.front = new FrontHeap(cap, tieLess);
   }
 
   get size(): number {
@@ -93,9 +87,7 @@ export class CalendarQueue {
     this.loc = grow(this.loc, ABSENT);
     this.next = grow(this.next, -1);
     this.prev = grow(this.prev, -1);
-    this.fpos = grow(this.fpos, -1);
-    this.fslots = grow(this.fslots, 0);
-    this.fkeys = grow(this.fkeys, 0);
+    this.front.reserve(cap);
   }
 
   has(slot: number): boolean {
@@ -105,13 +97,13 @@ export class CalendarQueue {
 
   /** The slot with the smallest key (exact ties: the canonical order), or -1 when empty. */
   peek(): number {
-    if (this.fn === 0 && !this.refill()) return -1;
-    return this.fslots[0] as number;
+    if (this.front.n === 0 && !this.refill()) return -1;
+    return this.front.slots[0] as number;
   }
 
   peekKey(): number {
-    if (this.fn === 0 && !this.refill()) return INF;
-    return this.fkeys[0] as number;
+    if (this.front.n === 0 && !this.refill()) return INF;
+    return this.front.keys[0] as number;
   }
 
   /** Insert the slot or change its key. An infinite key removes it (it would never be popped). */
@@ -126,11 +118,11 @@ export class CalendarQueue {
       const b = Math.floor((key - this.origin) * this.invW);
       if (b <= this.cur) {
         this.key[slot] = key;
-        this.frontUpdate(this.fpos[slot] as number, slot, key);
-        if (++this.frontOps > this.crowdLimit() && this.fn > FRONT_CROWDED) this.rebuild();
+        this.front.update(slot, key);
+        if (++this.frontOps > this.crowdLimit() && this.front.n > FRONT_CROWDED) this.rebuild();
         return;
       }
-      this.frontRemove(slot);
+      this.front.remove(slot);
     } else if (l !== ABSENT) {
       this.unlink(slot, l);
     } else this.n++;
@@ -140,7 +132,7 @@ export class CalendarQueue {
   remove(slot: number): void {
     const l = this.loc[slot];
     if (l === undefined || l === ABSENT) return; // not queued (or beyond the reserved range)
-    if (l === FRONT) this.frontRemove(slot);
+    if (l === FRONT) this.front.remove(slot);
     else this.unlink(slot, l);
     this.loc[slot] = ABSENT;
     this.n--;
@@ -158,11 +150,8 @@ export class CalendarQueue {
     q.loc.set(this.loc);
     q.next.set(this.next);
     q.prev.set(this.prev);
-    q.fpos.set(this.fpos);
-    q.fslots.set(this.fslots);
-    q.fkeys.set(this.fkeys);
+    q.front = this.front.cloneWith(tieLess);
     q.ring = this.ring.slice();
-    q.fn = this.fn;
     q.mask = this.mask;
     q.overHead = this.overHead;
     q.n = this.n;
@@ -189,7 +178,7 @@ export class CalendarQueue {
     const b = Math.floor((key - this.origin) * this.invW);
     if (b <= this.cur) {
       this.frontPush(slot, key);
-      if (++this.frontOps > this.crowdLimit() && this.fn > FRONT_CROWDED) this.rebuild();
+      if (++this.frontOps > this.crowdLimit() && this.front.n > FRONT_CROWDED) this.rebuild();
     } else if (b < this.ringEnd) {
       const r = (b | 0) & this.mask; // b < 2^53: ToInt32 keeps the low bits exactly
       this.pushList(slot, this.ring[r] as number);
@@ -228,7 +217,7 @@ export class CalendarQueue {
    * earliest bucket.
    */
   private refill(): boolean {
-    while (this.fn === 0) {
+    while (this.front.n === 0) {
       if (this.ringCount === 0) {
         if (this.overCount === 0) return false;
         let m = INF;
@@ -287,7 +276,7 @@ export class CalendarQueue {
   }
 
   private crowdLimit(): number {
-    return Math.max(this.fn, this.n >> 2) + FRONT_CROWDED;
+    return Math.max(this.front.n, this.n >> 2) + FRONT_CROWDED;
   }
 
   /** Whether the bucket width is far enough from its target to pay for a rebuild. */
@@ -309,7 +298,7 @@ export class CalendarQueue {
   private rebuild(): void {
     this.rebuilds++;
     const all: number[] = [];
-    for (let i = 0; i < this.fn; i++) all.push(this.fslots[i] as number);
+    for (let i = 0; i < this.front.n; i++) all.push(this.front.slots[i] as number);
     for (let r = 0; r <= this.mask; r++)
       for (let s = this.ring[r] as number; s >= 0; s = this.next[s] as number) all.push(s);
     for (let s = this.overHead; s >= 0; s = this.next[s] as number) all.push(s);
@@ -333,7 +322,7 @@ export class CalendarQueue {
     this.origin = lo;
     this.cur = 0;
     this.ringEnd = nb;
-    this.fn = 0;
+    this.front.n = 0;
     this.overHead = -1;
     this.ringCount = 0;
     this.overCount = 0;
@@ -344,71 +333,8 @@ export class CalendarQueue {
     for (const s of all) this.place(s, this.key[s] as number);
   }
 
-  // ---- front heap (binary, by key then canonical order) --------------------------------------
-
-  private before(ka: number, a: number, kb: number, b: number): boolean {
-    return ka < kb || (ka === kb && this.tieLess(a, b));
-  }
-
   private frontPush(slot: number, key: number): void {
     this.loc[slot] = FRONT;
-    this.up(this.fn++, slot, key);
-  }
-
-  private frontRemove(slot: number): void {
-    const p = this.fpos[slot] as number;
-    const last = --this.fn;
-    if (p === last) return;
-    this.frontUpdate(p, this.fslots[last] as number, this.fkeys[last] as number);
-  }
-
-  /** Place (slot, key) at position p, moving it up or down as needed. */
-  private frontUpdate(p: number, slot: number, key: number): void {
-    const parent = (p - 1) >> 1;
-    if (p > 0 && this.before(key, slot, this.fkeys[parent] as number, this.fslots[parent] as number))
-      this.up(p, slot, key);
-    else this.down(p, slot, key);
-  }
-
-  private up(i: number, slot: number, key: number): void {
-    const fs = this.fslots;
-    const fk = this.fkeys;
-    while (i > 0) {
-      const parent = (i - 1) >> 1;
-      const pk = fk[parent] as number;
-      const ps = fs[parent] as number;
-      if (!this.before(key, slot, pk, ps)) break;
-      fs[i] = ps;
-      fk[i] = pk;
-      this.fpos[ps] = i;
-      i = parent;
-    }
-    fs[i] = slot;
-    fk[i] = key;
-    this.fpos[slot] = i;
-  }
-
-  private down(i: number, slot: number, key: number): void {
-    const fs = this.fslots;
-    const fk = this.fkeys;
-    const n = this.fn;
-    for (;;) {
-      let c = 2 * i + 1;
-      if (c >= n) break;
-      let ck = fk[c] as number;
-      if (c + 1 < n && this.before(fk[c + 1] as number, fs[c + 1] as number, ck, fs[c] as number)) {
-        c++;
-        ck = fk[c] as number;
-      }
-      const cs = fs[c] as number;
-      if (!this.before(ck, cs, key, slot)) break;
-      fs[i] = cs;
-      fk[i] = ck;
-      this.fpos[cs] = i;
-      i = c;
-    }
-    fs[i] = slot;
-    fk[i] = key;
-    this.fpos[slot] = i;
+    this.front.push(slot, key);
   }
 }

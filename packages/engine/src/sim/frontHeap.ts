@@ -1,0 +1,116 @@
+/**
+ * The calendar queue's front (calendarQueue.ts): a binary min-heap of slots ordered by key, exact
+ * ties by the caller's canonical order, so the order never depends on insertion order. It holds
+ * the entries of the current bucket only, a handful, so a binary heap is the cheapest choice.
+ * Each slot's heap position is kept (`pos`) for O(log n) update and removal.
+ */
+export class FrontHeap {
+  /** Slots and their keys in heap order; n entries. */
+  slots: Int32Array;
+  keys: Float64Array;
+  n = 0;
+  /** Heap position of each slot in the heap (meaningless for slots not in it). */
+  private pos: Int32Array;
+  private readonly tieLess: (a: number, b: number) => boolean;
+
+  constructor(capacity: number, tieLess: (a: number, b: number) => boolean) {
+    this.slots = new Int32Array(capacity);
+    this.keys = new Float64Array(capacity);
+    this.pos = new Int32Array(capacity).fill(-1);
+    this.tieLess = tieLess;
+  }
+
+  /** Grow the slot range to `capacity` (at least the current one). */
+  reserve(capacity: number): void {
+    const slots = new Int32Array(capacity);
+    slots.set(this.slots);
+    const keys = new Float64Array(capacity);
+    keys.set(this.keys);
+    const pos = new Int32Array(capacity).fill(-1);
+    pos.set(this.pos);
+    this.slots = slots;
+    this.keys = keys;
+    this.pos = pos;
+  }
+
+  /** A copy with another tie-break function. */
+  cloneWith(tieLess: (a: number, b: number) => boolean): FrontHeap {
+    const h = new FrontHeap(this.pos.length, tieLess);
+    h.slots.set(this.slots);
+    h.keys.set(this.keys);
+    h.pos.set(this.pos);
+    h.n = this.n;
+    return h;
+  }
+
+  push(slot: number, key: number): void {
+    this.up(this.n++, slot, key);
+  }
+
+  /** Remove a slot that is in the heap. */
+  remove(slot: number): void {
+    const p = this.pos[slot] as number;
+    const last = --this.n;
+    if (p === last) return;
+    this.place(p, this.slots[last] as number, this.keys[last] as number);
+  }
+
+  /** Change the key of a slot that is in the heap. */
+  update(slot: number, key: number): void {
+    this.place(this.pos[slot] as number, slot, key);
+  }
+
+  private before(ka: number, a: number, kb: number, b: number): boolean {
+    return ka < kb || (ka === kb && this.tieLess(a, b));
+  }
+
+  /** Put (slot, key) at position p, moving it up or down as needed. */
+  private place(p: number, slot: number, key: number): void {
+    const parent = (p - 1) >> 1;
+    if (p > 0 && this.before(key, slot, this.keys[parent] as number, this.slots[parent] as number))
+      this.up(p, slot, key);
+    else this.down(p, slot, key);
+  }
+
+  private up(i: number, slot: number, key: number): void {
+    const fs = this.slots;
+    const fk = this.keys;
+    while (i > 0) {
+      const parent = (i - 1) >> 1;
+      const pk = fk[parent] as number;
+      const ps = fs[parent] as number;
+      if (!this.before(key, slot, pk, ps)) break;
+      fs[i] = ps;
+      fk[i] = pk;
+      this.pos[ps] = i;
+      i = parent;
+    }
+    fs[i] = slot;
+    fk[i] = key;
+    this.pos[slot] = i;
+  }
+
+  private down(i: number, slot: number, key: number): void {
+    const fs = this.slots;
+    const fk = this.keys;
+    const n = this.n;
+    for (;;) {
+      let c = 2 * i + 1;
+      if (c >= n) break;
+      let ck = fk[c] as number;
+      if (c + 1 < n && this.before(fk[c + 1] as number, fs[c + 1] as number, ck, fs[c] as number)) {
+        c++;
+        ck = fk[c] as number;
+      }
+      const cs = fs[c] as number;
+      if (!this.before(ck, cs, key, slot)) break;
+      fs[i] = cs;
+      fk[i] = ck;
+      this.pos[cs] = i;
+      i = c;
+    }
+    fs[i] = slot;
+    fk[i] = key;
+    this.pos[slot] = i;
+  }
+}
