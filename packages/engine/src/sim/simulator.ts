@@ -1,11 +1,3 @@
-/**
- * Processing: pops the next item from the heap and carries it out. After any change of a body's
- * motion its predictions are recomputed; predictions of partners that involved it become stale
- * (their recorded partner version no longer matches) and are recomputed when they reach the top.
- * With the canonical order of simultaneous events this makes the simulation bit-identical whatever
- * order bodies were added in.
- */
-import { velocityAt } from "../physics/motion.js";
 import { discDiscResponse, impulseMagnitude, reflectResponse } from "../physics/response.js";
 import {
   SIMULTANEOUS_EVENTS_PER_BODY,
@@ -140,30 +132,10 @@ export class Simulator extends Predictor {
     const yp = this.yAt(p, t);
     const xq = this.xAt(q, t);
     const yq = this.yAt(q, t);
-    const vxp = velocityAt(
-      b.mot[p * 8 + 0] as number,
-      b.mot[p * 8 + 3] as number,
-      b.mot[p * 8 + 5] as number,
-      t,
-    );
-    const vyp = velocityAt(
-      b.mot[p * 8 + 0] as number,
-      b.mot[p * 8 + 4] as number,
-      b.mot[p * 8 + 6] as number,
-      t,
-    );
-    const vxq = velocityAt(
-      b.mot[q * 8 + 0] as number,
-      b.mot[q * 8 + 3] as number,
-      b.mot[q * 8 + 5] as number,
-      t,
-    );
-    const vyq = velocityAt(
-      b.mot[q * 8 + 0] as number,
-      b.mot[q * 8 + 4] as number,
-      b.mot[q * 8 + 6] as number,
-      t,
-    );
+    const vxp = this.vxAt(p, t);
+    const vyp = this.vyAt(p, t);
+    const vxq = this.vxAt(q, t);
+    const vyq = this.vyAt(q, t);
     const mp = b.m[p] as number;
     const mq = b.m[q] as number;
     const approach = discDiscResponse(xp, yp, vxp, vyp, mp, xq, yq, vxq, vyq, mq, vel);
@@ -213,18 +185,8 @@ export class Simulator extends Predictor {
     const t = this.time;
     const x = this.xAt(s, t);
     const y = this.yAt(s, t);
-    const vx = velocityAt(
-      b.mot[s * 8 + 0] as number,
-      b.mot[s * 8 + 3] as number,
-      b.mot[s * 8 + 5] as number,
-      t,
-    );
-    const vy = velocityAt(
-      b.mot[s * 8 + 0] as number,
-      b.mot[s * 8 + 4] as number,
-      b.mot[s * 8 + 6] as number,
-      t,
-    );
+    const vx = this.vxAt(s, t);
+    const vy = this.vyAt(s, t);
     let cx: number;
     let cy: number;
     let nx: number;

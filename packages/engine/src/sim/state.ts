@@ -5,7 +5,7 @@
  *
  * Cell crossings never change a motion: the grid only decides which pairs are tested.
  */
-import { type MotionLaw, motionLaw, positionAt } from "../physics/motion.js";
+import { type MotionLaw, motionLaw, positionAt, velocityAt } from "../physics/motion.js";
 import { GRID_CELL_MARGIN, GRID_CELLS_PER_BODY, GRID_MIN_BODIES } from "../tolerances.js";
 import { BodyStore, EV_BODY, EV_CROSS, EV_LINE, EV_POINT } from "./bodyStore.js";
 import { CalendarQueue } from "./calendarQueue.js";
@@ -146,6 +146,17 @@ export class SimState {
       b.mot[s * 8 + 6] as number,
       t,
     );
+  }
+
+  /** Velocity of body s at time t (t within its current motion). */
+  protected vxAt(s: number, t: number): number {
+    const m = this.store.mot;
+    return velocityAt(m[s * 8 + 0] as number, m[s * 8 + 3] as number, m[s * 8 + 5] as number, t);
+  }
+
+  protected vyAt(s: number, t: number): number {
+    const m = this.store.mot;
+    return velocityAt(m[s * 8 + 0] as number, m[s * 8 + 4] as number, m[s * 8 + 6] as number, t);
   }
 
   protected isMoving(s: number): boolean {

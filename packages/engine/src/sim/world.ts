@@ -104,16 +104,8 @@ export class World extends Placement {
     const now = this.time;
     const x = requireFinite("x", patch.x ?? this.xAt(s, now));
     const y = requireFinite("y", patch.y ?? this.yAt(s, now));
-    const vx = requireFinite(
-      "vx",
-      patch.vx ??
-        velocityAt(b.mot[s * 8 + 0] as number, b.mot[s * 8 + 3] as number, b.mot[s * 8 + 5] as number, now),
-    );
-    const vy = requireFinite(
-      "vy",
-      patch.vy ??
-        velocityAt(b.mot[s * 8 + 0] as number, b.mot[s * 8 + 4] as number, b.mot[s * 8 + 6] as number, now),
-    );
+    const vx = requireFinite("vx", patch.vx ?? this.vxAt(s, now));
+    const vy = requireFinite("vy", patch.vy ?? this.vyAt(s, now));
     const r = requirePositiveFinite("r", patch.r ?? b.r[s]);
     const m = requireMass("m", patch.m ?? b.m[s]);
     const mu = requireNonNegativeFinite("mu", patch.mu ?? b.mu[s]);
@@ -280,13 +272,13 @@ export class World extends Placement {
     for (const [id, s] of this.index)
       checkFrictionGravity(`bodies.${id}.mu`, this.store.mu[s] as number, gravity);
     const now = this.time;
-    const b = this.store;
+    const _b = this.store;
     const states = [...this.index.values()].map((s) => [
       s,
       this.xAt(s, now),
       this.yAt(s, now),
-      velocityAt(b.mot[s * 8 + 0] as number, b.mot[s * 8 + 3] as number, b.mot[s * 8 + 5] as number, now),
-      velocityAt(b.mot[s * 8 + 0] as number, b.mot[s * 8 + 4] as number, b.mot[s * 8 + 6] as number, now),
+      this.vxAt(s, now),
+      this.vyAt(s, now),
     ]);
     this.g = g;
     this.gx = gravity[0];
