@@ -128,18 +128,37 @@ describe("CalendarQueue", () => {
   });
 
   it("an entry pulled from the overflow at the window's far edge waits for its turn", () => {
-    // A fresh queue has width 1 and 16 buckets: 24.5 starts in the overflow. When the window moves
-    // on at bucket 8 it ends at bucket 24, which shares its ring slot with bucket 8: the entry must
-    // stay in the overflow and not be loaded with bucket 8 (before 9.5).
-    const q = new CalendarQueue(4, tieLess);
-    q.set(0, 24.5);
-    q.set(1, 1.5);
-    q.set(2, 9.5);
-    expect(q.peek()).toBe(1);
-    q.remove(1);
-    expect(q.peek()).toBe(2);
-    q.remove(2);
+    const q = new CalendarQueue(8, tieLess);
+    // The first peek sizes the queue from the keys queued; then the window is buckets [0, nb).
+    for (let s = 0; s < 4; s++) q.set(s, s);
     expect(q.peek()).toBe(0);
+    const { width: w, origin, buckets: nb } = q.diagnostics();
+    expect(nb).toBe(16);
+    for (let s = 0; s < 4; s++) q.remove(s);
+    const at = (bucket: number): number => origin + (bucket + 0.5) * w;
+    // A starts in the overflow (bucket 1.5 nb). When the window moves on at bucket nb/2 it ends at
+    // bucket 1.5 nb, which shares its ring slot with bucket nb/2: A must stay in the overflow and
+    // not be loaded with bucket nb/2, before C (bucket nb/2 + 1).
+    q.set(5, at(1.5 * nb));
+    q.set(6, at(1));
+    q.set(7, at(nb / 2 + 1));
+    expect(q.peek()).toBe(6);
+    q.remove(6);
+    expect(q.peek()).toBe(7);
+    q.remove(7);
+    expect(q.peek()).toBe(5);
+    expect(q.diagnostics().rebuilds).toBe(1);
+  });
+
+  it("a fresh queue is sized once, at its first peek, from every key queued so far", () => {
+    const q = new CalendarQueue(4, tieLess);
+    for (let s = 0; s < 1000; s++) {
+      q.reserve(s + 1);
+      q.set(s, (s * 7919) % 1000);
+    }
+    expect(q.diagnostics().rebuilds).toBe(0);
+    expect(q.peek()).toBe(0);
+    expect(q.diagnostics()).toMatchObject({ rebuilds: 1, buckets: 2048 });
   });
 
   it("refuses a NaN time by name instead of corrupting the order", () => {

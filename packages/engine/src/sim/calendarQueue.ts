@@ -50,10 +50,15 @@ export class CalendarQueue {
   private origin = 0;
   private w = 1;
   private invW = 1;
-  /** Current bucket number: entries with a bucket number <= cur are in the front. */
-  private cur = 0;
+  /**
+   * Current bucket number: entries with a bucket number <= cur are in the front. Until the first
+   * peek the queue has no width yet: cur and ringEnd are -Infinity, so every entry waits in the
+   * overflow list (O(1) each), and the first peek sizes the queue from all of them at once.
+   */
+  private cur = -INF;
   /** Ring entries have cur < bucket < ringEnd <= cur + ring length. */
-  private ringEnd = 16;
+  private ringEnd = -INF;
+  private sized = false;
   /** Adaptation counters since the last rebuild. */
   private advances = 0;
   private loaded = 0;
@@ -139,8 +144,8 @@ export class CalendarQueue {
   }
 
   /** Bucket width, ring length and rebuilds so far (for tests and benchmarks; never affects the order). */
-  diagnostics(): { width: number; buckets: number; rebuilds: number } {
-    return { width: this.w, buckets: this.mask + 1, rebuilds: this.rebuilds };
+  diagnostics(): { width: number; origin: number; buckets: number; rebuilds: number } {
+    return { width: this.w, origin: this.origin, buckets: this.mask + 1, rebuilds: this.rebuilds };
   }
 
   /** A copy with another tie-break function (a cloned world passes its own). */
@@ -161,6 +166,7 @@ export class CalendarQueue {
     q.w = this.w;
     q.invW = this.invW;
     q.cur = this.cur;
+    q.sized = this.sized;
     q.ringEnd = this.ringEnd;
     q.advances = this.advances;
     q.loaded = this.loaded;
@@ -220,6 +226,10 @@ export class CalendarQueue {
     while (this.front.n === 0) {
       if (this.ringCount === 0) {
         if (this.overCount === 0) return false;
+        if (!this.sized) {
+          this.rebuild();
+          continue;
+        }
         let m = INF;
         for (let s = this.overHead; s >= 0; s = this.next[s] as number) {
           const b = Math.floor(((this.key[s] as number) - this.origin) * this.invW);
@@ -297,6 +307,7 @@ export class CalendarQueue {
    */
   private rebuild(): void {
     this.rebuilds++;
+    this.sized = true;
     const all: number[] = [];
     for (let i = 0; i < this.front.n; i++) all.push(this.front.slots[i] as number);
     for (let r = 0; r <= this.mask; r++)
