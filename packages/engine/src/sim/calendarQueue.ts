@@ -11,9 +11,10 @@
  * the front's top is the global minimum and ties never straddle two places: the pop order is the
  * (key, tie order) order whatever the bucket width, insertion order or history (determinism).
  *
- * The width adapts, without changing the pop order: every half turn of the ring the queue compares
- * the entries it loaded per bucket with its target and, far off, rebuilds with a width estimated
- * from the keys in the queue; a front that grows for long without the window moving does the same.
+ * The width adapts, without changing the pop order: a new queue is sized at its first peek from
+ * every key queued so far; then every half turn of the ring the queue compares the entries it
+ * loaded per bucket with its target and, far off, rebuilds with a width estimated from the keys in
+ * the queue; a front that grows for long without the window moving does the same.
  */
 import { CALENDAR_BUCKET_TARGET, CALENDAR_REBUILD_FACTOR } from "../tolerances.js";
 import { FrontHeap } from "./frontHeap.js";
@@ -28,8 +29,8 @@ const MAX_BUCKET = 2 ** 52;
 /**
  * A front larger than this means the width is too large (the queue has become a binary heap). It
  * is rebuilt once the operations on it since the last rebuild outnumber both its entries (a bulk
- * fill, as when a world is built, is rebuilt right after it) and a quarter of all entries (so a
- * front crowded by many equal times cannot rebuild more often than every n / 4 operations).
+ * fill into the front is rebuilt soon after it) and a quarter of all entries (so a front crowded
+ * by many equal times cannot rebuild more often than every n / 4 operations).
  */
 const FRONT_CROWDED = 64;
 
