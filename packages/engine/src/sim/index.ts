@@ -5,6 +5,7 @@ export type {
   AdvanceLimits,
   AdvanceResult,
   BodyInit,
+  BodyMotionInit,
   BodyPatch,
   BodyState,
   EventCounts,

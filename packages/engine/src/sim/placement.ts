@@ -3,6 +3,7 @@
  * without overlapping what is already there (touching is allowed), using the broad-phase grid for
  * large scenes. Every check throws ChapgameError naming the field before anything changes.
  */
+import { OVERLAP_REL } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
 import { distanceToLine, type Line, type LineKind, makeLine, type Point } from "./obstacles.js";
 import { Simulator } from "./simulator.js";
@@ -52,15 +53,20 @@ export class Placement extends Simulator {
     if (r > this.gridMaxR || !inside) this.rebuildGrid(x, y, r, 2);
   }
 
-  /** Throw if a disc (x, y, r) would overlap any body (other than slot `self`), line or point. */
-  protected checkOverlap(x: number, y: number, r: number, self: number): void {
+  /**
+   * Throw if a disc (x, y, r) would overlap any body (other than slot `self`), line or point. With
+   * `roundOff`, overlaps up to OVERLAP_REL of the contact distance are accepted: the round-off the
+   * engine's own collisions leave between bodies in contact (for restoring exact motions).
+   */
+  protected checkOverlap(x: number, y: number, r: number, self: number, roundOff = false): void {
     const b = this.store;
     const now = this.time;
+    const keep = roundOff ? 1 - OVERLAP_REL : 1;
     const test = (s: number): void => {
       if (s === self) return;
       const dx = this.xAt(s, now) - x;
       const dy = this.yAt(s, now) - y;
-      const R = r + (b.r[s] as number);
+      const R = (r + (b.r[s] as number)) * keep;
       if (dx * dx + dy * dy < R * R)
         throw new ChapgameError("x", `the body would overlap body '${b.ids[s]}'`);
     };
@@ -74,11 +80,12 @@ export class Placement extends Simulator {
         for (let xx = Math.max(0, cx - 1); xx <= Math.min(g.nx - 1, cx + 1); xx++)
           for (let s = g.head[yy * g.nx + xx] as number; s >= 0; s = g.next[s] as number) test(s);
     }
+    const rk = r * keep;
     for (const line of this.lineList)
-      if (distanceToLine(line, x, y) < r)
+      if (distanceToLine(line, x, y) < rk)
         throw new ChapgameError("x", `the body would overlap line '${line.id}'`);
     for (const p of this.pointList)
-      if ((p.x - x) * (p.x - x) + (p.y - y) * (p.y - y) < r * r)
+      if ((p.x - x) * (p.x - x) + (p.y - y) * (p.y - y) < rk * rk)
         throw new ChapgameError("x", `the body would overlap point '${p.id}'`);
   }
 }

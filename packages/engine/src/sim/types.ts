@@ -14,6 +14,22 @@ export interface BodyInit {
   vy?: number;
 }
 
+/**
+ * A body given by an exact motion that started at t0 (at or before the World's time), as
+ * `World.motion(id)` reports it: p(t) = (x0, y0) + (t - t0) (v + (t - t0) a / 2), where a (friction
+ * or the gravity field) follows from v, mu and the World's globals exactly as for any motion.
+ */
+export interface BodyMotionInit {
+  t0: number;
+  x0: number;
+  y0: number;
+  vx: number;
+  vy: number;
+  r: number;
+  m: number;
+  mu?: number;
+}
+
 export interface BodyPatch {
   x?: number;
   y?: number;

@@ -5,7 +5,7 @@
  * validated first: invalid input throws ChapgameError naming the field, and changes nothing.
  * `advance` processes events in time order; events exactly at `untilTime` are processed.
  */
-import { positionAt, velocityAt } from "../physics/motion.js";
+import { type MotionLaw, motionLaw, positionAt, velocityAt } from "../physics/motion.js";
 import { ChapgameError } from "./errors.js";
 import type { Line, LineKind } from "./obstacles.js";
 import { Placement } from "./placement.js";
@@ -13,6 +13,7 @@ import type {
   AdvanceLimits,
   AdvanceResult,
   BodyInit,
+  BodyMotionInit,
   BodyPatch,
   BodyState,
   LineState,
@@ -32,6 +33,7 @@ import {
 } from "./validate.js";
 
 const INF = Number.POSITIVE_INFINITY;
+const restoredLaw: MotionLaw = { ax: 0, ay: 0, tEnd: INF };
 
 export class World extends Placement {
   constructor(options: WorldOptions = {}) {
@@ -96,6 +98,61 @@ export class World extends Placement {
     this.index.set(id, s);
     this.grid.insert(s, this.cellAt(x, y));
     if (!this.dirty) this.predict(s);
+  }
+
+  /**
+   * Add a body with an exact motion that started at `t0 <= time` (what `motion(id)` reports, plus
+   * r, m, mu): a World rebuilt this way from every body's motion, the obstacles and the globals
+   * computes the same future, bit for bit, as the World the motions came from (every prediction is
+   * a pure function of the motions). A friction motion must not have stopped before `time`. Round-off
+   * overlaps up to OVERLAP_REL of the contact distance, which collisions leave between bodies in
+   * contact, are accepted; larger overlaps are refused like addBody's.
+   */
+  addBodyMotion(id: string, init: BodyMotionInit): void {
+    requireId("id", id);
+    if (this.index.has(id)) throw new ChapgameError("id", `a body with id '${id}' already exists`);
+    const t0 = requireFinite("t0", init.t0);
+    if (t0 > this.time) throw new ChapgameError("t0", `must be <= the world's time ${this.time}`);
+    const x0 = requireFinite("x0", init.x0);
+    const y0 = requireFinite("y0", init.y0);
+    const vx = requireFinite("vx", init.vx);
+    const vy = requireFinite("vy", init.vy);
+    const r = requirePositiveFinite("r", init.r);
+    const m = requireMass("m", init.m);
+    const mu = requireNonNegativeFinite("mu", init.mu ?? 0);
+    checkFrictionGravity("mu", mu, this.gravity);
+    motionLaw(t0, vx, vy, mu, this.g, this.gx, this.gy, restoredLaw);
+    if (restoredLaw.tEnd < this.time)
+      throw new ChapgameError(
+        "t0",
+        `the motion stops at t=${restoredLaw.tEnd}, before the world's time ${this.time}: give the resting motion that starts at the stop`,
+      );
+    // Where the body is now, evaluated as xAt/yAt will evaluate it.
+    const x = requireFinite("x0", positionAt(t0, x0, vx, restoredLaw.ax, this.time));
+    const y = requireFinite("y0", positionAt(t0, y0, vy, restoredLaw.ay, this.time));
+    this.prepareGridFor(x, y, r);
+    this.checkOverlap(x, y, r, -1, true);
+    const b = this.store;
+    const s = b.allocate(id);
+    this.grid.reserve(b.capacity);
+    this.heap.reserve(b.capacity);
+    b.r[s] = r;
+    b.m[s] = m;
+    b.mu[s] = mu;
+    this.setMotion(s, t0, x0, y0, vx, vy);
+    this.index.set(id, s);
+    this.grid.insert(s, this.cellAt(x, y));
+    if (!this.dirty) this.predict(s);
+  }
+
+  /** @internal The Zeno watch's counters (for Timeline keyframes, which restore them exactly). */
+  zenoWatch(): [number, number, number, number] {
+    return [this.sameTime, this.sameTimeCount, this.windowStart, this.windowCount];
+  }
+
+  /** @internal Restore counters taken by zenoWatch(). */
+  setZenoWatch(w: readonly [number, number, number, number]): void {
+    [this.sameTime, this.sameTimeCount, this.windowStart, this.windowCount] = w;
   }
 
   updateBody(id: string, patch: BodyPatch): void {

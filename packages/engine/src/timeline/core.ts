@@ -14,7 +14,7 @@ import type { Action, Until, Vec2 } from "../scene/types.js";
 import type { WorldEvent } from "../sim/types.js";
 import { World } from "../sim/world.js";
 import { applyToWorld, touchedBodies } from "./applyAction.js";
-import { type Keyframe, loadMotions, snapshotMotions, snapshotProps } from "./keyframe.js";
+import { type Keyframe, loadMotions, snapshotMotions, snapshotProps, worldAt } from "./keyframe.js";
 import { MotionTable } from "./motionTable.js";
 import { K_ACTION, K_BODY_BODY, K_BODY_LINE, K_BODY_POINT, K_STOP, Records } from "./records.js";
 import type { TimelineCounts } from "./types.js";
@@ -26,9 +26,6 @@ export const KEYFRAME_MIN_RECORDS = 1024;
 /** …and this many per live body, so a keyframe (40 bytes per body) costs about 7 bytes per record,
  *  while stateAt replays at most this many records per body (constant work per body). */
 export const KEYFRAME_RECORDS_PER_BODY = 6;
-/** Every this many keyframes (and after every group of actions) a World clone is kept: the points
- *  a recomputation restarts from. A restart replays at most this many keyframe intervals. */
-export const CLONE_EVERY_KEYFRAMES = 16;
 
 /** Compute at least until `tLimit` or until `eLimit` collisions and stops in total, whichever first
  *  (or until nothing is left to happen). */
@@ -95,7 +92,7 @@ export class TimelineCore {
     this.eager = eager;
     this.world = new World({ g, gravity });
     this.onEvent = (e) => this.record(e);
-    if (history) this.keyframe(false, true);
+    if (history) this.keyframe(false);
   }
 
   get horizon(): number {
@@ -138,7 +135,7 @@ export class TimelineCore {
     return this.sortedLive;
   }
 
-  keyframe(afterActions: boolean, withWorld: boolean): void {
+  keyframe(afterActions: boolean): void {
     const w = this.world;
     const prev = this.keyframes[this.keyframes.length - 1];
     const share = !afterActions && prev !== undefined;
@@ -163,7 +160,7 @@ export class TimelineCore {
       pointCount: this.pointIds.length,
       lineNums: new Map(this.lineNums),
       pointNums: new Map(this.pointNums),
-      world: withWorld ? w.clone() : null,
+      zeno: w.zenoWatch(),
     });
   }
 
@@ -210,7 +207,7 @@ export class TimelineCore {
     const last = this.keyframes[this.keyframes.length - 1] as Keyframe;
     if (this.keyframes.length > 1 && last.afterActions && last.time === t && last.record === groupStart)
       this.keyframes.pop();
-    this.keyframe(true, true);
+    this.keyframe(true);
   }
 
   /** Update the registry and the motion table after action `a` at time t. */
@@ -304,31 +301,21 @@ export class TimelineCore {
       this.idle = res.reason === "idle";
       if (this.history) {
         const last = this.keyframes[this.keyframes.length - 1] as Keyframe;
-        if (this.records.length - last.record >= this.recordsPerKeyframe()) {
-          const sinceClone = this.keyframesSinceClone();
-          this.keyframe(false, sinceClone + 1 >= CLONE_EVERY_KEYFRAMES);
-        }
+        if (this.records.length - last.record >= this.recordsPerKeyframe()) this.keyframe(false);
       }
     }
-  }
-
-  private keyframesSinceClone(): number {
-    let n = 0;
-    for (let i = this.keyframes.length - 1; i >= 0 && (this.keyframes[i] as Keyframe).world === null; i--)
-      n++;
-    return n;
   }
 
   // ---- time travel ------------------------------------------------------------------------------
 
   /**
-   * Cut the computed history back to keyframe `k` (which must hold a World clone): the World, the
-   * motion table, the registry, the records and the counts are as they were when it was taken.
+   * Cut the computed history back to keyframe `k`: the World (rebuilt from the keyframe's motions),
+   * the motion table, the registry, the records and the counts are as they were when it was taken.
    */
   restoreKeyframe(k: number): void {
     const kf = this.keyframes[k] as Keyframe;
     this.keyframes.length = k + 1;
-    this.world = (kf.world as World).clone();
+    this.world = worldAt(kf, this.bodyIds);
     this.records.length = kf.record;
     this.applied = kf.actionCount;
     this.actEvents.length = kf.actionCount;

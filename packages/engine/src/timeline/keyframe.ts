@@ -1,12 +1,14 @@
 /**
  * Keyframes of a Timeline: the state of all bodies' motions at one point of the computation, taken
  * after every group of actions and every K records (K grows with the number of bodies so keyframes
- * cost a bounded number of bytes per event). Every few keyframes also hold a World clone, the points
- * a recomputation restarts from. stateAt(t) = the last keyframe at or before t + the records up to t.
+ * cost a bounded number of bytes per event). Every keyframe is also a point a recomputation restarts
+ * from: worldAt(kf) rebuilds the World from the motions, obstacles and globals, which gives the same
+ * future bit for bit (World.addBodyMotion). stateAt(t) = the last keyframe at or before t + the
+ * records up to t.
  */
 import type { Vec2 } from "../scene/types.js";
 import type { LineState, PointState } from "../sim/types.js";
-import type { World } from "../sim/world.js";
+import { World } from "../sim/world.js";
 import { type MotionTable, STRIDE } from "./motionTable.js";
 import type { TimelineCounts } from "./types.js";
 
@@ -42,8 +44,9 @@ export interface Keyframe {
   /** id → number maps of obstacles alive at the keyframe */
   lineNums: Map<string, number>;
   pointNums: Map<string, number>;
-  /** a World clone to restart a recomputation from, or null */
-  world: World | null;
+  /** the World's Zeno watch counters (World.zenoWatch), so a restart detects a Zeno state at the
+   *  same event as the uninterrupted computation */
+  zeno: readonly [number, number, number, number];
 }
 
 /** Numbers per body in Keyframe.motions. */
@@ -100,6 +103,34 @@ export function loadMotions(kf: Keyframe, table: MotionTable): void {
   }
 }
 
+/**
+ * The World as it was when `kf` was taken, rebuilt from its motions (`ids[order[k]]` names body k):
+ * obstacles first, then the bodies in id order, then the Zeno watch. Its future equals the original
+ * World's bit for bit.
+ */
+export function worldAt(kf: Keyframe, ids: readonly string[]): World {
+  const w = new World({ g: kf.g, gravity: kf.gravity, time: kf.time });
+  for (const l of kf.lines) w.addLine(l.id, l.p1, l.p2, l.kind);
+  for (const p of kf.points) w.addPoint(p.id, p.p);
+  const m = kf.motions;
+  const p = kf.props;
+  for (let k = 0; k < kf.order.length; k++) {
+    const q = k * KF_MOTION;
+    w.addBodyMotion(ids[kf.order[k] as number] as string, {
+      t0: m[q] as number,
+      x0: m[q + 1] as number,
+      y0: m[q + 2] as number,
+      vx: m[q + 3] as number,
+      vy: m[q + 4] as number,
+      r: p[3 * k] as number,
+      m: p[3 * k + 1] as number,
+      mu: p[3 * k + 2] as number,
+    });
+  }
+  w.setZenoWatch(kf.zeno);
+  return w;
+}
+
 /** Index of the last keyframe with time <= t (keyframes are in time order), or -1. */
 export function keyframeAtOrBefore(kfs: readonly Keyframe[], t: number): number {
   let lo = 0;
@@ -124,7 +155,7 @@ export function keyframeAtRecord(kfs: readonly Keyframe[], i: number): number {
   return lo - 1;
 }
 
-/** Bytes held by a keyframe, not counting its World clone nor what it shares with `prev`. */
+/** Bytes held by a keyframe, not counting what it shares with `prev`. */
 export function keyframeBytes(kf: Keyframe, prev: Keyframe | undefined): number {
   let bytes = kf.motions.byteLength + 160;
   if (prev?.order !== kf.order) bytes += kf.order.byteLength;

@@ -26,8 +26,6 @@ import type { LogEvent, ProlongResult, SceneState, TimelineCounts, TimelineOptio
 import { saveCore } from "./undo.js";
 
 const INF = Number.POSITIVE_INFINITY;
-/** Estimated bytes per body of a World clone's typed arrays (body store 168, grid and heap ~40). */
-const CLONE_BYTES_PER_BODY = 208;
 
 function checkUntil(raw: unknown, path: string): Until {
   if (!isObject(raw)) throw new SceneError(path, "must be an object with optional time and events");
@@ -134,7 +132,6 @@ export class Timeline {
       const kfs = c.keyframes;
       for (k = kfs.length - 1; k > 0; k--) {
         const kf = kfs[k] as Keyframe;
-        if (kf.world === null) continue;
         if (kf.time < a.time || (kf.time === a.time && kf.afterActions && kf.actionCount === insertAt)) break;
       }
     }
@@ -214,7 +211,7 @@ export class Timeline {
     const cut = Math.min(sorted[d]?.time ?? INF, c.acts[d]?.time ?? INF);
     for (let k = c.keyframes.length - 1; k > 0; k--) {
       const kf = c.keyframes[k] as Keyframe;
-      if (kf.world !== null && kf.actionCount <= d && kf.time < cut) return k;
+      if (kf.actionCount <= d && kf.time < cut) return k;
     }
     return 0;
   }
@@ -330,13 +327,12 @@ export class Timeline {
     return { ...this.core.counts };
   }
 
-  /** Bytes of stored history: records, keyframes, and an estimate of the World clones' arrays. */
+  /** Bytes of stored history: records and keyframes. */
   historyBytes(): number {
     const c = this.core;
     let bytes = c.records.bytes();
     c.keyframes.forEach((kf, k) => {
       bytes += keyframeBytes(kf, c.keyframes[k - 1]);
-      if (kf.world !== null) bytes += CLONE_BYTES_PER_BODY * kf.order.length + 1024;
     });
     return bytes;
   }
