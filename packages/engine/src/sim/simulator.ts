@@ -5,14 +5,17 @@ import {
   ZENO_WINDOW_EVENTS,
   ZENO_WINDOW_EVENTS_PER_BODY,
 } from "../tolerances.js";
-import { EV_BODY, EV_LINE, EV_STOP } from "./bodyStore.js";
+import { EV_BODY, EV_LINE, EV_POINT, EV_STOP } from "./bodyStore.js";
 import { SimulationError } from "./errors.js";
 import type { Line, Point } from "./obstacles.js";
+import { PeekLog } from "./peek.js";
 import { Predictor } from "./predictor.js";
 import type { WorldEvent } from "./types.js";
 
 const INF = Number.POSITIVE_INFINITY;
 const vel = new Float64Array(4);
+/** Obstacle contact scratch: normal (nx, ny, not normalised) and contact point (x, y). */
+const contact = new Float64Array(4);
 export class Simulator extends Predictor {
   // ---- processing ---------------------------------------------------------------------------
 
@@ -46,6 +49,70 @@ export class Simulator extends Predictor {
     else this.processObstacle(s, kind, b.evOther[s] as number, b.evAux[s] as number);
     onEvent?.(this.ev);
     return 1;
+  }
+
+  /**
+   * Time of the next collision or stop (+Infinity when none), found without moving the world: the
+   * internal items before it are processed in place exactly as stepOnce would process them, logged,
+   * and undone (peek.ts), and the time restored. Throws what processing that event would throw (a
+   * Zeno state, a resting contact), also changing nothing. Needs up-to-date predictions (!dirty).
+   * Cost: O(1) per internal item before the event, not O(N).
+   */
+  protected peekEventTime(): number {
+    const b = this.store;
+    const log = this.peekLog;
+    const now = this.time;
+    log.begin(b.capacity);
+    try {
+      for (;;) {
+        const s = this.heap.peek();
+        if (s < 0) return INF;
+        const t = this.heap.peekKey();
+        if (t > this.time) this.time = t;
+        if ((b.crossTime[s] as number) <= (b.evTime[s] as number)) {
+          log.save(b, s, t);
+          log.recordMove(this.grid, s);
+          this.processCrossing(s);
+          continue;
+        }
+        const kind = b.evKind[s] as number;
+        if (kind === EV_BODY && b.version[b.evOther[s] as number] !== b.evOtherVersion[s]) {
+          log.save(b, s, t);
+          this.predict(s);
+          continue;
+        }
+        this.checkEvent(s, kind);
+        return this.time;
+      }
+    } finally {
+      log.undo(b, this.grid, this.heap);
+      this.time = now;
+    }
+  }
+
+  private readonly peekLog = new PeekLog();
+
+  /** Throw what processing slot s's event (of this kind, now) would throw; change nothing. */
+  private checkEvent(s: number, kind: number): void {
+    const watch = [this.sameTime, this.sameTimeCount, this.windowStart, this.windowCount] as const;
+    try {
+      this.guardZeno();
+      if (kind === EV_LINE || kind === EV_POINT) {
+        const b = this.store;
+        const t = this.time;
+        const id = this.obstacleContact(
+          s,
+          kind,
+          b.evOther[s] as number,
+          b.evAux[s] as number,
+          this.xAt(s, t),
+          this.yAt(s, t),
+        );
+        this.reflectOff(s, id, contact[0] as number, contact[1] as number);
+      }
+    } finally {
+      [this.sameTime, this.sameTimeCount, this.windowStart, this.windowCount] = watch;
+    }
   }
 
   /**
@@ -185,50 +252,10 @@ export class Simulator extends Predictor {
     const t = this.time;
     const x = this.xAt(s, t);
     const y = this.yAt(s, t);
-    const vx = this.vxAt(s, t);
-    const vy = this.vyAt(s, t);
-    let cx: number;
-    let cy: number;
-    let nx: number;
-    let ny: number;
-    let otherId: string;
-    if (kind === EV_LINE && aux === 0) {
-      const line = this.lineList[index] as Line;
-      otherId = line.id;
-      // Unnormalised normal (-ey, ex), oriented from the disc towards the line.
-      const side = line.nx * (x - line.x1) + line.ny * (y - line.y1);
-      nx = side > 0 ? line.ey : -line.ey;
-      ny = side > 0 ? -line.ex : line.ex;
-      const len = Math.sqrt(line.ee);
-      const r = b.r[s] as number;
-      cx = x + (r * nx) / len;
-      cy = y + (r * ny) / len;
-    } else {
-      let px: number;
-      let py: number;
-      if (kind === EV_LINE) {
-        const line = this.lineList[index] as Line;
-        otherId = line.id;
-        px = aux === 1 ? line.x1 : line.x2;
-        py = aux === 1 ? line.y1 : line.y2;
-      } else {
-        const point = this.pointList[index] as Point;
-        otherId = point.id;
-        px = point.x;
-        py = point.y;
-      }
-      nx = px - x;
-      ny = py - y;
-      cx = px;
-      cy = py;
-    }
-    const approach = reflectResponse(vx, vy, nx, ny, vel);
-    if (approach <= 0 && (b.mot[s * 8 + 5] as number) * nx + (b.mot[s * 8 + 6] as number) * ny > 0) {
-      throw new SimulationError(
-        `body '${b.ids[s]}' rests against '${otherId}' under an acceleration at t=${t}: resting contact is not supported (it would take infinitely many bounces)`,
-        t,
-      );
-    }
+    const otherId = this.obstacleContact(s, kind, index, aux, x, y);
+    const nx = contact[0] as number;
+    const ny = contact[1] as number;
+    const approach = this.reflectOff(s, otherId, nx, ny);
     this.setMotion(s, t, x, y, vel[0] as number, vel[1] as number);
     const nn = Math.sqrt(nx * nx + ny * ny);
     const ev = this.ev;
@@ -236,8 +263,8 @@ export class Simulator extends Predictor {
     ev.kind = kind === EV_LINE ? "bodyLine" : "bodyPoint";
     ev.a = b.ids[s] as string;
     ev.b = otherId;
-    ev.px = cx;
-    ev.py = cy;
+    ev.px = contact[2] as number;
+    ev.py = contact[3] as number;
     ev.nx = nx / nn;
     ev.ny = ny / nn;
     const m = b.m[s] as number;
@@ -245,5 +272,63 @@ export class Simulator extends Predictor {
     if (kind === EV_LINE) this.counts.bodyLine++;
     else this.counts.bodyPoint++;
     this.predict(s);
+  }
+
+  /**
+   * Contact of body s, centred at (x, y), with an obstacle (kind, index, aux as in the prediction):
+   * writes the normal from the disc towards the obstacle (not normalised) and the contact point to
+   * `contact`; returns the obstacle's id.
+   */
+  private obstacleContact(s: number, kind: number, index: number, aux: number, x: number, y: number): string {
+    if (kind === EV_LINE && aux === 0) {
+      const line = this.lineList[index] as Line;
+      // Unnormalised normal (-ey, ex), oriented from the disc towards the line.
+      const side = line.nx * (x - line.x1) + line.ny * (y - line.y1);
+      const nx = side > 0 ? line.ey : -line.ey;
+      const ny = side > 0 ? -line.ex : line.ex;
+      const len = Math.sqrt(line.ee);
+      const r = this.store.r[s] as number;
+      contact[0] = nx;
+      contact[1] = ny;
+      contact[2] = x + (r * nx) / len;
+      contact[3] = y + (r * ny) / len;
+      return line.id;
+    }
+    let px: number;
+    let py: number;
+    let id: string;
+    if (kind === EV_LINE) {
+      const line = this.lineList[index] as Line;
+      id = line.id;
+      px = aux === 1 ? line.x1 : line.x2;
+      py = aux === 1 ? line.y1 : line.y2;
+    } else {
+      const point = this.pointList[index] as Point;
+      id = point.id;
+      px = point.x;
+      py = point.y;
+    }
+    contact[0] = px - x;
+    contact[1] = py - y;
+    contact[2] = px;
+    contact[3] = py;
+    return id;
+  }
+
+  /**
+   * Reflect body s's velocity now off normal (nx, ny) into `vel`; returns the approach speed.
+   * Throws when the body rests against the obstacle under an acceleration pressing it there.
+   */
+  private reflectOff(s: number, otherId: string, nx: number, ny: number): number {
+    const t = this.time;
+    const approach = reflectResponse(this.vxAt(s, t), this.vyAt(s, t), nx, ny, vel);
+    const mot = this.store.mot;
+    if (approach <= 0 && (mot[s * 8 + 5] as number) * nx + (mot[s * 8 + 6] as number) * ny > 0) {
+      throw new SimulationError(
+        `body '${this.store.ids[s]}' rests against '${otherId}' under an acceleration at t=${t}: resting contact is not supported (it would take infinitely many bounces)`,
+        t,
+      );
+    }
+    return approach;
   }
 }
