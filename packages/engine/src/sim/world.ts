@@ -367,10 +367,15 @@ export class World extends Placement {
   }
 
   /**
-   * Time of the next collision or stop (+Infinity when nothing will ever happen). Costs a copy of
-   * the world: finding it may need internal work (cell crossings) that must not move this world.
+   * Time of the next collision or stop (+Infinity when nothing will ever happen); throws what
+   * advancing to it would throw. Changes nothing observable. Costs O(1) per internal item (cell
+   * crossing, stale prediction) before that event, processed in place and undone; only while
+   * predictions are out of date (before the first advance, or after an edit of obstacles or
+   * globals or a grid rebuild) does it cost a copy of the world and predicting every body, as the
+   * next advance will.
    */
   nextEventTime(): number {
+    if (!this.dirty) return this.peekEventTime();
     const probe = this.clone();
     let t = INF;
     probe.advance({ maxEvents: 1 }, (e) => {
