@@ -87,17 +87,7 @@ export class World extends Placement {
     checkFrictionGravity("mu", mu, this.gravity);
     this.prepareGridFor(x, y, r);
     this.checkOverlap(x, y, r, -1);
-    const b = this.store;
-    const s = b.allocate(id);
-    this.grid.reserve(b.capacity);
-    this.heap.reserve(b.capacity);
-    b.r[s] = r;
-    b.m[s] = m;
-    b.mu[s] = mu;
-    this.setMotion(s, this.time, x, y, vx, vy);
-    this.index.set(id, s);
-    this.grid.insert(s, this.cellAt(x, y));
-    if (!this.dirty) this.predict(s);
+    this.insertBody(id, r, m, mu, this.time, x, y, vx, vy, x, y);
   }
 
   /**
@@ -132,6 +122,23 @@ export class World extends Placement {
     const y = requireFinite("y0", positionAt(t0, y0, vy, restoredLaw.ay, this.time));
     this.prepareGridFor(x, y, r);
     this.checkOverlap(x, y, r, -1, true);
+    this.insertBody(id, r, m, mu, t0, x0, y0, vx, vy, x, y);
+  }
+
+  /** Store a validated body with motion (t0, x0, y0, vx, vy), now at (x, y), and predict it. */
+  private insertBody(
+    id: string,
+    r: number,
+    m: number,
+    mu: number,
+    t0: number,
+    x0: number,
+    y0: number,
+    vx: number,
+    vy: number,
+    x: number,
+    y: number,
+  ): void {
     const b = this.store;
     const s = b.allocate(id);
     this.grid.reserve(b.capacity);
