@@ -1,3 +1,8 @@
+/**
+ * Processing: the next queued item (a cell crossing, a stale prediction, or a collision or stop,
+ * which changes motions and is reported), the Zeno watch, and a look-ahead at the next event's time
+ * that changes nothing (its internal work is undone through peek.ts).
+ */
 import { discDiscResponse, impulseMagnitude, reflectResponse } from "../physics/response.js";
 import {
   SIMULTANEOUS_EVENTS_PER_BODY,
