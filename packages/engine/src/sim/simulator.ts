@@ -260,7 +260,11 @@ export class Simulator extends Predictor {
     const otherId = this.obstacleContact(s, kind, index, aux, x, y);
     const nx = contact[0] as number;
     const ny = contact[1] as number;
-    const approach = this.reflectOff(s, otherId, nx, ny);
+    // Inline rather than reflectOff: this is the hot path of wall-heavy scenes, and an extra call here
+    // measured 3-5 % more cycles on Galperin (V8 inlines less into processObstacle).
+    const approach = reflectResponse(this.vxAt(s, t), this.vyAt(s, t), nx, ny, vel);
+    if (approach <= 0 && (b.mot[s * 8 + 5] as number) * nx + (b.mot[s * 8 + 6] as number) * ny > 0)
+      this.reflectOff(s, otherId, nx, ny);
     this.setMotion(s, t, x, y, vel[0] as number, vel[1] as number);
     const nn = Math.sqrt(nx * nx + ny * ny);
     const ev = this.ev;
