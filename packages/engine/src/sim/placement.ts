@@ -1,14 +1,15 @@
 /**
- * Placement checks for the World's edits: whether a disc, line or point may be put somewhere
- * without overlapping what is already there (touching is allowed), using the broad-phase grid for
- * large scenes. Every check throws ChapgameError naming the field before anything changes.
+ * The World's obstacles (add, update, remove and list lines and points) and the placement checks
+ * for every edit: whether a disc, line or point may be put somewhere without overlapping what is
+ * already there (touching is allowed), using the broad-phase grid for large scenes. Every check
+ * throws ChapgameError naming the field before anything changes.
  */
 import { OVERLAP_REL } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
 import { distanceToLine, type Line, type LineKind, makeLine, type Point } from "./obstacles.js";
 import { Simulator } from "./simulator.js";
-import type { Vec2 } from "./types.js";
-import { requireLineKind, requireVec } from "./validate.js";
+import type { LineState, PointState, Vec2 } from "./types.js";
+import { requireId, requireLineKind, requireVec } from "./validate.js";
 
 /** Below this many bodies an overlap check scans them all instead of using the grid. */
 const LINEAR_SCAN_BODIES = 64;
@@ -87,5 +88,77 @@ export class Placement extends Simulator {
     for (const p of this.pointList)
       if ((p.x - x) * (p.x - x) + (p.y - y) * (p.y - y) < rk * rk)
         throw new ChapgameError("x", `the body would overlap point '${p.id}'`);
+  }
+
+  // ---- obstacles ----------------------------------------------------------------------------
+
+  hasLine(id: string): boolean {
+    return this.lineList.some((l) => l.id === id);
+  }
+
+  hasPoint(id: string): boolean {
+    return this.pointList.some((p) => p.id === id);
+  }
+
+  addLine(id: string, p1: Vec2, p2: Vec2, kind: LineKind): void {
+    requireId("id", id);
+    if (this.hasLine(id)) throw new ChapgameError("id", `a line with id '${id}' already exists`);
+    const line = this.checkedLine(id, p1, p2, kind);
+    this.lineList = [...this.lineList, line];
+    this.dirty = true;
+  }
+
+  updateLine(id: string, patch: { p1?: Vec2; p2?: Vec2; kind?: LineKind }): void {
+    const i = this.lineList.findIndex((l) => l.id === id);
+    if (i < 0) throw new ChapgameError("id", `no line with id '${id}'`);
+    const old = this.lineList[i] as Line;
+    const line = this.checkedLine(
+      id,
+      patch.p1 ?? [old.x1, old.y1],
+      patch.p2 ?? [old.x2, old.y2],
+      patch.kind ?? old.kind,
+    );
+    this.lineList = this.lineList.map((l, k) => (k === i ? line : l));
+    this.dirty = true;
+  }
+
+  removeLine(id: string): void {
+    if (!this.hasLine(id)) throw new ChapgameError("id", `no line with id '${id}'`);
+    this.lineList = this.lineList.filter((l) => l.id !== id);
+    this.dirty = true;
+  }
+
+  addPoint(id: string, p: Vec2): void {
+    requireId("id", id);
+    if (this.hasPoint(id)) throw new ChapgameError("id", `a point with id '${id}' already exists`);
+    this.pointList = [...this.pointList, this.checkedPoint(id, p)];
+    this.dirty = true;
+  }
+
+  updatePoint(id: string, p: Vec2): void {
+    if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id '${id}'`);
+    const point = this.checkedPoint(id, p);
+    this.pointList = this.pointList.map((q) => (q.id === id ? point : q));
+    this.dirty = true;
+  }
+
+  removePoint(id: string): void {
+    if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id '${id}'`);
+    this.pointList = this.pointList.filter((q) => q.id !== id);
+    this.dirty = true;
+  }
+
+  /** All lines, sorted by id. */
+  lines(): LineState[] {
+    return [...this.lineList]
+      .sort((a, b) => (a.id < b.id ? -1 : 1))
+      .map((l) => ({ id: l.id, p1: [l.x1, l.y1] as Vec2, p2: [l.x2, l.y2] as Vec2, kind: l.kind }));
+  }
+
+  /** All points, sorted by id. */
+  points(): PointState[] {
+    return [...this.pointList]
+      .sort((a, b) => (a.id < b.id ? -1 : 1))
+      .map((p) => ({ id: p.id, p: [p.x, p.y] as Vec2 }));
   }
 }
