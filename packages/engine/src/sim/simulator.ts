@@ -1,15 +1,10 @@
 /**
  * Processing: the next queued item (a cell crossing, a stale prediction, or a collision or stop,
- * which changes motions and is reported), the Zeno watch, and a look-ahead at the next event's time
- * that changes nothing (its internal work is undone through peek.ts).
+ * which the Zeno watch (zenoWatch.ts) counts, which changes motions and is reported), and a
+ * look-ahead at the next event's time that changes nothing (its internal work is undone through
+ * peek.ts).
  */
 import { discDiscResponse, impulseMagnitude, reflectResponse } from "../physics/response.js";
-import {
-  SIMULTANEOUS_EVENTS_PER_BODY,
-  ZENO_MIN_PROGRESS,
-  ZENO_WINDOW_EVENTS,
-  ZENO_WINDOW_EVENTS_PER_BODY,
-} from "../tolerances.js";
 import { EV_BODY, EV_LINE, EV_POINT, EV_STOP } from "./bodyStore.js";
 import { SimulationError } from "./errors.js";
 import type { Line, Point } from "./obstacles.js";
@@ -99,7 +94,7 @@ export class Simulator extends Predictor {
 
   /** Throw what processing slot s's event (of this kind, now) would throw; change nothing. */
   private checkEvent(s: number, kind: number): void {
-    const watch = [this.sameTime, this.sameTimeCount, this.windowStart, this.windowCount] as const;
+    const watch = this.zeno.save();
     try {
       this.guardZeno();
       if (kind === EV_LINE || kind === EV_POINT) {
@@ -116,37 +111,16 @@ export class Simulator extends Predictor {
         this.reflectOff(s, id, contact[0] as number, contact[1] as number);
       }
     } finally {
-      [this.sameTime, this.sameTimeCount, this.windowStart, this.windowCount] = watch;
+      this.zeno.load(watch);
     }
   }
 
-  /**
-   * Report a Zeno state instead of looping: too many events at one instant (resting contact), or,
-   * while an immovable body moves, a long run of events over which time hardly advances (a disc
-   * crushed between an immovable disc and a wall collides infinitely often before the crush).
-   */
+  /** Count the event about to be processed in the Zeno watch (throws on a Zeno state). */
   protected guardZeno(): void {
-    const n = Math.max(1, this.store.slotCount);
-    if (this.time !== this.sameTime) {
-      this.sameTime = this.time;
-      this.sameTimeCount = 0;
-    } else if (++this.sameTimeCount > SIMULTANEOUS_EVENTS_PER_BODY * n) {
-      throw new SimulationError(
-        `more than ${this.sameTimeCount} events at the same instant t=${this.time}: a Zeno state (resting contact or an inelastic collapse) that the exact model cannot resolve`,
-        this.time,
-      );
-    }
-    if (++this.windowCount < Math.max(ZENO_WINDOW_EVENTS, ZENO_WINDOW_EVENTS_PER_BODY * n)) return;
-    const progress = this.time - this.windowStart;
-    if (progress <= ZENO_MIN_PROGRESS * Math.max(1, Math.abs(this.time)) && this.pumpsEnergy()) {
-      throw new SimulationError(
-        `${this.windowCount} events while time advanced only ${progress} (to t=${this.time}): events accumulate at a finite time (a Zeno state, e.g. a disc crushed by an immovable body), which the exact model cannot pass`,
-        this.time,
-      );
-    }
-    this.windowStart = this.time;
-    this.windowCount = 0;
+    this.zeno.check(this.time, Math.max(1, this.store.slotCount), this.pumps);
   }
+
+  private readonly pumps = (): boolean => this.pumpsEnergy();
 
   /**
    * Whether an immovable (infinite-mass) body is moving: the only way elastic collisions can feed

@@ -13,6 +13,7 @@ import { Grid } from "./grid.js";
 import type { Line, Point } from "./obstacles.js";
 import { rasterizeSegment } from "./rasterize.js";
 import type { EventCounts, Optimizations, WorldEvent } from "./types.js";
+import { ZenoWatch } from "./zenoWatch.js";
 
 const INF = Number.POSITIVE_INFINITY;
 const law: MotionLaw = { ax: 0, ay: 0, tEnd: INF };
@@ -38,11 +39,8 @@ export class SimState {
   /** Predictions of all bodies must be recomputed before the next event (grid rebuilt, obstacles or globals changed). */
   protected dirty = true;
   readonly counts: EventCounts = { bodyBody: 0, bodyLine: 0, bodyPoint: 0, stop: 0 };
-  protected sameTime = -INF;
-  protected sameTimeCount = 0;
-  /** Start time and event count of the current Zeno-watch window. */
-  protected windowStart = -INF;
-  protected windowCount = 0;
+  /** Reports runs of events the exact model cannot pass (zenoWatch.ts). */
+  protected readonly zeno = new ZenoWatch();
   protected readonly ev: WorldEvent = {
     time: 0,
     kind: "stop",
@@ -87,10 +85,7 @@ export class SimState {
     target.obstStamp = new Int32Array(this.obstStamp.length);
     target.dirty = this.dirty;
     Object.assign(target.counts, this.counts);
-    target.sameTime = this.sameTime;
-    target.sameTimeCount = this.sameTimeCount;
-    target.windowStart = this.windowStart;
-    target.windowCount = this.windowCount;
+    target.zeno.load(this.zeno.save());
   }
 
   // ---- motion -------------------------------------------------------------------------------

@@ -143,12 +143,12 @@ export class World extends Placement {
 
   /** @internal The Zeno watch's counters (for Timeline keyframes, which restore them exactly). */
   zenoWatch(): [number, number, number, number] {
-    return [this.sameTime, this.sameTimeCount, this.windowStart, this.windowCount];
+    return this.zeno.save();
   }
 
   /** @internal Restore counters taken by zenoWatch(). */
   setZenoWatch(w: readonly [number, number, number, number]): void {
-    [this.sameTime, this.sameTimeCount, this.windowStart, this.windowCount] = w;
+    this.zeno.load(w);
   }
 
   updateBody(id: string, patch: BodyPatch): void {
