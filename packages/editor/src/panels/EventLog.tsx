@@ -3,15 +3,18 @@
  * jumps there, selects and highlights its participants; a body filter keeps only that body's events.
  * Only the rows in view are rendered (useRowWindow).
  */
-import { useEffect, useRef, useState } from "react";
+import { useRef } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { EventPage } from "../remote/protocol";
 import { formatNumber } from "./EditableCell";
+import { useRefreshed } from "./useRefreshed";
 import { spacerRow, useRowWindow } from "./useRowWindow";
 import { useSlowTime } from "./useThrottledTime";
 
 const BEFORE = 30;
 const AFTER = 30;
+/** Shortest interval between two page requests (ms). */
+const REFRESH_MS = 100;
 const KIND_NAMES: Record<string, string> = {
   bodyBody: "body–body",
   bodyLine: "body–line",
@@ -25,25 +28,16 @@ export function EventLog() {
   const t = useSlowTime();
   const filter = useUi((s) => s.eventFilter);
   const revision = useInfoValue((i) => i.revision);
-  const [page, setPage] = useState<EventPage | null>(null);
+  const body = filter.trim() === "" ? null : filter.trim();
+  const page = useRefreshed<EventPage | null>(
+    () => (revision < 0 ? Promise.resolve(null) : editor.client.events(t, BEFORE, AFTER, body)),
+    `${revision} ${t} ${body}`,
+    null,
+    REFRESH_MS,
+  );
   const scrollRef = useRef<HTMLDivElement>(null);
   const events = page?.events ?? [];
   const win = useRowWindow(scrollRef, events.length);
-
-  useEffect(() => {
-    if (revision < 0) return;
-    let live = true;
-    const timer = setTimeout(() => {
-      editor.client.events(t, BEFORE, AFTER, filter.trim() === "" ? null : filter.trim()).then(
-        (p) => live && setPage(p),
-        () => {},
-      );
-    }, 30);
-    return () => {
-      live = false;
-      clearTimeout(timer);
-    };
-  }, [editor, t, filter, revision]);
 
   return (
     <section className="panel" aria-labelledby="log-title">

@@ -3,6 +3,7 @@ import { newtonsCradle } from "@chapgame/engine";
 import { act, cleanup, render, screen, waitFor } from "@testing-library/react";
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
+import type { RequestMessage } from "../remote/protocol";
 import { settled, testEditor } from "../testing/harness";
 import { TimePanel } from "./TimePanel";
 
@@ -47,5 +48,38 @@ describe("TimePanel", () => {
     act(() => editor.ui.setState({ playing: false }));
     expect(slider.value).toBe("0.75");
     expect(field.value).toBe("0.75");
+  });
+
+  it("the event ticks follow a computation while progress reports keep arriving", async () => {
+    const { editor, host } = await renderPanel();
+    const ticks = () => [...document.querySelectorAll("svg.ticks line")].map((l) => l.getAttribute("x1"));
+    await waitFor(() => expect(ticks()).toContain("100")); // the cradle's collisions at t = 1 of 10
+    const handle = host.handle.bind(host);
+    host.handle = (m: RequestMessage) => {
+      if (m.op === "ticks") setTimeout(() => handle(m), 40);
+      else handle(m);
+    };
+    const reports = setInterval(() => (host as unknown as { changed(d: boolean): void }).changed(false), 15);
+    try {
+      await act(async () => {
+        await editor.loadScene(
+          {
+            format: "chapgame",
+            version: 1,
+            g: 9.81,
+            gravity: [0, 0],
+            actions: [
+              { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [1, 0] },
+              { time: 0, type: "addBody", id: "b", x: 4, y: 0, r: 1, m: 1 },
+            ],
+          },
+          { undoable: false },
+        );
+      });
+      // a and b meet at t = 2 of a 10 s horizon
+      await waitFor(() => expect(ticks()).toEqual(["0", "200"]), { timeout: 3000 });
+    } finally {
+      clearInterval(reports);
+    }
   });
 });

@@ -4,29 +4,30 @@
  * While playing, this panel re-renders about 10 times a second (useShownTime); the slider's thumb
  * follows every frame by itself (TimeSlider).
  */
-import { useEffect, useMemo, useState } from "react";
+import { useMemo, useState } from "react";
 import { useEditor, useInfoValue } from "../EditorContext";
 import { formatNumber, parseNumber } from "./EditableCell";
 import { TimeSlider } from "./TimeSlider";
+import { useRefreshed } from "./useRefreshed";
 import { useShownTime } from "./useThrottledTime";
 
 const TICKS = 300;
+/** Shortest interval between two requests for the ticks (ms): they follow a computation as it goes. */
+const TICKS_EVERY_MS = 200;
+const NO_TICKS: number[] = [];
 
 export function TimePanel() {
   const editor = useEditor();
   const t = useShownTime();
   const horizon = useInfoValue((i) => i.horizon);
   const revision = useInfoValue((i) => i.revision);
-  const [ticks, setTicks] = useState<number[]>([]);
+  const ticks = useRefreshed(
+    () => (revision < 0 ? Promise.resolve([]) : editor.client.ticks(TICKS)),
+    String(revision),
+    NO_TICKS,
+    TICKS_EVERY_MS,
+  );
   const [draft, setDraft] = useState<string | null>(null);
-
-  useEffect(() => {
-    if (revision < 0) return;
-    const timer = setTimeout(() => {
-      editor.client.ticks(TICKS).then(setTicks, () => {});
-    }, 200);
-    return () => clearTimeout(timer);
-  }, [editor, revision]);
 
   const tickLines = useMemo(
     () =>

@@ -1,0 +1,59 @@
+// @vitest-environment jsdom
+// The Event log while the worker computes: progress reports arrive more often than a log page can
+// be read and answered, and the log must still follow the scene (it once showed the previous
+// scene's events for the whole of a long computation: every report discarded the pending page).
+import { newtonsCradle } from "@chapgame/engine";
+import { act, cleanup, render, screen, waitFor, within } from "@testing-library/react";
+import { afterEach, describe, expect, it } from "vitest";
+import { EditorContext } from "../EditorContext";
+import type { RequestMessage } from "../remote/protocol";
+import { settled, testEditor } from "../testing/harness";
+import { EventLog } from "./EventLog";
+
+afterEach(cleanup);
+
+/** Milliseconds between simulated progress reports, and the delay of every event-page reply. */
+const REPORT_MS = 15;
+const REPLY_MS = 40;
+
+describe("EventLog", () => {
+  it("follows a newly loaded scene while progress reports keep arriving faster than pages", async () => {
+    const h = testEditor();
+    await h.editor.loadScene(newtonsCradle(), { undoable: false });
+    await settled(h.client);
+    render(
+      <EditorContext.Provider value={h.editor}>
+        <EventLog />
+      </EditorContext.Provider>,
+    );
+    const log = screen.getByRole("table", { name: "Event log" });
+    await waitFor(() => expect(within(log).getAllByText("striker").length).toBeGreaterThan(0));
+
+    // Every event page is answered later than the next progress report (a busy worker).
+    const handle = h.host.handle.bind(h.host);
+    h.host.handle = (m: RequestMessage) => {
+      if (m.op === "events") setTimeout(() => handle(m), REPLY_MS);
+      else handle(m);
+    };
+    const host = h.host as unknown as { changed(docChanged: boolean): void };
+    const reports = setInterval(() => host.changed(false), REPORT_MS);
+    try {
+      await act(async () => {
+        await h.editor.loadScene(
+          {
+            format: "chapgame",
+            version: 1,
+            g: 9.81,
+            gravity: [0, 0],
+            actions: [{ time: 0, type: "addBody", id: "lonely", x: 0, y: 0, r: 1, m: 1 }],
+          },
+          { undoable: false },
+        );
+      });
+      await waitFor(() => expect(within(log).getAllByText("lonely").length).toBe(1), { timeout: 3000 });
+      expect(within(log).queryAllByText("striker")).toEqual([]);
+    } finally {
+      clearInterval(reports);
+    }
+  });
+});
