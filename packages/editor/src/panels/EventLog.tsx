@@ -1,12 +1,13 @@
 /**
  * The Event log: the events around the current time (time, kind, participants). Clicking an entry
  * jumps there, selects and highlights its participants; a body filter keeps only that body's events.
- * Only the rows in view are rendered (useRowWindow).
+ * Only the rows in view are rendered (useRowWindow); the view follows the current time (useFollowTime).
  */
 import { useRef } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { EventPage } from "../remote/protocol";
 import { formatNumber } from "./EditableCell";
+import { useFollowTime } from "./useFollowTime";
 import { useRefreshed } from "./useRefreshed";
 import { spacerRow, useRowWindow } from "./useRowWindow";
 import { useSlowTime } from "./useThrottledTime";
@@ -38,6 +39,12 @@ export function EventLog() {
   const scrollRef = useRef<HTMLDivElement>(null);
   const events = page?.events ?? [];
   const win = useRowWindow(scrollRef, events.length);
+  useFollowTime(
+    scrollRef,
+    events.map((e) => e.time),
+    t,
+    page,
+  );
 
   return (
     <section className="panel" aria-labelledby="log-title">

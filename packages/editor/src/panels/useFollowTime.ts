@@ -1,0 +1,52 @@
+/**
+ * Keeps a time-ordered table scrolled to the current time: the first row at or after t is brought
+ * near the top of the view (FOLLOW_LEAD rows of the past above it), so the events just before and
+ * after the current time are what a reader sees while playing and scrubbing. A reader who scrolls,
+ * clicks or types in the table takes over: following pauses for HANDS_OFF_MS after that.
+ */
+import { type RefObject, useEffect, useLayoutEffect, useRef } from "react";
+
+/** Rows of the past kept in view above the first row at or after the current time. */
+export const FOLLOW_LEAD = 3;
+/** Milliseconds after the reader last scrolled or clicked in the table during which it is left alone. */
+export const HANDS_OFF_MS = 4000;
+
+/** Index of the row to scroll to the top: FOLLOW_LEAD rows before the first time >= t. */
+export function followRow(times: readonly number[], t: number, lead = FOLLOW_LEAD): number {
+  let k = times.findIndex((x) => x >= t);
+  if (k < 0) k = times.length;
+  return Math.max(0, k - lead);
+}
+
+/** Scrolls `ref` (a scroll box around a table with a sticky thead and rows of equal height). */
+export function useFollowTime(
+  ref: RefObject<HTMLElement | null>,
+  times: readonly number[],
+  t: number,
+  key: unknown,
+): void {
+  const touched = useRef(Number.NEGATIVE_INFINITY);
+
+  useEffect(() => {
+    const el = ref.current;
+    if (!el) return;
+    const mark = () => {
+      touched.current = Date.now();
+    };
+    const events = ["wheel", "pointerdown", "keydown", "touchstart"] as const;
+    for (const e of events) el.addEventListener(e, mark, { passive: true });
+    return () => {
+      for (const e of events) el.removeEventListener(e, mark);
+    };
+  }, [ref]);
+
+  // biome-ignore lint/correctness/useExhaustiveDependencies: runs when the rows (key) or the time change
+  useLayoutEffect(() => {
+    const el = ref.current;
+    if (!el || Date.now() - touched.current < HANDS_OFF_MS) return;
+    const row = el.querySelector("tbody tr:not(.spacer)")?.getBoundingClientRect().height ?? 0;
+    if (!(row > 0)) return; // nothing laid out (a hidden panel, jsdom)
+    const top = followRow(times, t) * row;
+    if (Math.abs(el.scrollTop - top) >= 1) el.scrollTop = top;
+  }, [key, t]);
+}
