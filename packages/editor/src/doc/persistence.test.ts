@@ -32,4 +32,12 @@ describe("persistence", () => {
     localStorage.setItem("chapgame.editor.autosave.v1", "{broken");
     expect(loadAutosave(localStorage)).toBeNull();
   });
+
+  it("a damaged link code is refused with a plain message; a scene error still names the field", () => {
+    for (const code of ["abc%%", "@@@@", encodeSceneForUrl(scene).slice(0, 40)])
+      expect(() => decodeSceneFromUrl(code)).toThrow(/^the scene code after #scene= is damaged|^json: /);
+    expect(() => decodeSceneFromUrl("abc%%")).toThrow("damaged or cut short");
+    const bad = encodeSceneForUrl({ ...scene, actions: [{ ...scene.actions[0]!, r: -1 } as never] });
+    expect(() => decodeSceneFromUrl(bad)).toThrow("actions[0].r");
+  });
 });

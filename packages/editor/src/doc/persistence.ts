@@ -14,11 +14,18 @@ export function encodeSceneForUrl(scene: SceneFile): string {
   return btoa(bin).replace(/\+/g, "-").replace(/\//g, "_").replace(/=+$/, "");
 }
 
+/** The scene in a link's code; throws a plain message when the code is damaged or cut short. */
 export function decodeSceneFromUrl(code: string): SceneFile {
-  const b64 = code.replace(/-/g, "+").replace(/_/g, "/");
-  const bin = atob(b64 + "=".repeat((4 - (b64.length % 4)) % 4));
-  const bytes = Uint8Array.from(bin, (c) => c.charCodeAt(0));
-  return parseSceneText(new TextDecoder().decode(bytes));
+  let text: string;
+  try {
+    const b64 = code.replace(/-/g, "+").replace(/_/g, "/");
+    const bin = atob(b64 + "=".repeat((4 - (b64.length % 4)) % 4));
+    const bytes = Uint8Array.from(bin, (c) => c.charCodeAt(0));
+    text = new TextDecoder("utf-8", { fatal: true }).decode(bytes);
+  } catch {
+    throw new Error("the scene code after #scene= is damaged or cut short (copy the whole link)");
+  }
+  return parseSceneText(text);
 }
 
 /** The scene in a location hash like `#scene=...`, or null when there is none. */

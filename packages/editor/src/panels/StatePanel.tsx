@@ -14,11 +14,14 @@ export function StatePanel() {
   const [text, setText] = useState("");
   const fileRef = useRef<HTMLInputElement>(null);
 
-  const load = async (source: string) => {
+  /** Loads scene text; a refusal names `origin` (a file's name) before the field and the reason. */
+  const load = async (source: string, origin = "") => {
     try {
-      return await editor.loadScene(parseSceneText(source));
+      const err = await editor.loadScene(parseSceneText(source));
+      if (err !== null && origin) editor.ui.setState({ message: { text: origin + err, tone: "error" } });
+      return err;
     } catch (e) {
-      const msg = e instanceof Error ? e.message : String(e);
+      const msg = `${origin}${e instanceof Error ? e.message : String(e)}`;
       editor.ui.setState({ message: { text: msg, tone: "error" } });
       return msg;
     }
@@ -97,7 +100,7 @@ export function StatePanel() {
           hidden
           onChange={async (e) => {
             const f = e.target.files?.[0];
-            if (f) await load(await f.text());
+            if (f) await load(await f.text(), `${f.name}: `);
             e.target.value = "";
           }}
         />

@@ -1,0 +1,98 @@
+/**
+ * End-to-end: keeping a scene author's work in Debian's Chromium. Opening a shared link never
+ * loses the scene one was working on (Undo brings it back); an edit is kept by a reload that comes
+ * right after it; a broken link or file says what is wrong and keeps the scene.
+ */
+import { writeFileSync } from "node:fs";
+import { join } from "node:path";
+import type { Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { ARTIFACTS, openEditor, type Session, screenshot } from "./harness.js";
+
+const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
+
+let s: Session;
+let page: Page;
+
+const bodies = () => page.getByRole("table", { name: "Bodies" });
+const cell = (name: string) => bodies().getByLabel(name, { exact: true });
+const cellText = (name: string) =>
+  cell(name).evaluate((el) => (el instanceof HTMLInputElement ? el.value : el.textContent));
+const message = () => page.locator(".message").textContent();
+
+async function editCell(name: string, text: string) {
+  await cell(name).click();
+  const input = bodies().getByRole("textbox", { name, exact: true });
+  await input.fill(text);
+  await input.press("Enter");
+}
+
+async function open(url: string) {
+  await page.goto("about:blank");
+  await page.goto(url);
+  await page.getByRole("slider", { name: "Time" }).waitFor();
+}
+
+/** A share link's code, made the way the editor makes it (base64url of the scene's JSON). */
+function shareCode(scene: unknown): string {
+  return Buffer.from(JSON.stringify(scene), "utf8").toString("base64url");
+}
+
+const LONELY = {
+  format: "chapgame",
+  version: 1,
+  g: 9.81,
+  gravity: [0, 0],
+  actions: [{ time: 0, type: "addBody", id: "lonely", x: 0, y: 0, r: 1, m: 1 }],
+};
+
+beforeAll(async () => {
+  s = await openEditor();
+  page = s.page;
+});
+
+afterAll(async () => {
+  await s?.close();
+});
+
+describe("keeping work", () => {
+  it("an edit survives a reload that comes right after it (autosave flushed when the page goes)", async () => {
+    await poll(() => bodies().getByRole("row").count()).toBeGreaterThan(1);
+    const first = (await bodies().getByRole("button", { name: / m$/ }).first().getAttribute("aria-label"))!;
+    await editCell(first, "7");
+    await poll(() => cellText(first)).toBe("7");
+    await page.reload(); // well within the autosave's 300 ms of quiet
+    await page.getByRole("slider", { name: "Time" }).waitFor();
+    await poll(() => cellText(first)).toBe("7");
+  });
+
+  it("opening a shared link keeps the scene one was working on: Undo brings it back", async () => {
+    const before = await bodies().getByRole("row").count();
+    await open(`${s.url}#scene=${shareCode(LONELY)}`);
+    await poll(() => bodies().getByRole("row").count()).toBe(2);
+    expect(await cellText("lonely x")).toBe("0");
+    await poll(message).toMatch(/shared/i);
+    await screenshot(page, "12-shared-link-opened");
+    await page.getByRole("button", { name: "Undo" }).click();
+    await poll(() => bodies().getByRole("row").count()).toBe(before);
+    await poll(() => cell("lonely x").count()).toBe(0);
+  });
+
+  it("a broken shared link says so in plain words, leaves the address bar, and keeps the scene", async () => {
+    const before = await bodies().getByRole("row").count();
+    await open(`${s.url}#scene=abc%25%25`);
+    await poll(message).toMatch(/^Shared link: /);
+    expect(await message()).not.toMatch(/atob|Failed to execute/);
+    expect(new URL(page.url()).hash).toBe("");
+    expect(await bodies().getByRole("row").count()).toBe(before);
+  });
+
+  it("a broken scene file: the message names the file and the field; the scene is kept", async () => {
+    const before = await bodies().getByRole("row").count();
+    const file = join(ARTIFACTS, "broken-field.chapgame.json");
+    writeFileSync(file, JSON.stringify({ ...LONELY, actions: [{ ...LONELY.actions[0], r: "big" }] }));
+    await page.getByLabel("Scene file").setInputFiles(file);
+    await poll(message).toMatch(/broken-field\.chapgame\.json: actions\[0\]\.r: /);
+    expect(await bodies().getByRole("row").count()).toBe(before);
+  });
+});
