@@ -59,4 +59,67 @@ describe("editor views", () => {
     }).toBe(true);
     await screenshot(page, "11-event-log-follows-time");
   });
+
+  it("small windows keep the canvas, the Time slider and every time and speed control usable", async () => {
+    await loadPreset("Billiards break");
+    try {
+      for (const [width, height] of [
+        [1024, 700],
+        [800, 600],
+      ] as const) {
+        await page.setViewportSize({ width, height });
+        // the scene is fitted again to the smaller canvas (the view was never moved by hand)
+        await poll(() => bodiesOutsideCanvas()).toBe(0);
+        const canvas = (await page.getByTestId("scene-canvas").boundingBox())!;
+        expect(canvas.width).toBeGreaterThanOrEqual(300);
+        expect(canvas.height).toBeGreaterThanOrEqual(200);
+        const slider = (await page.getByRole("slider", { name: "Time" }).boundingBox())!;
+        expect(slider.width).toBeGreaterThanOrEqual(250);
+        for (const name of ["Back 1 second", "Previous event", "Next event", "Reverse", "Play", "Faster"]) {
+          const button = page.getByRole("button", { name, exact: true });
+          await button.scrollIntoViewIfNeeded();
+          const box = (await button.boundingBox())!;
+          expect(box.x).toBeGreaterThanOrEqual(0);
+          expect(box.x + box.width).toBeLessThanOrEqual(width);
+          // nothing covers it and it is not squeezed onto several lines
+          expect(box.height).toBeLessThan(30);
+          const onTop = await button.evaluate((el) => {
+            const r = el.getBoundingClientRect();
+            return el.contains(document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2));
+          });
+          expect(onTop).toBe(true);
+        }
+        await page.evaluate(() => window.scrollTo(0, 0));
+        await screenshot(page, `13-window-${width}x${height}`);
+      }
+    } finally {
+      await page.setViewportSize({ width: 1400, height: 900 });
+    }
+  });
 });
+
+/** How many discs the canvas draws (wholly or partly) outside its own box at the current view. */
+function bodiesOutsideCanvas(): Promise<number> {
+  return page.evaluate(() => {
+    type Editor = {
+      ui: { getState(): { view: { cx: number; cy: number; scale: number } } };
+      client: { latestFrame: { ids: string[]; data: Float64Array } | null };
+    };
+    const ed = (window as unknown as { chapgame: Editor }).chapgame;
+    const f = ed.client.latestFrame;
+    if (!f) return -1;
+    const { cx, cy, scale } = ed.ui.getState().view;
+    const r = document.querySelector("canvas")!.getBoundingClientRect();
+    let out = 0;
+    for (let i = 0; i < f.ids.length; i++) {
+      const x = f.data[i * 11]!;
+      const y = f.data[i * 11 + 1]!;
+      const rad = f.data[i * 11 + 6]!;
+      const sx = r.width / 2 + (x - cx) * scale;
+      const sy = r.height / 2 - (y - cy) * scale;
+      const sr = rad * scale;
+      if (sx - sr < 0 || sy - sr < 0 || sx + sr > r.width || sy + sr > r.height) out++;
+    }
+    return out;
+  });
+}

@@ -55,6 +55,9 @@ export function SceneCanvas() {
     let gesture: Gesture | null = null;
     let downAt: [number, number] = [0, 0];
     let fitPending = ui.getState().fitRequest > 0;
+    // The view is the fitted one until the reader zooms or pans: while it is, a resized canvas
+    // (window, layout) is fitted again rather than showing a corner of the scene.
+    let fitted = fitPending;
     const trails = new TrailRecorder();
 
     let dpr = 1;
@@ -66,6 +69,7 @@ export function SceneCanvas() {
       canvas.height = Math.round(size.height * dpr);
       ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
       dirty = true;
+      if (fitted) fitPending = true;
     };
     const ro = typeof ResizeObserver === "undefined" ? null : new ResizeObserver(resize);
     ro?.observe(canvas);
@@ -91,6 +95,7 @@ export function SceneCanvas() {
       const base = client.latestFrame;
       if (fitPending && base && client.hasFrame(s.t)) {
         fitPending = false;
+        fitted = true;
         ui.setState({ view: fit(frameBounds(base), size) });
         return;
       }
@@ -127,6 +132,7 @@ export function SceneCanvas() {
 
     const onWheel = (e: WheelEvent) => {
       e.preventDefault();
+      fitted = false;
       const [sx, sy] = local(e);
       ui.setState((s) => ({ view: zoomAt(s.view, size, sx, sy, Math.exp(-e.deltaY * 0.0015)) }));
     };
@@ -174,6 +180,7 @@ export function SceneCanvas() {
       if (gesture.kind === "pan") {
         const [lx, ly] = gesture.last;
         gesture.last = p;
+        fitted = false;
         ui.setState((s) => ({ view: pan(s.view, p[0] - lx, p[1] - ly) }));
       } else if (gesture.kind === "move") {
         gesture.at = [w[0] - gesture.grab[0], w[1] - gesture.grab[1]];
