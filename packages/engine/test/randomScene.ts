@@ -6,6 +6,8 @@
 import type { SceneSpec } from "./referenceWorld.js";
 
 export interface RandomSceneOptions {
+  /** Bodies asked for: uniform in [minBodies (default 1), maxBodies]; fewer if they do not fit. */
+  minBodies?: number;
   maxBodies: number;
   mode: "elastic" | "friction" | "gravity" | "any";
   obstacles: boolean;
@@ -59,7 +61,8 @@ export function randomScene(seed: number, opts: RandomSceneOptions): SceneSpec {
     if (rnd() < 0.2)
       spec.lines.push({ id: "line", p1: [0, uni(0.3, 0.7) * L], p2: [L, uni(0.3, 0.7) * L], kind: "line" });
   }
-  const n = 1 + Math.floor(rnd() * opts.maxBodies);
+  const lo = opts.minBodies ?? 1;
+  const n = lo + Math.floor(rnd() * (opts.maxBodies - lo + 1));
   const clear = (x: number, y: number, r: number): boolean => {
     for (const b of spec.bodies) if ((b.x - x) ** 2 + (b.y - y) ** 2 < (b.r + r) ** 2) return false;
     for (const p of spec.points) if ((p.p[0] - x) ** 2 + (p.p[1] - y) ** 2 < r * r) return false;

@@ -52,6 +52,7 @@ describe("World rebuilt from motions (addBodyMotion)", () => {
         fc.boolean(),
         (seed, before, big) => {
           const spec = randomScene(seed, {
+            minBodies: big ? GRID_MIN_BODIES : 1,
             maxBodies: big ? 70 : 12,
             mode: "any",
             obstacles: true,
