@@ -24,6 +24,16 @@ describe("parseArgs", () => {
       events: false,
     });
   });
+  it("accepts a count written with an exponent (--max-events 1e6) and --progress", () => {
+    expect(parseArgs(["simulate", "s.json", "--max-events", "1e6", "--progress"])).toEqual({
+      command: "simulate",
+      scene: "s.json",
+      maxEvents: 1_000_000,
+      events: false,
+      progress: true,
+    });
+    expect(parseArgs(["state", "s.json", "--at", "2", "--progress"])).toMatchObject({ progress: true });
+  });
   it("recognizes --help anywhere", () => {
     expect(parseArgs(["--help"])).toEqual({ command: "help" });
     expect(parseArgs(["simulate", "-h"])).toEqual({ command: "help" });
@@ -41,6 +51,19 @@ describe("parseArgs", () => {
     [["simulate", "a", "--max-events", "1.5"], "--max-events: must be a non-negative integer"],
     [["simulate", "a", "--events=yes"], "--events takes no value"],
     [["simulate", "a", "--events", "--events"], "--events given twice"],
+    // regression: "-x" was taken for a second scene file ("one SCENE file expected, got 2")
+    [["simulate", "a", "-x"], "unknown option -x for simulate (options: --until-time"],
+    [["simulate", "-v", "a"], "unknown option -v for simulate"],
+    // regression: an infinite time was refused as "must be a non-negative number"
+    [["simulate", "a", "--until-time", "Infinity"], '--until-time: must be a finite number, got "Infinity"'],
+    [["state", "a", "--at=1e400"], '--at: must be a finite number, got "1e400"'],
+    // regression: a count beyond 2^53 was refused as "must be a non-negative integer"
+    [
+      ["simulate", "a", "--max-events", "1e21"],
+      "--max-events: must be an integer from 0 to 9007199254740991",
+    ],
+    [["simulate", "a", "--max-events", "0x10"], "--max-events: must be a non-negative integer"],
+    [["simulate", "a", "--max-events", "2.5e0"], "--max-events: must be a non-negative integer"],
   ];
   for (const [argv, msg] of bad)
     it(`refuses ${JSON.stringify(argv)}`, () => {

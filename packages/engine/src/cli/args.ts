@@ -1,10 +1,11 @@
 /**
  * Command-line arguments of the `chapgame` bin, parsed into a Command (pure; no process access).
- *   chapgame simulate SCENE [--until-time T] [--max-events N] [--events]
- *   chapgame state SCENE --at T [--events]
+ *   chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--progress]
+ *   chapgame state SCENE --at T [--events] [--progress]
  *   chapgame --help
- * Options take their value as the next argument or after "=". Invalid arguments throw UsageError
- * with a one-line message.
+ * Options take their value as the next argument or after "=". Any other argument that starts with
+ * "-" (except "-" itself, standard input) is an unknown option, never a file name. Invalid arguments
+ * throw UsageError with a one-line message.
  */
 
 export class UsageError extends Error {
@@ -16,31 +17,52 @@ export class UsageError extends Error {
 
 export type Command =
   | { command: "help" }
-  | { command: "simulate"; scene: string; untilTime?: number; maxEvents?: number; events: boolean }
-  | { command: "state"; scene: string; at: number; events: boolean };
+  | {
+      command: "simulate";
+      scene: string;
+      untilTime?: number;
+      maxEvents?: number;
+      events: boolean;
+      progress?: boolean;
+    }
+  | { command: "state"; scene: string; at: number; events: boolean; progress?: boolean };
 
 export const USAGE = `Usage:
-  chapgame simulate SCENE [--until-time T] [--max-events N] [--events]
+  chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--progress]
       Run the scene's actions and simulate until time T, N events (collisions and stops), or no
-      event is left, whichever comes first; print the bodies then as JSON.
-  chapgame state SCENE --at T [--events]
+      event is left, whichever comes first; print the bodies then as JSON. Without --until-time
+      and --max-events a scene that never comes to rest (elastic balls bouncing under gravity)
+      runs until interrupted: give a bound.
+  chapgame state SCENE --at T [--events] [--progress]
       Print the bodies at time T as JSON.
   chapgame --help
 
 SCENE is a scene file (format "chapgame", version 1), or - for standard input.
---events adds the event log. Exit status: 0 success, 2 invalid input, 1 internal error.`;
+--events adds the event log (kept in memory: bound long runs).
+--progress reports progress on stderr, one line per 200,000 events (it is on by itself, on one
+updating line, when stderr is a terminal).
+Exit status: 0 success, 2 invalid input, 1 internal error.`;
 
 function time(name: string, v: string): number {
   const t = Number(v);
-  if (v.trim() === "" || !Number.isFinite(t) || t < 0)
+  if (v.trim() === "" || Number.isNaN(t) || t < 0)
     throw new UsageError(`${name}: must be a non-negative number, got "${v}"`);
+  if (!Number.isFinite(t)) throw new UsageError(`${name}: must be a finite number, got "${v}"`);
   return t;
 }
 
+/** Decimal digits, optionally with a fraction and an exponent (1e6, 2.5e3): the forms a count may
+ *  be written in; whether the value is an integer is checked on the number. */
+const DECIMAL = /^\d+(\.\d+)?(e\+?\d+)?$/i;
+
 function count(name: string, v: string): number {
   const n = Number(v);
-  if (!/^\d+$/.test(v.trim()) || !Number.isSafeInteger(n))
+  if (!DECIMAL.test(v.trim()) || !Number.isInteger(n))
     throw new UsageError(`${name}: must be a non-negative integer, got "${v}"`);
+  if (!Number.isSafeInteger(n))
+    throw new UsageError(
+      `${name}: must be an integer from 0 to ${Number.MAX_SAFE_INTEGER}, got "${v}" (for no limit, leave it out)`,
+    );
   return n;
 }
 
@@ -53,16 +75,20 @@ export function parseArgs(argv: readonly string[]): Command {
   const positional: string[] = [];
   const opts = new Map<string, string | true>();
   const valued = new Set(["--until-time", "--max-events", "--at"]);
-  const allowed = cmd === "simulate" ? ["--until-time", "--max-events", "--events"] : ["--at", "--events"];
+  const allowed =
+    cmd === "simulate"
+      ? ["--until-time", "--max-events", "--events", "--progress"]
+      : ["--at", "--events", "--progress"];
   for (let i = 0; i < rest.length; i++) {
     const arg = rest[i] as string;
-    if (!arg.startsWith("--")) {
+    if (!arg.startsWith("-") || arg === "-") {
       positional.push(arg);
       continue;
     }
     const eq = arg.indexOf("=");
     const name = eq >= 0 ? arg.slice(0, eq) : arg;
-    if (!allowed.includes(name)) throw new UsageError(`unknown option ${name} for ${cmd}`);
+    if (!allowed.includes(name))
+      throw new UsageError(`unknown option ${name} for ${cmd} (options: ${allowed.join(", ")})`);
     if (opts.has(name)) throw new UsageError(`${name} given twice`);
     if (valued.has(name)) {
       const v = eq >= 0 ? arg.slice(eq + 1) : rest[++i];
@@ -78,12 +104,16 @@ export function parseArgs(argv: readonly string[]): Command {
     throw new UsageError(`${cmd}: one SCENE file expected, got ${positional.length} arguments`);
   const scene = positional[0] as string;
   const events = opts.has("--events");
+  const progress = opts.has("--progress");
   if (cmd === "state") {
     const at = opts.get("--at");
     if (at === undefined) throw new UsageError("state: --at T is required");
-    return { command: "state", scene, at: time("--at", at as string), events };
+    const c: Command = { command: "state", scene, at: time("--at", at as string), events };
+    if (progress) c.progress = true;
+    return c;
   }
   const c: Command = { command: "simulate", scene, events };
+  if (progress) c.progress = true;
   const ut = opts.get("--until-time");
   if (ut !== undefined) c.untilTime = time("--until-time", ut as string);
   const me = opts.get("--max-events");

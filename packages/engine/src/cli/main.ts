@@ -1,14 +1,20 @@
 #!/usr/bin/env node
 /**
  * The `chapgame` bin: runs runCli with the real process (arguments, files, stdout, stderr).
+ * A reader that closes standard output early (`chapgame ... | head`) ends the output quietly: the
+ * broken pipe is not an error of the run (no stack trace, the run's exit status).
  * The engine is built without Node's types (it must not depend on Node), so the few Node APIs used
  * here are typed locally and node:fs is loaded by a dynamic import.
  */
 import { runCli } from "./run.js";
 
+interface NodeStream {
+  write(text: string): unknown;
+  on(event: "error", listener: (e: { code?: string; message?: string }) => void): unknown;
+}
 interface NodeProcess {
   argv: string[];
-  stdout: { write(text: string): unknown };
+  stdout: NodeStream;
   stderr: { write(text: string): unknown; isTTY?: boolean };
   exitCode?: number;
 }
@@ -20,9 +26,21 @@ const proc = (globalThis as unknown as { process: NodeProcess }).process;
 const fsModule = "node:fs";
 const fs = (await import(fsModule)) as NodeFs;
 
+let stdoutClosed = false;
+proc.stdout.on("error", (e) => {
+  if (e.code === "EPIPE") {
+    stdoutClosed = true;
+    return;
+  }
+  proc.stderr.write(`chapgame: cannot write the output: ${e.message ?? String(e)}\n`);
+  proc.exitCode = 1;
+});
+
 proc.exitCode = runCli(proc.argv.slice(2), {
   readFile: (path) => fs.readFileSync(path === "-" ? 0 : path, "utf8"),
-  stdout: (text) => proc.stdout.write(text),
+  stdout: (text) => {
+    if (!stdoutClosed) proc.stdout.write(text);
+  },
   stderr: (text) => proc.stderr.write(text),
   progress: proc.stderr.isTTY === true,
 });

@@ -32,12 +32,35 @@ describe("runCli in-process", () => {
     expect(quiet.out.stderr).toBe("");
     const lines = loud.out.stderr.split("\r");
     expect(lines.slice(1, 3).map((l) => l.replace(/t = [\d.e+]+/, "t = T"))).toEqual([
-      "chapgame: t = T, 200000 events",
-      "chapgame: t = T, 400000 events",
+      "chapgame: t = T, 200000 of 450000 events",
+      "chapgame: t = T, 400000 of 450000 events",
     ]);
     expect(lines[3]).toBe(`${String.fromCharCode(27)}[K`);
     expect(loud.out.stdout).toBe(quiet.out.stdout);
     expect(JSON.parse(quiet.out.stdout).events).toBe(450000);
+  });
+
+  it("--progress reports one line per slice when stderr is not a terminal, and the same result", () => {
+    const files = { "gas.json": serializeScene(dilutedGas({ n: 200, packing: 0.2 })) };
+    const quiet = io(files);
+    const lines = io(files);
+    expect(runCli(["simulate", "gas.json", "--max-events", "450000"], quiet.cli)).toBe(0);
+    expect(runCli(["simulate", "gas.json", "--max-events", "450000", "--progress"], lines.cli)).toBe(0);
+    expect(lines.out.stderr.replace(/t = [\d.e+]+/g, "t = T")).toBe(
+      "chapgame: t = T, 200000 of 450000 events\nchapgame: t = T, 400000 of 450000 events\n",
+    );
+    expect(lines.out.stdout).toBe(quiet.out.stdout);
+  });
+
+  it("state --at T shows progress too (it was computed in one silent call) and gives the same state", () => {
+    const files = { "gas.json": serializeScene(dilutedGas({ n: 200, packing: 0.2 })) };
+    const quiet = io(files);
+    const lines = io(files);
+    expect(runCli(["state", "gas.json", "--at", "6000"], quiet.cli)).toBe(0);
+    expect(runCli(["state", "gas.json", "--at", "6000", "--progress"], lines.cli)).toBe(0);
+    expect(lines.out.stderr).toMatch(/^chapgame: t = [\d.e+]+, 200000 events\n/);
+    expect(lines.out.stdout).toBe(quiet.out.stdout);
+    expect(JSON.parse(quiet.out.stdout).time).toBe(6000);
   });
 
   it("counts Galperin's collisions (3 digits: 314)", () => {

@@ -6,6 +6,7 @@
  */
 import { SceneError } from "../scene/errors.js";
 import { parseScene } from "../scene/parse.js";
+import type { Until } from "../scene/types.js";
 import { ChapgameError, SimulationError } from "../sim/errors.js";
 import { Timeline } from "../timeline/timeline.js";
 import type { ProlongResult } from "../timeline/types.js";
@@ -16,7 +17,8 @@ export interface CliIO {
   readFile(path: string): string;
   stdout(text: string): void;
   stderr(text: string): void;
-  /** show progress on stderr (when stderr is a terminal) */
+  /** stderr is a terminal: show progress there on one updating line (without it, only --progress
+   *  shows progress, one line each) */
   progress: boolean;
 }
 
@@ -42,24 +44,39 @@ function result(tl: Timeline, time: number, withLog: boolean): Record<string, un
   return out;
 }
 
-function simulate(tl: Timeline, cmd: Extract<Command, { command: "simulate" }>, io: CliIO): number {
-  const until: { time?: number; events?: number } = {};
+/** How progress is shown on stderr: one updating line (a terminal), one line each, or not at all. */
+type ProgressMode = "terminal" | "lines" | "off";
+
+/** Computes `until` from the horizon in slices of PROGRESS_EVERY_EVENTS events, reporting after each
+ *  slice that does not finish the run; returns why it ended. */
+function compute(tl: Timeline, until: Until, mode: ProgressMode, io: CliIO): ProlongResult["reason"] {
+  if (mode === "off") return tl.prolong(until).reason;
+  const goal = until.events === undefined ? "" : ` of ${until.events}`;
+  let total = 0;
+  let shown = false;
+  for (;;) {
+    const r = tl.prolongSlice(until, PROGRESS_EVERY_EVENTS);
+    total += r.events;
+    if (r.done) {
+      if (shown && mode === "terminal") io.stderr("\r\x1b[K");
+      return r.reason ?? "idle";
+    }
+    const line = `chapgame: t = ${r.horizon.toPrecision(6)}, ${total}${goal} events`;
+    io.stderr(mode === "terminal" ? `\r${line}` : `${line}\n`);
+    shown = true;
+  }
+}
+
+function simulate(
+  tl: Timeline,
+  cmd: Extract<Command, { command: "simulate" }>,
+  mode: ProgressMode,
+  io: CliIO,
+): number {
+  const until: Until = {};
   if (cmd.untilTime !== undefined) until.time = cmd.untilTime;
   if (cmd.maxEvents !== undefined) until.events = cmd.maxEvents;
-  let reason: ProlongResult["reason"];
-  if (io.progress) {
-    let total = 0;
-    for (;;) {
-      const r = tl.prolongSlice(until, PROGRESS_EVERY_EVENTS);
-      total += r.events;
-      if (r.done) {
-        reason = r.reason ?? "idle";
-        break;
-      }
-      io.stderr(`\rchapgame: t = ${r.horizon.toPrecision(6)}, ${total} events`);
-    }
-    io.stderr("\r\x1b[K");
-  } else reason = tl.prolong(until).reason;
+  const reason = compute(tl, until, mode, io);
   return reason === "idle" ? tl.lastLoggedTime() : tl.horizon;
 }
 
@@ -78,11 +95,13 @@ export function runCli(argv: readonly string[], io: CliIO): number {
     }
     const scene = parseScene(text);
     const tl = Timeline.fromScene(scene, { history: cmd.events, compute: false });
+    const mode: ProgressMode = io.progress ? "terminal" : cmd.progress === true ? "lines" : "off";
     let time: number;
     if (cmd.command === "state") {
-      tl.prolongTo(cmd.at);
+      // from horizon 0 (nothing computed yet), `time: at` ahead is exactly up to at
+      compute(tl, { time: cmd.at }, mode, io);
       time = cmd.at;
-    } else time = simulate(tl, cmd, io);
+    } else time = simulate(tl, cmd, mode, io);
     io.stdout(`${toJson(result(tl, time, cmd.events))}\n`);
     return 0;
   } catch (e) {
