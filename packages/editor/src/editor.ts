@@ -201,10 +201,14 @@ export class Editor {
     return a;
   }
 
-  addBody(x: number, y: number, r: number, m = 1, v: Vec2 = [0, 0]): Promise<string | null> {
+  /** Adds a disc and selects it (a refused disc selects nothing). */
+  async addBody(x: number, y: number, r: number, m = 1, v: Vec2 = [0, 0]): Promise<string | null> {
     const id = nextFreeId("b", this.client.latestFrame?.ids ?? [], this.doc.actions);
-    this.ui.setState({ selection: { kind: "body", id } });
-    return this.edit([this.stamp({ time: this.now(), type: "addBody", id, x, y, r, m, mu: 0, v })]);
+    const err = await this.edit([
+      this.stamp({ time: this.now(), type: "addBody", id, x, y, r, m, mu: 0, v }),
+    ]);
+    if (err === null) this.ui.setState({ selection: { kind: "body", id } });
+    return err;
   }
 
   addLine(p1: Vec2, p2: Vec2, kind: "line" | "ray" | "segment"): Promise<string | null> {

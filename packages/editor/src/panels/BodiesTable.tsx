@@ -5,6 +5,7 @@
  * rows in view are rendered (useRowWindow).
  */
 import { type ReactNode, useRef } from "react";
+import { freeSpot } from "../canvas/freeSpot";
 import { useEditor, useUi } from "../EditorContext";
 import { F_M, F_MU, F_R, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE } from "../remote/protocol";
 import { DeleteRowButton } from "./DeleteRowButton";
@@ -96,9 +97,12 @@ export function BodiesTable() {
   }
   rows.push(spacerRow("after", win.after, COLUMNS.length + 2));
 
+  // A disc of about 20 px, at the free place nearest the centre of the view.
   const addBody = () => {
     const v = editor.ui.getState().view;
-    void editor.addBody(v.cx, v.cy, Math.max(1e-3, Number((20 / v.scale).toPrecision(2))));
+    const r = Math.max(1e-3, Number((20 / v.scale).toPrecision(2)));
+    const at = freeSpot(editor.client.latestFrame, { kind: "disc", r }, [v.cx, v.cy], 2.5 * r);
+    void editor.addBody(...(at ?? [v.cx, v.cy]), r);
   };
 
   return (

@@ -1,5 +1,6 @@
 /** The Lines table: id, kind, both points of every line, ray and segment; editable; Add and Delete. */
 
+import { freeSpot } from "../canvas/freeSpot";
 import { useEditor } from "../EditorContext";
 import type { LineKind } from "../engineTypes";
 import { CoordinateCell, ObjectRow } from "./ObjectRow";
@@ -18,10 +19,13 @@ export function LinesTable() {
   const frame = useLiveFrame();
   const lines = frame?.lines ?? [];
 
+  // A horizontal segment of 200 px, at the free place nearest the centre of the view.
   const add = () => {
     const v = editor.ui.getState().view;
     const half = 100 / v.scale;
-    void editor.addLine([v.cx - half, v.cy], [v.cx + half, v.cy], "segment");
+    const shape = { kind: "segment", half } as const;
+    const [x, y] = freeSpot(editor.client.latestFrame, shape, [v.cx, v.cy], 20 / v.scale) ?? [v.cx, v.cy];
+    void editor.addLine([x - half, y], [x + half, y], "segment");
   };
 
   return (

@@ -1,6 +1,8 @@
 /** The Points table: id and position of every fixed point; editable; Add and Delete. */
 
+import { freeSpot } from "../canvas/freeSpot";
 import { useEditor } from "../EditorContext";
+import type { Vec2 } from "../engineTypes";
 import { CoordinateCell, ObjectRow } from "./ObjectRow";
 import { useLiveFrame } from "./useLiveFrame";
 
@@ -17,7 +19,10 @@ export function PointsTable() {
           type="button"
           onClick={() => {
             const v = editor.ui.getState().view;
-            void editor.addPoint([v.cx, v.cy]);
+            const at: Vec2 = [v.cx, v.cy];
+            void editor.addPoint(
+              freeSpot(editor.client.latestFrame, { kind: "point" }, at, 20 / v.scale) ?? at,
+            );
           }}
         >
           Add point

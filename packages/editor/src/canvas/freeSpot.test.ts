@@ -1,0 +1,48 @@
+import { describe, expect, it } from "vitest";
+import type { LineState, PointState } from "../engineTypes";
+import { F_R, F_X, F_Y, FRAME_STRIDE, type Frame } from "../remote/protocol";
+import { distanceToLine } from "./clip";
+import { FREE_SPOT_RINGS, freeSpot } from "./freeSpot";
+
+function frame(discs: [number, number, number][], lines: LineState[] = [], points: PointState[] = []): Frame {
+  const data = new Float64Array(discs.length * FRAME_STRIDE);
+  discs.forEach(([x, y, r], i) => {
+    data[i * FRAME_STRIDE + F_X] = x;
+    data[i * FRAME_STRIDE + F_Y] = y;
+    data[i * FRAME_STRIDE + F_R] = r;
+  });
+  return { t: 0, revision: 0, g: 0, gravity: [0, 0], ids: discs.map((_, i) => `d${i}`), data, lines, points };
+}
+
+const dist = (a: readonly number[], b: readonly number[]) => Math.hypot(a[0]! - b[0]!, a[1]! - b[1]!);
+
+describe("freeSpot", () => {
+  it("keeps the place when it is free (or when there is no frame)", () => {
+    expect(freeSpot(frame([[10, 0, 1]]), { kind: "disc", r: 1 }, [0, 0], 2.5)).toEqual([0, 0]);
+    expect(freeSpot(null, { kind: "point" }, [3, 4], 1)).toEqual([3, 4]);
+  });
+
+  it("moves a disc off a disc at the place, to the first ring, clear of it", () => {
+    const p = freeSpot(frame([[0, 0, 1]]), { kind: "disc", r: 1 }, [0, 0], 2.5)!;
+    expect(dist(p, [0, 0])).toBeCloseTo(2.5, 12);
+    expect(dist(p, [0, 0])).toBeGreaterThan(2);
+  });
+
+  it("a disc keeps clear of lines and points; a point and a segment keep clear of discs", () => {
+    const wall: LineState = { id: "w", p1: [0, -5], p2: [0, 5], kind: "line" };
+    const pin: PointState = { id: "p", p: [0.5, 0.5] };
+    const d = freeSpot(frame([], [wall], [pin]), { kind: "disc", r: 1 }, [0, 0], 2.5)!;
+    expect(distanceToLine(d, wall.p1, wall.p2, "line")).toBeGreaterThan(1);
+    expect(dist(d, pin.p)).toBeGreaterThan(1);
+    const f = frame([[0, 0, 3]]);
+    const q = freeSpot(f, { kind: "point" }, [0, 0], 1)!;
+    expect(dist(q, [0, 0])).toBeGreaterThan(3);
+    const s = freeSpot(f, { kind: "segment", half: 5 }, [0, 0], 1)!;
+    expect(distanceToLine([0, 0], [s[0] - 5, s[1]], [s[0] + 5, s[1]], "segment")).toBeGreaterThan(3);
+  });
+
+  it("null when no ring has room", () => {
+    const huge = frame([[0, 0, 10 * FREE_SPOT_RINGS]]);
+    expect(freeSpot(huge, { kind: "disc", r: 1 }, [0, 0], 2.5)).toBeNull();
+  });
+});
