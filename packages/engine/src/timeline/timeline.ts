@@ -14,9 +14,10 @@
  */
 import { checkAction } from "../scene/action.js";
 import { SceneError } from "../scene/errors.js";
-import { count, isObject, nonNegative, onlyKeys, vec2 } from "../scene/fields.js";
+import { nonNegative, vec2 } from "../scene/fields.js";
 import { applyOrder, parseScene } from "../scene/parse.js";
 import type { Action, SceneFile, Until, Vec2 } from "../scene/types.js";
+import { checkUntil, copyAction, freezeAction, sameUntil, sameValue, timeArg } from "./actionData.js";
 import { type Goal, TimelineCore } from "./core.js";
 import { type Keyframe, keyframeBytes } from "./keyframe.js";
 import { MotionTable } from "./motionTable.js";
@@ -26,31 +27,6 @@ import type { LogEvent, ProlongResult, SceneState, TimelineCounts, TimelineOptio
 import { saveCore } from "./undo.js";
 
 const INF = Number.POSITIVE_INFINITY;
-
-function checkUntil(raw: unknown, path: string): Until {
-  if (!isObject(raw)) throw new SceneError(path, "must be an object with optional time and events");
-  onlyKeys(raw, ["time", "events"], path);
-  const u: Until = {};
-  if (raw.time !== undefined) u.time = nonNegative(raw, "time", path);
-  if (raw.events !== undefined) u.events = count(raw, "events", path);
-  return u;
-}
-
-/** Deep equality of plain data (numbers by Object.is, so -0 and 0 differ). */
-function sameValue(a: unknown, b: unknown): boolean {
-  if (typeof a === "number" || typeof b === "number") return Object.is(a, b);
-  if (typeof a !== "object" || typeof b !== "object" || a === null || b === null) return a === b;
-  const ka = Object.keys(a);
-  const kb = Object.keys(b);
-  if (ka.length !== kb.length) return false;
-  const ra = a as Record<string, unknown>;
-  const rb = b as Record<string, unknown>;
-  return ka.every((key) => Object.hasOwn(rb, key) && sameValue(ra[key], rb[key]));
-}
-
-function sameUntil(a: Until, b: Until): boolean {
-  return a.time === b.time && a.events === b.events;
-}
 
 export class Timeline {
   private core: TimelineCore;
@@ -81,18 +57,20 @@ export class Timeline {
     return tl;
   }
 
-  /** The scene file of this timeline (round-trips with fromScene). */
+  /** The scene file of this timeline (round-trips with fromScene): a copy, the caller's to edit. It
+   *  holds the actions, not how far the history was computed: after fromScene, prolong again. */
   toScene(): SceneFile {
     return {
       format: "chapgame",
       version: 1,
       g: this.core.g0,
-      gravity: this.core.gravity0,
-      actions: [...this.core.acts],
+      gravity: [this.core.gravity0[0], this.core.gravity0[1]],
+      actions: this.core.acts.map(copyAction),
     };
   }
 
-  /** All actions in the order they apply (time, then insertion order). The same array until a change. */
+  /** All actions in the order they apply (time, then insertion order). The same array until a change;
+   *  it and its actions are frozen (edit a copy and give it to setActions). */
   get actions(): readonly Action[] {
     if (this.actionsView === null) this.actionsView = Object.freeze([...this.core.acts]);
     return this.actionsView;
@@ -116,7 +94,7 @@ export class Timeline {
 
   /** Validate and apply one action (see the header). Throws SceneError; then nothing changes. */
   apply(action: Action): void {
-    const a = checkAction(action, "action");
+    const a = freezeAction(checkAction(action, "action"));
     const c = this.core;
     let insertAt = c.acts.length;
     while (insertAt > 0 && (c.acts[insertAt - 1] as Action).time > a.time) insertAt--;
@@ -161,7 +139,7 @@ export class Timeline {
    *  current horizon. Only the part after the first changed action is recomputed (from the last World
    *  keyframe before it). Errors name `actions[i]` by the index in `actions`. */
   setActions(actions: readonly Action[]): void {
-    const checked = actions.map((a, i) => checkAction(a, `actions[${i}]`));
+    const checked = actions.map((a, i) => freezeAction(checkAction(a, `actions[${i}]`)));
     const order = applyOrder(checked);
     const sorted = order.map((i) => checked[i] as Action);
     const c = this.core;
@@ -293,14 +271,14 @@ export class Timeline {
   /** Time of the first logged event strictly after t, or null. */
   nextEventTime(t: number): number | null {
     const r = this.core.records;
-    const i = r.upperBound(t);
+    const i = r.upperBound(timeArg("nextEventTime", "t", t));
     return i < r.length ? (r.time[i] as number) : null;
   }
 
   /** Time of the last logged event strictly before t, or null. */
   prevEventTime(t: number): number | null {
     const r = this.core.records;
-    const i = r.lowerBound(t) - 1;
+    const i = r.lowerBound(timeArg("prevEventTime", "t", t)) - 1;
     return i >= 0 ? (r.time[i] as number) : null;
   }
 
@@ -319,7 +297,8 @@ export class Timeline {
   /** Logged events with t0 <= time <= t1, in order. */
   eventsBetween(t0: number, t1: number): LogEvent[] {
     const r = this.core.records;
-    return logEvents(this.core, r.lowerBound(t0), r.upperBound(t1), this.scratch);
+    const from = r.lowerBound(timeArg("eventsBetween", "t0", t0));
+    return logEvents(this.core, from, r.upperBound(timeArg("eventsBetween", "t1", t1)), this.scratch);
   }
 
   /** Collisions and stops by kind, and actions applied, over the computed history. */

@@ -1,0 +1,57 @@
+/**
+ * Plain-data helpers of the Timeline's action list. The actions a Timeline keeps are frozen (deep:
+ * the action, its vectors, its until), so the list it hands out cannot be edited behind its back;
+ * toScene hands out unfrozen copies for the caller to edit. Also: deep equality of actions (what
+ * setActions uses to find the first changed one) and the check of an `until`.
+ */
+import { SceneError } from "../scene/errors.js";
+import { count, isObject, nonNegative, onlyKeys } from "../scene/fields.js";
+import type { Action, Until } from "../scene/types.js";
+
+/** `a` (a fresh object from checkAction) frozen with its arrays and its until; returns it. */
+export function freezeAction(a: Action): Action {
+  for (const v of Object.values(a)) if (typeof v === "object" && v !== null) Object.freeze(v);
+  return Object.freeze(a);
+}
+
+/** A deep, unfrozen copy of an action (its values are numbers, strings, vectors and an until). */
+export function copyAction(a: Action): Action {
+  const out: Record<string, unknown> = {};
+  for (const [k, v] of Object.entries(a))
+    out[k] = Array.isArray(v) ? [...v] : typeof v === "object" && v !== null ? { ...v } : v;
+  return out as unknown as Action;
+}
+
+/** Deep equality of plain data (numbers by Object.is, so -0 and 0 differ). */
+export function sameValue(a: unknown, b: unknown): boolean {
+  if (typeof a === "number" || typeof b === "number") return Object.is(a, b);
+  if (typeof a !== "object" || typeof b !== "object" || a === null || b === null) return a === b;
+  const ka = Object.keys(a);
+  const kb = Object.keys(b);
+  if (ka.length !== kb.length) return false;
+  const ra = a as Record<string, unknown>;
+  const rb = b as Record<string, unknown>;
+  return ka.every((key) => Object.hasOwn(rb, key) && sameValue(ra[key], rb[key]));
+}
+
+export function sameUntil(a: Until, b: Until): boolean {
+  return a.time === b.time && a.events === b.events;
+}
+
+/** Validates an until (a prolong's argument): SceneError naming `path`'s field. */
+export function checkUntil(raw: unknown, path: string): Until {
+  if (!isObject(raw)) throw new SceneError(path, "must be an object with optional time and events");
+  onlyKeys(raw, ["time", "events"], path);
+  const u: Until = {};
+  if (raw.time !== undefined) u.time = nonNegative(raw, "time", path);
+  if (raw.events !== undefined) u.events = count(raw, "events", path);
+  return u;
+}
+
+/** `t` itself when it is a number (±Infinity allowed: before or after everything); else a RangeError
+ *  naming the method and the argument. */
+export function timeArg(method: string, name: string, t: number): number {
+  if (typeof t !== "number" || Number.isNaN(t))
+    throw new RangeError(`${method}: ${name} must be a number, got ${String(t)}`);
+  return t;
+}
