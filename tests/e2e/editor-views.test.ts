@@ -25,7 +25,7 @@ function visibleLogTimes(): Promise<number[]> {
     const box = document.querySelector(".table-scroll.log")!;
     const view = box.getBoundingClientRect();
     const head = box.querySelector("thead")!.getBoundingClientRect().height;
-    return [...box.querySelectorAll("tbody tr:not(.spacer)")]
+    return Array.from(box.querySelectorAll("tbody tr:not(.spacer)"))
       .filter((tr) => {
         const r = tr.getBoundingClientRect();
         return r.top >= view.top + head - 1 && r.bottom <= view.bottom + 1;
@@ -58,6 +58,20 @@ describe("editor views", () => {
       return times.some((x) => x <= 0.16) && times.some((x) => x > 0.16);
     }).toBe(true);
     await screenshot(page, "11-event-log-follows-time");
+  });
+
+  it("every column of the Bodies table, the row's delete button included, is in view with a heavy disc", async () => {
+    const select = page.getByRole("combobox", { name: "Preset" });
+    await select.selectOption("galperin");
+    await page.getByRole("spinbutton", { name: "Digits of π" }).fill("7");
+    await page.getByRole("button", { name: "Load preset" }).click();
+    const table = page.getByRole("table", { name: "Bodies" });
+    await poll(() => table.getByLabel("big m", { exact: true }).textContent()).toBe("1e+12");
+    const scroller = (await page.locator(".table-scroll").first().boundingBox())!;
+    for (const name of ["big m", "big mu", "Delete big"]) {
+      const box = (await table.getByLabel(name, { exact: true }).boundingBox())!;
+      expect(box.x + box.width, name).toBeLessThanOrEqual(scroller.x + scroller.width);
+    }
   });
 
   it("small windows keep the canvas, the Time slider and every time and speed control usable", async () => {

@@ -84,10 +84,18 @@ export function parseNumber(text: string): number | null {
   return Number(t);
 }
 
-/** A short display of a number: 6 significant digits, no trailing zeros, ∞ for infinities. */
+/** From this magnitude on numbers are written with an exponent (they stay narrow in a table). */
+const EXPONENT_FROM = 1e7;
+
+/**
+ * A short display of a number: 6 significant digits, no trailing zeros, ∞ for infinities, an
+ * exponent from 10^7 on ("1e+12", "1.23457e+9"); parseNumber reads every form back.
+ */
 export function formatNumber(x: number): string {
   if (x === Number.POSITIVE_INFINITY) return "∞";
   if (x === Number.NEGATIVE_INFINITY) return "-∞";
   if (Object.is(x, -0) || Math.abs(x) < 1e-12) return "0";
-  return String(Number(x.toPrecision(6)));
+  const rounded = Number(x.toPrecision(6));
+  if (Math.abs(rounded) < EXPONENT_FROM) return String(rounded);
+  return rounded.toExponential();
 }

@@ -18,4 +18,12 @@ describe("cell numbers", () => {
     expect(formatNumber(-0)).toBe("0");
     expect(formatNumber(Number.POSITIVE_INFINITY)).toBe("∞");
   });
+
+  it("writes numbers of 10^7 and more with an exponent (a mass of 10^12 was 13 digits wide)", () => {
+    expect(formatNumber(1e12)).toBe("1e+12");
+    expect(formatNumber(-1234567890)).toBe("-1.23457e+9");
+    expect(formatNumber(9999990)).toBe("9999990");
+    for (const x of [1e12, 1234567890, 6.02e23])
+      expect(parseNumber(formatNumber(x))).toBe(Number(x.toPrecision(6)));
+  });
 });
