@@ -82,12 +82,10 @@ export function checkAction(raw: unknown, path: string): Action {
   const specs = ACTION_FIELDS[type as ActionType];
   onlyKeys(raw, ["time", "type", "until", ...specs.map((s) => s[0])], path);
   const out: Obj = { time: nonNegative(raw, "time", path), type };
+  const defaults: Obj = type === "addBody" ? { mu: SCENE_DEFAULTS.mu, v: [...SCENE_DEFAULTS.v] } : {};
   for (const [key, read, req] of specs) {
     if (req || raw[key] !== undefined) out[key] = read(raw, key, path);
-  }
-  if (type === "addBody") {
-    if (out.mu === undefined) out.mu = SCENE_DEFAULTS.mu;
-    if (out.v === undefined) out.v = SCENE_DEFAULTS.v;
+    else if (key in defaults) out[key] = defaults[key]; // in place, so keys stay in canonical order
   }
   if (type === "addLine") {
     const p1 = out.p1 as readonly number[];

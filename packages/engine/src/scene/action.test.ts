@@ -1,0 +1,32 @@
+import { describe, expect, it } from "vitest";
+import { ACTION_FIELDS, checkAction } from "./action.js";
+
+describe("checkAction", () => {
+  it("returns the keys in canonical order whichever optional fields are given (mu came after v)", () => {
+    const canonical = ["time", "type", ...ACTION_FIELDS.addBody.map((f) => f[0]), "until"];
+    const inputs = [
+      { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 },
+      { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [1, 0] },
+      { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, mu: 0.2 },
+      { v: [1, 0], until: { time: 1 }, mu: 0.1, m: 1, r: 1, y: 0, x: 0, id: "a", type: "addBody", time: 0 },
+    ];
+    for (const raw of inputs) {
+      const keys = Object.keys(checkAction(raw, "a"));
+      expect(keys).toEqual(canonical.filter((k) => keys.includes(k)));
+      expect(keys).toContain("mu");
+      expect(keys).toContain("v");
+    }
+  });
+});
+
+describe("checkAction defaults", () => {
+  it("gives each addBody its own default velocity array (it was one shared array for all)", () => {
+    const raw = { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 };
+    const a = checkAction(raw, "a") as { v: number[] };
+    const b = checkAction(raw, "b") as { v: number[] };
+    expect(a.v).not.toBe(b.v);
+    a.v[0] = 5;
+    expect(b.v).toEqual([0, 0]);
+    expect(checkAction(raw, "c")).toMatchObject({ v: [0, 0] });
+  });
+});
