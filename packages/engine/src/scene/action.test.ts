@@ -22,8 +22,8 @@ describe("checkAction", () => {
 describe("checkAction defaults", () => {
   it("gives each addBody its own default velocity array (it was one shared array for all)", () => {
     const raw = { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 };
-    const a = checkAction(raw, "a") as { v: number[] };
-    const b = checkAction(raw, "b") as { v: number[] };
+    const a = checkAction(raw, "a") as unknown as { v: number[] };
+    const b = checkAction(raw, "b") as unknown as { v: number[] };
     expect(a.v).not.toBe(b.v);
     a.v[0] = 5;
     expect(b.v).toEqual([0, 0]);
