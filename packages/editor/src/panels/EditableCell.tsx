@@ -5,8 +5,11 @@
  * `onCommit`, which resolves to an error message (the value is refused, the message shown in place,
  * the draft kept for correction) or null (accepted). Escape closes without committing.
  * Both the button and the input carry `label` as their accessible name.
+ * Opening a cell pauses playback (inside an editor): the edit applies at the current time, and the
+ * values the cell and its row show are those of that time, not of a moment that playback has left.
  */
-import { useId, useState } from "react";
+import { useContext, useId, useState } from "react";
+import { EditorContext } from "../EditorContext";
 
 export interface EditableCellProps {
   label: string;
@@ -19,6 +22,11 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
   const [draft, setDraft] = useState<string | null>(null);
   const [error, setError] = useState<string | null>(null);
   const errorId = useId();
+  const editor = useContext(EditorContext);
+  const open = () => {
+    if (editor?.ui.getState().playing) editor.ui.setState({ playing: false });
+    setDraft(value);
+  };
 
   const close = () => {
     setDraft(null);
@@ -37,13 +45,7 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
 
   if (draft === null)
     return (
-      <button
-        type="button"
-        className="cell-view"
-        aria-label={label}
-        onClick={() => setDraft(value)}
-        onFocus={() => setDraft(value)}
-      >
+      <button type="button" className="cell-view" aria-label={label} onClick={open} onFocus={open}>
         {value}
       </button>
     );

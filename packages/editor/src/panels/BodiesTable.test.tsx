@@ -1,0 +1,47 @@
+// @vitest-environment jsdom
+// Editing a Bodies cell while playing: opening the cell pauses playback, so the edit applies at the
+// time whose values the table shows, and a vx edit keeps the vy of that time (it once kept playing:
+// the action was stamped later than the values it was built from, up to a table refresh late).
+import { act, cleanup, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
+import { afterEach, describe, expect, it } from "vitest";
+import { EditorContext } from "../EditorContext";
+import { settled, testEditor } from "../testing/harness";
+import { BodiesTable } from "./BodiesTable";
+
+afterEach(cleanup);
+
+describe("BodiesTable", () => {
+  it("opening a cell while playing pauses; the velocity edit keeps vy of the paused time", async () => {
+    const h = testEditor();
+    await h.editor.loadScene(
+      {
+        format: "chapgame",
+        version: 1,
+        g: 0,
+        gravity: [0, -10],
+        actions: [{ time: 0, type: "addBody", id: "ball", x: 0, y: 100, r: 1, m: 1, v: [1, 0] }],
+      },
+      { undoable: false },
+    );
+    await settled(h.client);
+    render(
+      <EditorContext.Provider value={h.editor}>
+        <BodiesTable />
+      </EditorContext.Provider>,
+    );
+    const table = screen.getByRole("table", { name: "Bodies" });
+    const cell = (name: string) => within(table).getByLabelText(name);
+    await waitFor(() => expect(cell("ball vy").textContent).toBe("0"));
+    act(() => h.editor.ui.setState({ playing: true, t: 0.5 }));
+    fireEvent.click(cell("ball vx"));
+    expect(h.editor.ui.getState().playing).toBe(false);
+    await waitFor(() => expect(cell("ball vy").textContent).toBe("-5"));
+    const input = within(table).getByRole("textbox", { name: "ball vx" });
+    fireEvent.change(input, { target: { value: "2" } });
+    await act(async () => {
+      fireEvent.keyDown(input, { key: "Enter" });
+    });
+    await waitFor(() => expect(h.editor.doc.actions.length).toBe(2));
+    expect(h.editor.doc.actions[1]).toMatchObject({ time: 0.5, type: "updateBody", id: "ball", v: [2, -5] });
+  });
+});
