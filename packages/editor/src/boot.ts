@@ -70,13 +70,16 @@ export async function boot(): Promise<Editor> {
 
   let savedRevision = client.getSnapshot().docRevision;
   let timer: ReturnType<typeof setTimeout> | null = null;
+  let autosaveFailed = false;
   const save = () => {
     if (timer !== null) clearTimeout(timer);
     timer = null;
     const now = client.getSnapshot();
     if (now.docRevision === savedRevision) return;
     savedRevision = now.docRevision;
-    if (now.doc) saveAutosave(window.localStorage, now.doc);
+    const failed = now.doc ? saveAutosave(window.localStorage, now.doc) : null;
+    if (failed !== null && !autosaveFailed) editor.ui.setState({ message: { text: failed, tone: "error" } });
+    autosaveFailed = failed !== null; // said once, until autosave works again
   };
   client.subscribe(() => {
     if (client.getSnapshot().docRevision === savedRevision || timer !== null) return;

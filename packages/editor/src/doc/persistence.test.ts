@@ -2,6 +2,7 @@
 import { describe, expect, it } from "vitest";
 import type { SceneFile } from "../engineTypes";
 import {
+  AUTOSAVE_KEY,
   decodeSceneFromUrl,
   encodeSceneForUrl,
   loadAutosave,
@@ -39,5 +40,26 @@ describe("persistence", () => {
     expect(() => decodeSceneFromUrl("abc%%")).toThrow("damaged or cut short");
     const bad = encodeSceneForUrl({ ...scene, actions: [{ ...scene.actions[0]!, r: -1 } as never] });
     expect(() => decodeSceneFromUrl(bad)).toThrow("actions[0].r");
+  });
+
+  it("a scene too large for the storage leaves no older autosave behind and says so", () => {
+    saveAutosave(localStorage, scene);
+    const full: Storage = {
+      ...localStorage,
+      length: 1,
+      key: () => AUTOSAVE_KEY,
+      clear: () => localStorage.clear(),
+      getItem: (k) => localStorage.getItem(k),
+      removeItem: (k) => localStorage.removeItem(k),
+      setItem: () => {
+        throw new DOMException("quota", "QuotaExceededError");
+      },
+    };
+    const bigger = { ...scene, g: 1 };
+    expect(saveAutosave(full, bigger)).toMatch(/^Autosave failed/);
+    // a reload must not bring back the older scene as if it were the latest
+    expect(loadAutosave(localStorage)).toBeNull();
+    expect(saveAutosave(localStorage, bigger)).toBeNull();
+    expect(loadAutosave(localStorage)).toEqual(bigger);
   });
 });

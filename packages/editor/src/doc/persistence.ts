@@ -38,11 +38,24 @@ export function shareUrl(location: { origin: string; pathname: string }, scene: 
   return `${location.origin}${location.pathname}#scene=${encodeSceneForUrl(scene)}`;
 }
 
-export function saveAutosave(storage: Storage, scene: SceneFile): void {
+/**
+ * Writes the autosave; null on success, else a message for the user. When the scene cannot be
+ * stored (storage full or disabled), the older autosave is removed: a reload must not bring back an
+ * older scene as if it were the latest.
+ */
+export function saveAutosave(storage: Storage, scene: SceneFile): string | null {
+  const text = sceneText(scene);
   try {
-    storage.setItem(AUTOSAVE_KEY, sceneText(scene));
+    storage.setItem(AUTOSAVE_KEY, text);
+    return null;
   } catch {
-    // Storage full or disabled: autosave is best effort.
+    try {
+      storage.removeItem(AUTOSAVE_KEY);
+    } catch {
+      // storage disabled altogether: nothing to remove
+    }
+    const mb = (text.length / 1e6).toFixed(1);
+    return `Autosave failed: the browser's storage refused the scene (${mb} MB of JSON). A reload will not keep it: use Save file.`;
   }
 }
 
