@@ -82,3 +82,21 @@ describe("Timeline isolation", () => {
     expect(tl.eventsBetween(0, Number.POSITIVE_INFINITY)).toHaveLength(3);
   });
 });
+
+describe("Timeline subscribers", () => {
+  it("a listener that throws does not keep the others from being told; its error comes after them", () => {
+    const tl = new Timeline({ g: 0 });
+    const told: string[] = [];
+    tl.subscribe(() => told.push("first"));
+    tl.subscribe(() => {
+      throw new Error("listener bug");
+    });
+    tl.subscribe(() => told.push("third"));
+    expect(() => tl.apply({ time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 })).toThrow(
+      "listener bug",
+    );
+    expect(told).toEqual(["first", "third"]);
+    expect(tl.actions).toHaveLength(1); // the change itself was made
+    expect(tl.getSnapshot()).toBe(1);
+  });
+});

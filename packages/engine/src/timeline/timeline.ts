@@ -86,10 +86,20 @@ export class Timeline {
 
   // ---- changes ----------------------------------------------------------------------------------
 
+  /** Every listener is called, even after one throws; the first error is rethrown after them all
+   *  (the change itself is made). */
   private changed(): void {
     this.revision++;
     this.actionsView = null;
-    for (const l of [...this.listeners]) l();
+    let failure: { error: unknown } | null = null;
+    for (const l of [...this.listeners]) {
+      try {
+        l();
+      } catch (error) {
+        failure ??= { error };
+      }
+    }
+    if (failure) throw failure.error;
   }
 
   /** Validate and apply one action (see the header). Throws SceneError; then nothing changes. */
@@ -318,7 +328,8 @@ export class Timeline {
 
   // ---- observing --------------------------------------------------------------------------------
 
-  /** Call `listener` after every change (apply, setActions, prolong). Returns the unsubscribe. */
+  /** Call `listener` after every change (apply, setActions, prolong). Returns the unsubscribe. A
+   *  listener that throws does not stop the others; its error is rethrown after them. */
   subscribe(listener: () => void): () => void {
     this.listeners.add(listener);
     return () => {
