@@ -77,6 +77,15 @@ describe("parseScene accepts and normalizes", () => {
   });
 });
 
+describe("parseScene on broken JSON", () => {
+  it("says the line and column when the JSON parser gives a position (a 5,000-line file had only 'position 73')", () => {
+    const text = '{"format":"chapgame","version":1,\n"actions":[\n{"time":0,"type":"addBody" "id":"a"}]}';
+    const e = refused(text);
+    expect(e.path).toBe("json");
+    expect(e.message).toMatch(/^json: invalid JSON at line 3, column 28 \(/);
+  });
+});
+
 describe("parseScene refuses, naming the path and the reason", () => {
   const cases: [string, unknown, string][] = [
     ["broken JSON", "{ nope", "json: invalid JSON"],

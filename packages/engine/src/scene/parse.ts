@@ -33,13 +33,31 @@ export function checkSceneRules(
   }
 }
 
+/** " at line L, column C" from the parser's "position N" (V8 gives only the offset), or "". */
+function where(text: string, message: string): string {
+  const m = /position (\d+)/.exec(message);
+  if (m === null) return "";
+  const pos = Math.min(Number(m[1]), text.length);
+  let line = 1;
+  let start = 0;
+  for (let i = 0; i < pos; i++)
+    if (text.charCodeAt(i) === 10) {
+      line++;
+      start = i + 1;
+    }
+  return ` at line ${line}, column ${pos - start + 1}`;
+}
+
 export function parseScene(input: string | unknown): SceneFile {
   let raw: unknown = input;
   if (typeof input === "string") {
     try {
       raw = JSON.parse(input);
     } catch (e) {
-      throw new SceneError("json", `invalid JSON (${(e as Error).message})`);
+      throw new SceneError(
+        "json",
+        `invalid JSON${where(input, (e as Error).message)} (${(e as Error).message})`,
+      );
     }
   }
   if (!isObject(raw)) throw new SceneError("scene", "must be a JSON object");
