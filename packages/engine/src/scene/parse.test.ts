@@ -78,6 +78,10 @@ describe("parseScene accepts and normalizes", () => {
 });
 
 describe("parseScene on broken JSON", () => {
+  it("reads a file that starts with a byte order mark (Windows editors write one; it was 'invalid JSON')", () => {
+    const s = parseScene(`\uFEFF${base([disc("a", 0)])}`);
+    expect(s.actions).toHaveLength(1);
+  });
   it("says the line and column when the JSON parser gives a position (a 5,000-line file had only 'position 73')", () => {
     const text = '{"format":"chapgame","version":1,\n"actions":[\n{"time":0,"type":"addBody" "id":"a"}]}';
     const e = refused(text);

@@ -51,13 +51,13 @@ function where(text: string, message: string): string {
 export function parseScene(input: string | unknown): SceneFile {
   let raw: unknown = input;
   if (typeof input === "string") {
+    // a leading byte order mark (written by some editors) is not part of the JSON text
+    const text = input.charCodeAt(0) === 0xfeff ? input.slice(1) : input;
     try {
-      raw = JSON.parse(input);
+      raw = JSON.parse(text);
     } catch (e) {
-      throw new SceneError(
-        "json",
-        `invalid JSON${where(input, (e as Error).message)} (${(e as Error).message})`,
-      );
+      const message = (e as Error).message;
+      throw new SceneError("json", `invalid JSON${where(text, message)} (${message})`);
     }
   }
   if (!isObject(raw)) throw new SceneError("scene", "must be a JSON object");
