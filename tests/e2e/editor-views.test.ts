@@ -57,6 +57,21 @@ describe("editor views", () => {
       const times = await visibleLogTimes();
       return times.some((x) => x <= 0.16) && times.some((x) => x > 0.16);
     }).toBe(true);
+    // a click on a row jumps to its time, and that row stays in view (the log then reads the
+    // events around the new time: the row moves within its page, the view must follow it)
+    await loadPreset("Bouncing balls");
+    await scrubTo(page, 6);
+    await poll(async () => (await visibleLogTimes()).some((x) => x > 6)).toBe(true);
+    const row = page
+      .getByRole("table", { name: "Event log" })
+      .getByRole("row")
+      .filter({ hasText: "body–body" });
+    const target = Number(await row.first().locator("td").first().textContent());
+    await row.first().click();
+    const shownTime = async () =>
+      Number(Number(await page.getByRole("slider", { name: "Time" }).inputValue()).toPrecision(6));
+    await poll(shownTime).toBe(target);
+    await poll(async () => (await visibleLogTimes()).includes(target)).toBe(true);
     await screenshot(page, "11-event-log-follows-time");
   });
 

@@ -1,8 +1,9 @@
 /**
  * Keeps a time-ordered table scrolled to the current time: the first row at or after t is brought
  * near the top of the view (FOLLOW_LEAD rows of the past above it), so the events just before and
- * after the current time are what a reader sees while playing and scrubbing. A reader who scrolls,
- * clicks or types in the table takes over: following pauses for HANDS_OFF_MS after that.
+ * after the current time are what a reader sees while playing and scrubbing. A reader who scrolls
+ * the table by hand takes over: following pauses for HANDS_OFF_MS after that (a click on a row
+ * jumps to its time, and the view follows it).
  */
 import { type RefObject, useEffect, useLayoutEffect, useRef } from "react";
 
@@ -10,6 +11,8 @@ import { type RefObject, useEffect, useLayoutEffect, useRef } from "react";
 export const FOLLOW_LEAD = 3;
 /** Milliseconds after the reader last scrolled or clicked in the table during which it is left alone. */
 export const HANDS_OFF_MS = 4000;
+
+const SCROLL_KEYS = new Set(["ArrowUp", "ArrowDown", "PageUp", "PageDown", "Home", "End"]);
 
 /** Index of the row to scroll to the top: FOLLOW_LEAD rows before the first time >= t. */
 export function followRow(times: readonly number[], t: number, lead = FOLLOW_LEAD): number {
@@ -30,7 +33,11 @@ export function useFollowTime(
   useEffect(() => {
     const el = ref.current;
     if (!el) return;
-    const mark = () => {
+    // Scrolling by hand: the wheel, a touch, the scroll bar (a press on the box itself, not on a
+    // row: a click on a row jumps to its time, which the view then follows), the scroll keys.
+    const mark = (e: Event) => {
+      if (e.type === "pointerdown" && e.target !== el) return;
+      if (e instanceof KeyboardEvent && !SCROLL_KEYS.has(e.key)) return;
       touched.current = Date.now();
     };
     const events = ["wheel", "pointerdown", "keydown", "touchstart"] as const;
