@@ -89,6 +89,47 @@ describe("editor views", () => {
     }
   });
 
+  it("dragging a moving disc pauses playback and drops the disc where it is let go", async () => {
+    await loadPreset("Newton's cradle");
+    await page.getByRole("button", { name: "Play" }).click();
+    await waitFor(async () => Number(await page.getByRole("slider", { name: "Time" }).inputValue()) > 0.3);
+    const at = await page.evaluate(() => {
+      type Editor = {
+        ui: { getState(): { t: number; view: { cx: number; cy: number; scale: number } } };
+        client: { latestFrame: { ids: string[]; data: Float64Array } | null };
+      };
+      const ed = (window as unknown as { chapgame: Editor }).chapgame;
+      const f = ed.client.latestFrame!;
+      const i = f.ids.indexOf("striker");
+      const { view, t } = ed.ui.getState();
+      const r = document.querySelector("canvas")!.getBoundingClientRect();
+      const x = f.data[i * 11]! + f.data[i * 11 + 2]! * 0.1; // ahead of the moving disc by 0.1 s
+      return {
+        sx: r.x + r.width / 2 + (x - view.cx) * view.scale,
+        sy: r.y + r.height / 2,
+        scale: view.scale,
+        t,
+      };
+    });
+    await page.getByRole("button", { name: "Move", exact: true }).click();
+    await page.mouse.move(at.sx, at.sy);
+    await page.mouse.down();
+    const pressedAt = Number(await page.getByRole("slider", { name: "Time" }).inputValue());
+    await page.mouse.move(at.sx, at.sy - 80, { steps: 8 });
+    await page.waitForTimeout(300);
+    await page.mouse.up();
+    expect(await page.getByRole("button", { name: "Play" }).count()).toBe(1);
+    expect(Number(await page.getByRole("slider", { name: "Time" }).inputValue())).toBe(pressedAt);
+    await poll(async () =>
+      Number(
+        await page
+          .getByRole("table", { name: "Bodies" })
+          .getByLabel("striker y", { exact: true })
+          .textContent(),
+      ),
+    ).toBeCloseTo(80 / at.scale, 1);
+  });
+
   it("small windows keep the canvas, the Time slider and every time and speed control usable", async () => {
     await loadPreset("Billiards break");
     try {

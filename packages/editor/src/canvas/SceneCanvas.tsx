@@ -4,6 +4,7 @@
  * draws the current time: the latest Frame from the worker evaluated at that time (frameAt.ts), so
  * playback is smooth even when the worker answers late.
  * Pointer gestures per tool: select/move/pan, velocity drag, cue strike, add disc/line/point.
+ * Picking up a disc (move, velocity) pauses playback; a cue strike does not (it strikes a moving disc).
  */
 import { useEffect, useRef } from "react";
 import { useEditor } from "../EditorContext";
@@ -49,6 +50,11 @@ export function SceneCanvas() {
     let dirty = true;
     let drawnBase: Frame | null = null;
     let drawnT = Number.NaN;
+    /**
+     * The frame on screen (the worker's frame evaluated at the drawn time): what the pointer hits.
+     * While playing, the worker's latest frame is up to a lookahead behind the time drawn.
+     */
+    let drawn: Frame | null = null;
     const shown = emptyFrame();
     const held = { count: 0 };
     let overlay: Overlay | null = null;
@@ -102,6 +108,7 @@ export function SceneCanvas() {
       const moved = base !== drawnBase || s.t !== drawnT;
       if (!moved && !dirty) return;
       const f = base && (base.t === s.t ? base : frameAt(base, s.t, shown, held));
+      drawn = f;
       if (moved) {
         drawnBase = base;
         drawnT = s.t;
@@ -144,14 +151,17 @@ export function SceneCanvas() {
       downAt = p;
       const s = ui.getState();
       const w = world(p);
-      const f = client.latestFrame;
+      const f = drawn ?? client.latestFrame;
       const hit = hitTest(f, w, HIT_PX / s.view.scale);
       const tool = s.tool;
       if (tool === "line" || tool === "ray" || tool === "segment") {
         gesture = { kind: "line", p1: w, p2: w };
         return;
       }
-      if (hit?.kind === "body" && f) {
+      if (hit?.kind === "body" && f && (tool === "velocity" || tool === "move")) {
+        // Dragging a disc pauses playback: the edit applies at the time the disc was picked up,
+        // where the frame that gives its place and velocity was drawn.
+        if (s.playing) ui.setState({ playing: false });
         const i = bodyIndex(f, hit.id) * FRAME_STRIDE;
         const c: Vec2 = [f.data[i + F_X]!, f.data[i + F_Y]!];
         if (tool === "velocity" || (tool === "move" && e.shiftKey)) {
@@ -223,7 +233,7 @@ export function SceneCanvas() {
 
     const click = (w: Vec2, tool: string) => {
       const s = ui.getState();
-      const f = client.latestFrame;
+      const f = drawn ?? client.latestFrame;
       const hit = hitTest(f, w, HIT_PX / s.view.scale);
       if (tool === "disc" && !hit) {
         void editor.addBody(w[0], w[1], niceRadius(NEW_DISC_PX, s.view.scale));
