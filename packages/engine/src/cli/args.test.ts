@@ -34,6 +34,11 @@ describe("parseArgs", () => {
     });
     expect(parseArgs(["state", "s.json", "--at", "2", "--progress"])).toMatchObject({ progress: true });
   });
+  it("takes `help` as a command and --version / -V (`chapgame help` was an unknown command)", () => {
+    expect(parseArgs(["help"])).toEqual({ command: "help" });
+    expect(parseArgs(["--version"])).toEqual({ command: "version" });
+    expect(parseArgs(["-V"])).toEqual({ command: "version" });
+  });
   it("recognizes --help anywhere", () => {
     expect(parseArgs(["--help"])).toEqual({ command: "help" });
     expect(parseArgs(["simulate", "-h"])).toEqual({ command: "help" });

@@ -2,7 +2,8 @@
  * Command-line arguments of the `chapgame` bin, parsed into a Command (pure; no process access).
  *   chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--progress]
  *   chapgame state SCENE --at T [--events] [--progress]
- *   chapgame --help
+ *   chapgame --help | help
+ *   chapgame --version
  * Options take their value as the next argument or after "=". Any other argument that starts with
  * "-" (except "-" itself, standard input) is an unknown option, never a file name. Invalid arguments
  * throw UsageError with a one-line message.
@@ -17,6 +18,7 @@ export class UsageError extends Error {
 
 export type Command =
   | { command: "help" }
+  | { command: "version" }
   | {
       command: "simulate";
       scene: string;
@@ -36,6 +38,7 @@ export const USAGE = `Usage:
   chapgame state SCENE --at T [--events] [--progress]
       Print the bodies at time T as JSON.
   chapgame --help
+  chapgame --version
 
 SCENE is a scene file (format "chapgame", version 1), or - for standard input.
 --events adds the event log (kept in memory: bound long runs).
@@ -68,7 +71,8 @@ function count(name: string, v: string): number {
 
 export function parseArgs(argv: readonly string[]): Command {
   if (argv.length === 0) throw new UsageError("missing command (try chapgame --help)");
-  if (argv.includes("--help") || argv.includes("-h")) return { command: "help" };
+  if (argv.includes("--help") || argv.includes("-h") || argv[0] === "help") return { command: "help" };
+  if (argv[0] === "--version" || argv[0] === "-V") return { command: "version" };
   const [cmd, ...rest] = argv;
   if (cmd !== "simulate" && cmd !== "state")
     throw new UsageError(`unknown command "${cmd}" (try chapgame --help)`);

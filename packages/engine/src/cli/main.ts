@@ -19,12 +19,24 @@ interface NodeProcess {
   exitCode?: number;
 }
 interface NodeFs {
-  readFileSync(path: string | number, encoding: "utf8"): string;
+  readFileSync(path: string | number | object, encoding: "utf8"): string;
 }
 
 const proc = (globalThis as unknown as { process: NodeProcess }).process;
 const fsModule = "node:fs";
 const fs = (await import(fsModule)) as NodeFs;
+
+/** The package's version from its package.json (two folders up from dist/cli), or undefined. */
+function packageVersion(): string | undefined {
+  try {
+    const { URL } = globalThis as unknown as { URL: new (path: string, base: string) => object };
+    const url = new URL("../../package.json", (import.meta as unknown as { url: string }).url);
+    const v = (JSON.parse(fs.readFileSync(url, "utf8")) as { version?: unknown }).version;
+    return typeof v === "string" ? v : undefined;
+  } catch {
+    return undefined;
+  }
+}
 
 let stdoutClosed = false;
 proc.stdout.on("error", (e) => {
@@ -43,4 +55,10 @@ proc.exitCode = runCli(proc.argv.slice(2), {
   },
   stderr: (text) => proc.stderr.write(text),
   progress: proc.stderr.isTTY === true,
+  ...versionField(),
 });
+
+function versionField(): { version?: string } {
+  const version = packageVersion();
+  return version === undefined ? {} : { version };
+}

@@ -63,6 +63,16 @@ describe("runCli in-process", () => {
     expect(JSON.parse(quiet.out.stdout).time).toBe(6000);
   });
 
+  it("--version prints the version the bin gives, or says it is unknown", () => {
+    const withVersion = io({});
+    withVersion.cli.version = "1.2.3";
+    expect(runCli(["--version"], withVersion.cli)).toBe(0);
+    expect(withVersion.out.stdout).toBe("chapgame 1.2.3\n");
+    const without = io({});
+    expect(runCli(["--version"], without.cli)).toBe(0);
+    expect(without.out.stdout).toBe("chapgame (version unknown)\n");
+  });
+
   it("counts Galperin's collisions (3 digits: 314)", () => {
     const { cli, out } = io({ "g.json": serializeScene(galperin(3)) });
     expect(runCli(["simulate", "g.json"], cli)).toBe(0);

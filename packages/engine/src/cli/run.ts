@@ -20,6 +20,8 @@ export interface CliIO {
   /** stderr is a terminal: show progress there on one updating line (without it, only --progress
    *  shows progress, one line each) */
   progress: boolean;
+  /** the package's version, for --version (the bin reads it from package.json) */
+  version?: string;
 }
 
 /** Events computed between two progress lines. */
@@ -85,6 +87,10 @@ export function runCli(argv: readonly string[], io: CliIO): number {
     const cmd = parseArgs(argv);
     if (cmd.command === "help") {
       io.stdout(`${USAGE}\n`);
+      return 0;
+    }
+    if (cmd.command === "version") {
+      io.stdout(`chapgame ${io.version ?? "(version unknown)"}\n`);
       return 0;
     }
     let text: string;
