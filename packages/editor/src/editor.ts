@@ -272,10 +272,54 @@ export class Editor {
     this.ui.setState({ t: Math.min(Math.max(t, 0), h) });
   }
 
+  /**
+   * Goes to time t (a typed time). Past the horizon it computes up to t first and then goes there
+   * (cut to the horizon if that computation is cancelled or refused).
+   */
+  async goTo(t: number): Promise<void> {
+    const h = this.client.getSnapshot().horizon;
+    if (!(t > h)) {
+      this.setTime(t);
+      return;
+    }
+    this.ui.setState({ playing: false });
+    try {
+      await this.client.compute({ time: t - h });
+    } catch (e) {
+      this.fail(e);
+      return;
+    }
+    await this.whenComputed();
+    this.setTime(t);
+  }
+
+  /** Resolves when the worker runs no computation. */
+  private whenComputed(): Promise<void> {
+    return new Promise((resolve) => {
+      const check = () => {
+        if (this.client.getSnapshot().computing !== null) return;
+        off();
+        resolve();
+      };
+      const off = this.client.subscribe(check);
+      check();
+    });
+  }
+
+  /** Steps to the next or previous event; when there is none, says so. */
   async stepEvent(direction: 1 | -1): Promise<void> {
     const t = this.now();
     const next = direction > 0 ? await this.client.nextEvent(t) : await this.client.prevEvent(t);
     if (next !== null) this.ui.setState({ t: next, playing: false });
+    else {
+      const at = Number(t.toPrecision(6));
+      const h = Number(this.client.getSnapshot().horizon.toPrecision(6));
+      this.info(
+        direction > 0
+          ? `No event after t = ${at} s up to the computed horizon (${h} s).`
+          : `No event before t = ${at} s.`,
+      );
+    }
   }
 
   togglePlay(): void {

@@ -1,6 +1,6 @@
 // @vitest-environment jsdom
 import { newtonsCradle } from "@chapgame/engine";
-import { act, cleanup, render, screen, waitFor } from "@testing-library/react";
+import { act, cleanup, fireEvent, render, screen, waitFor } from "@testing-library/react";
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
 import type { RequestMessage } from "../remote/protocol";
@@ -81,5 +81,27 @@ describe("TimePanel", () => {
     } finally {
       clearInterval(reports);
     }
+  });
+
+  it("a time typed past the horizon is computed and then shown (not cut to the horizon)", async () => {
+    const { editor, field } = await renderPanel();
+    expect(editor.client.getSnapshot().horizon).toBe(10);
+    fireEvent.focus(field);
+    fireEvent.change(field, { target: { value: "25" } });
+    await act(async () => {
+      fireEvent.keyDown(field, { key: "Enter" });
+    });
+    await waitFor(() => expect(editor.ui.getState().t).toBe(25), { timeout: 5000 });
+    expect(editor.client.getSnapshot().horizon).toBeGreaterThanOrEqual(25);
+  });
+
+  it("stepping past the last event says there is none instead of doing nothing", async () => {
+    const { editor } = await renderPanel();
+    act(() => editor.setTime(5)); // the cradle's last collisions are at t = 1
+    await act(async () => {
+      fireEvent.click(screen.getByRole("button", { name: "Next event" }));
+    });
+    await waitFor(() => expect(editor.ui.getState().message?.text).toMatch(/^No event after t = 5/));
+    expect(editor.ui.getState().t).toBe(5);
   });
 });

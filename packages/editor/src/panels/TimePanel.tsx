@@ -1,6 +1,6 @@
 /**
- * Time: the `Time` scrubber over [0, horizon] with event ticks, a time field, −1 / 0 / +1 s and
- * stepping to the previous / next event. Scrubbing is not an edit (no undo step).
+ * Time: the `Time` scrubber over [0, horizon] with event ticks, a time field (a time past the
+ * horizon is computed first), −1 / 0 / +1 s and stepping to the previous / next event. Scrubbing is not an edit (no undo step).
  * While playing, this panel re-renders about 10 times a second (useShownTime); the slider's thumb
  * follows every frame by itself (TimeSlider).
  */
@@ -43,7 +43,7 @@ export function TimePanel() {
   const commitDraft = () => {
     if (draft === null) return;
     const x = parseNumber(draft);
-    if (x !== null && Number.isFinite(x)) editor.setTime(x);
+    if (x !== null && Number.isFinite(x)) void editor.goTo(x);
     setDraft(null);
   };
 
@@ -87,7 +87,7 @@ export function TimePanel() {
         <button
           type="button"
           aria-label="Forward 1 second"
-          onClick={() => editor.setTime(editor.ui.getState().t + 1)}
+          onClick={() => void editor.goTo(editor.ui.getState().t + 1)}
         >
           +1 s
         </button>
