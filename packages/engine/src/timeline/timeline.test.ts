@@ -300,11 +300,19 @@ describe("actions and their validation against the simulated state", () => {
     const tl = Timeline.fromScene(scene([disc("a", 0, 0), disc("b", 10, 0, [0, 0], 5)]));
     tl.prolongTo(8);
     const before = fingerprint(tl);
-    // sending a towards x = 10 puts it where b is added at t = 5
+    // sending a towards x = 10 puts it where b is added at t = 5; the later action is named by its
+    // index in tl.actions (it was its index in the list with the refused action inserted: actions[2])
     expect(() => tl.apply({ time: 1, type: "giveVelocity", id: "a", v: [2.5, 0] })).toThrow(
-      'actions[2]: body "b" would overlap body "a" at time 5',
+      'actions[1]: body "b" would overlap body "a" at time 5 (once this action is in place)',
     );
+    expect(tl.actions[1]).toMatchObject({ type: "addBody", id: "b" });
+    expect(() => tl.apply({ time: 0.5, type: "removeBody", id: "b" })).toThrow('action.id: no body "b"');
     expect(fingerprint(tl)).toEqual(before);
+    tl.apply({ time: 6, type: "giveVelocity", id: "b", v: [1, 0] });
+    expect(() => tl.apply({ time: 5.5, type: "removeBody", id: "b" })).toThrow(
+      'actions[2].id: no body "b" at time 6 (once this action is in place)',
+    );
+    expect(tl.actions[2]).toMatchObject({ type: "giveVelocity", id: "b" });
   });
 
   it("fromScene refuses what parseScene cannot see: an overlap with a body that moved", () => {

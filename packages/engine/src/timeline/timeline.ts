@@ -102,7 +102,9 @@ export class Timeline {
     if (failure) throw failure.error;
   }
 
-  /** Validate and apply one action (see the header). Throws SceneError; then nothing changes. */
+  /** Validate and apply one action (see the header). Throws SceneError; then nothing changes. When
+   *  it would make a later action invalid, the error names that one as `actions[i]` (its index in
+   *  `actions`) and says so. */
   apply(action: Action): void {
     const a = freezeAction(checkAction(action, "action"));
     const c = this.core;
@@ -128,7 +130,8 @@ export class Timeline {
       const oldHorizon = c.horizon;
       if (!forward) c.restoreKeyframe(k);
       c.acts.splice(insertAt, 0, a);
-      c.pathOf = (i) => (i === insertAt ? "action" : `actions[${i}]`);
+      // the others by their index in `actions` as the caller knows it (without this one)
+      c.pathOf = (i) => (i === insertAt ? "action" : `actions[${i > insertAt ? i - 1 : i}]`);
       if (!forward) {
         c.reopenGoals();
         c.goals.push({ tLimit: oldHorizon, eLimit: INF });
@@ -139,6 +142,8 @@ export class Timeline {
       c.pathOf = (i) => `actions[${i}]`;
     } catch (e) {
       undo();
+      if (e instanceof SceneError && e.path.startsWith("actions["))
+        throw new SceneError(e.path, `${e.reason} (once this action is in place)`);
       throw e;
     }
     this.slice = null;
