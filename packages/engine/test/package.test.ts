@@ -35,6 +35,16 @@ describe("the published package", () => {
       expect(files, f).toContain(f.replace(/^\.\//, ""));
   });
 
+  it("resolves for require() too: Node's own error (or the module), not 'No \"exports\" main defined'", () => {
+    const probe = `try { require("@chapgame/engine"); console.log("loaded") } catch (e) { console.log(e.code) }`;
+    const out = execFileSync(process.execPath, ["-e", probe], { cwd: pkg, encoding: "utf8" }).trim();
+    expect(["loaded", "ERR_REQUIRE_ESM"]).toContain(out);
+    const version = `console.log(require("@chapgame/engine/package.json").version)`;
+    expect(execFileSync(process.execPath, ["-e", version], { cwd: pkg, encoding: "utf8" }).trim()).toBe(
+      JSON.parse(readFileSync(join(pkg, "package.json"), "utf8")).version,
+    );
+  });
+
   it("has no tests and no test helpers", () => {
     expect(files.filter((f) => /\.test\.|testSupport|^test\//.test(f))).toEqual([]);
   });
