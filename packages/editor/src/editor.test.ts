@@ -100,6 +100,40 @@ describe("Editor over the worker protocol", () => {
     expect(f.data[i + F_VX + 1]).toBeLessThan(0);
   });
 
+  it("a computation the engine refuses to continue (Zeno) ends with its message shown", async () => {
+    const h = testEditor();
+    h.editor.ui.setState((s) => ({ calc: { ...s.calc, useTime: false, useEvents: false } }));
+    const err = await h.editor.loadScene(
+      {
+        format: "chapgame",
+        version: 1,
+        g: 9.81,
+        gravity: [0, 0],
+        actions: [
+          { time: 0, type: "addLine", id: "wall", p1: [0, -5], p2: [0, 5], kind: "line" },
+          { time: 0, type: "addBody", id: "small", x: 2, y: 0, r: 1, m: 1 },
+          {
+            time: 0,
+            type: "addBody",
+            id: "crusher",
+            x: 5,
+            y: 0,
+            r: 1,
+            m: Number.POSITIVE_INFINITY,
+            v: [-1, 0],
+          },
+        ],
+      },
+      { undoable: false },
+    );
+    expect(err).toBeNull();
+    await settled(h.client, 30_000);
+    expect(h.client.getSnapshot().stopped).toMatch(/Zeno/);
+    const message = h.editor.ui.getState().message;
+    expect(message?.tone).toBe("error");
+    expect(message?.text).toMatch(/^The computation stopped at t = [\d.]+ s: .*Zeno/);
+  });
+
   it("Cancel stops a computation without limit", async () => {
     const h = await cradle();
     h.editor.ui.setState((s) => ({ calc: { ...s.calc, useTime: false, useEvents: false } }));

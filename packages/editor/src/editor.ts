@@ -34,7 +34,20 @@ export class Editor {
   constructor(
     readonly client: TimelineClient,
     readonly ui: UiStore,
-  ) {}
+  ) {
+    // A computation the engine refused to continue (a Zeno state): say why the horizon stops there.
+    let stopped: string | null = null;
+    client.subscribe(() => {
+      const info = client.getSnapshot();
+      if (info.stopped === stopped) return;
+      stopped = info.stopped;
+      if (stopped === null) return;
+      const h = Number(info.horizon.toPrecision(6));
+      this.ui.setState({
+        message: { text: `The computation stopped at t = ${h} s: ${stopped}`, tone: "error" },
+      });
+    });
+  }
 
   get doc(): SceneFile {
     return this.client.getSnapshot().doc!;

@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { advanceClock, MAX_FRAME_SECONDS } from "./playback";
+import { advanceClock, canExtend, MAX_FRAME_SECONDS } from "./playback";
 
 describe("advanceClock", () => {
   it("moves time by speed × elapsed, backwards for negative speeds", () => {
@@ -18,5 +18,17 @@ describe("advanceClock", () => {
   it("waits at the horizon while more can be computed, else stops there", () => {
     expect(advanceClock(9.99, 1, 0.05, 10, true)).toEqual({ t: 10, stop: false });
     expect(advanceClock(9.99, 1, 0.05, 10, false)).toEqual({ t: 10, stop: true });
+  });
+});
+
+describe("canExtend", () => {
+  const info = { idle: false, stopped: null };
+  it("extends while auto-extend is on and more can be computed", () => {
+    expect(canExtend(true, info)).toBe(true);
+    expect(canExtend(false, info)).toBe(false);
+    expect(canExtend(true, { ...info, idle: true })).toBe(false);
+  });
+  it("not after the engine refused to go on (playing at the horizon retried it forever)", () => {
+    expect(canExtend(true, { ...info, stopped: "a Zeno state" })).toBe(false);
   });
 });

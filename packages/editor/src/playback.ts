@@ -24,6 +24,14 @@ export function motionWindow(s: { playing: boolean; speed: number }): number {
   return s.playing ? Math.abs(s.speed) * LOOKAHEAD_SECONDS : 0;
 }
 
+/**
+ * Whether playing forward may ask for more computation: auto-extend is on, events are left, and the
+ * engine did not refuse to go on (a computation stopped by a Zeno state would stop again at once).
+ */
+export function canExtend(autoExtend: boolean, info: { idle: boolean; stopped: string | null }): boolean {
+  return autoExtend && !info.idle && info.stopped === null;
+}
+
 /** Pure step of the clock. Returns the new time and whether playback must stop. */
 export function advanceClock(
   t: number,
@@ -49,7 +57,7 @@ export function startPlayback(editor: Editor, now: () => number = () => performa
     last = time;
     const s = ui.getState();
     const info = client.getSnapshot();
-    const extend = s.calc.autoExtend && !info.idle;
+    const extend = canExtend(s.calc.autoExtend, info);
     if (s.playing && s.speed > 0 && extend && !info.computing && info.revision !== askedAtRevision) {
       const lead = Math.max(EXTEND_LEAD_SECONDS, 2 * s.speed);
       if (info.horizon - s.t < lead) {

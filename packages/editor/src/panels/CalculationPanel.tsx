@@ -13,6 +13,7 @@ export function CalculationPanel() {
   const horizon = useInfoValue((i) => i.horizon);
   const computing = useInfoValue((i) => i.computing);
   const idle = useInfoValue((i) => i.idle);
+  const stopped = useInfoValue((i) => i.stopped);
   const set = (patch: Partial<CalcSettings>) =>
     editor.ui.setState((s) => ({ calc: { ...s.calc, ...patch } }));
   const unlimited = !calc.useTime && !calc.useEvents;
@@ -92,6 +93,7 @@ export function CalculationPanel() {
         <span>
           horizon <output aria-label="Computed horizon">{formatNumber(horizon)}</output> s
           {idle ? " (no more events)" : ""}
+          {stopped !== null && <span title={stopped}> (stopped: the engine cannot go on)</span>}
         </span>
       </div>
       <EngineWatch />

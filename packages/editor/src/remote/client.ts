@@ -32,6 +32,7 @@ export const EMPTY_INFO: TimelineInfo = {
   doc: EMPTY_DOC,
   docRevision: -1,
   computing: null,
+  stopped: null,
   historyBytes: 0,
 };
 

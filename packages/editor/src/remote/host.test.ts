@@ -69,3 +69,54 @@ describe("TimelineHost while computing", () => {
     expect(last.horizon).toBe(40);
   });
 });
+
+describe("TimelineHost when the engine refuses to go on", () => {
+  it("a Zeno state met while computing ends the computation with its message; the history stays readable", () => {
+    const zeno: SceneFile = {
+      format: "chapgame",
+      version: 1,
+      g: 9.81,
+      gravity: [0, 0],
+      actions: [
+        { time: 0, type: "addLine", id: "wall", p1: [0, -5], p2: [0, 5], kind: "line" },
+        { time: 0, type: "addBody", id: "small", x: 2, y: 0, r: 1, m: 1 },
+        // an immovable disc crushes the small one against the wall: events pile up before t = 2
+        {
+          time: 0,
+          type: "addBody",
+          id: "crusher",
+          x: 5,
+          y: 0,
+          r: 1,
+          m: Number.POSITIVE_INFINITY,
+          v: [-1, 0],
+        },
+      ],
+    };
+    const tasks: (() => void)[] = [];
+    const sent: HostMessage[] = [];
+    let clock = 0;
+    const host = new TimelineHost(
+      (scene) => Timeline.fromScene(scene, { compute: false }),
+      { post: (m) => sent.push(m), schedule: (fn) => tasks.push(fn), now: () => (clock += 0.05) },
+      zeno,
+    );
+    host.handle({ id: 1, op: "compute", until: null });
+    let rounds = 0;
+    while (tasks.length > 0 && rounds < 100_000) {
+      expect(() => tasks.shift()!()).not.toThrow();
+      rounds++;
+    }
+    const infos = sent.filter((m): m is { type: "info"; info: TimelineInfo } => m.type === "info");
+    const last = infos.at(-1)!.info;
+    expect(last.computing).toBeNull();
+    expect(last.stopped).toMatch(/Zeno/);
+    expect(last.horizon).toBeGreaterThan(1.9);
+    expect(last.horizon).toBeLessThan(2);
+    host.handle({ id: 2, op: "frame", t: 1, window: 0 });
+    expect(sent.at(-1)).toMatchObject({ type: "reply", id: 2, ok: true });
+    // a new computation clears the message
+    host.handle({ id: 3, op: "apply", actions: [{ time: 0.5, type: "removeBody", id: "crusher" }] });
+    expect(sent.filter((m) => m.type === "info").at(-1)).toMatchObject({ info: { stopped: null } });
+  });
+});

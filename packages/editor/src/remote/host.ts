@@ -3,7 +3,8 @@
  * (protocol.ts). Long computations run in slices of a few milliseconds (Timeline.prolongSlice), so
  * frame, scrub and edit requests are answered between slices and Cancel takes effect at once.
  * The host never throws: every request gets a reply, failed edits reply with the engine's message and
- * leave the timeline as it was.
+ * leave the timeline as it was, and a computation the engine refuses to continue (a Zeno state) ends
+ * with the engine's message in `info.stopped`, the history computed so far kept.
  */
 import type { Action, SceneFile, Until } from "../engineTypes";
 import { errorInfo } from "./errors";
@@ -47,6 +48,7 @@ export class TimelineHost {
   private docRevision = 0;
   private sentDocRevision = -1;
   private idle = false;
+  private stopped: string | null = null;
   private job: Job | null = null;
   private scheduled = false;
   private readonly series = new SeriesRecorder();
@@ -171,6 +173,7 @@ export class TimelineHost {
       budget: 256,
     };
     this.idle = false;
+    this.stopped = null;
     this.changed(false);
     this.kick();
   }
@@ -201,7 +204,15 @@ export class TimelineHost {
         break;
       }
       const t0 = this.env.now();
-      const res = this.tl.prolongSlice(until, job.budget);
+      let res: { done: boolean; events: number };
+      try {
+        res = this.tl.prolongSlice(until, job.budget);
+      } catch (e) {
+        // The engine refuses to go on (a Zeno state): the history up to the horizon stands.
+        this.stopped = errorInfo(e).message;
+        this.job = null;
+        break;
+      }
       const took = this.env.now() - t0;
       job.events += res.events;
       job.budget = Math.max(16, Math.min(1 << 20, Math.round(job.budget * (took > 0 ? SLICE_MS / took : 2))));
@@ -227,6 +238,7 @@ export class TimelineHost {
     if (docChanged) {
       this.docRevision++;
       this.idle = false;
+      this.stopped = null;
     }
     this.lastInfo = now;
     this.env.post({ type: "info", info: this.info() });
@@ -247,6 +259,7 @@ export class TimelineHost {
       doc: sendDoc ? tl.toScene() : null,
       docRevision: this.docRevision,
       computing: this.job ? { ...this.job } : null,
+      stopped: this.stopped,
       historyBytes: tl.historyBytes(),
     };
   }

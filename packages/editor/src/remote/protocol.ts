@@ -64,6 +64,11 @@ export interface TimelineInfo {
   /** Changes only when the action list or the globals change (not on prolong). */
   docRevision: number;
   computing: ComputeStatus | null;
+  /**
+   * Why the last computation stopped before its target, when the engine refused to go on (a Zeno
+   * state met while computing); null otherwise. Cleared by the next computation or edit.
+   */
+  stopped: string | null;
   historyBytes: number;
 }
 
