@@ -158,8 +158,9 @@ export class ReferenceWorld {
     let best = INF;
     for (const tau of out) {
       if (tau >= best) continue;
-      const x = b.x0 + tau * (b.vx + 0.5 * b.ax * tau);
-      const y = b.y0 + tau * (b.vy + 0.5 * b.ay * tau);
+      const tc = Math.max(tau, lo); // a contact under way is now
+      const x = b.x0 + tc * (b.vx + 0.5 * b.ax * tc);
+      const y = b.y0 + tc * (b.vy + 0.5 * b.ay * tc);
       if (line.kind !== "line" && !parameterOnLine(line.kind, lineParameter(line, x, y))) continue;
       best = tau;
     }

@@ -7,6 +7,13 @@
  * approaches at lo (Newton's cradle, round-off overlaps). A touching pair that separates never
  * collides. Each function returns the contact time tau, or +Infinity when there is none in the window.
  *
+ * A contact already under way at lo returns the downward root that led to it, even when that root
+ * lies before lo by a rounding error, and lo only when there is no such root (the pair started
+ * touching). The caller clamps base + tau to the current time. So the time found for a pair is a
+ * function of the two motions alone, not of the moment it is evaluated: a pair evaluated just after
+ * its rounded contact time (a stale prediction popped there, a World rebuilt from a keyframe, the
+ * grid bringing the pair together later) gives the same bits as one evaluated long before.
+ *
  * Gap functions:
  *   disc–disc / disc–point:  f(tau) = |d + u tau + w tau^2 / 2|^2 - R^2   (degree <= 4; 2 when w = 0)
  *   disc–line:               h(tau) = ±s(tau) - r, s the signed distance to the line (degree <= 2)
@@ -48,7 +55,10 @@ export function discDiscTime(
   return firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, hi);
 }
 
-/** First tau in [lo, hi] where c0 + c1 t + c2 t^2 + c3 t^3 + c4 t^4 crosses zero downwards. */
+/**
+ * First tau in [lo, hi] where c0 + c1 t + c2 t^2 + c3 t^3 + c4 t^4 crosses zero downwards; for a
+ * contact under way at lo, the crossing that led to it (see crossingUnderWay; the caller clamps).
+ */
 export function firstDownCrossingQuartic(
   c0: number,
   c1: number,
@@ -61,10 +71,8 @@ export function firstDownCrossingQuartic(
   if (!(lo <= hi)) return Number.POSITIVE_INFINITY;
   const fLo = c0 + lo * (c1 + lo * (c2 + lo * (c3 + lo * c4)));
   const dLo = c1 + lo * (2 * c2 + lo * (3 * c3 + lo * 4 * c4));
-  if (fLo <= 0) {
-    if (dLo < 0) return lo;
-    if (dLo === 0 && 2 * c2 + lo * (6 * c3 + lo * 12 * c4) < 0) return lo; // resting contact
-  }
+  // In contact and approaching (or resting under an acceleration into the contact) at lo.
+  const now = fLo <= 0 && (dLo < 0 || (dLo === 0 && 2 * c2 + lo * (6 * c3 + lo * 12 * c4) < 0));
   coeffs[0] = c0;
   coeffs[1] = c1;
   coeffs[2] = c2;
@@ -73,9 +81,17 @@ export function firstDownCrossingQuartic(
   // Solve on [0, hi] rather than [lo, hi] so that the roots are a pure function of the two motions:
   // the same pair gives the same bits whenever it is (re)computed.
   realRootsInto(coeffs, 0, hi, roots);
-  for (let i = 0; i < roots.length; i++) {
+  if (now) return crossingUnderWay(lo, c1, c2, c3, c4);
+  let first = 0;
+  while (first < roots.length && (roots[first] as number) < lo) first++;
+  if (first > 0 && dLo < 0) {
+    // Approaching, and the last root before lo comes down: the gap can be > 0 at lo only through
+    // rounding (it is < 0 until the next root), so the contact is under way since that root.
+    const r = roots[first - 1] as number;
+    if (c1 + r * (2 * c2 + r * (3 * c3 + r * 4 * c4)) < 0) return r;
+  }
+  for (let i = first; i < roots.length; i++) {
     const r = roots[i] as number;
-    if (r < lo) continue;
     const d = c1 + r * (2 * c2 + r * (3 * c3 + r * 4 * c4));
     if (d < 0) return r;
     if (d === 0) {
@@ -89,9 +105,27 @@ export function firstDownCrossingQuartic(
 }
 
 /**
- * First tau in [lo, hi] where h(tau) = c0 + c1 tau + c2 tau^2 crosses zero downwards, or lo when
- * h(lo) <= 0 and h is decreasing there (or resting with h'' < 0) and `immediate` is true. Roots use
- * the cancellation-free closed form.
+ * For a contact under way at lo (the quartic c0 + c1 t + ... + c4 t^4, its roots on [0, hi] in `roots`): the
+ * crossing that led to it. If the first root after lo is a downward one, the gap at lo can only be
+ * <= 0 through rounding and that root is the crossing (an evaluation before lo found it too);
+ * otherwise the last downward root at or before lo; lo when there is none (it started touching).
+ */
+function crossingUnderWay(lo: number, c1: number, c2: number, c3: number, c4: number): number {
+  let best = lo;
+  for (let i = 0; i < roots.length; i++) {
+    const r = roots[i] as number;
+    const d = c1 + r * (2 * c2 + r * (3 * c3 + r * 4 * c4));
+    if (r > lo) return d < 0 && best === lo ? r : best;
+    if (d < 0) best = r;
+  }
+  return best;
+}
+
+/**
+ * First tau in [lo, hi] where h(tau) = c0 + c1 tau + c2 tau^2 crosses zero downwards. When h(lo) <= 0
+ * and h is decreasing there (or resting with h'' < 0) and `immediate` is true, the contact is under
+ * way: its downward root (at or before lo up to rounding; the caller clamps), or lo when h has no
+ * root. Roots use the cancellation-free closed form.
  */
 export function firstDownCrossingQuadratic(
   c0: number,
@@ -104,10 +138,9 @@ export function firstDownCrossingQuadratic(
   if (!(lo <= hi)) return Number.POSITIVE_INFINITY;
   const hLo = c0 + lo * (c1 + lo * c2);
   const dLo = c1 + 2 * c2 * lo;
-  if (hLo <= 0 && immediate) {
-    if (dLo < 0) return lo;
-    if (dLo === 0 && c2 < 0) return lo; // resting contact under an acceleration into the contact
-  }
+  // Touching and approaching (or resting under an acceleration into the contact) at lo.
+  if (hLo <= 0 && immediate && (dLo < 0 || (dLo === 0 && c2 < 0)))
+    return quadraticUnderWay(c0, c1, c2, lo, hi);
   // Convex and not decreasing at lo: it never comes down again (the common, cheap rejection).
   if (c2 >= 0 && dLo >= 0) return Number.POSITIVE_INFINITY;
   if (c2 === 0) {
@@ -130,11 +163,32 @@ export function firstDownCrossingQuadratic(
   // when c2 > 0 and at the larger root when c2 < 0.
   const down = c2 > 0 ? r1 : r2;
   if (down < lo) {
-    // Past the crossing already: a round-off overlap. Approaching now means contact now.
-    return dLo < 0 && immediate ? lo : Number.POSITIVE_INFINITY;
+    // Past the crossing already: a round-off overlap. Approaching now means the contact is under
+    // way since the crossing (the caller clamps it to now).
+    return dLo < 0 && immediate ? down : Number.POSITIVE_INFINITY;
   }
   if (disc === 0) return Number.POSITIVE_INFINITY; // tangency without crossing: a graze, no impulse
   return down <= hi ? down : Number.POSITIVE_INFINITY;
+}
+
+/**
+ * A contact under way at lo (h(lo) <= 0, approaching): the downward root of h, at or before lo up
+ * to rounding (there is only one), or lo when h has none (it started touching).
+ */
+function quadraticUnderWay(c0: number, c1: number, c2: number, lo: number, hi: number): number {
+  if (c2 === 0) {
+    const r = -c0 / c1; // c1 < 0 here
+    return r <= hi ? r : lo;
+  }
+  const disc = c1 * c1 - 4 * c2 * c0;
+  if (disc < 0) return lo;
+  const sq = Math.sqrt(disc);
+  const q = c1 >= 0 ? -0.5 * (c1 + sq) : -0.5 * (c1 - sq);
+  if (q === 0) return lo;
+  const r1 = q / c2;
+  const r2 = c0 / q;
+  const down = c2 > 0 ? Math.min(r1, r2) : Math.max(r1, r2);
+  return down <= hi ? down : lo;
 }
 
 /**

@@ -174,11 +174,10 @@ export class Predictor extends SimState {
       const tau = sides[k] as number;
       if (tau >= best) continue;
       if (line.kind !== "line") {
-        const lambda = lineParameter(
-          line,
-          x0 + tau * (vx + 0.5 * ax * tau),
-          y0 + tau * (vy + 0.5 * ay * tau),
-        );
+        // Where the disc is at the contact: a contact under way is now (its crossing of the
+        // infinite line may lie long before, beyond the end of a ray or segment).
+        const tc = tau < lo ? lo : tau;
+        const lambda = lineParameter(line, x0 + tc * (vx + 0.5 * ax * tc), y0 + tc * (vy + 0.5 * ay * tc));
         if (!parameterOnLine(line.kind, lambda)) continue;
       }
       best = tau;
