@@ -316,6 +316,18 @@ export class Timeline {
     return logEvents(this.core, from, r.upperBound(timeArg("eventsBetween", "t1", t1)), this.scratch);
   }
 
+  /** Logged events with index in [start, end) (end clamped to eventCount), in order: the log in
+   *  pieces, to write a long one out without holding all of it. */
+  eventRange(start: number, end: number): LogEvent[] {
+    for (const [name, i] of [
+      ["start", start],
+      ["end", end],
+    ] as const)
+      if (!(Number.isInteger(i) && i >= 0))
+        throw new RangeError(`eventRange: ${name} must be an integer >= 0, got ${i}`);
+    return logEvents(this.core, start, Math.min(end, this.eventCount), this.scratch);
+  }
+
   /** Collisions and stops by kind, and actions applied, over the computed history. */
   counts(): TimelineCounts {
     return { ...this.core.counts };
