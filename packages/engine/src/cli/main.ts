@@ -1,25 +1,29 @@
 #!/usr/bin/env node
 /**
  * The `chapgame` bin: runs runCli with the real process (arguments, files, stdout, stderr).
- * A reader that closes standard output early (`chapgame ... | head`) ends the output quietly: the
- * broken pipe is not an error of the run (no stack trace, the run's exit status).
+ * Standard output is written with blocking writes (fs.writeSync), so a slow reader (`| gzip`) makes
+ * the bin wait instead of queueing the whole output in memory (a 2M-event log held 2 GB). A reader
+ * that closes it early (`chapgame ... | head`) ends the output quietly: the broken pipe is not an
+ * error of the run (no stack trace, the run's exit status).
  * The engine is built without Node's types (it must not depend on Node), so the few Node APIs used
  * here are typed locally and node:fs is loaded by a dynamic import.
  */
 import { runCli } from "./run.js";
 
-interface NodeStream {
-  write(text: string): unknown;
-  on(event: "error", listener: (e: { code?: string; message?: string }) => void): unknown;
-}
 interface NodeProcess {
   argv: string[];
-  stdout: NodeStream;
   stderr: { write(text: string): unknown; isTTY?: boolean };
   exitCode?: number;
 }
 interface NodeFs {
   readFileSync(path: string | number | object, encoding: "utf8"): string;
+  writeSync(fd: number, data: Uint8Array, offset: number, length: number): number;
+}
+interface NodeError {
+  code?: string;
+}
+interface NodeBuffer {
+  from(text: string, encoding: "utf8"): Uint8Array;
 }
 
 const proc = (globalThis as unknown as { process: NodeProcess }).process;
@@ -38,21 +42,28 @@ function packageVersion(): string | undefined {
   }
 }
 
+const { Buffer } = globalThis as unknown as { Buffer: NodeBuffer };
 let stdoutClosed = false;
-proc.stdout.on("error", (e) => {
-  if (e.code === "EPIPE") {
-    stdoutClosed = true;
-    return;
+
+/** Writes all of `text` to standard output, waiting while a non-blocking pipe is full (EAGAIN); after
+ *  EPIPE (the reader is gone) it writes nothing more. Any other error is thrown (exit 1). */
+function writeOut(text: string): void {
+  const bytes = Buffer.from(text, "utf8");
+  let done = 0;
+  while (!stdoutClosed && done < bytes.length) {
+    try {
+      done += fs.writeSync(1, bytes, done, bytes.length - done);
+    } catch (e) {
+      const code = (e as NodeError).code;
+      if (code === "EPIPE") stdoutClosed = true;
+      else if (code !== "EAGAIN") throw e;
+    }
   }
-  proc.stderr.write(`chapgame: cannot write the output: ${e.message ?? String(e)}\n`);
-  proc.exitCode = 1;
-});
+}
 
 proc.exitCode = runCli(proc.argv.slice(2), {
   readFile: (path) => fs.readFileSync(path === "-" ? 0 : path, "utf8"),
-  stdout: (text) => {
-    if (!stdoutClosed) proc.stdout.write(text);
-  },
+  stdout: writeOut,
   stderr: (text) => proc.stderr.write(text),
   progress: proc.stderr.isTTY === true,
   ...versionField(),

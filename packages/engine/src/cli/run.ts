@@ -11,6 +11,7 @@ import { ChapgameError, SimulationError } from "../sim/errors.js";
 import { Timeline } from "../timeline/timeline.js";
 import type { ProlongResult } from "../timeline/types.js";
 import { type Command, parseArgs, USAGE, UsageError } from "./args.js";
+import { writeResult } from "./output.js";
 
 export interface CliIO {
   /** Contents of a file ("-" = standard input); throws when it cannot be read. */
@@ -26,25 +27,6 @@ export interface CliIO {
 
 /** Events computed between two progress lines. */
 const PROGRESS_EVERY_EVENTS = 200_000;
-
-/** JSON with infinite values written "Infinity" (as in scene files). */
-function toJson(value: unknown): string {
-  return JSON.stringify(value, (_k, v) => (v === Number.POSITIVE_INFINITY ? "Infinity" : v), 2);
-}
-
-function result(tl: Timeline, time: number, withLog: boolean): Record<string, unknown> {
-  const c = tl.counts();
-  const out: Record<string, unknown> = {
-    time,
-    events: c.bodyBody + c.bodyLine + c.bodyPoint + c.stop,
-    counts: { bodyBody: c.bodyBody, bodyLine: c.bodyLine, bodyPoint: c.bodyPoint, stop: c.stop },
-    bodies: tl
-      .stateAt(time)
-      .bodies.map((b) => ({ id: b.id, x: b.x, y: b.y, vx: b.vx, vy: b.vy, r: b.r, m: b.m, mu: b.mu })),
-  };
-  if (withLog) out.log = tl.eventsBetween(0, time);
-  return out;
-}
 
 /** How progress is shown on stderr: one updating line (a terminal), one line each, or not at all. */
 type ProgressMode = "terminal" | "lines" | "off";
@@ -108,7 +90,7 @@ export function runCli(argv: readonly string[], io: CliIO): number {
       compute(tl, { time: cmd.at }, mode, io);
       time = cmd.at;
     } else time = simulate(tl, cmd, mode, io);
-    io.stdout(`${toJson(result(tl, time, cmd.events))}\n`);
+    writeResult(tl, time, cmd.events, (text) => io.stdout(text));
     return 0;
   } catch (e) {
     if (e instanceof UsageError || e instanceof SceneError || e instanceof ChapgameError) {

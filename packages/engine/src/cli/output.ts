@@ -1,0 +1,58 @@
+/**
+ * writeResult(tl, time, withLog, write, chunk): the CLI's JSON result (time, events, counts, the
+ * bodies at `time`, and with withLog the event log up to `time`), pretty-printed exactly as
+ * JSON.stringify(result, …, 2) would, but written in pieces: the log goes out `chunk` events at a
+ * time (Timeline.eventRange), so a long log is never one string (V8 caps a string at about 2^29
+ * characters: a 1.7M-event log) nor one array of objects. Infinite numbers are written "Infinity",
+ * as in scene files.
+ */
+import type { Timeline } from "../timeline/timeline.js";
+import type { LogEvent } from "../timeline/types.js";
+
+/** Log events per written piece. */
+export const LOG_CHUNK_EVENTS = 4096;
+
+function toJson(value: unknown): string {
+  return JSON.stringify(value, (_k, v) => (v === Number.POSITIVE_INFINITY ? "Infinity" : v), 2);
+}
+
+/** `json` (a pretty-printed value) indented by `pad` more spaces on every line after the first. */
+function indent(json: string, pad: string): string {
+  return json.replaceAll("\n", `\n${pad}`);
+}
+
+export function writeResult(
+  tl: Timeline,
+  time: number,
+  withLog: boolean,
+  write: (text: string) => void,
+  chunk = LOG_CHUNK_EVENTS,
+): void {
+  const c = tl.counts();
+  const head = {
+    time,
+    events: c.bodyBody + c.bodyLine + c.bodyPoint + c.stop,
+    counts: { bodyBody: c.bodyBody, bodyLine: c.bodyLine, bodyPoint: c.bodyPoint, stop: c.stop },
+    bodies: tl
+      .stateAt(time)
+      .bodies.map((b) => ({ id: b.id, x: b.x, y: b.y, vx: b.vx, vy: b.vy, r: b.r, m: b.m, mu: b.mu })),
+  };
+  const text = toJson(head);
+  if (!withLog) {
+    write(`${text}\n`);
+    return;
+  }
+  write(`${text.slice(0, -2)},\n  "log": [`); // without the closing "\n}"
+  let first = true;
+  for (let i = 0; i < tl.eventCount; i += chunk) {
+    const events: LogEvent[] = tl.eventRange(i, i + chunk);
+    const kept = events.filter((e) => e.time <= time); // the log is in time order
+    if (kept.length > 0) {
+      const lead = first ? "\n    " : ",\n    ";
+      write(lead + kept.map((e) => indent(toJson(e), "    ")).join(",\n    "));
+      first = false;
+    }
+    if (kept.length < events.length) break;
+  }
+  write(first ? "]\n}\n" : "\n  ]\n}\n");
+}
