@@ -1,12 +1,13 @@
 /**
  * Plain-data helpers of the Timeline's action list. The actions a Timeline keeps are frozen (deep:
  * the action, its vectors, its until), so the list it hands out cannot be edited behind its back;
- * toScene hands out unfrozen copies for the caller to edit. Also: deep equality of actions (what
- * setActions uses to find the first changed one) and the check of an `until`.
+ * toScene hands out unfrozen copies for the caller to edit. Also: deep equality of actions, the
+ * keyframe setActions restarts from (after the last unchanged action), the check of an `until`.
  */
 import { SceneError } from "../scene/errors.js";
 import { count, isObject, nonNegative, onlyKeys } from "../scene/fields.js";
 import type { Action, Until } from "../scene/types.js";
+import type { Keyframe } from "./keyframe.js";
 
 /** `a` (a fresh object from checkAction) frozen with its arrays and its until; returns it. */
 export function freezeAction(a: Action): Action {
@@ -54,4 +55,25 @@ export function timeArg(method: string, name: string, t: number): number {
   if (typeof t !== "number" || Number.isNaN(t))
     throw new RangeError(`${method}: ${name} must be a number, got ${String(t)}`);
   return t;
+}
+
+/** The keyframe (holding a World) to recompute from when the action list `acts` becomes `sorted`:
+ *  the last one before the first changed action, taken when only unchanged actions were applied
+ *  (0 = from scratch). */
+export function restartKeyframe(
+  acts: readonly Action[],
+  keyframes: readonly Keyframe[],
+  sorted: readonly Action[],
+): number {
+  let d = 0;
+  while (d < sorted.length && d < acts.length && sameValue(sorted[d], acts[d])) d++;
+  const cut = Math.min(
+    sorted[d]?.time ?? Number.POSITIVE_INFINITY,
+    acts[d]?.time ?? Number.POSITIVE_INFINITY,
+  );
+  for (let k = keyframes.length - 1; k > 0; k--) {
+    const kf = keyframes[k] as Keyframe;
+    if (kf.actionCount <= d && kf.time < cut) return k;
+  }
+  return 0;
 }

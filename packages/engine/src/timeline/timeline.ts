@@ -17,7 +17,7 @@ import { SceneError } from "../scene/errors.js";
 import { nonNegative, vec2 } from "../scene/fields.js";
 import { applyOrder, parseScene } from "../scene/parse.js";
 import type { Action, SceneFile, Until, Vec2 } from "../scene/types.js";
-import { checkUntil, copyAction, freezeAction, sameUntil, sameValue, timeArg } from "./actionData.js";
+import { checkUntil, copyAction, freezeAction, restartKeyframe, sameUntil, timeArg } from "./actionData.js";
 import { type Goal, TimelineCore } from "./core.js";
 import { type Keyframe, keyframeBytes } from "./keyframe.js";
 import { MotionTable } from "./motionTable.js";
@@ -160,7 +160,7 @@ export class Timeline {
     const c = this.core;
     const oldHorizon = c.horizon;
     const pathOf = (k: number) => `actions[${order[k]}]`;
-    const k = c.history && c.eager ? this.restartFor(sorted) : 0;
+    const k = c.history && c.eager ? restartKeyframe(c.acts, c.keyframes, sorted) : 0;
     if (k > 0) {
       const undo = saveCore(c, (c.keyframes[k] as Keyframe).record);
       try {
@@ -192,21 +192,6 @@ export class Timeline {
     }
     this.slice = null;
     this.changed();
-  }
-
-  /** The keyframe (holding a World) to recompute from when the action list becomes `sorted`: the
-   *  last one before the first changed action, taken when only unchanged actions were applied
-   *  (0 = from scratch). */
-  private restartFor(sorted: readonly Action[]): number {
-    const c = this.core;
-    let d = 0;
-    while (d < sorted.length && d < c.acts.length && sameValue(sorted[d], c.acts[d])) d++;
-    const cut = Math.min(sorted[d]?.time ?? INF, c.acts[d]?.time ?? INF);
-    for (let k = c.keyframes.length - 1; k > 0; k--) {
-      const kf = c.keyframes[k] as Keyframe;
-      if (kf.actionCount <= d && kf.time < cut) return k;
-    }
-    return 0;
   }
 
   /** Compute further from the horizon: `until.time` seconds and/or `until.events` collisions and
