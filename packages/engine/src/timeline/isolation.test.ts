@@ -38,6 +38,29 @@ describe("Timeline isolation", () => {
     ]);
   });
 
+  it("editing a state from stateAt() changes nothing (its lines, points and gravity were the keyframe's)", () => {
+    const build = () => {
+      const tl = new Timeline({ g: 0 });
+      tl.apply({ time: 0, type: "addLine", id: "wall", p1: [0, -10], p2: [0, 10], kind: "line" });
+      tl.apply({ time: 0, type: "addPoint", id: "pin", p: [50, 0] });
+      tl.apply({ time: 0, type: "addBody", id: "a", x: 5, y: 0, r: 1, m: 1, v: [-1, 0] });
+      tl.prolong({ time: 10 });
+      return tl;
+    };
+    const tl = build();
+    const s = tl.stateAt(2);
+    (s.lines[0]?.p1 as unknown as number[])[0] = 3; // the wall moved into the disc's path
+    (s.points[0]?.p as unknown as number[])[0] = 7;
+    (s.gravity as unknown as number[])[0] = 7;
+    const fresh = build();
+    expect(tl.stateAt(6)).toEqual(fresh.stateAt(6));
+    // a recompute from the keyframe (an edit in the past) still sees the real wall and pin
+    tl.apply({ time: 1, type: "giveVelocity", id: "a", v: [1, 0] });
+    fresh.apply({ time: 1, type: "giveVelocity", id: "a", v: [1, 0] });
+    expect(tl.stateAt(10)).toEqual(fresh.stateAt(10));
+    expect(tl.counts()).toEqual(fresh.counts());
+  });
+
   it("the actions it lists are read-only: writing one throws instead of changing the history's input", () => {
     const tl = twoDiscs();
     const a = tl.actions[1] as { x: number };

@@ -41,7 +41,15 @@ export function stateAt(core: TimelineCore, t: number, scratch: MotionTable): Sc
   }
   const ids = core.bodyIds;
   const bodies = Array.from(kf.order, (n) => scratch.state(n, ids[n] as string, t));
-  return { time: t, g: kf.g, gravity: kf.gravity, bodies, lines: kf.lines, points: kf.points };
+  // copies: the keyframe's own lists rebuild Worlds (an edit in the past), so they must not be handed out
+  return {
+    time: t,
+    g: kf.g,
+    gravity: [kf.gravity[0], kf.gravity[1]],
+    bodies,
+    lines: kf.lines.map((l) => ({ id: l.id, p1: [l.p1[0], l.p1[1]], p2: [l.p2[0], l.p2[1]], kind: l.kind })),
+    points: kf.points.map((p) => ({ id: p.id, p: [p.p[0], p.p[1]] })),
+  };
 }
 
 /** Log event of record i, given the motions just before it in `table`. */
