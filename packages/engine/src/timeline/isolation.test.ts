@@ -61,6 +61,24 @@ describe("Timeline isolation", () => {
     expect(tl.counts()).toEqual(fresh.counts());
   });
 
+  it("toScene keeps the scene's meta (fromScene dropped it: a saved view or title was lost), as a copy", () => {
+    const meta = { title: "break", view: { x: 1, y: 2, zoom: 3 } };
+    const tl = Timeline.fromScene({
+      format: "chapgame",
+      version: 1,
+      g: 0,
+      gravity: [0, 0],
+      actions: [],
+      meta,
+    });
+    const scene = tl.toScene();
+    expect(scene.meta).toEqual(meta);
+    (scene.meta as { view: { x: number } }).view.x = 99;
+    meta.view.y = 99;
+    expect(tl.toScene().meta).toEqual({ title: "break", view: { x: 1, y: 2, zoom: 3 } });
+    expect("meta" in new Timeline().toScene()).toBe(false);
+  });
+
   it("the actions it lists are read-only: writing one throws instead of changing the history's input", () => {
     const tl = twoDiscs();
     const a = tl.actions[1] as { x: number };

@@ -36,6 +36,8 @@ export class Timeline {
   private readonly scratch = new MotionTable();
   private slice: { until: Until; goal: Goal } | null = null;
   private actionsView: readonly Action[] | null = null;
+  /** the scene's meta (JSON text, so each toScene gets its own copy), kept for toScene */
+  private metaJson: string | null = null;
 
   constructor(options: TimelineOptions = {}) {
     const o = options as Record<string, unknown>;
@@ -54,19 +56,23 @@ export class Timeline {
     const s = parseScene(scene);
     const tl = new Timeline({ ...options, g: s.g, gravity: s.gravity });
     tl.setActions(s.actions);
+    if (s.meta !== undefined) tl.metaJson = JSON.stringify(s.meta);
     return tl;
   }
 
-  /** The scene file of this timeline (round-trips with fromScene): a copy, the caller's to edit. It
-   *  holds the actions, not how far the history was computed: after fromScene, prolong again. */
+  /** The scene file of this timeline (round-trips with fromScene, meta included): a copy, the
+   *  caller's to edit. It holds the actions, not how far the history was computed: after fromScene,
+   *  prolong again. */
   toScene(): SceneFile {
-    return {
+    const scene: SceneFile = {
       format: "chapgame",
       version: 1,
       g: this.core.g0,
       gravity: [this.core.gravity0[0], this.core.gravity0[1]],
       actions: this.core.acts.map(copyAction),
     };
+    if (this.metaJson !== null) scene.meta = JSON.parse(this.metaJson) as Record<string, unknown>;
+    return scene;
   }
 
   /** All actions in the order they apply (time, then insertion order). The same array until a change;
