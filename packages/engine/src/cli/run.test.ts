@@ -73,6 +73,23 @@ describe("runCli in-process", () => {
     expect(without.out.stdout).toBe("chapgame (version unknown)\n");
   });
 
+  it("an error after progress was shown starts on a clean line (it was glued to the progress line)", () => {
+    const gas = dilutedGas({ n: 200, packing: 0.2 });
+    // at t = 6000 (about 260,000 events in) a disc resting on a floor under gravity: resting contact
+    gas.actions.push(
+      { time: 6000, type: "addLine", id: "floor", p1: [-50, -100], p2: [-10, -100], kind: "segment" },
+      { time: 6000, type: "addBody", id: "rest", x: -30, y: -99, r: 1, m: 1 },
+      { time: 6000, type: "setGlobal", gravity: [0, -1] },
+    );
+    const { cli, out } = io({ "gas.json": serializeScene(gas) }, true);
+    expect(runCli(["simulate", "gas.json", "--until-time", "7000"], cli)).toBe(2);
+    const last = out.stderr.split("\r").at(-1) as string;
+    expect(
+      last.startsWith(`${String.fromCharCode(27)}[Kchapgame: cannot simulate this scene: body 'rest'`),
+    ).toBe(true);
+    expect(out.stdout).toBe("");
+  });
+
   it("counts Galperin's collisions (3 digits: 314)", () => {
     const { cli, out } = io({ "g.json": serializeScene(galperin(3)) });
     expect(runCli(["simulate", "g.json"], cli)).toBe(0);

@@ -38,16 +38,18 @@ function compute(tl: Timeline, until: Until, mode: ProgressMode, io: CliIO): Pro
   const goal = until.events === undefined ? "" : ` of ${until.events}`;
   let total = 0;
   let shown = false;
-  for (;;) {
-    const r = tl.prolongSlice(until, PROGRESS_EVERY_EVENTS);
-    total += r.events;
-    if (r.done) {
-      if (shown && mode === "terminal") io.stderr("\r\x1b[K");
-      return r.reason ?? "idle";
+  try {
+    for (;;) {
+      const r = tl.prolongSlice(until, PROGRESS_EVERY_EVENTS);
+      total += r.events;
+      if (r.done) return r.reason ?? "idle";
+      const line = `chapgame: t = ${r.horizon.toPrecision(6)}, ${total}${goal} events`;
+      io.stderr(mode === "terminal" ? `\r${line}` : `${line}\n`);
+      shown = true;
     }
-    const line = `chapgame: t = ${r.horizon.toPrecision(6)}, ${total}${goal} events`;
-    io.stderr(mode === "terminal" ? `\r${line}` : `${line}\n`);
-    shown = true;
+  } finally {
+    // clear the progress line, also when the run ends in an error (printed after this)
+    if (shown && mode === "terminal") io.stderr("\r\x1b[K");
   }
 }
 
