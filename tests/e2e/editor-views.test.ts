@@ -130,6 +130,22 @@ describe("editor views", () => {
     ).toBeCloseTo(80 / at.scale, 1);
   });
 
+  it("holding the Time slider while playing holds the time there; letting go plays on", async () => {
+    await loadPreset("Newton's cradle");
+    await page.getByRole("button", { name: "Play" }).click();
+    const slider = page.getByRole("slider", { name: "Time" });
+    const box = (await slider.boundingBox())!;
+    await page.mouse.move(box.x + box.width * 0.3, box.y + box.height / 2);
+    await page.mouse.down();
+    const held = Number(await slider.inputValue());
+    expect(held).toBeGreaterThan(2); // 30 % of a 10 s horizon
+    await page.waitForTimeout(400);
+    expect(Number(await slider.inputValue())).toBe(held);
+    await page.mouse.up();
+    await waitFor(async () => Number(await slider.inputValue()) > held + 0.2);
+    await page.getByRole("button", { name: "Pause" }).click();
+  });
+
   it("small windows keep the canvas, the Time slider and every time and speed control usable", async () => {
     await loadPreset("Billiards break");
     try {

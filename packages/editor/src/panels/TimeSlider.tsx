@@ -4,7 +4,8 @@
  * re-rendering a panel per frame is not needed to move one thumb. While playing, a change that moves
  * the thumb by less than a pixel is not written (each write of a range input's value costs Chromium a
  * relayout, repaint and re-layerization of the page, about 1 ms per frame in the 2,000-disc profile).
- * Paused, the slider always shows the exact time. Dragging it sets the time (not an edit).
+ * Paused, the slider always shows the exact time. Dragging it sets the time (not an edit); holding it
+ * while playing pauses until it is let go.
  */
 import { useEffect, useRef } from "react";
 import { useEditor, useInfoValue } from "../EditorContext";
@@ -48,9 +49,24 @@ export function TimeSlider() {
     };
   }, [editor]);
 
+  // Holding the thumb while playing holds the time there (playback would pull the thumb away from
+  // under the pointer); letting go plays on.
+  const onPointerDown = () => {
+    if (!editor.ui.getState().playing) return;
+    editor.ui.setState({ playing: false });
+    const resume = () => {
+      window.removeEventListener("pointerup", resume);
+      window.removeEventListener("pointercancel", resume);
+      editor.ui.setState({ playing: true });
+    };
+    window.addEventListener("pointerup", resume);
+    window.addEventListener("pointercancel", resume);
+  };
+
   return (
     <input
       ref={ref}
+      onPointerDown={onPointerDown}
       type="range"
       aria-label="Time"
       min={0}
