@@ -1,5 +1,6 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
+import { SceneError } from "./errors.js";
 import { parseScene } from "./parse.js";
 import { presets } from "./presets.js";
 import { serializeScene } from "./serialize.js";
@@ -84,6 +85,40 @@ describe("serializeScene round trip (property)", () => {
         expect(parseScene(serializeScene(s))).toEqual(s);
       }),
       { seed, verbose: true },
+    );
+  });
+
+  it("refuses to write what parseScene would refuse field by field, naming the field (it wrote unloadable files)", () => {
+    const scene = (actions: unknown[], extra: Record<string, unknown> = {}) =>
+      ({ format: "chapgame", version: 1, g: 0, gravity: [0, 0], actions, ...extra }) as unknown as SceneFile;
+    const add = { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 };
+    const cases: [SceneFile, string][] = [
+      [scene([{ ...add, x: Number.NaN }]), "actions[0].x: must be a finite number"],
+      [scene([add, { ...add, id: "b", r: -1 }]), "actions[1].r: must be a positive finite number"],
+      [scene([{ time: 0, type: "addBody", id: "a", y: 0, r: 1, m: 1 }]), "actions[0].x: is required"],
+      [scene([{ time: 0, type: "explode", id: "a" }]), 'actions[0].type: unknown action type "explode"'],
+      [scene([{ ...add, label: "cue" }]), "actions[0].label: unknown field"],
+      [scene([], { g: Number.NaN }), "g: must be a non-negative finite number"],
+      [scene([], { gravity: [0] }), "gravity: must be an array of two finite numbers"],
+      [scene([], { meta: [1] }), "meta: must be an object"],
+      [{} as unknown as SceneFile, "actions: must be an array"],
+    ];
+    for (const [s, message] of cases) {
+      expect(() => serializeScene(s)).toThrow(SceneError);
+      expect(() => serializeScene(s)).toThrow(message);
+    }
+  });
+
+  it("writes a valid action as given (defaults not filled in)", () => {
+    const s = {
+      format: "chapgame",
+      version: 1,
+      g: 0,
+      gravity: [0, 0],
+      actions: [{ time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 }],
+    } as SceneFile;
+    expect(serializeScene(s)).toContain(
+      '{ "time": 0, "type": "addBody", "id": "a", "x": 0, "y": 0, "r": 1, "m": 1 }',
     );
   });
 });

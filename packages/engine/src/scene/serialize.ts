@@ -3,8 +3,13 @@
  * gravity, actions, meta; in each action: time, type, then its fields in ACTION_FIELDS order, then
  * until), one action per line. Numbers are written so they read back bit-identical; an infinite
  * value (a mass) is written "Infinity". parseScene(serializeScene(s)) deep-equals a parsed s.
+ * Every field is checked first as parseScene checks it (SceneError naming the field: a scene is
+ * never written that could not be read back field by field); the scene rules that need the scene's
+ * state (ids, overlaps) are parseScene's. Valid actions are written as given (no defaults added).
  */
-import { ACTION_FIELDS } from "./action.js";
+import { ACTION_FIELDS, checkAction } from "./action.js";
+import { SceneError } from "./errors.js";
+import { isObject, nonNegative, vec2 } from "./fields.js";
 import type { Action, SceneFile } from "./types.js";
 
 function value(v: unknown): string {
@@ -32,7 +37,21 @@ function actionLine(a: Action): string {
   return `{ ${parts.join(", ")} }`;
 }
 
+/** Throws SceneError naming the first field parseScene would refuse on its own. */
+function checkFields(scene: SceneFile): void {
+  const raw = scene as unknown as Record<string, unknown>;
+  if (!isObject(raw)) throw new SceneError("scene", "must be an object");
+  if (!Array.isArray(raw.actions)) throw new SceneError("actions", "must be an array");
+  nonNegative(raw, "g", "");
+  vec2(raw, "gravity", "");
+  if (raw.meta !== undefined && !isObject(raw.meta)) throw new SceneError("meta", "must be an object");
+  raw.actions.forEach((a, i) => {
+    checkAction(a, `actions[${i}]`);
+  });
+}
+
 export function serializeScene(scene: SceneFile): string {
+  checkFields(scene);
   const lines = [
     "{",
     '  "format": "chapgame",',
