@@ -140,4 +140,12 @@ describe("Timeline subscribers", () => {
     expect(tl.actions).toHaveLength(1); // the change itself was made
     expect(tl.getSnapshot()).toBe(1);
   });
+
+  it("subscribe refuses a listener that is not a function (the next apply() failed instead)", () => {
+    const tl = new Timeline({ g: 0 });
+    expect(() => tl.subscribe(undefined as unknown as () => void)).toThrow(
+      "subscribe: listener must be a function",
+    );
+    expect(() => tl.apply({ time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 })).not.toThrow();
+  });
 });

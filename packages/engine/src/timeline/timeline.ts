@@ -339,6 +339,7 @@ export class Timeline {
   /** Call `listener` after every change (apply, setActions, prolong). Returns the unsubscribe. A
    *  listener that throws does not stop the others; its error is rethrown after them. */
   subscribe(listener: () => void): () => void {
+    if (typeof listener !== "function") throw new TypeError("subscribe: listener must be a function");
     this.listeners.add(listener);
     return () => {
       this.listeners.delete(listener);
