@@ -11,11 +11,14 @@ const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000,
 let s: Session;
 let page: Page;
 
-async function loadPreset(title: string) {
+/** Loads a preset and waits until its body `id` is in the Bodies table at t = 0. */
+async function loadPreset(title: string, id: string) {
   const select = page.getByRole("combobox", { name: "Preset" });
   const value = await select.locator("option", { hasText: title }).first().getAttribute("value");
   await select.selectOption(value!);
   await page.getByRole("button", { name: "Load preset" }).click();
+  const bodies = page.getByRole("table", { name: "Bodies" });
+  await waitFor(async () => (await bodies.getByLabel(`${id} x`, { exact: true }).count()) === 1);
   await waitFor(async () => Number(await page.getByRole("slider", { name: "Time" }).inputValue()) === 0);
 }
 
@@ -45,7 +48,7 @@ afterAll(async () => {
 
 describe("editor views", () => {
   it("the Event log scrolls to the current time (the events just before and after it are in view)", async () => {
-    await loadPreset("Billiards break");
+    await loadPreset("Billiards break", "ball15");
     // the break has dozens of events in its first half second: at t = 1.6 they are all past
     await scrubTo(page, 1.6);
     await poll(async () => {
@@ -59,7 +62,7 @@ describe("editor views", () => {
     }).toBe(true);
     // a click on a row jumps to its time, and that row stays in view (the log then reads the
     // events around the new time: the row moves within its page, the view must follow it)
-    await loadPreset("Bouncing balls");
+    await loadPreset("Bouncing balls", "ball1");
     await scrubTo(page, 6);
     await poll(async () => (await visibleLogTimes()).some((x) => x > 6)).toBe(true);
     const row = page
@@ -82,15 +85,30 @@ describe("editor views", () => {
     await page.getByRole("button", { name: "Load preset" }).click();
     const table = page.getByRole("table", { name: "Bodies" });
     await poll(() => table.getByLabel("big m", { exact: true }).textContent()).toBe("1e+12");
-    const scroller = (await page.locator(".table-scroll").first().boundingBox())!;
-    for (const name of ["big m", "big mu", "Delete big"]) {
-      const box = (await table.getByLabel(name, { exact: true }).boundingBox())!;
-      expect(box.x + box.width, name).toBeLessThanOrEqual(scroller.x + scroller.width);
-    }
+    const inView = async (names: string[]) => {
+      const scroller = (await page.locator(".table-scroll").first().boundingBox())!;
+      for (const name of names) {
+        const cell = table.getByLabel(name, { exact: true });
+        const box = (await cell.boundingBox())!;
+        expect(box.x + box.width, name).toBeLessThanOrEqual(scroller.x + scroller.width);
+        // and nothing (the sticky delete column) covers it
+        const onTop = await cell.evaluate((el) => {
+          const r = el.getBoundingClientRect();
+          return el.contains(document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2));
+        });
+        expect(onTop, name).toBe(true);
+      }
+    };
+    await inView(["big m", "big mu", "Delete big"]);
+    // the billiards break at 1.6 s: wide values (-346.202, 380.279) in the velocity columns
+    await loadPreset("Billiards break", "ball15");
+    await scrubTo(page, 1.6);
+    await poll(() => table.getByLabel("ball15 vx", { exact: true }).textContent()).toMatch(/^-\d{3}\./);
+    await inView(["ball15 mu", "Delete ball15"]);
   });
 
   it("dragging a moving disc pauses playback and drops the disc where it is let go", async () => {
-    await loadPreset("Newton's cradle");
+    await loadPreset("Newton's cradle", "striker");
     await page.getByRole("button", { name: "Play" }).click();
     await waitFor(async () => Number(await page.getByRole("slider", { name: "Time" }).inputValue()) > 0.3);
     const at = await page.evaluate(() => {
@@ -131,7 +149,7 @@ describe("editor views", () => {
   });
 
   it("holding the Time slider while playing holds the time there; letting go plays on", async () => {
-    await loadPreset("Newton's cradle");
+    await loadPreset("Newton's cradle", "striker");
     await page.getByRole("button", { name: "Play" }).click();
     const slider = page.getByRole("slider", { name: "Time" });
     const box = (await slider.boundingBox())!;
@@ -147,7 +165,7 @@ describe("editor views", () => {
   });
 
   it("small windows keep the canvas, the Time slider and every time and speed control usable", async () => {
-    await loadPreset("Billiards break");
+    await loadPreset("Billiards break", "ball15");
     try {
       for (const [width, height] of [
         [1024, 700],

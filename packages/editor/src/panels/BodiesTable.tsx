@@ -89,7 +89,7 @@ export function BodiesTable() {
             />
           </td>
         ))}
-        <td>
+        <td className="row-end">
           <DeleteRowButton kind="body" id={id} />
         </td>
       </tr>,

@@ -32,7 +32,7 @@ export function ObjectRow({
         <EditableCell label={`${id} id`} value={id} size={5} onCommit={(t) => editor.rename(kind, id, t)} />
       </td>
       {children}
-      <td>
+      <td className="row-end">
         <DeleteRowButton kind={kind} id={id} />
       </td>
     </tr>
