@@ -9,6 +9,7 @@ import { describe, expect, it } from "vitest";
 import type { Optimizations, WorldEvent } from "../src/sim/types.js";
 import { World } from "../src/sim/world.js";
 import { GRID_MIN_BODIES } from "../src/tolerances.js";
+import { outcome } from "./outcome.js";
 import { randomScene } from "./randomScene.js";
 import { ReferenceWorld, type SceneSpec } from "./referenceWorld.js";
 import { worldFromSpec } from "./worldFromSpec.js";
@@ -57,7 +58,10 @@ describe("broad phase and skips", () => {
       fc.property(sceneSeed, (seed) => {
         const spec = gridScene(seed);
         if (spec.bodies.length >= GRID_MIN_BODIES) placed++;
-        const fast = log(worldFromSpec(spec), 300);
+        // A disc crushed between immovable bodies is a Zeno state, reported, not compared here.
+        const run = outcome(worldFromSpec(spec), 300);
+        fc.pre(run.error === null);
+        const fast = run.events;
         const ref = new ReferenceWorld(spec).run(300);
         expect(fast.map((e) => `${e.kind} ${e.a} ${e.b}`)).toEqual(ref.map((e) => `${e.kind} ${e.a} ${e.b}`));
         fast.forEach((e, i) => {
@@ -78,7 +82,7 @@ describe("broad phase and skips", () => {
           ? gridScene(seed)
           : randomScene(seed, { maxBodies: 12, mode: "any", obstacles: true, infiniteMasses: true });
         const base = build(spec);
-        const expected = log(base, 400);
+        const expected = outcome(base, 400);
         for (const opt of [
           { broadPhase: false },
           { pathBounds: false },
@@ -86,7 +90,7 @@ describe("broad phase and skips", () => {
           { broadPhase: false, pathBounds: false, restingSkip: false },
         ]) {
           const w = build(spec, opt);
-          expect({ opt, events: log(w, 400) }).toStrictEqual({ opt, events: expected });
+          expect({ opt, ...outcome(w, 400) }).toStrictEqual({ opt, ...expected }); // errors included
           expect(w.bodies()).toStrictEqual(base.bodies());
         }
       }),
@@ -110,7 +114,7 @@ describe("broad phase and skips", () => {
         };
         const w1 = worldFromSpec(spec);
         const w2 = worldFromSpec(spec, shuffle);
-        expect(log(w2, 600)).toStrictEqual(log(w1, 600));
+        expect(outcome(w2, 600)).toStrictEqual(outcome(w1, 600)); // errors included
         expect(w2.bodies()).toStrictEqual(w1.bodies());
       }),
       params("grid permutation", 16),

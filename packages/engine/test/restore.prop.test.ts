@@ -3,10 +3,10 @@
 // set FC_SEED to explore other seeds.
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
-import { ChapgameError, SimulationError } from "../src/sim/errors.js";
-import type { WorldEvent } from "../src/sim/types.js";
+import { ChapgameError } from "../src/sim/errors.js";
 import { World } from "../src/sim/world.js";
 import { GRID_MIN_BODIES } from "../src/tolerances.js";
+import { outcome } from "./outcome.js";
 import { randomScene } from "./randomScene.js";
 import { worldFromSpec } from "./worldFromSpec.js";
 
@@ -30,18 +30,6 @@ function rebuilt(w: World): World {
   return out;
 }
 
-/** The next `maxEvents` events (copies), or the error that stopped the World. */
-function run(w: World, maxEvents: number): { events: WorldEvent[]; error: string | null } {
-  const events: WorldEvent[] = [];
-  try {
-    w.advance({ maxEvents }, (e) => events.push({ ...e }));
-    return { events, error: null };
-  } catch (e) {
-    if (!(e instanceof SimulationError)) throw e;
-    return { events, error: e.message };
-  }
-}
-
 describe("World rebuilt from motions (addBodyMotion)", () => {
   it("continues bit for bit like the original, from any stopping point, on random scenes", () => {
     let gridRuns = 0;
@@ -59,13 +47,13 @@ describe("World rebuilt from motions (addBodyMotion)", () => {
             infiniteMasses: true,
           });
           const original = worldFromSpec(spec);
-          const first = run(original, before);
+          const first = outcome(original, before);
           fc.pre(first.error === null);
           if (spec.bodies.length >= GRID_MIN_BODIES) gridRuns++;
           const copy = rebuilt(original);
           expect(copy.bodies()).toStrictEqual(original.bodies());
-          const a = run(original, 1500);
-          const b = run(copy, 1500);
+          const a = outcome(original, 1500);
+          const b = outcome(copy, 1500);
           expect(b).toStrictEqual(a);
           expect(copy.time).toBe(original.time);
           expect(copy.bodies()).toStrictEqual(original.bodies());
@@ -84,12 +72,12 @@ describe("World rebuilt from motions (addBodyMotion)", () => {
       w.addBody("striker", { x: -5, y: 0, r: 1, m: 1, vx: 3 });
       return w;
     };
-    const whole = run(make(), 100).events;
+    const whole = outcome(make(), 100).events;
     expect(whole.length).toBeGreaterThan(3);
     for (let k = 1; k < whole.length; k++) {
       const w = make();
-      const head = run(w, k).events;
-      const tail = run(rebuilt(w), 100).events;
+      const head = outcome(w, k).events;
+      const tail = outcome(rebuilt(w), 100).events;
       expect([...head, ...tail]).toStrictEqual(whole);
     }
   });

@@ -2,8 +2,10 @@
 // Each property prints its seed; set FC_SEED to explore other seeds.
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
+import { SimulationError } from "../src/sim/errors.js";
 import type { WorldEvent } from "../src/sim/types.js";
 import type { World } from "../src/sim/world.js";
+import { outcome } from "./outcome.js";
 import { randomScene } from "./randomScene.js";
 import { ReferenceWorld, type SceneSpec } from "./referenceWorld.js";
 import { worldFromSpec } from "./worldFromSpec.js";
@@ -17,7 +19,7 @@ function params<T extends unknown[]>(name: string, numRuns: number): fc.Paramete
 
 const sceneSeed = fc.integer({ min: 0, max: 2 ** 31 - 1 });
 
-function log(world: World, maxEvents: number): WorldEvent[] {
+function _log(world: World, maxEvents: number): WorldEvent[] {
   const out: WorldEvent[] = [];
   world.advance({ maxEvents }, (e) => out.push({ ...e }));
   return out;
@@ -51,7 +53,10 @@ describe("World matches the all-pairs reference", () => {
     fc.assert(
       fc.property(sceneSeed, (seed) => {
         const spec = randomScene(seed, { maxBodies: 12, mode: "any", obstacles: true, infiniteMasses: true });
-        const fast = log(worldFromSpec(spec), 150);
+        // A disc crushed between immovable bodies is a Zeno state, reported, not compared here.
+        const run = outcome(worldFromSpec(spec), 150);
+        fc.pre(run.error === null);
+        const fast = run.events;
         const ref = new ReferenceWorld(spec).run(150);
         expect(fast.map((e) => `${e.kind} ${e.a} ${e.b}`)).toEqual(ref.map((e) => `${e.kind} ${e.a} ${e.b}`));
         fast.forEach((e, i) => {
@@ -77,6 +82,7 @@ describe("World invariants", () => {
             obstacles: true,
             infiniteMasses: true,
           });
+          fc.pre(outcome(worldFromSpec(spec), 300).error === null); // a Zeno state is reported, not checked here
           const world = worldFromSpec(spec);
           let last = 0;
           world.advance({ maxEvents: 300 }, (e) => {
@@ -94,7 +100,13 @@ describe("World invariants", () => {
           for (const f of [...fracs].sort()) {
             const t = f * prev;
             if (t < check.time) continue;
-            check.advance({ untilTime: t });
+            try {
+              check.advance({ untilTime: t });
+            } catch (e) {
+              // All the events at the 300th event's time may be more than 300: a Zeno state there.
+              fc.pre(!(e instanceof SimulationError));
+              throw e;
+            }
             expect(worstOverlap(check, spec, t)).toBeLessThanOrEqual(1e-9);
           }
         },
@@ -139,7 +151,7 @@ describe("World invariants", () => {
         };
         const w1 = worldFromSpec(spec);
         const w2 = worldFromSpec(spec, shuffle);
-        expect(log(w2, 300)).toEqual(log(w1, 300));
+        expect(outcome(w2, 300)).toEqual(outcome(w1, 300)); // errors included
         expect(w2.bodies()).toEqual(w1.bodies());
       }),
       params("permutation", 60),
