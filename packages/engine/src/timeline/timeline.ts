@@ -14,7 +14,7 @@
  */
 import { checkAction } from "../scene/action.js";
 import { SceneError } from "../scene/errors.js";
-import { nonNegative, vec2 } from "../scene/fields.js";
+import { nonNegative, onlyKeys, vec2 } from "../scene/fields.js";
 import { applyOrder, parseScene } from "../scene/parse.js";
 import type { Action, SceneFile, Until, Vec2 } from "../scene/types.js";
 import { checkUntil, copyAction, freezeAction, restartKeyframe, sameUntil, timeArg } from "./actionData.js";
@@ -41,6 +41,10 @@ export class Timeline {
 
   constructor(options: TimelineOptions = {}) {
     const o = options as Record<string, unknown>;
+    onlyKeys(o, ["g", "gravity", "history", "compute"], "");
+    for (const key of ["history", "compute"])
+      if (o[key] !== undefined && typeof o[key] !== "boolean")
+        throw new SceneError(key, "must be true or false");
     const g = o.g === undefined ? 9.81 : nonNegative(o, "g", "");
     const gravity = o.gravity === undefined ? ([0, 0] as Vec2) : vec2(o, "gravity", "");
     this.options = { ...options, g, gravity };
@@ -53,6 +57,9 @@ export class Timeline {
     scene: SceneFile | string,
     options: Omit<TimelineOptions, "g" | "gravity"> = {},
   ): Timeline {
+    for (const key of ["g", "gravity"])
+      if (Object.hasOwn(options, key))
+        throw new SceneError(key, "unknown field (fromScene takes g and gravity from the scene)");
     const s = parseScene(scene);
     const tl = new Timeline({ ...options, g: s.g, gravity: s.gravity });
     tl.setActions(s.actions);
