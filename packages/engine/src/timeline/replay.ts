@@ -2,7 +2,8 @@
  * Reading the history: the state at any time (last keyframe at or before t + the records up to t +
  * closed-form evaluation) and the event log (each record expanded into a LogEvent; the contact point,
  * normal and impulse are recomputed from the motions just before the event with the World's own
- * formulas, so they match what the World reported).
+ * formulas, so they match what the World reported). Without history (headlessStateAt) only the
+ * span since the last event or action can be read, from the World itself.
  */
 
 import { discDiscResponse, impulseMagnitude, reflectResponse } from "../physics/response.js";
@@ -50,6 +51,17 @@ export function stateAt(core: TimelineCore, t: number, scratch: MotionTable): Sc
     lines: kf.lines.map((l) => ({ id: l.id, p1: [l.p1[0], l.p1[1]], p2: [l.p2[0], l.p2[1]], kind: l.kind })),
     points: kf.points.map((p) => ({ id: p.id, p: [p.p[0], p.p[1]] })),
   };
+}
+
+/** The state at t of a timeline without history: only from its last event or action on (no event or
+ *  action lies in (lastLogged, horizon], so every current motion holds over that span). */
+export function headlessStateAt(core: TimelineCore, t: number): SceneState {
+  if (t < core.lastLogged)
+    throw new RangeError(
+      `stateAt: this timeline keeps no history: t must be in [${core.lastLogged}, ${core.horizon}]`,
+    );
+  const w = core.world;
+  return { time: t, g: w.g, gravity: w.gravity, bodies: w.bodies(t), lines: w.lines(), points: w.points() };
 }
 
 /** Log event of record i, given the motions just before it in `table`. */

@@ -14,15 +14,16 @@
  */
 import { checkAction } from "../scene/action.js";
 import { SceneError } from "../scene/errors.js";
-import { nonNegative, onlyKeys, vec2 } from "../scene/fields.js";
+import { nonNegative } from "../scene/fields.js";
 import { applyOrder, parseScene } from "../scene/parse.js";
-import type { Action, SceneFile, Until, Vec2 } from "../scene/types.js";
+import type { Action, SceneFile, Until } from "../scene/types.js";
 import { checkUntil, copyAction, freezeAction, restartKeyframe, sameUntil, timeArg } from "./actionData.js";
 import { type Goal, TimelineCore } from "./core.js";
 import { type Keyframe, keyframeBytes } from "./keyframe.js";
 import { MotionTable } from "./motionTable.js";
+import { type CheckedOptions, checkOptions, checkSceneOptions } from "./options.js";
 import { K_ACTION } from "./records.js";
-import { logEvents, stateAt } from "./replay.js";
+import { headlessStateAt, logEvents, stateAt } from "./replay.js";
 import type { LogEvent, ProlongResult, SceneState, TimelineCounts, TimelineOptions } from "./types.js";
 import { saveCore } from "./undo.js";
 
@@ -30,7 +31,7 @@ const INF = Number.POSITIVE_INFINITY;
 
 export class Timeline {
   private core: TimelineCore;
-  private readonly options: TimelineOptions;
+  private readonly options: CheckedOptions;
   private revision = 0;
   private readonly listeners = new Set<() => void>();
   private readonly scratch = new MotionTable();
@@ -40,15 +41,9 @@ export class Timeline {
   private metaJson: string | null = null;
 
   constructor(options: TimelineOptions = {}) {
-    const o = options as Record<string, unknown>;
-    onlyKeys(o, ["g", "gravity", "history", "compute"], "");
-    for (const key of ["history", "compute"])
-      if (o[key] !== undefined && typeof o[key] !== "boolean")
-        throw new SceneError(key, "must be true or false");
-    const g = o.g === undefined ? 9.81 : nonNegative(o, "g", "");
-    const gravity = o.gravity === undefined ? ([0, 0] as Vec2) : vec2(o, "gravity", "");
-    this.options = { ...options, g, gravity };
-    this.core = new TimelineCore(g, gravity, options.history !== false, options.compute !== false);
+    this.options = checkOptions(options);
+    const o = this.options;
+    this.core = new TimelineCore(o.g, o.gravity, o.history, o.compute);
   }
 
   /** A timeline of a scene (validated: SceneError naming the field). Options as the constructor's,
@@ -57,9 +52,7 @@ export class Timeline {
     scene: SceneFile | string,
     options: Omit<TimelineOptions, "g" | "gravity"> = {},
   ): Timeline {
-    for (const key of ["g", "gravity"])
-      if (Object.hasOwn(options, key))
-        throw new SceneError(key, "unknown field (fromScene takes g and gravity from the scene)");
+    checkSceneOptions(options);
     const s = parseScene(scene);
     const tl = new Timeline({ ...options, g: s.g, gravity: s.gravity });
     tl.setActions(s.actions);
@@ -190,12 +183,7 @@ export class Timeline {
       }
     } else {
       const o = this.options;
-      const core = new TimelineCore(
-        o.g as number,
-        o.gravity as Vec2,
-        o.history !== false,
-        o.compute !== false,
-      );
+      const core = new TimelineCore(o.g, o.gravity, o.history, o.compute);
       core.acts = sorted;
       core.pathOf = pathOf;
       if (core.eager && oldHorizon > 0) core.goals.push({ tLimit: oldHorizon, eLimit: INF });
@@ -257,23 +245,7 @@ export class Timeline {
     const c = this.core;
     if (!(t >= 0 && t <= c.horizon))
       throw new RangeError(`stateAt: t must be in [0, ${c.horizon}], got ${t}`);
-    if (!c.history) {
-      // No event or action lies in (lastLogged, horizon]: every current motion holds over that span.
-      if (t < c.lastLogged)
-        throw new RangeError(
-          `stateAt: this timeline keeps no history: t must be in [${c.lastLogged}, ${c.horizon}]`,
-        );
-      const w = c.world;
-      return {
-        time: t,
-        g: w.g,
-        gravity: w.gravity,
-        bodies: w.bodies(t),
-        lines: w.lines(),
-        points: w.points(),
-      };
-    }
-    return stateAt(c, t, this.scratch);
+    return c.history ? stateAt(c, t, this.scratch) : headlessStateAt(c, t);
   }
 
   /** Time of the last event or action computed (where a run that ended idle ends). */

@@ -1,0 +1,40 @@
+/**
+ * checkOptions(options): the Timeline constructor's options validated (SceneError naming the key:
+ * unknown keys, g and gravity as in scene files, history and compute booleans) with the defaults
+ * filled in (g 9.81, gravity [0, 0], history and compute true). checkSceneOptions: fromScene's
+ * options, which must not carry g or gravity (they come from the scene).
+ */
+import { SceneError } from "../scene/errors.js";
+import { nonNegative, onlyKeys, vec2 } from "../scene/fields.js";
+import { SCENE_DEFAULTS, type Vec2 } from "../scene/types.js";
+import type { TimelineOptions } from "./types.js";
+
+export interface CheckedOptions {
+  g: number;
+  gravity: Vec2;
+  history: boolean;
+  compute: boolean;
+}
+
+export function checkOptions(options: TimelineOptions): CheckedOptions {
+  const o = options as Record<string, unknown>;
+  onlyKeys(o, ["g", "gravity", "history", "compute"], "");
+  for (const key of ["history", "compute"])
+    if (o[key] !== undefined && typeof o[key] !== "boolean")
+      throw new SceneError(key, "must be true or false");
+  return {
+    g: o.g === undefined ? SCENE_DEFAULTS.g : nonNegative(o, "g", ""),
+    gravity:
+      o.gravity === undefined
+        ? [SCENE_DEFAULTS.gravity[0], SCENE_DEFAULTS.gravity[1]]
+        : vec2(o, "gravity", ""),
+    history: options.history !== false,
+    compute: options.compute !== false,
+  };
+}
+
+export function checkSceneOptions(options: Omit<TimelineOptions, "g" | "gravity">): void {
+  for (const key of ["g", "gravity"])
+    if (Object.hasOwn(options, key))
+      throw new SceneError(key, "unknown field (fromScene takes g and gravity from the scene)");
+}
