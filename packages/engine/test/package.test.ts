@@ -52,7 +52,7 @@ describe("the published package", () => {
   it("has no file in dist/ without its source in src/ (a stale build output)", () => {
     const stale = files.filter((f) => {
       if (!f.startsWith("dist/")) return false;
-      const src = `src/${f.slice(5)}`.replace(/(\.d\.ts|\.js\.map|\.js)$/, ".ts");
+      const src = `src/${f.slice(5)}`.replace(/(\.d\.ts\.map|\.d\.ts|\.js\.map|\.js)$/, ".ts");
       return !existsSync(join(pkg, src));
     });
     expect(stale).toEqual([]);
