@@ -12,8 +12,11 @@ import { useRefreshed } from "./useRefreshed";
 import { useShownTime } from "./useThrottledTime";
 
 const TICKS = 300;
-/** Shortest interval between two requests for the ticks (ms): they follow a computation as it goes. */
-const TICKS_EVERY_MS = 200;
+/**
+ * Shortest interval between two requests for the ticks (ms): they follow a computation as it goes,
+ * once a second (each refresh re-renders up to TICKS lines of the slider's SVG).
+ */
+const TICKS_EVERY_MS = 1000;
 const NO_TICKS: number[] = [];
 
 export function TimePanel() {

@@ -47,13 +47,20 @@ export function useFollowTime(
     };
   }, [ref]);
 
-  // biome-ignore lint/correctness/useExhaustiveDependencies: runs when the rows (key) or the time change
+  // biome-ignore lint/correctness/useExhaustiveDependencies: runs when the rows (key, with the time they were read around) change
   useLayoutEffect(() => {
     const el = ref.current;
     if (!el || Date.now() - touched.current < HANDS_OFF_MS) return;
     const row = el.querySelector("tbody tr:not(.spacer)")?.getBoundingClientRect().height ?? 0;
     if (!(row > 0)) return; // nothing laid out (a hidden panel, jsdom)
-    const top = followRow(times, t) * row;
-    if (Math.abs(el.scrollTop - top) >= 1) el.scrollTop = top;
-  }, [key, t]);
+    // Scroll only when the current row (with a row of the past above it and two of the future
+    // below) has left the view: a refresh while playing then seldom scrolls, and each scroll costs
+    // a second render of the windowed rows.
+    const first = followRow(times, t, 0);
+    const head = el.querySelector("thead")?.getBoundingClientRect().height ?? 0;
+    const viewRows = (el.clientHeight - head) / row;
+    const from = el.scrollTop / row;
+    if (first - 1 >= from && first + 2 <= from + viewRows) return;
+    el.scrollTop = followRow(times, t) * row;
+  }, [key]);
 }
