@@ -77,6 +77,17 @@ export const ROOTS_HOT_MODEL_SPAN = 2 ** -12;
 export const OVERLAP_REL = 1e-9;
 
 /**
+ * Largest magnitude the World accepts for a length (position, radius, line or point coordinate)
+ * or a rate (velocity, g, gravity, mu); and the smallest radius. The contact polynomials multiply
+ * up to four such quantities together (the discriminant c1^2 - 4 c2 c0 of a gap of size s closing
+ * at speed s is of order s^4): at s = 1e77 it overflows and at s = 1e-90 it underflows, and the
+ * contact is missed without a word. Within [1e-30, 1e30] every such product stays within about
+ * 1e+-240, far from both ends of the double range (1e+-308).
+ */
+export const MAGNITUDE_MAX = 1e30;
+export const RADIUS_MIN = 1e-30;
+
+/**
  * Cell side of the broad-phase grid relative to the largest diameter. Slightly above 1 so that a
  * body whose centre sits a rounding error outside its recorded cell still finds every partner it
  * can touch in the 3x3 neighbourhood.

@@ -176,7 +176,7 @@ export class Predictor extends SimState {
       if (line.kind !== "line") {
         // Where the disc is at the contact: a contact under way is now (its crossing of the
         // infinite line may lie long before, beyond the end of a ray or segment).
-        const tc = tau < lo ? lo : tau;
+        const tc = Math.max(tau, lo);
         const lambda = lineParameter(line, x0 + tc * (vx + 0.5 * ax * tc), y0 + tc * (vy + 0.5 * ay * tc));
         if (!parameterOnLine(line.kind, lambda)) continue;
       }

@@ -2,6 +2,7 @@
  * Input checks of the World's edits. Each check throws ChapgameError naming the field and the
  * reason, before anything is changed.
  */
+import { MAGNITUDE_MAX, RADIUS_MIN } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
 import type { Vec2 } from "./types.js";
 
@@ -13,6 +14,37 @@ export function requireId(path: string, id: unknown): string {
 export function requireFinite(path: string, v: unknown): number {
   if (typeof v !== "number" || !Number.isFinite(v)) throw new ChapgameError(path, "must be a finite number");
   return v;
+}
+
+/**
+ * A length or a rate (position, velocity, coordinate): finite, and at most MAGNITUDE_MAX in size
+ * (beyond it the contact polynomials overflow; see tolerances.ts).
+ */
+export function requireBounded(path: string, v: unknown): number {
+  const x = requireFinite(path, v);
+  if (Math.abs(x) > MAGNITUDE_MAX)
+    throw new ChapgameError(
+      path,
+      `must be at most ${MAGNITUDE_MAX} in size (got ${x}): larger values overflow the contact polynomials`,
+    );
+  return x;
+}
+
+/** A radius: between RADIUS_MIN and MAGNITUDE_MAX (outside, the contact polynomials under- or overflow). */
+export function requireRadius(path: string, v: unknown): number {
+  const r = requirePositiveFinite(path, v);
+  if (r < RADIUS_MIN || r > MAGNITUDE_MAX)
+    throw new ChapgameError(
+      path,
+      `must be between ${RADIUS_MIN} and ${MAGNITUDE_MAX} (got ${r}): the contact polynomials would under- or overflow`,
+    );
+  return r;
+}
+
+/** A rate that cannot be negative (g, mu): finite, >= 0 and at most MAGNITUDE_MAX. */
+export function requireNonNegativeBounded(path: string, v: unknown): number {
+  requireNonNegativeFinite(path, v);
+  return requireBounded(path, v);
 }
 
 export function requirePositiveFinite(path: string, v: unknown): number {
@@ -34,10 +66,11 @@ export function requireMass(path: string, v: unknown): number {
   return v;
 }
 
+/** A pair [x, y] of lengths or rates, each checked by requireBounded. */
 export function requireVec(path: string, v: unknown): Vec2 {
   if (!Array.isArray(v) || v.length !== 2)
     throw new ChapgameError(path, "must be a pair of finite numbers [x, y]");
-  return [requireFinite(`${path}[0]`, v[0]), requireFinite(`${path}[1]`, v[1])];
+  return [requireBounded(`${path}[0]`, v[0]), requireBounded(`${path}[1]`, v[1])];
 }
 
 export function requireLineKind(path: string, v: unknown): "line" | "ray" | "segment" {

@@ -21,11 +21,12 @@ import type {
 } from "./types.js";
 import {
   checkFrictionGravity,
+  requireBounded,
   requireFinite,
   requireId,
   requireMass,
-  requireNonNegativeFinite,
-  requirePositiveFinite,
+  requireNonNegativeBounded,
+  requireRadius,
   requireVec,
 } from "./validate.js";
 
@@ -34,7 +35,7 @@ const restoredLaw: MotionLaw = { ax: 0, ay: 0, tEnd: INF };
 
 export class World extends Placement {
   constructor(options: WorldOptions = {}) {
-    const g = requireNonNegativeFinite("g", options.g ?? 9.81);
+    const g = requireNonNegativeBounded("g", options.g ?? 9.81);
     const gravity = requireVec("gravity", options.gravity ?? [0, 0]);
     const time = requireFinite("time", options.time ?? 0);
     super(time, g, gravity[0], gravity[1], options.optimizations ?? {});
@@ -66,13 +67,13 @@ export class World extends Placement {
   addBody(id: string, init: BodyInit): void {
     requireId("id", id);
     if (this.index.has(id)) throw new ChapgameError("id", `a body with id '${id}' already exists`);
-    const x = requireFinite("x", init.x);
-    const y = requireFinite("y", init.y);
-    const r = requirePositiveFinite("r", init.r);
+    const x = requireBounded("x", init.x);
+    const y = requireBounded("y", init.y);
+    const r = requireRadius("r", init.r);
     const m = requireMass("m", init.m);
-    const mu = requireNonNegativeFinite("mu", init.mu ?? 0);
-    const vx = requireFinite("vx", init.vx ?? 0);
-    const vy = requireFinite("vy", init.vy ?? 0);
+    const mu = requireNonNegativeBounded("mu", init.mu ?? 0);
+    const vx = requireBounded("vx", init.vx ?? 0);
+    const vy = requireBounded("vy", init.vy ?? 0);
     checkFrictionGravity("mu", mu, this.gravity);
     this.prepareGridFor(x, y, r);
     this.checkOverlap(x, y, r, -1);
@@ -92,13 +93,13 @@ export class World extends Placement {
     if (this.index.has(id)) throw new ChapgameError("id", `a body with id '${id}' already exists`);
     const t0 = requireFinite("t0", init.t0);
     if (t0 > this.time) throw new ChapgameError("t0", `must be <= the world's time ${this.time}`);
-    const x0 = requireFinite("x0", init.x0);
-    const y0 = requireFinite("y0", init.y0);
-    const vx = requireFinite("vx", init.vx);
-    const vy = requireFinite("vy", init.vy);
-    const r = requirePositiveFinite("r", init.r);
+    const x0 = requireBounded("x0", init.x0);
+    const y0 = requireBounded("y0", init.y0);
+    const vx = requireBounded("vx", init.vx);
+    const vy = requireBounded("vy", init.vy);
+    const r = requireRadius("r", init.r);
     const m = requireMass("m", init.m);
-    const mu = requireNonNegativeFinite("mu", init.mu ?? 0);
+    const mu = requireNonNegativeBounded("mu", init.mu ?? 0);
     checkFrictionGravity("mu", mu, this.gravity);
     motionLaw(t0, vx, vy, mu, this.g, this.gx, this.gy, restoredLaw);
     if (restoredLaw.tEnd < this.time)
@@ -107,8 +108,8 @@ export class World extends Placement {
         `the motion stops at t=${restoredLaw.tEnd}, before the world's time ${this.time}: give the resting motion that starts at the stop`,
       );
     // Where the body is now, evaluated as xAt/yAt will evaluate it.
-    const x = requireFinite("x0", positionAt(t0, x0, vx, restoredLaw.ax, this.time));
-    const y = requireFinite("y0", positionAt(t0, y0, vy, restoredLaw.ay, this.time));
+    const x = requireBounded("x0", positionAt(t0, x0, vx, restoredLaw.ax, this.time));
+    const y = requireBounded("y0", positionAt(t0, y0, vy, restoredLaw.ay, this.time));
     this.prepareGridFor(x, y, r);
     this.checkOverlap(x, y, r, -1, true);
     this.insertBody(id, r, m, mu, t0, x0, y0, vx, vy, x, y);
@@ -155,13 +156,13 @@ export class World extends Placement {
     const s = this.slotOf(id);
     const b = this.store;
     const now = this.time;
-    const x = requireFinite("x", patch.x ?? this.xAt(s, now));
-    const y = requireFinite("y", patch.y ?? this.yAt(s, now));
-    const vx = requireFinite("vx", patch.vx ?? this.vxAt(s, now));
-    const vy = requireFinite("vy", patch.vy ?? this.vyAt(s, now));
-    const r = requirePositiveFinite("r", patch.r ?? b.r[s]);
+    const x = requireBounded("x", patch.x ?? this.xAt(s, now));
+    const y = requireBounded("y", patch.y ?? this.yAt(s, now));
+    const vx = requireBounded("vx", patch.vx ?? this.vxAt(s, now));
+    const vy = requireBounded("vy", patch.vy ?? this.vyAt(s, now));
+    const r = requireRadius("r", patch.r ?? b.r[s]);
     const m = requireMass("m", patch.m ?? b.m[s]);
-    const mu = requireNonNegativeFinite("mu", patch.mu ?? b.mu[s]);
+    const mu = requireNonNegativeBounded("mu", patch.mu ?? b.mu[s]);
     checkFrictionGravity("mu", mu, this.gravity);
     if (patch.x !== undefined || patch.y !== undefined || patch.r !== undefined) {
       this.prepareGridFor(x, y, r);
@@ -256,7 +257,7 @@ export class World extends Placement {
   // ---- globals ------------------------------------------------------------------------------
 
   setGlobal(patch: { g?: number; gravity?: Vec2 }): void {
-    const g = requireNonNegativeFinite("g", patch.g ?? this.g);
+    const g = requireNonNegativeBounded("g", patch.g ?? this.g);
     const gravity = requireVec("gravity", patch.gravity ?? this.gravity);
     for (const [id, s] of this.index)
       checkFrictionGravity(`bodies.${id}.mu`, this.store.mu[s] as number, gravity);
