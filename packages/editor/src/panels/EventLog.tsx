@@ -54,6 +54,7 @@ export function EventLog() {
     events.map((e) => e.time),
     read?.at ?? t,
     read,
+    win.geometry,
   );
 
   return (

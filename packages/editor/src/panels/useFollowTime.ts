@@ -6,6 +6,7 @@
  * jumps to its time, and the view follows it).
  */
 import { type RefObject, useEffect, useLayoutEffect, useRef } from "react";
+import type { BoxGeometry } from "./useRowWindow";
 
 /** Rows of the past kept in view above the first row at or after the current time. */
 export const FOLLOW_LEAD = 3;
@@ -27,6 +28,7 @@ export function useFollowTime(
   times: readonly number[],
   t: number,
   key: unknown,
+  box: BoxGeometry,
 ): void {
   const touched = useRef(Number.NEGATIVE_INFINITY);
 
@@ -51,16 +53,16 @@ export function useFollowTime(
   useLayoutEffect(() => {
     const el = ref.current;
     if (!el || Date.now() - touched.current < HANDS_OFF_MS) return;
-    const row = el.querySelector("tbody tr:not(.spacer)")?.getBoundingClientRect().height ?? 0;
-    if (!(row > 0)) return; // nothing laid out (a hidden panel, jsdom)
+    // The box as last measured by the row window (reading the DOM here would force a layout on
+    // every refresh).
+    const { row, head, view, scroll } = box;
+    if (!(row > 0) || !(view > 0)) return; // nothing laid out (a hidden panel, jsdom)
     // Scroll only when the current row (with a row of the past above it and two of the future
     // below) has left the view: a refresh while playing then seldom scrolls, and each scroll costs
     // a second render of the windowed rows.
     const first = followRow(times, t, 0);
-    const head = el.querySelector("thead")?.getBoundingClientRect().height ?? 0;
-    const viewRows = (el.clientHeight - head) / row;
-    const from = el.scrollTop / row;
-    if (first - 1 >= from && first + 2 <= from + viewRows) return;
+    const from = scroll / row;
+    if (first - 1 >= from && first + 2 <= from + (view - head) / row) return;
     el.scrollTop = followRow(times, t) * row;
   }, [key]);
 }

@@ -22,6 +22,14 @@ export interface RowWindow {
   after: number;
 }
 
+/** The scroll box as last measured (on scroll and resize): read without forcing a layout. */
+export interface BoxGeometry {
+  scroll: number;
+  view: number;
+  head: number;
+  row: number;
+}
+
 /** The rows [start, end) of `count` to render in a view of `viewPx` scrolled to `scrollPx`. */
 export function rowWindow(
   count: number,
@@ -38,9 +46,15 @@ export function rowWindow(
   return { start, end: Math.max(start, end), before: start * rowPx, after: Math.max(0, count - end) * rowPx };
 }
 
-/** The window of rows to render in the scroll container `ref` (whose table has a thead). */
-export function useRowWindow(ref: RefObject<HTMLElement | null>, count: number): RowWindow {
-  const [geometry, setGeometry] = useState({ scroll: 0, view: 0, head: 0, row: DEFAULT_ROW_PX });
+/**
+ * The window of rows to render in the scroll container `ref` (whose table has a thead), and the
+ * container's geometry as last measured.
+ */
+export function useRowWindow(
+  ref: RefObject<HTMLElement | null>,
+  count: number,
+): RowWindow & { geometry: BoxGeometry } {
+  const [geometry, setGeometry] = useState<BoxGeometry>({ scroll: 0, view: 0, head: 0, row: DEFAULT_ROW_PX });
   const measure = useRef<() => void>(() => {});
 
   useEffect(() => {
@@ -74,7 +88,7 @@ export function useRowWindow(ref: RefObject<HTMLElement | null>, count: number):
     if (hasRows) measure.current();
   }, [hasRows]);
 
-  return rowWindow(count, geometry.scroll, geometry.view, geometry.head, geometry.row);
+  return { ...rowWindow(count, geometry.scroll, geometry.view, geometry.head, geometry.row), geometry };
 }
 
 /** A spacer row of `height` px standing for rows not rendered (presentational: not a row to assistive technology). */
