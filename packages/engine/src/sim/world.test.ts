@@ -1,6 +1,6 @@
 // Reference scenarios with exact answers (see shared reference-cases): the World's behaviour.
 import { describe, expect, it } from "vitest";
-import { SimulationError } from "./errors.js";
+import { ChapgameError, SimulationError } from "./errors.js";
 import type { WorldEvent } from "./types.js";
 import { World } from "./world.js";
 
@@ -199,5 +199,24 @@ describe("Zeno states are reported, not looped over", () => {
     w.addLine("floor", [-10, 0], [10, 0], "segment");
     w.addBody("ball", { x: 0, y: 1, r: 1, m: 1 });
     expect(() => w.advance({ untilTime: 1 })).toThrow(/resting contact/);
+  });
+});
+
+describe("body(id, t) keeps to the current motion", () => {
+  it("a time before the body's last event is refused naming t, not extrapolated through the wall", () => {
+    // The audit's case: the disc bounces off the wall at x = 10 at t = 9; at t = 5 it was at x = 5,
+    // but the post-bounce motion extrapolated back gave x = 13, beyond the wall.
+    const w = new World({ g: 0 });
+    w.addLine("wall", [10, -5], [10, 5], "line");
+    w.addBody("a", { x: 0, y: 0, r: 1, m: 1, vx: 1 });
+    w.advance({ untilTime: 12 });
+    expect(w.motion("a").t0).toBe(9);
+    expect(() => w.body("a", 5)).toThrow(
+      /^t: must be a time at or after a's last event or edit \(t0 = 9; got 5\)/,
+    );
+    expect(() => w.bodies(8.5)).toThrow(ChapgameError);
+    expect(() => w.body("a", Number.NaN)).toThrow(ChapgameError);
+    expect(w.body("a", 9).x).toBe(9);
+    expect(w.body("a").x).toBe(6);
   });
 });

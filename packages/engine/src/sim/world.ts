@@ -186,7 +186,8 @@ export class World extends Placement {
 
   /**
    * State of a body at time t (default: now). Exact for t from the body's last event or edit (its
-   * current motion's start, `motion(id).t0`) up to its next event.
+   * current motion's start, `motion(id).t0`) up to its next event; a t before that start (or NaN)
+   * throws ChapgameError naming `t` (the World keeps no past: a Timeline does).
    */
   body(id: string, t: number = this.time): BodyState {
     return this.stateOf(this.slotOf(id), t);
@@ -200,6 +201,11 @@ export class World extends Placement {
 
   private stateOf(s: number, t: number): BodyState {
     const b = this.store;
+    if (!(t >= (b.mot[s * 8 + 0] as number)))
+      throw new ChapgameError(
+        "t",
+        `must be a time at or after ${b.ids[s]}'s last event or edit (t0 = ${b.mot[s * 8 + 0]}; got ${t}): earlier states are not kept by a World (a Timeline keeps them)`,
+      );
     const tEnd = b.mot[s * 8 + 7] as number;
     const te = Math.min(t, tEnd);
     const t0 = b.mot[s * 8 + 0] as number;
