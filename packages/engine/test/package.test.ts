@@ -57,4 +57,13 @@ describe("the published package", () => {
     });
     expect(stale).toEqual([]);
   });
+
+  it("declares its typed arrays without the TypeScript 5.7 generic (Float64Array<ArrayBuffer>), so older compilers read the types", () => {
+    const generic = files
+      .filter((f) => f.endsWith(".d.ts"))
+      .filter((f) =>
+        /(Int32|Float64|Uint8|Uint32)Array<|ArrayBuffer>/.test(readFileSync(join(pkg, f), "utf8")),
+      );
+    expect(generic).toEqual([]);
+  });
 });

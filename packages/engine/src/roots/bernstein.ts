@@ -111,6 +111,6 @@ export function bernstein(
  * `let` allocates a heap number on every store, which showed up in profiles. [0] = where p's control
  * polygon crosses zero (one sign change), [1] = the same for p′.
  */
-export const guesses = new Float64Array(2);
+export const guesses: Float64Array = new Float64Array(2);
 /** Certified sign changes of p′'s Bernstein coefficients on the same interval: 0, 1, or −1 (more/unknown). */
 export let derivChanges = -1;

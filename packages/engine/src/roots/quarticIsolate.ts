@@ -30,7 +30,7 @@ const BC = reg.BC;
 const stack = new Float64Array(8 * (MAX_DEPTH + 2));
 const pieces = new Float64Array(4 * 4);
 /** The one-root pieces of the last isolate call (4 values each, see above). */
-export const ones = pieces;
+export const ones: Float64Array = pieces;
 
 export function isolate(loSign: number): number {
   const margin = BC[5] as number;

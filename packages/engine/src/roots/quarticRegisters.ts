@@ -35,14 +35,14 @@ const st = {
   loaded: false,
 };
 
-export const Q = q;
+export const Q: Float64Array = q;
 /** Offset of p′'s coefficients in Q. */
 export const P1 = 8;
-export const H = new Float64Array(6);
-export const BC = new Float64Array(6);
-export const absAt = new Float64Array(2);
+export const H: Float64Array = new Float64Array(6);
+export const BC: Float64Array = new Float64Array(6);
+export const absAt: Float64Array = new Float64Array(2);
 /** The roots found by the last quarticRoots call (found[0..count)), ascending. */
-export const found = roots;
+export const found: Float64Array = roots;
 export const state = st;
 
 /** The caller's coefficients for this call (loaded into certify.ts only if needed). */

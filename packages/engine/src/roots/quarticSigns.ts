@@ -28,7 +28,7 @@ const TINY_SCALE = 2 ** -600;
 
 const qs = new Float64Array(10);
 /** Scratch of the halvings: two halves at QS[0..8], the margin QS[9]. */
-export const QS = qs;
+export const QS: Float64Array = qs;
 
 export function signPlain(x: number, slot: number): number {
   const c0 = Q[0] as number;

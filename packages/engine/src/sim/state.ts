@@ -32,7 +32,7 @@ export class SimState {
   /** Indices of infinite lines and rays (tested against every moving body). */
   protected globalLines: number[] = [];
   /** Per obstacle: the prediction stamp that last tested it (avoids testing it twice per prediction). */
-  protected obstStamp = new Int32Array(0);
+  protected obstStamp: Int32Array = new Int32Array(0);
   protected stamp = 0;
   /** Largest radius the grid was built for; a larger body forces a rebuild. */
   protected gridMaxR = 0;
