@@ -26,7 +26,7 @@ export class Placement extends Simulator {
     const line = makeLine(id, a, c, kind);
     for (const [bid, s] of this.index) {
       const r = this.store.r[s] as number;
-      if (distanceToLine(line, this.xAt(s, this.time), this.yAt(s, this.time)) < r)
+      if (distanceToLine(line, this.xAt(s, this.now), this.yAt(s, this.now)) < r)
         throw new ChapgameError("p1", `the line would overlap body '${bid}'`);
     }
     return line;
@@ -35,8 +35,8 @@ export class Placement extends Simulator {
   protected checkedPoint(id: string, p: Vec2): Point {
     const [x, y] = requireVec("p", p);
     for (const [bid, s] of this.index) {
-      const dx = this.xAt(s, this.time) - x;
-      const dy = this.yAt(s, this.time) - y;
+      const dx = this.xAt(s, this.now) - x;
+      const dy = this.yAt(s, this.now) - y;
       const r = this.store.r[s] as number;
       if (dx * dx + dy * dy < r * r) throw new ChapgameError("p", `the point would lie inside body '${bid}'`);
     }
@@ -61,7 +61,7 @@ export class Placement extends Simulator {
    */
   protected checkOverlap(x: number, y: number, r: number, self: number, roundOff = false): void {
     const b = this.store;
-    const now = this.time;
+    const now = this.now;
     const keep = roundOff ? 1 - OVERLAP_REL : 1;
     const test = (s: number): void => {
       if (s === self) return;

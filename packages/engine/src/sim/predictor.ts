@@ -42,7 +42,7 @@ export class Predictor extends SimState {
       s === this.memoO &&
       vo === this.memoVS &&
       vs === this.memoVO &&
-      this.time === this.memoTime
+      this.now === this.memoTime
     )
       return this.memoResult;
     const t = this.solvePair(s, o);
@@ -50,7 +50,7 @@ export class Predictor extends SimState {
     this.memoO = o;
     this.memoVS = vs;
     this.memoVO = vo;
-    this.memoTime = this.time;
+    this.memoTime = this.now;
     this.memoResult = t;
     return t;
   }
@@ -108,13 +108,13 @@ export class Predictor extends SimState {
       axo - axs,
       ayo - ays,
       R,
-      this.time - tb,
+      this.now - tb,
       hi,
       this.opt.quadraticFastPath,
     );
     if (tau === INF) return INF;
     const t = tb + tau;
-    return Math.max(t, this.time);
+    return Math.max(t, this.now);
   }
 
   /** Earliest contact of body s with a point at (px, py), or +Infinity. */
@@ -129,13 +129,13 @@ export class Predictor extends SimState {
       b.mot[s * 8 + 5] as number,
       b.mot[s * 8 + 6] as number,
       b.r[s] as number,
-      this.time - t0,
+      this.now - t0,
       (b.mot[s * 8 + 7] as number) - t0,
       this.opt.quadraticFastPath,
     );
     if (tau === INF) return INF;
     const t = t0 + tau;
-    return Math.max(t, this.time);
+    return Math.max(t, this.now);
   }
 
   /**
@@ -145,7 +145,7 @@ export class Predictor extends SimState {
   protected lineTime(s: number, line: Line): number {
     const b = this.store;
     const t0 = b.mot[s * 8 + 0] as number;
-    const lo = this.time - t0;
+    const lo = this.now - t0;
     const hi = (b.mot[s * 8 + 7] as number) - t0;
     const x0 = b.mot[s * 8 + 1] as number;
     const y0 = b.mot[s * 8 + 2] as number;
@@ -184,7 +184,7 @@ export class Predictor extends SimState {
     }
     if (best === INF) return INF;
     const t = t0 + best;
-    return Math.max(t, this.time);
+    return Math.max(t, this.now);
   }
 
   /** Whether candidate (kind k1, other o1) comes before (k2, o2) for body s at the same time. */
@@ -242,7 +242,7 @@ export class Predictor extends SimState {
     b.evTime[s] = INF;
     b.evKind[s] = EV_NONE;
     const tEnd = b.mot[s * 8 + 7] as number;
-    if (tEnd < INF) this.offer(s, Math.max(tEnd, this.time), EV_STOP, -1, 0);
+    if (tEnd < INF) this.offer(s, Math.max(tEnd, this.now), EV_STOP, -1, 0);
     const grid = this.grid;
     const cell = grid.cellOf[s] as number;
     const cx = cell % grid.nx;
@@ -300,7 +300,7 @@ export class Predictor extends SimState {
     const b = this.store;
     const grid = this.grid;
     const t0 = b.mot[s * 8 + 0] as number;
-    const lo = this.time - t0;
+    const lo = this.now - t0;
     const hi = (b.mot[s * 8 + 7] as number) - t0;
     // Cell bounds without allocation; edge cells extend to infinity.
     const x0 = cx === 0 ? -INF : grid.boundaryX(cx);
@@ -332,6 +332,6 @@ export class Predictor extends SimState {
     // Directions: 0 -x, 1 +x, 2 -y, 3 +y.
     const best = Math.min(tx, ty);
     b.crossDir[s] = best === INF ? -1 : tx <= ty ? (sx < 0 ? 0 : 1) : sy < 0 ? 2 : 3;
-    return best === INF ? INF : Math.max(this.time, t0 + best);
+    return best === INF ? INF : Math.max(this.now, t0 + best);
   }
 }

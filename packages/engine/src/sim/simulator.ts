@@ -29,7 +29,7 @@ export class Simulator extends Predictor {
     if (s < 0) return -1;
     const t = this.heap.peekKey();
     if (t > untilTime) return -1;
-    if (t > this.time) this.time = t;
+    if (t > this.now) this.now = t;
     const b = this.store;
     if ((b.crossTime[s] as number) <= (b.evTime[s] as number)) {
       this.processCrossing(s);
@@ -61,14 +61,14 @@ export class Simulator extends Predictor {
   protected peekEventTime(): number {
     const b = this.store;
     const log = this.peekLog;
-    const now = this.time;
+    const now = this.now;
     log.begin(b.capacity);
     try {
       for (;;) {
         const s = this.heap.peek();
         if (s < 0) return INF;
         const t = this.heap.peekKey();
-        if (t > this.time) this.time = t;
+        if (t > this.now) this.now = t;
         if ((b.crossTime[s] as number) <= (b.evTime[s] as number)) {
           log.save(b, s, t);
           log.recordMove(this.grid, s);
@@ -82,11 +82,11 @@ export class Simulator extends Predictor {
           continue;
         }
         this.checkEvent(s, kind);
-        return this.time;
+        return this.now;
       }
     } finally {
       log.undo(b, this.grid, this.heap);
-      this.time = now;
+      this.now = now;
     }
   }
 
@@ -99,7 +99,7 @@ export class Simulator extends Predictor {
       this.guardZeno();
       if (kind === EV_LINE || kind === EV_POINT) {
         const b = this.store;
-        const t = this.time;
+        const t = this.now;
         const id = this.obstacleContact(
           s,
           kind,
@@ -117,7 +117,7 @@ export class Simulator extends Predictor {
 
   /** Count the event about to be processed in the Zeno watch (throws on a Zeno state). */
   protected guardZeno(): void {
-    this.zeno.check(this.time, Math.max(1, this.store.slotCount), this.pumps);
+    this.zeno.check(this.now, Math.max(1, this.store.slotCount), this.pumps);
   }
 
   private readonly pumps = (): boolean => this.pumpsEnergy();
@@ -173,7 +173,7 @@ export class Simulator extends Predictor {
     const sFirst = (b.ids[s] as string) < (b.ids[o] as string);
     const p = sFirst ? s : o;
     const q = sFirst ? o : s;
-    const t = this.time;
+    const t = this.now;
     const xp = this.xAt(p, t);
     const yp = this.yAt(p, t);
     const xq = this.xAt(q, t);
@@ -208,7 +208,7 @@ export class Simulator extends Predictor {
 
   protected processStop(s: number): void {
     const b = this.store;
-    const t = this.time;
+    const t = this.now;
     const x = this.xAt(s, t);
     const y = this.yAt(s, t);
     this.setMotion(s, t, x, y, 0, 0);
@@ -228,7 +228,7 @@ export class Simulator extends Predictor {
 
   protected processObstacle(s: number, kind: number, index: number, aux: number): void {
     const b = this.store;
-    const t = this.time;
+    const t = this.now;
     const x = this.xAt(s, t);
     const y = this.yAt(s, t);
     const otherId = this.obstacleContact(s, kind, index, aux, x, y);
@@ -303,7 +303,7 @@ export class Simulator extends Predictor {
    * Throws when the body rests against the obstacle under an acceleration pressing it there.
    */
   private reflectOff(s: number, otherId: string, nx: number, ny: number): number {
-    const t = this.time;
+    const t = this.now;
     const approach = reflectResponse(this.vxAt(s, t), this.vyAt(s, t), nx, ny, vel);
     const mot = this.store.mot;
     if (approach <= 0 && (mot[s * 8 + 5] as number) * nx + (mot[s * 8 + 6] as number) * ny > 0) {

@@ -19,10 +19,11 @@ const INF = Number.POSITIVE_INFINITY;
 const law: MotionLaw = { ax: 0, ay: 0, tEnd: INF };
 
 export class SimState {
-  time: number;
-  g: number;
-  gx: number;
-  gy: number;
+  /** Current time, friction field g and gravity field (read through the getters below). */
+  protected now: number;
+  protected frictionG: number;
+  protected gravX: number;
+  protected gravY: number;
   readonly opt: Required<Optimizations>;
   protected store: BodyStore;
   protected grid: Grid;
@@ -54,10 +55,10 @@ export class SimState {
   };
 
   constructor(time: number, g: number, gx: number, gy: number, opt: Optimizations) {
-    this.time = time;
-    this.g = g;
-    this.gx = gx;
-    this.gy = gy;
+    this.now = time;
+    this.frictionG = g;
+    this.gravX = gx;
+    this.gravY = gy;
     this.opt = {
       broadPhase: opt.broadPhase ?? true,
       pathBounds: opt.pathBounds ?? true,
@@ -69,12 +70,31 @@ export class SimState {
     this.heap = new CalendarQueue(this.store.capacity, (a, b) => this.tieLess(a, b));
   }
 
+  /** The world's current time (read-only: `advance` and the edits move it). */
+  get time(): number {
+    return this.now;
+  }
+
+  /** The friction field g (read-only: change it with `setGlobal`). */
+  get g(): number {
+    return this.frictionG;
+  }
+
+  /** The gravity field's components (read-only: change them with `setGlobal`). */
+  get gx(): number {
+    return this.gravX;
+  }
+
+  get gy(): number {
+    return this.gravY;
+  }
+
   /** Copy all state into `target` (a fresh Simulator of the same class). */
   protected copyInto(target: SimState): void {
-    target.time = this.time;
-    target.g = this.g;
-    target.gx = this.gx;
-    target.gy = this.gy;
+    target.now = this.now;
+    target.frictionG = this.frictionG;
+    target.gravX = this.gravX;
+    target.gravY = this.gravY;
     target.store = this.store.clone();
     target.grid = this.grid.clone();
     target.heap = this.heap.cloneWith((a, b) => target.tieLess(a, b));
@@ -93,7 +113,7 @@ export class SimState {
   /** Start a new motion of body s at time t from (x, y) with velocity (vx, vy). */
   protected setMotion(s: number, t: number, x: number, y: number, vx: number, vy: number): void {
     const b = this.store;
-    motionLaw(t, vx, vy, b.mu[s] as number, this.g, this.gx, this.gy, law);
+    motionLaw(t, vx, vy, b.mu[s] as number, this.frictionG, this.gravX, this.gravY, law);
     b.mot[s * 8 + 0] = t;
     b.mot[s * 8 + 1] = x;
     b.mot[s * 8 + 2] = y;
@@ -180,8 +200,8 @@ export class SimState {
     for (let s = 0; s < b.slotCount; s++) {
       if (b.ids[s] === undefined) continue;
       n++;
-      const x = this.xAt(s, this.time);
-      const y = this.yAt(s, this.time);
+      const x = this.xAt(s, this.now);
+      const y = this.yAt(s, this.now);
       maxR = Math.max(maxR, (b.r[s] as number) * slack);
       minX = Math.min(minX, x);
       maxX = Math.max(maxX, x);
@@ -209,7 +229,7 @@ export class SimState {
     }
     for (let s = 0; s < b.slotCount; s++) {
       if (b.ids[s] === undefined) continue;
-      this.grid.insert(s, this.cellAt(this.xAt(s, this.time), this.yAt(s, this.time)));
+      this.grid.insert(s, this.cellAt(this.xAt(s, this.now), this.yAt(s, this.now)));
     }
     this.rasterizeObstacles();
     this.dirty = true;

@@ -220,3 +220,16 @@ describe("body(id, t) keeps to the current motion", () => {
     expect(w.body("a").x).toBe(6);
   });
 });
+
+describe("read-only state", () => {
+  it("time, g and the gravity field cannot be assigned (the audit's w.time = -100 ran from a wrong state)", () => {
+    const w = new World({ g: 2, gravity: [0, 0] });
+    w.addBody("a", { x: 0, y: 0, r: 1, m: 1, vx: 1, mu: 0.1 });
+    w.advance({ untilTime: 1 });
+    const loose = w as unknown as Record<string, number>;
+    for (const key of ["time", "g", "gx", "gy"]) expect(() => (loose[key] = -100), key).toThrow(TypeError);
+    expect([w.time, w.g, w.gx, w.gy]).toEqual([1, 2, 0, 0]);
+    w.setGlobal({ g: 3 });
+    expect(w.g).toBe(3);
+  });
+});

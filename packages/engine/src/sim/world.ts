@@ -42,12 +42,17 @@ export class World extends Placement {
   }
 
   get gravity(): Vec2 {
-    return [this.gx, this.gy];
+    return [this.gravX, this.gravY];
   }
 
   /** An independent deep copy (for keyframes). */
   clone(): World {
-    const w = new World({ g: this.g, gravity: [this.gx, this.gy], time: this.time, optimizations: this.opt });
+    const w = new World({
+      g: this.frictionG,
+      gravity: [this.gravX, this.gravY],
+      time: this.now,
+      optimizations: this.opt,
+    });
     this.copyInto(w);
     w.index = new Map(this.index);
     return w;
@@ -77,7 +82,7 @@ export class World extends Placement {
     checkFrictionGravity("mu", mu, this.gravity);
     this.prepareGridFor(x, y, r);
     this.checkOverlap(x, y, r, -1);
-    this.insertBody(id, r, m, mu, this.time, x, y, vx, vy, x, y);
+    this.insertBody(id, r, m, mu, this.now, x, y, vx, vy, x, y);
   }
 
   /**
@@ -92,7 +97,7 @@ export class World extends Placement {
     requireId("id", id);
     if (this.index.has(id)) throw new ChapgameError("id", `a body with id '${id}' already exists`);
     const t0 = requireFinite("t0", init.t0);
-    if (t0 > this.time) throw new ChapgameError("t0", `must be <= the world's time ${this.time}`);
+    if (t0 > this.now) throw new ChapgameError("t0", `must be <= the world's time ${this.now}`);
     const x0 = requireBounded("x0", init.x0);
     const y0 = requireBounded("y0", init.y0);
     const vx = requireBounded("vx", init.vx);
@@ -101,15 +106,15 @@ export class World extends Placement {
     const m = requireMass("m", init.m);
     const mu = requireNonNegativeBounded("mu", init.mu ?? 0);
     checkFrictionGravity("mu", mu, this.gravity);
-    motionLaw(t0, vx, vy, mu, this.g, this.gx, this.gy, restoredLaw);
-    if (restoredLaw.tEnd < this.time)
+    motionLaw(t0, vx, vy, mu, this.frictionG, this.gravX, this.gravY, restoredLaw);
+    if (restoredLaw.tEnd < this.now)
       throw new ChapgameError(
         "t0",
-        `the motion stops at t=${restoredLaw.tEnd}, before the world's time ${this.time}: give the resting motion that starts at the stop`,
+        `the motion stops at t=${restoredLaw.tEnd}, before the world's time ${this.now}: give the resting motion that starts at the stop`,
       );
     // Where the body is now, evaluated as xAt/yAt will evaluate it.
-    const x = requireBounded("x0", positionAt(t0, x0, vx, restoredLaw.ax, this.time));
-    const y = requireBounded("y0", positionAt(t0, y0, vy, restoredLaw.ay, this.time));
+    const x = requireBounded("x0", positionAt(t0, x0, vx, restoredLaw.ax, this.now));
+    const y = requireBounded("y0", positionAt(t0, y0, vy, restoredLaw.ay, this.now));
     this.prepareGridFor(x, y, r);
     this.checkOverlap(x, y, r, -1, true);
     this.insertBody(id, r, m, mu, t0, x0, y0, vx, vy, x, y);
@@ -155,7 +160,7 @@ export class World extends Placement {
   updateBody(id: string, patch: BodyPatch): void {
     const s = this.slotOf(id);
     const b = this.store;
-    const now = this.time;
+    const now = this.now;
     const x = requireBounded("x", patch.x ?? this.xAt(s, now));
     const y = requireBounded("y", patch.y ?? this.yAt(s, now));
     const vx = requireBounded("vx", patch.vx ?? this.vxAt(s, now));
@@ -189,12 +194,12 @@ export class World extends Placement {
    * current motion's start, `motion(id).t0`) up to its next event; a t before that start (or NaN)
    * throws ChapgameError naming `t` (the World keeps no past: a Timeline does).
    */
-  body(id: string, t: number = this.time): BodyState {
+  body(id: string, t: number = this.now): BodyState {
     return this.stateOf(this.slotOf(id), t);
   }
 
   /** All bodies at time t (default: now), sorted by id. */
-  bodies(t: number = this.time): BodyState[] {
+  bodies(t: number = this.now): BodyState[] {
     const ids = [...this.index.keys()].sort();
     return ids.map((id) => this.stateOf(this.index.get(id) as number, t));
   }
@@ -263,11 +268,11 @@ export class World extends Placement {
   // ---- globals ------------------------------------------------------------------------------
 
   setGlobal(patch: { g?: number; gravity?: Vec2 }): void {
-    const g = requireNonNegativeBounded("g", patch.g ?? this.g);
+    const g = requireNonNegativeBounded("g", patch.g ?? this.frictionG);
     const gravity = requireVec("gravity", patch.gravity ?? this.gravity);
     for (const [id, s] of this.index)
       checkFrictionGravity(`bodies.${id}.mu`, this.store.mu[s] as number, gravity);
-    const now = this.time;
+    const now = this.now;
     const _b = this.store;
     const states = [...this.index.values()].map((s) => [
       s,
@@ -276,9 +281,9 @@ export class World extends Placement {
       this.vxAt(s, now),
       this.vyAt(s, now),
     ]);
-    this.g = g;
-    this.gx = gravity[0];
-    this.gy = gravity[1];
+    this.frictionG = g;
+    this.gravX = gravity[0];
+    this.gravY = gravity[1];
     for (const [s, x, y, vx, vy] of states)
       this.setMotion(s as number, now, x as number, y as number, vx as number, vy as number);
     this.dirty = true;
@@ -289,8 +294,8 @@ export class World extends Placement {
   advance(limits: AdvanceLimits = {}, onEvent?: (e: WorldEvent) => void): AdvanceResult {
     const untilTime = limits.untilTime ?? INF;
     const maxEvents = limits.maxEvents ?? INF;
-    if (Number.isNaN(untilTime) || untilTime < this.time)
-      throw new ChapgameError("untilTime", `must be >= the current time ${this.time}`);
+    if (Number.isNaN(untilTime) || untilTime < this.now)
+      throw new ChapgameError("untilTime", `must be >= the current time ${this.now}`);
     if (Number.isNaN(maxEvents) || maxEvents < 0)
       throw new ChapgameError("maxEvents", "must be a number >= 0");
     this.prepare();
@@ -301,7 +306,7 @@ export class World extends Placement {
       events += r;
     }
     if (events >= maxEvents && maxEvents !== INF) return { events, reason: "events" };
-    if (untilTime !== INF) this.time = untilTime;
+    if (untilTime !== INF) this.now = untilTime;
     return { events, reason: this.heap.size === 0 ? "idle" : "time" };
   }
 
