@@ -19,3 +19,20 @@ export function worldFromSpec(spec: SceneSpec, order?: (n: number) => number[]):
   }
   return w;
 }
+
+/**
+ * An insertion order for worldFromSpec: each call shuffles 0..n-1 (Fisher-Yates) with a 32-bit LCG
+ * seeded by `seed`, its state carried from call to call (lines, then points, then bodies).
+ */
+export function shuffledOrder(seed: number): (n: number) => number[] {
+  let s = seed;
+  return (n) => {
+    const a = [...Array(n).keys()];
+    for (let i = n - 1; i > 0; i--) {
+      s = (Math.imul(s, 1664525) + 1013904223) >>> 0;
+      const j = s % (i + 1);
+      [a[i], a[j]] = [a[j] as number, a[i] as number];
+    }
+    return a;
+  };
+}
