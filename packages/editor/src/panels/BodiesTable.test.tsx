@@ -45,3 +45,32 @@ describe("BodiesTable", () => {
     expect(h.editor.doc.actions[1]).toMatchObject({ time: 0.5, type: "updateBody", id: "ball", v: [2, -5] });
   });
 });
+
+describe("BodiesTable order", () => {
+  it("lists ids with numbers in natural order (ball2 before ball10)", async () => {
+    const h = testEditor();
+    const ids = ["ball10", "ball2", "ball1", "cue", "ball11", "ball9"];
+    await h.editor.loadScene(
+      {
+        format: "chapgame",
+        version: 1,
+        g: 0,
+        gravity: [0, 0],
+        actions: ids.map((id, i) => ({ time: 0, type: "addBody" as const, id, x: 10 * i, y: 0, r: 1, m: 1 })),
+      },
+      { undoable: false },
+    );
+    await settled(h.client);
+    render(
+      <EditorContext.Provider value={h.editor}>
+        <BodiesTable />
+      </EditorContext.Provider>,
+    );
+    const table = screen.getByRole("table", { name: "Bodies" });
+    await waitFor(() => expect(within(table).getAllByRole("row").length).toBe(7));
+    const shown = within(table)
+      .getAllByRole("button", { name: / id$/ })
+      .map((b) => b.textContent);
+    expect(shown).toEqual(["ball1", "ball2", "ball9", "ball10", "ball11", "cue"]);
+  });
+});

@@ -1,8 +1,8 @@
 /**
  * The Bodies table: id, x, y, vx, vy, |v|, r, m, μ of every body at the current time (live while
  * playing, refreshed a few times a second). Every cell is editable; an edit is an action at the
- * current time; refused values show the engine's message in place. Rows select bodies. Only the
- * rows in view are rendered (useRowWindow).
+ * current time; refused values show the engine's message in place. Rows select bodies, listed in
+ * natural id order (ball2 before ball10). Only the rows in view are rendered (useRowWindow).
  */
 import { type ReactNode, useRef } from "react";
 import { freeSpot } from "../canvas/freeSpot";
@@ -10,6 +10,7 @@ import { useEditor, useUi } from "../EditorContext";
 import { F_M, F_MU, F_R, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE } from "../remote/protocol";
 import { DeleteRowButton } from "./DeleteRowButton";
 import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
+import { naturalOrder } from "./naturalOrder";
 import { useLiveFrame } from "./useLiveFrame";
 import { spacerRow, useRowWindow } from "./useRowWindow";
 
@@ -56,8 +57,8 @@ export function BodiesTable() {
   // The bodies listed (the first MAX_ROWS and the selected one), then the window of them rendered.
   const listed: number[] = [];
   const n = frame?.ids.length ?? 0;
-  for (let i = 0; frame && i < n; i++)
-    if (listed.length < MAX_ROWS || frame.ids[i] === selectedId) listed.push(i);
+  for (const i of frame ? naturalOrder(frame.ids) : [])
+    if (listed.length < MAX_ROWS || frame!.ids[i] === selectedId) listed.push(i);
   const win = useRowWindow(scrollRef, listed.length);
   const rows: ReactNode[] = [spacerRow("before", win.before, COLUMNS.length + 2)];
   for (const i of frame ? listed.slice(win.start, win.end) : []) {
