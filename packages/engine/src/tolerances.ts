@@ -86,6 +86,11 @@ export const OVERLAP_REL = 1e-9;
  */
 export const MAGNITUDE_MAX = 1e30;
 export const RADIUS_MIN = 1e-30;
+/**
+ * Smallest non-zero speed component an edit may give (0 is allowed): the squared relative speed of
+ * a pair at 1e-170 underflows to 0 and the pair is taken for one that never meets.
+ */
+export const SPEED_MIN = 1e-30;
 
 /**
  * Cell side of the broad-phase grid relative to the largest diameter. Slightly above 1 so that a

@@ -68,4 +68,27 @@ describe("magnitudes", () => {
     w.addPoint("p", [MAGNITUDE_MAX, MAGNITUDE_MAX]);
     expect(w.bodies().length).toBe(2);
   });
+
+  it("refuses speeds too small to square (1e-170 underflowed: the pair passed through), accepts 0", () => {
+    const w = new World({ g: 0 });
+    expect(() => w.addBody("a", { x: -1.5, y: 0, r: 1, m: 1, vx: 1e-170 })).toThrow(
+      /^vx: must be 0 or at least 1e-30/,
+    );
+    w.addBody("a", { x: -1.5, y: 0, r: 1, m: 1, vx: 0 });
+    expect(() => w.updateBody("a", { vy: -1e-40 })).toThrow(/^vy: must be 0 or at least 1e-30/);
+    expect(w.body("a").vy).toBe(0);
+  });
+
+  it("a state the World reached beyond the bounds (gravity 1e30) can still be edited and rebuilt", () => {
+    const w = new World({ g: 0, gravity: [0, -MAGNITUDE_MAX] });
+    w.addBody("f", { x: 0, y: 0, r: 1, m: 1 });
+    w.advance({ untilTime: 2 });
+    expect(w.body("f").vy).toBe(-2 * MAGNITUDE_MAX);
+    w.updateBody("f", { m: 3 }); // only the patched field is held to the edit bounds
+    expect(w.body("f").m).toBe(3);
+    const m = w.motion("f");
+    const copy = new World({ g: 0, gravity: [0, -MAGNITUDE_MAX], time: 3 });
+    copy.addBodyMotion("f", { t0: m.t0, x0: m.x0, y0: m.y0, vx: m.vx, vy: m.vy, r: 1, m: 3, mu: 0 });
+    expect(copy.body("f", 3)).toStrictEqual(w.body("f", 3));
+  });
 });

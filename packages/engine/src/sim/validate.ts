@@ -2,7 +2,7 @@
  * Input checks of the World's edits. Each check throws ChapgameError naming the field and the
  * reason, before anything is changed.
  */
-import { MAGNITUDE_MAX, RADIUS_MIN } from "../tolerances.js";
+import { MAGNITUDE_MAX, RADIUS_MIN, SPEED_MIN } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
 import type { Vec2 } from "./types.js";
 
@@ -26,6 +26,17 @@ export function requireBounded(path: string, v: unknown): number {
     throw new ChapgameError(
       path,
       `must be at most ${MAGNITUDE_MAX} in size (got ${x}): larger values overflow the contact polynomials`,
+    );
+  return x;
+}
+
+/** A velocity component given by an edit: 0, or between SPEED_MIN and MAGNITUDE_MAX in size. */
+export function requireVelocity(path: string, v: unknown): number {
+  const x = requireBounded(path, v);
+  if (x !== 0 && Math.abs(x) < SPEED_MIN)
+    throw new ChapgameError(
+      path,
+      `must be 0 or at least ${SPEED_MIN} in size (got ${x}): smaller speeds underflow the contact polynomials`,
     );
   return x;
 }

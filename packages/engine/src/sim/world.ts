@@ -28,6 +28,7 @@ import {
   requireNonNegativeBounded,
   requireRadius,
   requireVec,
+  requireVelocity,
 } from "./validate.js";
 
 const INF = Number.POSITIVE_INFINITY;
@@ -77,8 +78,8 @@ export class World extends Placement {
     const r = requireRadius("r", init.r);
     const m = requireMass("m", init.m);
     const mu = requireNonNegativeBounded("mu", init.mu ?? 0);
-    const vx = requireBounded("vx", init.vx ?? 0);
-    const vy = requireBounded("vy", init.vy ?? 0);
+    const vx = requireVelocity("vx", init.vx ?? 0);
+    const vy = requireVelocity("vy", init.vy ?? 0);
     checkFrictionGravity("mu", mu, this.gravity);
     this.prepareGridFor(x, y, r);
     this.checkOverlap(x, y, r, -1);
@@ -98,10 +99,12 @@ export class World extends Placement {
     if (this.index.has(id)) throw new ChapgameError("id", `a body with id '${id}' already exists`);
     const t0 = requireFinite("t0", init.t0);
     if (t0 > this.now) throw new ChapgameError("t0", `must be <= the world's time ${this.now}`);
-    const x0 = requireBounded("x0", init.x0);
-    const y0 = requireBounded("y0", init.y0);
-    const vx = requireBounded("vx", init.vx);
-    const vy = requireBounded("vy", init.vy);
+    // A motion the World computed (a Timeline restart) may have left the bounds edits keep to
+    // (gravity speeds a body up without limit): only finiteness is required of it.
+    const x0 = requireFinite("x0", init.x0);
+    const y0 = requireFinite("y0", init.y0);
+    const vx = requireFinite("vx", init.vx);
+    const vy = requireFinite("vy", init.vy);
     const r = requireRadius("r", init.r);
     const m = requireMass("m", init.m);
     const mu = requireNonNegativeBounded("mu", init.mu ?? 0);
@@ -113,8 +116,8 @@ export class World extends Placement {
         `the motion stops at t=${restoredLaw.tEnd}, before the world's time ${this.now}: give the resting motion that starts at the stop`,
       );
     // Where the body is now, evaluated as xAt/yAt will evaluate it.
-    const x = requireBounded("x0", positionAt(t0, x0, vx, restoredLaw.ax, this.now));
-    const y = requireBounded("y0", positionAt(t0, y0, vy, restoredLaw.ay, this.now));
+    const x = requireFinite("x0", positionAt(t0, x0, vx, restoredLaw.ax, this.now));
+    const y = requireFinite("y0", positionAt(t0, y0, vy, restoredLaw.ay, this.now));
     this.prepareGridFor(x, y, r);
     this.checkOverlap(x, y, r, -1, true);
     this.insertBody(id, r, m, mu, t0, x0, y0, vx, vy, x, y);
@@ -161,10 +164,12 @@ export class World extends Placement {
     const s = this.slotOf(id);
     const b = this.store;
     const now = this.now;
-    const x = requireBounded("x", patch.x ?? this.xAt(s, now));
-    const y = requireBounded("y", patch.y ?? this.yAt(s, now));
-    const vx = requireBounded("vx", patch.vx ?? this.vxAt(s, now));
-    const vy = requireBounded("vy", patch.vy ?? this.vyAt(s, now));
+    // Only the fields the patch gives are held to the edit bounds: the body's own current state
+    // may have left them (gravity speeds a body up without limit).
+    const x = patch.x !== undefined ? requireBounded("x", patch.x) : this.xAt(s, now);
+    const y = patch.y !== undefined ? requireBounded("y", patch.y) : this.yAt(s, now);
+    const vx = patch.vx !== undefined ? requireVelocity("vx", patch.vx) : this.vxAt(s, now);
+    const vy = patch.vy !== undefined ? requireVelocity("vy", patch.vy) : this.vyAt(s, now);
     const r = requireRadius("r", patch.r ?? b.r[s]);
     const m = requireMass("m", patch.m ?? b.m[s]);
     const mu = requireNonNegativeBounded("mu", patch.mu ?? b.mu[s]);
