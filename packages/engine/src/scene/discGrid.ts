@@ -66,7 +66,14 @@ export class DiscGrid {
     const x1 = Math.floor((x + reach) / this.cell);
     const y0 = Math.floor((y - reach) / this.cell);
     const y1 = Math.floor((y + reach) / this.cell);
-    if ((x1 - x0 + 1) * (y1 - y0 + 1) > this.discs.size) {
+    // Far from the origin (cell numbers beyond 2^53) cx++ no longer moves and x0 === x1 even for a
+    // wide box: scan every disc then, as for a box wider than the discs are many.
+    const exact =
+      Number.isSafeInteger(x0) &&
+      Number.isSafeInteger(x1) &&
+      Number.isSafeInteger(y0) &&
+      Number.isSafeInteger(y1);
+    if (!exact || x1 - x0 + 1 > this.discs.size || (x1 - x0 + 1) * (y1 - y0 + 1) > this.discs.size) {
       for (const [id, d] of this.discs) test(id, d);
       return best;
     }
