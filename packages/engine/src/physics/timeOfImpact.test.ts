@@ -66,3 +66,17 @@ describe("contact time does not depend on when it is evaluated", () => {
     expect(out[0]).toBe(0);
   });
 });
+
+describe("far apart", () => {
+  it("a pair 1e8 to 1e12 contact distances apart still meets (the discriminant cancelled to noise: review)", () => {
+    // Discs of radius 0.5 (contact distance 1) at distance d, closing at speed 1: contact at d - 1.
+    for (const d of [1e7, 1e8, 1e10, 1e12]) {
+      const tau = discDiscTime(d, 0, -1, 0, 0, 0, 1, 0, INF);
+      expect(Math.abs(tau - (d - 1)), `d = ${d}`).toBeLessThanOrEqual(4e-16 * d);
+    }
+    // Off the line of centres by 0.9 (still hitting) and by 1.1 (missing).
+    const hit = discDiscTime(1e8, 0.9, -1, 0, 0, 0, 1, 0, INF);
+    expect(Math.abs(hit - (1e8 - Math.sqrt(1 - 0.81)))).toBeLessThanOrEqual(1e-7);
+    expect(discDiscTime(1e8, 1.1, -1, 0, 0, 0, 1, 0, INF)).toBe(INF);
+  });
+});

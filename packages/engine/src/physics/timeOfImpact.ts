@@ -47,7 +47,12 @@ export function discDiscTime(
   const uu = ux * ux + uy * uy;
   if (wx === 0 && wy === 0) {
     if (uu === 0) return Number.POSITIVE_INFINITY;
-    if (quadraticFastPath) return firstDownCrossingQuadratic(c0, c1, uu, lo, hi);
+    if (quadraticFastPath) {
+      // c1^2 - 4 uu c0 = 4 (uu R^2 - (d x u)^2) (Lagrange's identity), free of the cancellation of
+      // two terms of size |d|^2 |u|^2 that loses every digit once the gap is ~1e8 contact distances.
+      const cross = dx * uy - dy * ux;
+      return firstDownCrossingQuadratic(c0, c1, uu, lo, hi, true, 4 * (uu * R * R - cross * cross));
+    }
   }
   const c2 = uu + (dx * wx + dy * wy);
   const c3 = ux * wx + uy * wy;
@@ -125,7 +130,8 @@ function crossingUnderWay(lo: number, c1: number, c2: number, c3: number, c4: nu
  * First tau in [lo, hi] where h(tau) = c0 + c1 tau + c2 tau^2 crosses zero downwards. When h(lo) <= 0
  * and h is decreasing there (or resting with h'' < 0) and `immediate` is true, the contact is under
  * way: its downward root (at or before lo up to rounding; the caller clamps), or lo when h has no
- * root. Roots use the cancellation-free closed form.
+ * root. Roots use the cancellation-free closed form; `discriminant`, when given, is c1^2 - 4 c2 c0
+ * computed by the caller in a form that does not cancel.
  */
 export function firstDownCrossingQuadratic(
   c0: number,
@@ -134,20 +140,21 @@ export function firstDownCrossingQuadratic(
   lo: number,
   hi: number,
   immediate = true,
+  discriminant = Number.NaN,
 ): number {
   if (!(lo <= hi)) return Number.POSITIVE_INFINITY;
   const hLo = c0 + lo * (c1 + lo * c2);
   const dLo = c1 + 2 * c2 * lo;
   // Touching and approaching (or resting under an acceleration into the contact) at lo.
   if (hLo <= 0 && immediate && (dLo < 0 || (dLo === 0 && c2 < 0)))
-    return quadraticUnderWay(c0, c1, c2, lo, hi);
+    return quadraticUnderWay(c0, c1, c2, lo, hi, discriminant);
   // Convex and not decreasing at lo: it never comes down again (the common, cheap rejection).
   if (c2 >= 0 && dLo >= 0) return Number.POSITIVE_INFINITY;
   if (c2 === 0) {
     const r = -c0 / c1;
     return r >= lo && r <= hi ? r : Number.POSITIVE_INFINITY;
   }
-  const disc = c1 * c1 - 4 * c2 * c0;
+  const disc = discriminant === discriminant ? discriminant : c1 * c1 - 4 * c2 * c0;
   if (disc < 0) return Number.POSITIVE_INFINITY;
   const sq = Math.sqrt(disc);
   const q = c1 >= 0 ? -0.5 * (c1 + sq) : -0.5 * (c1 - sq);
@@ -175,12 +182,19 @@ export function firstDownCrossingQuadratic(
  * A contact under way at lo (h(lo) <= 0, approaching): the downward root of h, at or before lo up
  * to rounding (there is only one), or lo when h has none (it started touching).
  */
-function quadraticUnderWay(c0: number, c1: number, c2: number, lo: number, hi: number): number {
+function quadraticUnderWay(
+  c0: number,
+  c1: number,
+  c2: number,
+  lo: number,
+  hi: number,
+  discriminant: number,
+): number {
   if (c2 === 0) {
     const r = -c0 / c1; // c1 < 0 here
     return r <= hi ? r : lo;
   }
-  const disc = c1 * c1 - 4 * c2 * c0;
+  const disc = discriminant === discriminant ? discriminant : c1 * c1 - 4 * c2 * c0;
   if (disc < 0) return lo;
   const sq = Math.sqrt(disc);
   const q = c1 >= 0 ? -0.5 * (c1 + sq) : -0.5 * (c1 - sq);

@@ -91,4 +91,17 @@ describe("magnitudes", () => {
     copy.addBodyMotion("f", { t0: m.t0, x0: m.x0, y0: m.y0, vx: m.vx, vy: m.vy, r: 1, m: 3, mu: 0 });
     expect(copy.body("f", 3)).toStrictEqual(w.body("f", 3));
   });
+
+  it("a disc flying 1e8 contact distances to a resting one hits it (review: it flew through, grid on or off)", () => {
+    for (const broadPhase of [true, false]) {
+      const w = new World({ g: 0, optimizations: { broadPhase } });
+      w.addBody("a", { x: 0, y: 0, r: 0.5, m: 1, vx: 1 });
+      w.addBody("b", { x: 1e8, y: 0, r: 0.5, m: 1 });
+      const times: number[] = [];
+      w.advance({ untilTime: 2e8 }, (e) => times.push(e.time));
+      expect(times.length).toBe(1);
+      expect(Math.abs((times[0] as number) - (1e8 - 1))).toBeLessThanOrEqual(1e-7);
+      expect(w.body("b", 2e8).x).toBeCloseTo(2e8 + 1, 6); // b takes a's speed at t = 1e8 - 1
+    }
+  });
 });
