@@ -154,7 +154,7 @@ export function firstDownCrossingQuadratic(
     const r = -c0 / c1;
     return r >= lo && r <= hi ? r : Number.POSITIVE_INFINITY;
   }
-  const disc = discriminant === discriminant ? discriminant : c1 * c1 - 4 * c2 * c0;
+  const disc = Number.isNaN(discriminant) ? c1 * c1 - 4 * c2 * c0 : discriminant;
   if (disc < 0) return Number.POSITIVE_INFINITY;
   const sq = Math.sqrt(disc);
   const q = c1 >= 0 ? -0.5 * (c1 + sq) : -0.5 * (c1 - sq);
@@ -194,7 +194,7 @@ function quadraticUnderWay(
     const r = -c0 / c1; // c1 < 0 here
     return r <= hi ? r : lo;
   }
-  const disc = discriminant === discriminant ? discriminant : c1 * c1 - 4 * c2 * c0;
+  const disc = Number.isNaN(discriminant) ? c1 * c1 - 4 * c2 * c0 : discriminant;
   if (disc < 0) return lo;
   const sq = Math.sqrt(disc);
   const q = c1 >= 0 ? -0.5 * (c1 + sq) : -0.5 * (c1 - sq);
