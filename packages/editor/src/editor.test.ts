@@ -2,6 +2,7 @@ import { newtonsCradle } from "@chapgame/engine";
 import { describe, expect, it } from "vitest";
 import { F_FROM, F_UNTIL, F_VX, F_X, FRAME_STRIDE } from "./remote/protocol";
 import { settled, testEditor } from "./testing/harness";
+import { crushScene } from "./testing/scenes";
 
 /** Newton's cradle: the striker (x = −6, v = 4) hits c1 (x = 0) at t = 1 exactly. */
 async function cradle() {
@@ -103,29 +104,7 @@ describe("Editor over the worker protocol", () => {
   it("a computation the engine refuses to continue (Zeno) ends with its message shown", async () => {
     const h = testEditor();
     h.editor.ui.setState((s) => ({ calc: { ...s.calc, useTime: false, useEvents: false } }));
-    const err = await h.editor.loadScene(
-      {
-        format: "chapgame",
-        version: 1,
-        g: 9.81,
-        gravity: [0, 0],
-        actions: [
-          { time: 0, type: "addLine", id: "wall", p1: [0, -5], p2: [0, 5], kind: "line" },
-          { time: 0, type: "addBody", id: "small", x: 2, y: 0, r: 1, m: 1 },
-          {
-            time: 0,
-            type: "addBody",
-            id: "crusher",
-            x: 5,
-            y: 0,
-            r: 1,
-            m: Number.POSITIVE_INFINITY,
-            v: [-1, 0],
-          },
-        ],
-      },
-      { undoable: false },
-    );
+    const err = await h.editor.loadScene(crushScene(), { undoable: false });
     expect(err).toBeNull();
     await settled(h.client, 30_000);
     expect(h.client.getSnapshot().stopped).toMatch(/Zeno/);

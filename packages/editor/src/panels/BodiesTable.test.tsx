@@ -10,6 +10,16 @@ import { BodiesTable } from "./BodiesTable";
 
 afterEach(cleanup);
 
+/** The Bodies table of `editor`, rendered. */
+function renderTable(editor: ReturnType<typeof testEditor>["editor"]): HTMLElement {
+  render(
+    <EditorContext.Provider value={editor}>
+      <BodiesTable />
+    </EditorContext.Provider>,
+  );
+  return screen.getByRole("table", { name: "Bodies" });
+}
+
 describe("BodiesTable", () => {
   it("opening a cell while playing pauses; the velocity edit keeps vy of the paused time", async () => {
     const h = testEditor();
@@ -24,12 +34,7 @@ describe("BodiesTable", () => {
       { undoable: false },
     );
     await settled(h.client);
-    render(
-      <EditorContext.Provider value={h.editor}>
-        <BodiesTable />
-      </EditorContext.Provider>,
-    );
-    const table = screen.getByRole("table", { name: "Bodies" });
+    const table = renderTable(h.editor);
     const cell = (name: string) => within(table).getByLabelText(name);
     await waitFor(() => expect(cell("ball vy").textContent).toBe("0"));
     act(() => h.editor.ui.setState({ playing: true, t: 0.5 }));
@@ -61,12 +66,7 @@ describe("BodiesTable order", () => {
       { undoable: false },
     );
     await settled(h.client);
-    render(
-      <EditorContext.Provider value={h.editor}>
-        <BodiesTable />
-      </EditorContext.Provider>,
-    );
-    const table = screen.getByRole("table", { name: "Bodies" });
+    const table = renderTable(h.editor);
     await waitFor(() => expect(within(table).getAllByRole("row").length).toBe(7));
     const shown = within(table)
       .getAllByRole("button", { name: / id$/ })

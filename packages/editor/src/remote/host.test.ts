@@ -1,6 +1,7 @@
 import { dilutedGas, Timeline } from "@chapgame/engine";
 import { describe, expect, it } from "vitest";
 import type { SceneFile, Until } from "../engineTypes";
+import { crushScene } from "../testing/scenes";
 import { TimelineHost } from "./host";
 import type { Frame, HostMessage, TimelineInfo } from "./protocol";
 import type { TimelineLike } from "./timelineLike";
@@ -72,27 +73,7 @@ describe("TimelineHost while computing", () => {
 
 describe("TimelineHost when the engine refuses to go on", () => {
   it("a Zeno state met while computing ends the computation with its message; the history stays readable", () => {
-    const zeno: SceneFile = {
-      format: "chapgame",
-      version: 1,
-      g: 9.81,
-      gravity: [0, 0],
-      actions: [
-        { time: 0, type: "addLine", id: "wall", p1: [0, -5], p2: [0, 5], kind: "line" },
-        { time: 0, type: "addBody", id: "small", x: 2, y: 0, r: 1, m: 1 },
-        // an immovable disc crushes the small one against the wall: events pile up before t = 2
-        {
-          time: 0,
-          type: "addBody",
-          id: "crusher",
-          x: 5,
-          y: 0,
-          r: 1,
-          m: Number.POSITIVE_INFINITY,
-          v: [-1, 0],
-        },
-      ],
-    };
+    const zeno = crushScene();
     const tasks: (() => void)[] = [];
     const sent: HostMessage[] = [];
     let clock = 0;
