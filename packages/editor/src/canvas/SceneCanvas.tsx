@@ -3,37 +3,19 @@
  * component once; time, view and selection are read from the store each frame). Each animation frame
  * draws the current time: the latest Frame from the worker evaluated at that time (frameAt.ts), so
  * playback is smooth even when the worker answers late.
- * Pointer gestures per tool: select/move/pan, velocity drag, cue strike, add disc/line/point.
- * Picking up a disc (move, velocity) pauses playback; a cue strike does not (it strikes a moving disc).
+ * Pointer gestures are gestures.ts's; Escape (or a cancelled pointer) drops a drag under way.
  */
 import { useEffect, useRef } from "react";
 import { useEditor } from "../EditorContext";
-import type { Vec2 } from "../engineTypes";
 import { motionWindow } from "../playback";
-import { F_R, F_X, F_Y, FRAME_STRIDE, type Frame } from "../remote/protocol";
-import { ARROW_SECONDS, drawFrame, type Overlay } from "./draw";
+import type { Frame } from "../remote/protocol";
+import { drawFrame } from "./draw";
 import { drawStats } from "./drawStats";
+import { fitFrame } from "./fitScene";
 import { emptyFrame, frameAt } from "./frameAt";
-import { bodyIndex, frameBounds, hitTest } from "./hitTest";
+import { CanvasGestures } from "./gestures";
 import { TrailRecorder } from "./trails";
-import { fit, pan, type Size, toWorld, zoomAt } from "./viewTransform";
-
-const CLICK_SLOP_PX = 4;
-const HIT_PX = 5;
-const NEW_DISC_PX = 18;
-
-type Gesture =
-  | { kind: "pan"; last: [number, number] }
-  | { kind: "move"; id: string; grab: Vec2; r: number; at: Vec2 }
-  | { kind: "velocity"; id: string; from: Vec2; to: Vec2 }
-  | { kind: "line"; p1: Vec2; p2: Vec2 };
-
-/** A radius that looks like `px` pixels at this scale, rounded to two significant digits. */
-function niceRadius(px: number, scale: number): number {
-  const r = px / scale;
-  const p = 10 ** (Math.floor(Math.log10(r)) - 1);
-  return Math.round(r / p) * p;
-}
+import { type Size, zoomAt } from "./viewTransform";
 
 export function SceneCanvas() {
   const editor = useEditor();
@@ -57,14 +39,21 @@ export function SceneCanvas() {
     let drawn: Frame | null = null;
     const shown = emptyFrame();
     const held = { count: 0 };
-    let overlay: Overlay | null = null;
-    let gesture: Gesture | null = null;
-    let downAt: [number, number] = [0, 0];
     let fitPending = ui.getState().fitRequest > 0;
     // The view is the fitted one until the reader zooms or pans: while it is, a resized canvas
     // (window, layout) is fitted again rather than showing a corner of the scene.
     let fitted = fitPending;
     const trails = new TrailRecorder();
+    const gestures = new CanvasGestures(editor, {
+      frame: () => drawn ?? client.latestFrame,
+      size: () => size,
+      viewMoved: () => {
+        fitted = false;
+      },
+      redraw: () => {
+        dirty = true;
+      },
+    });
 
     let dpr = 1;
     const resize = () => {
@@ -102,7 +91,7 @@ export function SceneCanvas() {
       if (fitPending && base && client.hasFrame(s.t)) {
         fitPending = false;
         fitted = true;
-        ui.setState({ view: fit(frameBounds(base), size) });
+        ui.setState({ view: fitFrame(base, size) });
         return;
       }
       const moved = base !== drawnBase || s.t !== drawnT;
@@ -120,7 +109,7 @@ export function SceneCanvas() {
         selection: s.selection,
         highlight: new Set(s.highlight),
         trails: s.trails ? trails.paths : null,
-        overlay,
+        overlay: gestures.overlay,
         pixelRatio: dpr,
       });
       drawStats.draws++;
@@ -135,7 +124,6 @@ export function SceneCanvas() {
       const r = canvas.getBoundingClientRect();
       return [e.clientX - r.left, e.clientY - r.top];
     };
-    const world = (p: [number, number]): Vec2 => toWorld(ui.getState().view, size, p[0], p[1]);
 
     const onWheel = (e: WheelEvent) => {
       e.preventDefault();
@@ -144,119 +132,37 @@ export function SceneCanvas() {
       ui.setState((s) => ({ view: zoomAt(s.view, size, sx, sy, Math.exp(-e.deltaY * 0.0015)) }));
     };
 
+    let pointerId: number | null = null;
     const onDown = (e: PointerEvent) => {
       if (e.button !== 0) return;
       canvas.setPointerCapture(e.pointerId);
-      const p = local(e);
-      downAt = p;
-      const s = ui.getState();
-      const w = world(p);
-      const f = drawn ?? client.latestFrame;
-      const hit = hitTest(f, w, HIT_PX / s.view.scale);
-      const tool = s.tool;
-      if (tool === "line" || tool === "ray" || tool === "segment") {
-        gesture = { kind: "line", p1: w, p2: w };
-        return;
-      }
-      if (hit?.kind === "body" && f && (tool === "velocity" || tool === "move")) {
-        // Dragging a disc pauses playback: the edit applies at the time the disc was picked up,
-        // where the frame that gives its place and velocity was drawn.
-        if (s.playing) ui.setState({ playing: false });
-        const i = bodyIndex(f, hit.id) * FRAME_STRIDE;
-        const c: Vec2 = [f.data[i + F_X]!, f.data[i + F_Y]!];
-        if (tool === "velocity" || (tool === "move" && e.shiftKey)) {
-          gesture = { kind: "velocity", id: hit.id, from: c, to: c };
-          return;
-        }
-        if (tool === "move") {
-          gesture = {
-            kind: "move",
-            id: hit.id,
-            grab: [w[0] - c[0], w[1] - c[1]],
-            r: f.data[i + F_R]!,
-            at: c,
-          };
-          return;
-        }
-      }
-      // Anything else pans when dragged and is a click (select, strike, add) when not.
-      gesture = { kind: "pan", last: p };
+      pointerId = e.pointerId;
+      gestures.down(local(e), e.shiftKey);
     };
-
-    const onMove = (e: PointerEvent) => {
-      if (!gesture) return;
-      const p = local(e);
-      const w = world(p);
-      if (gesture.kind === "pan") {
-        const [lx, ly] = gesture.last;
-        gesture.last = p;
-        fitted = false;
-        ui.setState((s) => ({ view: pan(s.view, p[0] - lx, p[1] - ly) }));
-      } else if (gesture.kind === "move") {
-        gesture.at = [w[0] - gesture.grab[0], w[1] - gesture.grab[1]];
-        overlay = { kind: "disc", x: gesture.at[0], y: gesture.at[1], r: gesture.r };
-        dirty = true;
-      } else if (gesture.kind === "velocity") {
-        gesture.to = w;
-        overlay = { kind: "arrow", from: gesture.from, to: w };
-        dirty = true;
-      } else if (gesture.kind === "line") {
-        gesture.p2 = w;
-        const lineKind = ui.getState().tool as "line" | "ray" | "segment";
-        overlay = { kind: "line", p1: gesture.p1, p2: w, lineKind };
-        dirty = true;
-      }
-    };
-
+    const onMove = (e: PointerEvent) => gestures.move(local(e));
     const onUp = (e: PointerEvent) => {
-      const g = gesture;
-      gesture = null;
-      overlay = null;
-      dirty = true;
-      if (!g) return;
-      const p = local(e);
-      const moved = Math.hypot(p[0] - downAt[0], p[1] - downAt[1]) > CLICK_SLOP_PX;
-      const s = ui.getState();
-      const w = world(p);
-      if (!moved) {
-        click(w, s.tool);
-        return;
-      }
-      if (g.kind === "move") void editor.moveBody(g.id, g.at[0], g.at[1]);
-      else if (g.kind === "velocity") {
-        const v: Vec2 = [(g.to[0] - g.from[0]) / ARROW_SECONDS, (g.to[1] - g.from[1]) / ARROW_SECONDS];
-        void editor.giveVelocity(g.id, v);
-      } else if (g.kind === "line") {
-        void editor.addLine(g.p1, g.p2, s.tool as "line" | "ray" | "segment");
-      }
+      pointerId = null;
+      gestures.up(local(e));
     };
-
-    const click = (w: Vec2, tool: string) => {
-      const s = ui.getState();
-      const f = drawn ?? client.latestFrame;
-      const hit = hitTest(f, w, HIT_PX / s.view.scale);
-      if (tool === "disc" && !hit) {
-        void editor.addBody(w[0], w[1], niceRadius(NEW_DISC_PX, s.view.scale));
-        return;
-      }
-      if (tool === "point" && !hit) {
-        void editor.addPoint(w);
-        return;
-      }
-      if (tool === "cue" && hit?.kind === "body" && f) {
-        const i = bodyIndex(f, hit.id) * FRAME_STRIDE;
-        ui.setState({ selection: hit });
-        void editor.strike(hit.id, [f.data[i + F_X]!, f.data[i + F_Y]!], w);
-        return;
-      }
-      ui.setState({ selection: hit, highlight: [] });
+    /** Escape while dragging (or the browser cancelling the pointer): the drag applies nothing. */
+    const cancel = () => {
+      if (!gestures.cancel()) return false;
+      if (pointerId !== null && canvas.hasPointerCapture(pointerId)) canvas.releasePointerCapture(pointerId);
+      pointerId = null;
+      return true;
+    };
+    const onKey = (e: KeyboardEvent) => {
+      if (e.key !== "Escape" || !cancel()) return;
+      e.preventDefault();
+      e.stopImmediatePropagation();
     };
 
     canvas.addEventListener("wheel", onWheel, { passive: false });
     canvas.addEventListener("pointerdown", onDown);
     canvas.addEventListener("pointermove", onMove);
     canvas.addEventListener("pointerup", onUp);
-    canvas.addEventListener("pointercancel", onUp);
+    canvas.addEventListener("pointercancel", cancel);
+    window.addEventListener("keydown", onKey, { capture: true });
     return () => {
       cancelAnimationFrame(raf);
       ro?.disconnect();
@@ -265,7 +171,8 @@ export function SceneCanvas() {
       canvas.removeEventListener("pointerdown", onDown);
       canvas.removeEventListener("pointermove", onMove);
       canvas.removeEventListener("pointerup", onUp);
-      canvas.removeEventListener("pointercancel", onUp);
+      canvas.removeEventListener("pointercancel", cancel);
+      window.removeEventListener("keydown", onKey, { capture: true });
     };
   }, [editor]);
 

@@ -43,4 +43,12 @@ describe("view transform", () => {
     expect(fit(null, size)).toEqual({ cx: 0, cy: 0, scale: 1 });
     expect(fit(include(null, 5, 6), size)).toEqual({ cx: 5, cy: 6, scale: 1 });
   });
+
+  it("fit with a minimum extent shows at least that many world units along the longer side", () => {
+    const b = include(null, 0, 0, 1); // a disc of radius 1
+    expect(fit(b, size, 20, 10)).toEqual({ cx: 0, cy: 0, scale: 76 });
+    // bounds wider than the minimum are fitted as without it
+    const wide = include(include(null, -100, 0), 300, 50);
+    expect(fit(wide, size, 20, 10)).toEqual(fit(wide, size, 20));
+  });
 });

@@ -44,8 +44,12 @@ export interface Bounds {
   maxY: number;
 }
 
-/** The view that shows `b` whole with `margin` CSS pixels around it (a point gets a default scale). */
-export function fit(b: Bounds | null, size: Size, margin = 24): View {
+/**
+ * The view that shows `b` whole with `margin` CSS pixels around it. The view spans at least
+ * `minExtent` world units along its longer side (so one small disc is not blown up to fill it);
+ * a point with no minimum extent gets a default scale, and no bounds the default view.
+ */
+export function fit(b: Bounds | null, size: Size, margin = 24, minExtent = 0): View {
   if (!b || !Number.isFinite(b.minX + b.maxX + b.minY + b.maxY)) return { cx: 0, cy: 0, scale: 1 };
   const w = Math.max(b.maxX - b.minX, 0);
   const h = Math.max(b.maxY - b.minY, 0);
@@ -55,6 +59,7 @@ export function fit(b: Bounds | null, size: Size, margin = 24): View {
     w > 0 ? availW / w : Number.POSITIVE_INFINITY,
     h > 0 ? availH / h : Number.POSITIVE_INFINITY,
   );
+  if (minExtent > 0) scale = Math.min(scale, Math.max(availW, availH) / minExtent);
   if (!Number.isFinite(scale)) scale = 1;
   scale = Math.min(MAX_SCALE, Math.max(MIN_SCALE, scale));
   return { cx: (b.minX + b.maxX) / 2, cy: (b.minY + b.maxY) / 2, scale };

@@ -1,0 +1,113 @@
+/**
+ * End-to-end: what a demanding scene author meets on the canvas and around it, in Debian's
+ * Chromium: Fit with a lone disc, Escape cancelling a drag.
+ */
+import type { Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { openEditor, type Session, screenshot } from "./harness.js";
+
+const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
+
+let s: Session;
+let page: Page;
+
+const LONELY = {
+  format: "chapgame",
+  version: 1,
+  g: 9.81,
+  gravity: [0, 0],
+  actions: [{ time: 0, type: "addBody", id: "lonely", x: 0, y: 0, r: 1, m: 1 }],
+};
+
+type PageEditor = {
+  doc: { actions: unknown[] };
+  ui: { getState(): { view: { cx: number; cy: number; scale: number }; playing: boolean } };
+  history: { getState(): { past: unknown[] } };
+  loadScene(scene: unknown, options?: object): Promise<string | null>;
+};
+
+/** Loads a scene through the page's editor (fitted, like a preset) and waits for its first body row. */
+async function load(scene: unknown, id: string) {
+  await page.evaluate(async (sc) => {
+    await (window as unknown as { chapgame: PageEditor }).chapgame.loadScene(sc);
+  }, scene);
+  await page.getByRole("table", { name: "Bodies" }).getByLabel(`${id} x`, { exact: true }).waitFor();
+}
+
+const editorState = () =>
+  page.evaluate(() => {
+    const ed = (window as unknown as { chapgame: PageEditor }).chapgame;
+    return {
+      actions: ed.doc.actions.length,
+      past: ed.history.getState().past.length,
+      view: ed.ui.getState().view,
+      playing: ed.ui.getState().playing,
+    };
+  });
+
+/** Where world point (x, y) is on the page at the current view. */
+async function onPage(x: number, y: number) {
+  const box = (await page.getByTestId("scene-canvas").boundingBox())!;
+  const { view } = await editorState();
+  return {
+    x: box.x + box.width / 2 + (x - view.cx) * view.scale,
+    y: box.y + box.height / 2 - (y - view.cy) * view.scale,
+    scale: view.scale,
+    width: box.width,
+  };
+}
+
+beforeAll(async () => {
+  s = await openEditor();
+  page = s.page;
+});
+
+afterAll(async () => {
+  await s?.close();
+});
+
+describe("scene author", () => {
+  it("Fit with a lone disc shows a disc in a space (a fifth of the canvas wide), not a disc filling it", async () => {
+    await load(LONELY, "lonely");
+    await page.getByRole("button", { name: "Fit", exact: true }).click();
+    await poll(async () => {
+      const p = await onPage(0, 0);
+      return (2 * p.scale) / (p.width - 48);
+    }).toBeCloseTo(0.2, 6);
+    await screenshot(page, "14-fit-lone-disc");
+  });
+
+  it("Escape during a drag (disc, velocity handle, line end) restores the state and records nothing", async () => {
+    await load(LONELY, "lonely");
+    const before = await editorState();
+    for (const tool of ["Move", "Velocity", "Segment"]) {
+      await page.getByRole("button", { name: tool, exact: true }).click();
+      const c = await onPage(0, 0);
+      await page.mouse.move(c.x, c.y);
+      await page.mouse.down();
+      await page.mouse.move(c.x + 60, c.y - 40, { steps: 6 });
+      await page.keyboard.press("Escape");
+      await page.mouse.move(c.x + 90, c.y - 60, { steps: 3 });
+      await page.mouse.up();
+      await page.waitForTimeout(300); // an edit would be in the worker's hands by now
+      const after = await editorState();
+      expect(after.actions, tool).toBe(before.actions);
+      expect(after.past, tool).toBe(before.past);
+      expect(after.view, tool).toEqual(before.view);
+    }
+    const bodies = page.getByRole("table", { name: "Bodies" });
+    expect(await bodies.getByLabel("lonely x", { exact: true }).textContent()).toBe("0");
+    expect(await bodies.getByLabel("lonely vx", { exact: true }).textContent()).toBe("0");
+    expect(await page.getByRole("table", { name: "Lines" }).getByRole("row").count()).toBe(1);
+    // the control: the same move drag without Escape moves the disc
+    await page.getByRole("button", { name: "Move", exact: true }).click();
+    const c = await onPage(0, 0);
+    await page.mouse.move(c.x, c.y);
+    await page.mouse.down();
+    await page.mouse.move(c.x + 60, c.y, { steps: 6 });
+    await page.mouse.up();
+    await poll(async () =>
+      Number(await bodies.getByLabel("lonely x", { exact: true }).textContent()),
+    ).toBeCloseTo(60 / c.scale, 1);
+  });
+});
