@@ -69,6 +69,17 @@ export const ROOTS_HOT_MODEL_SPAN = 2 ** -12;
 // ---- simulation (owned by src/sim and src/physics) -----------------------------------------
 // (the simulation appends its named tolerances here)
 
+/**
+ * Reach, in contact distances, over which a contact polynomial is solved as it stands
+ * (physics/farContact.ts). The gap |d(t)|^2 - R^2 of a pair whose relative path spans a length M
+ * has terms of size M^2 that cancel to R^2 at the contact, so its rounding error is about
+ * UNIT_ROUNDOFF * M^2: with M up to 1024 R that is below 1e-10 R^2 (well inside OVERLAP_REL). Past
+ * this reach the far part of the path is cut at the extrema of the distance and each approach is
+ * re-anchored at its closest point, where the terms are of size R again (a disc dropped from 1e8
+ * radii onto a point was missed without this).
+ */
+export const FAR_CONTACT_REACH = 1024;
+
 // ---- scene validation (owned by src/scene and src/timeline) ---------------------------------
 /** Relative slack when refusing overlaps at an edit: two discs overlap when their distance is below
  *  (r1 + r2)(1 − OVERLAP_REL) (a disc and a line or point: below r(1 − OVERLAP_REL)). Touching bodies

@@ -19,11 +19,8 @@
  *   disc–line:               h(tau) = ±s(tau) - r, s the signed distance to the line (degree <= 2)
  */
 
-import { evalPoly, realRootsInto } from "../roots/realRoots.js";
-
-const coeffs = new Float64Array(5);
-/** Roots of the last quartic solved (reused: no allocation per prediction). */
-const roots: number[] = [];
+import { quarticContact } from "./farContact.js";
+import { firstDownCrossingQuartic } from "./quarticCrossing.js";
 
 /**
  * First approach root of the gap polynomial of two discs (or a disc and a point, with the point's
@@ -42,88 +39,21 @@ export function discDiscTime(
   hi: number,
   quadraticFastPath = true,
 ): number {
-  const c0 = dx * dx + dy * dy - R * R;
-  const c1 = 2 * (dx * ux + dy * uy);
-  const uu = ux * ux + uy * uy;
   if (wx === 0 && wy === 0) {
+    const uu = ux * ux + uy * uy;
     if (uu === 0) return Number.POSITIVE_INFINITY;
-    if (quadraticFastPath) {
-      // c1^2 - 4 uu c0 = 4 (uu R^2 - (d x u)^2) (Lagrange's identity), free of the cancellation of
-      // two terms of size |d|^2 |u|^2 that loses every digit once the gap is ~1e8 contact distances.
-      const cross = dx * uy - dy * ux;
-      return firstDownCrossingQuadratic(c0, c1, uu, lo, hi, true, 4 * (uu * R * R - cross * cross));
+    const c0 = dx * dx + dy * dy - R * R;
+    const c1 = 2 * (dx * ux + dy * uy);
+    if (!quadraticFastPath) {
+      // The benchmark's ablation: the same gap solved as a general quartic, as before the fast path.
+      return firstDownCrossingQuartic(c0, c1, uu, 0, 0, lo, hi);
     }
+    // c1^2 - 4 uu c0 = 4 (uu R^2 - (d x u)^2) (Lagrange's identity), free of the cancellation of
+    // two terms of size |d|^2 |u|^2 that loses every digit once the gap is ~1e8 contact distances.
+    const cross = dx * uy - dy * ux;
+    return firstDownCrossingQuadratic(c0, c1, uu, lo, hi, true, 4 * (uu * R * R - cross * cross));
   }
-  const c2 = uu + (dx * wx + dy * wy);
-  const c3 = ux * wx + uy * wy;
-  const c4 = 0.25 * (wx * wx + wy * wy);
-  return firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, hi);
-}
-
-/**
- * First tau in [lo, hi] where c0 + c1 t + c2 t^2 + c3 t^3 + c4 t^4 crosses zero downwards; for a
- * contact under way at lo, the crossing that led to it (see crossingUnderWay; the caller clamps).
- */
-export function firstDownCrossingQuartic(
-  c0: number,
-  c1: number,
-  c2: number,
-  c3: number,
-  c4: number,
-  lo: number,
-  hi: number,
-): number {
-  if (!(lo <= hi)) return Number.POSITIVE_INFINITY;
-  const fLo = c0 + lo * (c1 + lo * (c2 + lo * (c3 + lo * c4)));
-  const dLo = c1 + lo * (2 * c2 + lo * (3 * c3 + lo * 4 * c4));
-  // In contact and approaching (or resting under an acceleration into the contact) at lo.
-  const now = fLo <= 0 && (dLo < 0 || (dLo === 0 && 2 * c2 + lo * (6 * c3 + lo * 12 * c4) < 0));
-  coeffs[0] = c0;
-  coeffs[1] = c1;
-  coeffs[2] = c2;
-  coeffs[3] = c3;
-  coeffs[4] = c4;
-  // Solve on [0, hi] rather than [lo, hi] so that the roots are a pure function of the two motions:
-  // the same pair gives the same bits whenever it is (re)computed.
-  realRootsInto(coeffs, 0, hi, roots);
-  if (now) return crossingUnderWay(lo, c1, c2, c3, c4);
-  let first = 0;
-  while (first < roots.length && (roots[first] as number) < lo) first++;
-  if (first > 0 && dLo < 0) {
-    // Approaching, and the last root before lo comes down: the gap can be > 0 at lo only through
-    // rounding (it is < 0 until the next root), so the contact is under way since that root.
-    const r = roots[first - 1] as number;
-    if (c1 + r * (2 * c2 + r * (3 * c3 + r * 4 * c4)) < 0) return r;
-  }
-  for (let i = first; i < roots.length; i++) {
-    const r = roots[i] as number;
-    const d = c1 + r * (2 * c2 + r * (3 * c3 + r * 4 * c4));
-    if (d < 0) return r;
-    if (d === 0) {
-      // Derivative vanishes at the root (touching or crossing with zero slope): probe after it.
-      const next = i + 1 < roots.length ? (roots[i + 1] as number) : hi;
-      const probe = Number.isFinite(next) ? 0.5 * (r + next) : r + 1;
-      if (evalPoly(coeffs, probe) < 0) return r;
-    }
-  }
-  return Number.POSITIVE_INFINITY;
-}
-
-/**
- * For a contact under way at lo (the quartic c0 + c1 t + ... + c4 t^4, its roots on [0, hi] in `roots`): the
- * crossing that led to it. If the first root after lo is a downward one, the gap at lo can only be
- * <= 0 through rounding and that root is the crossing (an evaluation before lo found it too);
- * otherwise the last downward root at or before lo; lo when there is none (it started touching).
- */
-function crossingUnderWay(lo: number, c1: number, c2: number, c3: number, c4: number): number {
-  let best = lo;
-  for (let i = 0; i < roots.length; i++) {
-    const r = roots[i] as number;
-    const d = c1 + r * (2 * c2 + r * (3 * c3 + r * 4 * c4));
-    if (r > lo) return d < 0 && best === lo ? r : best;
-    if (d < 0) best = r;
-  }
-  return best;
+  return quarticContact(dx, dy, ux, uy, wx, wy, R, lo, hi);
 }
 
 /**

@@ -1,0 +1,79 @@
+/**
+ * The first downward crossing of a quartic gap polynomial in a window (pure; no allocation on the hot
+ * path). See timeOfImpact.ts for the contract shared by every contact function: a contact counts
+ * only while the pair approaches, and a contact under way at lo reports the crossing that led to it.
+ * The roots are solved on [0, hi] rather than [lo, hi], so that the time found is a function of the
+ * polynomial alone, not of the moment it is evaluated.
+ */
+
+import { evalPoly, realRootsInto } from "../roots/realRoots.js";
+
+const coeffs = new Float64Array(5);
+/** Roots of the last quartic solved (reused: no allocation per prediction). */
+const roots: number[] = [];
+
+/**
+ * First tau in [lo, hi] where c0 + c1 t + c2 t^2 + c3 t^3 + c4 t^4 crosses zero downwards; for a
+ * contact under way at lo, the crossing that led to it (see crossingUnderWay; the caller clamps).
+ */
+export function firstDownCrossingQuartic(
+  c0: number,
+  c1: number,
+  c2: number,
+  c3: number,
+  c4: number,
+  lo: number,
+  hi: number,
+): number {
+  if (!(lo <= hi)) return Number.POSITIVE_INFINITY;
+  const fLo = c0 + lo * (c1 + lo * (c2 + lo * (c3 + lo * c4)));
+  const dLo = c1 + lo * (2 * c2 + lo * (3 * c3 + lo * 4 * c4));
+  // In contact and approaching (or resting under an acceleration into the contact) at lo.
+  const now = fLo <= 0 && (dLo < 0 || (dLo === 0 && 2 * c2 + lo * (6 * c3 + lo * 12 * c4) < 0));
+  coeffs[0] = c0;
+  coeffs[1] = c1;
+  coeffs[2] = c2;
+  coeffs[3] = c3;
+  coeffs[4] = c4;
+  // Solve on [0, hi] rather than [lo, hi] so that the roots are a pure function of the two motions:
+  // the same pair gives the same bits whenever it is (re)computed.
+  realRootsInto(coeffs, 0, hi, roots);
+  if (now) return crossingUnderWay(lo, c1, c2, c3, c4);
+  let first = 0;
+  while (first < roots.length && (roots[first] as number) < lo) first++;
+  if (first > 0 && dLo < 0) {
+    // Approaching, and the last root before lo comes down: the gap can be > 0 at lo only through
+    // rounding (it is < 0 until the next root), so the contact is under way since that root.
+    const r = roots[first - 1] as number;
+    if (c1 + r * (2 * c2 + r * (3 * c3 + r * 4 * c4)) < 0) return r;
+  }
+  for (let i = first; i < roots.length; i++) {
+    const r = roots[i] as number;
+    const d = c1 + r * (2 * c2 + r * (3 * c3 + r * 4 * c4));
+    if (d < 0) return r;
+    if (d === 0) {
+      // Derivative vanishes at the root (touching or crossing with zero slope): probe after it.
+      const next = i + 1 < roots.length ? (roots[i + 1] as number) : hi;
+      const probe = Number.isFinite(next) ? 0.5 * (r + next) : r + 1;
+      if (evalPoly(coeffs, probe) < 0) return r;
+    }
+  }
+  return Number.POSITIVE_INFINITY;
+}
+
+/**
+ * For a contact under way at lo (the quartic c0 + c1 t + ... + c4 t^4, its roots on [0, hi] in `roots`): the
+ * crossing that led to it. If the first root after lo is a downward one, the gap at lo can only be
+ * <= 0 through rounding and that root is the crossing (an evaluation before lo found it too);
+ * otherwise the last downward root at or before lo; lo when there is none (it started touching).
+ */
+function crossingUnderWay(lo: number, c1: number, c2: number, c3: number, c4: number): number {
+  let best = lo;
+  for (let i = 0; i < roots.length; i++) {
+    const r = roots[i] as number;
+    const d = c1 + r * (2 * c2 + r * (3 * c3 + r * 4 * c4));
+    if (r > lo) return d < 0 && best === lo ? r : best;
+    if (d < 0) best = r;
+  }
+  return best;
+}
