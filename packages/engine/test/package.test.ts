@@ -1,6 +1,6 @@
 /**
  * What `npm pack` would publish (`npm pack --dry-run --json`, scripts off so it lists the dist/ that
- * is there): the built code and its types, the bin's launcher and the README; no tests, and no file
+ * is there): the built code and its types, the bin's launcher, the README and the LICENSE; no tests, and no file
  * in dist/ that no source produces any more (a stale module from a removed source shipped dead code).
  */
 import { execFileSync } from "node:child_process";
@@ -23,13 +23,14 @@ beforeAll(() => {
 });
 
 describe("the published package", () => {
-  it("has the entry point, its types, the bin and the README", () => {
+  it("has the entry point, its types, the bin, the README and the licence", () => {
     const manifest = JSON.parse(readFileSync(join(pkg, "package.json"), "utf8"));
     for (const f of [
       "dist/index.js",
       "dist/index.d.ts",
       "dist/cli/main.js",
       "README.md",
+      "LICENSE",
       manifest.bin.chapgame,
     ])
       expect(files, f).toContain(f.replace(/^\.\//, ""));
