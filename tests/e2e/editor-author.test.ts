@@ -1,8 +1,8 @@
 /**
  * End-to-end: what a demanding scene author meets on the canvas and around it, in Debian's
- * Chromium: Fit with a lone disc, Escape cancelling a drag.
+ * Chromium: Fit with a lone disc, Escape cancelling a drag, a scene file dropped on the page.
  */
-import type { Page } from "playwright-core";
+import type { JSHandle, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { openEditor, type Session, screenshot } from "./harness.js";
 
@@ -109,5 +109,58 @@ describe("scene author", () => {
     await poll(async () =>
       Number(await bodies.getByLabel("lonely x", { exact: true }).textContent()),
     ).toBeCloseTo(60 / c.scale, 1);
+  });
+
+  it("a scene file dropped on the page opens like Load file: indicator while dragging, Undo, refusals", async () => {
+    await load(LONELY, "lonely");
+    const bodies = page.getByRole("table", { name: "Bodies" });
+    const rows = () => bodies.getByRole("row").count();
+    const message = () => page.locator(".message").textContent();
+    const PAIR = {
+      ...LONELY,
+      actions: [
+        { time: 0, type: "addBody", id: "left", x: -3, y: 0, r: 1, m: 1 },
+        { time: 0, type: "addBody", id: "right", x: 3, y: 0, r: 1, m: 1 },
+      ],
+    };
+    /** A drag of files (name, text, type) as the browser hands it to the page. */
+    const files = (list: [string, string, string][]): Promise<JSHandle<DataTransfer>> =>
+      page.evaluateHandle((l) => {
+        const dt = new DataTransfer();
+        for (const [name, text, type] of l) dt.items.add(new File([text], name, { type }));
+        return dt;
+      }, list);
+    const drop = async (dataTransfer: JSHandle<DataTransfer>) => {
+      const canvas = page.getByTestId("scene-canvas");
+      await canvas.dispatchEvent("dragenter", { dataTransfer });
+      await canvas.dispatchEvent("dragover", { dataTransfer });
+      await page.getByRole("status", { name: "Drop indicator" }).waitFor();
+      await screenshot(page, "15-drop-indicator");
+      await canvas.dispatchEvent("drop", { dataTransfer });
+      await page.getByRole("status", { name: "Drop indicator" }).waitFor({ state: "detached" });
+    };
+
+    await drop(await files([["pair.chapgame.json", JSON.stringify(PAIR), "application/json"]]));
+    await bodies.getByLabel("right x", { exact: true }).waitFor();
+    expect(await rows()).toBe(3);
+    await poll(message).toMatch(/^Opened pair\.chapgame\.json\. Undo returns/);
+    await page.getByRole("button", { name: "Undo" }).click();
+    await bodies.getByLabel("lonely x", { exact: true }).waitFor();
+
+    // refusals: the message says why, the scene stays
+    const bad = JSON.stringify({ ...LONELY, actions: [{ ...LONELY.actions[0], m: -1 }] });
+    await drop(await files([["bad.json", bad, "application/json"]]));
+    await poll(message).toMatch(/^bad\.json: actions\[0\]\.m: /);
+    await drop(await files([["photo.png", "PNG", "image/png"]]));
+    await poll(message).toMatch(/^photo\.png: not a scene file/);
+    await drop(
+      await files([
+        ["a.json", JSON.stringify(PAIR), "application/json"],
+        ["b.json", JSON.stringify(PAIR), "application/json"],
+      ]),
+    );
+    await poll(message).toMatch(/^Drop one scene file at a time \(2 files/);
+    expect(await rows()).toBe(2);
+    expect(await bodies.getByLabel("lonely x", { exact: true }).count()).toBe(1);
   });
 });

@@ -1,8 +1,12 @@
-/** The editor's layout: header (presets, message), canvas with its toolbar, side panels, time bar. */
+/**
+ * The editor's layout: header (presets, message), canvas with its toolbar, side panels, time bar,
+ * and the drop indicator (a scene file dropped anywhere opens).
+ */
 import { SceneCanvas } from "./canvas/SceneCanvas";
 import { BodiesTable } from "./panels/BodiesTable";
 import { CalculationPanel } from "./panels/CalculationPanel";
 import { EventLog } from "./panels/EventLog";
+import { FileDrop } from "./panels/FileDrop";
 import { GlobalsPanel } from "./panels/GlobalsPanel";
 import { LinesTable } from "./panels/LinesTable";
 import { MessageBar } from "./panels/MessageBar";
@@ -40,6 +44,7 @@ export function App() {
         <StatsPanel />
         <StatePanel />
       </aside>
+      <FileDrop />
     </div>
   );
 }

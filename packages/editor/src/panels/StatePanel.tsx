@@ -1,10 +1,12 @@
 /**
  * State: Copy / Paste the scene as JSON (format v1; a broken paste shows the validation message and
- * keeps the current scene), Save / Load a file, Clear, a shareable link, Undo / Redo.
+ * keeps the current scene), Save / Load a file (doc/openScene.ts, as a dropped file), Clear, a
+ * shareable link, Undo / Redo.
  */
 import { useRef, useState } from "react";
+import { openSceneFile, openSceneText } from "../doc/openScene";
 import { shareUrl } from "../doc/persistence";
-import { parseSceneText, sceneText } from "../doc/sceneIo";
+import { sceneText } from "../doc/sceneIo";
 import { useEditor, useHistory } from "../EditorContext";
 
 export function StatePanel() {
@@ -13,19 +15,6 @@ export function StatePanel() {
   const canRedo = useHistory((h) => h.future.length > 0);
   const [text, setText] = useState("");
   const fileRef = useRef<HTMLInputElement>(null);
-
-  /** Loads scene text; a refusal names `origin` (a file's name) before the field and the reason. */
-  const load = async (source: string, origin = "") => {
-    try {
-      const err = await editor.loadScene(parseSceneText(source));
-      if (err !== null && origin) editor.ui.setState({ message: { text: origin + err, tone: "error" } });
-      return err;
-    } catch (e) {
-      const msg = `${origin}${e instanceof Error ? e.message : String(e)}`;
-      editor.ui.setState({ message: { text: msg, tone: "error" } });
-      return msg;
-    }
-  };
 
   const copy = async () => {
     const json = sceneText(editor.doc);
@@ -50,7 +39,7 @@ export function StatePanel() {
         return;
       }
     }
-    await load(source);
+    await openSceneText(editor, source);
   };
 
   const save = () => {
@@ -100,7 +89,7 @@ export function StatePanel() {
           hidden
           onChange={async (e) => {
             const f = e.target.files?.[0];
-            if (f) await load(await f.text(), `${f.name}: `);
+            if (f) await openSceneFile(editor, f);
             e.target.value = "";
           }}
         />

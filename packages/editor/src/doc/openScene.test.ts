@@ -1,0 +1,74 @@
+// @vitest-environment jsdom
+import { newtonsCradle } from "@chapgame/engine";
+import { describe, expect, it } from "vitest";
+import { settled, testEditor } from "../testing/harness";
+import { droppedSceneFile, isJsonFile, openSceneFile } from "./openScene";
+import { sceneText } from "./sceneIo";
+
+const LONELY = {
+  format: "chapgame",
+  version: 1,
+  actions: [{ time: 0, type: "addBody", id: "lonely", x: 0, y: 0, r: 1, m: 1 }],
+};
+const json = (name: string, value: unknown) =>
+  new File([typeof value === "string" ? value : JSON.stringify(value)], name, { type: "application/json" });
+
+async function cradle() {
+  const h = testEditor();
+  await h.editor.loadScene(newtonsCradle(), { undoable: false });
+  await settled(h.client);
+  return h;
+}
+
+describe("opening a scene file", () => {
+  it("a valid file replaces the scene as one undo step and says so; Undo brings the old scene back", async () => {
+    const { editor, client } = await cradle();
+    const before = editor.doc;
+    expect(await openSceneFile(editor, json("lonely.json", LONELY))).toBeNull();
+    await settled(client);
+    expect(editor.doc.actions.map((a) => a.id)).toEqual(["lonely"]);
+    expect(editor.ui.getState().message).toEqual({
+      text: "Opened lonely.json. Undo returns to the scene you had before.",
+      tone: "info",
+    });
+    await editor.undo();
+    expect(sceneText(editor.doc)).toBe(sceneText(before));
+  });
+
+  it("a refused file names the file and the field, and keeps the scene and the history", async () => {
+    const { editor } = await cradle();
+    const before = editor.doc;
+    const bad = { ...LONELY, actions: [{ ...LONELY.actions[0], r: "big" }] };
+    const err = await openSceneFile(editor, json("bad.json", bad));
+    expect(err).toMatch(/^bad\.json: actions\[0\]\.r: /);
+    expect(editor.ui.getState().message).toEqual({ text: err, tone: "error" });
+    expect(editor.doc).toBe(before);
+    expect(editor.history.getState().past.length).toBe(0);
+    // broken JSON, and a scene the engine refuses when building it (two discs overlapping)
+    expect(await openSceneFile(editor, json("cut.json", '{"format":"chap'))).toMatch(/^cut\.json: /);
+    const overlap = {
+      ...LONELY,
+      actions: [LONELY.actions[0], { ...LONELY.actions[0], id: "twin", x: 0.5 }],
+    };
+    expect(await openSceneFile(editor, json("overlap.json", overlap))).toMatch(
+      /^overlap\.json: .*actions\[1\]/,
+    );
+    expect(editor.doc).toBe(before);
+  });
+
+  it("a drop opens exactly one JSON file; several files or another kind are refused with a message", () => {
+    const scene = json("scene.json", LONELY);
+    expect(droppedSceneFile([scene])).toBe(scene);
+    const typed = new File(["{}"], "scene", { type: "application/json" });
+    expect(droppedSceneFile([typed])).toBe(typed);
+    expect(droppedSceneFile([scene, scene])).toBe(
+      "Drop one scene file at a time (2 files were dropped); nothing was opened.",
+    );
+    expect(droppedSceneFile([new File(["x"], "photo.png", { type: "image/png" })])).toBe(
+      "photo.png: not a scene file (drop a .json scene file, format chapgame v1); nothing was opened.",
+    );
+    expect(droppedSceneFile([])).toBe("Nothing to open: drop a scene file (.json).");
+    expect(isJsonFile({ name: "SCENE.JSON", type: "" })).toBe(true);
+    expect(isJsonFile({ name: "scene.json.txt", type: "text/plain" })).toBe(false);
+  });
+});
