@@ -12,7 +12,7 @@ import { CalendarQueue } from "./calendarQueue.js";
 import { Grid } from "./grid.js";
 import type { Line, Point } from "./obstacles.js";
 import { rasterizeSegment } from "./rasterize.js";
-import type { EventCounts, Optimizations, WorldEvent } from "./types.js";
+import type { EventCounts, Optimizations, Vec2, WorldEvent } from "./types.js";
 import { ZenoWatch } from "./zenoWatch.js";
 
 const INF = Number.POSITIVE_INFINITY;
@@ -87,6 +87,11 @@ export class SimState {
 
   get gy(): number {
     return this.gravY;
+  }
+
+  /** The gravity field as a pair (a fresh copy; change it with `setGlobal`). */
+  get gravity(): Vec2 {
+    return [this.gravX, this.gravY];
   }
 
   /** Copy all state into `target` (a fresh Simulator of the same class). */

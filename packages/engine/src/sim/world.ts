@@ -1,49 +1,26 @@
 /**
- * World: the public face of the exact simulation (contract in docs/architecture.md).
+ * World: the public face of the exact simulation (contract in docs/architecture.md): construction
+ * and copies, the queries of bodies at a time, and the run loop (`advance`, `nextEventTime`).
  *
- * Edits (add/update/remove bodies, lines, points; globals) happen at the current time and are
- * validated first: invalid input throws ChapgameError naming the field, and changes nothing.
- * `advance` processes events in time order; events exactly at `untilTime` are processed.
+ * Edits (bodies and globals: edits.ts; lines and points: placement.ts) happen at the current
+ * time and are validated first: invalid input throws ChapgameError naming the field, and changes
+ * nothing. `advance` processes events in time order; events exactly at `untilTime` are
+ * processed.
  */
-import { type MotionLaw, motionLaw, positionAt, velocityAt } from "../physics/motion.js";
+import { positionAt, velocityAt } from "../physics/motion.js";
+import { Edits } from "./edits.js";
 import { ChapgameError } from "./errors.js";
-import { Placement } from "./placement.js";
-import type {
-  AdvanceLimits,
-  AdvanceResult,
-  BodyInit,
-  BodyMotionInit,
-  BodyPatch,
-  BodyState,
-  Vec2,
-  WorldEvent,
-  WorldOptions,
-} from "./types.js";
-import {
-  checkFrictionGravity,
-  requireBounded,
-  requireFinite,
-  requireId,
-  requireMass,
-  requireNonNegativeBounded,
-  requireRadius,
-  requireVec,
-  requireVelocity,
-} from "./validate.js";
+import type { AdvanceLimits, AdvanceResult, BodyState, WorldEvent, WorldOptions } from "./types.js";
+import { requireFinite, requireNonNegativeBounded, requireVec } from "./validate.js";
 
 const INF = Number.POSITIVE_INFINITY;
-const restoredLaw: MotionLaw = { ax: 0, ay: 0, tEnd: INF };
 
-export class World extends Placement {
+export class World extends Edits {
   constructor(options: WorldOptions = {}) {
     const g = requireNonNegativeBounded("g", options.g ?? 9.81);
     const gravity = requireVec("gravity", options.gravity ?? [0, 0]);
     const time = requireFinite("time", options.time ?? 0);
     super(time, g, gravity[0], gravity[1], options.optimizations ?? {});
-  }
-
-  get gravity(): Vec2 {
-    return [this.gravX, this.gravY];
   }
 
   /** An independent deep copy (for keyframes). */
@@ -68,88 +45,6 @@ export class World extends Placement {
     return this.index.size;
   }
 
-  // ---- bodies -------------------------------------------------------------------------------
-
-  addBody(id: string, init: BodyInit): void {
-    requireId("id", id);
-    if (this.index.has(id)) throw new ChapgameError("id", `a body with id '${id}' already exists`);
-    const x = requireBounded("x", init.x);
-    const y = requireBounded("y", init.y);
-    const r = requireRadius("r", init.r);
-    const m = requireMass("m", init.m);
-    const mu = requireNonNegativeBounded("mu", init.mu ?? 0);
-    const vx = requireVelocity("vx", init.vx ?? 0);
-    const vy = requireVelocity("vy", init.vy ?? 0);
-    checkFrictionGravity("mu", mu, this.gravity);
-    this.prepareGridFor(x, y, r);
-    this.checkOverlap(x, y, r, -1);
-    this.insertBody(id, r, m, mu, this.now, x, y, vx, vy, x, y);
-  }
-
-  /**
-   * Add a body with an exact motion that started at `t0 <= time` (what `motion(id)` reports, plus
-   * r, m, mu): a World rebuilt this way from every body's motion, the obstacles and the globals
-   * computes the same future, bit for bit, as the World the motions came from (every prediction is
-   * a pure function of the motions). A friction motion must not have stopped before `time`. Round-off
-   * overlaps up to OVERLAP_REL of the contact distance, which collisions leave between bodies in
-   * contact, are accepted; larger overlaps are refused like addBody's.
-   */
-  addBodyMotion(id: string, init: BodyMotionInit): void {
-    requireId("id", id);
-    if (this.index.has(id)) throw new ChapgameError("id", `a body with id '${id}' already exists`);
-    const t0 = requireFinite("t0", init.t0);
-    if (t0 > this.now) throw new ChapgameError("t0", `must be <= the world's time ${this.now}`);
-    // A motion the World computed (a Timeline restart) may have left the bounds edits keep to
-    // (gravity speeds a body up without limit): only finiteness is required of it.
-    const x0 = requireFinite("x0", init.x0);
-    const y0 = requireFinite("y0", init.y0);
-    const vx = requireFinite("vx", init.vx);
-    const vy = requireFinite("vy", init.vy);
-    const r = requireRadius("r", init.r);
-    const m = requireMass("m", init.m);
-    const mu = requireNonNegativeBounded("mu", init.mu ?? 0);
-    checkFrictionGravity("mu", mu, this.gravity);
-    motionLaw(t0, vx, vy, mu, this.frictionG, this.gravX, this.gravY, restoredLaw);
-    if (restoredLaw.tEnd < this.now)
-      throw new ChapgameError(
-        "t0",
-        `the motion stops at t=${restoredLaw.tEnd}, before the world's time ${this.now}: give the resting motion that starts at the stop`,
-      );
-    // Where the body is now, evaluated as xAt/yAt will evaluate it.
-    const x = requireFinite("x0", positionAt(t0, x0, vx, restoredLaw.ax, this.now));
-    const y = requireFinite("y0", positionAt(t0, y0, vy, restoredLaw.ay, this.now));
-    this.prepareGridFor(x, y, r);
-    this.checkOverlap(x, y, r, -1, true);
-    this.insertBody(id, r, m, mu, t0, x0, y0, vx, vy, x, y);
-  }
-
-  /** Store a validated body with motion (t0, x0, y0, vx, vy), now at (x, y), and predict it. */
-  private insertBody(
-    id: string,
-    r: number,
-    m: number,
-    mu: number,
-    t0: number,
-    x0: number,
-    y0: number,
-    vx: number,
-    vy: number,
-    x: number,
-    y: number,
-  ): void {
-    const b = this.store;
-    const s = b.allocate(id);
-    this.grid.reserve(b.capacity);
-    this.heap.reserve(b.capacity);
-    b.r[s] = r;
-    b.m[s] = m;
-    b.mu[s] = mu;
-    this.setMotion(s, t0, x0, y0, vx, vy);
-    this.index.set(id, s);
-    this.grid.insert(s, this.cellAt(x, y));
-    if (!this.dirty) this.predict(s);
-  }
-
   /** @internal The Zeno watch's counters (for Timeline keyframes, which restore them exactly). */
   zenoWatch(): [number, number, number, number] {
     return this.zeno.save();
@@ -160,39 +55,7 @@ export class World extends Placement {
     this.zeno.load(w);
   }
 
-  updateBody(id: string, patch: BodyPatch): void {
-    const s = this.slotOf(id);
-    const b = this.store;
-    const now = this.now;
-    // Only the fields the patch gives are held to the edit bounds: the body's own current state
-    // may have left them (gravity speeds a body up without limit).
-    const x = patch.x !== undefined ? requireBounded("x", patch.x) : this.xAt(s, now);
-    const y = patch.y !== undefined ? requireBounded("y", patch.y) : this.yAt(s, now);
-    const vx = patch.vx !== undefined ? requireVelocity("vx", patch.vx) : this.vxAt(s, now);
-    const vy = patch.vy !== undefined ? requireVelocity("vy", patch.vy) : this.vyAt(s, now);
-    const r = requireRadius("r", patch.r ?? b.r[s]);
-    const m = requireMass("m", patch.m ?? b.m[s]);
-    const mu = requireNonNegativeBounded("mu", patch.mu ?? b.mu[s]);
-    checkFrictionGravity("mu", mu, this.gravity);
-    if (patch.x !== undefined || patch.y !== undefined || patch.r !== undefined) {
-      this.prepareGridFor(x, y, r);
-      this.checkOverlap(x, y, r, s);
-    }
-    b.r[s] = r;
-    b.m[s] = m;
-    b.mu[s] = mu;
-    this.setMotion(s, now, x, y, vx, vy);
-    this.grid.move(s, this.cellAt(x, y));
-    if (!this.dirty) this.predict(s);
-  }
-
-  removeBody(id: string): void {
-    const s = this.slotOf(id);
-    this.grid.remove(s);
-    this.heap.remove(s);
-    this.store.release(s);
-    this.index.delete(id);
-  }
+  // ---- queries ----------------------------------------------------------------------------
 
   /**
    * State of a body at time t (default: now). Exact for t from the body's last event or edit (its
@@ -262,36 +125,6 @@ export class World extends Placement {
       ay: b.mot[s * 8 + 6] as number,
       tStop: b.mot[s * 8 + 7] as number,
     };
-  }
-
-  private slotOf(id: string): number {
-    const s = this.index.get(id);
-    if (s === undefined) throw new ChapgameError("id", `no body with id '${id}'`);
-    return s;
-  }
-
-  // ---- globals ------------------------------------------------------------------------------
-
-  setGlobal(patch: { g?: number; gravity?: Vec2 }): void {
-    const g = requireNonNegativeBounded("g", patch.g ?? this.frictionG);
-    const gravity = requireVec("gravity", patch.gravity ?? this.gravity);
-    for (const [id, s] of this.index)
-      checkFrictionGravity(`bodies.${id}.mu`, this.store.mu[s] as number, gravity);
-    const now = this.now;
-    const _b = this.store;
-    const states = [...this.index.values()].map((s) => [
-      s,
-      this.xAt(s, now),
-      this.yAt(s, now),
-      this.vxAt(s, now),
-      this.vyAt(s, now),
-    ]);
-    this.frictionG = g;
-    this.gravX = gravity[0];
-    this.gravY = gravity[1];
-    for (const [s, x, y, vx, vy] of states)
-      this.setMotion(s as number, now, x as number, y as number, vx as number, vy as number);
-    this.dirty = true;
   }
 
   // ---- simulation ---------------------------------------------------------------------------
