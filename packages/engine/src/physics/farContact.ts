@@ -11,7 +11,8 @@
  *
  * How: the near part of the window, where a cheap bound on |d(tau)| stays within FAR_CONTACT_REACH
  * contact distances, is solved as it stands (every pair of an ordinary scene stops here). The far part
- * is cut at the extrema of the distance (the roots of f', a cubic whose roots are well conditioned:
+ * is narrowed to where the pair can touch at all (farWindow.ts, closed form), then cut at the
+ * extrema of the distance (the roots of f', a cubic whose roots are well conditioned:
  * they place a closest point within about UNIT_ROUNDOFF * M). A contact in the far part lies on a
  * piece where the distance decreases; the gap is re-expanded about that piece's closest point, where
  * its terms are of size R^2 again, and its crossing is solved there.
@@ -19,9 +20,11 @@
 
 import { realRootsInto } from "../roots/realRoots.js";
 import { FAR_CONTACT_REACH } from "../tolerances.js";
+import { farWindow } from "./farWindow.js";
 import { firstDownCrossingQuartic } from "./quarticCrossing.js";
 
 const INF = Number.POSITIVE_INFINITY;
+const window = new Float64Array(2);
 const slope = new Float64Array(4);
 const local = new Float64Array(5);
 const extrema: number[] = [];
@@ -79,9 +82,9 @@ function nearReach(
 }
 
 /**
- * The far part [near, hi]: the pieces between consecutive extrema of the distance, in order; the
- * first decreasing piece that reaches the contact distance and does not end before lo holds the
- * contact.
+ * The far part [near, hi], narrowed to where the pair can touch (farWindow.ts): the pieces between
+ * consecutive extrema of the distance, in order; the first decreasing piece that reaches the contact
+ * distance and does not end before lo holds the contact.
  */
 function farPart(
   dx: number,
@@ -99,15 +102,19 @@ function farPart(
   near: number,
   hi: number,
 ): number {
+  if (!farWindow(dx, dy, ux, uy, wx, wy, R, near, hi, window)) return INF;
+  const from = window[0] as number;
+  const to = window[1] as number;
+  if (to < lo) return INF;
   slope[0] = c1;
   slope[1] = 2 * c2;
   slope[2] = 3 * c3;
   slope[3] = 4 * c4;
-  realRootsInto(slope, near, hi, extrema);
+  realRootsInto(slope, from, to, extrema);
   const n = extrema.length;
-  let p = near;
+  let p = from;
   for (let i = 0; i <= n; i++) {
-    const q = i < n ? (extrema[i] as number) : hi;
+    const q = i < n ? (extrema[i] as number) : to;
     if (q > p && q >= lo && q < INF && isDecreasing(p, q)) {
       const t = pieceContact(dx, dy, ux, uy, wx, wy, R, p, q, near);
       if (t !== INF) return t;
