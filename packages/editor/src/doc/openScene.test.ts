@@ -26,7 +26,7 @@ describe("opening a scene file", () => {
     const before = editor.doc;
     expect(await openSceneFile(editor, json("lonely.json", LONELY))).toBeNull();
     await settled(client);
-    expect(editor.doc.actions.map((a) => a.id)).toEqual(["lonely"]);
+    expect(editor.doc.actions.map((a) => ("id" in a ? a.id : a.type))).toEqual(["lonely"]);
     expect(editor.ui.getState().message).toEqual({
       text: "Opened lonely.json. Undo returns to the scene you had before.",
       tone: "info",

@@ -54,7 +54,9 @@ describe("dropping a scene file", () => {
     expect(over).toBe(false); // default prevented: the browser does not open the file itself
     fireEvent.drop(window, carrying([new File([LONELY], "lonely.json")]));
     expect(indicator()).toBeNull();
-    await waitFor(() => expect(editor.doc.actions.map((a) => a.id)).toEqual(["lonely"]));
+    await waitFor(() =>
+      expect(editor.doc.actions.map((a) => ("id" in a ? a.id : a.type))).toEqual(["lonely"]),
+    );
     await settled(client);
     expect(editor.history.getState().past.length).toBe(1);
     expect(editor.ui.getState().message?.text).toBe(
