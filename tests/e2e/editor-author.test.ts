@@ -1,6 +1,7 @@
 /**
  * End-to-end: what a demanding scene author meets on the canvas and around it, in Debian's
- * Chromium: Fit with a lone disc, Escape cancelling a drag, a scene file dropped on the page.
+ * Chromium: Fit with a lone disc, Escape cancelling a drag, a scene file dropped on the page, two
+ * tabs autosaving side by side (and an autosave of the earlier single-slot version).
  */
 import type { JSHandle, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -162,5 +163,66 @@ describe("scene author", () => {
     await poll(message).toMatch(/^Drop one scene file at a time \(2 files/);
     expect(await rows()).toBe(2);
     expect(await bodies.getByLabel("lonely x", { exact: true }).count()).toBe(1);
+  });
+
+  it("two tabs autosave side by side: a reload keeps each tab's own scene, the other's newer work is offered", async () => {
+    const one = (id: string) => ({ ...LONELY, actions: [{ ...LONELY.actions[0], id }] });
+    const shows = (p: Page, id: string) =>
+      p.getByRole("table", { name: "Bodies" }).getByLabel(`${id} x`, { exact: true }).waitFor();
+    const loadIn = (p: Page, scene: unknown) =>
+      p.evaluate(async (sc) => {
+        await (window as unknown as { chapgame: PageEditor }).chapgame.loadScene(sc);
+      }, scene);
+    const notice = (p: Page) => p.getByRole("status", { name: "Newer work in another tab" });
+
+    await loadIn(page, one("tabA"));
+    await shows(page, "tabA");
+    await page.waitForTimeout(600); // autosaved (300 ms of quiet)
+    const b = await s.context.newPage();
+    try {
+      await b.goto(s.url);
+      await shows(b, "tabA"); // a fresh tab opens the most recently saved scene
+      await loadIn(b, one("tabB"));
+      await shows(b, "tabB");
+      // tab A is told, without a modal, and keeps its own scene
+      await notice(page).waitFor({ timeout: 5000 });
+      expect(await notice(page).textContent()).toMatch(/^Another editor tab saved a newer scene at /);
+      await screenshot(page, "16-newer-work-in-another-tab");
+      await page.reload();
+      await shows(page, "tabA");
+      await notice(page).waitFor(); // still offered after the reload
+      await b.reload();
+      await shows(b, "tabB");
+      // A opens B's work; Undo brings A's back
+      await notice(page).getByRole("button", { name: "Open it" }).click();
+      await shows(page, "tabB");
+      await page.getByRole("button", { name: "Undo" }).click();
+      await shows(page, "tabA");
+    } finally {
+      await b.close();
+    }
+  });
+
+  it("the single autosave of the earlier version is restored by a fresh tab", async () => {
+    const legacy = { ...LONELY, actions: [{ ...LONELY.actions[0], id: "fromV1" }] };
+    // no other editor tab open (an open tab writes its slot back when it is removed)
+    await page.goto("about:blank");
+    const c = await s.context.newPage();
+    try {
+      // the storage as the earlier version left it, set before the editor starts
+      await c.addInitScript((text) => {
+        if (sessionStorage.getItem("e2e.setup")) return;
+        sessionStorage.setItem("e2e.setup", "1");
+        for (const key of Object.keys(localStorage))
+          if (key.startsWith("chapgame.editor.autosave.")) localStorage.removeItem(key);
+        localStorage.setItem("chapgame.editor.autosave.v1", text);
+      }, JSON.stringify(legacy));
+      await c.goto(s.url);
+      await c.getByRole("table", { name: "Bodies" }).getByLabel("fromV1 x", { exact: true }).waitFor();
+      expect(await c.evaluate(() => localStorage.getItem("chapgame.editor.autosave.v1"))).toBeNull();
+    } finally {
+      await c.close();
+      await page.goto(s.url);
+    }
   });
 });

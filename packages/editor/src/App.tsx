@@ -1,5 +1,5 @@
 /**
- * The editor's layout: header (presets, message), canvas with its toolbar, side panels, time bar,
+ * The editor's layout: header (presets, message, newer work in another tab), canvas with its toolbar, side panels, time bar,
  * and the drop indicator (a scene file dropped anywhere opens).
  */
 import { SceneCanvas } from "./canvas/SceneCanvas";
@@ -10,6 +10,7 @@ import { FileDrop } from "./panels/FileDrop";
 import { GlobalsPanel } from "./panels/GlobalsPanel";
 import { LinesTable } from "./panels/LinesTable";
 import { MessageBar } from "./panels/MessageBar";
+import { NewerWorkNotice } from "./panels/NewerWorkNotice";
 import { PointsTable } from "./panels/PointsTable";
 import { PresetsMenu } from "./panels/PresetsMenu";
 import { SpeedPanel } from "./panels/SpeedPanel";
@@ -25,6 +26,7 @@ export function App() {
         <h1>chapgame</h1>
         <PresetsMenu />
         <MessageBar />
+        <NewerWorkNotice />
       </header>
       <main className="stage">
         <Toolbar />

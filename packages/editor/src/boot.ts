@@ -1,10 +1,11 @@
 /**
  * Start-up: the worker and its client, the Editor, the first scene (a shared link in the URL, else
- * the autosave, else the default preset; a shared link is one undo step over the autosave), autosave
- * after every scene change (and when the page goes), playback and keyboard.
+ * the autosave of this tab or the newest one, else the default preset; a shared link is one undo
+ * step over the autosave), autosave per tab (autosave.ts), playback and keyboard.
  */
+import { browserAutosaveEnv, TabAutosave } from "./autosave";
 import { drawStats, resetDrawStats } from "./canvas/drawStats";
-import { loadAutosave, saveAutosave, sceneFromHash } from "./doc/persistence";
+import { sceneFromHash } from "./doc/persistence";
 import { Editor } from "./editor";
 import type { SceneFile } from "./engineTypes";
 import { bindKeyboard } from "./keyboard";
@@ -14,32 +15,30 @@ import { TimelineClient } from "./remote/client";
 import type { Port } from "./remote/protocol";
 import { createUiStore } from "./store/uiStore";
 
-/** Milliseconds of quiet after a scene change before it is autosaved. */
-const AUTOSAVE_DELAY_MS = 300;
-
 export interface FirstScene {
   scene: SceneFile;
   from: "url" | "autosave" | "preset";
   /** The autosaved scene a shared link replaces (loaded first, so Undo brings it back). */
   previous: SceneFile | null;
   error: string | null;
+  /** Something to tell about the autosave restored (not this tab's own), or null. */
+  note: string | null;
 }
 
-/** The scene to start with: a shared link in the URL, else the autosave, else the default preset. */
-export function firstScene(
-  hash: string = window.location.hash,
-  storage: Storage = window.localStorage,
-): FirstScene {
+/** The scene to start with: a shared link in the URL, else the tab's autosave, else the default preset. */
+export function firstScene(hash: string, autosave: TabAutosave): FirstScene {
   let error: string | null = null;
-  const saved = loadAutosave(storage);
+  const restored = autosave.restore();
+  const saved = restored?.slot.scene ?? null;
+  const note = restored?.note ?? null;
   try {
     const fromUrl = sceneFromHash(hash);
-    if (fromUrl) return { scene: fromUrl, from: "url", previous: saved, error };
+    if (fromUrl) return { scene: fromUrl, from: "url", previous: saved, error, note: null };
   } catch (e) {
     error = `Shared link: ${(e as Error).message}`;
   }
-  if (saved) return { scene: saved, from: "autosave", previous: null, error };
-  return { scene: buildPreset(DEFAULT_PRESET), from: "preset", previous: null, error };
+  if (saved) return { scene: saved, from: "autosave", previous: null, error, note };
+  return { scene: buildPreset(DEFAULT_PRESET), from: "preset", previous: null, error, note: null };
 }
 
 export async function boot(): Promise<Editor> {
@@ -52,7 +51,8 @@ export async function boot(): Promise<Editor> {
   const client = new TimelineClient(newPort());
   const editor = new Editor(client, createUiStore());
   editor.portFactory = newPort;
-  const first = firstScene();
+  const autosave = new TabAutosave(browserAutosaveEnv());
+  const first = firstScene(window.location.hash, autosave);
   // A shared link is loaded once (a broken one too); from then on the autosave keeps the user's
   // edits across reloads. The scene it replaces is loaded first, so Undo brings it back.
   if (/^#?scene=/.test(window.location.hash))
@@ -67,28 +67,19 @@ export async function boot(): Promise<Editor> {
   if (err !== null && first.from !== "preset")
     err = await editor.loadScene(buildPreset(DEFAULT_PRESET), { undoable: false });
   if (first.error) editor.ui.setState({ message: { text: first.error, tone: "error" } });
+  else if (first.note) editor.info(first.note);
+  // A reloaded tab whose scene is older than another tab's: say so (the notice offers it).
+  const newer = autosave.newerOther();
+  if (newer) editor.ui.setState({ newerWork: { tab: newer.tab, savedAt: newer.savedAt } });
 
-  let savedRevision = client.getSnapshot().docRevision;
-  let timer: ReturnType<typeof setTimeout> | null = null;
-  let autosaveFailed = false;
-  const save = () => {
-    if (timer !== null) clearTimeout(timer);
-    timer = null;
-    const now = client.getSnapshot();
-    if (now.docRevision === savedRevision) return;
-    savedRevision = now.docRevision;
-    const failed = now.doc ? saveAutosave(window.localStorage, now.doc) : null;
-    if (failed !== null && !autosaveFailed) editor.ui.setState({ message: { text: failed, tone: "error" } });
-    autosaveFailed = failed !== null; // said once, until autosave works again
-  };
-  client.subscribe(() => {
-    if (client.getSnapshot().docRevision === savedRevision || timer !== null) return;
-    timer = setTimeout(save, AUTOSAVE_DELAY_MS);
-  });
-  // A reload or a closed tab within the quiet delay of an edit keeps that edit.
-  window.addEventListener("pagehide", save);
+  autosave.attach(editor, window);
   startPlayback(editor);
   bindKeyboard(editor);
-  Object.assign(window, { chapgame: editor, chapgameStats: drawStats, chapgameResetStats: resetDrawStats });
+  Object.assign(window, {
+    chapgame: editor,
+    chapgameStats: drawStats,
+    chapgameResetStats: resetDrawStats,
+    chapgameTab: () => autosave.tab,
+  });
   return editor;
 }

@@ -1,11 +1,9 @@
 /**
- * Keeping work: autosave to localStorage and shareable URLs (the scene as base64url JSON in the
- * location hash, `#scene=...`). Pure encode/decode plus thin storage access.
+ * Shareable URLs: the scene as base64url JSON in the location hash (`#scene=...`). Pure encode and
+ * decode. (The autosave is in autosaveSlots.ts.)
  */
 import type { SceneFile } from "../engineTypes";
-import { parseSceneText, sceneText } from "./sceneIo";
-
-export const AUTOSAVE_KEY = "chapgame.editor.autosave.v1";
+import { parseSceneText } from "./sceneIo";
 
 export function encodeSceneForUrl(scene: SceneFile): string {
   const bytes = new TextEncoder().encode(JSON.stringify(scene));
@@ -36,35 +34,4 @@ export function sceneFromHash(hash: string): SceneFile | null {
 
 export function shareUrl(location: { origin: string; pathname: string }, scene: SceneFile): string {
   return `${location.origin}${location.pathname}#scene=${encodeSceneForUrl(scene)}`;
-}
-
-/**
- * Writes the autosave; null on success, else a message for the user. When the scene cannot be
- * stored (storage full or disabled), the older autosave is removed: a reload must not bring back an
- * older scene as if it were the latest.
- */
-export function saveAutosave(storage: Storage, scene: SceneFile): string | null {
-  const text = sceneText(scene);
-  try {
-    storage.setItem(AUTOSAVE_KEY, text);
-    return null;
-  } catch {
-    try {
-      storage.removeItem(AUTOSAVE_KEY);
-    } catch {
-      // storage disabled altogether: nothing to remove
-    }
-    const mb = (text.length / 1e6).toFixed(1);
-    return `Autosave failed: the browser's storage refused the scene (${mb} MB of JSON). A reload will not keep it: use Save file.`;
-  }
-}
-
-export function loadAutosave(storage: Storage): SceneFile | null {
-  const text = storage.getItem(AUTOSAVE_KEY);
-  if (!text) return null;
-  try {
-    return parseSceneText(text);
-  } catch {
-    return null;
-  }
 }

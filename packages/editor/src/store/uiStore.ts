@@ -27,6 +27,12 @@ export interface Message {
   tone: "error" | "info";
 }
 
+/** Another tab saved a scene after this tab's last save (the notice offers to open it). */
+export interface NewerWork {
+  tab: string;
+  savedAt: number;
+}
+
 export interface UiState {
   t: number;
   speed: number;
@@ -40,6 +46,7 @@ export interface UiState {
   trails: boolean;
   calc: CalcSettings;
   message: Message | null;
+  newerWork: NewerWork | null;
   eventFilter: string;
 }
 
@@ -55,6 +62,7 @@ export const initialUiState: UiState = {
   trails: false,
   calc: { useTime: true, seconds: 10, useEvents: false, events: 1000, autoExtend: true },
   message: null,
+  newerWork: null,
   eventFilter: "",
 };
 

@@ -1,0 +1,224 @@
+/**
+ * Autosave per tab (slots in doc/autosaveSlots.ts). Each tab has an id in sessionStorage (it survives
+ * a reload of that tab, and only that tab) and saves into its own slot 300 ms after each scene change
+ * and when the page goes. A reloaded tab restores its own slot; a fresh tab (or one whose slot is
+ * gone) restores the most recently saved slot of any tab. When another tab saves newer work, this tab
+ * shows a notice (ui.newerWork) with a way to open it; Dismiss mutes that tab until this one reloads.
+ * Nothing is lost: a slot removed by another tab's pruning is written again at once, and a tab
+ * duplicated by the browser (which copies sessionStorage, so the id too) takes a new id on start.
+ */
+import {
+  migrateLegacy,
+  newestSlot,
+  pruneSlots,
+  readSlot,
+  type Slot,
+  slotKey,
+  slotSavedAt,
+  slotText,
+  writeSlot,
+} from "./doc/autosaveSlots";
+import { sceneText } from "./doc/sceneIo";
+import type { Editor } from "./editor";
+import type { SceneFile } from "./engineTypes";
+
+/** Milliseconds of quiet after a scene change before it is autosaved. */
+export const AUTOSAVE_DELAY_MS = 300;
+/** sessionStorage: this tab's id. */
+export const TAB_KEY = "chapgame.editor.tab";
+/** sessionStorage: set while this tab's last scene could not be saved. */
+const LOST_KEY = "chapgame.editor.tab.lost";
+
+/** The part of BroadcastChannel the tabs use to find a duplicated id. */
+export interface TabChannel {
+  postMessage(message: unknown): void;
+  onmessage: ((e: { data: unknown }) => void) | null;
+  close(): void;
+}
+
+export interface AutosaveEnv {
+  local: Storage;
+  session: Storage;
+  now(): number;
+  newTabId(): string;
+  channel: TabChannel | null;
+}
+
+export function browserAutosaveEnv(): AutosaveEnv {
+  return {
+    local: window.localStorage,
+    session: window.sessionStorage,
+    now: () => Date.now(),
+    newTabId: () =>
+      typeof crypto.randomUUID === "function"
+        ? crypto.randomUUID()
+        : `${Date.now().toString(36)}-${Math.random().toString(36).slice(2)}`,
+    channel:
+      typeof BroadcastChannel === "undefined"
+        ? null
+        : (new BroadcastChannel("chapgame.editor.tabs") as unknown as TabChannel),
+  };
+}
+
+/** The clock time of a save, for the user (hh:mm:ss, local time). */
+export const clockTime = (ms: number) => new Date(ms).toLocaleTimeString();
+
+/** Opens the scene another tab saved (one undo step over this tab's scene). */
+export async function openNewerWork(editor: Editor, storage: Storage, tab: string): Promise<string | null> {
+  editor.ui.setState({ newerWork: null });
+  const slot = readSlot(storage, tab);
+  if (!slot) {
+    const text = "That tab's scene is no longer stored (it was closed long ago or pruned).";
+    editor.ui.setState({ message: { text, tone: "error" } });
+    return text;
+  }
+  const err = await editor.loadScene(slot.scene);
+  if (err === null)
+    editor.info(
+      `Opened the scene another tab saved at ${clockTime(slot.savedAt)}. Undo returns to the scene you had.`,
+    );
+  return err;
+}
+
+export class TabAutosave {
+  tab: string;
+  /** True when this tab had an id already (a reload), false for a fresh tab. */
+  readonly reloaded: boolean;
+  /** The scene text this tab last saved or restored (another tab saving the same is no news). */
+  private lastText: string | null = null;
+  private ownSavedAt = Number.NEGATIVE_INFINITY;
+  private readonly muted = new Set<string>();
+
+  constructor(private readonly env: AutosaveEnv) {
+    migrateLegacy(env.local);
+    const id = env.session.getItem(TAB_KEY);
+    this.reloaded = id !== null;
+    this.tab = id ?? env.newTabId();
+    if (id === null) env.session.setItem(TAB_KEY, this.tab);
+  }
+
+  /**
+   * The scene to start with: this tab's own slot on a reload, else the most recently saved slot;
+   * `note` says why a reloaded tab did not get its own scene back.
+   */
+  restore(): { slot: Slot; note: string | null } | null {
+    const own = this.reloaded ? readSlot(this.env.local, this.tab) : null;
+    const slot = own ?? newestSlot(this.env.local);
+    if (!slot) return null;
+    this.lastText = slot.text;
+    if (own) this.ownSavedAt = own.savedAt;
+    const lost = this.env.session.getItem(LOST_KEY) !== null;
+    const note =
+      !own && lost
+        ? `This tab's last scene could not be autosaved; restored the scene saved most recently (at ${clockTime(slot.savedAt)}).`
+        : null;
+    return { slot, note };
+  }
+
+  /** A slot of another tab saved after this tab's own (at start), holding a different scene. */
+  newerOther(): Slot | null {
+    const other = newestSlot(this.env.local, this.tab);
+    if (!other || other.savedAt <= this.ownSavedAt || other.text === this.lastText) return null;
+    return other;
+  }
+
+  /**
+   * Writes this tab's slot and prunes old slots (`prune` false: writing back a slot another tab
+   * pruned, which must not prune in turn, or tabs would prune each other for ever); null on success,
+   * else a message for the user.
+   */
+  save(scene: SceneFile, prune = true): string | null {
+    const now = this.env.now();
+    const text = sceneText(scene);
+    const failed = writeSlot(this.env.local, this.tab, text, now);
+    if (failed !== null) {
+      this.env.session.setItem(LOST_KEY, "1");
+      return failed;
+    }
+    this.env.session.removeItem(LOST_KEY);
+    this.ownSavedAt = now;
+    this.lastText = text;
+    if (prune) pruneSlots(this.env.local, this.tab);
+    return null;
+  }
+
+  /**
+   * Saves after every scene change of `editor` (AUTOSAVE_DELAY_MS of quiet) and when the page goes,
+   * listens to other tabs' saves, and shows the newer-work notice. Returns a function that stops.
+   */
+  attach(editor: Editor, win: Window): () => void {
+    const { client, ui } = editor;
+    let savedRevision = client.getSnapshot().docRevision;
+    let timer: ReturnType<typeof setTimeout> | null = null;
+    let autosaveFailed = false;
+    /** `force`: write even when the scene did not change (the slot was pruned, or the id changed). */
+    const save = (force = false) => {
+      if (timer !== null) clearTimeout(timer);
+      timer = null;
+      const now = client.getSnapshot();
+      if (now.docRevision === savedRevision && !force) return;
+      savedRevision = now.docRevision;
+      const failed = now.doc ? this.save(now.doc, !force) : null;
+      if (failed !== null && !autosaveFailed) ui.setState({ message: { text: failed, tone: "error" } });
+      autosaveFailed = failed !== null; // said once, until autosave works again
+    };
+    const unsubClient = client.subscribe(() => {
+      if (client.getSnapshot().docRevision === savedRevision || timer !== null) return;
+      timer = setTimeout(save, AUTOSAVE_DELAY_MS);
+    });
+    // A reload or a closed tab within the quiet delay of an edit keeps that edit.
+    const onHide = () => save();
+    win.addEventListener("pagehide", onHide);
+
+    // Dismissing the notice (or opening the work) mutes that tab.
+    const unsubUi = ui.subscribe((s, p) => {
+      if (p.newerWork && s.newerWork === null) this.muted.add(p.newerWork.tab);
+    });
+    const onStorage = (e: StorageEvent) => {
+      if (e.storageArea !== null && e.storageArea !== this.env.local) return;
+      if (e.key === null) return;
+      const own = slotKey(this.tab);
+      if (e.key === own) {
+        // another tab pruned this tab's slot: write it again (the scene is still here)
+        if (e.newValue === null) save(true);
+        return;
+      }
+      if (!e.key.startsWith(slotKey(""))) return;
+      const tab = e.key.slice(slotKey("").length);
+      const shown = ui.getState().newerWork;
+      const savedAt = slotSavedAt(e.newValue);
+      if (savedAt === null) {
+        if (shown?.tab === tab) ui.setState({ newerWork: null }); // gone: nothing to open
+        return;
+      }
+      if (this.muted.has(tab) || savedAt <= this.ownSavedAt || slotText(e.newValue) === this.lastText) return;
+      ui.setState({ newerWork: { tab, savedAt } });
+    };
+    win.addEventListener("storage", onStorage);
+
+    // A duplicated tab shares the id (sessionStorage is copied): the tab that says hello with an id
+    // already in use takes a new one and saves its scene there.
+    const channel = this.env.channel;
+    if (channel) {
+      channel.onmessage = (e) => {
+        const m = e.data as { type?: string; tab?: string } | null;
+        if (m?.tab !== this.tab) return;
+        if (m.type === "hello") channel.postMessage({ type: "taken", tab: this.tab });
+        else if (m.type === "taken") {
+          this.tab = this.env.newTabId();
+          this.env.session.setItem(TAB_KEY, this.tab);
+          save(true);
+        }
+      };
+      channel.postMessage({ type: "hello", tab: this.tab });
+    }
+    return () => {
+      if (timer !== null) clearTimeout(timer);
+      unsubClient();
+      unsubUi();
+      win.removeEventListener("pagehide", onHide);
+      win.removeEventListener("storage", onStorage);
+      channel?.close();
+    };
+  }
+}

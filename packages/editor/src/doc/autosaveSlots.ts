@@ -1,0 +1,150 @@
+/**
+ * Autosave slots in localStorage, one per editor tab, so two tabs never overwrite each other's work.
+ * A slot is `chapgame.editor.autosave.v2.<tab id>`, its value one line of metadata (`{"savedAt":ms}`)
+ * then the scene (format v1). The single slot of earlier versions (`...autosave.v1`, the scene alone)
+ * is migrated into the slot of tab "v1" with savedAt 0 (its time is unknown: any newer slot wins).
+ * At most MAX_SLOTS slots are kept: the oldest are pruned, never the saving tab's own.
+ * Pure storage access: the caller gives the storage, the tab id and the clock.
+ */
+import type { SceneFile } from "../engineTypes";
+import { parseSceneText } from "./sceneIo";
+
+export const SLOT_PREFIX = "chapgame.editor.autosave.v2.";
+/** The one autosave slot of the editor before per-tab slots. */
+export const LEGACY_KEY = "chapgame.editor.autosave.v1";
+/** The tab id the legacy slot is migrated to. */
+export const LEGACY_TAB = "v1";
+/** Slots kept at most (tabs that saved; the oldest are pruned, never the current tab's). */
+export const MAX_SLOTS = 8;
+
+export interface SlotInfo {
+  tab: string;
+  key: string;
+  /** When the slot was written (ms since the epoch; 0 for a migrated legacy autosave). */
+  savedAt: number;
+}
+
+export interface Slot extends SlotInfo {
+  scene: SceneFile;
+  /** The scene's text as stored (to compare scenes without parsing them again). */
+  text: string;
+}
+
+export const slotKey = (tab: string): string => SLOT_PREFIX + tab;
+
+/** The metadata and the scene text of a stored slot value; null when it is not one. */
+function split(value: string | null): { savedAt: number; text: string } | null {
+  if (value === null) return null;
+  const nl = value.indexOf("\n");
+  if (nl < 0) return null;
+  try {
+    const meta = JSON.parse(value.slice(0, nl)) as { savedAt?: unknown };
+    if (typeof meta.savedAt !== "number" || !Number.isFinite(meta.savedAt)) return null;
+    return { savedAt: meta.savedAt, text: value.slice(nl + 1) };
+  } catch {
+    return null;
+  }
+}
+
+/** savedAt of a slot value (a storage event's newValue, say); null when it is not a slot. */
+export function slotSavedAt(value: string | null): number | null {
+  return split(value)?.savedAt ?? null;
+}
+
+/** The scene text of a slot value; null when it is not a slot. */
+export function slotText(value: string | null): string | null {
+  return split(value)?.text ?? null;
+}
+
+/** Every slot's tab, key and time, newest first (values that are not slots are skipped). */
+export function listSlots(storage: Storage): SlotInfo[] {
+  const out: SlotInfo[] = [];
+  for (const key of slotKeys(storage)) {
+    const savedAt = slotSavedAt(storage.getItem(key));
+    if (savedAt !== null) out.push({ tab: key.slice(SLOT_PREFIX.length), key, savedAt });
+  }
+  return out.sort((a, b) => b.savedAt - a.savedAt);
+}
+
+function slotKeys(storage: Storage): string[] {
+  const keys: string[] = [];
+  for (let i = 0; i < storage.length; i++) {
+    const key = storage.key(i);
+    if (key?.startsWith(SLOT_PREFIX)) keys.push(key);
+  }
+  return keys;
+}
+
+/** The slot of `tab`, or null when there is none or it does not hold a valid scene. */
+export function readSlot(storage: Storage, tab: string): Slot | null {
+  const key = slotKey(tab);
+  const parts = split(storage.getItem(key));
+  if (!parts) return null;
+  try {
+    return { tab, key, savedAt: parts.savedAt, scene: parseSceneText(parts.text), text: parts.text };
+  } catch {
+    return null;
+  }
+}
+
+/** The most recently saved slot holding a valid scene (other than `except`), or null. */
+export function newestSlot(storage: Storage, except: string | null = null): Slot | null {
+  for (const s of listSlots(storage)) {
+    if (s.tab === except) continue;
+    const slot = readSlot(storage, s.tab);
+    if (slot) return slot;
+  }
+  return null;
+}
+
+/**
+ * Moves the legacy single autosave into the slot of tab LEGACY_TAB (savedAt 0), then removes it.
+ * When the storage refuses the copy, the legacy autosave stays where it is (nothing is lost).
+ */
+export function migrateLegacy(storage: Storage): void {
+  const text = storage.getItem(LEGACY_KEY);
+  if (text === null) return;
+  try {
+    storage.setItem(slotKey(LEGACY_TAB), `${JSON.stringify({ savedAt: 0 })}\n${text}`);
+  } catch {
+    return;
+  }
+  storage.removeItem(LEGACY_KEY);
+}
+
+/**
+ * Writes `tab`'s slot (`text`: the scene's text, sceneIo.sceneText); null on success, else a message for the user. When the scene cannot be stored
+ * (storage full or disabled), the tab's older slot is removed: a reload must not bring back an older
+ * scene of this tab as if it were the latest. Other tabs' slots are never touched here.
+ */
+export function writeSlot(storage: Storage, tab: string, text: string, savedAt: number): string | null {
+  try {
+    storage.setItem(slotKey(tab), `${JSON.stringify({ savedAt })}\n${text}`);
+    return null;
+  } catch {
+    try {
+      storage.removeItem(slotKey(tab));
+    } catch {
+      // storage disabled altogether: nothing to remove
+    }
+    const mb = (text.length / 1e6).toFixed(1);
+    return `Autosave failed: the browser's storage refused the scene (${mb} MB of JSON). A reload will not keep it: use Save file.`;
+  }
+}
+
+/**
+ * Keeps at most `max` slots: removes the oldest, never `keep`'s. Cheap when there are few slots
+ * (only the keys are read then).
+ */
+export function pruneSlots(storage: Storage, keep: string, max = MAX_SLOTS): string[] {
+  const keys = slotKeys(storage);
+  if (keys.length <= max) return [];
+  const others = keys
+    .filter((key) => key !== slotKey(keep))
+    // values that are not slots go first
+    .map((key) => ({ key, savedAt: slotSavedAt(storage.getItem(key)) ?? Number.NEGATIVE_INFINITY }))
+    .sort((a, b) => b.savedAt - a.savedAt);
+  const removed = others.slice(max - 1).map((s) => s.key.slice(SLOT_PREFIX.length));
+  for (const tab of removed) storage.removeItem(slotKey(tab));
+  return removed;
+}

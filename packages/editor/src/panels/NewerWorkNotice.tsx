@@ -1,0 +1,24 @@
+/**
+ * The notice that another tab saved newer work than this tab's (autosave.ts): not a modal, it sits
+ * under the header until the reader opens that work (one undo step over this tab's scene) or
+ * dismisses it (that tab is not announced again until this one reloads).
+ */
+import { clockTime, openNewerWork } from "../autosave";
+import { useEditor, useUi } from "../EditorContext";
+
+export function NewerWorkNotice() {
+  const editor = useEditor();
+  const newer = useUi((s) => s.newerWork);
+  if (!newer) return null;
+  return (
+    <div className="newer-work" role="status" aria-label="Newer work in another tab">
+      <span>Another editor tab saved a newer scene at {clockTime(newer.savedAt)}.</span>
+      <button type="button" onClick={() => void openNewerWork(editor, window.localStorage, newer.tab)}>
+        Open it
+      </button>
+      <button type="button" onClick={() => editor.ui.setState({ newerWork: null })}>
+        Dismiss
+      </button>
+    </div>
+  );
+}
