@@ -1,0 +1,128 @@
+// Far-apart contacts through the World: a disc dropped under gravity from 10^p radii onto a point or
+// a segment, and a disc sliding under friction onto a resting disc or a point 10^p contact
+// distances away (p = 3..12; 10^3 is inside FAR_CONTACT_REACH, the rest beyond it). The contact
+// must be found at the time of the closed-form motion, and the state after it must be the right
+// bounce. Positions that far out carry an absolute rounding of about UNIT_ROUNDOFF × distance, which
+// tilts the contact normal by that over the radius: directions are held to FAR_NORMAL × u × D / R,
+// while what the normal cannot spoil (times, speeds, momentum, energy) is held to rounding level.
+import { describe, expect, it } from "vitest";
+import type { WorldEvent } from "../src/sim/types.js";
+import { World } from "../src/sim/world.js";
+import { UNIT_ROUNDOFF } from "../src/tolerances.js";
+
+const POWERS = [3, 4, 5, 6, 7, 8, 9, 10, 11, 12];
+/** Times against the closed form (itself rounded): relative. */
+const TIME_REL = 1e-14;
+/** Speeds, momentum and energy across a bounce: relative. */
+const KEPT_REL = 1e-12;
+/** Directions after a bounce at distance D, radius R: within FAR_NORMAL × u × D / R (measured: 4). */
+const FAR_NORMAL = 64;
+
+/** The first event of a World (a copy); fails when there is none. */
+function firstEvent(w: World): WorldEvent {
+  let ev: WorldEvent | null = null;
+  w.advance({ maxEvents: 1 }, (e) => {
+    ev = { ...e };
+  });
+  expect(ev, "the contact was missed").not.toBeNull();
+  return ev as unknown as WorldEvent;
+}
+
+describe("far-apart contacts (10^3 to 10^12 contact distances)", () => {
+  const g = 9.81;
+  const r = 1;
+
+  it("a disc dropped from 10^p radii onto a point (offset 0, 0.3 r, 0.99 r) bounces off it at the free-fall time", () => {
+    for (const p of POWERS)
+      for (const off of [0, 0.3, 0.99]) {
+        const h = 10 ** p;
+        const w = new World({ g: 0, gravity: [0, -g] });
+        w.addPoint("P", [off, 0]);
+        w.addBody("d", { x: 0, y: h, r, m: 1 });
+        const e = firstEvent(w);
+        const at = `p ${p}, offset ${off}`;
+        expect([e.kind, e.a, e.b], at).toEqual(["bodyPoint", "d", "P"]);
+        const yc = Math.sqrt(r * r - off * off); // centre height at contact
+        const t = Math.sqrt((2 * (h - yc)) / g);
+        expect(Math.abs(e.time - t) / t, at).toBeLessThanOrEqual(TIME_REL);
+        // Elastic bounce off the point: v' = v - 2 (v.n) n, n = (off, -yc) / r.
+        const v = g * t;
+        const [nx, ny] = [off / r, -yc / r];
+        const dir = FAR_NORMAL * UNIT_ROUNDOFF * (h / r);
+        expect(Math.abs(e.nx - nx), at).toBeLessThanOrEqual(dir);
+        expect(Math.abs(e.ny - ny), at).toBeLessThanOrEqual(dir);
+        const after = w.body("d");
+        const vn = -v * ny;
+        expect(Math.abs(after.vx - -2 * vn * nx) / v, at).toBeLessThanOrEqual(dir);
+        expect(Math.abs(after.vy - (-v - 2 * vn * ny)) / v, at).toBeLessThanOrEqual(dir);
+        expect(Math.abs(Math.hypot(after.vx, after.vy) - v) / v, at).toBeLessThanOrEqual(KEPT_REL);
+      }
+  });
+
+  it("a disc dropped from 10^p radii onto a segment bounces straight back up at the free-fall time", () => {
+    for (const p of POWERS) {
+      const h = 10 ** p;
+      const w = new World({ g: 0, gravity: [0, -g] });
+      w.addLine("S", [-0.5, 0], [0.5, 0], "segment");
+      w.addBody("d", { x: 0.2, y: h, r, m: 1 });
+      const e = firstEvent(w);
+      expect([e.kind, e.a, e.b], `p ${p}`).toEqual(["bodyLine", "d", "S"]);
+      const t = Math.sqrt((2 * (h - r)) / g);
+      expect(Math.abs(e.time - t) / t, `p ${p}`).toBeLessThanOrEqual(TIME_REL);
+      const after = w.body("d");
+      expect(after.vx).toBe(0);
+      expect(Math.abs(after.vy - g * t) / (g * t), `p ${p}`).toBeLessThanOrEqual(KEPT_REL);
+    }
+  });
+
+  it("a disc sliding under friction onto a resting disc 10^p contact distances away (offset 0, R/4, 3R/4) passes its momentum on", () => {
+    const mu = 0.2;
+    const dec = mu * g;
+    for (const p of POWERS)
+      for (const off of [0, 0.5, 1.5]) {
+        const R = 2 * r;
+        const D = 10 ** p * R;
+        const v0 = Math.sqrt(3 * dec * D); // stops 1.5 D away: well past the other disc
+        const w = new World({ g });
+        w.addBody("a", { x: 0, y: 0, r, m: 1, mu, vx: v0 });
+        w.addBody("b", { x: D, y: off, r, m: 1, mu });
+        const e = firstEvent(w);
+        const at = `p ${p}, offset ${off}`;
+        expect([e.kind, e.a, e.b], at).toEqual(["bodyBody", "a", "b"]);
+        const cx = Math.sqrt(R * R - off * off); // x distance of the centres at contact
+        const vc = Math.sqrt(v0 * v0 - 2 * dec * (D - cx)); // speed at contact
+        const t = (v0 - vc) / dec;
+        expect(Math.abs(e.time - t) / t, at).toBeLessThanOrEqual(TIME_REL);
+        const a = w.body("a");
+        const b = w.body("b");
+        // Equal masses: momentum and energy kept; b leaves along the normal (cx, off) / R.
+        expect(Math.abs(a.vx + b.vx - vc) / vc, at).toBeLessThanOrEqual(KEPT_REL);
+        expect(Math.abs(a.vy + b.vy) / vc, at).toBeLessThanOrEqual(KEPT_REL);
+        const energy = a.vx * a.vx + a.vy * a.vy + b.vx * b.vx + b.vy * b.vy;
+        expect(Math.abs(energy - vc * vc) / (vc * vc), at).toBeLessThanOrEqual(KEPT_REL);
+        const dir = FAR_NORMAL * UNIT_ROUNDOFF * (D / R);
+        const vb = (vc * cx) / R;
+        expect(Math.abs(b.vx - (vb * cx) / R) / vc, at).toBeLessThanOrEqual(dir);
+        expect(Math.abs(b.vy - (vb * off) / R) / vc, at).toBeLessThanOrEqual(dir);
+      }
+  });
+
+  it("a disc sliding under friction onto a point 10^p radii away hits it at the closed-form time", () => {
+    const mu = 0.2;
+    const dec = mu * g;
+    for (const p of POWERS) {
+      const D = 10 ** p * r;
+      const v0 = Math.sqrt(3 * dec * D);
+      const w = new World({ g });
+      w.addBody("a", { x: 0, y: 0, r, m: 1, mu, vx: v0 });
+      w.addPoint("P", [D, 0.5 * r]);
+      const e = firstEvent(w);
+      expect([e.kind, e.a, e.b], `p ${p}`).toEqual(["bodyPoint", "a", "P"]);
+      const vc = Math.sqrt(v0 * v0 - 2 * dec * (D - Math.sqrt(0.75) * r));
+      const t = (v0 - vc) / dec;
+      expect(Math.abs(e.time - t) / t, `p ${p}`).toBeLessThanOrEqual(TIME_REL);
+      const after = w.body("a");
+      expect(Math.abs(Math.hypot(after.vx, after.vy) - vc) / vc, `p ${p}`).toBeLessThanOrEqual(KEPT_REL);
+    }
+  });
+});
