@@ -75,11 +75,6 @@ export async function boot(): Promise<Editor> {
   autosave.attach(editor, window);
   startPlayback(editor);
   bindKeyboard(editor);
-  Object.assign(window, {
-    chapgame: editor,
-    chapgameStats: drawStats,
-    chapgameResetStats: resetDrawStats,
-    chapgameTab: () => autosave.tab,
-  });
+  Object.assign(window, { chapgame: editor, chapgameStats: drawStats, chapgameResetStats: resetDrawStats });
   return editor;
 }

@@ -47,6 +47,14 @@ describe("dropping a scene file", () => {
     expect(indicator()).toBeNull();
   });
 
+  it("the indicator goes by itself when dragovers stop (a drag cancelled without a dragleave)", async () => {
+    await setup();
+    fireEvent.dragEnter(window, carrying([]));
+    fireEvent.dragOver(window, carrying([]));
+    expect(indicator()).not.toBeNull();
+    await waitFor(() => expect(indicator()).toBeNull(), { timeout: 3000 });
+  });
+
   it("a dropped scene file opens as one undo step, like Load file", async () => {
     const { editor, client } = await setup();
     fireEvent.dragEnter(window, carrying([]));

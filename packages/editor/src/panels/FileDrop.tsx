@@ -8,6 +8,12 @@ import { useEffect, useState } from "react";
 import { droppedSceneFile, openSceneFile } from "../doc/openScene";
 import { useEditor } from "../EditorContext";
 
+/**
+ * Milliseconds without a dragover after which the indicator goes: browsers repeat dragover while a
+ * drag stays over the page, still or not (HTML's drag-and-drop model: every 350 ms ± 200 ms).
+ */
+const STALE_MS = 1000;
+
 const carriesFiles = (e: DragEvent) => e.dataTransfer?.types.includes("Files") ?? false;
 
 export function FileDrop() {
@@ -15,12 +21,23 @@ export function FileDrop() {
   const [over, setOver] = useState(false);
 
   useEffect(() => {
-    // dragenter and dragleave come in pairs for every element crossed: count them.
+    // dragenter and dragleave come in pairs for every element crossed: count them. dragover repeats
+    // while files are over the page; when it stops (a drag cancelled or left
+    // without a dragleave the page saw), the indicator goes after STALE_MS.
     let depth = 0;
+    let stale: ReturnType<typeof setTimeout> | null = null;
+    const hideLater = () => {
+      if (stale !== null) clearTimeout(stale);
+      stale = setTimeout(() => {
+        depth = 0;
+        setOver(false);
+      }, STALE_MS);
+    };
     const onEnter = (e: DragEvent) => {
       if (!carriesFiles(e)) return;
       depth++;
       setOver(true);
+      hideLater();
     };
     const onLeave = (e: DragEvent) => {
       if (!carriesFiles(e)) return;
@@ -32,6 +49,7 @@ export function FileDrop() {
       e.preventDefault(); // allows the drop (the browser would open the file in place of the editor)
       if (e.dataTransfer) e.dataTransfer.dropEffect = "copy";
       setOver(true);
+      hideLater();
     };
     const onDrop = (e: DragEvent) => {
       if (!carriesFiles(e)) return;
@@ -47,6 +65,7 @@ export function FileDrop() {
     window.addEventListener("dragover", onOver);
     window.addEventListener("drop", onDrop);
     return () => {
+      if (stale !== null) clearTimeout(stale);
       window.removeEventListener("dragenter", onEnter);
       window.removeEventListener("dragleave", onLeave);
       window.removeEventListener("dragover", onOver);
