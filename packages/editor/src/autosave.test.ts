@@ -1,5 +1,5 @@
 import { afterEach, describe, expect, it } from "vitest";
-import { openNewerWork, TAB_KEY, TabAutosave } from "./autosave";
+import { ADOPT_AFTER_MS, openNewerWork, TAB_KEY, TabAutosave } from "./autosave";
 import { LEGACY_KEY, listSlots, MAX_SLOTS, readSlot, slotKey } from "./doc/autosaveSlots";
 import { sceneText } from "./doc/sceneIo";
 import { EMPTY_SCENE } from "./editor";
@@ -225,6 +225,34 @@ describe("autosave per tab", () => {
     dup.flush();
     expect(ids(readSlot(p.shared, a.autosave.tab)!.scene)).toEqual(["original"]);
     expect(ids(readSlot(p.shared, dup.autosave.tab)!.scene)).toEqual(["duplicate"]);
+  });
+
+  it("a fresh tab that restored the scene of a closed tab carries on in its slot (no second copy)", async () => {
+    const p = newProfile();
+    const a = await p.open();
+    await a.editor.loadScene(scene("yesterday"));
+    a.close();
+    const b = await p.open();
+    expect(ids(b.editor.doc)).toEqual(["yesterday"]);
+    await expect.poll(() => b.autosave.tab, { timeout: 3000 }).toBe(a.autosave.tab);
+    expect(b.session.getItem(TAB_KEY)).toBe(a.autosave.tab);
+    await b.editor.loadScene(scene("today"));
+    b.flush();
+    expect(listSlots(p.shared).map((s) => s.tab)).toEqual([a.autosave.tab]);
+    expect(ids(readSlot(p.shared, a.autosave.tab)!.scene)).toEqual(["today"]);
+  });
+
+  it("a fresh tab never takes over the slot of a tab that is open", async () => {
+    const p = newProfile();
+    const a = await p.open();
+    await a.editor.loadScene(scene("open"));
+    a.flush();
+    const b = await p.open();
+    await new Promise((r) => setTimeout(r, ADOPT_AFTER_MS + 200));
+    expect(b.autosave.tab).not.toBe(a.autosave.tab);
+    await b.editor.loadScene(scene("second"));
+    b.flush();
+    expect(ids(readSlot(p.shared, a.autosave.tab)!.scene)).toEqual(["open"]);
   });
 
   it("a reloaded tab whose last scene could not be saved restores the newest scene and says why", async () => {

@@ -5,7 +5,8 @@
  * gone) restores the most recently saved slot of any tab. When another tab saves newer work, this tab
  * shows a notice (ui.newerWork) with a way to open it; Dismiss mutes that tab until this one reloads.
  * Nothing is lost: a slot removed by another tab's pruning is written again at once, and a tab
- * duplicated by the browser (which copies sessionStorage, so the id too) takes a new id on start.
+ * duplicated by the browser (which copies sessionStorage, so the id too) takes a new id on start
+ * (tabPresence.ts). A fresh tab that restored the slot of a tab no longer open takes that slot over.
  */
 import {
   migrateLegacy,
@@ -21,20 +22,20 @@ import {
 import { sceneText } from "./doc/sceneIo";
 import type { Editor } from "./editor";
 import type { SceneFile } from "./engineTypes";
+import { type TabChannel, TabPresence } from "./tabPresence";
 
 /** Milliseconds of quiet after a scene change before it is autosaved. */
 export const AUTOSAVE_DELAY_MS = 300;
 /** sessionStorage: this tab's id. */
 export const TAB_KEY = "chapgame.editor.tab";
+/**
+ * Milliseconds after start when a fresh tab that restored the slot of a tab no longer open takes
+ * that slot over (the open tabs have answered by then), so closing and opening the editor does not
+ * pile up copies of one scene.
+ */
+export const ADOPT_AFTER_MS = 500;
 /** sessionStorage: set while this tab's last scene could not be saved. */
 const LOST_KEY = "chapgame.editor.tab.lost";
-
-/** The part of BroadcastChannel the tabs use to find a duplicated id. */
-export interface TabChannel {
-  postMessage(message: unknown): void;
-  onmessage: ((e: { data: unknown }) => void) | null;
-  close(): void;
-}
 
 export interface AutosaveEnv {
   local: Storage;
@@ -88,6 +89,8 @@ export class TabAutosave {
   private lastText: string | null = null;
   private ownSavedAt = Number.NEGATIVE_INFINITY;
   private readonly muted = new Set<string>();
+  /** The slot of another tab a fresh tab restored (null: none, or its own). */
+  private restoredFrom: { tab: string; savedAt: number } | null = null;
 
   constructor(private readonly env: AutosaveEnv) {
     migrateLegacy(env.local);
@@ -107,6 +110,7 @@ export class TabAutosave {
     if (!slot) return null;
     this.lastText = slot.text;
     if (own) this.ownSavedAt = own.savedAt;
+    else this.restoredFrom = { tab: slot.tab, savedAt: slot.savedAt };
     const lost = this.env.session.getItem(LOST_KEY) !== null;
     const note =
       !own && lost
@@ -196,29 +200,41 @@ export class TabAutosave {
     };
     win.addEventListener("storage", onStorage);
 
-    // A duplicated tab shares the id (sessionStorage is copied): the tab that says hello with an id
-    // already in use takes a new one and saves its scene there.
     const channel = this.env.channel;
-    if (channel) {
-      channel.onmessage = (e) => {
-        const m = e.data as { type?: string; tab?: string } | null;
-        if (m?.tab !== this.tab) return;
-        if (m.type === "hello") channel.postMessage({ type: "taken", tab: this.tab });
-        else if (m.type === "taken") {
+    const presence =
+      channel &&
+      new TabPresence(
+        channel,
+        () => this.tab,
+        () => {
+          // a duplicated tab: its scene goes to a slot of its own
           this.tab = this.env.newTabId();
           this.env.session.setItem(TAB_KEY, this.tab);
           save(true);
-        }
-      };
-      channel.postMessage({ type: "hello", tab: this.tab });
-    }
+        },
+      );
+    const onBye = () => presence?.bye();
+    win.addEventListener("pagehide", onBye);
+    const adopt = setTimeout(() => {
+      const from = this.restoredFrom;
+      if (!presence || !from || presence.live.has(from.tab) || this.ownSavedAt > Number.NEGATIVE_INFINITY)
+        return;
+      // The restored scene's tab is closed: this tab carries on in its slot (one copy, not two).
+      this.tab = from.tab;
+      this.ownSavedAt = from.savedAt;
+      this.env.session.setItem(TAB_KEY, from.tab);
+      this.restoredFrom = null;
+      presence.hello(); // two fresh tabs adopting the same slot: both take new ids
+    }, ADOPT_AFTER_MS);
     return () => {
       if (timer !== null) clearTimeout(timer);
+      clearTimeout(adopt);
       unsubClient();
       unsubUi();
       win.removeEventListener("pagehide", onHide);
+      win.removeEventListener("pagehide", onBye);
       win.removeEventListener("storage", onStorage);
-      channel?.close();
+      presence?.close();
     };
   }
 }
