@@ -242,6 +242,22 @@ describe("autosave per tab", () => {
     expect(ids(readSlot(p.shared, a.autosave.tab)!.scene)).toEqual(["today"]);
   });
 
+  it("a page back from the back-forward cache whose slot was taken over meanwhile moves to a new one", async () => {
+    const p = newProfile();
+    const a = await p.open();
+    await a.editor.loadScene(scene("cached"));
+    a.flush(); // pagehide: into the cache (its script stops, it answers no hello)
+    const channelA = (a.autosave as unknown as { env: { channel: BroadcastChannel } }).env.channel;
+    const onmessage = channelA.onmessage;
+    channelA.onmessage = null;
+    const b = await p.open();
+    await expect.poll(() => b.autosave.tab, { timeout: 3000 }).toBe(a.autosave.tab);
+    channelA.onmessage = onmessage;
+    a.win.dispatchEvent(Object.assign(new Event("pageshow"), { persisted: true }));
+    await expect.poll(() => a.autosave.tab, { timeout: 3000 }).not.toBe(b.autosave.tab);
+    expect(ids(readSlot(p.shared, a.autosave.tab)!.scene)).toEqual(["cached"]);
+  });
+
   it("a fresh tab never takes over the slot of a tab that is open", async () => {
     const p = newProfile();
     const a = await p.open();

@@ -215,6 +215,11 @@ export class TabAutosave {
       );
     const onBye = () => presence?.bye();
     win.addEventListener("pagehide", onBye);
+    // Back from the back-forward cache: another tab may have taken over this slot meanwhile.
+    const onShow = (e: Event) => {
+      if ((e as PageTransitionEvent).persisted) presence?.hello();
+    };
+    win.addEventListener("pageshow", onShow);
     const adopt = setTimeout(() => {
       const from = this.restoredFrom;
       if (!presence || !from || presence.live.has(from.tab) || this.ownSavedAt > Number.NEGATIVE_INFINITY)
@@ -233,6 +238,7 @@ export class TabAutosave {
       unsubUi();
       win.removeEventListener("pagehide", onHide);
       win.removeEventListener("pagehide", onBye);
+      win.removeEventListener("pageshow", onShow);
       win.removeEventListener("storage", onStorage);
       presence?.close();
     };
