@@ -60,6 +60,12 @@ describe("fit to scene", () => {
     }
   });
 
+  it("one big disc with small ones near it is fitted to their bounds (the median radius sets the minimum)", () => {
+    const f = frameOf([disc("planet", 0, 0, 10), disc("m1", 14, 0, 0.5), disc("m2", -14, 0, 0.5)]);
+    expect(fitFrame(f, size)).toEqual(fit(frameBounds(f), size));
+    expect(fitFrame(f, size).scale).toBeCloseTo((800 - 48) / 29, 12);
+  });
+
   it("two close discs get the minimum extent too; the presets (but the original demo) fit as before", () => {
     const pair = fitFrame(frameOf([disc("a", 0, 0, 1), disc("b", 2.5, 0, 1)]), size);
     expect(pair.scale).toBeCloseTo((800 - 48) / (FIT_MIN_RADII * 1), 12);
