@@ -5,6 +5,7 @@
 // bounce. Positions that far out carry an absolute rounding of about UNIT_ROUNDOFF × distance, which
 // tilts the contact normal by that over the radius: directions are held to FAR_NORMAL × u × D / R,
 // while what the normal cannot spoil (times, speeds, momentum, energy) is held to rounding level.
+// Scaled by powers of two (lengths and time, as in scale.prop.test.ts) they give the same bits.
 import { describe, expect, it } from "vitest";
 import type { WorldEvent } from "../src/sim/types.js";
 import { World } from "../src/sim/world.js";
@@ -124,5 +125,47 @@ describe("far-apart contacts (10^3 to 10^12 contact distances)", () => {
       const after = w.body("a");
       expect(Math.abs(Math.hypot(after.vx, after.vy) - vc) / vc, `p ${p}`).toBeLessThanOrEqual(KEPT_REL);
     }
+  });
+
+  it("far contacts scale exactly: lengths × 2^a and time × 2^b give the same event bits", () => {
+    const drop = (p: number, off: number, s: number, k: number): WorldEvent => {
+      const w = new World({ g: 0, gravity: [0, (-g * s) / (k * k)] });
+      w.addPoint("P", [off * s, 0]);
+      w.addBody("d", { x: 0, y: 10 ** p * s, r: r * s, m: 1 });
+      return firstEvent(w);
+    };
+    const slide = (p: number, off: number, s: number, k: number): WorldEvent => {
+      const mu = 0.2;
+      const D = 10 ** p * 2 * r;
+      const v0 = Math.sqrt(3 * mu * g * D);
+      const w = new World({ g: (g * s) / (k * k) });
+      w.addBody("a", { x: 0, y: 0, r: r * s, m: 1, mu, vx: (v0 * s) / k });
+      w.addBody("b", { x: D * s, y: off * s, r: r * s, m: 1, mu });
+      return firstEvent(w);
+    };
+    // Every length, speed and acceleration stays within the edit bounds for p <= 12.
+    const scales = [
+      [-60, 0],
+      [40, 0],
+      [0, 40],
+      [0, -40],
+      [-40, -40],
+      [40, 20],
+      [-20, 30],
+      [30, -30],
+    ] as const;
+    for (const run of [drop, slide])
+      for (const p of POWERS)
+        for (const off of [0, 0.3, 0.99]) {
+          const e = run(p, off, 1, 1);
+          for (const [a, b] of scales) {
+            const [s, k] = [2 ** a, 2 ** b];
+            const f = run(p, off, s, k);
+            expect(
+              [f.time, f.px, f.py, f.nx, f.ny, f.impulse],
+              `${run.name} p ${p}, ${off}, 2^${a}, 2^${b}`,
+            ).toEqual([e.time * k, e.px * s, e.py * s, e.nx, e.ny, e.impulse * (s / k)]);
+          }
+        }
   });
 });
