@@ -96,6 +96,16 @@ describe("far contacts under friction", () => {
   });
 });
 
+describe("far contacts without acceleration", () => {
+  it("a straight path 1e3 contact distances long (FC_SEED=827864543: the whole path was one window)", () => {
+    // The property's shrunk case: w = 0 reaches quarticContact (the engine sends it the quadratic
+    // path, but the function must hold on its own); contact at tau = 10.
+    const v = [-2, -9.797958971132712] as const;
+    const pair: Pair = [0.1 - v[0] * 10, -v[1] * 10, v[0], v[1], 0, 0, 0.1];
+    expectCrossingNear(pair, quarticContact(...pair, 0, INF), "straight");
+  });
+});
+
 describe("constructed far contacts (property)", () => {
   it("a contact built backwards from a known touching state is found, at an exact crossing, whenever the pair is evaluated", () => {
     const params = fcParams("far contact", 400);

@@ -10,25 +10,21 @@
  * vanishes (a disc dropped from 1e8 radii onto a point fell through it).
  *
  * How: the near part of the window, where a cheap bound on |d(tau)| stays within FAR_CONTACT_REACH
- * contact distances, is solved as it stands (every pair of an ordinary scene stops here). The far part
- * is narrowed to where the pair can touch at all (farWindow.ts, closed form), then cut at the
- * extrema of the distance (the roots of f', a cubic whose roots are well conditioned:
- * they place a closest point within about UNIT_ROUNDOFF * M). A contact in the far part lies on a
- * piece where the distance decreases; the gap is re-expanded about that piece's closest point, where
- * its terms are of size R^2 again, and its crossing is solved there.
+ * contact distances, is solved as it stands (every pair of an ordinary scene stops here). In the far
+ * part, the pair can only touch in at most two windows where it is within a few R in both
+ * components (farWindow.ts, closed form); the gap is re-expanded about each window's start, where
+ * its terms are of size R^2, and solved there. Positions of size M carry a rounding error of about
+ * UNIT_ROUNDOFF * M, so that is the accuracy of a far contact's place.
  */
 
-import { realRootsInto } from "../roots/realRoots.js";
 import { FAR_CONTACT_REACH } from "../tolerances.js";
-import { farWindow } from "./farWindow.js";
+import { farWindows } from "./farWindow.js";
 import { firstDownCrossingQuartic } from "./quarticCrossing.js";
 
 const INF = Number.POSITIVE_INFINITY;
-const window = new Float64Array(2);
-const slope = new Float64Array(4);
-const local = new Float64Array(5);
-const extrema: number[] = [];
-const crossings: number[] = [];
+const windows = new Float64Array(4);
+/** The gap's coefficients about the base time, for the far part's fallback into the near part. */
+const gap = new Float64Array(5);
 
 /** First contact of the pair in [lo, hi] (see the header); d, u, w relative, R the contact distance. */
 export function quarticContact(
@@ -53,7 +49,12 @@ export function quarticContact(
     const t = firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, near);
     if (t !== INF) return t;
   }
-  return farPart(dx, dy, ux, uy, wx, wy, R, c1, c2, c3, c4, lo, near, hi);
+  gap[0] = c0;
+  gap[1] = c1;
+  gap[2] = c2;
+  gap[3] = c3;
+  gap[4] = c4;
+  return farPart(dx, dy, ux, uy, wx, wy, R, lo, near, hi);
 }
 
 /**
@@ -82,9 +83,9 @@ function nearReach(
 }
 
 /**
- * The far part [near, hi], narrowed to where the pair can touch (farWindow.ts): the pieces between
- * consecutive extrema of the distance, in order; the first decreasing piece that reaches the contact
- * distance and does not end before lo holds the contact.
+ * The far part [near, hi]: in each window where the pair can touch (farWindow.ts), in order, the
+ * gap re-expanded about the window's start a, where its terms are of size R^2 again, and solved in
+ * local time [max(lo - a, 0), b - a].
  */
 function farPart(
   dx: number,
@@ -94,105 +95,44 @@ function farPart(
   wx: number,
   wy: number,
   R: number,
-  c1: number,
-  c2: number,
-  c3: number,
-  c4: number,
   lo: number,
   near: number,
   hi: number,
 ): number {
-  if (!farWindow(dx, dy, ux, uy, wx, wy, R, near, hi, window)) return INF;
-  const from = window[0] as number;
-  const to = window[1] as number;
-  if (to < lo) return INF;
-  slope[0] = c1;
-  slope[1] = 2 * c2;
-  slope[2] = 3 * c3;
-  slope[3] = 4 * c4;
-  realRootsInto(slope, from, to, extrema);
-  const n = extrema.length;
-  let p = from;
-  for (let i = 0; i <= n; i++) {
-    const q = i < n ? (extrema[i] as number) : to;
-    if (q > p && q >= lo && q < INF && isDecreasing(p, q)) {
-      const t = pieceContact(dx, dy, ux, uy, wx, wy, R, p, q, near);
+  const n = farWindows(dx, dy, ux, uy, wx, wy, R, near, hi, windows);
+  for (let i = 0; i < n; i++) {
+    const a = windows[2 * i] as number;
+    const b = windows[2 * i + 1] as number;
+    if (b < lo) continue;
+    const ex = dx + a * (ux + 0.5 * wx * a);
+    const ey = dy + a * (uy + 0.5 * wy * a);
+    const vx = ux + wx * a;
+    const vy = uy + wy * a;
+    const g0 = ex * ex + ey * ey - R * R;
+    if (g0 <= 0 && a === near && near > 0) {
+      // Touching where the near part ends: the crossing lies in the near part (which the caller
+      // did not search when lo > near). Solved there, as it stands, so that it is the same time.
+      const t = firstDownCrossingQuartic(
+        gap[0] as number,
+        gap[1] as number,
+        gap[2] as number,
+        gap[3] as number,
+        gap[4] as number,
+        near,
+        near,
+      );
       if (t !== INF) return t;
     }
-    p = q;
+    const t = firstDownCrossingQuartic(
+      g0,
+      2 * (ex * vx + ey * vy),
+      vx * vx + vy * vy + (ex * wx + ey * wy),
+      vx * wx + vy * wy,
+      0.25 * (wx * wx + wy * wy),
+      Math.max(lo - a, 0),
+      b - a,
+    );
+    if (t !== INF) return a + t;
   }
   return INF;
-}
-
-/** Whether the distance decreases on the piece (p, q) between two extrema: f' < 0 inside it. */
-function isDecreasing(p: number, q: number): boolean {
-  const m = 0.5 * (p + q);
-  return (
-    (slope[0] as number) +
-      m * ((slope[1] as number) + m * ((slope[2] as number) + m * (slope[3] as number))) <
-    0
-  );
-}
-
-/**
- * The crossing of the contact distance on a piece [p, q] of decreasing distance, solved about the
- * closest point q: in s = q - tau the gap is g(s) = f(q - s), increasing on [0, q - p]. INF when the
- * distance at q is not below R (a graze or a miss).
- */
-function pieceContact(
-  dx: number,
-  dy: number,
-  ux: number,
-  uy: number,
-  wx: number,
-  wy: number,
-  R: number,
-  p: number,
-  q: number,
-  near: number,
-): number {
-  const ex = dx + q * (ux + 0.5 * wx * q);
-  const ey = dy + q * (uy + 0.5 * wy * q);
-  const vx = ux + wx * q;
-  const vy = uy + wy * q;
-  const g0 = ex * ex + ey * ey - R * R;
-  if (!(g0 < 0)) return INF;
-  local[0] = g0;
-  local[1] = -2 * (ex * vx + ey * vy);
-  local[2] = vx * vx + vy * vy + (ex * wx + ey * wy);
-  local[3] = -(vx * wx + vy * wy);
-  local[4] = 0.25 * (wx * wx + wy * wy);
-  realRootsInto(local, 0, q - p, crossings);
-  const k = crossings.length;
-  if (k > 0) return q - (crossings[k - 1] as number);
-  // Within the contact distance over the whole piece: at its start p the pair is touching and
-  // begins (or, at the near part's end, goes on) approaching.
-  if (p === near && near > 0) {
-    // The crossing lies in the near part (which the caller did not search when lo > near).
-    const t = firstDownCrossingQuarticAt(dx, dy, ux, uy, wx, wy, R, near);
-    if (t !== INF) return t;
-  }
-  return p;
-}
-
-/** The near part's crossing under way at its end `near` (the unmodified quartic, lo = hi = near). */
-function firstDownCrossingQuarticAt(
-  dx: number,
-  dy: number,
-  ux: number,
-  uy: number,
-  wx: number,
-  wy: number,
-  R: number,
-  near: number,
-): number {
-  return firstDownCrossingQuartic(
-    dx * dx + dy * dy - R * R,
-    2 * (dx * ux + dy * uy),
-    ux * ux + uy * uy + (dx * wx + dy * wy),
-    ux * wx + uy * wy,
-    0.25 * (wx * wx + wy * wy),
-    near,
-    near,
-  );
 }
