@@ -1,7 +1,7 @@
 /**
  * Section "stress": the numerical stress scenes at benchmark size. For each: events, time, worst
  * overlap sampled at many instants (relative to the contact distance), contact-distance error at
- * body–body events, energy error, escaped bodies. Plus the long run (energy drift against event
+ * body–body events, energy error, escaped bodies. Plus far approaches (far.mjs), the long run (energy drift against event
  * count) and Galperin's billiard pushed digit by digit until the count is wrong or the run fails.
  */
 
@@ -11,6 +11,7 @@ import { emptyState, escaped, kineticEnergy, worstOverlap } from "../peers/metri
 import { galperin } from "../scenes/galperin.mjs";
 import { gas } from "../scenes/gas.mjs";
 import { grazing, highSpeed, largeOffset, massRatio, nearSimultaneous, roundOffContacts } from "./cases.mjs";
+import { runFarApproaches } from "./far.mjs";
 
 function stressCase(engine, scene, samples) {
   const world = buildWorld(engine, scene);
@@ -176,6 +177,12 @@ export function runStress({ quick, engine, log }) {
   } catch (e) {
     long = { error: String(e.message ?? e) };
   }
+  let far;
+  try {
+    far = runFarApproaches(engine, log);
+  } catch (e) {
+    far = { error: String(e.message ?? e) };
+  }
   const push = galperinPush(engine, { maxDigits: quick ? 6 : 10, budgetSeconds: quick ? 5 : 240, log });
-  return { samples, cases, longRun: long, galperinPush: push };
+  return { samples, cases, farApproaches: far, longRun: long, galperinPush: push };
 }
