@@ -96,6 +96,26 @@ describe("far contacts under friction", () => {
   });
 });
 
+describe("the near reach's end", () => {
+  it("a contact under way when evaluated past the near reach reports its crossing in the near part", () => {
+    // Closing at 100 with relative deceleration 1, R = 1: the 1-norm bound d + 100 t + t^2 / 2 reaches
+    // FAR_CONTACT_REACH (1024) at `near`, 0.01 after the crossing at tc.
+    const v = 100;
+    const a = 1;
+    const delta = 0.01;
+    const tc = (FAR_CONTACT_REACH - 1 - v * delta - 0.5 * a * delta * delta) / (2 * v + a * delta);
+    const d = 1 + v * tc - 0.5 * a * tc * tc;
+    const pair: Pair = [d, 0, -v, 0, a, 0, 1];
+    const first = quarticContact(...pair, 0, v / a);
+    expectCrossingNear(pair, first, "from the start");
+    expect(Math.abs(first - tc)).toBeLessThan(1e-9);
+    // Evaluated just before and after the reach's end (touching and approaching from tc to tc + 0.02):
+    const near = tc + delta;
+    for (const lo of [near - 1e-6, near, near + 1e-6, near + 0.005])
+      expect(quarticContact(...pair, lo, v / a), `lo ${lo}`).toBe(first);
+  });
+});
+
 describe("far contacts without acceleration", () => {
   it("a straight path 1e3 contact distances long (FC_SEED=827864543: the whole path was one window)", () => {
     // The property's shrunk case: w = 0 reaches quarticContact (the engine sends it the quadratic
