@@ -1,9 +1,12 @@
-/** Build a World from a SceneSpec (test support), optionally in a permuted insertion order. */
+/**
+ * Build a World from a SceneSpec (test support), optionally in a permuted insertion order and
+ * starting at a given time (default 0).
+ */
 import { World } from "../src/sim/world.js";
 import type { SceneSpec } from "./referenceWorld.js";
 
-export function worldFromSpec(spec: SceneSpec, order?: (n: number) => number[]): World {
-  const w = new World({ g: spec.g, gravity: spec.gravity });
+export function worldFromSpec(spec: SceneSpec, order?: (n: number) => number[], time = 0): World {
+  const w = new World({ g: spec.g, gravity: spec.gravity, time });
   const perm = (n: number): number[] => (order ? order(n) : [...Array(n).keys()]);
   for (const i of perm(spec.lines.length)) {
     const l = spec.lines[i]!;
