@@ -6,7 +6,8 @@
  * one configuration, and in a shared process the JIT's type feedback from one configuration skews
  * the other (measured: restingSkip off ran 1.6x slower alone than after runs with it on). In its
  * process a configuration is warmed up (at least three runs and 300 ms), then timed 7 times (3 in
- * quick runs); the row gives the medians.
+ * quick runs). A full run alternates on and off over three process pairs (one in quick runs), so a
+ * drift of the machine's speed falls on both; the row gives the medians over all timed runs.
  * Run as a script (`node ablations.mjs <flag> <on|off> <quick>`) it is that child: it prints one
  * JSON line { ns: [...], events }.
  */
@@ -59,6 +60,8 @@ function sceneFor(flag, quick) {
 }
 
 const FLAGS = ["broadPhase", "quadraticFastPath", "pathBounds", "restingSkip"];
+/** Alternating (on, off) process pairs per switch in a full run. */
+const PROCESS_PAIRS = 3;
 
 /** The child: one configuration, warmed up, then timed. */
 async function child(flag, state, quick) {
@@ -101,8 +104,20 @@ export function ablations({ quick, log }) {
   for (const flag of FLAGS) {
     const scene = sceneFor(flag, quick);
     try {
-      const on = measure(flag, "on", quick);
-      const off = measure(flag, "off", quick);
+      // On and off alternate over several process pairs, so that a drift in the machine's speed
+      // during the section (common on this shared VM) falls on both alike.
+      const on = { ns: [], events: 0 };
+      const off = { ns: [], events: 0 };
+      for (let pair = 0; pair < (quick ? 1 : PROCESS_PAIRS); pair++) {
+        for (const [state, into] of [
+          ["on", on],
+          ["off", off],
+        ]) {
+          const m = measure(flag, state, quick);
+          into.ns.push(...m.ns);
+          into.events = m.events;
+        }
+      }
       const row = {
         flag,
         scene: scene.id,
@@ -115,7 +130,7 @@ export function ablations({ quick, log }) {
         msOff: median(off.ns) / 1e6,
         speedup: median(off.ns) / median(on.ns),
         runs: on.ns.length,
-        processes: "one per configuration",
+        processes: `${quick ? 1 : PROCESS_PAIRS} alternating pairs, one per configuration`,
       };
       out.push(row);
       log(
