@@ -279,7 +279,7 @@ function engineSection(e, out, svgs) {
   });
   out.push("![scaling](bench/scaling.svg)\n");
   out.push(
-    'Each "skip what the scene does not need" optimisation switched off in turn (World option `optimizations: { <flag>: false }`), same scene and span; "same events" checks that the switch changes only the time. Each configuration runs in its own Node process (warmed up, then timed), as a program using one configuration would: in a shared process the JIT\'s type feedback from one skews the other. On and off alternate over several process pairs (the row says how many) and the times are the medians over all their timed runs, so a drift of the machine\'s speed during the section falls on both.\n',
+    'Each "skip what the scene does not need" optimisation switched off in turn (World option `optimizations: { <flag>: false }`), same scene and span; "same events" checks that the switch changes only the time. Each configuration runs in its own Node process (warmed up, then timed), as a program using one configuration would: in a shared process the JIT\'s type feedback from one skews the other. On and off alternate over three process pairs (one in a quick run) and the times are the medians over all their timed runs, so a drift of the machine\'s speed during the section falls on both.\n',
   );
   out.push(
     table(
