@@ -277,3 +277,20 @@ describe("scale: regressions (roots/ rounds a near-tie root differently at anoth
     expect(firstEvent(fallPastPoint(K))?.time).toBe(t1 * K);
   });
 });
+
+describe("scale: regressions (sim/)", () => {
+  // The Zeno watch compared a window's progress with ZENO_MIN_PROGRESS × max(1, |t|): a unit of
+  // time. A disc bouncing between walls 2^-40 s apart (1 apart at speed 2^40), beside an immovable
+  // disc that moves (so energy could be fed in), made 200,000 events in 1.8e-7 < 1e-6 and was
+  // reported as a Zeno state at event 400,000; at k = 1 it runs on. Now relative to |t| alone.
+  it("a disc bouncing between walls 2^-40 s apart beside a moving immovable disc is no Zeno state", () => {
+    const k = 2 ** -40;
+    const w = new World({ g: 0 });
+    w.addLine("L", [0, -10], [0, 10], "segment");
+    w.addLine("R", [3, -10], [3, 10], "segment");
+    w.addBody("d", { x: 1.5, y: 0, r: 1, m: 1, vx: 1 / k });
+    w.addBody("pump", { x: 100, y: 0, r: 1, m: Number.POSITIVE_INFINITY, vy: 1 / k });
+    expect(w.advance({ maxEvents: 400_000 })).toEqual({ events: 400_000, reason: "events" });
+    expect(w.time).toBe(399_999.5 * k);
+  });
+});

@@ -63,6 +63,31 @@ describe("ZenoWatch", () => {
     expect(run).not.toThrow();
   });
 
+  it("has no unit of time: the same events with times × 2^-40 or × 2^40 throw at the same event", () => {
+    // Windows of events 1 apart from t = 1 (progress 200,000 >> 1e-6 |t|), then converging on
+    // a finite time by steps shrinking 1e-4 per event; scaled by k, every comparison is the same.
+    const window = Math.max(ZENO_WINDOW_EVENTS, ZENO_WINDOW_EVENTS_PER_BODY);
+    const throwsAt = (k: number): number => {
+      const z = new ZenoWatch();
+      let t = 1;
+      let step = 1;
+      for (let i = 0; i < 6 * window; i++) {
+        if (i >= 3 * window) step *= 0.9999;
+        t += step;
+        try {
+          z.check(t * k, 1, always);
+        } catch {
+          return i;
+        }
+      }
+      return -1;
+    };
+    const at = throwsAt(1);
+    expect(at).toBeGreaterThan(3 * window);
+    expect(throwsAt(2 ** -40)).toBe(at);
+    expect(throwsAt(2 ** 40)).toBe(at);
+  });
+
   it("save and load carry the counters: a restored watch throws at the same event", () => {
     const n = 1;
     const a = new ZenoWatch();
