@@ -144,8 +144,9 @@ export const SIMULTANEOUS_EVENTS_PER_BODY = 64;
  * Zeno watch over runs of events, active while an immovable (infinite-mass) body moves (without one,
  * elastic and frictional collisions cannot feed energy in, so events cannot converge on a finite
  * time): every ZENO_WINDOW_EVENTS events (at least; ZENO_WINDOW_EVENTS_PER_BODY per body in large
- * scenes) time must have advanced by more than ZENO_MIN_PROGRESS relative to max(1, |t|). A disc
- * crushed between an immovable disc and a wall fails it within about a million events.
+ * scenes) time must have advanced by more than ZENO_MIN_PROGRESS relative to |t| (no unit of time:
+ * the same scene in other units gives the same verdict). A disc crushed between an immovable disc
+ * and a wall fails it within about a million events.
  */
 export const ZENO_WINDOW_EVENTS = 200_000;
 export const ZENO_WINDOW_EVENTS_PER_BODY = 20;

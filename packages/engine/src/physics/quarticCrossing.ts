@@ -54,7 +54,9 @@ export function firstDownCrossingQuartic(
     if (d === 0) {
       // Derivative vanishes at the root (touching or crossing with zero slope): probe after it.
       const next = i + 1 < roots.length ? (roots[i + 1] as number) : hi;
-      const probe = Number.isFinite(next) ? 0.5 * (r + next) : r + 1;
+      // After the last root the sign is the same all the way up: any point past r will do (2r, not
+      // r + 1, which has a unit of time and equals r beyond 2^53).
+      const probe = Number.isFinite(next) ? 0.5 * (r + next) : r > 0 ? 2 * r : 1;
       if (evalPoly(coeffs, probe) < 0) return r;
     }
   }
