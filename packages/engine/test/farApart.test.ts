@@ -7,6 +7,7 @@
 // while what the normal cannot spoil (times, speeds, momentum, energy) is held to rounding level.
 // Scaled by powers of two (lengths and time, as in scale.prop.test.ts) they give the same bits.
 import { describe, expect, it } from "vitest";
+import { nextDown, nextUp } from "../src/roots/nextDouble.js";
 import type { WorldEvent } from "../src/sim/types.js";
 import { World } from "../src/sim/world.js";
 import { UNIT_ROUNDOFF } from "../src/tolerances.js";
@@ -167,5 +168,49 @@ describe("far-apart contacts (10^3 to 10^12 contact distances)", () => {
             ).toEqual([e.time * k, e.px * s, e.py * s, e.nx, e.ny, e.impulse * (s / k)]);
           }
         }
+  });
+});
+
+describe("World determinism where the near reach ends (review)", () => {
+  /** x moved k ulps (k < 0: down). */
+  const ulps = (x: number, k: number): number => {
+    let y = x;
+    for (let n = 0; n < Math.abs(k); n++) y = k > 0 ? nextUp(y) : nextDown(y);
+    return y;
+  };
+
+  it("a World rebuilt just before a contact at the near reach's end computes the same contact", () => {
+    // A disc 512.5 radii from a point, closing at 1 (gravity 1e-20 makes it an accelerated pair):
+    // the 1-norm bound 512.5 + t reaches FAR_CONTACT_REACH = 1024 at the contact, t = 511.5.
+    const gravity: [number, number] = [0, -1e-20];
+    const a = new World({ g: 0, gravity });
+    a.addPoint("P", [0, 0]);
+    a.addBody("d", { x: -512.5, y: 0, r: 1, m: 1, vx: 1, vy: 0 });
+    const first = firstEvent(a).time;
+    for (const k of [-100, -50, -20, -10, -4, -3, -2, -1]) {
+      const T = ulps(first, k);
+      const b = new World({ g: 0, gravity, time: T });
+      b.addPoint("P", [0, 0]);
+      b.addBodyMotion("d", { t0: 0, x0: -512.5, y0: 0, vx: 1, vy: 0, r: 1, m: 1 });
+      // Before the fix: T itself (the rebuilt World took the disc, still apart, for one in contact).
+      expect(firstEvent(b).time, `rebuilt ${k} ulps before`).toBe(first);
+    }
+  });
+
+  it("a World rebuilt after a disc passed through a point at the near reach's end does not collide there", () => {
+    // x(t) = d - 100 t + t^2 / 2 relative to the point (gravity [1, 0]); at T = tc + 0.025 the disc is
+    // 1.37 radii past the point and moving away. Before the fix: 'rests against P' at T; the first
+    // event is the disc's return at about 194.87.
+    const v = 100;
+    const delta = 0.01;
+    const tc = (1024 - 1 - v * delta - 0.5 * delta * delta) / (2 * v + delta);
+    const d = 1 + v * tc - 0.5 * tc * tc;
+    const T = tc + 0.025;
+    const w = new World({ g: 0, gravity: [1, 0], time: T });
+    w.addPoint("P", [0, 0]);
+    w.addBodyMotion("d", { t0: 0, x0: d, y0: 0, vx: -v, vy: 0, r: 1, m: 1 });
+    const e = firstEvent(w);
+    expect(e.kind).toBe("bodyPoint");
+    expect(e.time).toBeGreaterThan(T + 150);
   });
 });

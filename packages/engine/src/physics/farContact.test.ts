@@ -25,7 +25,8 @@ type Pair = [dx: number, dy: number, ux: number, uy: number, wx: number, wy: num
 /**
  * The exact gap changes sign from + to - around tau, within the accuracy the design promises
  * (FAR_CONTACT_REACH): the contact position is off by at most about UNIT_ROUNDOFF * M^2 / R while
- * the path's span M (the 1-norm bound farContact.ts uses) is within the reach, and about
+ * the path's span M (the 1-norm bound farContact.ts uses) is within the reach (or the window the
+ * near part ends in), and about
  * UNIT_ROUNDOFF * M beyond it (the re-anchored closest point carries the rounding of positions of
  * size M). Divided by the closing speed, that is a time; plus a few ulps of tau.
  */
@@ -37,7 +38,8 @@ function expectCrossingNear(pair: Pair, tau: number, label: string): void {
     Math.abs(dy) +
     (Math.abs(ux) + Math.abs(uy)) * tau +
     0.5 * (Math.abs(wx) + Math.abs(wy)) * tau * tau;
-  const position = 8 * UNIT_ROUNDOFF * M * (M <= FAR_CONTACT_REACH * R ? M / R : 1);
+  // The near part runs on to the end of a window it ends in, a little past the reach: 2x leeway.
+  const position = 8 * UNIT_ROUNDOFF * M * (M <= 2 * FAR_CONTACT_REACH * R ? M / R : 1);
   const ex = dx + tau * (ux + 0.5 * wx * tau);
   const ey = dy + tau * (uy + 0.5 * wy * tau);
   const closing = -(ex * (ux + wx * tau) + ey * (uy + wy * tau)) / R;
@@ -109,10 +111,35 @@ describe("the near reach's end", () => {
     const first = quarticContact(...pair, 0, v / a);
     expectCrossingNear(pair, first, "from the start");
     expect(Math.abs(first - tc)).toBeLessThan(1e-9);
-    // Evaluated just before and after the reach's end (touching and approaching from tc to tc + 0.02):
+    // Evaluated just before and after the reach's end (approaching from tc until the centres pass
+    // at tc + 0.0105): the crossing.
     const near = tc + delta;
-    for (const lo of [near - 1e-6, near, near + 1e-6, near + 0.005])
+    for (const lo of [near - 1e-6, near, near + 1e-6])
       expect(quarticContact(...pair, lo, v / a), `lo ${lo}`).toBe(first);
+    // After the centres passed, overlapping but separating (tc + 0.015), or apart (tc + 0.025, 0.03):
+    // no contact (review: a fallback at the reach's end reported the crossing there).
+    for (const off of [0.015, 0.025, 0.03])
+      expect(quarticContact(...pair, tc + off, v / a), `tc + ${off}`).toBe(INF);
+  });
+
+  it("evaluated a few ulps before a contact right at the reach's end, the contact's own bits (review)", () => {
+    // The near part's roots ended at the reach's end; evaluated just before a crossing there, the
+    // gap was <= 0 by rounding and the crossing past the end unseen, so lo itself came back.
+    const straight: Pair = [512.5, 0, -1, 0, 0, 1e-20, 1]; // the bound 512.5 + t reaches 1024 at 511.5
+    const decelerating: Pair = [
+      0.5125000000000074, 0, -3.140587902069092, 0, -12.863044461450684, -4.978630542755127e-13, 0.001,
+    ];
+    for (const [pair, steps] of [
+      [straight, [-100, -50, -20, -10, -4, -3, -2, -1]],
+      [decelerating, [-5000, -209, -20, -3, -1]],
+    ] as const) {
+      const first = quarticContact(...pair, 0, INF);
+      expectCrossingNear(pair, first, "from the start");
+      for (const k of steps) {
+        // Any lo before the contact found gives its bits (the gap at lo may be <= 0 by rounding).
+        expect(quarticContact(...pair, ulps(first, k), INF), `lo ${k} ulps`).toBe(first);
+      }
+    }
   });
 });
 

@@ -13,7 +13,9 @@
  * contact distances, is solved as it stands (every pair of an ordinary scene stops here). In the far
  * part, the pair can only touch in at most two windows where it is within a few R in both
  * components (farWindow.ts, closed form); the gap is re-expanded about each window's start, where
- * its terms are of size R^2, and solved there. Positions of size M carry a rounding error of about
+ * its terms are of size R^2, and solved there. A window that begins where the near part ends is
+ * solved with the near part, so that the split never falls inside a contact (review: evaluated a few
+ * ulps before such a contact, the near part saw the gap <= 0 but not the crossing past its end). Positions of size M carry a rounding error of about
  * UNIT_ROUNDOFF * M, so that is the accuracy of a far contact's place.
  */
 
@@ -23,8 +25,6 @@ import { firstDownCrossingQuartic } from "./quarticCrossing.js";
 
 const INF = Number.POSITIVE_INFINITY;
 const windows = new Float64Array(4);
-/** The gap's coefficients about the base time, for the far part's fallback into the near part. */
-const gap = new Float64Array(5);
 
 /** First contact of the pair in [lo, hi] (see the header); d, u, w relative, R the contact distance. */
 export function quarticContact(
@@ -43,18 +43,43 @@ export function quarticContact(
   const c2 = ux * ux + uy * uy + (dx * wx + dy * wy);
   const c3 = ux * wx + uy * wy;
   const c4 = 0.25 * (wx * wx + wy * wy);
-  const near = nearReach(dx, dy, ux, uy, wx, wy, FAR_CONTACT_REACH * R, hi);
+  let near = nearReach(dx, dy, ux, uy, wx, wy, FAR_CONTACT_REACH * R, hi);
   if (near >= hi) return firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, hi);
+  const n = farWindows(dx, dy, ux, uy, wx, wy, R, near, hi, windows);
+  let i = 0;
+  if (n > 0 && windows[0] === near) {
+    // The pair may be within reach of a contact where the near part ends: the near part runs on to
+    // that window's end, where the pair is at least 2R apart in one component, so that no crossing
+    // (and no contact under way) straddles the split and lo cannot see one side of it only.
+    near = windows[1] as number;
+    i = 1;
+  }
   if (lo <= near) {
     const t = firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, near);
     if (t !== INF) return t;
   }
-  gap[0] = c0;
-  gap[1] = c1;
-  gap[2] = c2;
-  gap[3] = c3;
-  gap[4] = c4;
-  return farPart(dx, dy, ux, uy, wx, wy, R, lo, near, hi);
+  // The far windows, in order: the gap re-expanded about the window's start a, where its terms are
+  // of size R^2 again, and solved in local time [max(lo - a, 0), b - a].
+  for (; i < n; i++) {
+    const a = windows[2 * i] as number;
+    const b = windows[2 * i + 1] as number;
+    if (b < lo) continue;
+    const ex = dx + a * (ux + 0.5 * wx * a);
+    const ey = dy + a * (uy + 0.5 * wy * a);
+    const vx = ux + wx * a;
+    const vy = uy + wy * a;
+    const t = firstDownCrossingQuartic(
+      ex * ex + ey * ey - R * R,
+      2 * (ex * vx + ey * vy),
+      vx * vx + vy * vy + (ex * wx + ey * wy),
+      vx * wx + vy * wy,
+      c4,
+      Math.max(lo - a, 0),
+      b - a,
+    );
+    if (t !== INF) return a + t;
+  }
+  return INF;
 }
 
 /**
@@ -80,59 +105,4 @@ function nearReach(
   const slack = reach - D;
   // Positive root of (W/2) t^2 + U t - slack, in the form without cancellation.
   return (2 * slack) / (U + Math.sqrt(U * U + 2 * W * slack));
-}
-
-/**
- * The far part [near, hi]: in each window where the pair can touch (farWindow.ts), in order, the
- * gap re-expanded about the window's start a, where its terms are of size R^2 again, and solved in
- * local time [max(lo - a, 0), b - a].
- */
-function farPart(
-  dx: number,
-  dy: number,
-  ux: number,
-  uy: number,
-  wx: number,
-  wy: number,
-  R: number,
-  lo: number,
-  near: number,
-  hi: number,
-): number {
-  const n = farWindows(dx, dy, ux, uy, wx, wy, R, near, hi, windows);
-  for (let i = 0; i < n; i++) {
-    const a = windows[2 * i] as number;
-    const b = windows[2 * i + 1] as number;
-    if (b < lo) continue;
-    const ex = dx + a * (ux + 0.5 * wx * a);
-    const ey = dy + a * (uy + 0.5 * wy * a);
-    const vx = ux + wx * a;
-    const vy = uy + wy * a;
-    const g0 = ex * ex + ey * ey - R * R;
-    if (g0 <= 0 && a === near && near > 0) {
-      // Touching where the near part ends: the crossing lies in the near part (which the caller
-      // did not search when lo > near). Solved there, as it stands, so that it is the same time.
-      const t = firstDownCrossingQuartic(
-        gap[0] as number,
-        gap[1] as number,
-        gap[2] as number,
-        gap[3] as number,
-        gap[4] as number,
-        near,
-        near,
-      );
-      if (t !== INF) return t;
-    }
-    const t = firstDownCrossingQuartic(
-      g0,
-      2 * (ex * vx + ey * vy),
-      vx * vx + vy * vy + (ex * wx + ey * wy),
-      vx * wx + vy * wy,
-      0.25 * (wx * wx + wy * wy),
-      Math.max(lo - a, 0),
-      b - a,
-    );
-    if (t !== INF) return a + t;
-  }
-  return INF;
 }
