@@ -102,6 +102,15 @@ export const RADIUS_MIN = 1e-30;
  * a pair at 1e-170 underflows to 0 and the pair is taken for one that never meets.
  */
 export const SPEED_MIN = 1e-30;
+/**
+ * Smallest non-zero friction field g, friction coefficient mu and gravity component an edit may
+ * give (0 is allowed). The contact quartic's leading coefficient is |w|^2 / 4 for a relative
+ * acceleration w: below about 1e-154 it underflows to 0 and the solver works on a polynomial that
+ * is not the gap (a disc under gravity 1e-200 "touched" a point while still 0.67 radii from it:
+ * review). With g, mu >= 1e-30, mu g >= 1e-60 and |w|^2 stays above 1e-150 even when two such
+ * accelerations nearly cancel.
+ */
+export const FIELD_MIN = 1e-30;
 
 /**
  * Cell side of the broad-phase grid relative to the largest diameter. Slightly above 1 so that a

@@ -5,7 +5,7 @@
  * × k, contact points × s, the same normals, impulses × s/k. With s and k powers of two every
  * product is exact (no over- or underflow within the World's magnitude bounds).
  */
-import { MAGNITUDE_MAX, RADIUS_MIN, SPEED_MIN } from "../src/tolerances.js";
+import { FIELD_MIN, MAGNITUDE_MAX, RADIUS_MIN, SPEED_MIN } from "../src/tolerances.js";
 import type { SceneSpec } from "./referenceWorld.js";
 
 export function scaleScene(spec: SceneSpec, s: number, k: number): SceneSpec {
@@ -50,7 +50,7 @@ function exponent(x: number): number {
  * The range [lo, hi] of exponents `a` (within [-limit, limit]) for which the scene scaled by
  * s = 2^a·f, k = 2^b·f' (f, f' in [1, 2)) stays within the World's edit bounds (tolerances.ts):
  * every length and rate at most MAGNITUDE_MAX, radii at least RADIUS_MIN, non-zero speeds at least
- * SPEED_MIN. Empty (lo > hi) when no `a` fits.
+ * SPEED_MIN, non-zero fields (g, gravity) at least FIELD_MIN. Empty (lo > hi) when no `a` fits.
  */
 export function lengthExponents(spec: SceneSpec, b: number, limit: number): [number, number] {
   let maxLen = 0;
@@ -86,5 +86,8 @@ export function lengthExponents(spec: SceneSpec, b: number, limit: number): [num
     lo = Math.max(lo, exponent(SPEED_MIN) + 2 - exponent(minV) + b);
   }
   if (maxA > 0) hi = Math.min(hi, top - exponent(maxA) - 1 + 2 * b);
+  // Non-zero fields at least FIELD_MIN (k's factor lowers them by up to two binades).
+  const fields = [spec.g, Math.abs(spec.gravity[0]), Math.abs(spec.gravity[1])].filter((a) => a > 0);
+  if (fields.length > 0) lo = Math.max(lo, exponent(FIELD_MIN) + 3 - exponent(Math.min(...fields)) + 2 * b);
   return [lo, hi];
 }

@@ -11,12 +11,12 @@ import type { BodyInit, BodyMotionInit, BodyPatch, Vec2 } from "./types.js";
 import {
   checkFrictionGravity,
   requireBounded,
+  requireFieldRate,
   requireFinite,
+  requireGravity,
   requireId,
   requireMass,
-  requireNonNegativeBounded,
   requireRadius,
-  requireVec,
   requireVelocity,
 } from "./validate.js";
 
@@ -32,7 +32,7 @@ export class Edits extends Placement {
     const y = requireBounded("y", init.y);
     const r = requireRadius("r", init.r);
     const m = requireMass("m", init.m);
-    const mu = requireNonNegativeBounded("mu", init.mu ?? 0);
+    const mu = requireFieldRate("mu", init.mu ?? 0);
     const vx = requireVelocity("vx", init.vx ?? 0);
     const vy = requireVelocity("vy", init.vy ?? 0);
     checkFrictionGravity("mu", mu, this.gravity);
@@ -62,7 +62,7 @@ export class Edits extends Placement {
     const vy = requireFinite("vy", init.vy);
     const r = requireRadius("r", init.r);
     const m = requireMass("m", init.m);
-    const mu = requireNonNegativeBounded("mu", init.mu ?? 0);
+    const mu = requireFieldRate("mu", init.mu ?? 0);
     checkFrictionGravity("mu", mu, this.gravity);
     motionLaw(t0, vx, vy, mu, this.frictionG, this.gravX, this.gravY, restoredLaw);
     if (restoredLaw.tEnd < this.now)
@@ -117,7 +117,7 @@ export class Edits extends Placement {
     const vy = patch.vy !== undefined ? requireVelocity("vy", patch.vy) : this.vyAt(s, now);
     const r = requireRadius("r", patch.r ?? b.r[s]);
     const m = requireMass("m", patch.m ?? b.m[s]);
-    const mu = requireNonNegativeBounded("mu", patch.mu ?? b.mu[s]);
+    const mu = requireFieldRate("mu", patch.mu ?? b.mu[s]);
     checkFrictionGravity("mu", mu, this.gravity);
     if (patch.x !== undefined || patch.y !== undefined || patch.r !== undefined) {
       this.prepareGridFor(x, y, r);
@@ -149,8 +149,8 @@ export class Edits extends Placement {
   // ---- globals ------------------------------------------------------------------------------
 
   setGlobal(patch: { g?: number; gravity?: Vec2 }): void {
-    const g = requireNonNegativeBounded("g", patch.g ?? this.frictionG);
-    const gravity = requireVec("gravity", patch.gravity ?? this.gravity);
+    const g = requireFieldRate("g", patch.g ?? this.frictionG);
+    const gravity = requireGravity("gravity", patch.gravity ?? this.gravity);
     for (const [id, s] of this.index)
       checkFrictionGravity(`bodies.${id}.mu`, this.store.mu[s] as number, gravity);
     const now = this.now;

@@ -2,7 +2,7 @@
 // naming the field (the contact polynomials would over- or underflow and a contact would be missed
 // without a word); within the range, a head-on pair collides at its exact time at every scale.
 import { describe, expect, it } from "vitest";
-import { MAGNITUDE_MAX, RADIUS_MIN } from "../tolerances.js";
+import { FIELD_MIN, MAGNITUDE_MAX, RADIUS_MIN } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
 import { World } from "./world.js";
 
@@ -77,6 +77,32 @@ describe("magnitudes", () => {
     w.addBody("a", { x: -1.5, y: 0, r: 1, m: 1, vx: 0 });
     expect(() => w.updateBody("a", { vy: -1e-40 })).toThrow(/^vy: must be 0 or at least 1e-30/);
     expect(w.body("a").vy).toBe(0);
+  });
+
+  it("refuses fields too small to square (gravity 1e-200: a point 'touched' 0.67 radii away; review), accepts 0 and FIELD_MIN", () => {
+    expect(() => new World({ g: 0, gravity: [0, -1e-200] })).toThrow(
+      /^gravity\[1\]: must be 0 or at least 1e-30/,
+    );
+    expect(() => new World({ g: 1e-31 })).toThrow(/^g: must be 0 or at least 1e-30/);
+    const w = new World({ g: FIELD_MIN, gravity: [0, 0] });
+    expect(() => w.addBody("a", { x: 0, y: 0, r: 1, m: 1, mu: 1e-200 })).toThrow(
+      /^mu: must be 0 or at least 1e-30/,
+    );
+    w.addBody("a", { x: 0, y: 0, r: 1, m: 1, mu: FIELD_MIN, vx: 1 });
+    expect(() => w.updateBody("a", { mu: 5e-324 })).toThrow(/^mu: must be 0 or at least 1e-30/);
+    expect(() => w.setGlobal({ g: 0, gravity: [-1e-40, 0] })).toThrow(
+      /^gravity\[0\]: must be 0 or at least 1e-30/,
+    );
+    expect(w.g).toBe(FIELD_MIN);
+    expect(w.body("a").mu).toBe(FIELD_MIN);
+    // At the bound itself a drop onto a point is found where the disc touches it.
+    const d = new World({ g: 0, gravity: [0, -FIELD_MIN] });
+    d.addPoint("p", [0, 0]);
+    d.addBody("b", { x: 0, y: 3, r: 1, m: 1 });
+    const times: number[] = [];
+    d.advance({ maxEvents: 1 }, (e) => times.push(e.time));
+    expect(times.length).toBe(1);
+    expect(Math.abs(d.body("b", times[0]).y - 1)).toBeLessThan(1e-9);
   });
 
   it("a state the World reached beyond the bounds (gravity 1e30) can still be edited and rebuilt", () => {

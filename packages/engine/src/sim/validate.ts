@@ -2,7 +2,7 @@
  * Input checks of the World's edits. Each check throws ChapgameError naming the field and the
  * reason, before anything is changed.
  */
-import { MAGNITUDE_MAX, RADIUS_MIN, SPEED_MIN } from "../tolerances.js";
+import { FIELD_MIN, MAGNITUDE_MAX, RADIUS_MIN, SPEED_MIN } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
 import type { Vec2 } from "./types.js";
 
@@ -56,6 +56,29 @@ export function requireRadius(path: string, v: unknown): number {
 export function requireNonNegativeBounded(path: string, v: unknown): number {
   requireNonNegativeFinite(path, v);
   return requireBounded(path, v);
+}
+
+/**
+ * A friction field g or coefficient mu: 0, or between FIELD_MIN and MAGNITUDE_MAX (a smaller
+ * non-zero one underflows the contact quartic; see tolerances.ts).
+ */
+export function requireFieldRate(path: string, v: unknown): number {
+  return requireFieldMin(path, requireNonNegativeBounded(path, v));
+}
+
+/** The gravity field [gx, gy]: each component 0, or between FIELD_MIN and MAGNITUDE_MAX in size. */
+export function requireGravity(path: string, v: unknown): Vec2 {
+  const [gx, gy] = requireVec(path, v);
+  return [requireFieldMin(`${path}[0]`, gx), requireFieldMin(`${path}[1]`, gy)];
+}
+
+function requireFieldMin(path: string, x: number): number {
+  if (x !== 0 && Math.abs(x) < FIELD_MIN)
+    throw new ChapgameError(
+      path,
+      `must be 0 or at least ${FIELD_MIN} in size (got ${x}): smaller fields underflow the contact polynomials`,
+    );
+  return x;
 }
 
 export function requirePositiveFinite(path: string, v: unknown): number {

@@ -11,14 +11,14 @@ import { positionAt, velocityAt } from "../physics/motion.js";
 import { Edits } from "./edits.js";
 import { ChapgameError } from "./errors.js";
 import type { AdvanceLimits, AdvanceResult, BodyState, WorldEvent, WorldOptions } from "./types.js";
-import { requireFinite, requireNonNegativeBounded, requireVec } from "./validate.js";
+import { requireFieldRate, requireFinite, requireGravity } from "./validate.js";
 
 const INF = Number.POSITIVE_INFINITY;
 
 export class World extends Edits {
   constructor(options: WorldOptions = {}) {
-    const g = requireNonNegativeBounded("g", options.g ?? 9.81);
-    const gravity = requireVec("gravity", options.gravity ?? [0, 0]);
+    const g = requireFieldRate("g", options.g ?? 9.81);
+    const gravity = requireGravity("gravity", options.gravity ?? [0, 0]);
     const time = requireFinite("time", options.time ?? 0);
     super(time, g, gravity[0], gravity[1], options.optimizations ?? {});
   }
