@@ -9,14 +9,19 @@
  * rounding error is about UNIT_ROUNDOFF * M^2. Once M is ~1e8 R that is more than R^2 and a contact
  * vanishes (a disc dropped from 1e8 radii onto a point fell through it).
  *
- * How: the near part of the window, where a cheap bound on |d(tau)| stays within FAR_CONTACT_REACH
- * contact distances, is solved as it stands (every pair of an ordinary scene stops here). In the far
- * part, the pair can only touch in at most two windows where it is within a few R in both
- * components (farWindow.ts, closed form); the gap is re-expanded about each window's start, where
- * its terms are of size R^2, and solved there. A window that begins where the near part ends is
- * solved with the near part, so that the split never falls inside a contact (review: evaluated a few
- * ulps before such a contact, the near part saw the gap <= 0 but not the crossing past its end). Positions of size M carry a rounding error of about
- * UNIT_ROUNDOFF * M, so that is the accuracy of a far contact's place.
+ * How:
+ * 1. The times at which the pair can touch at all: at most two windows in which it is within 2R in
+ *    both components (farWindow.ts, closed form). A pair with none needs no solve; most pairs, near
+ *    or far, end here.
+ * 2. The near part of [0, hi], where a cheap bound on |d(tau)| stays within FAR_CONTACT_REACH contact
+ *    distances, is solved as it stands (every pair of an ordinary scene stops here). When a window
+ *    straddles the end of the near part, the near part runs on to that window's end, so the split
+ *    never falls inside a contact (review: evaluated a few ulps before a contact at the split, the
+ *    near part saw the gap <= 0 but not the crossing past its end).
+ * 3. Each later window: the gap re-expanded about the window's start, where its terms are of size
+ *    R^2 again, and solved there.
+ * Positions of size M carry a rounding error of about UNIT_ROUNDOFF * M, so that is the accuracy of
+ * a far contact's place.
  */
 
 import { FAR_CONTACT_REACH } from "../tolerances.js";
@@ -43,16 +48,19 @@ export function quarticContact(
   const c2 = ux * ux + uy * uy + (dx * wx + dy * wy);
   const c3 = ux * wx + uy * wy;
   const c4 = 0.25 * (wx * wx + wy * wy);
+  // Where the pair can touch at all (closed form): most pairs never come within 2R and need no solve.
+  const n = farWindows(dx, dy, ux, uy, wx, wy, R, 0, hi, windows);
+  if (n === 0) return INF;
   let near = nearReach(dx, dy, ux, uy, wx, wy, FAR_CONTACT_REACH * R, hi);
   if (near >= hi) return firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, hi);
-  const n = farWindows(dx, dy, ux, uy, wx, wy, R, near, hi, windows);
   let i = 0;
-  if (n > 0 && windows[0] === near) {
+  while (i < n && (windows[2 * i + 1] as number) < near) i++; // wholly in the near part
+  if (i < n && (windows[2 * i] as number) <= near) {
     // The pair may be within reach of a contact where the near part ends: the near part runs on to
     // that window's end, where the pair is at least 2R apart in one component, so that no crossing
     // (and no contact under way) straddles the split and lo cannot see one side of it only.
-    near = windows[1] as number;
-    i = 1;
+    near = windows[2 * i + 1] as number;
+    i++;
   }
   if (lo <= near) {
     const t = firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, near);
