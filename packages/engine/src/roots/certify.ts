@@ -22,7 +22,7 @@
 import { PLAIN_HORNER_BOUND_FACTOR, ROOTS_MAX_ITERATIONS, UNIT_ROUNDOFF } from "../tolerances.js";
 import { RootSolverError, splitPoint } from "./bracket.js";
 import { compHorner, compHornerDD, hornerBound } from "./compHorner.js";
-import { exactDerivativeSign, exactPolySign, nextDown, nextUp } from "./exactPoly.js";
+import { exactAbsCompare, exactDerivativeSign, exactPolySign, nextDown, nextUp } from "./exactPoly.js";
 import { mulPow2 } from "./pow2.js";
 
 const ev = new Float64Array(5);
@@ -116,7 +116,7 @@ export function refineRoot(a: number, b: number, sa: number, absA: number, absB:
     b = x;
     absB = at0;
   }
-  if (nextUp(a) >= b) return absA <= absB ? a : b;
+  if (nextUp(a) >= b) return closerEnd(a, b);
   const ax = x < 0 ? -x : x;
   let y = x - t0 / t1;
   if (ax >= MODEL_MIN_X) {
@@ -136,17 +136,38 @@ export function refineRoot(a: number, b: number, sa: number, absA: number, absB:
       if ((v > 0 ? 1 : -1) === sa) {
         a = y;
         absA = av;
-        if (nextUp(a) >= b) return absA <= absB ? a : b;
+        if (nextUp(a) >= b) return closerEnd(a, b);
         y = nextUp(y);
       } else {
         b = y;
         absB = av;
-        if (nextUp(a) >= b) return absA <= absB ? a : b;
+        if (nextUp(a) >= b) return closerEnd(a, b);
         y = nextDown(y);
       }
     }
   }
   return refineGeneric(a, b, sa, absA, absB, y);
+}
+
+/**
+ * Of two adjacent doubles a < b around a root, the one with the smaller exact |p| (a on a tie):
+ * the canonical choice, the same whichever path or scale found the bracket (a root solved at
+ * another time scale, 2^k t, gives the same bits times 2^k). Compensated values decide unless
+ * their difference is within their bounds; then exact arithmetic does.
+ */
+export function closerEnd(a: number, b: number): number {
+  compHorner(P, deg, a, ev);
+  const va = Math.abs(ev[0] as number);
+  const ba = ev[1] as number;
+  compHorner(P, deg, b, ev);
+  const vb = Math.abs(ev[0] as number);
+  const bb = ev[1] as number;
+  if (va + ba < vb - bb) return a;
+  if (vb + bb < va - ba) return b;
+  certStats.exact++;
+  const sa = xScale === 0 ? a : mulPow2(a, xScale);
+  const sb = xScale === 0 ? b : mulPow2(b, xScale);
+  return exactAbsCompare(orig, sa, sb) <= 0 ? a : b;
 }
 
 /** The model's span: |h| ≤ 2^-30 |x0| keeps p̃'' within 1 + n·2^-30 of its value at |x0|. */
@@ -181,7 +202,7 @@ function refineGeneric(a: number, b: number, sa: number, absA: number, absB: num
       b = x;
       absB = av;
     }
-    if (nextUp(a) >= b) return absA <= absB ? a : b;
+    if (nextUp(a) >= b) return closerEnd(a, b);
     let xn: number;
     if (it < 8) {
       xn = x - v / (ev[2] as number);

@@ -7,6 +7,7 @@
  *   their exact values (every finite double is m·2^e with integer m, e). Computed with BigInt dyadic
  *   numbers, so no rounding at all. Throws a RangeError naming the field for a non-finite input.
  * - `exactDerivativeSign(coeffs, x)`: the same for the first derivative c1 + 2 c2 x + … (exact).
+ * - `exactAbsCompare(coeffs, x1, x2)`: the sign of |p(x1)| − |p(x2)| (exact).
  * - `nextUp(x)` / `nextDown(x)`: the adjacent double above / below (IEEE-754 nextUp/nextDown).
  * - `ulpsToExactRoot(coeffs, x, maxUlps = 64)`: the smallest k ≥ 0 such that the exact polynomial is
  *   zero at, or changes sign between x and, the double k steps above or below x (so an exact root lies
@@ -83,8 +84,8 @@ function signOf(m: bigint): -1 | 0 | 1 {
   return m > 0n ? 1 : m < 0n ? -1 : 0;
 }
 
-/** Exact sign of Σ k_i c_i x^(i-shift) for i ≥ shift, where k_i = i (derivative) or 1. */
-function hornerSign(coeffs: ArrayLike<number>, x: number, derivative: boolean): -1 | 0 | 1 {
+/** Exact value of Σ k_i c_i x^(i-shift) for i ≥ shift, where k_i = i (derivative) or 1. */
+function hornerValue(coeffs: ArrayLike<number>, x: number, derivative: boolean): Dyadic {
   const xd = toDyadic(x, "x");
   const start = derivative ? 1 : 0;
   let s: Dyadic = { m: 0n, e: 0 };
@@ -93,7 +94,24 @@ function hornerSign(coeffs: ArrayLike<number>, x: number, derivative: boolean): 
     if (derivative) c.m *= BigInt(i);
     s = s.m === 0n ? c : add({ m: s.m * xd.m, e: s.e + xd.e }, c);
   }
-  return signOf(s.m);
+  return s;
+}
+
+function hornerSign(coeffs: ArrayLike<number>, x: number, derivative: boolean): -1 | 0 | 1 {
+  return signOf(hornerValue(coeffs, x, derivative).m);
+}
+
+/**
+ * Exact comparison of |p(x1)| and |p(x2)|: -1 when |p(x1)| is smaller, 1 when larger, 0 when
+ * equal (the root solver's tie-break between the two doubles around a root).
+ */
+export function exactAbsCompare(coeffs: ArrayLike<number>, x1: number, x2: number): -1 | 0 | 1 {
+  const v1 = hornerValue(coeffs, x1, false);
+  const v2 = hornerValue(coeffs, x2, false);
+  const m1 = v1.m < 0n ? -v1.m : v1.m;
+  const m2 = v2.m < 0n ? -v2.m : v2.m;
+  const e = Math.min(v1.e, v2.e);
+  return signOf((m1 << BigInt(v1.e - e)) - (m2 << BigInt(v2.e - e)));
 }
 
 /** Exact sign of the polynomial with double coefficients `coeffs` (ascending) at the double x. */

@@ -18,21 +18,21 @@ function hot(c: readonly number[], lo: number, hi: number): number[] | null {
 }
 
 /**
- * The hot path's roots against the general path's: the same count, each within one ulp. Both are
- * certified within 4 ulps of an exact root (hot() checks the hot path exactly); two certified
- * answers may round differently (FC_SEED=676900790: -3.3795201066592964 against
- * -3.379520106659296).
+ * The hot path's roots against the general path's: the same count and the same bits. Both choose,
+ * of the two doubles around a root, the one with the smaller exact |p| (certify.ts closerEnd); before
+ * that, two certified answers could round differently (FC_SEED=676900790: -3.3795201066592964
+ * against -3.379520106659296).
  */
 function expectSameRoots(hotRoots: readonly number[], general: readonly number[]): void {
   expect(hotRoots.length).toBe(general.length);
   hotRoots.forEach((x, i) => {
     const g = general[i] as number;
-    expect(x === g || nextUp(x) === g || nextDown(x) === g, `${x} vs ${g}`).toBe(true);
+    expect(x, `${x} vs ${g}`).toBe(g);
   });
 }
 
 describe("quarticRoots (the quartic hot path)", () => {
-  it("regression (FC_SEED=676900790): hot and general paths one ulp apart, both certified", () => {
+  it("regression (FC_SEED=676900790): hot and general paths were one ulp apart; now the same bits", () => {
     const [dx, wx, R, hi, lo] = [
       -9.92167084239082, 1.999267578123178, 1.4953027566117185, 0.01, -4.989698754888908,
     ];

@@ -52,6 +52,9 @@ function refine(sa: number): boolean {
   let b = H[1] as number;
   let absA = H[2] as number;
   let absB = H[3] as number;
+  // Error bounds of absA, absB (the bracket's own |p| values carry none we know of).
+  let errA = Number.POSITIVE_INFINITY;
+  let errB = Number.POSITIVE_INFINITY;
   const x = H[4] as number;
   if (!(x > a && x < b)) return false;
   // Compensated Horner (compHorner.ts, degree 4): s + r the value, e the sum of the |error terms|,
@@ -66,6 +69,7 @@ function refine(sa: number): boolean {
   let s = Q[4] as number;
   let aa = Math.abs(s);
   let d = 0;
+  let curv = 0; // p″(x)/2
   let a2 = 0;
   let a1 = 0;
   let r = 0;
@@ -73,6 +77,7 @@ function refine(sa: number): boolean {
   let noUnderflow = true; // every |product| ≥ UNDERFLOW (false for NaN)
   for (let k = 3; k >= 0; k--) {
     const ck = Q[k] as number;
+    curv = curv * x + d;
     d = d * x + s;
     a2 = a2 * ax + a1;
     a1 = a1 * ax + aa;
@@ -107,15 +112,24 @@ function refine(sa: number): boolean {
   if (sx === sa) {
     a = x;
     absA = av;
+    errA = bound;
   } else {
     b = x;
     absB = av;
+    errB = bound;
   }
-  // The certified local model p(x + h) ∈ v + d·h ± (bound + |h|·e1 + a2·h² + u|·|), as refineRoot.
+  // The certified second-order local model p(x + h) ∈ v + h·(d + h·c) ± (bound + |h|·e1 + h²·e2 +
+  // |h|³·e3 + u·|m|): d = p′(x) and c = p″(x)/2 by plain Horner (errors B4·p̃′ and B4·p̃″/2, plus
+  // the model's own roundings), e3 bounds the cubic and quartic remainder (p‴/6 + c4·h over the
+  // span). Second order, so that two neighbours' |p| are ordered (the nearer one to the root) except
+  // in a band of a few 1e-9 ulp; a linear model left ties of a few % undecided and the hot and
+  // general paths then chose differently (a root's bits depended on the time scale).
   let y = x - v / d;
   if (ax >= MIN_X) {
     const span = ax * SPAN;
-    const e1 = B4 * a1 + U * Math.abs(d);
+    const e1 = B4 * a1 + 2 * U * Math.abs(d);
+    const e2 = B4 * a2 + 3 * U * Math.abs(curv);
+    const e3 = Math.abs(Q[3] as number) + 5 * Math.abs(Q[4] as number) * ax;
     if (y > a && y < b) {
       // Common case: the root lies within an ulp of y. The model at y and both neighbours at
       // once; done when y and one neighbour have certified opposite signs.
@@ -124,9 +138,9 @@ function refine(sa: number): boolean {
       const h0 = y - x;
       const hu = yu - x;
       const hd = yd - x;
-      const m0 = v + d * h0;
-      const mu = v + d * hu;
-      const md = v + d * hd;
+      const m0 = v + h0 * (d + h0 * curv);
+      const mu = v + hu * (d + hu * curv);
+      const md = v + hd * (d + hd * curv);
       const am0 = Math.abs(m0);
       const amu = Math.abs(mu);
       const amd = Math.abs(md);
@@ -136,24 +150,43 @@ function refine(sa: number): boolean {
       // One error bound for the three points (the largest |h|, the largest |m|).
       // biome-ignore lint/complexity/useMathMinMax: Math.max compiles to data-dependent branches in V8
       const amx = am0 > amu ? (am0 > amd ? am0 : amd) : amu > amd ? amu : amd;
-      const err = SAFETY * (bound + hm * e1 + a2 * hm * hm + U * amx);
+      const err = SAFETY * (bound + hm * e1 + hm * hm * (e2 + hm * e3) + U * amx);
       if (hm <= span && am0 > err) {
         const s0 = m0 > 0 ? 1 : -1;
         if (s0 === sa) {
           // p(y) has a's sign: the root is above y.
           if (amu > err && (mu > 0 ? 1 : -1) !== sa && yu <= b) {
-            H[5] = am0 <= amu ? y : yu;
-            return true;
+            if (am0 + 2 * err < amu || amu + 2 * err < am0) {
+              H[5] = am0 < amu ? y : yu;
+              return true;
+            }
+            // A tie within the model's error: the exact choice (certify.ts's closerEnd).
+            a = y;
+            b = yu;
+            absA = am0;
+            absB = amu;
+            errA = err;
+            errB = err;
           }
         } else if (amd > err && (md > 0 ? 1 : -1) === sa && yd >= a) {
-          H[5] = amd <= am0 ? yd : y;
-          return true;
+          if (amd + 2 * err < am0 || am0 + 2 * err < amd) {
+            H[5] = amd < am0 ? yd : y;
+            return true;
+          }
+          a = yd;
+          b = y;
+          absA = amd;
+          absB = am0;
+          errA = err;
+          errB = err;
         }
       }
     }
     // (With a and b adjacent no y lies strictly between them: the common case above cannot apply.)
     if (nextUp(a) >= b) {
-      H[5] = absA <= absB ? a : b;
+      if (absA + errA < absB - errB) H[5] = a;
+      else if (absB + errB < absA - errA) H[5] = b;
+      else return fallBack(a, b, absA, absB, y);
       return true;
     }
     if (!(y > a && y < b) || y === x) y = sx === sa ? nextUp(x) : nextDown(x);
@@ -161,26 +194,35 @@ function refine(sa: number): boolean {
       const hh = y - x;
       const ah = Math.abs(hh);
       if (!(ah <= span)) break;
-      const m = v + d * hh;
+      const m = v + hh * (d + hh * curv);
       const am = Math.abs(m);
-      const err = SAFETY * (bound + ah * e1 + a2 * hh * hh + U * am);
+      const err = SAFETY * (bound + ah * e1 + hh * hh * (e2 + ah * e3) + U * am);
       if (!(am > err)) break;
       // p(y) with a's sign: the root lies above y.
       const above = (m > 0 ? 1 : -1) === sa;
       if (above) {
         a = y;
         absA = am;
+        errA = err;
       } else {
         b = y;
         absB = am;
+        errB = err;
       }
       if (nextUp(a) >= b) {
-        H[5] = absA <= absB ? a : b;
+        if (absA + errA < absB - errB) H[5] = a;
+        else if (absB + errB < absA - errA) H[5] = b;
+        else return fallBack(a, b, absA, absB, y);
         return true;
       }
       y = above ? nextUp(y) : nextDown(y);
     }
   }
+  return fallBack(a, b, absA, absB, y);
+}
+
+/** Hands the (narrowed) bracket to refineRoot: H[0..4] = a, b, |p(a)|, |p(b)|, start; false. */
+function fallBack(a: number, b: number, absA: number, absB: number, y: number): boolean {
   H[0] = a;
   H[1] = b;
   H[2] = absA;

@@ -20,7 +20,10 @@
  * refined to the sign change of the exact p′ and reported.
  *
  * Accuracy: every root reported for a sign change (or exact zero) is within 1 ulp of an exact root
- * of the polynomial with the given double coefficients, and every exact sign change between
+ * of the polynomial with the given double coefficients: of the two adjacent doubles around the
+ * exact sign change, the one with the smaller exact |p| (the lower on a tie), whichever path found
+ * it, so that the same polynomial in another power-of-two unit gives the same bits scaled; and
+ * every exact sign change between
  * consecutive piece ends is reported. A grazing root is backward stable: an exact double root of a
  * polynomial whose coefficients differ from the given ones by at most about 2.5·n·u relatively
  * (it cannot always be within 4 ulps of an exact root: with rounded coefficients the exact
