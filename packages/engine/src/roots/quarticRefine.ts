@@ -69,7 +69,6 @@ function refine(sa: number): boolean {
   let s = Q[4] as number;
   let aa = Math.abs(s);
   let d = 0;
-  let curv = 0; // p″(x)/2
   let a2 = 0;
   let a1 = 0;
   let r = 0;
@@ -77,7 +76,6 @@ function refine(sa: number): boolean {
   let noUnderflow = true; // every |product| ≥ UNDERFLOW (false for NaN)
   for (let k = 3; k >= 0; k--) {
     const ck = Q[k] as number;
-    curv = curv * x + d;
     d = d * x + s;
     a2 = a2 * ax + a1;
     a1 = a1 * ax + aa;
@@ -118,18 +116,14 @@ function refine(sa: number): boolean {
     absB = av;
     errB = bound;
   }
-  // The certified second-order local model p(x + h) ∈ v + h·(d + h·c) ± (bound + |h|·e1 + h²·e2 +
-  // |h|³·e3 + u·|m|): d = p′(x) and c = p″(x)/2 by plain Horner (errors B4·p̃′ and B4·p̃″/2, plus
-  // the model's own roundings), e3 bounds the cubic and quartic remainder (p‴/6 + c4·h over the
-  // span). Second order, so that two neighbours' |p| are ordered (the nearer one to the root) except
-  // in a band of a few 1e-9 ulp; a linear model left ties of a few % undecided and the hot and
-  // general paths then chose differently (a root's bits depended on the time scale).
+  // The certified local model p(x + h) ∈ v + d·h ± (bound + |h|·e1 + a2·h² + u|·|), as refineRoot.
+  // Of two neighbours around the root it returns the one with the smaller |p| when the model orders
+  // them; a tie within its error goes to the second-order model (closerBySecondOrder), then to
+  // refineRoot's exact choice, so that every path picks the same double.
   let y = x - v / d;
   if (ax >= MIN_X) {
     const span = ax * SPAN;
-    const e1 = B4 * a1 + 2 * U * Math.abs(d);
-    const e2 = B4 * a2 + 3 * U * Math.abs(curv);
-    const e3 = Math.abs(Q[3] as number) + 5 * Math.abs(Q[4] as number) * ax;
+    const e1 = B4 * a1 + U * Math.abs(d);
     if (y > a && y < b) {
       // Common case: the root lies within an ulp of y. The model at y and both neighbours at
       // once; done when y and one neighbour have certified opposite signs.
@@ -138,9 +132,9 @@ function refine(sa: number): boolean {
       const h0 = y - x;
       const hu = yu - x;
       const hd = yd - x;
-      const m0 = v + h0 * (d + h0 * curv);
-      const mu = v + hu * (d + hu * curv);
-      const md = v + hd * (d + hd * curv);
+      const m0 = v + d * h0;
+      const mu = v + d * hu;
+      const md = v + d * hd;
       const am0 = Math.abs(m0);
       const amu = Math.abs(mu);
       const amd = Math.abs(md);
@@ -150,7 +144,7 @@ function refine(sa: number): boolean {
       // One error bound for the three points (the largest |h|, the largest |m|).
       // biome-ignore lint/complexity/useMathMinMax: Math.max compiles to data-dependent branches in V8
       const amx = am0 > amu ? (am0 > amd ? am0 : amd) : amu > amd ? amu : amd;
-      const err = SAFETY * (bound + hm * e1 + hm * hm * (e2 + hm * e3) + U * amx);
+      const err = SAFETY * (bound + hm * e1 + a2 * hm * hm + U * amx);
       if (hm <= span && am0 > err) {
         const s0 = m0 > 0 ? 1 : -1;
         if (s0 === sa) {
@@ -160,7 +154,12 @@ function refine(sa: number): boolean {
               H[5] = am0 < amu ? y : yu;
               return true;
             }
-            // A tie within the model's error: the exact choice (certify.ts's closerEnd).
+            const pick = closerBySecondOrder(x, v, d, bound, a1, a2, ax, y, yu);
+            if (!Number.isNaN(pick)) {
+              H[5] = pick;
+              return true;
+            }
+            // Still a tie: the exact choice (certify.ts's closerEnd, through refineRoot).
             a = y;
             b = yu;
             absA = am0;
@@ -171,6 +170,11 @@ function refine(sa: number): boolean {
         } else if (amd > err && (md > 0 ? 1 : -1) === sa && yd >= a) {
           if (amd + 2 * err < am0 || am0 + 2 * err < amd) {
             H[5] = amd < am0 ? yd : y;
+            return true;
+          }
+          const pick = closerBySecondOrder(x, v, d, bound, a1, a2, ax, yd, y);
+          if (!Number.isNaN(pick)) {
+            H[5] = pick;
             return true;
           }
           a = yd;
@@ -194,9 +198,9 @@ function refine(sa: number): boolean {
       const hh = y - x;
       const ah = Math.abs(hh);
       if (!(ah <= span)) break;
-      const m = v + hh * (d + hh * curv);
+      const m = v + d * hh;
       const am = Math.abs(m);
-      const err = SAFETY * (bound + ah * e1 + hh * hh * (e2 + ah * e3) + U * am);
+      const err = SAFETY * (bound + ah * e1 + a2 * hh * hh + U * am);
       if (!(am > err)) break;
       // p(y) with a's sign: the root lies above y.
       const above = (m > 0 ? 1 : -1) === sa;
@@ -219,6 +223,41 @@ function refine(sa: number): boolean {
     }
   }
   return fallBack(a, b, absA, absB, y);
+}
+
+/**
+ * Of two adjacent doubles p0 < p1 around a root, the one with the smaller |p| by the certified
+ * second-order model about x: p(x + h) ∈ v + h·(d + h·c) ± (bound + |h|·e1 + h²·e2 + |h|³·e3 +
+ * u·|m|), with c = p″(x)/2 evaluated directly (rounding ≤ B4·p̃″/2 = B4·a2), e1 and e2 covering the
+ * roundings of d, c and the model, e3 the cubic and quartic remainder over the span. NaN when even
+ * this cannot order them (a band of about 1e-9 ulp around the midpoint).
+ */
+function closerBySecondOrder(
+  x: number,
+  v: number,
+  d: number,
+  bound: number,
+  a1: number,
+  a2: number,
+  ax: number,
+  p0: number,
+  p1: number,
+): number {
+  const c3 = Q[3] as number;
+  const c4 = Q[4] as number;
+  const c = (Q[2] as number) + x * (3 * c3 + 6 * c4 * x);
+  const h0 = p0 - x;
+  const h1 = p1 - x;
+  const m0 = Math.abs(v + h0 * (d + h0 * c));
+  const m1 = Math.abs(v + h1 * (d + h1 * c));
+  const hm = Math.max(Math.abs(h0), Math.abs(h1));
+  const e1 = B4 * a1 + 2 * U * Math.abs(d);
+  const e2 = B4 * a2 + 3 * U * Math.abs(c);
+  const e3 = Math.abs(c3) + 5 * Math.abs(c4) * ax;
+  const err = SAFETY * (bound + hm * e1 + hm * hm * (e2 + hm * e3) + U * Math.max(m0, m1));
+  if (m0 + 2 * err < m1) return p0;
+  if (m1 + 2 * err < m0) return p1;
+  return Number.NaN;
 }
 
 /** Hands the (narrowed) bracket to refineRoot: H[0..4] = a, b, |p(a)|, |p(b)|, start; false. */
