@@ -1,28 +1,17 @@
 // @vitest-environment jsdom
-import { newtonsCradle } from "@chapgame/engine";
 import { describe, expect, it } from "vitest";
-import { settled, testEditor } from "../testing/harness";
+import { cradleEditor, settled } from "../testing/harness";
+import { loneDiscScene } from "../testing/scenes";
 import { droppedSceneFile, isJsonFile, openSceneFile } from "./openScene";
 import { sceneText } from "./sceneIo";
 
-const LONELY = {
-  format: "chapgame",
-  version: 1,
-  actions: [{ time: 0, type: "addBody", id: "lonely", x: 0, y: 0, r: 1, m: 1 }],
-};
+const LONELY = loneDiscScene();
 const json = (name: string, value: unknown) =>
   new File([typeof value === "string" ? value : JSON.stringify(value)], name, { type: "application/json" });
 
-async function cradle() {
-  const h = testEditor();
-  await h.editor.loadScene(newtonsCradle(), { undoable: false });
-  await settled(h.client);
-  return h;
-}
-
 describe("opening a scene file", () => {
   it("a valid file replaces the scene as one undo step and says so; Undo brings the old scene back", async () => {
-    const { editor, client } = await cradle();
+    const { editor, client } = await cradleEditor();
     const before = editor.doc;
     expect(await openSceneFile(editor, json("lonely.json", LONELY))).toBeNull();
     await settled(client);
@@ -36,7 +25,7 @@ describe("opening a scene file", () => {
   });
 
   it("a refused file names the file and the field, and keeps the scene and the history", async () => {
-    const { editor } = await cradle();
+    const { editor } = await cradleEditor();
     const before = editor.doc;
     const bad = { ...LONELY, actions: [{ ...LONELY.actions[0], r: "big" }] };
     const err = await openSceneFile(editor, json("bad.json", bad));

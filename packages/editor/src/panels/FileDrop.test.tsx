@@ -1,18 +1,14 @@
 // @vitest-environment jsdom
-import { newtonsCradle } from "@chapgame/engine";
 import { act, cleanup, fireEvent, render, screen, waitFor } from "@testing-library/react";
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
-import { settled, testEditor } from "../testing/harness";
+import { cradleEditor, settled } from "../testing/harness";
+import { loneDiscScene } from "../testing/scenes";
 import { FileDrop } from "./FileDrop";
 
 afterEach(cleanup);
 
-const LONELY = JSON.stringify({
-  format: "chapgame",
-  version: 1,
-  actions: [{ time: 0, type: "addBody", id: "lonely", x: 0, y: 0, r: 1, m: 1 }],
-});
+const LONELY = JSON.stringify(loneDiscScene());
 
 /** What a drag of these files carries (jsdom has no DataTransfer). */
 const carrying = (files: File[], types = ["Files"]) => ({
@@ -20,9 +16,7 @@ const carrying = (files: File[], types = ["Files"]) => ({
 });
 
 async function setup() {
-  const h = testEditor();
-  await h.editor.loadScene(newtonsCradle(), { undoable: false });
-  await settled(h.client);
+  const h = await cradleEditor();
   render(
     <EditorContext.Provider value={h.editor}>
       <FileDrop />

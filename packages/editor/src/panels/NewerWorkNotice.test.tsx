@@ -1,11 +1,11 @@
 // @vitest-environment jsdom
-import { newtonsCradle } from "@chapgame/engine";
 import { act, cleanup, fireEvent, render, screen, waitFor } from "@testing-library/react";
 import { afterEach, describe, expect, it } from "vitest";
 import { writeSlot } from "../doc/autosaveSlots";
 import { sceneText } from "../doc/sceneIo";
 import { EditorContext } from "../EditorContext";
-import { settled, testEditor } from "../testing/harness";
+import { cradleEditor, settled } from "../testing/harness";
+import { loneDiscScene } from "../testing/scenes";
 import { NewerWorkNotice } from "./NewerWorkNotice";
 
 afterEach(() => {
@@ -13,30 +13,10 @@ afterEach(() => {
   localStorage.clear();
 });
 
-const LONELY = {
-  format: "chapgame" as const,
-  version: 1 as const,
-  g: 9.81,
-  gravity: [0, 0] as [number, number],
-  actions: [
-    {
-      time: 0,
-      type: "addBody" as const,
-      id: "lonely",
-      x: 0,
-      y: 0,
-      r: 1,
-      m: 1,
-      mu: 0,
-      v: [0, 0] as [number, number],
-    },
-  ],
-};
+const LONELY = loneDiscScene();
 
 async function setup() {
-  const h = testEditor();
-  await h.editor.loadScene(newtonsCradle(), { undoable: false });
-  await settled(h.client);
+  const h = await cradleEditor();
   render(
     <EditorContext.Provider value={h.editor}>
       <NewerWorkNotice />

@@ -2,7 +2,7 @@
  * Test harness: an Editor whose TimelineHost runs in-process over a port pair (the same protocol as
  * the Web Worker, delivered asynchronously), with the engine's real Timeline.
  */
-import { Timeline } from "@chapgame/engine";
+import { newtonsCradle, Timeline } from "@chapgame/engine";
 import { Editor } from "../editor";
 import { TimelineClient } from "../remote/client";
 import { TimelineHost } from "../remote/host";
@@ -32,6 +32,14 @@ export function testEditor(): { editor: Editor; client: TimelineClient; host: Ti
   const editor = new Editor(client, createUiStore());
   editor.portFactory = () => hostPort().port;
   return { editor, client, host };
+}
+
+/** A test editor with Newton's cradle loaded (not undoable) and its computation settled. */
+export async function cradleEditor(): Promise<ReturnType<typeof testEditor>> {
+  const h = testEditor();
+  await h.editor.loadScene(newtonsCradle(), { undoable: false });
+  await settled(h.client);
+  return h;
 }
 
 /** Resolves when the host has no computation running (after a load, edit or compute). */

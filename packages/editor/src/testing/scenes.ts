@@ -20,3 +20,14 @@ export function crushScene(): SceneFile {
     ],
   };
 }
+
+/** One disc of radius 1 at the origin, at rest: the smallest scene to open, drop or fit. */
+export function loneDiscScene(): SceneFile {
+  return {
+    format: "chapgame",
+    version: 1,
+    g: 9.81,
+    gravity: [0, 0],
+    actions: [{ time: 0, type: "addBody", id: "lonely", x: 0, y: 0, r: 1, m: 1 }],
+  };
+}
