@@ -74,7 +74,8 @@ function solverSection(s, out, svgs) {
   out.push(
     `${int(rnd.count)} random collision quartics |d + u t + w t²/2|² − R² (seeded LCG ${rnd.seed}, interval [${rnd.interval.join(", ")}]). ` +
       "Error = ulps from the computed root to the nearest point where the exact polynomial (the double coefficients taken exactly, BigInt arithmetic via the engine's `exactPolySign`) is zero or changes sign, found by a doubling search then bisection on the ulp index. " +
-      '"missed" = roots that the best method found near a true sign change but this one did not return; "spurious" = returned roots with no sign change within 2^62 ulps.\n',
+      '"missed" = roots that the best method found near a true sign change but this one did not return; "spurious" = returned roots with no sign change within 2^62 ulps. ' +
+      `Times: the median over ${rnd.methods[0]?.processes ?? 1} fresh process(es) that load only the solver benchmark (per process: ${rnd.methods.map((m) => `${m.id} ${(m.nsPerCallPerProcess ?? []).map((x) => sig(x)).join(", ")}`).join("; ")} ns), each the median of interleaved passes; in a process that has loaded every section's modules the same code measured up to 25 % slower (bench/solver/timing.mjs).\n`,
   );
   const rr = rnd.methods.find((m) => m.id === "realRoots");
   const bis = rnd.methods.find((m) => m.id === "bisection");

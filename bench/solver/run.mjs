@@ -3,39 +3,13 @@
  * Ferrari/Descartes quartic, the same + Newton polishing, and the seed's 1e-6 bisection, on random
  * collision quartics and on hard cases. Errors are ulps to the nearest exact sign change (or exact
  * double root) of the polynomial with the given double coefficients, via the engine's exactPolySign.
+ * Errors are measured here; times come from fresh child processes (timing.mjs says why): the median
+ * over 3 processes (1 in quick runs), each the median of 9 (5) interleaved passes.
  */
-import { median, nowNs, quantile } from "../lib/timing.mjs";
-import { bisection, ferrari, ferrariNewton } from "./methods.mjs";
+import { median, quantile } from "../lib/timing.mjs";
 import { collisionQuartics, hardQuartics } from "./quartics.mjs";
+import { methods, timeSolvers } from "./timing.mjs";
 import { ulpDistance, ulpsToSignChange } from "./ulps.mjs";
-
-function methods(engine) {
-  return [
-    { id: "realRoots", label: "realRoots (engine)", fn: engine.realRoots },
-    { id: "ferrari", label: "Ferrari closed form", fn: ferrari },
-    { id: "ferrariNewton", label: "Ferrari + 2 Newton steps", fn: ferrariNewton },
-    { id: "bisection", label: "seed bisection, eps 1e-6", fn: bisection },
-  ];
-}
-
-/**
- * ns per call of every method over a set of polynomials: the methods are timed round-robin (one
- * pass each, `runs` rounds, after two warm-up rounds) so that load from other processes hits them
- * alike; the median pass time per method / calls per pass.
- */
-function interleaved(ms, items, runs, calls) {
-  const reps = Math.max(1, Math.round(calls / items.length));
-  const times = ms.map(() => []);
-  let sink = 0;
-  for (let round = -2; round < runs; round++) {
-    ms.forEach((m, i) => {
-      const a = nowNs();
-      for (let r = 0; r < reps; r++) for (const it of items) sink += m.fn(it.c, it.lo, it.hi).length;
-      if (round >= 0) times[i].push(nowNs() - a);
-    });
-  }
-  return { nsPerCall: times.map((t) => median(t) / (reps * items.length)), sink };
-}
 
 function rootError(sign, c, x, exactRoots) {
   let e = ulpsToSignChange(sign, c, x);
@@ -70,21 +44,25 @@ export function runSolver({ quick, engine, log }) {
   const expected = polys.map((_, k) =>
     Math.max(...errorsPer.map((e) => e[k].filter(Number.isFinite).length)),
   );
-  const calls = quick ? 30000 : 200000;
-  const timing = interleaved(
-    ms,
-    polys.map((c) => ({ c, lo, hi })),
-    runs,
-    calls,
-  );
+  const processes = quick ? 1 : 3;
+  const timing = timeSolvers({ quick, processes });
   ms.forEach((m, i) => {
-    const t = { nsPerCall: timing.nsPerCall[i], runs };
+    const t = { nsPerCall: timing.random[m.id], runs };
     let missed = 0;
     errorsPer[i].forEach((e, k) => {
       missed += Math.max(0, expected[k] - e.filter(Number.isFinite).length);
     });
     const s = summarize(errorsPer[i].flat());
-    random.push({ id: m.id, label: m.label, nsPerCall: t.nsPerCall, runs: t.runs, missed, ...s });
+    random.push({
+      id: m.id,
+      label: m.label,
+      nsPerCall: t.nsPerCall,
+      nsPerCallPerProcess: timing.perProcess.map((p) => p.random[m.id]),
+      runs: t.runs,
+      processes,
+      missed,
+      ...s,
+    });
     log(
       `  solver ${m.id}: ${t.nsPerCall.toFixed(1)} ns/call, median ${s.medianUlps} ulps, worst ${s.worstUlps}, missed ${missed}`,
     );
@@ -113,9 +91,7 @@ export function runSolver({ quick, engine, log }) {
     }
     return entry;
   });
-  const hardItems = hardQuartics().map((h) => ({ c: h.coeffs, lo: h.lo, hi: h.hi }));
-  const hardNs = interleaved(ms, hardItems, runs, quick ? 10000 : 50000).nsPerCall;
-  const hardTiming = ms.map((m, i) => ({ id: m.id, nsPerCall: hardNs[i] }));
+  const hardTiming = ms.map((m) => ({ id: m.id, nsPerCall: timing.hard[m.id] }));
   return {
     random: { count, seed: 7, interval: [lo, hi], methods: random },
     hard,
