@@ -90,6 +90,24 @@ describe("runCli in-process", () => {
     expect(out.stdout).toBe("");
   });
 
+  it("simulate --until-time T stops at T when an action is still scheduled after T (it printed t = 0)", () => {
+    const late = {
+      format: "chapgame",
+      version: 1,
+      g: 0,
+      gravity: [0, 0],
+      actions: [
+        { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [1, 0] },
+        { time: 5, type: "addBody", id: "b", x: 20, y: 0, r: 1, m: 1, v: [-1, 0] },
+      ],
+    };
+    const { cli, out } = io({ "late.json": JSON.stringify(late) });
+    expect(runCli(["simulate", "late.json", "--until-time", "2"], cli)).toBe(0);
+    const r = JSON.parse(out.stdout);
+    expect(r.time).toBe(2);
+    expect(r.bodies.map((b: { id: string; x: number }) => [b.id, b.x])).toEqual([["a", 2]]);
+  });
+
   it("counts Galperin's collisions (3 digits: 314)", () => {
     const { cli, out } = io({ "g.json": serializeScene(galperin(3)) });
     expect(runCli(["simulate", "g.json"], cli)).toBe(0);

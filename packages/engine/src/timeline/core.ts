@@ -248,7 +248,9 @@ export class TimelineCore {
   satisfied(g: Goal): "events" | "idle" | "time" | null {
     if (this.eventTotal >= g.eLimit) return "events";
     const t = this.world.time;
-    if (t > g.tLimit || (t === g.tLimit && this.atTimeLimit)) return this.idle ? "idle" : "time";
+    // "idle": no event is left, and an action still to be applied is one
+    if (t > g.tLimit || (t === g.tLimit && this.atTimeLimit))
+      return this.idle && this.applied === this.acts.length ? "idle" : "time";
     if (this.idle && this.applied === this.acts.length && g.tLimit === INF) return "idle";
     return null;
   }

@@ -72,6 +72,27 @@ describe("Timeline on the reference cases", () => {
   });
 });
 
+describe("prolong's reason", () => {
+  // "idle" means no event is left; an action still scheduled later is one (review 7: the CLI's
+  // `simulate --until-time 2` printed the state at t = 0 for a scene with a body added at t = 5)
+  const later: Action[] = [
+    { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [1, 0] },
+    { time: 5, type: "addBody", id: "b", x: 20, y: 0, r: 1, m: 1, v: [-1, 0] },
+  ];
+
+  it("is 'time', not 'idle', when the time limit comes before a scheduled action", () => {
+    const tl = Timeline.fromScene(scene(later, 0), { compute: false });
+    expect(tl.prolong({ time: 2 })).toEqual({ events: 0, reason: "time" });
+    expect(tl.prolongSlice({ time: 1 }, 10)).toEqual({ done: true, events: 0, horizon: 3, reason: "time" });
+  });
+
+  it("is 'idle' at the time limit once every action is applied and nothing is queued", () => {
+    const tl = Timeline.fromScene(scene(later, 0), { compute: false });
+    expect(tl.prolong({ time: 20 })).toEqual({ events: 1, reason: "idle" });
+    expect(tl.horizon).toBe(20);
+  });
+});
+
 describe("Timeline agrees with the World", () => {
   const gas = dilutedGas({ n: 60, packing: 0.2, seed: 3 });
 
