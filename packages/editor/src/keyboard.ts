@@ -1,17 +1,30 @@
 /**
  * Keyboard shortcuts: space play/pause, ←/→ previous/next event, Ctrl+Z undo, Ctrl+Shift+Z (or
- * Ctrl+Y) redo, Delete/Backspace delete the selection. Ignored while typing in a field.
+ * Ctrl+Y) redo, Delete/Backspace delete the selection. Ignored while typing in a field; on other
+ * controls (the Time slider, a checkbox) only the keys the control uses itself are left to it
+ * (the slider's arrows, a checkbox's space), so Ctrl+Z and space still work after scrubbing.
  */
 import type { Editor } from "./editor";
 
-function typing(target: EventTarget | null): boolean {
+/** Input types whose keys are text editing (every shortcut is left to them). */
+const TEXT_INPUTS = new Set(["text", "search", "number", "email", "url", "tel", "password"]);
+
+/** Whether the focused element `target` uses `e` itself, so it is no shortcut. */
+function ownsKey(target: EventTarget | null, e: KeyboardEvent): boolean {
   if (!(target instanceof HTMLElement)) return false;
   const tag = target.tagName;
-  return tag === "INPUT" || tag === "TEXTAREA" || tag === "SELECT" || target.isContentEditable;
+  if (tag === "TEXTAREA" || tag === "SELECT" || target.isContentEditable) return true;
+  if (tag !== "INPUT") return false;
+  const type = (target as HTMLInputElement).type;
+  if (TEXT_INPUTS.has(type) || type.startsWith("date") || type === "time" || type === "month") return true;
+  if (e.ctrlKey || e.metaKey) return false;
+  if (e.key === " ") return type !== "range";
+  if (e.key.startsWith("Arrow")) return type === "range" || type === "radio";
+  return false;
 }
 
 export function handleKey(editor: Editor, e: KeyboardEvent): boolean {
-  if (typing(e.target)) return false;
+  if (ownsKey(e.target, e)) return false;
   const mod = e.ctrlKey || e.metaKey;
   if (mod && e.key.toLowerCase() === "z") {
     void (e.shiftKey ? editor.redo() : editor.undo());

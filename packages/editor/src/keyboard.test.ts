@@ -1,0 +1,93 @@
+// @vitest-environment jsdom
+import { afterEach, describe, expect, it } from "vitest";
+import type { Editor } from "./editor";
+import { bindKeyboard } from "./keyboard";
+
+/** An editor that records which shortcut ran. */
+function recorder() {
+  const calls: string[] = [];
+  const editor = {
+    undo: async () => void calls.push("undo"),
+    redo: async () => void calls.push("redo"),
+    togglePlay: () => void calls.push("play"),
+    stepEvent: async (d: number) => void calls.push(`step ${d}`),
+    deleteSelection: async () => void calls.push("delete"),
+  } as unknown as Editor;
+  return { editor, calls };
+}
+
+/** A focused control of the given kind in the page. */
+function control(tag: "input" | "textarea" | "button", type?: string): HTMLElement {
+  const el = document.createElement(tag);
+  if (type) el.setAttribute("type", type);
+  document.body.append(el);
+  el.focus();
+  return el;
+}
+
+/** Presses `key` on `target`; returns whether the page kept the browser's own handling. */
+function press(
+  target: EventTarget,
+  key: string,
+  mods: { ctrlKey?: boolean; shiftKey?: boolean } = {},
+): boolean {
+  const e = new KeyboardEvent("keydown", { key, bubbles: true, cancelable: true, ...mods });
+  target.dispatchEvent(e);
+  return !e.defaultPrevented;
+}
+
+afterEach(() => {
+  document.body.replaceChildren();
+});
+
+describe("keyboard shortcuts", () => {
+  it("on the Time slider: Ctrl+Z, Ctrl+Shift+Z and space work; the arrows stay the slider's", () => {
+    const { editor, calls } = recorder();
+    const off = bindKeyboard(editor);
+    const slider = control("input", "range");
+    expect(press(slider, "z", { ctrlKey: true })).toBe(false);
+    expect(press(slider, "Z", { ctrlKey: true, shiftKey: true })).toBe(false);
+    expect(press(slider, " ")).toBe(false);
+    expect(press(slider, "ArrowLeft")).toBe(true);
+    expect(calls).toEqual(["undo", "redo", "play"]);
+    off();
+  });
+
+  it("on a checkbox: Ctrl+Z undoes, space stays the checkbox's", () => {
+    const { editor, calls } = recorder();
+    const off = bindKeyboard(editor);
+    const box = control("input", "checkbox");
+    expect(press(box, " ")).toBe(true);
+    expect(press(box, "z", { ctrlKey: true })).toBe(false);
+    expect(calls).toEqual(["undo"]);
+    off();
+  });
+
+  it("typing in a text field or a text area runs no shortcut", () => {
+    const { editor, calls } = recorder();
+    const off = bindKeyboard(editor);
+    for (const field of [control("input", "text"), control("input"), control("textarea")]) {
+      for (const [key, mods] of [
+        ["z", { ctrlKey: true }],
+        [" ", {}],
+        ["ArrowLeft", {}],
+        ["Backspace", {}],
+      ] as const)
+        expect(press(field, key, mods)).toBe(true);
+    }
+    expect(calls).toEqual([]);
+    off();
+  });
+
+  it("elsewhere (the page, a button): every shortcut", () => {
+    const { editor, calls } = recorder();
+    const off = bindKeyboard(editor);
+    press(document.body, " ");
+    press(document.body, "ArrowRight");
+    press(document.body, "ArrowLeft");
+    press(control("button"), "Delete");
+    press(document.body, "y", { ctrlKey: true });
+    expect(calls).toEqual(["play", "step 1", "step -1", "delete", "redo"]);
+    off();
+  });
+});
