@@ -1,5 +1,6 @@
 /**
- * checkAction(raw, path): validates one action's fields (types, ranges, known type and keys) and
+ * checkAction(raw, path): validates one action's fields (types, ranges, known type and keys, and the
+ * World's magnitude limits: magnitudes.ts) and
  * returns it normalized (addBody gets mu 0 and v [0, 0] when absent; keys in canonical order).
  * Checks that need the scene's state (ids that exist, overlaps) are in sceneRules.ts.
  * ACTION_FIELDS gives the canonical key order used by serializeScene.
@@ -19,6 +20,7 @@ import {
   positive,
   vec2,
 } from "./fields.js";
+import { checkActionMagnitudes } from "./magnitudes.js";
 import { type Action, type ActionType, SCENE_DEFAULTS } from "./types.js";
 
 type Reader = (o: Obj, key: string, path: string) => unknown;
@@ -93,5 +95,6 @@ export function checkAction(raw: unknown, path: string): Action {
     if (p1[0] === p2[0] && p1[1] === p2[1]) throw new SceneError(join(path, "p2"), "must differ from p1");
   }
   if (raw.until !== undefined) out.until = checkUntil(raw.until, join(path, "until"));
+  checkActionMagnitudes(out as unknown as Action, path);
   return out as unknown as Action;
 }

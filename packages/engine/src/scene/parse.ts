@@ -10,6 +10,7 @@
 import { checkAction } from "./action.js";
 import { SceneError } from "./errors.js";
 import { isObject, nonNegative, onlyKeys, vec2 } from "./fields.js";
+import { checkFieldMagnitudes } from "./magnitudes.js";
 import { checkAndApply, SceneView } from "./sceneRules.js";
 import { type Action, SCENE_DEFAULTS, type SceneFile } from "./types.js";
 
@@ -70,6 +71,7 @@ export function parseScene(input: string | unknown): SceneFile {
     );
   const g = raw.g === undefined ? SCENE_DEFAULTS.g : nonNegative(raw, "g", "");
   const gravity = raw.gravity === undefined ? SCENE_DEFAULTS.gravity : vec2(raw, "gravity", "");
+  checkFieldMagnitudes(g, gravity, "");
   if (!Array.isArray(raw.actions)) throw new SceneError("actions", "must be an array");
   const actions = raw.actions.map((a, i) => checkAction(a, `actions[${i}]`));
   checkSceneRules(g, gravity, actions);

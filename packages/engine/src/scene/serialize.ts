@@ -10,6 +10,7 @@
 import { ACTION_FIELDS, checkAction } from "./action.js";
 import { SceneError } from "./errors.js";
 import { isObject, nonNegative, vec2 } from "./fields.js";
+import { checkFieldMagnitudes } from "./magnitudes.js";
 import type { Action, SceneFile } from "./types.js";
 
 function value(v: unknown): string {
@@ -42,8 +43,7 @@ function checkFields(scene: SceneFile): void {
   const raw = scene as unknown as Record<string, unknown>;
   if (!isObject(raw)) throw new SceneError("scene", "must be an object");
   if (!Array.isArray(raw.actions)) throw new SceneError("actions", "must be an array");
-  nonNegative(raw, "g", "");
-  vec2(raw, "gravity", "");
+  checkFieldMagnitudes(nonNegative(raw, "g", ""), vec2(raw, "gravity", ""), "");
   if (raw.meta !== undefined && !isObject(raw.meta)) throw new SceneError("meta", "must be an object");
   raw.actions.forEach((a, i) => {
     checkAction(a, `actions[${i}]`);

@@ -1,11 +1,12 @@
 /**
  * checkOptions(options): the Timeline constructor's options validated (SceneError naming the key:
- * unknown keys, g and gravity as in scene files, history and compute booleans) with the defaults
+ * unknown keys, g and gravity as in scene files, magnitudes included; history and compute booleans) with the defaults
  * filled in (g 9.81, gravity [0, 0], history and compute true). checkSceneOptions: fromScene's
  * options, which must not carry g or gravity (they come from the scene).
  */
 import { SceneError } from "../scene/errors.js";
 import { nonNegative, onlyKeys, vec2 } from "../scene/fields.js";
+import { checkFieldMagnitudes } from "../scene/magnitudes.js";
 import { SCENE_DEFAULTS, type Vec2 } from "../scene/types.js";
 import type { TimelineOptions } from "./types.js";
 
@@ -22,7 +23,7 @@ export function checkOptions(options: TimelineOptions): CheckedOptions {
   for (const key of ["history", "compute"])
     if (o[key] !== undefined && typeof o[key] !== "boolean")
       throw new SceneError(key, "must be true or false");
-  return {
+  const checked: CheckedOptions = {
     g: o.g === undefined ? SCENE_DEFAULTS.g : nonNegative(o, "g", ""),
     gravity:
       o.gravity === undefined
@@ -31,6 +32,8 @@ export function checkOptions(options: TimelineOptions): CheckedOptions {
     history: options.history !== false,
     compute: options.compute !== false,
   };
+  checkFieldMagnitudes(checked.g, checked.gravity, "");
+  return checked;
 }
 
 export function checkSceneOptions(options: Omit<TimelineOptions, "g" | "gravity">): void {
