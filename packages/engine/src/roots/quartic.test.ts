@@ -178,4 +178,23 @@ describe("quarticRoots (the quartic hot path)", () => {
     expect(realRootsInto([1, 0, 1], 0, 3, out)).toBe(0);
     expect(out).toEqual([]);
   });
+
+  it("realRootsInto replaces longer, shorter and equal old contents through the quartic hot path", () => {
+    const c2 = fromRoots([0.25, 0.75, 5, 6], 1); // two roots in [0, 1]
+    const c4 = fromRoots([0.1, 0.3, 0.6, 0.9], 1); // four roots in [0, 1]
+    const none = [1, 0, 1, 0, 1]; // no real root
+    // All three settled by the hot path (not handed to the general method):
+    expect([quarticRoots(c2, 0, 1), quarticRoots(c4, 0, 1), quarticRoots(none, 0, 1)]).toEqual([2, 4, 0]);
+    const out = [9, 9, 9, 9, 9, 9];
+    expect(realRootsInto(c2, 0, 1, out)).toBe(2); // shrinks from 6
+    expect(out).toEqual(realRoots(c2, 0, 1));
+    expect(realRootsInto(c4, 0, 1, out)).toBe(4); // grows from 2
+    expect(out).toEqual(realRoots(c4, 0, 1));
+    expect(realRootsInto(c4, 0, 1, out)).toBe(4); // same length
+    expect(out).toEqual(realRoots(c4, 0, 1));
+    expect(out.length).toBe(4);
+    expect(realRootsInto(none, 0, 1, out)).toBe(0);
+    expect(out).toEqual([]);
+    expect(() => realRootsInto([1, 2, 3, 4, Number.NaN], 0, 1, out)).toThrow(/coeffs\[4\]/);
+  });
 });
