@@ -1,4 +1,4 @@
-import { newtonsCradle } from "@chapgame/engine";
+import { bouncingBalls, newtonsCradle } from "@chapgame/engine";
 import { describe, expect, it } from "vitest";
 import { F_FROM, F_UNTIL, F_VX, F_X, FRAME_STRIDE } from "./remote/protocol";
 import { settled, testEditor } from "./testing/harness";
@@ -120,6 +120,28 @@ describe("Editor over the worker protocol", () => {
     h.editor.cancelCompute();
     await settled(h.client);
     expect(h.client.getSnapshot().computing).toBeNull();
+  });
+
+  it("a typed time past the horizon goes there once computed, unless the user scrubbed or edited meanwhile", async () => {
+    // Review 7: t = 1e6 typed, then a disc added at t = 0 while it computed; the disc went in at
+    // t = 0 and the view then jumped to the horizon the recompute happened to reach (t = 25,061).
+    const h = testEditor();
+    await h.editor.loadScene(bouncingBalls(), { undoable: false });
+    await settled(h.client);
+    const done = h.editor.goTo(200);
+    await done;
+    expect(h.editor.ui.getState().t).toBe(200);
+    h.editor.setTime(0);
+    const scrubbed = h.editor.goTo(400);
+    h.editor.setTime(3); // the user scrubs back while it computes
+    await scrubbed;
+    expect(h.editor.ui.getState().t).toBe(3);
+    h.editor.setTime(0);
+    const edited = h.editor.goTo(600);
+    expect(await h.editor.addBody(5, 8, 0.25)).toBeNull(); // a disc added at t = 0 while it computes
+    await edited;
+    await settled(h.client);
+    expect(h.editor.ui.getState().t).toBe(0);
   });
 
   it("an engine that stopped answering is restarted with the same scene", async () => {

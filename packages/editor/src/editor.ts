@@ -287,7 +287,8 @@ export class Editor {
 
   /**
    * Goes to time t (a typed time). Past the horizon it computes up to t first and then goes there
-   * (cut to the horizon if that computation is cancelled or refused).
+   * (cut to the horizon if that computation is cancelled or refused). When the user moves the time
+   * or edits the scene while it computes, the time stays where they are.
    */
   async goTo(t: number): Promise<void> {
     const h = this.client.getSnapshot().horizon;
@@ -296,6 +297,8 @@ export class Editor {
       return;
     }
     this.ui.setState({ playing: false });
+    const from = this.ui.getState().t;
+    const docRevision = this.client.getSnapshot().docRevision;
     try {
       await this.client.compute({ time: t - h });
     } catch (e) {
@@ -303,6 +306,7 @@ export class Editor {
       return;
     }
     await this.whenComputed();
+    if (this.ui.getState().t !== from || this.client.getSnapshot().docRevision !== docRevision) return;
     this.setTime(t);
   }
 
