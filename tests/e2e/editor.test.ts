@@ -122,6 +122,29 @@ describe("editor end to end", () => {
     await poll(() => cellValue("striker vx")).toBe(4);
   });
 
+  it("Ctrl+Z, Ctrl+Shift+Z and space work with the Time slider focused (it kept them from the editor)", async () => {
+    await loadPreset("Newton's cradle");
+    const speed = page.getByRole("textbox", { name: "Speed" });
+    await speed.fill("1"); // forwards (an earlier test replayed backwards)
+    await speed.press("Enter");
+    await editCell("striker vx", "8");
+    await poll(() => cellValue("striker vx")).toBe(8);
+    await page.getByRole("button", { name: "Undo" }).click();
+    await poll(() => cellValue("striker vx")).toBe(4);
+    const slider = page.getByRole("slider", { name: "Time" });
+    await scrubTo(page, 0.25);
+    expect(await slider.evaluate((el) => el === document.activeElement)).toBe(true);
+    await page.keyboard.press("Control+Shift+z");
+    await poll(() => cellValue("striker vx")).toBe(8);
+    await page.keyboard.press("Control+z");
+    await poll(() => cellValue("striker vx")).toBe(4);
+    await page.keyboard.press("Space");
+    await waitFor(async () => (await currentTime(page)) > 0.5);
+    await page.keyboard.press("Space");
+    await poll(() => page.getByRole("button", { name: "Play", exact: true }).count()).toBe(1);
+    await scrubTo(page, 0);
+  });
+
   it("a broken paste shows the validation message and keeps the scene", async () => {
     const broken = JSON.stringify({
       format: "chapgame",
