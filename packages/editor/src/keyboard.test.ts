@@ -17,7 +17,7 @@ function recorder() {
 }
 
 /** A focused control of the given kind in the page. */
-function control(tag: "input" | "textarea" | "button", type?: string): HTMLElement {
+function control(tag: "input" | "textarea" | "button" | "select", type?: string): HTMLElement {
   const el = document.createElement(tag);
   if (type) el.setAttribute("type", type);
   document.body.append(el);
@@ -59,6 +59,18 @@ describe("keyboard shortcuts", () => {
     const box = control("input", "checkbox");
     expect(press(box, " ")).toBe(true);
     expect(press(box, "z", { ctrlKey: true })).toBe(false);
+    expect(calls).toEqual(["undo"]);
+    off();
+  });
+
+  it("on a list (a line's kind): Ctrl+Z undoes, its other keys stay the list's", () => {
+    const { editor, calls } = recorder();
+    const off = bindKeyboard(editor);
+    const list = control("select");
+    expect(press(list, " ")).toBe(true);
+    expect(press(list, "ArrowDown")).toBe(true);
+    expect(press(list, "Delete")).toBe(true);
+    expect(press(list, "z", { ctrlKey: true })).toBe(false);
     expect(calls).toEqual(["undo"]);
     off();
   });

@@ -1,8 +1,9 @@
 /**
  * Keyboard shortcuts: space play/pause, ←/→ previous/next event, Ctrl+Z undo, Ctrl+Shift+Z (or
  * Ctrl+Y) redo, Delete/Backspace delete the selection. Ignored while typing in a field; on other
- * controls (the Time slider, a checkbox) only the keys the control uses itself are left to it
- * (the slider's arrows, a checkbox's space), so Ctrl+Z and space still work after scrubbing.
+ * controls (the Time slider, a checkbox, a list) only the keys the control uses itself are left to
+ * it (the slider's arrows, a checkbox's space, a list's keys but Ctrl+Z/Y), so Ctrl+Z and space
+ * still work after scrubbing or picking a line kind.
  */
 import type { Editor } from "./editor";
 
@@ -13,7 +14,8 @@ const TEXT_INPUTS = new Set(["text", "search", "number", "email", "url", "tel", 
 function ownsKey(target: EventTarget | null, e: KeyboardEvent): boolean {
   if (!(target instanceof HTMLElement)) return false;
   const tag = target.tagName;
-  if (tag === "TEXTAREA" || tag === "SELECT" || target.isContentEditable) return true;
+  if (tag === "TEXTAREA" || target.isContentEditable) return true;
+  if (tag === "SELECT") return !(e.ctrlKey || e.metaKey); // a list keeps its keys, not Ctrl+Z
   if (tag !== "INPUT") return false;
   const type = (target as HTMLInputElement).type;
   if (TEXT_INPUTS.has(type) || type.startsWith("date") || type === "time" || type === "month") return true;
