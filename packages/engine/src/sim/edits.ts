@@ -9,9 +9,14 @@ import { ChapgameError } from "./errors.js";
 import { Placement } from "./placement.js";
 import type { BodyInit, BodyMotionInit, BodyPatch, Vec2 } from "./types.js";
 import {
+  BODY_FIELDS,
+  BODY_STATE_EXTRAS,
   checkFrictionGravity,
+  MOTION_EXTRAS,
+  MOTION_FIELDS,
   requireBounded,
   requireFieldRate,
+  requireFields,
   requireFinite,
   requireGravity,
   requireId,
@@ -27,6 +32,7 @@ export class Edits extends Placement {
 
   addBody(id: string, init: BodyInit): void {
     requireId("id", id);
+    requireFields("init", init, BODY_FIELDS, BODY_STATE_EXTRAS);
     if (this.index.has(id)) throw new ChapgameError("id", `a body with id '${id}' already exists`);
     const x = requireBounded("x", init.x);
     const y = requireBounded("y", init.y);
@@ -51,6 +57,7 @@ export class Edits extends Placement {
    */
   addBodyMotion(id: string, init: BodyMotionInit): void {
     requireId("id", id);
+    requireFields("init", init, MOTION_FIELDS, MOTION_EXTRAS);
     if (this.index.has(id)) throw new ChapgameError("id", `a body with id '${id}' already exists`);
     const t0 = requireFinite("t0", init.t0);
     if (t0 > this.now) throw new ChapgameError("t0", `must be <= the world's time ${this.now}`);
@@ -107,6 +114,7 @@ export class Edits extends Placement {
 
   updateBody(id: string, patch: BodyPatch): void {
     const s = this.slotOf(id);
+    requireFields("patch", patch, BODY_FIELDS, BODY_STATE_EXTRAS);
     const b = this.store;
     const now = this.now;
     // Only the fields the patch gives are held to the edit bounds: the body's own current state
@@ -149,6 +157,7 @@ export class Edits extends Placement {
   // ---- globals ------------------------------------------------------------------------------
 
   setGlobal(patch: { g?: number; gravity?: Vec2 }): void {
+    requireFields("patch", patch, ["g", "gravity"]);
     const g = requireFieldRate("g", patch.g ?? this.frictionG);
     const gravity = requireGravity("gravity", patch.gravity ?? this.gravity);
     for (const [id, s] of this.index)

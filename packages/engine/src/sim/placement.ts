@@ -9,7 +9,7 @@ import { ChapgameError } from "./errors.js";
 import { distanceToLine, type Line, type LineKind, makeLine, type Point } from "./obstacles.js";
 import { Simulator } from "./simulator.js";
 import type { LineState, PointState, Vec2 } from "./types.js";
-import { requireId, requireLineKind, requireVec } from "./validate.js";
+import { requireFields, requireId, requireLineKind, requireVec } from "./validate.js";
 
 /** Below this many bodies an overlap check scans them all instead of using the grid. */
 const LINEAR_SCAN_BODIES = 64;
@@ -111,6 +111,8 @@ export class Placement extends Simulator {
   updateLine(id: string, patch: { p1?: Vec2; p2?: Vec2; kind?: LineKind }): void {
     const i = this.lineList.findIndex((l) => l.id === id);
     if (i < 0) throw new ChapgameError("id", `no line with id '${id}'`);
+    // (a LineState's id may come back with it; the id argument names the line)
+    requireFields("patch", patch, ["p1", "p2", "kind"], ["id"]);
     const old = this.lineList[i] as Line;
     const line = this.checkedLine(
       id,

@@ -121,3 +121,30 @@ export function checkFrictionGravity(path: string, mu: number, gravity: Vec2): v
       "must be 0 while the gravity field is non-zero (friction under gravity is not polynomial motion)",
     );
 }
+
+/**
+ * An options or fields object: a plain object (not null, not an array) whose keys are all in
+ * `known` or `ignored`. `ignored` lists the keys of what the World itself reports (a BodyState's
+ * id, ax, ay; a motion's ax, ay, tStop) so that such a report can be passed back as it is; they are
+ * derived, so the edit does not read them. Any other key is refused by name: a misspelt field
+ * (`vX`, `grav`) would otherwise be dropped without a word.
+ */
+export function requireFields(
+  path: string,
+  v: unknown,
+  known: readonly string[],
+  ignored: readonly string[] = [],
+): void {
+  if (typeof v !== "object" || v === null || Array.isArray(v))
+    throw new ChapgameError(path, `must be an object with fields ${known.join(", ")}`);
+  for (const key of Object.keys(v))
+    if (!known.includes(key) && !ignored.includes(key))
+      throw new ChapgameError(`${path}.${key}`, `is not a field here (known: ${known.join(", ")})`);
+}
+
+/** The fields of a BodyInit / BodyPatch, and of a BodyState that may be passed back. */
+export const BODY_FIELDS = ["x", "y", "vx", "vy", "r", "m", "mu"] as const;
+export const BODY_STATE_EXTRAS = ["id", "ax", "ay"] as const;
+/** The fields of a BodyMotionInit, and of a motion(id) report that may be passed back. */
+export const MOTION_FIELDS = ["t0", "x0", "y0", "vx", "vy", "r", "m", "mu"] as const;
+export const MOTION_EXTRAS = ["id", "ax", "ay", "tStop"] as const;

@@ -11,12 +11,20 @@ import { positionAt, velocityAt } from "../physics/motion.js";
 import { Edits } from "./edits.js";
 import { ChapgameError } from "./errors.js";
 import type { AdvanceLimits, AdvanceResult, BodyState, WorldEvent, WorldOptions } from "./types.js";
-import { requireFieldRate, requireFinite, requireGravity } from "./validate.js";
+import { requireFieldRate, requireFields, requireFinite, requireGravity } from "./validate.js";
 
 const INF = Number.POSITIVE_INFINITY;
 
 export class World extends Edits {
   constructor(options: WorldOptions = {}) {
+    requireFields("options", options, ["g", "gravity", "time", "optimizations"]);
+    if (options.optimizations !== undefined)
+      requireFields("options.optimizations", options.optimizations, [
+        "broadPhase",
+        "pathBounds",
+        "quadraticFastPath",
+        "restingSkip",
+      ]);
     const g = requireFieldRate("g", options.g ?? 9.81);
     const gravity = requireGravity("gravity", options.gravity ?? [0, 0]);
     const time = requireFinite("time", options.time ?? 0);
@@ -130,12 +138,18 @@ export class World extends Edits {
   // ---- simulation ---------------------------------------------------------------------------
 
   advance(limits: AdvanceLimits = {}, onEvent?: (e: WorldEvent) => void): AdvanceResult {
+    requireFields("limits", limits, ["untilTime", "maxEvents"]);
     const untilTime = limits.untilTime ?? INF;
     const maxEvents = limits.maxEvents ?? INF;
-    if (Number.isNaN(untilTime) || untilTime < this.now)
-      throw new ChapgameError("untilTime", `must be >= the current time ${this.now}`);
-    if (Number.isNaN(maxEvents) || maxEvents < 0)
-      throw new ChapgameError("maxEvents", "must be a number >= 0");
+    if (typeof untilTime !== "number" || Number.isNaN(untilTime))
+      throw new ChapgameError("untilTime", `must be a number (a time >= the current time ${this.now})`);
+    if (untilTime < this.now) throw new ChapgameError("untilTime", `must be >= the current time ${this.now}`);
+    if (
+      typeof maxEvents !== "number" ||
+      !(maxEvents >= 0) ||
+      !(Number.isInteger(maxEvents) || maxEvents === INF)
+    )
+      throw new ChapgameError("maxEvents", "must be a whole number >= 0, or Infinity");
     this.prepare();
     let events = 0;
     while (events < maxEvents) {

@@ -1,0 +1,102 @@
+// The shape of the World's option and field objects (validate.ts requireFields, review 7): not an
+// object, an unknown (misspelt) key, a fractional event count and a NaN time are refused by name,
+// and nothing changes; what the World reports (a BodyState, a motion) can be passed back as it is.
+import { describe, expect, it } from "vitest";
+import { ChapgameError } from "./errors.js";
+import type { BodyInit } from "./types.js";
+import { World } from "./world.js";
+
+/** The ChapgameError fn throws (fails the test when it throws nothing or something else). */
+function refusal(fn: () => unknown): ChapgameError {
+  try {
+    fn();
+  } catch (e) {
+    if (e instanceof ChapgameError) return e;
+    throw new Error(`expected a ChapgameError, got ${String(e)}`);
+  }
+  throw new Error("expected a ChapgameError, nothing was thrown");
+}
+
+function oneDisc(): World {
+  const w = new World({ g: 0 });
+  w.addBody("a", { x: 0, y: 0, r: 1, m: 1, vx: 1 });
+  return w;
+}
+
+describe("World input objects", () => {
+  it("refuses a missing or non-object init, patch, options or limits by name", () => {
+    const w = oneDisc();
+    expect(refusal(() => w.addBody("b", null as unknown as BodyInit)).path).toBe("init");
+    expect(refusal(() => w.addBody("b", 5 as unknown as BodyInit)).path).toBe("init");
+    expect(refusal(() => w.updateBody("a", [] as unknown as BodyInit)).path).toBe("patch");
+    expect(refusal(() => w.setGlobal(null as unknown as { g: number })).path).toBe("patch");
+    expect(refusal(() => new World(null as unknown as { g: number })).path).toBe("options");
+    expect(refusal(() => w.advance(null as unknown as { maxEvents: number })).path).toBe("limits");
+    expect(w.bodies().map((b) => b.id)).toEqual(["a"]);
+  });
+
+  it("refuses a misspelt key instead of dropping it", () => {
+    const w = oneDisc();
+    const e = refusal(() => w.addBody("b", { x: 5, y: 0, r: 1, m: 1, vX: 5 } as unknown as BodyInit));
+    expect(e.path).toBe("init.vX");
+    expect(e.message).toMatch(/known: x, y, vx, vy, r, m, mu/);
+    expect(w.hasBody("b")).toBe(false);
+    expect(refusal(() => w.updateBody("a", { vX: 2 } as unknown as BodyInit)).path).toBe("patch.vX");
+    expect(w.body("a").vx).toBe(1);
+    expect(refusal(() => new World({ grav: 1 } as unknown as { g: number })).path).toBe("options.grav");
+    expect(
+      refusal(() => new World({ optimizations: { broadphase: false } as unknown as { broadPhase: boolean } }))
+        .path,
+    ).toBe("options.optimizations.broadphase");
+    expect(refusal(() => w.setGlobal({ gravity: [0, 0], G: 1 } as unknown as { g: number })).path).toBe(
+      "patch.G",
+    );
+    expect(refusal(() => w.advance({ until: 5 } as unknown as { untilTime: number })).path).toBe(
+      "limits.until",
+    );
+    w.addLine("l", [0, 10], [10, 10], "segment");
+    expect(refusal(() => w.updateLine("l", { p3: [0, 0] } as unknown as { p1: [number, number] })).path).toBe(
+      "patch.p3",
+    );
+    expect(w.time).toBe(0);
+  });
+
+  it("takes back what it reports: a BodyState, a LineState and a motion", () => {
+    const w = oneDisc();
+    w.advance({ untilTime: 2 });
+    const state = w.body("a");
+    const copy = new World({ g: 0, time: 2 });
+    copy.addBody("a", state); // id, ax, ay are derived and not read
+    expect(copy.body("a")).toEqual(state);
+    copy.updateBody("a", { ...state, vx: 3 });
+    expect(copy.body("a").vx).toBe(3);
+    const rebuilt = new World({ g: 0, time: 2 });
+    rebuilt.addBodyMotion("a", { ...w.motion("a"), r: 1, m: 1 });
+    expect(rebuilt.body("a")).toEqual(state);
+    copy.addLine("l", [0, 10], [10, 10], "segment");
+    const line = copy.lines()[0];
+    if (line === undefined) throw new Error("the line is missing");
+    copy.updateLine("l", { ...line, kind: "ray" });
+    expect(copy.lines()[0]?.kind).toBe("ray");
+  });
+
+  it("wants a whole number of events and a time that is a number", () => {
+    const w = oneDisc();
+    const frac = refusal(() => w.advance({ maxEvents: 1.5 }));
+    expect(frac.path).toBe("maxEvents");
+    expect(frac.message).toMatch(/whole number/);
+    expect(refusal(() => w.advance({ maxEvents: -1 })).path).toBe("maxEvents");
+    const nan = refusal(() => w.advance({ untilTime: Number.NaN }));
+    expect(nan.path).toBe("untilTime");
+    expect(nan.message).toMatch(/must be a number/);
+    expect(refusal(() => w.advance({ untilTime: "5" as unknown as number })).message).toMatch(
+      /must be a number/,
+    );
+    expect(w.advance({ maxEvents: Number.POSITIVE_INFINITY, untilTime: 3 })).toEqual({
+      events: 0,
+      reason: "idle",
+    });
+    expect(w.time).toBe(3);
+    expect(w.advance({ maxEvents: 0 })).toEqual({ events: 0, reason: "events" });
+  });
+});
