@@ -131,7 +131,7 @@ describe("chapgame on invalid input: exit 2, one line on stderr, no stack trace"
     ],
   });
   const cases: [string, string[], string | undefined, string][] = [
-    ["broken JSON", ["simulate", "-"], "{ nope", "chapgame: json: invalid JSON"],
+    ["broken JSON", ["simulate", "-"], "{ nope", "chapgame: <stdin>: json: invalid JSON"],
     ["a missing file", ["simulate", join(dir, "nope.json")], undefined, "chapgame: cannot read"],
     ["bad arguments", ["simulate"], undefined, "chapgame: simulate: missing SCENE file"],
     [
@@ -144,15 +144,24 @@ describe("chapgame on invalid input: exit 2, one line on stderr, no stack trace"
       "an invalid field",
       ["simulate", "-"],
       '{"format":"chapgame","version":1,"actions":[{"time":0,"type":"addBody","id":"a","x":0,"y":0,"r":-1,"m":1}]}',
-      "chapgame: actions[0].r: must be a positive finite number",
+      "chapgame: <stdin>: actions[0].r: must be a positive finite number",
     ],
     [
       "an overlap found while simulating",
       ["simulate", "-"],
       overlapLater,
-      'chapgame: actions[1]: body "b" would overlap body "a" at time 3',
+      'chapgame: <stdin>: actions[1]: body "b" would overlap body "a" at time 3',
     ],
   ];
+  it("a truncated scene file: its name, and where the text stops", () => {
+    const file = join(dir, "truncated.json");
+    writeFileSync(file, '{"format":"chapgame",\n"version":1,\n"actions":[');
+    const r = run(["simulate", file]);
+    expect(r.code).toBe(2);
+    const expected = `chapgame: ${file}: json: invalid JSON at the end (line 3, column 12): the text stops early`;
+    expect(r.stderr.startsWith(expected)).toBe(true);
+  });
+
   for (const [name, args, input, message] of cases)
     it(name, () => {
       const r = run(args, input);

@@ -85,7 +85,9 @@ describe("runCli in-process", () => {
     expect(runCli(["simulate", "gas.json", "--until-time", "7000"], cli)).toBe(2);
     const last = out.stderr.split("\r").at(-1) as string;
     expect(
-      last.startsWith(`${String.fromCharCode(27)}[Kchapgame: cannot simulate this scene: body 'rest'`),
+      last.startsWith(
+        `${String.fromCharCode(27)}[Kchapgame: gas.json: cannot simulate this scene: body 'rest'`,
+      ),
     ).toBe(true);
     expect(out.stdout).toBe("");
   });

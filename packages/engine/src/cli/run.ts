@@ -67,6 +67,7 @@ function simulate(
 }
 
 export function runCli(argv: readonly string[], io: CliIO): number {
+  let source: string | null = null; // the scene's name, once it is read
   try {
     const cmd = parseArgs(argv);
     if (cmd.command === "help") {
@@ -83,6 +84,7 @@ export function runCli(argv: readonly string[], io: CliIO): number {
     } catch (e) {
       throw new UsageError(`cannot read ${cmd.scene}: ${(e as Error).message.split("\n")[0]}`);
     }
+    source = cmd.scene === "-" ? "<stdin>" : cmd.scene;
     const scene = parseScene(text);
     const tl = Timeline.fromScene(scene, { history: cmd.events, compute: false });
     const mode: ProgressMode = io.progress ? "terminal" : cmd.progress === true ? "lines" : "off";
@@ -95,12 +97,18 @@ export function runCli(argv: readonly string[], io: CliIO): number {
     writeResult(tl, time, cmd.events, (text) => io.stdout(text));
     return 0;
   } catch (e) {
-    if (e instanceof UsageError || e instanceof SceneError || e instanceof ChapgameError) {
+    // Errors about the scene's content name the scene file first (a batch over many files).
+    const file = source === null ? "" : `${source}: `;
+    if (e instanceof UsageError) {
       io.stderr(`chapgame: ${e.message}\n`);
       return 2;
     }
+    if (e instanceof SceneError || e instanceof ChapgameError) {
+      io.stderr(`chapgame: ${file}${e.message}\n`);
+      return 2;
+    }
     if (e instanceof SimulationError) {
-      io.stderr(`chapgame: cannot simulate this scene: ${e.message}\n`);
+      io.stderr(`chapgame: ${file}cannot simulate this scene: ${e.message}\n`);
       return 2;
     }
     io.stderr(`chapgame: internal error: ${e instanceof Error ? e.message : String(e)}\n`);

@@ -88,6 +88,13 @@ describe("parseScene on broken JSON", () => {
     expect(e.path).toBe("json");
     expect(e.message).toMatch(/^json: invalid JSON at line 3, column 28 \(/);
   });
+  it("says where a truncated text stops (the parser gives no position: it said only 'Unexpected end')", () => {
+    const e = refused('{"format":"chapgame",\n"version":1,\n"actions":[');
+    expect(e.path).toBe("json");
+    expect(e.message).toMatch(
+      /^json: invalid JSON at the end \(line 3, column 12\): the text stops early \(/,
+    );
+  });
 });
 
 describe("parseScene refuses, naming the path and the reason", () => {

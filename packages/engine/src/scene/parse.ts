@@ -34,11 +34,15 @@ export function checkSceneRules(
   }
 }
 
-/** " at line L, column C" from the parser's "position N" (V8 gives only the offset), or "". */
+/**
+ * " at line L, column C" from the parser's "position N" (V8 gives only the offset), " at the end
+ * (line L, column C)" for a text that stops early (a truncated file: V8 gives no position), or "".
+ */
 function where(text: string, message: string): string {
   const m = /position (\d+)/.exec(message);
-  if (m === null) return "";
-  const pos = Math.min(Number(m[1]), text.length);
+  const atEnd = m === null && /end of JSON input/i.test(message);
+  if (m === null && !atEnd) return "";
+  const pos = m === null ? text.length : Math.min(Number(m[1]), text.length);
   let line = 1;
   let start = 0;
   for (let i = 0; i < pos; i++)
@@ -46,7 +50,8 @@ function where(text: string, message: string): string {
       line++;
       start = i + 1;
     }
-  return ` at line ${line}, column ${pos - start + 1}`;
+  const lineColumn = `line ${line}, column ${pos - start + 1}`;
+  return atEnd ? ` at the end (${lineColumn}): the text stops early` : ` at ${lineColumn}`;
 }
 
 export function parseScene(input: string | unknown): SceneFile {
