@@ -213,7 +213,9 @@ describe("editor end to end", () => {
     await poll(async () => (await stat("body–body")) + (await stat("body–line"))).toBe(314);
     await poll(() => page.getByText("(no more events)").count()).toBe(1);
     await screenshot(page, "10-galperin-314");
-    await page.getByRole("checkbox", { name: "Time" }).check();
+    // (its own name: the Time slider is the only control called "Time")
+    await page.getByRole("checkbox", { name: "Limit by time" }).check();
+    expect(await page.getByRole("checkbox", { name: "Time", exact: true }).count()).toBe(0);
   });
 
   it("space plays and pauses; the event log jumps to an event", async () => {

@@ -35,6 +35,7 @@ export function CalculationPanel() {
         <label>
           <input
             type="checkbox"
+            aria-label="Limit by time"
             checked={calc.useTime}
             onChange={(e) => set({ useTime: e.target.checked })}
           />{" "}
@@ -54,6 +55,7 @@ export function CalculationPanel() {
         <label>
           <input
             type="checkbox"
+            aria-label="Limit by events"
             checked={calc.useEvents}
             onChange={(e) => set({ useEvents: e.target.checked })}
           />{" "}
