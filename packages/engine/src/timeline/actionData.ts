@@ -2,10 +2,8 @@
  * Plain-data helpers of the Timeline's action list. The actions a Timeline keeps are frozen (deep:
  * the action, its vectors, its until), so the list it hands out cannot be edited behind its back;
  * toScene hands out unfrozen copies for the caller to edit. Also: deep equality of actions, the
- * keyframe setActions restarts from (after the last unchanged action), the check of an `until`.
+ * keyframe setActions restarts from (after the last unchanged action). Argument checks: args.ts.
  */
-import { SceneError } from "../scene/errors.js";
-import { count, isObject, nonNegative, onlyKeys } from "../scene/fields.js";
 import type { Action, Until } from "../scene/types.js";
 import type { Keyframe } from "./keyframe.js";
 
@@ -37,24 +35,6 @@ export function sameValue(a: unknown, b: unknown): boolean {
 
 export function sameUntil(a: Until, b: Until): boolean {
   return a.time === b.time && a.events === b.events;
-}
-
-/** Validates an until (a prolong's argument): SceneError naming `path`'s field. */
-export function checkUntil(raw: unknown, path: string): Until {
-  if (!isObject(raw)) throw new SceneError(path, "must be an object with optional time and events");
-  onlyKeys(raw, ["time", "events"], path);
-  const u: Until = {};
-  if (raw.time !== undefined) u.time = nonNegative(raw, "time", path);
-  if (raw.events !== undefined) u.events = count(raw, "events", path);
-  return u;
-}
-
-/** `t` itself when it is a number (±Infinity allowed: before or after everything); else a RangeError
- *  naming the method and the argument. */
-export function timeArg(method: string, name: string, t: number): number {
-  if (typeof t !== "number" || Number.isNaN(t))
-    throw new RangeError(`${method}: ${name} must be a number, got ${String(t)}`);
-  return t;
 }
 
 /** The keyframe (holding a World) to recompute from when the action list `acts` becomes `sorted`:

@@ -17,9 +17,19 @@ import { SceneError } from "../scene/errors.js";
 import { nonNegative } from "../scene/fields.js";
 import { applyOrder, parseScene } from "../scene/parse.js";
 import type { Action, SceneFile, Until } from "../scene/types.js";
-import { checkUntil, copyAction, freezeAction, restartKeyframe, sameUntil, timeArg } from "./actionData.js";
+import { copyAction, freezeAction, restartKeyframe, sameUntil } from "./actionData.js";
+import {
+  checkActionList,
+  checkBudget,
+  checkUntil,
+  eventIndex,
+  indexRange,
+  stateTime,
+  timeArg,
+} from "./args.js";
 import { type Goal, TimelineCore } from "./core.js";
 import { type Keyframe, keyframeBytes } from "./keyframe.js";
+import { notifyAll } from "./listeners.js";
 import { MotionTable } from "./motionTable.js";
 import { type CheckedOptions, checkOptions, checkSceneOptions } from "./options.js";
 import { K_ACTION } from "./records.js";
@@ -92,20 +102,11 @@ export class Timeline {
 
   // ---- changes ----------------------------------------------------------------------------------
 
-  /** Every listener is called, even after one throws; the first error is rethrown after them all
-   *  (the change itself is made). */
+  /** A new revision; every listener is told (listeners.ts). */
   private changed(): void {
     this.revision++;
     this.actionsView = null;
-    let failure: { error: unknown } | null = null;
-    for (const l of [...this.listeners]) {
-      try {
-        l();
-      } catch (error) {
-        failure ??= { error };
-      }
-    }
-    if (failure) throw failure.error;
+    notifyAll(this.listeners);
   }
 
   /** Validate and apply one action (see the header). Throws SceneError; then nothing changes. When
@@ -160,7 +161,7 @@ export class Timeline {
    *  current horizon. Only the part after the first changed action is recomputed (from the last World
    *  keyframe before it). Errors name `actions[i]` by the index in `actions`. */
   setActions(actions: readonly Action[]): void {
-    const checked = actions.map((a, i) => freezeAction(checkAction(a, `actions[${i}]`)));
+    const checked = checkActionList(actions).map((a, i) => freezeAction(checkAction(a, `actions[${i}]`)));
     const order = applyOrder(checked);
     const sorted = order.map((i) => checked[i] as Action);
     const c = this.core;
@@ -209,6 +210,7 @@ export class Timeline {
   prolongTo(t: number): ProlongResult {
     nonNegative({ t }, "t", "");
     const res = this.core.drive(INF, { tLimit: t, eLimit: INF });
+    this.slice = null;
     this.changed();
     return { events: res.events, reason: res.reason ?? "events" };
   }
@@ -220,7 +222,7 @@ export class Timeline {
     budget: number,
   ): { done: boolean; events: number; horizon: number; reason?: ProlongResult["reason"] } {
     const u = checkUntil(until, "until");
-    if (!(budget >= 1)) throw new SceneError("budget", "must be >= 1");
+    checkBudget(budget);
     const goal =
       this.slice && sameUntil(this.slice.until, u)
         ? this.slice.goal
@@ -243,9 +245,8 @@ export class Timeline {
   /** The exact state at t, 0 <= t <= horizon (without history: from the last event or action on). */
   stateAt(t: number): SceneState {
     const c = this.core;
-    if (!(t >= 0 && t <= c.horizon))
-      throw new RangeError(`stateAt: t must be in [0, ${c.horizon}], got ${t}`);
-    return c.history ? stateAt(c, t, this.scratch) : headlessStateAt(c, t);
+    const at = stateTime(t, c.horizon);
+    return c.history ? stateAt(c, at, this.scratch) : headlessStateAt(c, at);
   }
 
   /** Time of the last event or action computed (where a run that ended idle ends). */
@@ -274,9 +275,16 @@ export class Timeline {
 
   /** The i-th logged event in time order. */
   event(i: number): LogEvent {
-    if (!(Number.isInteger(i) && i >= 0 && i < this.eventCount))
-      throw new RangeError(`event: index must be an integer in [0, ${this.eventCount}), got ${i}`);
+    eventIndex("event", i, this.eventCount);
     return logEvents(this.core, i, i + 1, this.scratch)[0] as LogEvent;
+  }
+
+  /** The action the i-th logged event applied (frozen, the object in `actions`), or null when that
+   *  event is a collision or a stop: what a log entry of type "action" did. */
+  eventAction(i: number): Action | null {
+    eventIndex("eventAction", i, this.eventCount);
+    const r = this.core.records;
+    return r.kind[i] === K_ACTION ? (this.core.acts[r.a[i] as number] as Action) : null;
   }
 
   /** Logged events with t0 <= time <= t1, in order. */
@@ -286,16 +294,11 @@ export class Timeline {
     return logEvents(this.core, from, r.upperBound(timeArg("eventsBetween", "t1", t1)), this.scratch);
   }
 
-  /** Logged events with index in [start, end) (end clamped to eventCount), in order: the log in
-   *  pieces, to write a long one out without holding all of it. */
+  /** Logged events with index in [start, end) (end clamped to eventCount; Infinity = to the end), in
+   *  order: the log in pieces, to write a long one out without holding all of it. */
   eventRange(start: number, end: number): LogEvent[] {
-    for (const [name, i] of [
-      ["start", start],
-      ["end", end],
-    ] as const)
-      if (!(Number.isInteger(i) && i >= 0))
-        throw new RangeError(`eventRange: ${name} must be an integer >= 0, got ${i}`);
-    return logEvents(this.core, start, Math.min(end, this.eventCount), this.scratch);
+    const [from, to] = indexRange(start, end);
+    return logEvents(this.core, from, Math.min(to, this.eventCount), this.scratch);
   }
 
   /** Collisions and stops by kind, and actions applied, over the computed history. */

@@ -1,0 +1,68 @@
+/**
+ * Checks of the Timeline methods' arguments, each naming the method and the argument:
+ * - edits (prolong's until, prolongSlice's budget, setActions' list) throw a SceneError with the
+ *   argument's name as its path, like the fields of an action;
+ * - readings (a time, an index) throw a RangeError `method: name must be …, got X`.
+ * Each returns the value to use (a time of -0 becomes 0, as in scene files).
+ */
+import { SceneError } from "../scene/errors.js";
+import { count, isObject, nonNegative, onlyKeys } from "../scene/fields.js";
+import type { Until } from "../scene/types.js";
+
+/** Validates an until (a prolong's argument): SceneError naming `path`'s field. */
+export function checkUntil(raw: unknown, path: string): Until {
+  if (!isObject(raw)) throw new SceneError(path, "must be an object with optional time and events");
+  onlyKeys(raw, ["time", "events"], path);
+  const u: Until = {};
+  if (raw.time !== undefined) u.time = nonNegative(raw, "time", path);
+  if (raw.events !== undefined) u.events = count(raw, "events", path);
+  return u;
+}
+
+/** prolongSlice's budget: a whole number >= 1, or Infinity (no budget). */
+export function checkBudget(budget: unknown): number {
+  if (
+    typeof budget !== "number" ||
+    !(budget >= 1) ||
+    !(Number.isInteger(budget) || budget === Number.POSITIVE_INFINITY)
+  )
+    throw new SceneError("budget", `must be a whole number >= 1, or Infinity, got ${String(budget)}`);
+  return budget;
+}
+
+/** setActions' argument: an array (its items are checked as actions[i] by the caller). */
+export function checkActionList(actions: unknown): readonly unknown[] {
+  if (!Array.isArray(actions)) throw new SceneError("actions", "must be an array of actions");
+  return actions;
+}
+
+/** `t` itself when it is a number (±Infinity allowed: before or after everything); else a RangeError
+ *  naming the method and the argument. */
+export function timeArg(method: string, name: string, t: number): number {
+  if (typeof t !== "number" || Number.isNaN(t))
+    throw new RangeError(`${method}: ${name} must be a number, got ${String(t)}`);
+  return t;
+}
+
+/** stateAt's time: a number in [0, horizon] (-0 read as 0); else a RangeError. */
+export function stateTime(t: unknown, horizon: number): number {
+  if (typeof t !== "number" || !(t >= 0 && t <= horizon))
+    throw new RangeError(`stateAt: t must be a number in [0, ${horizon}], got ${String(t)}`);
+  return t === 0 ? 0 : t;
+}
+
+/** eventRange's indices: whole numbers >= 0; the end may be Infinity (to the end of the log). */
+export function indexRange(start: unknown, end: unknown): [number, number] {
+  const whole = (i: unknown) => typeof i === "number" && Number.isInteger(i) && i >= 0;
+  if (!whole(start)) throw new RangeError(`eventRange: start must be an integer >= 0, got ${String(start)}`);
+  if (!(whole(end) || end === Number.POSITIVE_INFINITY))
+    throw new RangeError(`eventRange: end must be an integer >= 0 or Infinity, got ${String(end)}`);
+  return [start as number, end as number];
+}
+
+/** An index into the log: a whole number in [0, count); else a RangeError naming `method`. */
+export function eventIndex(method: string, i: unknown, count: number): number {
+  if (!(typeof i === "number" && Number.isInteger(i) && i >= 0 && i < count))
+    throw new RangeError(`${method}: index must be an integer in [0, ${count}), got ${String(i)}`);
+  return i;
+}

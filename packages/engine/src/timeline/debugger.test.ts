@@ -1,0 +1,102 @@
+/**
+ * A time-travel debugger built on the Timeline (not through the editor): reading states at any
+ * time, walking the log, telling what an action entry did, and driving the computation in slices.
+ * Found in a user review; each test says what happened before the fix.
+ */
+import { describe, expect, it } from "vitest";
+import { SceneError } from "../scene/errors.js";
+import type { Action } from "../scene/types.js";
+import { Timeline } from "./timeline.js";
+
+/** The README's example: a light disc between a wall and a heavy one, 31 collisions up to t = 20. */
+function cradle(): Timeline {
+  const tl = new Timeline({ g: 0 });
+  tl.apply({ time: 0, type: "addLine", id: "wall", p1: [0, -10], p2: [0, 10], kind: "line" });
+  tl.apply({ time: 0, type: "addBody", id: "a", x: 5, y: 0, r: 1, m: 1 });
+  tl.apply({ time: 0, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 100, v: [-1, 0] });
+  tl.prolong({ time: 20 });
+  return tl;
+}
+
+describe("Timeline as a debugger's back end", () => {
+  it("stateAt refuses a time that is not a number (null gave the state at 0, '3' a state whose time was a string)", () => {
+    const tl = cradle();
+    for (const t of [null, "3", undefined, Number.NaN, [1]])
+      expect(() => tl.stateAt(t as unknown as number)).toThrow(
+        `stateAt: t must be a number in [0, 20], got ${String(t)}`,
+      );
+    expect(() => tl.stateAt(20.000001)).toThrow(RangeError);
+    expect(() => tl.stateAt(-1)).toThrow(RangeError);
+    expect(Object.is(tl.stateAt(-0).time, 0)).toBe(true);
+    expect(tl.stateAt(-0)).toEqual(tl.stateAt(0));
+  });
+
+  it("setActions refuses a list that is not an array, naming actions (null threw a raw TypeError)", () => {
+    const tl = cradle();
+    const before = tl.getSnapshot();
+    for (const bad of [null, undefined, new Set(tl.actions), { 0: tl.actions[0], length: 1 }]) {
+      const call = () => tl.setActions(bad as unknown as Action[]);
+      expect(call).toThrow(SceneError);
+      expect(call).toThrow("actions: must be an array of actions");
+    }
+    expect(tl.getSnapshot()).toBe(before);
+  });
+
+  it("prolongSlice refuses a budget that is not a whole number >= 1 by name (1.5 was named the World's maxEvents)", () => {
+    const tl = cradle();
+    for (const budget of [1.5, 0, -1, Number.NaN, "5"]) {
+      const call = () => tl.prolongSlice({ time: 1 }, budget as number);
+      expect(call).toThrow(SceneError);
+      expect(call).toThrow(`budget: must be a whole number >= 1, or Infinity, got ${String(budget)}`);
+    }
+    expect(tl.horizon).toBe(20);
+    expect(tl.prolongSlice({ time: 1 }, Number.POSITIVE_INFINITY)).toMatchObject({ done: true, horizon: 21 });
+  });
+
+  it("prolongSlice after a prolongTo aims at a new target (it reported done at once, the old target passed)", () => {
+    // a disc bouncing between two walls for ever: an event every 8 s
+    const tl = new Timeline({ g: 0 });
+    tl.apply({ time: 0, type: "addLine", id: "L", p1: [0, -10], p2: [0, 10], kind: "line" });
+    tl.apply({ time: 0, type: "addLine", id: "R", p1: [10, -10], p2: [10, 10], kind: "line" });
+    tl.apply({ time: 0, type: "addBody", id: "a", x: 5, y: 0, r: 1, m: 1, v: [1, 0] });
+    const first = tl.prolongSlice({ time: 100 }, 1);
+    expect(first.done).toBe(false);
+    tl.prolongTo(500);
+    const res = tl.prolongSlice({ time: 100 }, Number.POSITIVE_INFINITY);
+    expect(res).toMatchObject({ done: true, horizon: 600, reason: "time" });
+  });
+
+  it("eventRange takes Infinity as the end, meaning to the end of the log (the end is clamped anyway)", () => {
+    const tl = cradle();
+    expect(tl.eventRange(30, Number.POSITIVE_INFINITY)).toEqual(tl.eventRange(30, tl.eventCount));
+    expect(tl.eventRange(0, Number.POSITIVE_INFINITY)).toHaveLength(tl.eventCount);
+    expect(() => tl.eventRange(Number.POSITIVE_INFINITY, 3)).toThrow(
+      "eventRange: start must be an integer >= 0, got Infinity",
+    );
+    expect(() => tl.eventRange(0, Number.NEGATIVE_INFINITY)).toThrow(
+      "eventRange: end must be an integer >= 0 or Infinity, got -Infinity",
+    );
+  });
+
+  it("eventAction(i) tells what a log entry of type 'action' did (the log gave only the id)", () => {
+    const tl = cradle();
+    tl.apply({ time: 3, type: "giveVelocity", id: "a", v: [0, 1] });
+    tl.apply({ time: 4, type: "setGlobal", g: 2 });
+    const found: Action[] = [];
+    for (let i = 0; i < tl.eventCount; i++) {
+      const action = tl.eventAction(i);
+      expect(action !== null).toBe(tl.event(i).type === "action");
+      if (action) {
+        expect(action.time).toBe(tl.event(i).time);
+        found.push(action);
+      }
+    }
+    expect(found).toEqual(tl.actions);
+    expect(found[3]).toBe(tl.actions[3]);
+    expect(Object.isFrozen(found[3])).toBe(true);
+    expect(() => tl.eventAction(tl.eventCount)).toThrow(
+      `eventAction: index must be an integer in [0, ${tl.eventCount}), got ${tl.eventCount}`,
+    );
+    expect(() => tl.eventAction(0.5)).toThrow(RangeError);
+  });
+});
