@@ -6,6 +6,7 @@
 import { describe, expect, it } from "vitest";
 import { SceneError } from "../scene/errors.js";
 import type { Action } from "../scene/types.js";
+import { SimulationError } from "../sim/errors.js";
 import { Timeline } from "./timeline.js";
 
 /** The README's example: a light disc between a wall and a heavy one, 31 collisions up to t = 20. */
@@ -98,5 +99,48 @@ describe("Timeline as a debugger's back end", () => {
       `eventAction: index must be an integer in [0, ${tl.eventCount}), got ${tl.eventCount}`,
     );
     expect(() => tl.eventAction(0.5)).toThrow(RangeError);
+  });
+
+  it("a prolong that ends in a Zeno state tells the listeners (the horizon moved, the revision did not)", () => {
+    // a frictionless disc pushing a braking one: collisions and stops converge to t ≈ 52.249
+    const zeno = (): Timeline => {
+      const tl = new Timeline({ g: 0.5 });
+      tl.apply({
+        time: 0,
+        type: "addBody",
+        id: "b0",
+        x: 3,
+        y: 3,
+        r: 0.3,
+        m: 0.7401641156608975,
+        v: [0.1, 0],
+      });
+      tl.apply({ time: 0, type: "addBody", id: "b1", x: 7, y: 3, r: 0.3, m: 0.5, mu: 0.05 });
+      return tl;
+    };
+    for (const run of [
+      (tl: Timeline) => tl.prolong({ time: 60 }),
+      (tl: Timeline) => tl.prolongTo(60),
+      (tl: Timeline) => tl.prolongSlice({ time: 60 }, Number.POSITIVE_INFINITY),
+    ]) {
+      const tl = zeno();
+      const seen: number[] = [];
+      tl.subscribe(() => seen.push(tl.horizon));
+      const revision = tl.getSnapshot();
+      expect(() => run(tl)).toThrow(SimulationError);
+      expect(tl.horizon).toBeGreaterThan(52);
+      expect(tl.getSnapshot()).not.toBe(revision);
+      expect(seen).toEqual([tl.horizon]);
+    }
+  });
+
+  it("a listener that throws after a Zeno stop does not hide the SimulationError", () => {
+    const tl = new Timeline({ g: 0.5 });
+    tl.apply({ time: 0, type: "addBody", id: "b0", x: 3, y: 3, r: 0.3, m: 0.7401641156608975, v: [0.1, 0] });
+    tl.apply({ time: 0, type: "addBody", id: "b1", x: 7, y: 3, r: 0.3, m: 0.5, mu: 0.05 });
+    tl.subscribe(() => {
+      throw new Error("listener");
+    });
+    expect(() => tl.prolong({ time: 60 })).toThrow(SimulationError);
   });
 });

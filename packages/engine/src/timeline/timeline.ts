@@ -200,18 +200,14 @@ export class Timeline {
    *  stops, whichever first; neither = until nothing is left to happen. */
   prolong(until: Until): ProlongResult {
     const u = checkUntil(until, "until");
-    const res = this.core.drive(INF, this.core.goalFrom(u, this.core.horizon));
-    this.slice = null;
-    this.changed();
+    const res = this.compute(INF, this.core.goalFrom(u, this.core.horizon));
     return { events: res.events, reason: res.reason ?? "events" };
   }
 
   /** Compute up to time t (if not computed yet). */
   prolongTo(t: number): ProlongResult {
     nonNegative({ t }, "t", "");
-    const res = this.core.drive(INF, { tLimit: t, eLimit: INF });
-    this.slice = null;
-    this.changed();
+    const res = this.compute(INF, { tLimit: t, eLimit: INF });
     return { events: res.events, reason: res.reason ?? "events" };
   }
 
@@ -227,10 +223,9 @@ export class Timeline {
       this.slice && sameUntil(this.slice.until, u)
         ? this.slice.goal
         : this.core.goalFrom(u, this.core.horizon);
-    const res = this.core.drive(budget, goal);
+    const res = this.compute(budget, goal);
     const done = res.reason !== null;
-    this.slice = done ? null : { until: u, goal };
-    this.changed();
+    if (!done) this.slice = { until: u, goal };
     const out: { done: boolean; events: number; horizon: number; reason?: ProlongResult["reason"] } = {
       done,
       events: res.events,
@@ -238,6 +233,26 @@ export class Timeline {
     };
     if (res.reason !== null) out.reason = res.reason;
     return out;
+  }
+
+  /** Compute (core.drive) and tell the listeners; a pending prolongSlice target is dropped. When the
+   *  World throws (a Zeno state), what was computed up to it stays (the horizon moved): the listeners
+   *  are told, then the World's error is rethrown (it wins over a listener's). */
+  private compute(budget: number, goal: Goal): ReturnType<TimelineCore["drive"]> {
+    this.slice = null;
+    let res: ReturnType<TimelineCore["drive"]>;
+    try {
+      res = this.core.drive(budget, goal);
+    } catch (error) {
+      try {
+        this.changed();
+      } finally {
+        // biome-ignore lint/correctness/noUnsafeFinally: the World's error is the one to report
+        throw error;
+      }
+    }
+    this.changed();
+    return res;
   }
 
   // ---- reading ----------------------------------------------------------------------------------
