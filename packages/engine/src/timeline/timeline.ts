@@ -7,8 +7,7 @@
  *   the horizon it restores the last World keyframe before its time, replays to it, applies it and
  *   recomputes up to the old horizon: the result is identical to building from scratch (the World
  *   is deterministic and splitting a computation changes nothing). On any error nothing changes.
- * - stateAt(t) costs one keyframe load (O(bodies)) + at most KEYFRAME_RECORDS_PER_BODY records per
- *   body + one closed-form evaluation per body.
+ * - Reading (stateAt, the log, counts): reader.ts, which this class extends.
  * - Storage: see records.ts (49 bytes per event) and keyframe.ts.
  * - history: false keeps no log and no keyframes (headless runs); then only the horizon can be read.
  */
@@ -18,42 +17,31 @@ import { nonNegative } from "../scene/fields.js";
 import { applyOrder, parseScene } from "../scene/parse.js";
 import type { Action, SceneFile, Until } from "../scene/types.js";
 import { copyAction, freezeAction, restartKeyframe, sameUntil } from "./actionData.js";
-import {
-  checkActionList,
-  checkBudget,
-  checkUntil,
-  eventIndex,
-  indexRange,
-  stateTime,
-  timeArg,
-} from "./args.js";
+import { checkActionList, checkBudget, checkUntil } from "./args.js";
 import { type Goal, TimelineCore } from "./core.js";
-import { type Keyframe, keyframeBytes } from "./keyframe.js";
+import type { Keyframe } from "./keyframe.js";
 import { notifyAll } from "./listeners.js";
-import { MotionTable } from "./motionTable.js";
 import { type CheckedOptions, checkOptions, checkSceneOptions } from "./options.js";
+import { TimelineReader } from "./reader.js";
 import { K_ACTION } from "./records.js";
-import { headlessStateAt, logEvents, stateAt } from "./replay.js";
-import type { LogEvent, ProlongResult, SceneState, TimelineCounts, TimelineOptions } from "./types.js";
+import type { ProlongResult, TimelineOptions } from "./types.js";
 import { saveCore } from "./undo.js";
 
 const INF = Number.POSITIVE_INFINITY;
 
-export class Timeline {
-  private core: TimelineCore;
+export class Timeline extends TimelineReader {
   private readonly options: CheckedOptions;
   private revision = 0;
   private readonly listeners = new Set<() => void>();
-  private readonly scratch = new MotionTable();
   private slice: { until: Until; goal: Goal } | null = null;
   private actionsView: readonly Action[] | null = null;
   /** the scene's meta (JSON text, so each toScene gets its own copy), kept for toScene */
   private metaJson: string | null = null;
 
   constructor(options: TimelineOptions = {}) {
-    this.options = checkOptions(options);
-    const o = this.options;
-    this.core = new TimelineCore(o.g, o.gravity, o.history, o.compute);
+    const o = checkOptions(options);
+    super(new TimelineCore(o.g, o.gravity, o.history, o.compute));
+    this.options = o;
   }
 
   /** A timeline of a scene (validated: SceneError naming the field). Options as the constructor's,
@@ -90,14 +78,6 @@ export class Timeline {
   get actions(): readonly Action[] {
     if (this.actionsView === null) this.actionsView = Object.freeze([...this.core.acts]);
     return this.actionsView;
-  }
-
-  get horizon(): number {
-    return this.core.horizon;
-  }
-
-  get history(): boolean {
-    return this.core.history;
   }
 
   // ---- changes ----------------------------------------------------------------------------------
@@ -253,82 +233,6 @@ export class Timeline {
     }
     this.changed();
     return res;
-  }
-
-  // ---- reading ----------------------------------------------------------------------------------
-
-  /** The exact state at t, 0 <= t <= horizon (without history: from the last event or action on). */
-  stateAt(t: number): SceneState {
-    const c = this.core;
-    const at = stateTime(t, c.horizon);
-    return c.history ? stateAt(c, at, this.scratch) : headlessStateAt(c, at);
-  }
-
-  /** Time of the last event or action computed (where a run that ended idle ends). */
-  lastLoggedTime(): number {
-    return this.core.lastLogged;
-  }
-
-  /** Time of the first logged event strictly after t, or null. */
-  nextEventTime(t: number): number | null {
-    const r = this.core.records;
-    const i = r.upperBound(timeArg("nextEventTime", "t", t));
-    return i < r.length ? (r.time[i] as number) : null;
-  }
-
-  /** Time of the last logged event strictly before t, or null. */
-  prevEventTime(t: number): number | null {
-    const r = this.core.records;
-    const i = r.lowerBound(timeArg("prevEventTime", "t", t)) - 1;
-    return i >= 0 ? (r.time[i] as number) : null;
-  }
-
-  /** Number of logged events (collisions, stops and actions); 0 without history. */
-  get eventCount(): number {
-    return this.core.records.length;
-  }
-
-  /** The i-th logged event in time order. */
-  event(i: number): LogEvent {
-    eventIndex("event", i, this.eventCount);
-    return logEvents(this.core, i, i + 1, this.scratch)[0] as LogEvent;
-  }
-
-  /** The action the i-th logged event applied (frozen, the object in `actions`), or null when that
-   *  event is a collision or a stop: what a log entry of type "action" did. */
-  eventAction(i: number): Action | null {
-    eventIndex("eventAction", i, this.eventCount);
-    const r = this.core.records;
-    return r.kind[i] === K_ACTION ? (this.core.acts[r.a[i] as number] as Action) : null;
-  }
-
-  /** Logged events with t0 <= time <= t1, in order. */
-  eventsBetween(t0: number, t1: number): LogEvent[] {
-    const r = this.core.records;
-    const from = r.lowerBound(timeArg("eventsBetween", "t0", t0));
-    return logEvents(this.core, from, r.upperBound(timeArg("eventsBetween", "t1", t1)), this.scratch);
-  }
-
-  /** Logged events with index in [start, end) (end clamped to eventCount; Infinity = to the end), in
-   *  order: the log in pieces, to write a long one out without holding all of it. */
-  eventRange(start: number, end: number): LogEvent[] {
-    const [from, to] = indexRange(start, end);
-    return logEvents(this.core, from, Math.min(to, this.eventCount), this.scratch);
-  }
-
-  /** Collisions and stops by kind, and actions applied, over the computed history. */
-  counts(): TimelineCounts {
-    return { ...this.core.counts };
-  }
-
-  /** Bytes of stored history: records and keyframes. */
-  historyBytes(): number {
-    const c = this.core;
-    let bytes = c.records.bytes();
-    c.keyframes.forEach((kf, k) => {
-      bytes += keyframeBytes(kf, c.keyframes[k - 1]);
-    });
-    return bytes;
   }
 
   // ---- observing --------------------------------------------------------------------------------

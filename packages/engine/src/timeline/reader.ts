@@ -1,0 +1,109 @@
+/**
+ * TimelineReader: the reading half of a Timeline (docs/architecture.md), over its TimelineCore:
+ * exact states (stateAt: the last keyframe at or before t, at most max(KEYFRAME_MIN_RECORDS,
+ * KEYFRAME_RECORDS_PER_BODY × bodies) records replayed, one closed-form evaluation per body, so its
+ * cost does not grow with the length of the history), the event log by time or by index, counts
+ * and storage. Timeline extends it with the changes (apply, setActions, prolong) and observers.
+ */
+import type { Action } from "../scene/types.js";
+import { eventIndex, indexRange, stateTime, timeArg } from "./args.js";
+import type { TimelineCore } from "./core.js";
+import { keyframeBytes } from "./keyframe.js";
+import { MotionTable } from "./motionTable.js";
+import { K_ACTION } from "./records.js";
+import { headlessStateAt, logEvents, stateAt } from "./replay.js";
+import type { LogEvent, SceneState, TimelineCounts } from "./types.js";
+
+export class TimelineReader {
+  /** @internal */
+  protected core: TimelineCore;
+  /** @internal */
+  protected readonly scratch = new MotionTable();
+
+  /** @internal */
+  protected constructor(core: TimelineCore) {
+    this.core = core;
+  }
+
+  get horizon(): number {
+    return this.core.horizon;
+  }
+
+  get history(): boolean {
+    return this.core.history;
+  }
+
+  /** The exact state at t, 0 <= t <= horizon (without history: from the last event or action on). */
+  stateAt(t: number): SceneState {
+    const c = this.core;
+    const at = stateTime(t, c.horizon);
+    return c.history ? stateAt(c, at, this.scratch) : headlessStateAt(c, at);
+  }
+
+  /** Time of the last event or action computed (where a run that ended idle ends). */
+  lastLoggedTime(): number {
+    return this.core.lastLogged;
+  }
+
+  /** Time of the first logged event strictly after t, or null. */
+  nextEventTime(t: number): number | null {
+    const r = this.core.records;
+    const i = r.upperBound(timeArg("nextEventTime", "t", t));
+    return i < r.length ? (r.time[i] as number) : null;
+  }
+
+  /** Time of the last logged event strictly before t, or null. */
+  prevEventTime(t: number): number | null {
+    const r = this.core.records;
+    const i = r.lowerBound(timeArg("prevEventTime", "t", t)) - 1;
+    return i >= 0 ? (r.time[i] as number) : null;
+  }
+
+  /** Number of logged events (collisions, stops and actions); 0 without history. */
+  get eventCount(): number {
+    return this.core.records.length;
+  }
+
+  /** The i-th logged event in time order. */
+  event(i: number): LogEvent {
+    eventIndex("event", i, this.eventCount);
+    return logEvents(this.core, i, i + 1, this.scratch)[0] as LogEvent;
+  }
+
+  /** The action the i-th logged event applied (frozen, the object in `actions`), or null when that
+   *  event is a collision or a stop: what a log entry of type "action" did. */
+  eventAction(i: number): Action | null {
+    eventIndex("eventAction", i, this.eventCount);
+    const r = this.core.records;
+    return r.kind[i] === K_ACTION ? (this.core.acts[r.a[i] as number] as Action) : null;
+  }
+
+  /** Logged events with t0 <= time <= t1, in order. */
+  eventsBetween(t0: number, t1: number): LogEvent[] {
+    const r = this.core.records;
+    const from = r.lowerBound(timeArg("eventsBetween", "t0", t0));
+    return logEvents(this.core, from, r.upperBound(timeArg("eventsBetween", "t1", t1)), this.scratch);
+  }
+
+  /** Logged events with index in [start, end) (end clamped to eventCount; Infinity = to the end), in
+   *  order: the log in pieces, to write a long one out without holding all of it. */
+  eventRange(start: number, end: number): LogEvent[] {
+    const [from, to] = indexRange(start, end);
+    return logEvents(this.core, from, Math.min(to, this.eventCount), this.scratch);
+  }
+
+  /** Collisions and stops by kind, and actions applied, over the computed history. */
+  counts(): TimelineCounts {
+    return { ...this.core.counts };
+  }
+
+  /** Bytes of stored history: records and keyframes. */
+  historyBytes(): number {
+    const c = this.core;
+    let bytes = c.records.bytes();
+    c.keyframes.forEach((kf, k) => {
+      bytes += keyframeBytes(kf, c.keyframes[k - 1]);
+    });
+    return bytes;
+  }
+}
