@@ -9,6 +9,11 @@ import { SceneError } from "../scene/errors.js";
 import { count, isObject, nonNegative, onlyKeys } from "../scene/fields.js";
 import type { Until } from "../scene/types.js";
 
+/** A value as an error message shows it: a string quoted (so "3" is not read as the number 3). */
+export function show(v: unknown): string {
+  return typeof v === "string" ? JSON.stringify(v) : String(v);
+}
+
 /** Validates an until (a prolong's argument): SceneError naming `path`'s field. */
 export function checkUntil(raw: unknown, path: string): Until {
   if (!isObject(raw)) throw new SceneError(path, "must be an object with optional time and events");
@@ -26,7 +31,7 @@ export function checkBudget(budget: unknown): number {
     !(budget >= 1) ||
     !(Number.isInteger(budget) || budget === Number.POSITIVE_INFINITY)
   )
-    throw new SceneError("budget", `must be a whole number >= 1, or Infinity, got ${String(budget)}`);
+    throw new SceneError("budget", `must be a whole number >= 1, or Infinity, got ${show(budget)}`);
   return budget;
 }
 
@@ -40,29 +45,29 @@ export function checkActionList(actions: unknown): readonly unknown[] {
  *  naming the method and the argument. */
 export function timeArg(method: string, name: string, t: number): number {
   if (typeof t !== "number" || Number.isNaN(t))
-    throw new RangeError(`${method}: ${name} must be a number, got ${String(t)}`);
+    throw new RangeError(`${method}: ${name} must be a number, got ${show(t)}`);
   return t;
 }
 
 /** stateAt's time: a number in [0, horizon] (-0 read as 0); else a RangeError. */
 export function stateTime(t: unknown, horizon: number): number {
   if (typeof t !== "number" || !(t >= 0 && t <= horizon))
-    throw new RangeError(`stateAt: t must be a number in [0, ${horizon}], got ${String(t)}`);
+    throw new RangeError(`stateAt: t must be a number in [0, ${horizon}], got ${show(t)}`);
   return t === 0 ? 0 : t;
 }
 
 /** eventRange's indices: whole numbers >= 0; the end may be Infinity (to the end of the log). */
 export function indexRange(start: unknown, end: unknown): [number, number] {
   const whole = (i: unknown) => typeof i === "number" && Number.isInteger(i) && i >= 0;
-  if (!whole(start)) throw new RangeError(`eventRange: start must be an integer >= 0, got ${String(start)}`);
+  if (!whole(start)) throw new RangeError(`eventRange: start must be an integer >= 0, got ${show(start)}`);
   if (!(whole(end) || end === Number.POSITIVE_INFINITY))
-    throw new RangeError(`eventRange: end must be an integer >= 0 or Infinity, got ${String(end)}`);
+    throw new RangeError(`eventRange: end must be an integer >= 0 or Infinity, got ${show(end)}`);
   return [start as number, end as number];
 }
 
 /** An index into the log: a whole number in [0, count); else a RangeError naming `method`. */
 export function eventIndex(method: string, i: unknown, count: number): number {
   if (!(typeof i === "number" && Number.isInteger(i) && i >= 0 && i < count))
-    throw new RangeError(`${method}: index must be an integer in [0, ${count}), got ${String(i)}`);
+    throw new RangeError(`${method}: index must be an integer in [0, ${count}), got ${show(i)}`);
   return i;
 }

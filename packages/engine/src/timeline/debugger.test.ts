@@ -24,7 +24,7 @@ describe("Timeline as a debugger's back end", () => {
     const tl = cradle();
     for (const t of [null, "3", undefined, Number.NaN, [1]])
       expect(() => tl.stateAt(t as unknown as number)).toThrow(
-        `stateAt: t must be a number in [0, 20], got ${String(t)}`,
+        `stateAt: t must be a number in [0, 20], got ${typeof t === "string" ? `"${t}"` : String(t)}`,
       );
     expect(() => tl.stateAt(20.000001)).toThrow(RangeError);
     expect(() => tl.stateAt(-1)).toThrow(RangeError);
@@ -48,7 +48,9 @@ describe("Timeline as a debugger's back end", () => {
     for (const budget of [1.5, 0, -1, Number.NaN, "5"]) {
       const call = () => tl.prolongSlice({ time: 1 }, budget as number);
       expect(call).toThrow(SceneError);
-      expect(call).toThrow(`budget: must be a whole number >= 1, or Infinity, got ${String(budget)}`);
+      expect(call).toThrow(
+        `budget: must be a whole number >= 1, or Infinity, got ${typeof budget === "string" ? `"${budget}"` : budget}`,
+      );
     }
     expect(tl.horizon).toBe(20);
     expect(tl.prolongSlice({ time: 1 }, Number.POSITIVE_INFINITY)).toMatchObject({ done: true, horizon: 21 });
