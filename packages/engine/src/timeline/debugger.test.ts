@@ -83,8 +83,8 @@ describe("Timeline as a debugger's back end", () => {
 
   it("eventAction(i) tells what a log entry of type 'action' did (the log gave only the id)", () => {
     const tl = cradle();
-    tl.apply({ time: 3, type: "giveVelocity", id: "a", v: [0, 1] });
     tl.apply({ time: 4, type: "setGlobal", g: 2 });
+    tl.apply({ time: 3, type: "giveVelocity", id: "a", v: [0, 1] }); // before it: the indices shift
     const found: Action[] = [];
     for (let i = 0; i < tl.eventCount; i++) {
       const action = tl.eventAction(i);
@@ -96,6 +96,11 @@ describe("Timeline as a debugger's back end", () => {
     }
     expect(found).toEqual(tl.actions);
     expect(found[3]).toBe(tl.actions[3]);
+    expect(found.map((x) => x.type)).toEqual(["addLine", "addBody", "addBody", "giveVelocity", "setGlobal"]);
+    tl.setActions(tl.actions.filter((x) => x.type !== "giveVelocity")); // undo, from a keyframe
+    expect(tl.eventRange(0, Number.POSITIVE_INFINITY).flatMap((_e, i) => tl.eventAction(i) ?? [])).toEqual(
+      tl.actions,
+    );
     expect(Object.isFrozen(found[3])).toBe(true);
     expect(() => tl.eventAction(tl.eventCount)).toThrow(
       `eventAction: index must be an integer in [0, ${tl.eventCount}), got ${tl.eventCount}`,
