@@ -82,6 +82,9 @@ export class TimelineCore {
   lastLogged = 0;
   /** how to name action k in error messages */
   pathOf: (k: number) => string = (k) => `actions[${k}]`;
+  /** Counts the changes to records or keyframes other than appends (a cut, a restore, a replaced
+   *  keyframe): a reader that keeps a replay position (logCursor.ts) starts again when it moves. */
+  rewrites = 0;
   /** live body numbers sorted by id (cache; null after an add or remove) */
   sortedLive: Uint32Array | null = null;
   private readonly onEvent: (e: WorldEvent) => void;
@@ -206,8 +209,10 @@ export class TimelineCore {
     // Actions applied one call at a time at the same instant (an editor or a script adding bodies)
     // would stack one keyframe each: the previous one is redundant when nothing happened since.
     const last = this.keyframes[this.keyframes.length - 1] as Keyframe;
-    if (this.keyframes.length > 1 && last.afterActions && last.time === t && last.record === groupStart)
+    if (this.keyframes.length > 1 && last.afterActions && last.time === t && last.record === groupStart) {
       this.keyframes.pop();
+      this.rewrites++;
+    }
     this.keyframe(true);
   }
 
@@ -318,6 +323,7 @@ export class TimelineCore {
   restoreKeyframe(k: number): void {
     const kf = this.keyframes[k] as Keyframe;
     this.keyframes.length = k + 1;
+    this.rewrites++;
     this.world = worldAt(kf, this.bodyIds);
     this.records.length = kf.record;
     this.applied = kf.actionCount;

@@ -9,9 +9,10 @@ import type { Action } from "../scene/types.js";
 import { eventIndex, indexRange, stateTime, timeArg } from "./args.js";
 import type { TimelineCore } from "./core.js";
 import { keyframeBytes } from "./keyframe.js";
+import { LogCursor } from "./logCursor.js";
 import { MotionTable } from "./motionTable.js";
 import { K_ACTION } from "./records.js";
-import { headlessStateAt, logEvents, stateAt } from "./replay.js";
+import { headlessStateAt, stateAt } from "./replay.js";
 import type { LogEvent, SceneState, TimelineCounts } from "./types.js";
 
 export class TimelineReader {
@@ -19,6 +20,8 @@ export class TimelineReader {
   protected core: TimelineCore;
   /** @internal */
   protected readonly scratch = new MotionTable();
+  /** Where the last log read stopped: reading the log in order replays each record once. */
+  private readonly cursor = new LogCursor();
 
   /** @internal */
   protected constructor(core: TimelineCore) {
@@ -67,7 +70,7 @@ export class TimelineReader {
   /** The i-th logged event in time order. */
   event(i: number): LogEvent {
     eventIndex("event", i, this.eventCount);
-    return logEvents(this.core, i, i + 1, this.scratch)[0] as LogEvent;
+    return this.cursor.read(this.core, i, i + 1)[0] as LogEvent;
   }
 
   /** The action the i-th logged event applied (frozen, the object in `actions`), or null when that
@@ -82,14 +85,14 @@ export class TimelineReader {
   eventsBetween(t0: number, t1: number): LogEvent[] {
     const r = this.core.records;
     const from = r.lowerBound(timeArg("eventsBetween", "t0", t0));
-    return logEvents(this.core, from, r.upperBound(timeArg("eventsBetween", "t1", t1)), this.scratch);
+    return this.cursor.read(this.core, from, r.upperBound(timeArg("eventsBetween", "t1", t1)));
   }
 
   /** Logged events with index in [start, end) (end clamped to eventCount; Infinity = to the end), in
    *  order: the log in pieces, to write a long one out without holding all of it. */
   eventRange(start: number, end: number): LogEvent[] {
     const [from, to] = indexRange(start, end);
-    return logEvents(this.core, from, Math.min(to, this.eventCount), this.scratch);
+    return this.cursor.read(this.core, from, Math.min(to, this.eventCount));
   }
 
   /** Collisions and stops by kind, and actions applied, over the computed history. */

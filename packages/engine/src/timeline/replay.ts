@@ -2,7 +2,7 @@
  * Reading the history: the state at any time (last keyframe at or before t + the records up to t +
  * closed-form evaluation) and the event log (each record expanded into a LogEvent; the contact point,
  * normal and impulse are recomputed from the motions just before the event with the World's own
- * formulas, so they match what the World reported). Without history (headlessStateAt) only the
+ * formulas, so they match what the World reported; the walk over the records is logCursor.ts). Without history (headlessStateAt) only the
  * span since the last event or action can be read, from the World itself.
  */
 
@@ -10,7 +10,7 @@ import { discDiscResponse, impulseMagnitude, reflectResponse } from "../physics/
 import type { Action } from "../scene/types.js";
 import { lineParameter, makeLine, parameterOnLine } from "../sim/obstacles.js";
 import type { TimelineCore } from "./core.js";
-import { type Keyframe, keyframeAtOrBefore, keyframeAtRecord, loadMotions } from "./keyframe.js";
+import { type Keyframe, keyframeAtOrBefore, loadMotions } from "./keyframe.js";
 import type { MotionTable } from "./motionTable.js";
 import { K_ACTION, K_BODY_BODY, K_BODY_LINE, K_BODY_POINT, KIND_NAMES, type Records } from "./records.js";
 import type { LogEvent, SceneState } from "./types.js";
@@ -65,7 +65,7 @@ export function headlessStateAt(core: TimelineCore, t: number): SceneState {
 }
 
 /** Log event of record i, given the motions just before it in `table`. */
-function describe(core: TimelineCore, i: number, table: MotionTable, kf: Keyframe): LogEvent {
+export function describe(core: TimelineCore, i: number, table: MotionTable, kf: Keyframe): LogEvent {
   const rec = core.records;
   const t = rec.time[i] as number;
   const kind = rec.kind[i] as number;
@@ -169,25 +169,4 @@ function describe(core: TimelineCore, i: number, table: MotionTable, kf: Keyfram
     normal: [nx / nn, ny / nn],
     impulse: m === INF ? (approach > 0 ? INF : 0) : 2 * m * approach,
   };
-}
-
-/** Log events of records [from, to), replaying from the keyframe before `from`. */
-export function logEvents(core: TimelineCore, from: number, to: number, scratch: MotionTable): LogEvent[] {
-  const out: LogEvent[] = [];
-  if (from >= to) return out;
-  const kfs = core.keyframes;
-  let k = Math.max(0, keyframeAtRecord(kfs, from));
-  let kf = kfs[k] as Keyframe;
-  loadMotions(kf, scratch);
-  const rec = core.records;
-  for (let i = kf.record; i < to; i++) {
-    while (k + 1 < kfs.length && (kfs[k + 1] as Keyframe).record === i) {
-      k++;
-      kf = kfs[k] as Keyframe;
-      loadMotions(kf, scratch);
-    }
-    if (i >= from) out.push(describe(core, i, scratch, kf));
-    if (rec.kind[i] !== K_ACTION) applyRecord(rec, i, scratch, kf);
-  }
-  return out;
 }

@@ -47,6 +47,7 @@ export function saveCore(c: TimelineCore, cutRecord: number): () => void {
     c.pointNums = saved.pointNums;
     c.records.restoreTail(cutRecord, saved.tail);
     c.keyframes = saved.keyframes;
+    c.rewrites++;
     c.counts = saved.counts;
     c.eventTotal = saved.eventTotal;
     c.goals = saved.goals;
