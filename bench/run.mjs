@@ -31,6 +31,7 @@ const { runPeers } = await import("./peers/run.mjs");
 const { runEngine } = await import("./engine/run.mjs");
 const { runStress } = await import("./stress/run.mjs");
 const { generate } = await import("./report/generate.mjs");
+const { probeSpeed, summarizeProbes } = await import("./lib/speedProbe.mjs");
 
 const ROOT = join(dirname(fileURLToPath(import.meta.url)), "..");
 const args = process.argv.slice(2);
@@ -48,8 +49,17 @@ log(
   `chapgame bench (${quick ? "quick" : "full"}) on ${results.machine.cpu}, ${results.machine.cores} cores, Node ${results.machine.node}`,
 );
 
+// The machine's speed before each section and at the end (bench/lib/speedProbe.mjs).
+const probes = [];
+const probe = (at) => {
+  const p = probeSpeed(at);
+  probes.push(p);
+  log(`   speed probe ${at}: walk ${p.walkNs.toFixed(2)} ns, fp ${p.fpNs.toFixed(2)} ns per step`);
+};
+
 const section = async (name, fn) => {
   if (!want(name)) return;
+  probe(`before ${name}`);
   log(`== ${name}`);
   const a = nowNs();
   try {
@@ -82,6 +92,8 @@ await section("solver", runSolver);
 await section("peers", runPeers);
 await section("engine", runEngine);
 await section("stress", runStress);
+probe("at the end");
+results.speedProbe = summarizeProbes(probes);
 
 results.seconds = (nowNs() - t0) / 1e9;
 const file = join(ROOT, "bench", "results", quick ? "tmp/quick.json" : "latest.json");

@@ -1,0 +1,41 @@
+/**
+ * The report's paragraph on the machine's speed during the run (bench/lib/speedProbe.mjs): each
+ * probe, the spread, and a plain warning when the speed changed by more than the threshold. Runs
+ * from before the probe existed have no `speedProbe`, and get no paragraph.
+ */
+import { table } from "./format.mjs";
+
+const pct = (x) => `${(100 * x).toFixed(0)} %`;
+
+/** Markdown lines for docs/benchmarks.md, or [] without probes. */
+export function speedProbeBlock(results) {
+  const sp = results.speedProbe;
+  if (!sp?.probes?.length) return [];
+  const out = [];
+  out.push("### Machine speed during the run\n");
+  out.push(
+    `A fixed workload timed in a fresh process before each section and at the end (${sp.workload}). The machine is a shared VM whose speed drifts; the guest sees no steal time, so this is how a run shows it.\n`,
+  );
+  out.push(
+    table(
+      ["when", "walk, ns per step", "fp, ns per step"],
+      sp.probes.map((p) => [p.at, p.walkNs.toFixed(2), p.fpNs.toFixed(2)]),
+    ),
+  );
+  out.push("");
+  out.push(
+    sp.steady
+      ? `Spread (slowest / fastest − 1): walk ${pct(sp.walk.spread)}, fp ${pct(sp.fp.spread)}: within ${pct(sp.warnAbove)}, the machine's speed held during the run.\n`
+      : `**Spread (slowest / fastest − 1): walk ${pct(sp.walk.spread)}, fp ${pct(sp.fp.spread)}, over ${pct(sp.warnAbove)}: the machine's speed changed during this run, so its absolute times are suspect.** Ratios measured side by side within a section (solver methods round-robin, ablation pairs) are less affected.\n`,
+  );
+  return out;
+}
+
+/** One sentence for the headline's machine line ("" without probes). */
+export function speedProbeNote(results) {
+  const sp = results.speedProbe;
+  if (!sp?.probes?.length) return "";
+  return sp.steady
+    ? ` Machine speed steady during the run (probe spread ${pct(sp.spread)}).`
+    : ` **Machine speed changed by ${pct(sp.spread)} during the run: absolute times are suspect.**`;
+}
