@@ -5,7 +5,8 @@
  * feature stripped) and by its WebAssembly twin (bench/wasm): the ceilings JavaScript and
  * WebAssembly reach here with this algorithm, timed the same way.
  *
- * Each N is measured in its own Node processes (three in full runs, the median kept; `node
+ * Each N is measured in its own Node processes (three in full runs, in rounds of one process per N,
+ * the median kept; `node
  * --expose-gc scaling.mjs <n> <quick>` prints one process's row as one JSON line), so that no row
  * inherits the JIT's state from other rows or sections, as a program simulating one gas would. Each process first compiles the engine and both
  * loops on a 1,000-disc gas, then times batches after a warm-up that leaves the grid start.
@@ -156,18 +157,17 @@ function medianOf(xs) {
 }
 
 /**
- * Row n from `processes` child processes: each rate is the median over the processes (at 10^5
+ * Row n from its child processes' rows: each rate is the median over the processes (at 10^5
  * discs the rate of one process varies by up to 30 % from one process to the next, with memory
  * placement; the batches within a process do not show it).
  */
-function row(n, quick, processes) {
-  const all = [];
-  for (let i = 0; i < processes; i++) all.push(rowInChild(n, quick));
+function row(n, all) {
   const pick = (k) => medianOf(all.map((r) => r[k]));
   const first = all[0];
   return {
     ...first,
-    processes,
+    n,
+    processes: all.length,
     eventsPerSecondPerProcess: all.map((r) => r.eventsPerSecond),
     eventsPerSecond: pick("eventsPerSecond"),
     nsPerEvent: pick("nsPerEvent"),
@@ -182,19 +182,30 @@ function row(n, quick, processes) {
 export async function scaling({ quick, log }) {
   const ns = quick ? [1000, 10000, 100000] : [1000, 3000, 10000, 30000, 100000];
   const processes = quick ? 1 : 3;
-  const rows = [];
-  for (const n of ns) {
-    try {
-      const r = row(n, quick, processes);
-      rows.push(r);
-      log(
-        `  scaling N=${n}: ${(r.eventsPerSecond / 1e6).toFixed(3)} M events/s (minimal loop: JS ${(r.minimalEventsPerSecond / 1e6).toFixed(3)}, WebAssembly ${r.wasmError ? `error: ${r.wasmError}` : (r.wasmEventsPerSecond / 1e6).toFixed(3)}), ${r.heapBytesPerBody.toFixed(0)} B/body${processes > 1 ? ` (median of ${processes} processes: ${r.eventsPerSecondPerProcess.map((x) => (x / 1e6).toFixed(3)).join(", ")})` : ""}`,
-      );
-    } catch (e) {
-      rows.push({ n, error: String(e.stderr || e.message || e).slice(0, 2000) });
-      log(`  scaling N=${n}: ERROR ${String(e.stderr || e.message).slice(0, 500)}`);
+  // The processes run in rounds, each round one process per N from small to large: a drift of the
+  // machine's speed during the section then falls on every N alike, not on the last N measured
+  // (when each N ran its processes back to back, N = 10^5 came last and took all of a late drift).
+  const perN = new Map(ns.map((n) => [n, []]));
+  const errors = new Map();
+  for (let round = 0; round < processes; round++) {
+    for (const n of ns) {
+      if (errors.has(n)) continue;
+      try {
+        perN.get(n).push(rowInChild(n, quick));
+      } catch (e) {
+        errors.set(n, String(e.stderr || e.message || e).slice(0, 2000));
+        log(`  scaling N=${n}: ERROR ${String(e.stderr || e.message).slice(0, 500)}`);
+      }
     }
   }
+  const rows = ns.map((n) => {
+    if (errors.has(n)) return { n, error: errors.get(n) };
+    const r = row(n, perN.get(n));
+    log(
+      `  scaling N=${n}: ${(r.eventsPerSecond / 1e6).toFixed(3)} M events/s (minimal loop: JS ${(r.minimalEventsPerSecond / 1e6).toFixed(3)}, WebAssembly ${r.wasmError ? `error: ${r.wasmError}` : (r.wasmEventsPerSecond / 1e6).toFixed(3)}), ${r.heapBytesPerBody.toFixed(0)} B/body${processes > 1 ? ` (median of ${processes} processes, one per round: ${r.eventsPerSecondPerProcess.map((x) => (x / 1e6).toFixed(3)).join(", ")})` : ""}`,
+    );
+    return r;
+  });
   const at = (n) => rows.find((r) => r.n === n && !r.error);
   const r3 = at(1000);
   const r5 = at(100000);

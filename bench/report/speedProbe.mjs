@@ -25,7 +25,7 @@ export function speedProbeBlock(results) {
   out.push("");
   out.push(
     sp.steady
-      ? `Spread (slowest / fastest − 1): walk ${pct(sp.walk.spread)}, fp ${pct(sp.fp.spread)}: within ${pct(sp.warnAbove)}, the machine's speed held during the run.\n`
+      ? `Spread (slowest / fastest − 1): walk ${pct(sp.walk.spread)}, fp ${pct(sp.fp.spread)}: within the ${pct(sp.warnAbove)} allowed for this machine's second-to-second jitter, so no slow spell beyond it showed between sections.\n`
       : `**Spread (slowest / fastest − 1): walk ${pct(sp.walk.spread)}, fp ${pct(sp.fp.spread)}, over ${pct(sp.warnAbove)}: the machine's speed changed during this run, so its absolute times are suspect.** Ratios measured side by side within a section (solver methods round-robin, ablation pairs) are less affected.\n`,
   );
   return out;
@@ -36,6 +36,6 @@ export function speedProbeNote(results) {
   const sp = results.speedProbe;
   if (!sp?.probes?.length) return "";
   return sp.steady
-    ? ` Machine speed steady during the run (probe spread ${pct(sp.spread)}).`
+    ? ` Machine speed probes spread ${pct(sp.spread)} during the run (warning above ${pct(sp.warnAbove)}).`
     : ` **Machine speed changed by ${pct(sp.spread)} during the run: absolute times are suspect.**`;
 }
