@@ -46,7 +46,9 @@ describe("speed probe in the report", () => {
     expect(text).toContain("| before solver | 9.50 | 6.10 |");
     expect(text).toContain("| at the end | 9.90 | 6.20 |");
     expect(text).toContain("no slow spell beyond it showed");
-    expect(speedProbeNote(steady)).toBe(" Machine speed probes spread 4 % during the run (warning above 25 %).");
+    expect(speedProbeNote(steady)).toBe(
+      " Machine speed probes spread 4 % during the run (warning above 25 %).",
+    );
     const slow = {
       speedProbe: summarizeProbes([probe("before solver", 9.5, 6.1), probe("at the end", 14, 6.2)]),
     };
