@@ -8,7 +8,7 @@ import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
 import type { RequestMessage } from "../remote/protocol";
 import { settled, testEditor } from "../testing/harness";
-import { EventLog } from "./EventLog";
+import { EventLog, kindLabel } from "./EventLog";
 
 afterEach(cleanup);
 
@@ -55,5 +55,41 @@ describe("EventLog", () => {
     } finally {
       clearInterval(reports);
     }
+  });
+
+  it("says what each action entry did, and only the kind for collisions and stops", async () => {
+    const h = testEditor();
+    await h.editor.loadScene(
+      {
+        format: "chapgame",
+        version: 1,
+        g: 9.81,
+        gravity: [0, 0],
+        actions: [
+          { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, mu: 0.5 },
+          { time: 0, type: "addLine", id: "w", p1: [10, -5], p2: [10, 5], kind: "segment" },
+          { time: 0.25, type: "giveVelocity", id: "a", v: [4, 0] },
+        ],
+      },
+      { undoable: false },
+    );
+    await settled(h.client);
+    render(
+      <EditorContext.Provider value={h.editor}>
+        <EventLog />
+      </EditorContext.Provider>,
+    );
+    const log = screen.getByRole("table", { name: "Event log" });
+    await waitFor(() => expect(within(log).getAllByText("action: add body")).toHaveLength(1));
+    expect(within(log).getAllByText("action: add line")).toHaveLength(1);
+    expect(within(log).getAllByText("action: give velocity")).toHaveLength(1);
+    expect(within(log).getAllByText("stop")).toHaveLength(1);
+  });
+
+  it("labels an entry by its kind, with the action's type in words for an action", () => {
+    const base = { time: 1, ids: ["a"], point: null, normal: null, impulse: null };
+    expect(kindLabel({ ...base, type: "bodyLine" })).toBe("body–line");
+    expect(kindLabel({ ...base, type: "action", action: "setGlobal" })).toBe("action: set global");
+    expect(kindLabel({ ...base, type: "action", action: "removePoint" })).toBe("action: remove point");
   });
 });

@@ -1,10 +1,12 @@
 /**
- * The Event log: the events around the current time (time, kind, participants). Clicking an entry
+ * The Event log: the events around the current time (time, kind, participants; an action entry says
+ * what the action did). Clicking an entry
  * jumps there, selects and highlights its participants; a body filter keeps only that body's events.
  * Only the rows in view are rendered (useRowWindow); the view follows the current time (useFollowTime).
  */
 import { useRef } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
+import type { LogEvent } from "../engineTypes";
 import type { EventPage } from "../remote/protocol";
 import { formatNumber } from "./EditableCell";
 import { useFollowTime } from "./useFollowTime";
@@ -27,6 +29,13 @@ const KIND_NAMES: Record<string, string> = {
   stop: "stop",
   action: "action",
 };
+
+/** The kind column: the event's kind, and for an action entry what it did ("action: give velocity"). */
+export function kindLabel(e: LogEvent): string {
+  const kind = KIND_NAMES[e.type] ?? e.type;
+  if (e.action === undefined) return kind;
+  return `${kind}: ${e.action.replace(/[A-Z]/g, (c) => ` ${c.toLowerCase()}`)}`;
+}
 
 export function EventLog() {
   const editor = useEditor();
@@ -106,7 +115,7 @@ export function EventLog() {
                   }}
                 >
                   <td>{formatNumber(e.time)}</td>
-                  <td>{KIND_NAMES[e.type] ?? e.type}</td>
+                  <td>{kindLabel(e)}</td>
                   <td>{e.ids.join(", ")}</td>
                 </tr>
               );

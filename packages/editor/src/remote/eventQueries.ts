@@ -13,7 +13,7 @@ type Log = Pick<TimelineLike, "eventCount" | "nextEventTime" | "prevEventTime" |
 export const FILTER_SCAN_LIMIT = 200_000;
 
 function copy(e: LogEvent): LogEvent {
-  return {
+  const c: LogEvent = {
     time: e.time,
     type: e.type,
     ids: [...e.ids],
@@ -21,6 +21,8 @@ function copy(e: LogEvent): LogEvent {
     normal: e.normal,
     impulse: e.impulse,
   };
+  if (e.action !== undefined) c.action = e.action;
+  return c;
 }
 
 /** The time `steps` distinct event times after t (null when there is none). */

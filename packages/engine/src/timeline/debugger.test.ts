@@ -108,6 +108,24 @@ describe("Timeline as a debugger's back end", () => {
     expect(() => tl.eventAction(0.5)).toThrow(RangeError);
   });
 
+  it("an action entry of the log carries the action's type; collisions and stops have no 'action' key", () => {
+    const tl = cradle();
+    tl.apply({ time: 4, type: "setGlobal", g: 2 });
+    tl.apply({ time: 3, type: "giveVelocity", id: "a", v: [0, 1] });
+    const log = tl.eventRange(0, Number.POSITIVE_INFINITY);
+    log.forEach((e, i) => {
+      if (e.type === "action") expect(e.action).toBe(tl.eventAction(i)?.type);
+      else expect("action" in e).toBe(false);
+    });
+    expect(log.filter((e) => e.type === "action").map((e) => e.action)).toEqual([
+      "addLine",
+      "addBody",
+      "addBody",
+      "giveVelocity",
+      "setGlobal",
+    ]);
+  });
+
   it("a prolong that ends in a Zeno state tells the listeners (the horizon moved, the revision did not)", () => {
     // a frictionless disc pushing a braking one: collisions and stops converge to t ≈ 52.249
     const zeno = (): Timeline => {

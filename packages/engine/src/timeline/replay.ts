@@ -80,6 +80,7 @@ export function describe(core: TimelineCore, i: number, table: MotionTable, kf: 
       point: null,
       normal: null,
       impulse: null,
+      action: act.type,
     };
   }
   const ida = core.bodyIds[a] as string;

@@ -1,12 +1,13 @@
 /** Public data types of the Timeline (see docs/architecture.md). */
-import type { Vec2 } from "../scene/types.js";
+import type { ActionType, Vec2 } from "../scene/types.js";
 import type { BodyState, EventKind, LineState, PointState } from "../sim/types.js";
 
 /** Kind of a logged event: a collision, a stop, or an action. */
 export type LogKind = EventKind | "action";
 
 /** One logged event. For an action: ids = [the action's id] ([] for setGlobal), point/normal/impulse
- *  null. For a stop: point = where the body stopped, normal null, impulse 0. */
+ *  null, and `action` = the action's type (the whole action: Timeline.eventAction(i)). For a stop:
+ *  point = where the body stopped, normal null, impulse 0. */
 export interface LogEvent {
   time: number;
   type: LogKind;
@@ -14,6 +15,8 @@ export interface LogEvent {
   point: Vec2 | null;
   normal: Vec2 | null;
   impulse: number | null;
+  /** Only on entries of type "action": what the action did (addBody, giveVelocity, removeLine, …). */
+  action?: ActionType;
 }
 
 /** The exact state of the scene at one time; every list sorted by id. */
