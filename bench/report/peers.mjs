@@ -1,6 +1,8 @@
 /**
- * Report part "engine vs peers": settings, per-scene tables, one time-vs-error plot per scene.
- * The error plotted per scene is the scene's natural one (see ERROR_OF); exact zeros are drawn at
+ * Report section 2, "chapgame against the peers": peersSection(results.peers, out, svgs) appends the
+ * settings, the Galperin summary, per-scene tables and one time-vs-error plot per scene
+ * (peers-<scene>.svg); the helpers below build each part.
+ * The error plotted per scene is the scene's natural one (see errorOf); exact zeros are drawn at
  * FLOOR so they stay visible on the log axis (the table gives the true value).
  */
 import { int, ms, sig, table } from "./format.mjs";
@@ -170,4 +172,29 @@ export function settingsSection(settings) {
     out.push("");
   }
   return out.join("\n");
+}
+
+export function peersSection(p, out, svgs) {
+  if (!p) return;
+  out.push("## 2. chapgame against the peers\n");
+  out.push(
+    `Fixed steps: ${p.rates.join(", ")} Hz. Configurations: **tuned** = restitution 1, friction 0, thresholds off, CCD/bullets on where they exist; **defaults** = the same scene physics (restitution 1, friction 0, no damping, no sleeping, rotations locked) with every engine knob at its default.\n`,
+  );
+  out.push("### Peer settings\n");
+  out.push(settingsSection(p.settings));
+  out.push("### Galperin's billiard: collisions counted\n");
+  out.push(galperinTable(p.scenes, p.rates));
+  out.push("");
+  const names = Object.keys(p.settings);
+  for (const scene of p.scenes) {
+    out.push(`### ${scene.title}\n`);
+    out.push(
+      `${scene.description}${scene.peersSkipped ? ` Peers: ${scene.peersSkipped} (they already fail at 3 digits).` : ""}\n`,
+    );
+    const file = `peers-${scene.id}.svg`;
+    svgs[file] = scenePlot(scene, names);
+    out.push(`![${scene.id}](bench/${file})\n`);
+    out.push(sceneTable(scene));
+    out.push("");
+  }
 }
