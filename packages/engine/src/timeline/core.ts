@@ -1,39 +1,27 @@
 /**
  * TimelineCore: the computation and storage behind a Timeline. It owns the World at the horizon,
  * the sorted action list (applied ones and scheduled ones), the compact history (records.ts,
- * keyframe.ts, motionTable.ts) and the goals that say how far to compute.
+ * keyframe.ts, motionTable.ts) and the goals that say how far to compute (goals.ts).
  *
  * drive() advances the World event by event, applies each group of actions when the computation
- * reaches its time (validating it first against the scene at that time: sceneRules.ts), copies every
- * event into a record and takes keyframes. Because the World is deterministic and splitting an advance
- * changes nothing, the history only depends on the actions and how far it was computed, never on how
- * the computation was sliced or restarted from a keyframe.
+ * reaches its time (actionGroup.ts: validated first against the scene at that time), copies every
+ * event into a record (record, the World's per-event callback) and takes keyframes (checkpoint.ts,
+ * which also restores them). Because the World is deterministic and splitting an advance changes
+ * nothing, the history only depends on the actions and how far it was computed, never on how the
+ * computation was sliced or restarted from a keyframe.
  */
-import { checkAndApply, SceneView } from "../scene/sceneRules.js";
-import type { Action, Until, Vec2 } from "../scene/types.js";
+import type { Action, Vec2 } from "../scene/types.js";
 import type { WorldEvent } from "../sim/types.js";
 import { World } from "../sim/world.js";
-import { applyToWorld, touchedBodies } from "./applyAction.js";
-import { type Keyframe, loadMotions, snapshotMotions, snapshotProps, worldAt } from "./keyframe.js";
+import { applyGroup } from "./actionGroup.js";
+import { recordsPerKeyframe, takeKeyframe } from "./checkpoint.js";
+import { type Goal, satisfied } from "./goals.js";
+import type { Keyframe } from "./keyframe.js";
 import { MotionTable } from "./motionTable.js";
-import { K_ACTION, K_BODY_BODY, K_BODY_LINE, K_BODY_POINT, K_STOP, Records } from "./records.js";
+import { K_BODY_BODY, K_BODY_LINE, K_BODY_POINT, K_STOP, Records } from "./records.js";
 import type { TimelineCounts } from "./types.js";
 
 const INF = Number.POSITIVE_INFINITY;
-
-/** Records between keyframes: at least this many, so small scenes do not drown in keyframes… */
-export const KEYFRAME_MIN_RECORDS = 1024;
-/** …and this many per live body, so a keyframe (40 bytes per body) costs about 7 bytes per record.
- *  stateAt replays at most max(KEYFRAME_MIN_RECORDS, this × bodies) records: bounded, whatever the
- *  length of the history. */
-export const KEYFRAME_RECORDS_PER_BODY = 6;
-
-/** Compute at least until `tLimit` or until `eLimit` collisions and stops in total, whichever first
- *  (or until nothing is left to happen). */
-export interface Goal {
-  tLimit: number;
-  eLimit: number;
-}
 
 const KIND_CODE = {
   bodyBody: K_BODY_BODY,
@@ -96,7 +84,7 @@ export class TimelineCore {
     this.eager = eager;
     this.world = new World({ g, gravity });
     this.onEvent = (e) => this.record(e);
-    if (history) this.keyframe(false);
+    if (history) takeKeyframe(this, false);
   }
 
   get horizon(): number {
@@ -131,135 +119,7 @@ export class TimelineCore {
     }
   }
 
-  private liveOrder(): Uint32Array {
-    if (this.sortedLive === null) {
-      const ids = [...this.live.keys()].sort();
-      this.sortedLive = Uint32Array.from(ids, (id) => this.live.get(id) as number);
-    }
-    return this.sortedLive;
-  }
-
-  keyframe(afterActions: boolean): void {
-    const w = this.world;
-    const prev = this.keyframes[this.keyframes.length - 1];
-    const share = !afterActions && prev !== undefined;
-    const order = share ? prev.order : this.liveOrder();
-    this.keyframes.push({
-      time: w.time,
-      record: this.records.length,
-      actionCount: this.applied,
-      afterActions,
-      atTimeLimit: this.atTimeLimit,
-      counts: { ...this.counts },
-      eventTotal: this.eventTotal,
-      g: w.g,
-      gravity: [w.gx, w.gy],
-      order,
-      props: share ? prev.props : snapshotProps(this.table, order),
-      motions: snapshotMotions(this.table, order),
-      lines: share ? prev.lines : w.lines(),
-      points: share ? prev.points : w.points(),
-      bodyCount: this.bodyIds.length,
-      lineCount: this.lineIds.length,
-      pointCount: this.pointIds.length,
-      lineNums: new Map(this.lineNums),
-      pointNums: new Map(this.pointNums),
-      zeno: w.zenoWatch(),
-    });
-  }
-
-  private recordsPerKeyframe(): number {
-    return Math.max(KEYFRAME_MIN_RECORDS, KEYFRAME_RECORDS_PER_BODY * this.live.size);
-  }
-
-  // ---- actions ----------------------------------------------------------------------------------
-
-  /** Apply every scheduled action at the World's current time (validated first). */
-  private applyGroup(): void {
-    const w = this.world;
-    const t = w.time;
-    const groupStart = this.records.length;
-    const view = SceneView.of({
-      time: t,
-      g: w.g,
-      gravity: w.gravity,
-      bodies: w.bodies(),
-      lines: w.lines(),
-      points: w.points(),
-    });
-    while (this.applied < this.acts.length && (this.acts[this.applied] as Action).time === t) {
-      const k = this.applied;
-      const a = this.acts[k] as Action;
-      const path = this.pathOf(k);
-      checkAndApply(view, a, path);
-      applyToWorld(w, a, path);
-      this.track(a, t);
-      this.actEvents[k] = this.eventTotal;
-      this.counts.action++;
-      this.lastLogged = t;
-      if (this.history) this.records.push(t, K_ACTION, k, 0, 0, 0, 0, 0);
-      if (this.eager && a.until) this.goals.push(this.goalFrom(a.until, t));
-      this.applied++;
-    }
-    this.idle = false;
-    // events at t that the actions cause are still to be processed (advance up to t does it)
-    this.atTimeLimit = false;
-    this.groupOpen = true;
-    if (!this.history) return;
-    // Actions applied one call at a time at the same instant (an editor or a script adding bodies)
-    // would stack one keyframe each: the previous one is redundant when nothing happened since.
-    const last = this.keyframes[this.keyframes.length - 1] as Keyframe;
-    if (this.keyframes.length > 1 && last.afterActions && last.time === t && last.record === groupStart) {
-      this.keyframes.pop();
-      this.rewrites++;
-    }
-    this.keyframe(true);
-  }
-
-  /** Update the registry and the motion table after action `a` at time t. */
-  private track(a: Action, t: number): void {
-    const w = this.world;
-    if (a.type === "removeBody") {
-      this.live.delete(a.id);
-      this.sortedLive = null;
-    } else if (a.type === "addBody") {
-      this.live.set(a.id, this.bodyIds.length);
-      this.bodyIds.push(a.id);
-      this.table.ensure(this.bodyIds.length);
-      this.sortedLive = null;
-    } else if (a.type === "addLine") {
-      this.lineNums.set(a.id, this.lineIds.length);
-      this.lineIds.push(a.id);
-    } else if (a.type === "removeLine") this.lineNums.delete(a.id);
-    else if (a.type === "addPoint") {
-      this.pointNums.set(a.id, this.pointIds.length);
-      this.pointIds.push(a.id);
-    } else if (a.type === "removePoint") this.pointNums.delete(a.id);
-    if (!this.history) return;
-    const touched = touchedBodies(a);
-    const ids = touched === "all" ? [...this.live.keys()] : touched === null ? [] : [touched];
-    for (const id of ids)
-      this.table.setFromState(this.live.get(id) as number, t, w.body(id), w.g, w.gx, w.gy);
-  }
-
-  goalFrom(until: Until, t: number): Goal {
-    return {
-      tLimit: until.time === undefined ? INF : t + until.time,
-      eLimit: until.events === undefined ? INF : this.eventTotal + until.events,
-    };
-  }
-
   // ---- computing --------------------------------------------------------------------------------
-
-  satisfied(g: Goal): "events" | "idle" | "time" | null {
-    if (this.eventTotal >= g.eLimit) return "events";
-    const t = this.world.time;
-    // "idle": no event is left, and an action still to be applied is one
-    if (t > g.tLimit || (t === g.tLimit && this.atTimeLimit))
-      return this.idle && this.applied === this.acts.length ? "idle" : "time";
-    if (this.idle && this.applied === this.acts.length && g.tLimit === INF) return "idle";
-    return null;
-  }
 
   /** Whether a scheduled action is due now. */
   private due(): boolean {
@@ -278,11 +138,11 @@ export class TimelineCore {
     let events = 0;
     for (;;) {
       if (this.due()) {
-        this.applyGroup();
+        applyGroup(this);
         continue;
       }
-      this.goals = this.goals.filter((g) => this.satisfied(g) === null);
-      const reason = focus ? this.satisfied(focus) : "idle";
+      this.goals = this.goals.filter((g) => satisfied(this, g) === null);
+      const reason = focus ? satisfied(this, focus) : "idle";
       const actionsPending = this.eager && this.applied < this.acts.length;
       if (reason !== null && this.goals.length === 0 && !actionsPending) return { events, reason };
       if (events >= budget) return { events, reason: null };
@@ -297,7 +157,7 @@ export class TimelineCore {
       else if (this.idle && untilTime === INF) return { events, reason: "idle" };
       if (this.history) {
         const last = this.keyframes[this.keyframes.length - 1] as Keyframe;
-        maxEvents = Math.min(maxEvents, this.recordsPerKeyframe() - (this.records.length - last.record));
+        maxEvents = Math.min(maxEvents, recordsPerKeyframe(this) - (this.records.length - last.record));
       }
       const limits: { untilTime?: number; maxEvents?: number } = {};
       if (untilTime < INF) limits.untilTime = untilTime;
@@ -309,55 +169,8 @@ export class TimelineCore {
       this.idle = res.reason === "idle";
       if (this.history) {
         const last = this.keyframes[this.keyframes.length - 1] as Keyframe;
-        if (this.records.length - last.record >= this.recordsPerKeyframe()) this.keyframe(false);
+        if (this.records.length - last.record >= recordsPerKeyframe(this)) takeKeyframe(this, false);
       }
-    }
-  }
-
-  // ---- time travel ------------------------------------------------------------------------------
-
-  /**
-   * Cut the computed history back to keyframe `k`: the World (rebuilt from the keyframe's motions),
-   * the motion table, the registry, the records and the counts are as they were when it was taken.
-   */
-  restoreKeyframe(k: number): void {
-    const kf = this.keyframes[k] as Keyframe;
-    this.keyframes.length = k + 1;
-    this.rewrites++;
-    this.world = worldAt(kf, this.bodyIds);
-    this.records.length = kf.record;
-    this.applied = kf.actionCount;
-    this.actEvents.length = kf.actionCount;
-    this.counts = { ...kf.counts };
-    this.eventTotal = kf.eventTotal;
-    this.bodyIds.length = kf.bodyCount;
-    this.lineIds.length = kf.lineCount;
-    this.pointIds.length = kf.pointCount;
-    this.live = new Map();
-    for (const i of kf.order) this.live.set(this.bodyIds[i] as string, i);
-    this.sortedLive = kf.order;
-    this.lineNums = new Map(kf.lineNums);
-    this.pointNums = new Map(kf.pointNums);
-    this.table = new MotionTable(Math.max(16, kf.bodyCount));
-    loadMotions(kf, this.table);
-    this.atTimeLimit = kf.atTimeLimit;
-    this.groupOpen = kf.afterActions;
-    this.idle = false;
-    this.lastLogged = kf.record > 0 ? (this.records.time[kf.record - 1] as number) : 0;
-  }
-
-  /** Goals of the applied actions' untils, as they stand at the current point (after a restore). */
-  reopenGoals(): void {
-    this.goals = [];
-    if (!this.eager) return;
-    for (let k = 0; k < this.applied; k++) {
-      const a = this.acts[k] as Action;
-      if (!a.until) continue;
-      const g: Goal = {
-        tLimit: a.until.time === undefined ? INF : a.time + a.until.time,
-        eLimit: a.until.events === undefined ? INF : (this.actEvents[k] as number) + a.until.events,
-      };
-      if (this.satisfied(g) === null) this.goals.push(g);
     }
   }
 }

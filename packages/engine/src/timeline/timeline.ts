@@ -18,7 +18,9 @@ import { applyOrder, parseScene } from "../scene/parse.js";
 import type { Action, SceneFile, Until } from "../scene/types.js";
 import { copyAction, freezeAction, restartKeyframe, sameUntil } from "./actionData.js";
 import { checkActionList, checkBudget, checkUntil } from "./args.js";
-import { type Goal, TimelineCore } from "./core.js";
+import { restoreKeyframe } from "./checkpoint.js";
+import { TimelineCore } from "./core.js";
+import { type Goal, goalFrom, reopenGoals } from "./goals.js";
 import type { Keyframe } from "./keyframe.js";
 import { notifyAll } from "./listeners.js";
 import { type CheckedOptions, checkOptions, checkSceneOptions } from "./options.js";
@@ -115,16 +117,16 @@ export class Timeline extends TimelineReader {
     const undo = saveCore(c, forward ? c.records.length : (c.keyframes[k] as Keyframe).record);
     try {
       const oldHorizon = c.horizon;
-      if (!forward) c.restoreKeyframe(k);
+      if (!forward) restoreKeyframe(c, k);
       c.acts.splice(insertAt, 0, a);
       // the others by their index in `actions` as the caller knows it (without this one)
       c.pathOf = (i) => (i === insertAt ? "action" : `actions[${i > insertAt ? i - 1 : i}]`);
       if (!forward) {
-        c.reopenGoals();
+        reopenGoals(c);
         c.goals.push({ tLimit: oldHorizon, eLimit: INF });
       }
       c.drive(INF, { tLimit: a.time, eLimit: INF });
-      if (!c.eager && a.until) c.goals.push(c.goalFrom(a.until, a.time));
+      if (!c.eager && a.until) c.goals.push(goalFrom(c, a.until, a.time));
       c.drive(INF, null);
       c.pathOf = (i) => `actions[${i}]`;
     } catch (e) {
@@ -151,10 +153,10 @@ export class Timeline extends TimelineReader {
     if (k > 0) {
       const undo = saveCore(c, (c.keyframes[k] as Keyframe).record);
       try {
-        c.restoreKeyframe(k);
+        restoreKeyframe(c, k);
         c.acts = sorted;
         c.pathOf = pathOf;
-        c.reopenGoals();
+        reopenGoals(c);
         c.goals.push({ tLimit: oldHorizon, eLimit: INF });
         c.drive(INF, null);
         c.pathOf = (i) => `actions[${i}]`;
@@ -180,7 +182,7 @@ export class Timeline extends TimelineReader {
    *  stops, whichever first; neither = until nothing is left to happen. */
   prolong(until: Until): ProlongResult {
     const u = checkUntil(until, "until");
-    const res = this.compute(INF, this.core.goalFrom(u, this.core.horizon));
+    const res = this.compute(INF, goalFrom(this.core, u, this.core.horizon));
     return { events: res.events, reason: res.reason ?? "events" };
   }
 
@@ -202,7 +204,7 @@ export class Timeline extends TimelineReader {
     const goal =
       this.slice && sameUntil(this.slice.until, u)
         ? this.slice.goal
-        : this.core.goalFrom(u, this.core.horizon);
+        : goalFrom(this.core, u, this.core.horizon);
     const res = this.compute(budget, goal);
     const done = res.reason !== null;
     if (!done) this.slice = { until: u, goal };

@@ -1,0 +1,82 @@
+/**
+ * applyGroup(core): applies every scheduled action at the core World's current time, each validated
+ * first against the scene at that time (sceneRules.ts), then performed on the World (applyAction.ts),
+ * tracked in the registry (body, line and point numbers) and the motion table, logged as an action
+ * record, and its `until` turned into a goal when the core is eager. Ends with a keyframe (one per
+ * instant: a group applied one call at a time at the same instant replaces its previous keyframe).
+ */
+import { checkAndApply, SceneView } from "../scene/sceneRules.js";
+import type { Action } from "../scene/types.js";
+import { applyToWorld, touchedBodies } from "./applyAction.js";
+import { takeKeyframe } from "./checkpoint.js";
+import type { TimelineCore } from "./core.js";
+import { goalFrom } from "./goals.js";
+import type { Keyframe } from "./keyframe.js";
+import { K_ACTION } from "./records.js";
+
+/** Apply every scheduled action at the World's current time (validated first). */
+export function applyGroup(c: TimelineCore): void {
+  const w = c.world;
+  const t = w.time;
+  const groupStart = c.records.length;
+  const view = SceneView.of({
+    time: t,
+    g: w.g,
+    gravity: w.gravity,
+    bodies: w.bodies(),
+    lines: w.lines(),
+    points: w.points(),
+  });
+  while (c.applied < c.acts.length && (c.acts[c.applied] as Action).time === t) {
+    const k = c.applied;
+    const a = c.acts[k] as Action;
+    const path = c.pathOf(k);
+    checkAndApply(view, a, path);
+    applyToWorld(w, a, path);
+    track(c, a, t);
+    c.actEvents[k] = c.eventTotal;
+    c.counts.action++;
+    c.lastLogged = t;
+    if (c.history) c.records.push(t, K_ACTION, k, 0, 0, 0, 0, 0);
+    if (c.eager && a.until) c.goals.push(goalFrom(c, a.until, t));
+    c.applied++;
+  }
+  c.idle = false;
+  // events at t that the actions cause are still to be processed (advance up to t does it)
+  c.atTimeLimit = false;
+  c.groupOpen = true;
+  if (!c.history) return;
+  // Actions applied one call at a time at the same instant (an editor or a script adding bodies)
+  // would stack one keyframe each: the previous one is redundant when nothing happened since.
+  const last = c.keyframes[c.keyframes.length - 1] as Keyframe;
+  if (c.keyframes.length > 1 && last.afterActions && last.time === t && last.record === groupStart) {
+    c.keyframes.pop();
+    c.rewrites++;
+  }
+  takeKeyframe(c, true);
+}
+
+/** Update the registry and the motion table after action `a` at time t. */
+function track(c: TimelineCore, a: Action, t: number): void {
+  const w = c.world;
+  if (a.type === "removeBody") {
+    c.live.delete(a.id);
+    c.sortedLive = null;
+  } else if (a.type === "addBody") {
+    c.live.set(a.id, c.bodyIds.length);
+    c.bodyIds.push(a.id);
+    c.table.ensure(c.bodyIds.length);
+    c.sortedLive = null;
+  } else if (a.type === "addLine") {
+    c.lineNums.set(a.id, c.lineIds.length);
+    c.lineIds.push(a.id);
+  } else if (a.type === "removeLine") c.lineNums.delete(a.id);
+  else if (a.type === "addPoint") {
+    c.pointNums.set(a.id, c.pointIds.length);
+    c.pointIds.push(a.id);
+  } else if (a.type === "removePoint") c.pointNums.delete(a.id);
+  if (!c.history) return;
+  const touched = touchedBodies(a);
+  const ids = touched === "all" ? [...c.live.keys()] : touched === null ? [] : [touched];
+  for (const id of ids) c.table.setFromState(c.live.get(id) as number, t, w.body(id), w.g, w.gx, w.gy);
+}
