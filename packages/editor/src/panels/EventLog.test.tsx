@@ -6,6 +6,7 @@ import { newtonsCradle } from "@chapgame/engine";
 import { act, cleanup, render, screen, waitFor, within } from "@testing-library/react";
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
+import type { Editor } from "../editor";
 import type { RequestMessage } from "../remote/protocol";
 import { settled, testEditor } from "../testing/harness";
 import { EventLog, kindLabel } from "./EventLog";
@@ -16,17 +17,22 @@ afterEach(cleanup);
 const REPORT_MS = 15;
 const REPLY_MS = 40;
 
+/** The Event log of `editor`, rendered; its table. */
+function renderLog(editor: Editor): HTMLElement {
+  render(
+    <EditorContext.Provider value={editor}>
+      <EventLog />
+    </EditorContext.Provider>,
+  );
+  return screen.getByRole("table", { name: "Event log" });
+}
+
 describe("EventLog", () => {
   it("follows a newly loaded scene while progress reports keep arriving faster than pages", async () => {
     const h = testEditor();
     await h.editor.loadScene(newtonsCradle(), { undoable: false });
     await settled(h.client);
-    render(
-      <EditorContext.Provider value={h.editor}>
-        <EventLog />
-      </EditorContext.Provider>,
-    );
-    const log = screen.getByRole("table", { name: "Event log" });
+    const log = renderLog(h.editor);
     await waitFor(() => expect(within(log).getAllByText("striker").length).toBeGreaterThan(0));
 
     // Every event page is answered later than the next progress report (a busy worker).
@@ -74,12 +80,7 @@ describe("EventLog", () => {
       { undoable: false },
     );
     await settled(h.client);
-    render(
-      <EditorContext.Provider value={h.editor}>
-        <EventLog />
-      </EditorContext.Provider>,
-    );
-    const log = screen.getByRole("table", { name: "Event log" });
+    const log = renderLog(h.editor);
     await waitFor(() => expect(within(log).getAllByText("action: add body")).toHaveLength(1));
     expect(within(log).getAllByText("action: add line")).toHaveLength(1);
     expect(within(log).getAllByText("action: give velocity")).toHaveLength(1);

@@ -7,21 +7,12 @@ import { describe, expect, it } from "vitest";
 import { SceneError } from "../scene/errors.js";
 import type { Action } from "../scene/types.js";
 import { SimulationError } from "../sim/errors.js";
+import { wallAndHeavyDisc } from "./testSupport.js";
 import { Timeline } from "./timeline.js";
-
-/** The README's example: a light disc between a wall and a heavy one, 31 collisions up to t = 20. */
-function cradle(): Timeline {
-  const tl = new Timeline({ g: 0 });
-  tl.apply({ time: 0, type: "addLine", id: "wall", p1: [0, -10], p2: [0, 10], kind: "line" });
-  tl.apply({ time: 0, type: "addBody", id: "a", x: 5, y: 0, r: 1, m: 1 });
-  tl.apply({ time: 0, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 100, v: [-1, 0] });
-  tl.prolong({ time: 20 });
-  return tl;
-}
 
 describe("Timeline as a debugger's back end", () => {
   it("stateAt refuses a time that is not a number (null gave the state at 0, '3' a state whose time was a string)", () => {
-    const tl = cradle();
+    const tl = wallAndHeavyDisc();
     for (const t of [null, "3", undefined, Number.NaN, [1]])
       expect(() => tl.stateAt(t as unknown as number)).toThrow(
         `stateAt: t must be a number in [0, 20], got ${typeof t === "string" ? `"${t}"` : String(t)}`,
@@ -33,7 +24,7 @@ describe("Timeline as a debugger's back end", () => {
   });
 
   it("setActions refuses a list that is not an array, naming actions (null threw a raw TypeError)", () => {
-    const tl = cradle();
+    const tl = wallAndHeavyDisc();
     const before = tl.getSnapshot();
     for (const bad of [null, undefined, new Set(tl.actions), { 0: tl.actions[0], length: 1 }]) {
       const call = () => tl.setActions(bad as unknown as Action[]);
@@ -44,7 +35,7 @@ describe("Timeline as a debugger's back end", () => {
   });
 
   it("prolongSlice refuses a budget that is not a whole number >= 1 by name (1.5 was named the World's maxEvents)", () => {
-    const tl = cradle();
+    const tl = wallAndHeavyDisc();
     for (const budget of [1.5, 0, -1, Number.NaN, "5"]) {
       const call = () => tl.prolongSlice({ time: 1 }, budget as number);
       expect(call).toThrow(SceneError);
@@ -70,7 +61,7 @@ describe("Timeline as a debugger's back end", () => {
   });
 
   it("eventRange takes Infinity as the end, meaning to the end of the log (the end is clamped anyway)", () => {
-    const tl = cradle();
+    const tl = wallAndHeavyDisc();
     expect(tl.eventRange(30, Number.POSITIVE_INFINITY)).toEqual(tl.eventRange(30, tl.eventCount));
     expect(tl.eventRange(0, Number.POSITIVE_INFINITY)).toHaveLength(tl.eventCount);
     expect(() => tl.eventRange(Number.POSITIVE_INFINITY, 3)).toThrow(
@@ -82,7 +73,7 @@ describe("Timeline as a debugger's back end", () => {
   });
 
   it("eventAction(i) tells what a log entry of type 'action' did (the log gave only the id)", () => {
-    const tl = cradle();
+    const tl = wallAndHeavyDisc();
     tl.apply({ time: 4, type: "setGlobal", g: 2 });
     tl.apply({ time: 3, type: "giveVelocity", id: "a", v: [0, 1] }); // before it: the indices shift
     const found: Action[] = [];
@@ -109,7 +100,7 @@ describe("Timeline as a debugger's back end", () => {
   });
 
   it("an action entry of the log carries the action's type; collisions and stops have no 'action' key", () => {
-    const tl = cradle();
+    const tl = wallAndHeavyDisc();
     tl.apply({ time: 4, type: "setGlobal", g: 2 });
     tl.apply({ time: 3, type: "giveVelocity", id: "a", v: [0, 1] });
     const log = tl.eventRange(0, Number.POSITIVE_INFINITY);

@@ -6,17 +6,8 @@
  */
 import { describe, expect, it } from "vitest";
 import type { Action } from "../scene/types.js";
+import { wallAndHeavyDisc } from "./testSupport.js";
 import { Timeline } from "./timeline.js";
-
-/** A light disc between a wall and a heavy one (the README's example). */
-function cradle(): Timeline {
-  const tl = new Timeline({ g: 0 });
-  tl.apply({ time: 0, type: "addLine", id: "wall", p1: [0, -10], p2: [0, 10], kind: "line" });
-  tl.apply({ time: 0, type: "addBody", id: "a", x: 5, y: 0, r: 1, m: 1 });
-  tl.apply({ time: 0, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 100, v: [-1, 0] });
-  tl.prolong({ time: 20 });
-  return tl;
-}
 
 /** The same actions computed from nothing up to `horizon`. */
 function fromScratch(actions: readonly Action[], horizon: number, g = 0): Timeline {
@@ -31,7 +22,7 @@ const kinds = (tl: Timeline, t: number) => tl.eventsBetween(t, t).map((e) => `${
 
 describe("Timeline: one instant", () => {
   it("removing a body at the moment it collides: the collision happens first (b keeps its impulse)", () => {
-    const tl = cradle();
+    const tl = wallAndHeavyDisc();
     const hit = tl.event(3);
     expect(hit).toMatchObject({ time: 3, type: "bodyBody", ids: ["a", "b"] });
     tl.apply({ time: 3, type: "removeBody", id: "a" });
@@ -45,7 +36,7 @@ describe("Timeline: one instant", () => {
   });
 
   it("a velocity given at a collision's time can cause a second collision at the same instant", () => {
-    const tl = cradle();
+    const tl = wallAndHeavyDisc();
     tl.apply({ time: 3, type: "giveVelocity", id: "a", v: [0, 1] });
     expect(kinds(tl, 3)).toEqual(["bodyBody a,b", "action a", "bodyBody a,b"]);
     const a = tl.stateAt(3).bodies[0];

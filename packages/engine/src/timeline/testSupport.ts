@@ -3,7 +3,7 @@
  * everything a timeline shows, for "nothing changed" checks.
  */
 import type { Action, SceneFile } from "../scene/types.js";
-import type { Timeline } from "./timeline.js";
+import { Timeline } from "./timeline.js";
 
 export const scene = (actions: Action[], g = 9.81): SceneFile => ({
   format: "chapgame",
@@ -37,4 +37,14 @@ export function fingerprint(tl: Timeline): unknown {
     states: times.map((t) => tl.stateAt(t)),
     bytes: tl.historyBytes(),
   };
+}
+
+/** The README's example: a light disc between a wall and a heavy one, 31 collisions up to t = 20. */
+export function wallAndHeavyDisc(): Timeline {
+  const tl = new Timeline({ g: 0 });
+  tl.apply({ time: 0, type: "addLine", id: "wall", p1: [0, -10], p2: [0, 10], kind: "line" });
+  tl.apply({ time: 0, type: "addBody", id: "a", x: 5, y: 0, r: 1, m: 1 });
+  tl.apply({ time: 0, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 100, v: [-1, 0] });
+  tl.prolong({ time: 20 });
+  return tl;
 }
