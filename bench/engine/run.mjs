@@ -20,6 +20,9 @@ import { scaling } from "./scaling.mjs";
 
 const collisions = (c) => c.bodyBody + c.bodyLine + c.bodyPoint;
 
+/** Issue 2's target for Galperin's billiard at 7 digits: the exact count in under this many seconds. */
+export const GALPERIN7_TARGET_SECONDS = 2;
+
 export function galperinRun({ quick, engine, log }, digits) {
   const scene = galperin(digits, { span: 1e9 });
   try {
@@ -45,6 +48,7 @@ export function galperinRun({ quick, engine, log }, digits) {
       count: first.count,
       correct: first.count === scene.exact.collisions,
       seconds: t.medianNs / 1e9,
+      targetSeconds: GALPERIN7_TARGET_SECONDS,
       runs: all.length,
       final: b.map((s) => ({ id: s.id, vx: s.vx })),
     };

@@ -3,7 +3,7 @@
  * (what it skips, whether the events stay the same, time on/off), and why a switch that shows no gain
  * in a run stays. ablationsBlock(engineResults, out) appends markdown lines to `out`.
  */
-import { int, sig, table } from "./format.mjs";
+import { int, numberWord, sig, table } from "./format.mjs";
 
 /** What each World `optimizations` switch skips (from the engine's Optimizations contract). */
 const SKIPS = {
@@ -23,8 +23,13 @@ const WEAK_WHY = {
 };
 
 export function ablationsBlock(e, out) {
+  // `processes` reads "3 alternating pairs, one per configuration".
+  const counted = Number.parseInt(e.ablations.find((a) => !a.error && a.processes)?.processes ?? "", 10);
+  const pairs = Number.isInteger(counted)
+    ? `${numberWord(counted)} process pair${counted === 1 ? "" : "s"}`
+    : "process pairs";
   out.push(
-    'Each "skip what the scene does not need" optimisation switched off in turn (World option `optimizations: { <flag>: false }`), same scene and span; "same events" checks that the switch changes only the time. Each configuration runs in its own Node process (warmed up, then timed), as a program using one configuration would: in a shared process the JIT\'s type feedback from one skews the other. On and off alternate over three process pairs (one in a quick run) and the times are the medians over all their timed runs, so a drift of the machine\'s speed during the section falls on both.\n',
+    `Each "skip what the scene does not need" optimisation switched off in turn (World option \`optimizations: { <flag>: false }\`), same scene and span; "same events" checks that the switch changes only the time. Each configuration runs in its own Node process (warmed up, then timed), as a program using one configuration would: in a shared process the JIT's type feedback from one skews the other. On and off alternate over ${pairs} in this run and the times are the medians over all their timed runs, so a drift of the machine's speed during the section falls on both.\n`,
   );
   out.push(
     table(

@@ -21,3 +21,11 @@ export function table(head, rows) {
 
 export const status = (ok) =>
   ok === null || ok === undefined ? "not measured" : ok ? "**met**" : "**missed**";
+
+const WORDS = ["no", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten"];
+
+/** A small count in words ("three"), digits from 11 on. */
+export const numberWord = (n) => WORDS[n] ?? String(n);
+
+/** Galperin 7's time target in seconds, as the run recorded it (runs before it was recorded: 2). */
+export const galperinTarget = (g) => g.targetSeconds ?? 2;

@@ -89,4 +89,24 @@ describe("committed benchmark report", () => {
       ["README.md", "docs/bench/solver.svg", "docs/benchmarks-headline.md", "docs/benchmarks.md"].sort(),
     );
   });
+
+  it("states the process counts and Galperin's target that the results record, not fixed words", () => {
+    const results = committedResults();
+    const engine = results.engine as {
+      scaling: { processesPerN: number };
+      galperin7: { seconds: number; targetSeconds?: number };
+      ablations: { processes: string }[];
+    };
+    engine.scaling.processesPerN = 5;
+    engine.galperin7.targetSeconds = engine.galperin7.seconds / 2;
+    for (const a of engine.ablations) a.processes = "1 alternating pairs, one per configuration";
+    const { root } = generateIntoTemp(results);
+    const report = readFileSync(join(root, "docs", "benchmarks.md"), "utf8");
+    const headline = readFileSync(join(root, "docs", "benchmarks-headline.md"), "utf8");
+    expect(report).toContain("five per N in this run");
+    expect(report).toContain("On and off alternate over one process pair in this run");
+    const target = `< ${engine.galperin7.targetSeconds} s`;
+    expect(report).toContain(`(target ${target}): **missed**`);
+    expect(headline).toMatch(new RegExp(`${target}, exact count \\| \\*\\*missed\\*\\*`));
+  });
 });
