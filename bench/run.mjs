@@ -1,11 +1,13 @@
 /**
- * `npm run bench [-- --quick] [-- --only=solver,peers,engine,stress]`: runs the benchmark sections
+ * `npm run bench [-- --quick] [-- --only=solver,peers,engine,stress] [-- --no-wait]`: runs the benchmark sections
  * against the BUILT engine, writes bench/results/latest.json (quick runs: bench/results/tmp/quick.json,
  * not committed), then generates docs/benchmarks.md, docs/benchmarks-headline.md and docs/bench/*.svg
  * (quick runs: the same files under bench/results/tmp/quick-report/, so the committed report stays full).
  * `--push-digits=N` instead runs only Galperin's billiard pushed to N digits with no time budget
- * (9 digits take about ten minutes) into bench/results/galperin-push.json, which the report merges.
+ * (9 digits took 744 s) into bench/results/galperin-push.json, which the report merges.
  * Re-executes itself with --expose-gc so runs can collect garbage between measurements.
+ * A full run probes the machine's speed before each section and waits out a slow spell
+ * (bench/lib/speedProbe.mjs: SLOW_BY, at most WAIT_MAX_S in all); `--no-wait` measures at once.
  */
 import { spawnSync } from "node:child_process";
 import { mkdirSync, writeFileSync } from "node:fs";
@@ -31,7 +33,7 @@ const { runPeers } = await import("./peers/run.mjs");
 const { runEngine } = await import("./engine/run.mjs");
 const { runStress } = await import("./stress/run.mjs");
 const { generate } = await import("./report/generate.mjs");
-const { probeSpeed, summarizeProbes } = await import("./lib/speedProbe.mjs");
+const { probeWhenSteady, summarizeProbes } = await import("./lib/speedProbe.mjs");
 
 const ROOT = join(dirname(fileURLToPath(import.meta.url)), "..");
 const args = process.argv.slice(2);
@@ -49,17 +51,24 @@ log(
   `chapgame bench (${quick ? "quick" : "full"}) on ${results.machine.cpu}, ${results.machine.cores} cores, Node ${results.machine.node}`,
 );
 
-// The machine's speed before each section and at the end (bench/lib/speedProbe.mjs).
+// The machine's speed before each section and at the end (bench/lib/speedProbe.mjs). A full run
+// waits out a slow spell before a section (at most WAIT_MAX_S in all; --no-wait: never).
 const probes = [];
-const probe = (at) => {
-  const p = probeSpeed(at);
+const waits = [];
+const waitForSteady = !quick && !args.includes("--no-wait");
+const sleepS = (s) => new Promise((resolve) => setTimeout(resolve, s * 1000));
+const probe = async (at, beforeSection) => {
+  const spentS = waits.reduce((sum, w) => sum + w.seconds, 0);
+  const earlier = waitForSteady && beforeSection ? probes : [];
+  const { probe: p, wait } = await probeWhenSteady(at, earlier, spentS, { sleepS, log });
+  if (wait) waits.push(wait);
   probes.push(p);
   log(`   speed probe ${at}: walk ${p.walkNs.toFixed(2)} ns, fp ${p.fpNs.toFixed(2)} ns per step`);
 };
 
 const section = async (name, fn) => {
   if (!want(name)) return;
-  probe(`before ${name}`);
+  await probe(`before ${name}`, true);
   log(`== ${name}`);
   const a = nowNs();
   try {
@@ -92,8 +101,8 @@ await section("solver", runSolver);
 await section("peers", runPeers);
 await section("engine", runEngine);
 await section("stress", runStress);
-probe("at the end");
-results.speedProbe = summarizeProbes(probes);
+await probe("at the end", false);
+results.speedProbe = summarizeProbes(probes, waits);
 
 results.seconds = (nowNs() - t0) / 1e9;
 const file = join(ROOT, "bench", "results", quick ? "tmp/quick.json" : "latest.json");

@@ -102,7 +102,49 @@ export function probeSpeed(at) {
  */
 export const SPREAD_WARN = 0.25;
 
-export function summarizeProbes(probes) {
+/**
+ * Waiting out a slow spell (full runs): a probe before a section that is more than SLOW_BY slower
+ * than the fastest probe of the run so far (either workload) makes the run wait WAIT_STEP_S and
+ * probe again, until the speed is back or WAIT_MAX_S have been spent waiting in the whole run
+ * (then it measures anyway, and the report says so). SLOW_BY sits above the ~15 % second-to-second
+ * jitter, so a machine at its normal speed is never kept waiting; a run that starts in a slow spell
+ * has nothing faster to compare with, and only the spread check shows it.
+ */
+export const SLOW_BY = 0.18;
+export const WAIT_STEP_S = 30;
+export const WAIT_MAX_S = 600;
+
+/** Whether probe `p` is more than SLOW_BY slower than the fastest of `earlier` in either workload. */
+export function slowerThanEarlier(p, earlier) {
+  if (earlier.length === 0) return false;
+  const fastest = (key) => Math.min(...earlier.map((q) => q[key]));
+  return p.walkNs > (1 + SLOW_BY) * fastest("walkNs") || p.fpNs > (1 + SLOW_BY) * fastest("fpNs");
+}
+
+/**
+ * Probes before a section, waiting out a slow spell as described at SLOW_BY: returns the probe to
+ * keep and, when it waited, { before, seconds, slowProbes, gaveUp }. `spentS` is the waiting done
+ * earlier in the run; `probe` and `sleepS` are injected (the tests pass fakes).
+ */
+export async function probeWhenSteady(at, earlier, spentS, { probe = probeSpeed, sleepS, log = () => {} }) {
+  let p = probe(at);
+  const slowProbes = [];
+  let seconds = 0;
+  while (slowerThanEarlier(p, earlier) && spentS + seconds < WAIT_MAX_S) {
+    slowProbes.push(p);
+    const step = Math.min(WAIT_STEP_S, WAIT_MAX_S - spentS - seconds);
+    log(
+      `   speed probe ${at}: walk ${p.walkNs.toFixed(2)} ns, fp ${p.fpNs.toFixed(2)} ns: over ${Math.round(100 * SLOW_BY)} % slower than earlier in the run; waiting ${step} s`,
+    );
+    await sleepS(step);
+    seconds += step;
+    p = probe(at);
+  }
+  if (slowProbes.length === 0) return { probe: p, wait: null };
+  return { probe: p, wait: { before: at, seconds, slowProbes, gaveUp: slowerThanEarlier(p, earlier) } };
+}
+
+export function summarizeProbes(probes, waits = []) {
   const range = (key) => {
     const v = probes.map((p) => p[key]);
     const min = Math.min(...v);
@@ -120,6 +162,8 @@ export function summarizeProbes(probes) {
     spread,
     warnAbove: SPREAD_WARN,
     steady: spread <= SPREAD_WARN,
+    waits,
+    slowBy: SLOW_BY,
   };
 }
 
