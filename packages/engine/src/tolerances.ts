@@ -160,3 +160,18 @@ export const SIMULTANEOUS_EVENTS_PER_BODY = 64;
 export const ZENO_WINDOW_EVENTS = 200_000;
 export const ZENO_WINDOW_EVENTS_PER_BODY = 20;
 export const ZENO_MIN_PROGRESS = 1e-6;
+
+/**
+ * The Zeno watch's test of convergence (sim/zenoWatch.ts), replacing the comparison of a window's
+ * progress with ZENO_MIN_PROGRESS × |t| (which now serves nothing): that comparison depends on the
+ * time origin, so it refused a legitimate disc rattling between walls 1e-4 apart at 1e3 speed at
+ * t = 1e5 (a steady 1e7 events per second beside a moving immovable disc), and never reported a
+ * crush that converges on t = 0 (it ran 3e7 events and on). A run converges when each window of
+ * events lasts at most ZENO_SHRINK times the one before and one lasts at most ZENO_STREAK_PROGRESS
+ * times the whole run before it. A steady rattle's windows are equal up to noise, so its run of
+ * shrinking windows stops within a few windows; one that keeps shrinking by 1 % per window needs
+ * about 70 windows in a row to pass the second test (0.99^-70 ≈ 2). A crush, whose event intervals
+ * shrink as 1/k², passes both within about ten windows of its start.
+ */
+export const ZENO_SHRINK = 0.99;
+export const ZENO_STREAK_PROGRESS = 0.01;

@@ -29,6 +29,7 @@ export class Simulator extends Predictor {
     if (s < 0) return -1;
     const t = this.heap.peekKey();
     if (t > untilTime) return -1;
+    const before = this.now;
     if (t > this.now) this.now = t;
     const b = this.store;
     if ((b.crossTime[s] as number) <= (b.evTime[s] as number)) {
@@ -43,7 +44,7 @@ export class Simulator extends Predictor {
         return 0;
       }
     }
-    this.guardZeno();
+    this.guardZeno(before);
     if (kind === EV_BODY) this.processBodyBody(s, b.evOther[s] as number);
     else if (kind === EV_STOP) this.processStop(s);
     else this.processObstacle(s, kind, b.evOther[s] as number, b.evAux[s] as number);
@@ -68,6 +69,7 @@ export class Simulator extends Predictor {
         const s = this.heap.peek();
         if (s < 0) return INF;
         const t = this.heap.peekKey();
+        const before = this.now;
         if (t > this.now) this.now = t;
         if ((b.crossTime[s] as number) <= (b.evTime[s] as number)) {
           log.save(b, s, t);
@@ -81,7 +83,7 @@ export class Simulator extends Predictor {
           this.predict(s);
           continue;
         }
-        this.checkEvent(s, kind);
+        this.checkEvent(s, kind, before);
         return this.now;
       }
     } finally {
@@ -92,11 +94,11 @@ export class Simulator extends Predictor {
 
   private readonly peekLog = new PeekLog();
 
-  /** Throw what processing slot s's event (of this kind, now) would throw; change nothing. */
-  private checkEvent(s: number, kind: number): void {
+  /** Throw what processing slot s's event (of this kind, now; the time before it `before`) would throw; change nothing. */
+  private checkEvent(s: number, kind: number, before: number): void {
     const watch = this.zeno.save();
     try {
-      this.guardZeno();
+      this.guardZeno(before);
       if (kind === EV_LINE || kind === EV_POINT) {
         const b = this.store;
         const t = this.now;
@@ -115,9 +117,12 @@ export class Simulator extends Predictor {
     }
   }
 
-  /** Count the event about to be processed in the Zeno watch (throws on a Zeno state). */
-  protected guardZeno(): void {
-    this.zeno.check(this.now, Math.max(1, this.store.slotCount), this.pumps);
+  /**
+   * Count the event about to be processed now in the Zeno watch (throws on a Zeno state); `before`
+   * is the World's time before it (equal to now: at the same instant as the previous item).
+   */
+  protected guardZeno(before: number): void {
+    this.zeno.check(this.now, before, Math.max(1, this.store.slotCount), this.pumps);
   }
 
   private readonly pumps = (): boolean => this.pumpsEnergy();

@@ -1,72 +1,106 @@
 /**
  * The Zeno watch: reports a state the exact model cannot pass instead of looping for ever. It is
- * told the time of every counted event (collision or stop) and throws a SimulationError when
+ * told the time of every counted event (collision or stop), with the World's time before it, and
+ * throws a SimulationError when
  *
  * - more than SIMULTANEOUS_EVENTS_PER_BODY * n events happen at one and the same instant (a
- *   resting contact or an inelastic collapse), or
- * - a window of max(ZENO_WINDOW_EVENTS, ZENO_WINDOW_EVENTS_PER_BODY * n) events advances time by
- *   no more than ZENO_MIN_PROGRESS relative to |t|, while energy can be fed in (an immovable body
- *   moves): a disc crushed between an immovable disc and a wall collides infinitely often before
- *   the crush, at distinct instants. Relative to |t| alone, with no unit of time, so that a scene
- *   run with time × k (and its start time × k) is reported at the same event: with max(1, |t|), a
- *   disc bouncing between two walls 1e-12 s apart beside a moving immovable disc was taken for a
- *   Zeno state (test/scale.prop.test.ts).
+ *   resting contact, or a collapse that friction drives to one instant), or
+ * - while energy can be fed in (an immovable body moves), windows of
+ *   W = max(ZENO_WINDOW_EVENTS, ZENO_WINDOW_EVENTS_PER_BODY * n) events keep getting shorter (each
+ *   lasts at most ZENO_SHRINK times the one before) until one lasts no more than
+ *   ZENO_STREAK_PROGRESS times the whole run of shrinking windows before it: events accumulate at
+ *   a finite time, as when a disc is crushed between an immovable disc and a wall.
  *
- * Its four counters are part of the simulation's state: a World copied or rebuilt from a keyframe
- * carries them (`save` / `load`), so that it throws at exactly the event the original would.
+ * Only differences of event times are compared, never a time with |t| or a unit: the verdict is the
+ * same for the scene shifted in time or run with time × k. (Comparing a window with |t| refused a
+ * disc rattling steadily between two walls at t = 1e5, and missed a crush converging on t = 0.)
+ *
+ * Its counters are part of the simulation's state: a World copied or rebuilt from a keyframe
+ * carries them (`save` / `load`, four numbers: the two event counts share one, exactly while
+ * n < 2^20, beyond which the counts are capped), so that it throws at exactly the event the
+ * original would. The time of the previous event is the World's time before the event, which a
+ * copy or a rebuilt World has too.
  */
 import {
   SIMULTANEOUS_EVENTS_PER_BODY,
-  ZENO_MIN_PROGRESS,
+  ZENO_SHRINK,
+  ZENO_STREAK_PROGRESS,
   ZENO_WINDOW_EVENTS,
   ZENO_WINDOW_EVENTS_PER_BODY,
 } from "../tolerances.js";
 import { SimulationError } from "./errors.js";
 
 const INF = Number.POSITIVE_INFINITY;
+/** save() packs the two counts into one number: sameTimeCount + windowCount * COUNT_SPLIT. */
+const COUNT_SPLIT = 2 ** 26;
 
-/** The watch's counters: [time of the current run of simultaneous events, its length, window start, window length]. */
+/**
+ * The watch's counters: [start of the current window, duration of the window before, start of
+ * the run of shrinking windows, events at the current instant + COUNT_SPLIT * events in the window].
+ */
 export type ZenoCounters = [number, number, number, number];
 
+/** Events allowed at one instant in a world of n body slots (capped so that save() is exact). */
+export function simultaneousLimit(n: number): number {
+  return Math.min(SIMULTANEOUS_EVENTS_PER_BODY * n, COUNT_SPLIT - 2);
+}
+
+/** Events in one window of the convergence test in a world of n body slots. */
+export function zenoWindow(n: number): number {
+  return Math.min(Math.max(ZENO_WINDOW_EVENTS, ZENO_WINDOW_EVENTS_PER_BODY * n), 2 ** 26);
+}
+
 export class ZenoWatch {
-  private sameTime = -INF;
   private sameTimeCount = 0;
   private windowStart = -INF;
   private windowCount = 0;
+  private lastProgress = INF;
+  private runStart = -INF;
 
   /**
-   * Count an event at `time` in a world of `n` body slots; throw if it reveals a Zeno state.
-   * `pumpsEnergy` is asked only at the end of a window that made too little progress.
+   * Count an event at `time`, the World's time before it being `before`, in a world of `n` body
+   * slots; throw if it reveals a Zeno state. `pumpsEnergy` is asked only at the end of a window that
+   * completes a converging run.
    */
-  check(time: number, n: number, pumpsEnergy: () => boolean): void {
-    if (time !== this.sameTime) {
-      this.sameTime = time;
-      this.sameTimeCount = 0;
-    } else if (++this.sameTimeCount > SIMULTANEOUS_EVENTS_PER_BODY * n) {
+  check(time: number, before: number, n: number, pumpsEnergy: () => boolean): void {
+    if (time !== before) this.sameTimeCount = 0;
+    else if (++this.sameTimeCount > simultaneousLimit(n)) {
       throw new SimulationError(
         `more than ${this.sameTimeCount} events at the same instant t=${time}: a Zeno state (resting contact or an inelastic collapse) that the exact model cannot resolve`,
         time,
       );
     }
-    if (++this.windowCount < Math.max(ZENO_WINDOW_EVENTS, ZENO_WINDOW_EVENTS_PER_BODY * n)) return;
+    const w = zenoWindow(n);
+    if (++this.windowCount < w) return;
     const progress = time - this.windowStart;
-    if (progress <= ZENO_MIN_PROGRESS * Math.abs(time) && pumpsEnergy()) {
+    // The first window (no start yet) only starts the first run, at its end.
+    if (this.windowStart === -INF) this.runStart = time;
+    else if (!(progress <= ZENO_SHRINK * this.lastProgress)) this.runStart = this.windowStart;
+    else if (progress <= ZENO_STREAK_PROGRESS * (this.windowStart - this.runStart) && pumpsEnergy()) {
       throw new SimulationError(
-        `${this.windowCount} events while time advanced only ${progress} (to t=${time}): events accumulate at a finite time (a Zeno state, e.g. a disc crushed by an immovable body), which the exact model cannot pass`,
+        `${w} events in ${progress} (to t=${time}), each window of ${w} events shorter than the one before since t=${this.runStart}: events accumulate at a finite time (a Zeno state, e.g. a disc crushed by an immovable body), which the exact model cannot pass`,
         time,
       );
     }
+    this.lastProgress = progress;
     this.windowStart = time;
     this.windowCount = 0;
   }
 
   /** The counters, for a copy or a keyframe. */
   save(): ZenoCounters {
-    return [this.sameTime, this.sameTimeCount, this.windowStart, this.windowCount];
+    return [
+      this.windowStart,
+      this.lastProgress,
+      this.runStart,
+      this.sameTimeCount + COUNT_SPLIT * this.windowCount,
+    ];
   }
 
   /** Restore counters taken by `save`. */
   load(c: readonly [number, number, number, number]): void {
-    [this.sameTime, this.sameTimeCount, this.windowStart, this.windowCount] = c;
+    [this.windowStart, this.lastProgress, this.runStart] = c;
+    this.sameTimeCount = c[3] % COUNT_SPLIT;
+    this.windowCount = (c[3] - this.sameTimeCount) / COUNT_SPLIT;
   }
 }

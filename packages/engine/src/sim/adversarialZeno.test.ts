@@ -1,0 +1,90 @@
+// Adversarial scenes for the Zeno watch through the World: dense but legitimate runs of events
+// that must pass, and states the exact model cannot pass that must be reported with a clear
+// message (never looped over).
+import { describe, expect, it } from "vitest";
+import { SimulationError } from "./errors.js";
+import { World } from "./world.js";
+
+function thrown(f: () => unknown): unknown {
+  try {
+    f();
+  } catch (e) {
+    return e;
+  }
+  return null;
+}
+
+/** A disc between a wall and an immovable disc moving at it (time of the crush: t0 + 7). */
+function crush(t0: number): World {
+  const w = new World({ g: 0, time: t0 });
+  w.addLine("wall", [0, -10], [0, 10], "line");
+  w.addBody("d", { x: 5, y: 0, r: 1, m: 1, vx: -10 });
+  w.addBody("p", { x: 10, y: 0, r: 1, m: Number.POSITIVE_INFINITY, vx: -1 });
+  return w;
+}
+
+describe("Zeno watch: legitimate dense runs pass", () => {
+  // Regression: the watch compared 200,000 events' progress with 1e-6 × |t|, so this steady rattle
+  // (1e7 events per second) was refused as a Zeno state once t > 2e4.
+  it("a disc rattling between walls 2.0001 r apart beside a moving immovable disc, at t = 1e5", () => {
+    const w = new World({ g: 0, time: 1e5 });
+    w.addLine("lo", [-10, 0], [10, 0], "line");
+    w.addLine("hi", [-10, 2.0001], [10, 2.0001], "line");
+    w.addBody("d", { x: 0, y: 1.00005, r: 1, m: 1, vy: 1e3 });
+    w.addBody("pump", { x: 1000, y: 1000, r: 1, m: Number.POSITIVE_INFINITY, vx: 1 });
+    expect(w.advance({ maxEvents: 1_000_000 })).toEqual({ events: 1_000_000, reason: "events" });
+    const d = w.body("d");
+    expect(Math.abs(d.vy)).toBe(1e3);
+    // Times near 1e5 are rounded to 2^-36: positions at speed 1e3 are known to 1e3 × 2^-36.
+    const slack = 1e3 * 2 ** -36;
+    expect(d.y).toBeGreaterThanOrEqual(1 - slack);
+    expect(d.y).toBeLessThanOrEqual(1.0001 + slack);
+  });
+
+  it("a Newton's cradle of 200 touching discs: 200 events at one instant, momentum passed on", () => {
+    const w = new World({ g: 0 });
+    for (let i = 0; i < 200; i++) w.addBody(`c${String(i).padStart(3, "0")}`, { x: 2 * i, y: 0, r: 1, m: 1 });
+    w.addBody("cue", { x: -10, y: 0, r: 1, m: 1, vx: 5 });
+    const times = new Set<number>();
+    expect(w.advance({}, (e) => times.add(e.time))).toEqual({ events: 200, reason: "idle" });
+    expect([...times]).toEqual([1.6]);
+    expect(w.body("c199").vx).toBe(5);
+    expect(
+      w
+        .bodies()
+        .filter((b) => b.vx !== 0)
+        .map((b) => b.id),
+    ).toEqual(["c199"]);
+  });
+});
+
+describe("Zeno watch: states the model cannot pass are reported", () => {
+  // Regression: the same crush converging on t = 0 instead of t = 7 ran 3e7 events and on (the
+  // window was compared with 1e-6 × |t|, and |t| shrinks with the window).
+  it("a disc crushed between a wall and a moving immovable disc, whatever the time origin", () => {
+    for (const t0 of [0, -7, 1e6]) {
+      const w = crush(t0);
+      let events = 0;
+      const e = thrown(() => w.advance({}, () => events++));
+      expect(e).toBeInstanceOf(SimulationError);
+      // Near t = 1e6 the intervals reach the rounding of t first: events at one instant.
+      expect((e as Error).message).toMatch(
+        t0 === 1e6 ? /at the same instant.*Zeno state/ : /events accumulate at a finite time/,
+      );
+      expect(events).toBeLessThan(4_000_000);
+      expect(w.time).toBeLessThan(t0 + 7);
+      expect(w.time).toBeGreaterThan(t0 + 6.999);
+    }
+  });
+
+  it("a disc at rest in a V of two lines under gravity: resting contact, named", () => {
+    // Slopes 3/4 so that the wedged position is exact: distance 4y/5 from both lines at y = 5/4.
+    const w = new World({ g: 0, gravity: [0, -10] });
+    w.addLine("left", [0, 0], [-8, 6], "segment");
+    w.addLine("right", [0, 0], [8, 6], "segment");
+    w.addBody("d", { x: 0, y: 1.25, r: 1, m: 1 });
+    const e = thrown(() => w.advance({ untilTime: 10 }));
+    expect(e).toBeInstanceOf(SimulationError);
+    expect((e as Error).message).toMatch(/body 'd' rests against 'left' under an acceleration at t=0/);
+  });
+});
