@@ -108,7 +108,7 @@ export class Edits extends Placement {
     b.mu[s] = mu;
     this.setMotion(s, t0, x0, y0, vx, vy);
     this.index.set(id, s);
-    this.grid.insert(s, this.cellAt(x, y));
+    this.placeInGrid(s, x, y);
     if (!this.dirty) this.predict(s);
   }
 
@@ -135,13 +135,14 @@ export class Edits extends Placement {
     b.m[s] = m;
     b.mu[s] = mu;
     this.setMotion(s, now, x, y, vx, vy);
-    this.grid.move(s, this.cellAt(x, y));
+    this.takeFromGrid(s);
+    this.placeInGrid(s, x, y);
     if (!this.dirty) this.predict(s);
   }
 
   removeBody(id: string): void {
     const s = this.slotOf(id);
-    this.grid.remove(s);
+    this.takeFromGrid(s);
     this.heap.remove(s);
     this.store.release(s);
     this.index.delete(id);

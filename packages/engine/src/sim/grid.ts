@@ -8,10 +8,16 @@
  * the event queue, whatever N is. Swept boxes need a time bound per box and re-insertion when it
  * expires, which costs more per event for the dilute gases this engine is built for.
  *
+ * A few discs far larger than the rest (big bodies, sim/state.ts) are kept out of the cells
+ * (cellOf = BIG_CELL) so that the cells stay sized for the others.
+ *
  * The outermost rows and columns extend to infinity, so a body leaving the region stays in an edge
  * cell and causes no more crossing events (a disc flying away for ever costs nothing). Cells are
  * doubly linked lists through per-slot arrays: insert, remove and move are O(1).
  */
+/** cellOf of a body too large for the cells: kept out of them, tested against every body (state.ts). */
+export const BIG_CELL = -2;
+
 export class Grid {
   ox = 0;
   oy = 0;

@@ -4,7 +4,7 @@
  * already there (touching is allowed), using the broad-phase grid for large scenes. Every check
  * throws ChapgameError naming the field before anything changes.
  */
-import { OVERLAP_REL } from "../tolerances.js";
+import { GRID_BIG_BODIES_MAX, OVERLAP_REL } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
 import { distanceToLine, type Line, type LineKind, makeLine, type Point } from "./obstacles.js";
 import { Simulator } from "./simulator.js";
@@ -45,13 +45,15 @@ export class Placement extends Simulator {
 
   /** Make sure the grid can answer overlap queries for a disc (x, y, r); rebuild it if not. */
   protected prepareGridFor(x: number, y: number, r: number): void {
+    // A disc too large for the cells may join the big bodies while there is room among them.
+    const tooLarge = r > this.gridMaxR && this.bigBodies.length >= GRID_BIG_BODIES_MAX;
     if (this.index.size < LINEAR_SCAN_BODIES) {
-      if (r > this.gridMaxR) this.rebuildGrid(x, y, r, 2);
+      if (tooLarge) this.rebuildGrid(x, y, r, 2);
       return;
     }
     const g = this.grid;
     const inside = x >= g.ox && x <= g.ox + g.nx * g.w && y >= g.oy && y <= g.oy + g.ny * g.w;
-    if (r > this.gridMaxR || !inside) this.rebuildGrid(x, y, r, 2);
+    if (tooLarge || !inside) this.rebuildGrid(x, y, r, 2);
   }
 
   /**
@@ -71,9 +73,11 @@ export class Placement extends Simulator {
       if (dx * dx + dy * dy < R * R)
         throw new ChapgameError("x", `the body would overlap body '${b.ids[s]}'`);
     };
-    if (this.index.size < LINEAR_SCAN_BODIES) {
+    // A disc larger than the cells can reach bodies beyond the 3x3 cells around it.
+    if (this.index.size < LINEAR_SCAN_BODIES || r > this.gridMaxR) {
       for (const s of this.index.values()) test(s);
     } else {
+      for (const s of this.bigBodies) test(s);
       const g = this.grid;
       const cx = g.column(x);
       const cy = g.row(y);

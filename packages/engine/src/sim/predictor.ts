@@ -8,6 +8,7 @@ import { positionAt, velocityAt } from "../physics/motion.js";
 import { discDiscTime, discLineCrossings } from "../physics/timeOfImpact.js";
 import { EV_BODY, EV_LINE, EV_NONE, EV_POINT, EV_STOP } from "./bodyStore.js";
 import { axisExit } from "./cellExit.js";
+import { BIG_CELL } from "./grid.js";
 import { type Line, lineParameter, type Point, parameterOnLine } from "./obstacles.js";
 import { SimState } from "./state.js";
 
@@ -245,6 +246,10 @@ export class Predictor extends SimState {
     if (tEnd < INF) this.offer(s, Math.max(tEnd, this.now), EV_STOP, -1, 0);
     const grid = this.grid;
     const cell = grid.cellOf[s] as number;
+    if (cell === BIG_CELL) {
+      this.predictBig(s, moving);
+      return;
+    }
     const cx = cell % grid.nx;
     const cy = (cell - cx) / grid.nx;
     this.stamp++;
@@ -257,9 +262,33 @@ export class Predictor extends SimState {
       }
     }
     if (moving) for (const i of this.globalLines) this.testLine(s, i);
+    for (const o of this.bigBodies) this.testBody(s, o, moving);
     b.crossTime[s] = moving && (grid.nx > 1 || grid.ny > 1) ? this.crossing(s, cx, cy) : INF;
     const key = Math.min(b.evTime[s] as number, b.crossTime[s] as number);
     this.heap.set(s, key);
+  }
+
+  /** Test body s (moving or not) against body o. */
+  protected testBody(s: number, o: number, moving: boolean): void {
+    if (o === s || (!moving && this.opt.restingSkip && !this.isMoving(o))) return;
+    const t = this.pairTime(s, o);
+    if (t !== INF) this.offer(s, t, EV_BODY, o, 0);
+  }
+
+  /** Predict a big body (state.ts): against every body and obstacle; it never crosses cells. */
+  private predictBig(s: number, moving: boolean): void {
+    const b = this.store;
+    for (let o = 0; o < b.slotCount; o++) if (b.ids[o] !== undefined) this.testBody(s, o, moving);
+    if (moving) {
+      for (let i = 0; i < this.lineList.length; i++) this.testLine(s, i);
+      for (let i = 0; i < this.pointList.length; i++) {
+        const p = this.pointList[i] as Point;
+        const t = this.pointTime(s, p.x, p.y);
+        if (t !== INF) this.offer(s, t, EV_POINT, i, 0);
+      }
+    }
+    b.crossTime[s] = INF;
+    this.heap.set(s, b.evTime[s] as number);
   }
 
   /** Test body s against line i: its interior, and the end points of rays and segments. */

@@ -6,10 +6,16 @@
  * Cell crossings never change a motion: the grid only decides which pairs are tested.
  */
 import { type MotionLaw, motionLaw, positionAt, velocityAt } from "../physics/motion.js";
-import { GRID_CELL_MARGIN, GRID_CELLS_PER_BODY, GRID_MIN_BODIES } from "../tolerances.js";
+import {
+  GRID_BIG_BODIES_MAX,
+  GRID_BIG_RATIO,
+  GRID_CELL_MARGIN,
+  GRID_CELLS_PER_BODY,
+  GRID_MIN_BODIES,
+} from "../tolerances.js";
 import { BodyStore, EV_BODY, EV_CROSS, EV_LINE, EV_POINT } from "./bodyStore.js";
 import { CalendarQueue } from "./calendarQueue.js";
-import { Grid } from "./grid.js";
+import { BIG_CELL, Grid } from "./grid.js";
 import type { Line, Point } from "./obstacles.js";
 import { rasterizeSegment } from "./rasterize.js";
 import type { EventCounts, Optimizations, Vec2, WorldEvent } from "./types.js";
@@ -35,8 +41,17 @@ export class SimState {
   /** Per obstacle: the prediction stamp that last tested it (avoids testing it twice per prediction). */
   protected obstStamp: Int32Array = new Int32Array(0);
   protected stamp = 0;
-  /** Largest radius the grid was built for; a larger body forces a rebuild. */
+  /**
+   * Largest radius the grid's cells were built for. A larger body is a big body (at most
+   * GRID_BIG_BODIES_MAX of them; more force a rebuild with larger cells).
+   */
   protected gridMaxR = 0;
+  /**
+   * Slots of the big bodies: kept out of the cells (grid.cellOf = BIG_CELL), each tested against every
+   * body and obstacle when predicted, and every body tests them, so that one disc of radius 100
+   * among thousands of radius 1 does not make every cell 100 times too large.
+   */
+  protected bigBodies: number[] = [];
   /** Predictions of all bodies must be recomputed before the next event (grid rebuilt, obstacles or globals changed). */
   protected dirty = true;
   readonly counts: EventCounts = { bodyBody: 0, bodyLine: 0, bodyPoint: 0, stop: 0 };
@@ -106,6 +121,7 @@ export class SimState {
     target.lineList = this.lineList.slice();
     target.pointList = this.pointList.slice();
     target.gridMaxR = this.gridMaxR;
+    target.bigBodies = this.bigBodies.slice();
     target.globalLines = this.globalLines;
     target.obstStamp = new Int32Array(this.obstStamp.length);
     target.dirty = this.dirty;
@@ -196,7 +212,7 @@ export class SimState {
   protected rebuildGrid(ex = Number.NaN, ey = Number.NaN, er = 0, slack = 1): void {
     const b = this.store;
     const extra = !Number.isNaN(ex);
-    let maxR = er * slack;
+    const radii: number[] = extra ? [er] : [];
     let minX = extra ? ex : INF;
     let minY = extra ? ey : INF;
     let maxX = extra ? ex : -INF;
@@ -207,7 +223,7 @@ export class SimState {
       n++;
       const x = this.xAt(s, this.now);
       const y = this.yAt(s, this.now);
-      maxR = Math.max(maxR, (b.r[s] as number) * slack);
+      radii.push(b.r[s] as number);
       minX = Math.min(minX, x);
       maxX = Math.max(maxX, x);
       minY = Math.min(minY, y);
@@ -219,7 +235,7 @@ export class SimState {
       this.grid.reset(0, 0, 1, 1, 1);
       this.gridMaxR = INF;
     } else {
-      let w = 2 * maxR * GRID_CELL_MARGIN;
+      let w = 2 * cellRadius(radii) * slack * GRID_CELL_MARGIN;
       // Leave room around the bodies so that edits nearby do not force a rebuild.
       const padX = slack > 1 ? Math.max(0.5 * slack * (maxX - minX), 2 * w) : 2 * w;
       const padY = slack > 1 ? Math.max(0.5 * slack * (maxY - minY), 2 * w) : 2 * w;
@@ -232,12 +248,29 @@ export class SimState {
       this.grid.reset(minX - padX, minY - padY, w, nx, ny);
       this.gridMaxR = w / (2 * GRID_CELL_MARGIN);
     }
+    this.bigBodies = [];
     for (let s = 0; s < b.slotCount; s++) {
       if (b.ids[s] === undefined) continue;
-      this.grid.insert(s, this.cellAt(this.xAt(s, this.now), this.yAt(s, this.now)));
+      this.placeInGrid(s, this.xAt(s, this.now), this.yAt(s, this.now));
     }
     this.rasterizeObstacles();
     this.dirty = true;
+  }
+
+  /** Put body s (not in the grid yet), now at (x, y), in its cell, or among the big bodies. */
+  protected placeInGrid(s: number, x: number, y: number): void {
+    if ((this.store.r[s] as number) > this.gridMaxR) {
+      this.grid.cellOf[s] = BIG_CELL;
+      this.bigBodies.push(s);
+    } else this.grid.insert(s, this.cellAt(x, y));
+  }
+
+  /** Take body s out of its cell or out of the big bodies. */
+  protected takeFromGrid(s: number): void {
+    if (this.grid.cellOf[s] === BIG_CELL) {
+      this.bigBodies.splice(this.bigBodies.indexOf(s), 1);
+      this.grid.cellOf[s] = -1;
+    } else this.grid.remove(s);
   }
 
   protected cellAt(x: number, y: number): number {
@@ -292,4 +325,17 @@ export class SimState {
     if (a2 !== c2) return a2 < c2;
     return (this.store.evAux[a] as number) < (this.store.evAux[c] as number);
   }
+}
+
+/**
+ * Radius the grid's cells are made for: the largest radius once the few largest are left out, when
+ * they are more than GRID_BIG_RATIO times the (GRID_BIG_BODIES_MAX + 1)-th largest (they become big
+ * bodies); else the largest radius.
+ */
+export function cellRadius(radii: number[]): number {
+  const sorted = radii.slice().sort((a, b) => b - a);
+  if (sorted.length <= GRID_BIG_BODIES_MAX) return sorted[0] ?? 0;
+  const limit = GRID_BIG_RATIO * (sorted[GRID_BIG_BODIES_MAX] as number);
+  for (const r of sorted) if (r <= limit) return r;
+  return sorted[0] as number;
 }
