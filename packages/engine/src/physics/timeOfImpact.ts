@@ -19,6 +19,7 @@
  *   disc–line:               h(tau) = ±s(tau) - r, s the signed distance to the line (degree <= 2)
  */
 
+import { APPROACH_NOISE } from "../tolerances.js";
 import { quarticContact } from "./farContact.js";
 import { firstDownCrossingQuartic } from "./quarticCrossing.js";
 
@@ -51,7 +52,9 @@ export function discDiscTime(
     // c1^2 - 4 uu c0 = 4 (uu R^2 - (d x u)^2) (Lagrange's identity), free of the cancellation of
     // two terms of size |d|^2 |u|^2 that loses every digit once the gap is ~1e8 contact distances.
     const cross = dx * uy - dy * ux;
-    return firstDownCrossingQuadratic(c0, c1, uu, lo, hi, true, 4 * (uu * R * R - cross * cross));
+    // Rounding of c1 = 2 d.u: an approach below it is a graze (see APPROACH_NOISE).
+    const noise = APPROACH_NOISE * (Math.abs(dx * ux) + Math.abs(dy * uy));
+    return firstDownCrossingQuadratic(c0, c1, uu, lo, hi, true, 4 * (uu * R * R - cross * cross), noise);
   }
   return quarticContact(dx, dy, ux, uy, wx, wy, R, lo, hi);
 }
@@ -61,7 +64,10 @@ export function discDiscTime(
  * and h is decreasing there (or resting with h'' < 0) and `immediate` is true, the contact is under
  * way: its downward root (at or before lo up to rounding; the caller clamps), or lo when h has no
  * root. Roots use the cancellation-free closed form; `discriminant`, when given, is c1^2 - 4 c2 c0
- * computed by the caller in a form that does not cancel.
+ * computed by the caller in a form that does not cancel. A touching pair whose h'(lo) is negative
+ * by no more than `noise` (the rounding of h' the caller bounds) does not count as approaching,
+ * unless an acceleration presses it in (c2 < 0): its response could not tell that approach from
+ * none, and the same contact would be found again at once for ever (a Zeno state in no time).
  */
 export function firstDownCrossingQuadratic(
   c0: number,
@@ -71,13 +77,16 @@ export function firstDownCrossingQuadratic(
   hi: number,
   immediate = true,
   discriminant = Number.NaN,
+  noise = 0,
 ): number {
   if (!(lo <= hi)) return Number.POSITIVE_INFINITY;
   const hLo = c0 + lo * (c1 + lo * c2);
   const dLo = c1 + 2 * c2 * lo;
   // Touching and approaching (or resting under an acceleration into the contact) at lo.
-  if (hLo <= 0 && immediate && (dLo < 0 || (dLo === 0 && c2 < 0)))
+  if (hLo <= 0 && immediate && (dLo < -noise || (dLo <= 0 && c2 < 0)))
     return quadraticUnderWay(c0, c1, c2, lo, hi, discriminant);
+  // Touching and approaching by no more than the noise, with nothing pressing it in: a graze.
+  if (hLo <= 0 && immediate && dLo <= 0 && c2 >= 0) return Number.POSITIVE_INFINITY;
   // Convex and not decreasing at lo: it never comes down again (the common, cheap rejection).
   if (c2 >= 0 && dLo >= 0) return Number.POSITIVE_INFINITY;
   if (c2 === 0) {
@@ -102,7 +111,7 @@ export function firstDownCrossingQuadratic(
   if (down < lo) {
     // Past the crossing already: a round-off overlap. Approaching now means the contact is under
     // way since the crossing (the caller clamps it to now).
-    return dLo < 0 && immediate ? down : Number.POSITIVE_INFINITY;
+    return dLo < -noise && immediate ? down : Number.POSITIVE_INFINITY;
   }
   if (disc === 0) return Number.POSITIVE_INFINITY; // tangency without crossing: a graze, no impulse
   return down <= hi ? down : Number.POSITIVE_INFINITY;
@@ -162,6 +171,9 @@ export function discLineCrossings(
   // Positive side: h+ = s - r; negative side: h- = -s - r. Only the side the centre is on now can
   // be in contact now; the other side can only be reached later (around the end of a segment).
   const positive = s0 + lo * (s1 + lo * s2) >= 0;
-  out[0] = firstDownCrossingQuadratic(s0 - r, s1, s2, lo, hi, positive);
-  out[1] = firstDownCrossingQuadratic(-s0 - r, -s1, -s2, lo, hi, !positive);
+  // Rounding of h'(lo) = s1 + 2 s2 lo: an approach below it is a graze (see APPROACH_NOISE).
+  const noise =
+    APPROACH_NOISE * (Math.abs(nx * vx) + Math.abs(ny * vy) + lo * (Math.abs(nx * ax) + Math.abs(ny * ay)));
+  out[0] = firstDownCrossingQuadratic(s0 - r, s1, s2, lo, hi, positive, Number.NaN, noise);
+  out[1] = firstDownCrossingQuadratic(-s0 - r, -s1, -s2, lo, hi, !positive, Number.NaN, noise);
 }
