@@ -6,6 +6,7 @@
  * - reference: the fast engine against the tests' all-pairs reference simulator (reference.mjs).
  * - ablations (ablations.mjs, one process per configuration): each World `optimizations` switch
  *   off in turn, on the scene where it should matter; same events (checked), time ratio off/on.
+ * - mixedRadii (mixedRadii.mjs): a gas of 10,000 discs around one disc of radius 1 to 100.
  * - timeline: stateAt latency and history bytes per event, when the engine exports Timeline.
  */
 
@@ -15,6 +16,7 @@ import { buildWorld } from "../peers/chapgame.mjs";
 import { galperin } from "../scenes/galperin.mjs";
 import { gas } from "../scenes/gas.mjs";
 import { ablations } from "./ablations.mjs";
+import { mixedRadii } from "./mixedRadii.mjs";
 import { againstReference } from "./reference.mjs";
 import { scaling } from "./scaling.mjs";
 
@@ -144,6 +146,7 @@ export async function runEngine(ctx) {
   out.galperin7 = galperinRun(ctx, 7);
   out.reference = await againstReference(ctx);
   out.ablations = ablations(ctx);
+  out.mixedRadii = mixedRadii(ctx);
   out.timeline = timeline(ctx);
   return out;
 }

@@ -6,6 +6,7 @@
  */
 import { ablationsBlock } from "./ablations.mjs";
 import { galperinTarget, int, ms, numberWord, sig, status, table } from "./format.mjs";
+import { mixedRadiiBlock } from "./mixedRadii.mjs";
 import { plot } from "./svg.mjs";
 import { timelineBlock } from "./timeline.mjs";
 
@@ -126,6 +127,7 @@ export function engineSection(e, out, svgs) {
   });
   out.push("![scaling](bench/scaling.svg)\n");
   ablationsBlock(e, out);
+  mixedRadiiBlock(e, out);
   const ref = e.reference;
   out.push("### Against the all-pairs reference simulator\n");
   out.push(
