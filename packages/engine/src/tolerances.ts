@@ -188,14 +188,15 @@ export const GRID_BIG_BODIES_MAX = 8;
 export const GRID_BIG_RATIO = 2;
 
 /**
- * A touching pair (disc–disc, disc–point with no relative acceleration; disc–line) counts as
- * approaching only when its gap shrinks faster than APPROACH_NOISE times the sum of the magnitudes
- * of the products that make up the rate (physics/timeOfImpact.ts): 16 roundings, well above the few
+ * A touching pair (disc–disc, disc–point, disc–line) counts as approaching only when its gap
+ * shrinks faster than APPROACH_NOISE times the sum of the magnitudes of the products that make up
+ * the rate (physics/timeOfImpact.ts, physics/farContact.ts): 16 roundings, well above the few
  * a dot product and the response make. Below that the sign of the rate is rounding noise; the
  * response (its own rounding) then found no approach, or a change below one ulp of the velocities,
  * and the same contact was found again at once, for ever: a disc sliding along a tilted line was
  * reported as a Zeno state in 27 of 200 slopes, and a cue ball breaking a 20 × 20 rack of touching
- * discs cycled on one pair with an impulse of 3.5e-19 (review). A graze below it lets a pair close
+ * discs cycled on one pair with an impulse of 3.5e-19, and under friction a 12 × 12 one with an
+ * impulse of 0 (review). A graze below it lets a pair close
  * by at most that rate: 16 u of the speed, 2e-15 of the distance travelled.
  */
 export const APPROACH_NOISE = 16 * UNIT_ROUNDOFF;

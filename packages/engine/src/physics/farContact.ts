@@ -24,7 +24,7 @@
  * a far contact's place.
  */
 
-import { FAR_CONTACT_REACH } from "../tolerances.js";
+import { APPROACH_NOISE, FAR_CONTACT_REACH } from "../tolerances.js";
 import { farWindows } from "./farWindow.js";
 import { firstDownCrossingQuartic } from "./quarticCrossing.js";
 
@@ -52,7 +52,15 @@ export function quarticContact(
   const n = farWindows(dx, dy, ux, uy, wx, wy, R, 0, hi, windows);
   if (n === 0) return INF;
   let near = nearReach(dx, dy, ux, uy, wx, wy, FAR_CONTACT_REACH * R, hi);
-  if (near >= hi) return firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, hi);
+  // Rounding of the gap's rate at lo (APPROACH_NOISE): a touching pair approaching by less grazes.
+  const l = Math.max(lo, 0);
+  const noise =
+    APPROACH_NOISE *
+    (2 * (Math.abs(dx * ux) + Math.abs(dy * uy)) +
+      l *
+        (2 * (ux * ux + uy * uy + Math.abs(dx * wx) + Math.abs(dy * wy)) +
+          l * (3 * (Math.abs(ux * wx) + Math.abs(uy * wy)) + l * 4 * c4)));
+  if (near >= hi) return firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, hi, noise);
   let i = 0;
   while (i < n && (windows[2 * i + 1] as number) < near) i++; // wholly in the near part
   if (i < n && (windows[2 * i] as number) <= near) {
@@ -63,7 +71,7 @@ export function quarticContact(
     i++;
   }
   if (lo <= near) {
-    const t = firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, near);
+    const t = firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, near, noise);
     if (t !== INF) return t;
   }
   // The far windows, in order: the gap re-expanded about the window's start a, where its terms are

@@ -85,4 +85,30 @@ describe("approaches below the rounding noise are grazes", () => {
       }
     expect(run(true)).toEqual(a);
   });
+
+  // Regression: with friction (the quartic gap) the break of a 12 x 12 rack cycled on one pair at
+  // t = 3.99 with impulse 0 until "more than 9281 events at the same instant".
+  it("a cue ball breaking a 12 x 12 rack of touching discs under friction", () => {
+    const w = new World({ g: 1 });
+    for (let j = 0; j < 12; j++)
+      for (let i = 0; i < 12; i++)
+        w.addBody(`k${String(j).padStart(2, "0")}_${String(i).padStart(2, "0")}`, {
+          x: 6 * i + 3 * j,
+          y: 4 * j,
+          r: 2.5,
+          m: 1 + ((i * 7 + j * 3) % 4),
+          mu: 0.1,
+        });
+    w.addBody("cue", { x: -20, y: 24.5, r: 2.5, m: 2, mu: 0.1, vx: 10 });
+    const r = w.advance({ untilTime: 200 });
+    expect(r.reason).toBe("idle");
+    const bodies = w.bodies();
+    expect(bodies.every((b) => b.vx === 0 && b.vy === 0)).toBe(true);
+    for (let i = 0; i < bodies.length; i++)
+      for (let j = i + 1; j < bodies.length; j++) {
+        const p = bodies[i]!;
+        const q = bodies[j]!;
+        expect(Math.hypot(p.x - q.x, p.y - q.y)).toBeGreaterThan(5 * (1 - 1e-12));
+      }
+  });
 });
