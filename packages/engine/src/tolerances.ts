@@ -152,10 +152,10 @@ export const SIMULTANEOUS_EVENTS_PER_BODY = 64;
 /**
  * Zeno watch over runs of events, active while an immovable (infinite-mass) body moves (without one,
  * elastic and frictional collisions cannot feed energy in, so events cannot converge on a finite
- * time): every ZENO_WINDOW_EVENTS events (at least; ZENO_WINDOW_EVENTS_PER_BODY per body in large
- * scenes) time must have advanced by more than ZENO_MIN_PROGRESS relative to |t| (no unit of time:
- * the same scene in other units gives the same verdict). A disc crushed between an immovable disc
- * and a wall fails it within about a million events.
+ * time): events are counted in windows of ZENO_WINDOW_EVENTS (at least; ZENO_WINDOW_EVENTS_PER_BODY
+ * per body in large scenes), and the windows' durations are compared with each other (ZENO_SHRINK,
+ * ZENO_STREAK_PROGRESS below). ZENO_MIN_PROGRESS was the earlier rule's bound on a window's progress
+ * relative to |t|; nothing uses it now, and it stays exported because it is public.
  */
 export const ZENO_WINDOW_EVENTS = 200_000;
 export const ZENO_WINDOW_EVENTS_PER_BODY = 20;

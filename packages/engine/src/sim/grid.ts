@@ -13,8 +13,11 @@
  *
  * The outermost rows and columns extend to infinity, so a body leaving the region stays in an edge
  * cell and causes no more crossing events (a disc flying away for ever costs nothing). Cells are
- * doubly linked lists through per-slot arrays: insert, remove and move are O(1).
+ * doubly linked lists through per-slot arrays: insert, remove and move are O(1). `cellRadius` picks
+ * the radius the cells are sized for, and so which bodies are big.
  */
+import { GRID_BIG_BODIES_MAX, GRID_BIG_RATIO } from "../tolerances.js";
+
 /** cellOf of a body too large for the cells: kept out of them, tested against every body (state.ts). */
 export const BIG_CELL = -2;
 
@@ -161,4 +164,17 @@ export class Grid {
     g.obstList = this.obstList;
     return g;
   }
+}
+
+/**
+ * Radius the grid's cells are made for: the largest radius once the few largest are left out, when
+ * they are more than GRID_BIG_RATIO times the (GRID_BIG_BODIES_MAX + 1)-th largest (they become big
+ * bodies); else the largest radius.
+ */
+export function cellRadius(radii: number[]): number {
+  const sorted = radii.slice().sort((a, b) => b - a);
+  if (sorted.length <= GRID_BIG_BODIES_MAX) return sorted[0] ?? 0;
+  const limit = GRID_BIG_RATIO * (sorted[GRID_BIG_BODIES_MAX] as number);
+  for (const r of sorted) if (r <= limit) return r;
+  return sorted[0] as number;
 }

@@ -1,25 +1,23 @@
 /**
  * Prediction: what each body runs into next. Each body holds its earliest predicted interaction
- * (collision or stop) and its next cell crossing; the heap key is the earlier of the two. Every pair
- * prediction is a pure function of the two motions (solved from the later of their start times),
- * so it gives the same bits whenever and from whichever side it is computed.
+ * (collision or stop) and its next cell crossing; the heap key is the earlier of the two. The
+ * contact times come from contactTimes.ts, functions of the motions alone; ties at one time are
+ * broken in a canonical order (ids), so the prediction does not depend on the order bodies were
+ * added or tested.
  */
-import { positionAt, velocityAt } from "../physics/motion.js";
-import { discDiscTime, discLineCrossings } from "../physics/timeOfImpact.js";
 import { EV_BODY, EV_LINE, EV_NONE, EV_POINT, EV_STOP } from "./bodyStore.js";
 import { axisExit } from "./cellExit.js";
+import { ContactTimes } from "./contactTimes.js";
 import { BIG_CELL } from "./grid.js";
-import { type Line, lineParameter, type Point, parameterOnLine } from "./obstacles.js";
-import { SimState } from "./state.js";
+import type { Line, Point } from "./obstacles.js";
 
 const INF = Number.POSITIVE_INFINITY;
-const sides = new Float64Array(2);
 const side = new Float64Array(1);
 
 function idLess(a: string, b: string): boolean {
   return a < b;
 }
-export class Predictor extends SimState {
+export class Predictor extends ContactTimes {
   /** Recompute every body's predictions (after a rebuild or a change of obstacles or globals). */
   protected predictAll(): void {
     const b = this.store;
@@ -28,165 +26,6 @@ export class Predictor extends SimState {
   }
 
   // ---- prediction ---------------------------------------------------------------------------
-
-  /**
-   * Earliest contact time of bodies s and o, or +Infinity. The result is symmetric (it depends
-   * only on the two motions), so the last pair solved is remembered: after a collision both
-   * participants are re-predicted and the second would solve the same pair again.
-   */
-  protected pairTime(s: number, o: number): number {
-    const b = this.store;
-    const vs = b.version[s] as number;
-    const vo = b.version[o] as number;
-    if (
-      o === this.memoS &&
-      s === this.memoO &&
-      vo === this.memoVS &&
-      vs === this.memoVO &&
-      this.now === this.memoTime
-    )
-      return this.memoResult;
-    const t = this.solvePair(s, o);
-    this.memoS = s;
-    this.memoO = o;
-    this.memoVS = vs;
-    this.memoVO = vo;
-    this.memoTime = this.now;
-    this.memoResult = t;
-    return t;
-  }
-
-  private memoS = -1;
-  private memoO = -1;
-  private memoVS = -1;
-  private memoVO = -1;
-  private memoTime = Number.NaN;
-  private memoResult = INF;
-
-  private solvePair(s: number, o: number): number {
-    const b = this.store;
-    const ts = b.mot[s * 8 + 0] as number;
-    const to = b.mot[o * 8 + 0] as number;
-    const ends = b.mot[s * 8 + 7] as number;
-    const endo = b.mot[o * 8 + 7] as number;
-    // Path boxes are finite only for motions that end (friction) or rest: when s's box is
-    // unbounded the boxes cannot be disjoint, and the partner's box is not even loaded.
-    if (this.opt.pathBounds && (b.boxMaxX[s] as number) < INF) {
-      if (
-        (b.boxMinX[s] as number) > (b.boxMaxX[o] as number) ||
-        (b.boxMinX[o] as number) > (b.boxMaxX[s] as number) ||
-        (b.boxMinY[s] as number) > (b.boxMaxY[o] as number) ||
-        (b.boxMinY[o] as number) > (b.boxMaxY[s] as number)
-      )
-        return INF;
-    }
-    const tb = Math.max(ts, to);
-    const hi = Math.min(ends, endo) - tb;
-    const axs = b.mot[s * 8 + 5] as number;
-    const ays = b.mot[s * 8 + 6] as number;
-    const axo = b.mot[o * 8 + 5] as number;
-    const ayo = b.mot[o * 8 + 6] as number;
-    const dx =
-      positionAt(to, b.mot[o * 8 + 1] as number, b.mot[o * 8 + 3] as number, axo, tb) -
-      positionAt(ts, b.mot[s * 8 + 1] as number, b.mot[s * 8 + 3] as number, axs, tb);
-    const dy =
-      positionAt(to, b.mot[o * 8 + 2] as number, b.mot[o * 8 + 4] as number, ayo, tb) -
-      positionAt(ts, b.mot[s * 8 + 2] as number, b.mot[s * 8 + 4] as number, ays, tb);
-    const ux =
-      velocityAt(to, b.mot[o * 8 + 3] as number, axo, tb) -
-      velocityAt(ts, b.mot[s * 8 + 3] as number, axs, tb);
-    const uy =
-      velocityAt(to, b.mot[o * 8 + 4] as number, ayo, tb) -
-      velocityAt(ts, b.mot[s * 8 + 4] as number, ays, tb);
-    // Cheap rejection before any solve: with no relative acceleration a receding pair never meets.
-    if (axo === axs && ayo === ays && dx * ux + dy * uy >= 0 && this.opt.quadraticFastPath) return INF;
-    const R = (b.r[s] as number) + (b.r[o] as number);
-    const tau = discDiscTime(
-      dx,
-      dy,
-      ux,
-      uy,
-      axo - axs,
-      ayo - ays,
-      R,
-      this.now - tb,
-      hi,
-      this.opt.quadraticFastPath,
-    );
-    if (tau === INF) return INF;
-    const t = tb + tau;
-    return Math.max(t, this.now);
-  }
-
-  /** Earliest contact of body s with a point at (px, py), or +Infinity. */
-  protected pointTime(s: number, px: number, py: number): number {
-    const b = this.store;
-    const t0 = b.mot[s * 8 + 0] as number;
-    const tau = discDiscTime(
-      (b.mot[s * 8 + 1] as number) - px,
-      (b.mot[s * 8 + 2] as number) - py,
-      b.mot[s * 8 + 3] as number,
-      b.mot[s * 8 + 4] as number,
-      b.mot[s * 8 + 5] as number,
-      b.mot[s * 8 + 6] as number,
-      b.r[s] as number,
-      this.now - t0,
-      (b.mot[s * 8 + 7] as number) - t0,
-      this.opt.quadraticFastPath,
-    );
-    if (tau === INF) return INF;
-    const t = t0 + tau;
-    return Math.max(t, this.now);
-  }
-
-  /**
-   * Earliest contact of body s with the line (its interior for rays and segments; their end points
-   * are tested as points). Returns the time, or +Infinity.
-   */
-  protected lineTime(s: number, line: Line): number {
-    const b = this.store;
-    const t0 = b.mot[s * 8 + 0] as number;
-    const lo = this.now - t0;
-    const hi = (b.mot[s * 8 + 7] as number) - t0;
-    const x0 = b.mot[s * 8 + 1] as number;
-    const y0 = b.mot[s * 8 + 2] as number;
-    const vx = b.mot[s * 8 + 3] as number;
-    const vy = b.mot[s * 8 + 4] as number;
-    const ax = b.mot[s * 8 + 5] as number;
-    const ay = b.mot[s * 8 + 6] as number;
-    discLineCrossings(
-      x0,
-      y0,
-      vx,
-      vy,
-      ax,
-      ay,
-      line.x1,
-      line.y1,
-      line.nx,
-      line.ny,
-      b.r[s] as number,
-      lo,
-      hi,
-      sides,
-    );
-    let best = INF;
-    for (let k = 0; k < 2; k++) {
-      const tau = sides[k] as number;
-      if (tau >= best) continue;
-      if (line.kind !== "line") {
-        // Where the disc is at the contact: a contact under way is now (its crossing of the
-        // infinite line may lie long before, beyond the end of a ray or segment).
-        const tc = Math.max(tau, lo);
-        const lambda = lineParameter(line, x0 + tc * (vx + 0.5 * ax * tc), y0 + tc * (vy + 0.5 * ay * tc));
-        if (!parameterOnLine(line.kind, lambda)) continue;
-      }
-      best = tau;
-    }
-    if (best === INF) return INF;
-    const t = t0 + best;
-    return Math.max(t, this.now);
-  }
 
   /** Whether candidate (kind k1, other o1) comes before (k2, o2) for body s at the same time. */
   protected candidateLess(k1: number, o1: number, a1: number, k2: number, o2: number, a2: number): boolean {

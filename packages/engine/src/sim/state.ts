@@ -6,16 +6,10 @@
  * Cell crossings never change a motion: the grid only decides which pairs are tested.
  */
 import { type MotionLaw, motionLaw, positionAt, velocityAt } from "../physics/motion.js";
-import {
-  GRID_BIG_BODIES_MAX,
-  GRID_BIG_RATIO,
-  GRID_CELL_MARGIN,
-  GRID_CELLS_PER_BODY,
-  GRID_MIN_BODIES,
-} from "../tolerances.js";
+import { GRID_CELL_MARGIN, GRID_CELLS_PER_BODY, GRID_MIN_BODIES } from "../tolerances.js";
 import { BodyStore, EV_BODY, EV_CROSS, EV_LINE, EV_POINT } from "./bodyStore.js";
 import { CalendarQueue } from "./calendarQueue.js";
-import { BIG_CELL, Grid } from "./grid.js";
+import { BIG_CELL, cellRadius, Grid } from "./grid.js";
 import type { Line, Point } from "./obstacles.js";
 import { rasterizeSegment } from "./rasterize.js";
 import type { EventCounts, Optimizations, Vec2, WorldEvent } from "./types.js";
@@ -325,17 +319,4 @@ export class SimState {
     if (a2 !== c2) return a2 < c2;
     return (this.store.evAux[a] as number) < (this.store.evAux[c] as number);
   }
-}
-
-/**
- * Radius the grid's cells are made for: the largest radius once the few largest are left out, when
- * they are more than GRID_BIG_RATIO times the (GRID_BIG_BODIES_MAX + 1)-th largest (they become big
- * bodies); else the largest radius.
- */
-export function cellRadius(radii: number[]): number {
-  const sorted = radii.slice().sort((a, b) => b - a);
-  if (sorted.length <= GRID_BIG_BODIES_MAX) return sorted[0] ?? 0;
-  const limit = GRID_BIG_RATIO * (sorted[GRID_BIG_BODIES_MAX] as number);
-  for (const r of sorted) if (r <= limit) return r;
-  return sorted[0] as number;
 }

@@ -12,6 +12,7 @@ import { Edits } from "./edits.js";
 import { ChapgameError } from "./errors.js";
 import type { AdvanceLimits, AdvanceResult, BodyState, WorldEvent, WorldOptions } from "./types.js";
 import { requireFieldRate, requireFields, requireFinite, requireGravity } from "./validate.js";
+import type { ZenoCounters } from "./zenoWatch.js";
 
 const INF = Number.POSITIVE_INFINITY;
 
@@ -54,12 +55,12 @@ export class World extends Edits {
   }
 
   /** @internal The Zeno watch's counters (for Timeline keyframes, which restore them exactly). */
-  zenoWatch(): [number, number, number, number] {
+  zenoWatch(): ZenoCounters {
     return this.zeno.save();
   }
 
   /** @internal Restore counters taken by zenoWatch(). */
-  setZenoWatch(w: readonly [number, number, number, number]): void {
+  setZenoWatch(w: Readonly<ZenoCounters>): void {
     this.zeno.load(w);
   }
 

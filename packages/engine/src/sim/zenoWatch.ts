@@ -98,7 +98,7 @@ export class ZenoWatch {
   }
 
   /** Restore counters taken by `save`. */
-  load(c: readonly [number, number, number, number]): void {
+  load(c: Readonly<ZenoCounters>): void {
     [this.windowStart, this.lastProgress, this.runStart] = c;
     this.sameTimeCount = c[3] % COUNT_SPLIT;
     this.windowCount = (c[3] - this.sameTimeCount) / COUNT_SPLIT;

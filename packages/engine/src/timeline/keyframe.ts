@@ -9,6 +9,7 @@
 import type { Vec2 } from "../scene/types.js";
 import type { LineState, PointState } from "../sim/types.js";
 import { World } from "../sim/world.js";
+import type { ZenoCounters } from "../sim/zenoWatch.js";
 import { type MotionTable, STRIDE } from "./motionTable.js";
 import type { TimelineCounts } from "./types.js";
 
@@ -46,7 +47,7 @@ export interface Keyframe {
   pointNums: Map<string, number>;
   /** the World's Zeno watch counters (World.zenoWatch), so a restart detects a Zeno state at the
    *  same event as the uninterrupted computation */
-  zeno: readonly [number, number, number, number];
+  zeno: Readonly<ZenoCounters>;
 }
 
 /** Numbers per body in Keyframe.motions. */
