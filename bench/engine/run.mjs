@@ -2,7 +2,8 @@
  * Section "engine": chapgame alone.
  * - scaling (scaling.mjs, one process per N): events/s of the dilute gas against N, the cost
  *   ratio N = 1e5 vs 1e3 and events/s at N = 1e4, beside the stripped JS and WebAssembly loops.
- * - galperin7: Galperin's billiard with 7 digits run to idle (target < 2 s, 3,141,592 collisions).
+ * - galperin7 (galperin7.mjs, fresh processes): Galperin's billiard with 7 digits run to idle
+ *   (target < 2 s, 3,141,592 collisions).
  * - reference: the fast engine against the tests' all-pairs reference simulator (reference.mjs).
  * - ablations (ablations.mjs, one process per configuration): each World `optimizations` switch
  *   off in turn, on the scene where it should matter; same events (checked), time ratio off/on.
@@ -11,54 +12,14 @@
  */
 
 import { lcg } from "../lib/lcg.mjs";
-import { median, nowNs, timedRuns } from "../lib/timing.mjs";
-import { buildWorld } from "../peers/chapgame.mjs";
-import { galperin } from "../scenes/galperin.mjs";
+import { nowNs } from "../lib/timing.mjs";
 import { gas } from "../scenes/gas.mjs";
 import { ablations } from "./ablations.mjs";
+import { galperinRun } from "./galperin7.mjs";
 import { mixedRadii } from "./mixedRadii.mjs";
+
 import { againstReference } from "./reference.mjs";
 import { scaling } from "./scaling.mjs";
-
-const collisions = (c) => c.bodyBody + c.bodyLine + c.bodyPoint;
-
-/** Issue 2's target for Galperin's billiard at 7 digits: the exact count in under this many seconds. */
-export const GALPERIN7_TARGET_SECONDS = 2;
-
-export function galperinRun({ quick, engine, log }, digits) {
-  const scene = galperin(digits, { span: 1e9 });
-  try {
-    const once = () => {
-      const world = buildWorld(engine, scene);
-      const a = nowNs();
-      world.advance({});
-      const ns = nowNs() - a;
-      return { ns, count: collisions(world.counts), world };
-    };
-    buildWorld(engine, galperin(5)).advance({}); // warm-up (JIT) on a smaller count
-    const first = once();
-    const t = quick
-      ? { medianNs: first.ns, runs: 0 }
-      : timedRuns(() => once().ns, { runs: 2, budgetNs: 20e9 });
-    const all = quick ? [first.ns] : [first.ns, ...t.allNs];
-    t.medianNs = median(all);
-    const b = first.world.bodies();
-    log(`  galperin ${digits}: ${first.count} collisions in ${(t.medianNs / 1e9).toFixed(3)} s`);
-    return {
-      digits,
-      expected: scene.exact.collisions,
-      count: first.count,
-      correct: first.count === scene.exact.collisions,
-      seconds: t.medianNs / 1e9,
-      targetSeconds: GALPERIN7_TARGET_SECONDS,
-      runs: all.length,
-      final: b.map((s) => ({ id: s.id, vx: s.vx })),
-    };
-  } catch (e) {
-    log(`  galperin ${digits}: ERROR ${e.message}`);
-    return { digits, expected: scene.exact.collisions, error: String(e.message ?? e) };
-  }
-}
 
 export function timeline({ quick, engine, log }) {
   if (typeof engine.Timeline !== "function")

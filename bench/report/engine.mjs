@@ -105,7 +105,7 @@ export function engineSection(e, out, svgs) {
   if (g.error) out.push(`- Galperin's billiard, 7 digits: error: ${g.error}.`);
   else
     out.push(
-      `- Galperin's billiard, 7 digits: ${int(g.count)} collisions (exact ${int(g.expected)}${g.correct ? ", correct" : ", WRONG"}) in ${sig(g.seconds)} s (target < ${galperinTarget(g)} s): ${status(g.correct && g.seconds < galperinTarget(g))}.`,
+      `- Galperin's billiard, 7 digits: ${int(g.count)} collisions (exact ${int(g.expected)}${g.correct ? ", correct" : ", WRONG"}) in ${sig(g.seconds)} s${g.secondsPerProcess ? ` (median of ${numberWord(g.secondsPerProcess.length)} fresh process${g.secondsPerProcess.length === 1 ? "" : "es"}, each warmed up on 5 digits: ${g.secondsPerProcess.map((x) => sig(x)).join(", ")} s)` : ""} (target < ${galperinTarget(g)} s): ${status(g.correct && g.seconds < galperinTarget(g))}.`,
     );
   out.push("");
   const ok = sc.rows.filter((r) => !r.error);
