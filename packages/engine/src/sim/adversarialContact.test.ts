@@ -5,6 +5,7 @@
 import { describe, expect, it } from "vitest";
 import type { SceneSpec } from "../../test/referenceWorld.js";
 import { shuffledOrder, worldFromSpec } from "../../test/worldFromSpec.js";
+import { totals } from "./testSupport.js";
 import type { BodyState, WorldEvent } from "./types.js";
 
 type Body = SceneSpec["bodies"][number];
@@ -63,14 +64,7 @@ describe("simultaneous contacts", () => {
       [4 - Math.sqrt(3), "cue", "p"],
       [4 - Math.sqrt(3), "cue", "q"],
     ]);
-    let energy = 0;
-    let px = 0;
-    let py = 0;
-    for (const s of a.bodies) {
-      energy += 0.5 * s.m * (s.vx * s.vx + s.vy * s.vy);
-      px += s.m * s.vx;
-      py += s.m * s.vy;
-    }
+    const { energy, px, py } = totals(a.bodies);
     expect(Math.abs(energy - 0.5)).toBeLessThan(1e-15);
     expect(Math.abs(px - 1)).toBeLessThan(1e-15);
     expect(Math.abs(py)).toBeLessThan(1e-15);

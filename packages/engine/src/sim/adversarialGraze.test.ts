@@ -4,6 +4,7 @@
 // ever, and reported as a Zeno state. Now such a contact is a graze (APPROACH_NOISE).
 import { describe, expect, it } from "vitest";
 import { firstDownCrossingQuadratic } from "../physics/timeOfImpact.js";
+import { totals } from "./testSupport.js";
 import { World } from "./world.js";
 
 describe("approaches below the rounding noise are grazes", () => {
@@ -70,14 +71,7 @@ describe("approaches below the rounding noise are grazes", () => {
     };
     const a = run(false);
     expect(a.r.reason).toBe("time");
-    let energy = 0;
-    let px = 0;
-    let py = 0;
-    for (const s of a.bodies) {
-      energy += 0.5 * s.m * (s.vx * s.vx + s.vy * s.vy);
-      px += s.m * s.vx;
-      py += s.m * s.vy;
-    }
+    const { energy, px, py } = totals(a.bodies);
     expect(Math.abs(energy - 100) / 100).toBeLessThan(1e-13);
     expect(Math.abs(px - 20) / 20).toBeLessThan(1e-13);
     expect(Math.abs(py) / 20).toBeLessThan(1e-13);
