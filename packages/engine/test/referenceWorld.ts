@@ -6,7 +6,7 @@
  */
 import { motionLaw, positionAt, velocityAt } from "../src/physics/motion.js";
 import { discDiscResponse, reflectResponse } from "../src/physics/response.js";
-import { discDiscTime, discLineCrossings } from "../src/physics/timeOfImpact.js";
+import { discDiscTime, discDiscTimeScaled, discLineCrossings } from "../src/physics/timeOfImpact.js";
 import { type Line, lineParameter, makeLine, parameterOnLine } from "../src/sim/obstacles.js";
 import type { EventKind, Vec2 } from "../src/sim/types.js";
 
@@ -107,7 +107,7 @@ export class ReferenceWorld {
     const [vxs, vys] = this.velo(s, tb);
     const [vxo, vyo] = this.velo(o, tb);
     const hi = Math.min(s.tEnd, o.tEnd) - tb;
-    const tau = discDiscTime(
+    const tau = discDiscTimeScaled(
       xo - xs,
       yo - ys,
       vxo - vxs,
@@ -117,6 +117,9 @@ export class ReferenceWorld {
       s.r + o.r,
       this.time - tb,
       hi,
+      true,
+      Math.abs(vxs) + Math.abs(vys) + Math.abs(vxo) + Math.abs(vyo),
+      Math.abs(s.ax) + Math.abs(s.ay) + Math.abs(o.ax) + Math.abs(o.ay),
     );
     return tau === INF ? INF : Math.max(this.time, tb + tau);
   }

@@ -16,7 +16,8 @@ const roots: number[] = [];
  * First tau in [lo, hi] where c0 + c1 t + c2 t^2 + c3 t^3 + c4 t^4 crosses zero downwards; for a
  * contact under way at lo, the crossing that led to it (see crossingUnderWay; the caller clamps).
  * A touching pair whose gap shrinks at lo by no more than `noise` (the rounding of the rate, which
- * the caller bounds) is a graze unless an acceleration presses it in (as firstDownCrossingQuadratic).
+ * the caller bounds) is a graze unless an acceleration presses it in by more than `pressNoise` (the
+ * rounding of the second derivative, inputs included; as firstDownCrossingQuadratic).
  */
 export function firstDownCrossingQuartic(
   c0: number,
@@ -27,14 +28,15 @@ export function firstDownCrossingQuartic(
   lo: number,
   hi: number,
   noise = 0,
+  pressNoise = 0,
 ): number {
   if (!(lo <= hi)) return Number.POSITIVE_INFINITY;
   const fLo = c0 + lo * (c1 + lo * (c2 + lo * (c3 + lo * c4)));
   const dLo = c1 + lo * (2 * c2 + lo * (3 * c3 + lo * 4 * c4));
   // In contact and approaching (or resting under an acceleration into the contact) at lo.
-  const now = fLo <= 0 && (dLo < -noise || (dLo <= 0 && 2 * c2 + lo * (6 * c3 + lo * 12 * c4) < 0));
+  const now = fLo <= 0 && (dLo < -noise || (dLo <= 0 && 2 * c2 + lo * (6 * c3 + lo * 12 * c4) < -pressNoise));
   // Touching and approaching by no more than the noise, with nothing pressing it in: a graze.
-  if (!now && fLo <= 0 && dLo <= 0 && dLo > -noise) return Number.POSITIVE_INFINITY;
+  if (!now && fLo <= 0 && dLo <= 0) return Number.POSITIVE_INFINITY;
   coeffs[0] = c0;
   coeffs[1] = c1;
   coeffs[2] = c2;

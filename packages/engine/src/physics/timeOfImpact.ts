@@ -19,14 +19,15 @@
  *   disc–line:               h(tau) = ±s(tau) - r, s the signed distance to the line (degree <= 2)
  */
 
-import { APPROACH_NOISE } from "../tolerances.js";
+import { APPROACH_NOISE, NEGLIGIBLE_DRIFT } from "../tolerances.js";
 import { quarticContact } from "./farContact.js";
 import { firstDownCrossingQuartic } from "./quarticCrossing.js";
 
 /**
  * First approach root of the gap polynomial of two discs (or a disc and a point, with the point's
  * motion zero): d, u, w are the relative position, velocity and acceleration (other minus this) at
- * the base time, R the contact distance.
+ * the base time, R the contact distance. `velScale` and `accScale` are |vx| + |vy| and |ax| + |ay|
+ * of the two bodies added up (of u and w by default): see discDiscTimeScaled.
  */
 export function discDiscTime(
   dx: number,
@@ -39,8 +40,40 @@ export function discDiscTime(
   lo: number,
   hi: number,
   quadraticFastPath = true,
+  velScale = Math.abs(ux) + Math.abs(uy),
+  accScale = Math.abs(wx) + Math.abs(wy),
 ): number {
-  if (wx === 0 && wy === 0) {
+  return discDiscTimeScaled(dx, dy, ux, uy, wx, wy, R, lo, hi, quadraticFastPath, velScale, accScale);
+}
+
+/**
+ * discDiscTime with every argument given (the hot path: no defaults, small enough to inline).
+ * u and w are differences of the two bodies' velocities and accelerations, so their rounding is
+ * relative to those (`velScale`, `accScale`), not to u and w: two discs sliding side by side under
+ * friction have a u and a w that are pure rounding, and what the response can change in their
+ * velocities is relative to the velocities too (see APPROACH_NOISE).
+ */
+export function discDiscTimeScaled(
+  dx: number,
+  dy: number,
+  ux: number,
+  uy: number,
+  wx: number,
+  wy: number,
+  R: number,
+  lo: number,
+  hi: number,
+  quadraticFastPath: boolean,
+  velScale: number,
+  accScale: number,
+): number {
+  // A relative acceleration that cannot move the pair by NEGLIGIBLE_DRIFT of the contact distance
+  // before either motion ends is dropped (w tau^2 / 2 bounded in the 1-norm): the straight path
+  // makes the same contacts up to that rounding, and its rate is the whole story at a touching
+  // contact. Kept, a rounding-level press in the last nanoseconds before two discs stop made a
+  // contact a fraction of an ulp of time after now that the response, at now, saw no approach in,
+  // for ever (a 20 x 20 rack broken under friction).
+  if ((wx === 0 && wy === 0) || 0.5 * (Math.abs(wx) + Math.abs(wy)) * hi * hi <= NEGLIGIBLE_DRIFT * R) {
     const uu = ux * ux + uy * uy;
     if (uu === 0) return Number.POSITIVE_INFINITY;
     const c0 = dx * dx + dy * dy - R * R;
@@ -52,11 +85,11 @@ export function discDiscTime(
     // c1^2 - 4 uu c0 = 4 (uu R^2 - (d x u)^2) (Lagrange's identity), free of the cancellation of
     // two terms of size |d|^2 |u|^2 that loses every digit once the gap is ~1e8 contact distances.
     const cross = dx * uy - dy * ux;
-    // Rounding of c1 = 2 d.u: an approach below it is a graze (see APPROACH_NOISE).
-    const noise = APPROACH_NOISE * (Math.abs(dx * ux) + Math.abs(dy * uy));
-    return firstDownCrossingQuadratic(c0, c1, uu, lo, hi, true, 4 * (uu * R * R - cross * cross), noise);
+    // Rounding of c1 = 2 d.u, u's own included: an approach below it is a graze (APPROACH_NOISE).
+    const noise = APPROACH_NOISE * 2 * (Math.abs(dx) + Math.abs(dy)) * velScale;
+    return firstDownCrossingQuadratic(c0, c1, uu, lo, hi, true, 4 * (uu * R * R - cross * cross), noise, 0);
   }
-  return quarticContact(dx, dy, ux, uy, wx, wy, R, lo, hi);
+  return quarticContact(dx, dy, ux, uy, wx, wy, R, lo, hi, velScale, accScale);
 }
 
 /**
@@ -68,6 +101,9 @@ export function discDiscTime(
  * by no more than `noise` (the rounding of h' the caller bounds) does not count as approaching,
  * unless an acceleration presses it in (c2 < 0): its response could not tell that approach from
  * none, and the same contact would be found again at once for ever (a Zeno state in no time).
+ * Likewise an acceleration presses it in only when h'' < -`pressNoise` (the rounding of c2, inputs
+ * included, which the caller bounds): below that the press is the rounding of an acceleration along
+ * the contact (friction on a disc sliding past another or along a line).
  */
 export function firstDownCrossingQuadratic(
   c0: number,
@@ -78,15 +114,16 @@ export function firstDownCrossingQuadratic(
   immediate = true,
   discriminant = Number.NaN,
   noise = 0,
+  pressNoise = 0,
 ): number {
   if (!(lo <= hi)) return Number.POSITIVE_INFINITY;
   const hLo = c0 + lo * (c1 + lo * c2);
   const dLo = c1 + 2 * c2 * lo;
   // Touching and approaching (or resting under an acceleration into the contact) at lo.
-  if (hLo <= 0 && immediate && (dLo < -noise || (dLo <= 0 && c2 < 0)))
+  if (hLo <= 0 && immediate && (dLo < -noise || (dLo <= 0 && c2 < -pressNoise)))
     return quadraticUnderWay(c0, c1, c2, lo, hi, discriminant);
   // Touching and approaching by no more than the noise, with nothing pressing it in: a graze.
-  if (hLo <= 0 && immediate && dLo <= 0 && c2 >= 0) return Number.POSITIVE_INFINITY;
+  if (hLo <= 0 && immediate && dLo <= 0) return Number.POSITIVE_INFINITY;
   // Convex and not decreasing at lo: it never comes down again (the common, cheap rejection).
   if (c2 >= 0 && dLo >= 0) return Number.POSITIVE_INFINITY;
   if (c2 === 0) {
@@ -174,6 +211,8 @@ export function discLineCrossings(
   // Rounding of h'(lo) = s1 + 2 s2 lo: an approach below it is a graze (see APPROACH_NOISE).
   const noise =
     APPROACH_NOISE * (Math.abs(nx * vx) + Math.abs(ny * vy) + lo * (Math.abs(nx * ax) + Math.abs(ny * ay)));
-  out[0] = firstDownCrossingQuadratic(s0 - r, s1, s2, lo, hi, positive, Number.NaN, noise);
-  out[1] = firstDownCrossingQuadratic(-s0 - r, -s1, -s2, lo, hi, !positive, Number.NaN, noise);
+  // Rounding of h'' = 2 s2, the acceleration's direction included (friction along the line).
+  const pressNoise = APPROACH_NOISE * (Math.abs(ax) + Math.abs(ay));
+  out[0] = firstDownCrossingQuadratic(s0 - r, s1, s2, lo, hi, positive, Number.NaN, noise, pressNoise);
+  out[1] = firstDownCrossingQuadratic(-s0 - r, -s1, -s2, lo, hi, !positive, Number.NaN, noise, pressNoise);
 }

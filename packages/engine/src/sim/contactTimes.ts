@@ -5,7 +5,7 @@
  * (predictor.ts decides what each body runs into next).
  */
 import { positionAt, velocityAt } from "../physics/motion.js";
-import { discDiscTime, discLineCrossings } from "../physics/timeOfImpact.js";
+import { discDiscTimeScaled, discLineCrossings } from "../physics/timeOfImpact.js";
 import { type Line, lineParameter, parameterOnLine } from "./obstacles.js";
 import { SimState } from "./state.js";
 
@@ -76,16 +76,16 @@ export class ContactTimes extends SimState {
     const dy =
       positionAt(to, b.mot[o * 8 + 2] as number, b.mot[o * 8 + 4] as number, ayo, tb) -
       positionAt(ts, b.mot[s * 8 + 2] as number, b.mot[s * 8 + 4] as number, ays, tb);
-    const ux =
-      velocityAt(to, b.mot[o * 8 + 3] as number, axo, tb) -
-      velocityAt(ts, b.mot[s * 8 + 3] as number, axs, tb);
-    const uy =
-      velocityAt(to, b.mot[o * 8 + 4] as number, ayo, tb) -
-      velocityAt(ts, b.mot[s * 8 + 4] as number, ays, tb);
+    const vxs = velocityAt(ts, b.mot[s * 8 + 3] as number, axs, tb);
+    const vys = velocityAt(ts, b.mot[s * 8 + 4] as number, ays, tb);
+    const vxo = velocityAt(to, b.mot[o * 8 + 3] as number, axo, tb);
+    const vyo = velocityAt(to, b.mot[o * 8 + 4] as number, ayo, tb);
+    const ux = vxo - vxs;
+    const uy = vyo - vys;
     // Cheap rejection before any solve: with no relative acceleration a receding pair never meets.
     if (axo === axs && ayo === ays && dx * ux + dy * uy >= 0 && this.opt.quadraticFastPath) return INF;
     const R = (b.r[s] as number) + (b.r[o] as number);
-    const tau = discDiscTime(
+    const tau = discDiscTimeScaled(
       dx,
       dy,
       ux,
@@ -96,6 +96,8 @@ export class ContactTimes extends SimState {
       this.now - tb,
       hi,
       this.opt.quadraticFastPath,
+      Math.abs(vxs) + Math.abs(vys) + Math.abs(vxo) + Math.abs(vyo),
+      Math.abs(axs) + Math.abs(ays) + Math.abs(axo) + Math.abs(ayo),
     );
     if (tau === INF) return INF;
     const t = tb + tau;
@@ -106,17 +108,23 @@ export class ContactTimes extends SimState {
   protected pointTime(s: number, px: number, py: number): number {
     const b = this.store;
     const t0 = b.mot[s * 8 + 0] as number;
-    const tau = discDiscTime(
+    const vx = b.mot[s * 8 + 3] as number;
+    const vy = b.mot[s * 8 + 4] as number;
+    const ax = b.mot[s * 8 + 5] as number;
+    const ay = b.mot[s * 8 + 6] as number;
+    const tau = discDiscTimeScaled(
       (b.mot[s * 8 + 1] as number) - px,
       (b.mot[s * 8 + 2] as number) - py,
-      b.mot[s * 8 + 3] as number,
-      b.mot[s * 8 + 4] as number,
-      b.mot[s * 8 + 5] as number,
-      b.mot[s * 8 + 6] as number,
+      vx,
+      vy,
+      ax,
+      ay,
       b.r[s] as number,
       this.now - t0,
       (b.mot[s * 8 + 7] as number) - t0,
       this.opt.quadraticFastPath,
+      Math.abs(vx) + Math.abs(vy),
+      Math.abs(ax) + Math.abs(ay),
     );
     if (tau === INF) return INF;
     const t = t0 + tau;
