@@ -88,6 +88,13 @@ describe("parseScene on broken JSON", () => {
     expect(e.path).toBe("json");
     expect(e.message).toMatch(/^json: invalid JSON at line 3, column 28 \(/);
   });
+  it("refuses a duplicate key, naming it and where it is (JSON.parse silently kept the last value)", () => {
+    const text = base([disc("a", 0)]).replace('"r":1', '"r":1,"r":2');
+    const e = refused(text);
+    expect(e.path).toBe("actions[0].r");
+    expect(e.message).toMatch(/duplicate key "r" at line 1, column \d+/);
+  });
+
   it("says where a truncated text stops (the parser gives no position: it said only 'Unexpected end')", () => {
     const e = refused('{"format":"chapgame",\n"version":1,\n"actions":[');
     expect(e.path).toBe("json");

@@ -10,6 +10,7 @@
 import { checkAction } from "./action.js";
 import { SceneError } from "./errors.js";
 import { isObject, nonNegative, onlyKeys, vec2 } from "./fields.js";
+import { firstDuplicateKey } from "./jsonDuplicates.js";
 import { checkFieldMagnitudes } from "./magnitudes.js";
 import { checkAndApply, SceneView } from "./sceneRules.js";
 import { type Action, SCENE_DEFAULTS, type SceneFile } from "./types.js";
@@ -65,6 +66,13 @@ export function parseScene(input: string | unknown): SceneFile {
       const message = (e as Error).message;
       throw new SceneError("json", `invalid JSON${where(text, message)} (${message})`);
     }
+    // JSON.parse keeps the last of two equal keys silently: the first value would be lost.
+    const dup = firstDuplicateKey(text);
+    if (dup !== null)
+      throw new SceneError(
+        dup.path,
+        `duplicate key "${dup.key}" at line ${dup.line}, column ${dup.column}: an object may name a key only once (JSON would keep the last value and drop the first)`,
+      );
   }
   if (!isObject(raw)) throw new SceneError("scene", "must be a JSON object");
   onlyKeys(raw, ["format", "version", "g", "gravity", "actions", "meta"], "");
