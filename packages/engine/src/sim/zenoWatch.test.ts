@@ -1,9 +1,9 @@
 // The Zeno watch alone: runs of simultaneous events, runs of windows that converge on a finite
 // time, and its counters carried through save/load.
 import { describe, expect, it } from "vitest";
-import { SIMULTANEOUS_EVENTS_PER_BODY } from "../tolerances.js";
+import { SIMULTANEOUS_EVENTS_PER_BODY, SIMULTANEOUS_EVENTS_PER_PAIR } from "../tolerances.js";
 import { SimulationError } from "./errors.js";
-import { ZenoWatch, zenoWindow } from "./zenoWatch.js";
+import { simultaneousLimit, ZenoWatch, zenoWindow } from "./zenoWatch.js";
 
 const never = () => false;
 const always = () => true;
@@ -41,6 +41,17 @@ describe("ZenoWatch", () => {
     z.check(5, 4, n, never);
     for (let i = 0; i < limit; i++) z.check(5, 5, n, never);
     expect(() => z.check(5, 5, n, never)).toThrow(SimulationError);
+    expect(() => z.check(5, 5, n, never)).toThrow(/at the same instant t=5/);
+  });
+
+  it("in large worlds allows SIMULTANEOUS_EVENTS_PER_PAIR per pair at one instant (an impulse through a big rack)", () => {
+    const n = 1601; // the 40 x 40 rack and its cue ball: 140,613 events at the cue ball's first contact
+    const limit = Math.floor(SIMULTANEOUS_EVENTS_PER_PAIR * ((n * (n - 1)) / 2));
+    expect(limit).toBeGreaterThan(SIMULTANEOUS_EVENTS_PER_BODY * n);
+    expect(simultaneousLimit(n)).toBe(limit);
+    const z = new ZenoWatch();
+    z.check(5, 4, n, never);
+    for (let i = 0; i < limit; i++) z.check(5, 5, n, never);
     expect(() => z.check(5, 5, n, never)).toThrow(/at the same instant t=5/);
   });
 

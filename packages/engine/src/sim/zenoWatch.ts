@@ -3,8 +3,9 @@
  * told the time of every counted event (collision or stop), with the World's time before it, and
  * throws a SimulationError when
  *
- * - more than SIMULTANEOUS_EVENTS_PER_BODY * n events happen at one and the same instant (a
- *   resting contact, or a collapse that friction drives to one instant), or
+ * - more than SIMULTANEOUS_EVENTS_PER_BODY * n events (or SIMULTANEOUS_EVENTS_PER_PAIR per pair of
+ *   bodies, when that is more) happen at one and the same instant (a resting contact, or a
+ *   collapse that friction drives to one instant), or
  * - while energy can be fed in (an immovable body moves), windows of
  *   W = max(ZENO_WINDOW_EVENTS, ZENO_WINDOW_EVENTS_PER_BODY * n) events keep getting shorter (each
  *   lasts at most ZENO_SHRINK times the one before) until one lasts no more than
@@ -23,6 +24,7 @@
  */
 import {
   SIMULTANEOUS_EVENTS_PER_BODY,
+  SIMULTANEOUS_EVENTS_PER_PAIR,
   ZENO_SHRINK,
   ZENO_STREAK_PROGRESS,
   ZENO_WINDOW_EVENTS,
@@ -42,7 +44,8 @@ export type ZenoCounters = [number, number, number, number];
 
 /** Events allowed at one instant in a world of n body slots (capped so that save() is exact). */
 export function simultaneousLimit(n: number): number {
-  return Math.min(SIMULTANEOUS_EVENTS_PER_BODY * n, COUNT_SPLIT - 2);
+  const perPair = SIMULTANEOUS_EVENTS_PER_PAIR * ((n * (n - 1)) / 2);
+  return Math.min(Math.max(SIMULTANEOUS_EVENTS_PER_BODY * n, Math.floor(perPair)), COUNT_SPLIT - 2);
 }
 
 /** Events in one window of the convergence test in a world of n body slots. */
