@@ -187,6 +187,16 @@ export const ZENO_MIN_PROGRESS = 1e-6;
  * shrink as 1/k², passes both within about ten windows of its start.
  */
 export const ZENO_SHRINK = 0.99;
+
+/**
+ * A window of the Zeno watch (sim/zenoWatch.ts) in which at least this share of the events are
+ * micro-stops (a body stopped by friction at the very position, to the bit, where it was set in
+ * motion) is a sustained push, reported instead of computed: a disc pushed along against friction
+ * needs three events per 8e-14 s in the break of a 30 x 30 rack (mu 0.1, g 9.81), ~1e12 events
+ * for the push's 0.075 s (review). An ordinary scene has almost none: a stop without a move
+ * needs an impulse at the rounding of the velocities.
+ */
+export const ZENO_MICRO_STOP_SHARE = 1 / 16;
 export const ZENO_STREAK_PROGRESS = 0.01;
 
 /**

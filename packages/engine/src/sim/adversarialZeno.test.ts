@@ -118,4 +118,29 @@ describe("Zeno watch: states the model cannot pass are reported", () => {
     expect(Math.abs(px - 100) / 100).toBeLessThan(1e-12);
     expect(Math.abs(py) / 100).toBeLessThan(1e-12);
   });
+
+  // Regression: once the rounding loops of rack breaks were fixed (adversarialGraze.test), this
+  // break ran on for ever: k10_07, pressed by k11_06, pushes the resting k09_08 against friction,
+  // three events per 8e-14 s, each kick of k09_08 stopped by friction before it moves a bit.
+  it("a disc pushed along against friction in a 30 x 30 rack break: a sustained push, named", () => {
+    const w = new World({ g: 9.81 });
+    for (let j = 0; j < 30; j++)
+      for (let i = 0; i < 30; i++)
+        w.addBody(`k${String(j).padStart(2, "0")}_${String(i).padStart(2, "0")}`, {
+          x: 6 * i + 3 * j,
+          y: 4 * j,
+          r: 2.5,
+          m: 1 + ((i * 7 + j * 3) % 4),
+          mu: 0.1,
+        });
+    w.addBody("cue", { x: -20, y: 61.7, r: 2.5, m: 2, mu: 0.1, vx: 40 });
+    let events = 0;
+    const e = thrown(() => w.advance({}, () => events++));
+    expect(e).toBeInstanceOf(SimulationError);
+    expect((e as Error).message).toMatch(/sustained push.*/);
+    expect((e as Error).message).toMatch(/the last: 'k09_08'/);
+    expect(events).toBeLessThan(1_000_000);
+    expect(w.time).toBeGreaterThan(2.98);
+    expect(w.time).toBeLessThan(2.99);
+  });
 });

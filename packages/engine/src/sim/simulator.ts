@@ -44,7 +44,7 @@ export class Simulator extends Predictor {
         return 0;
       }
     }
-    this.guardZeno(before);
+    this.guardZeno(before, s, kind);
     if (kind === EV_BODY) this.processBodyBody(s, b.evOther[s] as number);
     else if (kind === EV_STOP) this.processStop(s);
     else this.processObstacle(s, kind, b.evOther[s] as number, b.evAux[s] as number);
@@ -98,7 +98,7 @@ export class Simulator extends Predictor {
   private checkEvent(s: number, kind: number, before: number): void {
     const watch = this.zeno.save();
     try {
-      this.guardZeno(before);
+      this.guardZeno(before, s, kind);
       if (kind === EV_LINE || kind === EV_POINT) {
         const b = this.store;
         const t = this.now;
@@ -121,8 +121,20 @@ export class Simulator extends Predictor {
    * Count the event about to be processed now in the Zeno watch (throws on a Zeno state); `before`
    * is the World's time before it (equal to now: at the same instant as the previous item).
    */
-  protected guardZeno(before: number): void {
-    this.zeno.check(this.now, before, Math.max(1, this.store.slotCount), this.pumps);
+  protected guardZeno(before: number, s: number, kind: number): void {
+    this.zeno.check(
+      this.now,
+      before,
+      Math.max(1, this.store.slotCount),
+      this.pumps,
+      kind === EV_STOP && this.stopsUnmoved(s) ? (this.store.ids[s] as string) : null,
+    );
+  }
+
+  /** Whether body s, stopping now, is where its motion started, to the bit (a micro-stop). */
+  private stopsUnmoved(s: number): boolean {
+    const b = this.store;
+    return this.xAt(s, this.now) === b.mot[s * 8 + 1] && this.yAt(s, this.now) === b.mot[s * 8 + 2];
   }
 
   private readonly pumps = (): boolean => this.pumpsEnergy();
