@@ -43,7 +43,8 @@ function stringEnd(text: string, start: number): number {
   return i;
 }
 
-function lineColumn(text: string, pos: number): { line: number; column: number } {
+/** 1-based line and column of character `pos` of `text`. */
+export function lineColumn(text: string, pos: number): { line: number; column: number } {
   let line = 1;
   let start = 0;
   for (let i = 0; i < pos; i++)

@@ -10,7 +10,7 @@
 import { checkAction } from "./action.js";
 import { SceneError } from "./errors.js";
 import { isObject, nonNegative, onlyKeys, vec2 } from "./fields.js";
-import { firstDuplicateKey } from "./jsonDuplicates.js";
+import { firstDuplicateKey, lineColumn } from "./jsonDuplicates.js";
 import { checkFieldMagnitudes } from "./magnitudes.js";
 import { checkAndApply, SceneView } from "./sceneRules.js";
 import { type Action, SCENE_DEFAULTS, type SceneFile } from "./types.js";
@@ -44,15 +44,9 @@ function where(text: string, message: string): string {
   const atEnd = m === null && /end of JSON input/i.test(message);
   if (m === null && !atEnd) return "";
   const pos = m === null ? text.length : Math.min(Number(m[1]), text.length);
-  let line = 1;
-  let start = 0;
-  for (let i = 0; i < pos; i++)
-    if (text.charCodeAt(i) === 10) {
-      line++;
-      start = i + 1;
-    }
-  const lineColumn = `line ${line}, column ${pos - start + 1}`;
-  return atEnd ? ` at the end (${lineColumn}): the text stops early` : ` at ${lineColumn}`;
+  const { line, column } = lineColumn(text, pos);
+  const at = `line ${line}, column ${column}`;
+  return atEnd ? ` at the end (${at}): the text stops early` : ` at ${at}`;
 }
 
 export function parseScene(input: string | unknown): SceneFile {

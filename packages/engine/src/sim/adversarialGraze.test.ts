@@ -4,7 +4,7 @@
 // ever, and reported as a Zeno state. Now such a contact is a graze (APPROACH_NOISE).
 import { describe, expect, it } from "vitest";
 import { firstDownCrossingQuadratic } from "../physics/timeOfImpact.js";
-import { totals } from "./testSupport.js";
+import { minCentreDistance, rackBreak, totals } from "./testSupport.js";
 import { World } from "./world.js";
 
 describe("approaches below the rounding noise are grazes", () => {
@@ -56,14 +56,7 @@ describe("approaches below the rounding noise are grazes", () => {
   it("a cue ball breaking a 20 x 20 rack of touching discs (contacts 3-4-5 exact)", () => {
     const run = (reverse: boolean) => {
       const w = new World({ g: 0 });
-      const adds: [string, { x: number; y: number; r: number; m: number; vx?: number }][] = [];
-      for (let j = 0; j < 20; j++)
-        for (let i = 0; i < 20; i++)
-          adds.push([
-            `k${String(j).padStart(2, "0")}_${String(i).padStart(2, "0")}`,
-            { x: 6 * i + 3 * j, y: 4 * j, r: 2.5, m: 1 + ((i * 7 + j * 3) % 4) },
-          ]);
-      adds.push(["cue", { x: -20, y: 40.5, r: 2.5, m: 2, vx: 10 }]);
+      const adds = rackBreak(20, 0, 0.5, 10);
       for (const [id, b] of reverse ? adds.reverse() : adds) w.addBody(id, b);
       const times: number[] = [];
       const r = w.advance({ untilTime: 50 }, (e) => times.push(e.time));
@@ -75,12 +68,7 @@ describe("approaches below the rounding noise are grazes", () => {
     expect(Math.abs(energy - 100) / 100).toBeLessThan(1e-13);
     expect(Math.abs(px - 20) / 20).toBeLessThan(1e-13);
     expect(Math.abs(py) / 20).toBeLessThan(1e-13);
-    for (let i = 0; i < a.bodies.length; i++)
-      for (let j = i + 1; j < a.bodies.length; j++) {
-        const p = a.bodies[i]!;
-        const q = a.bodies[j]!;
-        expect(Math.hypot(p.x - q.x, p.y - q.y)).toBeGreaterThan(5 * (1 - 1e-12));
-      }
+    expect(minCentreDistance(a.bodies)).toBeGreaterThan(5 * (1 - 1e-12));
     expect(run(true)).toEqual(a);
   });
 
@@ -92,14 +80,7 @@ describe("approaches below the rounding noise are grazes", () => {
   it("a cue ball breaking a 20 x 20 rack of touching discs under friction, in two insertion orders", () => {
     const run = (reverse: boolean) => {
       const w = new World({ g: 1 });
-      const adds: [string, { x: number; y: number; r: number; m: number; mu: number; vx?: number }][] = [];
-      for (let j = 0; j < 20; j++)
-        for (let i = 0; i < 20; i++)
-          adds.push([
-            `k${String(j).padStart(2, "0")}_${String(i).padStart(2, "0")}`,
-            { x: 6 * i + 3 * j, y: 4 * j, r: 2.5, m: 1 + ((i * 7 + j * 3) % 4), mu: 0.1 },
-          ]);
-      adds.push(["cue", { x: -20, y: 40.5, r: 2.5, m: 2, mu: 0.1, vx: 10 }]);
+      const adds = rackBreak(20, 0.1, 0.5, 10);
       for (const [id, b] of reverse ? adds.reverse() : adds) w.addBody(id, b);
       const r = w.advance({ untilTime: 1000 });
       return { r, bodies: w.bodies() };
@@ -107,12 +88,7 @@ describe("approaches below the rounding noise are grazes", () => {
     const a = run(false);
     expect(a.r.reason).toBe("idle");
     expect(a.bodies.every((b) => b.vx === 0 && b.vy === 0)).toBe(true);
-    for (let i = 0; i < a.bodies.length; i++)
-      for (let j = i + 1; j < a.bodies.length; j++) {
-        const p = a.bodies[i]!;
-        const q = a.bodies[j]!;
-        expect(Math.hypot(p.x - q.x, p.y - q.y)).toBeGreaterThan(5 * (1 - 1e-9));
-      }
+    expect(minCentreDistance(a.bodies)).toBeGreaterThan(5 * (1 - 1e-9));
     expect(run(true)).toEqual(a);
   });
 
@@ -120,25 +96,11 @@ describe("approaches below the rounding noise are grazes", () => {
   // t = 3.99 with impulse 0 until "more than 9281 events at the same instant".
   it("a cue ball breaking a 12 x 12 rack of touching discs under friction", () => {
     const w = new World({ g: 1 });
-    for (let j = 0; j < 12; j++)
-      for (let i = 0; i < 12; i++)
-        w.addBody(`k${String(j).padStart(2, "0")}_${String(i).padStart(2, "0")}`, {
-          x: 6 * i + 3 * j,
-          y: 4 * j,
-          r: 2.5,
-          m: 1 + ((i * 7 + j * 3) % 4),
-          mu: 0.1,
-        });
-    w.addBody("cue", { x: -20, y: 24.5, r: 2.5, m: 2, mu: 0.1, vx: 10 });
+    for (const [id, b] of rackBreak(12, 0.1, 0.5, 10)) w.addBody(id, b);
     const r = w.advance({ untilTime: 200 });
     expect(r.reason).toBe("idle");
     const bodies = w.bodies();
     expect(bodies.every((b) => b.vx === 0 && b.vy === 0)).toBe(true);
-    for (let i = 0; i < bodies.length; i++)
-      for (let j = i + 1; j < bodies.length; j++) {
-        const p = bodies[i]!;
-        const q = bodies[j]!;
-        expect(Math.hypot(p.x - q.x, p.y - q.y)).toBeGreaterThan(5 * (1 - 1e-12));
-      }
+    expect(minCentreDistance(bodies)).toBeGreaterThan(5 * (1 - 1e-12));
   });
 });

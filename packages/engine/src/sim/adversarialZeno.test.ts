@@ -3,7 +3,7 @@
 // message (never looped over).
 import { describe, expect, it } from "vitest";
 import { SimulationError } from "./errors.js";
-import { totals } from "./testSupport.js";
+import { rackBreak, totals } from "./testSupport.js";
 import { World } from "./world.js";
 
 function thrown(f: () => unknown): unknown {
@@ -94,15 +94,7 @@ describe("Zeno watch: states the model cannot pass are reported", () => {
   // through 1,600 touching discs pair by pair, 140,613 events at t = 1.4964, and dies away.
   it("the break of a 40 x 40 rack of touching discs is no Zeno state (a long cascade at one instant)", () => {
     const w = new World({ g: 0 });
-    for (let j = 0; j < 40; j++)
-      for (let i = 0; i < 40; i++)
-        w.addBody(`k${String(j).padStart(2, "0")}_${String(i).padStart(2, "0")}`, {
-          x: 6 * i + 3 * j,
-          y: 4 * j,
-          r: 2.5,
-          m: 1 + ((i * 7 + j * 3) % 4),
-        });
-    w.addBody("cue", { x: -20, y: 80.5, r: 2.5, m: 2, vx: 50 });
+    for (const [id, b] of rackBreak(40, 0, 0.5, 50)) w.addBody(id, b);
     let atOnce = 0;
     let most = 0;
     let last = Number.NaN;
@@ -124,16 +116,7 @@ describe("Zeno watch: states the model cannot pass are reported", () => {
   // three events per 8e-14 s, each kick of k09_08 stopped by friction before it moves a bit.
   it("a disc pushed along against friction in a 30 x 30 rack break: a sustained push, named", () => {
     const w = new World({ g: 9.81 });
-    for (let j = 0; j < 30; j++)
-      for (let i = 0; i < 30; i++)
-        w.addBody(`k${String(j).padStart(2, "0")}_${String(i).padStart(2, "0")}`, {
-          x: 6 * i + 3 * j,
-          y: 4 * j,
-          r: 2.5,
-          m: 1 + ((i * 7 + j * 3) % 4),
-          mu: 0.1,
-        });
-    w.addBody("cue", { x: -20, y: 61.7, r: 2.5, m: 2, mu: 0.1, vx: 40 });
+    for (const [id, b] of rackBreak(30, 0.1, 1.7, 40)) w.addBody(id, b);
     let events = 0;
     const e = thrown(() => w.advance({}, () => events++));
     expect(e).toBeInstanceOf(SimulationError);

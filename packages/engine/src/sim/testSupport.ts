@@ -1,5 +1,6 @@
 /**
- * Helpers for the World's tests (not built, not packed): the totals a collision must keep.
+ * Helpers for the World's tests (not built, not packed): the totals a collision must keep, and
+ * the break of a rack of touching discs (a scene that found several rounding defects).
  */
 import type { BodyState } from "./types.js";
 
@@ -14,4 +15,44 @@ export function totals(bodies: readonly BodyState[]): { energy: number; px: numb
     py += s.m * s.vy;
   }
   return { energy, px, py };
+}
+
+/** A disc to add: `World.addBody(id, disc)`. */
+export interface RackDisc {
+  x: number;
+  y: number;
+  r: number;
+  m: number;
+  mu: number;
+  vx?: number;
+}
+
+/**
+ * The break of an n x n rack of exactly touching discs (radius 2.5, 6 apart in a row, each row
+ * offset by (3, 4): contacts 3-4-5, exact in doubles; masses 1 to 4) by a cue ball of mass 2 from
+ * (-20, 4 floor(n / 2) + cueOffset) at speed `cueSpeed` along x; every disc with friction `mu`.
+ * Ids `kJJ_II` and `cue`, in the order to add them.
+ */
+export function rackBreak(n: number, mu: number, cueOffset: number, cueSpeed: number): [string, RackDisc][] {
+  const adds: [string, RackDisc][] = [];
+  for (let j = 0; j < n; j++)
+    for (let i = 0; i < n; i++)
+      adds.push([
+        `k${String(j).padStart(2, "0")}_${String(i).padStart(2, "0")}`,
+        { x: 6 * i + 3 * j, y: 4 * j, r: 2.5, m: 1 + ((i * 7 + j * 3) % 4), mu },
+      ]);
+  adds.push(["cue", { x: -20, y: 4 * Math.floor(n / 2) + cueOffset, r: 2.5, m: 2, mu, vx: cueSpeed }]);
+  return adds;
+}
+
+/** The smallest distance between the centres of two of the bodies (all pairs: for small tests). */
+export function minCentreDistance(bodies: readonly BodyState[]): number {
+  let best = Number.POSITIVE_INFINITY;
+  for (let i = 0; i < bodies.length; i++)
+    for (let j = i + 1; j < bodies.length; j++) {
+      const p = bodies[i] as BodyState;
+      const q = bodies[j] as BodyState;
+      best = Math.min(best, Math.hypot(p.x - q.x, p.y - q.y));
+    }
+  return best;
 }
