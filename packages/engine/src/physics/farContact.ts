@@ -24,7 +24,7 @@
  * a far contact's place.
  */
 
-import { APPROACH_NOISE, FAR_CONTACT_REACH } from "../tolerances.js";
+import { APPROACH_NOISE, FAR_CONTACT_REACH, RESPONSE_ULP } from "../tolerances.js";
 import { farWindows } from "./farWindow.js";
 import { firstDownCrossingQuartic } from "./quarticCrossing.js";
 
@@ -65,7 +65,10 @@ export function quarticContact(
   const uu = ux * ux + uy * uy;
   const uw = Math.abs(ux * wx) + Math.abs(uy * wy);
   const noise =
-    APPROACH_NOISE * (2 * D * velScale + l * (2 * (uu + D * accScale) + l * (3 * uw + l * 4 * c4)));
+    APPROACH_NOISE *
+      (2 * (Math.abs(dx * ux) + Math.abs(dy * uy)) +
+        l * (2 * (uu + D * accScale) + l * (3 * uw + l * 4 * c4))) +
+    2 * RESPONSE_ULP * D * (velScale + l * accScale);
   // Rounding of f''(lo), the accelerations' directions included: the pair is pressed together only
   // beyond it (friction on two discs sliding past each other along the contact).
   const pressNoise = APPROACH_NOISE * (2 * (uu + D * accScale) + l * (6 * uw + l * 12 * c4));

@@ -19,7 +19,7 @@
  *   disc–line:               h(tau) = ±s(tau) - r, s the signed distance to the line (degree <= 2)
  */
 
-import { APPROACH_NOISE, NEGLIGIBLE_DRIFT } from "../tolerances.js";
+import { APPROACH_NOISE, NEGLIGIBLE_DRIFT, RESPONSE_ULP } from "../tolerances.js";
 import { quarticContact } from "./farContact.js";
 import { firstDownCrossingQuartic } from "./quarticCrossing.js";
 
@@ -78,15 +78,18 @@ export function discDiscTimeScaled(
     if (uu === 0) return Number.POSITIVE_INFINITY;
     const c0 = dx * dx + dy * dy - R * R;
     const c1 = 2 * (dx * ux + dy * uy);
-    if (!quadraticFastPath) {
-      // The benchmark's ablation: the same gap solved as a general quartic, as before the fast path.
-      return firstDownCrossingQuartic(c0, c1, uu, 0, 0, lo, hi);
-    }
     // c1^2 - 4 uu c0 = 4 (uu R^2 - (d x u)^2) (Lagrange's identity), free of the cancellation of
     // two terms of size |d|^2 |u|^2 that loses every digit once the gap is ~1e8 contact distances.
     const cross = dx * uy - dy * ux;
-    // Rounding of c1 = 2 d.u, u's own included: an approach below it is a graze (APPROACH_NOISE).
-    const noise = APPROACH_NOISE * 2 * (Math.abs(dx) + Math.abs(dy)) * velScale;
+    // An approach within the rounding of c1 = 2 d.u (APPROACH_NOISE), or too slow for the response
+    // to change the velocities (RESPONSE_ULP), is a graze.
+    const noise =
+      APPROACH_NOISE * 2 * (Math.abs(dx * ux) + Math.abs(dy * uy)) +
+      2 * RESPONSE_ULP * (Math.abs(dx) + Math.abs(dy)) * velScale;
+    if (!quadraticFastPath) {
+      // The benchmark's ablation: the same gap solved as a general quartic, as before the fast path.
+      return firstDownCrossingQuartic(c0, c1, uu, 0, 0, lo, hi, noise);
+    }
     return firstDownCrossingQuadratic(c0, c1, uu, lo, hi, true, 4 * (uu * R * R - cross * cross), noise, 0);
   }
   return quarticContact(dx, dy, ux, uy, wx, wy, R, lo, hi, velScale, accScale);

@@ -10,22 +10,37 @@ const INF = Number.POSITIVE_INFINITY;
 
 describe("touching pairs at rounding level are grazes", () => {
   // k02_07 and k03_06 of a 16 x 16 rack (mu 0.05, g 9.81) sliding side by side at ~0.6: their
-  // relative velocity along the contact is -1.7e-16, beyond 16 roundings of d.u but below what
-  // the response can change in velocities of 0.6. Solved on the straight path with a noise
-  // relative to u alone (a step of this change), the World reported an impulse of 1.3e-16 that
-  // changed nothing, 16,449 times at one instant.
+  // relative velocity along the contact is -1.7e-16. Solved on the straight path with a noise of
+  // half the rounding of c1 and relative to u alone (a step of this change), the World reported an
+  // impulse of 1.3e-16 that changed nothing, 16,449 times at one instant.
   const slide = [
     -3, 4, 0.029723114793236027, 0.02229233609492698, 5.551115123125783e-17, 1.1102230246251565e-16,
   ] as const;
   const bodiesVel = 0.48762140873343895 + 0.3657160565500792 + 0.4578982939402029 + 0.34342372045515224;
   const bodiesAcc = 2 * (0.3924 + 0.2943);
+  // The same pair approaching 2e-16 faster along the contact normal (-0.6, 0.8): beyond the
+  // rounding of d.u, within RESPONSE_ULP of the bodies' speeds.
+  const [dx0, dy0, ux0, uy0, wx0, wy0] = slide;
+  const slow = [dx0, dy0, ux0 + 1.2e-16, uy0 - 1.6e-16, wx0, wy0] as const;
 
-  it("an approach below the rounding of the bodies' own velocities: no contact", () => {
+  it("an approach within the rounding of d.u: no contact", () => {
     expect(discDiscTime(...slide, 5, 0, 1.1669171609077547, true, bodiesVel, bodiesAcc)).toBe(INF);
   });
 
-  it("the same approach with no velocity scale to measure it against: contact now", () => {
-    expect(discDiscTime(...slide, 5, 0, 1.1669171609077547, true, 0, bodiesAcc)).toBe(0);
+  it("an approach too slow for the response to change velocities of 0.6: no contact", () => {
+    expect(discDiscTime(...slow, 5, 0, 1.1669171609077547, true, bodiesVel, bodiesAcc)).toBe(INF);
+  });
+
+  it("the same approach measured against the relative velocity alone: contact now", () => {
+    expect(discDiscTime(...slow, 5, 0, 1.1669171609077547, true, 0, bodiesAcc)).toBe(0);
+  });
+
+  // Regression (review): the benchmark's ablation (every gap solved as a quartic) skipped the noise.
+  it("the ablation without the quadratic fast path gives the same verdicts", () => {
+    for (const pair of [slide, slow])
+      expect(discDiscTime(...pair, 5, 0, 1.1669171609077547, false, bodiesVel, bodiesAcc)).toBe(
+        discDiscTime(...pair, 5, 0, 1.1669171609077547, true, bodiesVel, bodiesAcc),
+      );
   });
 
   it("a clear approach of the same pair is still a contact now", () => {

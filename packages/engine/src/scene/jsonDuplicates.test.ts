@@ -13,6 +13,14 @@ describe("firstDuplicateKey", () => {
     expect(firstDuplicateKey(text)).toEqual({ path: "actions[1].r", key: "r", line: 4, column: 25 });
   });
 
+  it("counts lines ended by \\n, \\r\\n or a lone \\r (old Mac files) alike", () => {
+    for (const eol of ["\n", "\r\n", "\r"])
+      expect(firstDuplicateKey(`{${eol}"a": 1,${eol}  "a": 2${eol}}`), JSON.stringify(eol)).toMatchObject({
+        line: 3,
+        column: 3,
+      });
+  });
+
   it("compares keys after unescaping, as JSON.parse does", () => {
     expect(firstDuplicateKey('{"g": 1, "\\u0067": 2}')).toMatchObject({ path: "g", key: "g" });
   });

@@ -43,15 +43,17 @@ function stringEnd(text: string, start: number): number {
   return i;
 }
 
-/** 1-based line and column of character `pos` of `text`. */
+/** 1-based line and column of character `pos` of `text` (lines end at \n, \r\n or a lone \r). */
 export function lineColumn(text: string, pos: number): { line: number; column: number } {
   let line = 1;
   let start = 0;
-  for (let i = 0; i < pos; i++)
-    if (text.charCodeAt(i) === 10) {
+  for (let i = 0; i < pos; i++) {
+    const c = text.charCodeAt(i);
+    if (c === 10 || (c === 13 && text.charCodeAt(i + 1) !== 10)) {
       line++;
       start = i + 1;
     }
+  }
   return { line, column: pos - start + 1 };
 }
 

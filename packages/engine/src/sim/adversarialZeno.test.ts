@@ -121,7 +121,7 @@ describe("Zeno watch: states the model cannot pass are reported", () => {
     const e = thrown(() => w.advance({}, () => events++));
     expect(e).toBeInstanceOf(SimulationError);
     expect((e as Error).message).toMatch(/sustained push.*/);
-    expect((e as Error).message).toMatch(/the last: 'k09_08'/);
+    expect((e as Error).message).toMatch(/body 'k09_08' stopped/);
     expect(events).toBeLessThan(1_000_000);
     expect(w.time).toBeGreaterThan(2.98);
     expect(w.time).toBeLessThan(2.99);

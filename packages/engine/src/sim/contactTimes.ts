@@ -96,8 +96,10 @@ export class ContactTimes extends SimState {
       this.now - tb,
       hi,
       this.opt.quadraticFastPath,
-      Math.abs(vxs) + Math.abs(vys) + Math.abs(vxo) + Math.abs(vyo),
-      Math.abs(axs) + Math.abs(ays) + Math.abs(axo) + Math.abs(ayo),
+      // Each body's part summed first, so the scales have the same bits from either side (review:
+      // left to right, the two orders differed by an ulp, and so did a graze's verdict).
+      Math.abs(vxs) + Math.abs(vys) + (Math.abs(vxo) + Math.abs(vyo)),
+      Math.abs(axs) + Math.abs(ays) + (Math.abs(axo) + Math.abs(ayo)),
     );
     if (tau === INF) return INF;
     const t = tb + tau;

@@ -134,6 +134,7 @@ export class Edits extends Placement {
     b.r[s] = r;
     b.m[s] = m;
     b.mu[s] = mu;
+    this.zeno.push.forget(id);
     this.setMotion(s, now, x, y, vx, vy);
     this.takeFromGrid(s);
     this.placeInGrid(s, x, y);
@@ -142,6 +143,7 @@ export class Edits extends Placement {
 
   removeBody(id: string): void {
     const s = this.slotOf(id);
+    this.zeno.push.forget(id);
     this.takeFromGrid(s);
     this.heap.remove(s);
     this.store.release(s);
@@ -171,6 +173,7 @@ export class Edits extends Placement {
       this.vxAt(s, now),
       this.vyAt(s, now),
     ]);
+    this.zeno.push.clear();
     this.frictionG = g;
     this.gravX = gravity[0];
     this.gravY = gravity[1];

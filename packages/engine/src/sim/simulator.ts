@@ -9,14 +9,14 @@ import { EV_BODY, EV_LINE, EV_POINT, EV_STOP } from "./bodyStore.js";
 import { SimulationError } from "./errors.js";
 import type { Line, Point } from "./obstacles.js";
 import { PeekLog } from "./peek.js";
-import { Predictor } from "./predictor.js";
 import type { WorldEvent } from "./types.js";
+import { ZenoGuard } from "./zenoGuard.js";
 
 const INF = Number.POSITIVE_INFINITY;
 const vel = new Float64Array(4);
 /** Obstacle contact scratch: normal (nx, ny, not normalised) and contact point (x, y). */
 const contact = new Float64Array(4);
-export class Simulator extends Predictor {
+export class Simulator extends ZenoGuard {
   // ---- processing ---------------------------------------------------------------------------
 
   /**
@@ -115,39 +115,6 @@ export class Simulator extends Predictor {
     } finally {
       this.zeno.load(watch);
     }
-  }
-
-  /**
-   * Count the event about to be processed now in the Zeno watch (throws on a Zeno state); `before`
-   * is the World's time before it (equal to now: at the same instant as the previous item).
-   */
-  protected guardZeno(before: number, s: number, kind: number): void {
-    this.zeno.check(
-      this.now,
-      before,
-      Math.max(1, this.store.slotCount),
-      this.pumps,
-      kind === EV_STOP && this.stopsUnmoved(s) ? (this.store.ids[s] as string) : null,
-    );
-  }
-
-  /** Whether body s, stopping now, is where its motion started, to the bit (a micro-stop). */
-  private stopsUnmoved(s: number): boolean {
-    const b = this.store;
-    return this.xAt(s, this.now) === b.mot[s * 8 + 1] && this.yAt(s, this.now) === b.mot[s * 8 + 2];
-  }
-
-  private readonly pumps = (): boolean => this.pumpsEnergy();
-
-  /**
-   * Whether an immovable (infinite-mass) body is moving: the only way elastic collisions can feed
-   * energy in without bound, which a run of events converging on a finite time needs.
-   */
-  private pumpsEnergy(): boolean {
-    const b = this.store;
-    for (let s = 0; s < b.slotCount; s++)
-      if (b.ids[s] !== undefined && b.m[s] === Number.POSITIVE_INFINITY && this.isMoving(s)) return true;
-    return false;
   }
 
   protected processCrossing(s: number): void {

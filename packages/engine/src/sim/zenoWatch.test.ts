@@ -1,11 +1,7 @@
 // The Zeno watch alone: runs of simultaneous events, runs of windows that converge on a finite
 // time, and its counters carried through save/load.
 import { describe, expect, it } from "vitest";
-import {
-  SIMULTANEOUS_EVENTS_PER_BODY,
-  SIMULTANEOUS_EVENTS_PER_PAIR,
-  ZENO_MICRO_STOP_SHARE,
-} from "../tolerances.js";
+import { SIMULTANEOUS_EVENTS_PER_BODY, SIMULTANEOUS_EVENTS_PER_PAIR } from "../tolerances.js";
 import { SimulationError } from "./errors.js";
 import { simultaneousLimit, ZenoWatch, zenoWindow } from "./zenoWatch.js";
 
@@ -124,50 +120,5 @@ describe("ZenoWatch", () => {
     fresh.check(t, t, n, never);
     fresh.check(t, t, n, never);
     expect(() => fresh.check(t, t, n, never)).not.toThrow();
-  });
-
-  /** Feed `windows` windows of steady events in which every k-th is a micro-stop of body 'p'. */
-  const microStops = (z: ZenoWatch, windows: number, k: number, from = 0): number => {
-    const w = zenoWindow(1);
-    let t = from;
-    for (let i = 0; i < windows * w; i++) {
-      const before = t;
-      t += 2 ** -40;
-      z.check(t, before, 1, never, i % k === 0 ? "p" : null);
-    }
-    return t;
-  };
-
-  it("a window with ZENO_MICRO_STOP_SHARE of micro-stops is a sustained push, named; fewer are not", () => {
-    const every = Math.round(1 / ZENO_MICRO_STOP_SHARE);
-    expect(() => microStops(new ZenoWatch(), 5, every + 1)).not.toThrow();
-    expect(() => microStops(new ZenoWatch(), 1, every)).toThrow(/sustained push/);
-    expect(() => microStops(new ZenoWatch(), 1, every)).toThrow(/the last: 'p'/);
-  });
-
-  it("save and load carry the micro-stops of the current window", () => {
-    const every = Math.round(1 / ZENO_MICRO_STOP_SHARE);
-    const w = zenoWindow(1);
-    const a = new ZenoWatch();
-    // Half a window of micro-stops at twice the share, then a restored copy finishes the window.
-    let t = 0;
-    for (let i = 0; i < w / 2; i++) {
-      const before = t;
-      t += 2 ** -40;
-      a.check(t, before, 1, never, i % (every / 2) === 0 ? "p" : null);
-    }
-    const b = new ZenoWatch();
-    b.load(a.save());
-    const finish = (z: ZenoWatch) => {
-      let u = t;
-      for (let i = 0; i < w / 2; i++) {
-        const before = u;
-        u += 2 ** -40;
-        z.check(u, before, 1, never, null);
-      }
-    };
-    expect(() => finish(a)).toThrow(/sustained push/);
-    expect(() => finish(b)).toThrow(/sustained push/);
-    expect(() => finish(new ZenoWatch())).not.toThrow();
   });
 });

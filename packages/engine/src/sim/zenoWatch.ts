@@ -11,19 +11,14 @@
  *   lasts at most ZENO_SHRINK times the one before) until one lasts no more than
  *   ZENO_STREAK_PROGRESS times the whole run of shrinking windows before it: events accumulate at
  *   a finite time, as when a disc is crushed between an immovable disc and a wall, or
- * - at least ZENO_MICRO_STOP_SHARE of a window's events are micro-stops: stops of bodies whose
- *   position had not changed by one rounding unit since they were set in motion. A disc pushed
- *   along against friction by another (a sustained push) is kicked by rounding-size impulses and
- *   stopped again by friction before it can move, three events per 8e-14 s in one rack break,
- *   for as long as the push lasts: the model of elastic impulses and sliding friction resolves a
- *   push only by ever more collisions, whose times do not converge, so the windows test misses it.
+ * - its push watch (pushWatch.ts) sees one body stop too many times in a row without moving.
  *
  * Only differences of event times are compared, never a time with |t| or a unit: the verdict is the
  * same for the scene shifted in time or run with time × k. (Comparing a window with |t| refused a
  * disc rattling steadily between two walls at t = 1e5, and missed a crush converging on t = 0.)
  *
  * Its counters are part of the simulation's state: a World copied or rebuilt from a keyframe
- * carries them (`save` / `load`, five numbers: the two event counts share one, exactly while
+ * carries them (`save` / `load`, four numbers and the push watch's streaks: the two event counts share one, exactly while
  * n < 2^20, beyond which the counts are capped), so that it throws at exactly the event the
  * original would. The time of the previous event is the World's time before the event, which a
  * copy or a rebuilt World has too.
@@ -31,13 +26,13 @@
 import {
   SIMULTANEOUS_EVENTS_PER_BODY,
   SIMULTANEOUS_EVENTS_PER_PAIR,
-  ZENO_MICRO_STOP_SHARE,
   ZENO_SHRINK,
   ZENO_STREAK_PROGRESS,
   ZENO_WINDOW_EVENTS,
   ZENO_WINDOW_EVENTS_PER_BODY,
 } from "../tolerances.js";
 import { SimulationError } from "./errors.js";
+import { type PushStreaks, PushWatch } from "./pushWatch.js";
 
 const INF = Number.POSITIVE_INFINITY;
 /** save() packs the two counts into one number: sameTimeCount + windowCount * COUNT_SPLIT. */
@@ -46,9 +41,9 @@ const COUNT_SPLIT = 2 ** 26;
 /**
  * The watch's counters: [start of the current window, duration of the window before, start of
  * the run of shrinking windows, events at the current instant + COUNT_SPLIT * events in the window,
- * micro-stops in the window].
+ * the push watch's streaks].
  */
-export type ZenoCounters = [number, number, number, number, number];
+export type ZenoCounters = [number, number, number, number, PushStreaks];
 
 /** Events allowed at one instant in a world of n body slots (capped so that save() is exact). */
 export function simultaneousLimit(n: number): number {
@@ -67,43 +62,24 @@ export class ZenoWatch {
   private windowCount = 0;
   private lastProgress = INF;
   private runStart = -INF;
-  private windowMicroStops = 0;
-  /** Id of the body of the last micro-stop, for the message only (not saved). */
-  private lastMicroStop = "";
+  /** Sustained pushes (told of every stop by the World; edits end a body's streak). */
+  readonly push = new PushWatch();
 
   /**
    * Count an event at `time`, the World's time before it being `before`, in a world of `n` body
    * slots; throw if it reveals a Zeno state. `pumpsEnergy` is asked only at the end of a window that
-   * completes a converging run. `microStop` is the id of a body stopping where its motion started
-   * (to the bit), null for any other event.
+   * completes a converging run. `what` describes the event, for the message only.
    */
-  check(
-    time: number,
-    before: number,
-    n: number,
-    pumpsEnergy: () => boolean,
-    microStop: string | null = null,
-  ): void {
+  check(time: number, before: number, n: number, pumpsEnergy: () => boolean, what?: () => string): void {
     if (time !== before) this.sameTimeCount = 0;
     else if (++this.sameTimeCount > simultaneousLimit(n)) {
       throw new SimulationError(
-        `more than ${this.sameTimeCount} events at the same instant t=${time}: a Zeno state (resting contact or an inelastic collapse) that the exact model cannot resolve`,
+        `more than ${this.sameTimeCount} events at the same instant t=${time}${what === undefined ? "" : ` (the last: ${what()})`}: a Zeno state (resting contact, two discs pressed together, or an inelastic collapse) that the exact model cannot resolve`,
         time,
       );
     }
     const w = zenoWindow(n);
-    if (microStop !== null) {
-      this.windowMicroStops++;
-      this.lastMicroStop = microStop;
-    }
     if (++this.windowCount < w) return;
-    if (this.windowMicroStops >= ZENO_MICRO_STOP_SHARE * w) {
-      throw new SimulationError(
-        `${this.windowMicroStops} of the last ${w} events (to t=${time}) were stops of bodies that had not moved by one rounding unit since they were set in motion (the last: '${this.lastMicroStop}'): a disc pushed along against friction by another (a sustained push), which the model of elastic impulses and sliding friction resolves only by ever more collisions`,
-        time,
-      );
-    }
-    this.windowMicroStops = 0;
     const progress = time - this.windowStart;
     // The first window (no start yet) only starts the first run, at its end.
     if (this.windowStart === -INF) this.runStart = time;
@@ -126,7 +102,7 @@ export class ZenoWatch {
       this.lastProgress,
       this.runStart,
       this.sameTimeCount + COUNT_SPLIT * this.windowCount,
-      this.windowMicroStops,
+      this.push.save(),
     ];
   }
 
@@ -135,6 +111,6 @@ export class ZenoWatch {
     [this.windowStart, this.lastProgress, this.runStart] = c;
     this.sameTimeCount = c[3] % COUNT_SPLIT;
     this.windowCount = (c[3] - this.sameTimeCount) / COUNT_SPLIT;
-    this.windowMicroStops = c[4];
+    this.push.load(c[4]);
   }
 }
