@@ -227,12 +227,15 @@ export const GRID_BIG_RATIO = 2;
 export const APPROACH_NOISE = 16 * UNIT_ROUNDOFF;
 
 /**
- * A touching pair's approach counts only when the response can act on it: when it is faster than
- * RESPONSE_ULP of the two bodies' own speeds (an ulp of a number is at most 2 rounding units of it),
- * so that the lighter body's velocity changes by at least an ulp and the pair parts. Below that the
- * response changed nothing and the same contact was found again at once, for ever: two discs
- * sliding side by side at 0.6 in a rack break under friction approached at 1.7e-16 (review). An
- * approach slower than this passes: a pair moving at speed V may close by 2 u V per unit of time.
+ * A touching pair's approach counts only when the response can act on it: when d.u exceeds
+ * 2 RESPONSE_ULP of |dx| (|vx1| + |vx2|) + |dy| (|vy1| + |vy2|), the same product from the two
+ * bodies' own velocity components (an ulp of a number is at most 2 rounding units of it), so that
+ * the lighter body's velocity changes by about an ulp and the pair parts. Below that the response
+ * changed nothing and the same contact was found again at once, for ever: two discs sliding side by
+ * side at 0.6 in a rack break under friction approached at 1.7e-16 (review). An approach slower
+ * than this passes: two discs whose velocities along the line of centres are about V may close by
+ * up to ~8 u V per unit of time (a frictionless pair closing at 3e-13 while both move at 1000
+ * across that line collides; with the bodies' whole speeds as the scale it passed: review).
  */
 export const RESPONSE_ULP = 2 * UNIT_ROUNDOFF;
 

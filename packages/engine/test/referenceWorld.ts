@@ -118,8 +118,10 @@ export class ReferenceWorld {
       this.time - tb,
       hi,
       true,
-      Math.abs(vxs) + Math.abs(vys) + (Math.abs(vxo) + Math.abs(vyo)),
-      Math.abs(s.ax) + Math.abs(s.ay) + (Math.abs(o.ax) + Math.abs(o.ay)),
+      Math.abs(xo - xs) * (Math.abs(vxs) + Math.abs(vxo)) +
+        Math.abs(yo - ys) * (Math.abs(vys) + Math.abs(vyo)),
+      Math.abs(xo - xs) * (Math.abs(s.ax) + Math.abs(o.ax)) +
+        Math.abs(yo - ys) * (Math.abs(s.ay) + Math.abs(o.ay)),
     );
     return tau === INF ? INF : Math.max(this.time, tb + tau);
   }

@@ -33,9 +33,9 @@ const windows = new Float64Array(4);
 
 /**
  * First contact of the pair in [lo, hi] (see the header); d, u, w relative, R the contact distance.
- * `velScale` and `accScale` are |vx| + |vy| and |ax| + |ay| of the two bodies added up (of u and w
- * by default): u and w are their differences, so their rounding is relative to them, not to u and
- * w (two discs sliding side by side under friction have a u and a w that are pure rounding).
+ * `dvScale` and `dwScale` are the sizes of d.v and d.w from the two bodies' own velocities and
+ * accelerations (of d.u and d.w by default; see discDiscTimeScaled): u and w are differences, so
+ * their rounding is relative to the bodies' own, not to u and w.
  */
 export function quarticContact(
   dx: number,
@@ -47,8 +47,8 @@ export function quarticContact(
   R: number,
   lo: number,
   hi: number,
-  velScale = Math.abs(ux) + Math.abs(uy),
-  accScale = Math.abs(wx) + Math.abs(wy),
+  dvScale = Math.abs(dx * ux) + Math.abs(dy * uy),
+  dwScale = Math.abs(dx * wx) + Math.abs(dy * wy),
 ): number {
   const c0 = dx * dx + dy * dy - R * R;
   const c1 = 2 * (dx * ux + dy * uy);
@@ -61,17 +61,15 @@ export function quarticContact(
   let near = nearReach(dx, dy, ux, uy, wx, wy, FAR_CONTACT_REACH * R, hi);
   // Rounding of the gap's rate at lo (APPROACH_NOISE): a touching pair approaching by less grazes.
   const l = Math.max(lo, 0);
-  const D = Math.abs(dx) + Math.abs(dy);
   const uu = ux * ux + uy * uy;
   const uw = Math.abs(ux * wx) + Math.abs(uy * wy);
   const noise =
     APPROACH_NOISE *
-      (2 * (Math.abs(dx * ux) + Math.abs(dy * uy)) +
-        l * (2 * (uu + D * accScale) + l * (3 * uw + l * 4 * c4))) +
-    2 * RESPONSE_ULP * D * (velScale + l * accScale);
+      (2 * (Math.abs(dx * ux) + Math.abs(dy * uy)) + l * (2 * (uu + dwScale) + l * (3 * uw + l * 4 * c4))) +
+    2 * RESPONSE_ULP * (dvScale + l * dwScale);
   // Rounding of f''(lo), the accelerations' directions included: the pair is pressed together only
   // beyond it (friction on two discs sliding past each other along the contact).
-  const pressNoise = APPROACH_NOISE * (2 * (uu + D * accScale) + l * (6 * uw + l * 12 * c4));
+  const pressNoise = APPROACH_NOISE * (2 * (uu + dwScale) + l * (6 * uw + l * 12 * c4));
   if (near >= hi) return firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, hi, noise, pressNoise);
   let i = 0;
   while (i < n && (windows[2 * i + 1] as number) < near) i++; // wholly in the near part

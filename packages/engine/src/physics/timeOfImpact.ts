@@ -26,8 +26,9 @@ import { firstDownCrossingQuartic } from "./quarticCrossing.js";
 /**
  * First approach root of the gap polynomial of two discs (or a disc and a point, with the point's
  * motion zero): d, u, w are the relative position, velocity and acceleration (other minus this) at
- * the base time, R the contact distance. `velScale` and `accScale` are |vx| + |vy| and |ax| + |ay|
- * of the two bodies added up (of u and w by default): see discDiscTimeScaled.
+ * the base time, R the contact distance. `dvScale` and `dwScale` are the sizes of d.v and d.w from
+ * the two bodies' own velocities and accelerations, |dx| (|vx1| + |vx2|) + |dy| (|vy1| + |vy2|) and
+ * the same with a (of d.u and d.w by default): see discDiscTimeScaled.
  */
 export function discDiscTime(
   dx: number,
@@ -40,18 +41,20 @@ export function discDiscTime(
   lo: number,
   hi: number,
   quadraticFastPath = true,
-  velScale = Math.abs(ux) + Math.abs(uy),
-  accScale = Math.abs(wx) + Math.abs(wy),
+  dvScale = Math.abs(dx * ux) + Math.abs(dy * uy),
+  dwScale = Math.abs(dx * wx) + Math.abs(dy * wy),
 ): number {
-  return discDiscTimeScaled(dx, dy, ux, uy, wx, wy, R, lo, hi, quadraticFastPath, velScale, accScale);
+  return discDiscTimeScaled(dx, dy, ux, uy, wx, wy, R, lo, hi, quadraticFastPath, dvScale, dwScale);
 }
 
 /**
  * discDiscTime with every argument given (the hot path: no defaults, small enough to inline).
  * u and w are differences of the two bodies' velocities and accelerations, so their rounding is
- * relative to those (`velScale`, `accScale`), not to u and w: two discs sliding side by side under
- * friction have a u and a w that are pure rounding, and what the response can change in their
- * velocities is relative to the velocities too (see APPROACH_NOISE).
+ * relative to those, not to u and w: two discs sliding side by side under friction have a u and a
+ * w that are pure rounding, and what the response can change in their velocities along the line of
+ * centres is relative to the velocities' components too (APPROACH_NOISE, RESPONSE_ULP). Hence
+ * `dvScale` = |dx| (|vx1| + |vx2|) + |dy| (|vy1| + |vy2|) and `dwScale` the same with the
+ * accelerations, each body's part added first so that both orders of a pair give the same bits.
  */
 export function discDiscTimeScaled(
   dx: number,
@@ -64,8 +67,8 @@ export function discDiscTimeScaled(
   lo: number,
   hi: number,
   quadraticFastPath: boolean,
-  velScale: number,
-  accScale: number,
+  dvScale: number,
+  dwScale: number,
 ): number {
   // A relative acceleration that cannot move the pair by NEGLIGIBLE_DRIFT of the contact distance
   // before either motion ends is dropped (w tau^2 / 2 bounded in the 1-norm): the straight path
@@ -83,16 +86,14 @@ export function discDiscTimeScaled(
     const cross = dx * uy - dy * ux;
     // An approach within the rounding of c1 = 2 d.u (APPROACH_NOISE), or too slow for the response
     // to change the velocities (RESPONSE_ULP), is a graze.
-    const noise =
-      APPROACH_NOISE * 2 * (Math.abs(dx * ux) + Math.abs(dy * uy)) +
-      2 * RESPONSE_ULP * (Math.abs(dx) + Math.abs(dy)) * velScale;
+    const noise = APPROACH_NOISE * 2 * (Math.abs(dx * ux) + Math.abs(dy * uy)) + 2 * RESPONSE_ULP * dvScale;
     if (!quadraticFastPath) {
       // The benchmark's ablation: the same gap solved as a general quartic, as before the fast path.
       return firstDownCrossingQuartic(c0, c1, uu, 0, 0, lo, hi, noise);
     }
     return firstDownCrossingQuadratic(c0, c1, uu, lo, hi, true, 4 * (uu * R * R - cross * cross), noise, 0);
   }
-  return quarticContact(dx, dy, ux, uy, wx, wy, R, lo, hi, velScale, accScale);
+  return quarticContact(dx, dy, ux, uy, wx, wy, R, lo, hi, dvScale, dwScale);
 }
 
 /**

@@ -16,8 +16,10 @@ describe("touching pairs at rounding level are grazes", () => {
   const slide = [
     -3, 4, 0.029723114793236027, 0.02229233609492698, 5.551115123125783e-17, 1.1102230246251565e-16,
   ] as const;
-  const bodiesVel = 0.48762140873343895 + 0.3657160565500792 + 0.4578982939402029 + 0.34342372045515224;
-  const bodiesAcc = 2 * (0.3924 + 0.2943);
+  // |dx| (|vx1| + |vx2|) + |dy| (|vy1| + |vy2|) of the two bodies, and the same with a.
+  const bodiesVel =
+    3 * (0.48762140873343895 + 0.4578982939402029) + 4 * (0.3657160565500792 + 0.34342372045515224);
+  const bodiesAcc = 3 * (2 * 0.3924) + 4 * (2 * 0.2943);
   // The same pair approaching 2e-16 faster along the contact normal (-0.6, 0.8): beyond the
   // rounding of d.u, within RESPONSE_ULP of the bodies' speeds.
   const [dx0, dy0, ux0, uy0, wx0, wy0] = slide;
@@ -56,7 +58,7 @@ describe("touching pairs at rounding level are grazes", () => {
     // Long enough a window that the press is not dropped as negligible drift.
     const hi = 100;
     expect(0.5 * (w[0] + w[1]) * hi * hi).toBeGreaterThan(NEGLIGIBLE_DRIFT * 5);
-    expect(discDiscTime(-3, 4, ...u, ...w, 5, 0, hi, true, 3.3e-10, 0.4)).toBe(INF);
+    expect(discDiscTime(-3, 4, ...u, ...w, 5, 0, hi, true, 1.1e-9, 3 * 0.16 + 4 * 0.12)).toBe(INF);
     expect(discDiscTime(-3, 4, ...u, ...w, 5, 0, hi)).toBe(0);
   });
 
@@ -68,9 +70,9 @@ describe("touching pairs at rounding level are grazes", () => {
       3, 4, 3.6956943266049544e-9, -2.7717707435729436e-9, -0.03388895689695029, -0.026248510697073332,
     ] as const;
     const hi = 5.7641811324060654e-9;
-    expect(discDiscTime(...pair, 5, 0, hi, true, 1e-8, 0.28)).toBe(INF);
+    expect(discDiscTime(...pair, 5, 0, hi, true, 2.8e-8, 0.98)).toBe(INF);
     // With a window long enough for the press to matter it is a contact, within an ulp of now.
-    const t = discDiscTime(...pair, 5, 0, 1, true, 1e-8, 0.28);
+    const t = discDiscTime(...pair, 5, 0, 1, true, 2.8e-8, 0.98);
     expect(t).toBeGreaterThanOrEqual(0);
     expect(t).toBeLessThan(1e-15);
   });

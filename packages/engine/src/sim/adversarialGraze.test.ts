@@ -133,4 +133,20 @@ describe("approaches below the rounding noise are grazes", () => {
       expect(w.body("b").x - w.body("a").x, `frame speed ${V}`).toBeGreaterThan(2);
     }
   });
+
+  // Regression (review): with the bodies' whole speeds as the scale of what the response can
+  // change, a pair closing at 3e-13 while both move at 1000 across the line of centres was a graze
+  // and passed through (overlap 3e-9 of the contact distance by t = 2e4, growing): the response acts
+  // along the line of centres only, where the velocities are 3e-13 and 0.
+  it("a slow approach while both move fast across the line of centres is a collision", () => {
+    const w = new World({ g: 0 });
+    w.addBody("a", { x: 0, y: 0, r: 1, m: 1, vx: 3e-13, vy: 1000 });
+    w.addBody("b", { x: 2, y: 0, r: 1, m: 1, vx: 0, vy: 1000 });
+    const pairs: number[] = [];
+    w.advance({ untilTime: 1 }, (e) => {
+      if (e.kind === "bodyBody") pairs.push(e.time);
+    });
+    expect(pairs).toEqual([0]);
+    expect(w.body("b").x - w.body("a").x).toBeGreaterThan(2);
+  });
 });

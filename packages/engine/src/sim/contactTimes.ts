@@ -96,10 +96,10 @@ export class ContactTimes extends SimState {
       this.now - tb,
       hi,
       this.opt.quadraticFastPath,
-      // Each body's part summed first, so the scales have the same bits from either side (review:
-      // left to right, the two orders differed by an ulp, and so did a graze's verdict).
-      Math.abs(vxs) + Math.abs(vys) + (Math.abs(vxo) + Math.abs(vyo)),
-      Math.abs(axs) + Math.abs(ays) + (Math.abs(axo) + Math.abs(ayo)),
+      // Each component's two bodies added first, so the scales have the same bits from either side
+      // (review: summed left to right, the two orders differed by an ulp, and so did a verdict).
+      Math.abs(dx) * (Math.abs(vxs) + Math.abs(vxo)) + Math.abs(dy) * (Math.abs(vys) + Math.abs(vyo)),
+      Math.abs(dx) * (Math.abs(axs) + Math.abs(axo)) + Math.abs(dy) * (Math.abs(ays) + Math.abs(ayo)),
     );
     if (tau === INF) return INF;
     const t = tb + tau;
@@ -114,9 +114,11 @@ export class ContactTimes extends SimState {
     const vy = b.mot[s * 8 + 4] as number;
     const ax = b.mot[s * 8 + 5] as number;
     const ay = b.mot[s * 8 + 6] as number;
+    const dx = (b.mot[s * 8 + 1] as number) - px;
+    const dy = (b.mot[s * 8 + 2] as number) - py;
     const tau = discDiscTimeScaled(
-      (b.mot[s * 8 + 1] as number) - px,
-      (b.mot[s * 8 + 2] as number) - py,
+      dx,
+      dy,
       vx,
       vy,
       ax,
@@ -125,8 +127,8 @@ export class ContactTimes extends SimState {
       this.now - t0,
       (b.mot[s * 8 + 7] as number) - t0,
       this.opt.quadraticFastPath,
-      Math.abs(vx) + Math.abs(vy),
-      Math.abs(ax) + Math.abs(ay),
+      Math.abs(dx * vx) + Math.abs(dy * vy),
+      Math.abs(dx * ax) + Math.abs(dy * ay),
     );
     if (tau === INF) return INF;
     const t = t0 + tau;

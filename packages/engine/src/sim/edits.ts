@@ -56,6 +56,20 @@ export class Edits extends Placement {
    * contact, are accepted; larger overlaps are refused like addBody's.
    */
   addBodyMotion(id: string, init: BodyMotionInit): void {
+    this.placeMotion(id, init, true);
+  }
+
+  /**
+   * @internal addBodyMotion for a motion this World's own computation produced (a Timeline
+   * keyframe): no overlap check. A pair pressed together under friction can overlap by more than
+   * OVERLAP_REL until one stops (README: what it cannot do), and a restart from a keyframe holding
+   * such a pair refused every later edit and undo (review).
+   */
+  restoreBodyMotion(id: string, init: BodyMotionInit): void {
+    this.placeMotion(id, init, false);
+  }
+
+  private placeMotion(id: string, init: BodyMotionInit, checkOverlap: boolean): void {
     requireId("id", id);
     requireFields("init", init, MOTION_FIELDS, MOTION_EXTRAS);
     if (this.index.has(id)) throw new ChapgameError("id", `a body with id '${id}' already exists`);
@@ -81,7 +95,7 @@ export class Edits extends Placement {
     const x = requireFinite("x0", positionAt(t0, x0, vx, restoredLaw.ax, this.now));
     const y = requireFinite("y0", positionAt(t0, y0, vy, restoredLaw.ay, this.now));
     this.prepareGridFor(x, y, r);
-    this.checkOverlap(x, y, r, -1, true);
+    if (checkOverlap) this.checkOverlap(x, y, r, -1, true);
     this.insertBody(id, r, m, mu, t0, x0, y0, vx, vy, x, y);
   }
 

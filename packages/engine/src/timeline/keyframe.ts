@@ -3,8 +3,9 @@
  * after every group of actions and every K records (K grows with the number of bodies so keyframes
  * cost a bounded number of bytes per event). Every keyframe is also a point a recomputation restarts
  * from: worldAt(kf) rebuilds the World from the motions, obstacles and globals, which gives the same
- * future bit for bit (World.addBodyMotion). stateAt(t) = the last keyframe at or before t + the
- * records up to t.
+ * future bit for bit (World.restoreBodyMotion: addBodyMotion without the overlap check, since the
+ * World's own motions may hold a pressed pair's overlap). stateAt(t) = the last keyframe at or
+ * before t + the records up to t.
  */
 import type { Vec2 } from "../scene/types.js";
 import type { LineState, PointState } from "../sim/types.js";
@@ -117,7 +118,7 @@ export function worldAt(kf: Keyframe, ids: readonly string[]): World {
   const p = kf.props;
   for (let k = 0; k < kf.order.length; k++) {
     const q = k * KF_MOTION;
-    w.addBodyMotion(ids[kf.order[k] as number] as string, {
+    w.restoreBodyMotion(ids[kf.order[k] as number] as string, {
       t0: m[q] as number,
       x0: m[q + 1] as number,
       y0: m[q + 2] as number,
