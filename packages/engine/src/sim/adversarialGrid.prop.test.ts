@@ -1,5 +1,5 @@
 // The broad phase with radii over four decades (0.01 next to 100): a few discs much larger than the
-// rest are kept out of the grid's cells (big bodies, sim/state.ts) and tested against every body.
+// rest, in the grid's coarser levels (sim/grid.ts) when levels pay, else in cells sized for them.
 // The World with the grid must give the same events, bit for bit, as the World without it, also
 // across edits that make a disc big, shrink one, add and remove big ones. Prints its seed; set
 // FC_SEED to explore others.
@@ -89,7 +89,7 @@ function edit(w: World, seed: number): string[] {
 }
 
 describe("broad phase with radii from 0.01 to 100", () => {
-  it("the World with big bodies out of the cells matches the World without the grid, bit for bit", () => {
+  it("the World with a few discs 100 to 10,000 times larger matches the World without the grid, bit for bit", () => {
     console.log(`[mixed radii grid] fast-check seed ${SEED} (set FC_SEED to change)`);
     fc.assert(
       fc.property(fc.integer({ min: 0, max: 2 ** 31 - 1 }), (seed) => {

@@ -6,13 +6,13 @@
  */
 import { positionAt, velocityAt } from "../physics/motion.js";
 import { discDiscTimeScaled, discLineCrossings } from "../physics/timeOfImpact.js";
+import { BroadPhase } from "./broadPhase.js";
 import { type Line, lineParameter, parameterOnLine } from "./obstacles.js";
-import { SimState } from "./state.js";
 
 const INF = Number.POSITIVE_INFINITY;
 const sides = new Float64Array(2);
 
-export class ContactTimes extends SimState {
+export class ContactTimes extends BroadPhase {
   /**
    * Earliest contact time of bodies s and o, or +Infinity. The result is symmetric (it depends
    * only on the two motions), so the last pair solved is remembered: after a collision both

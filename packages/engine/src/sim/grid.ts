@@ -1,42 +1,69 @@
 /**
- * Broad phase: a uniform grid of cells over the region the bodies occupy, with cell-crossing events.
+ * Broad phase: nested uniform grids ("levels") over the region the bodies occupy, with
+ * cell-crossing events.
  *
  * Why a grid with crossing events (and not swept boxes): discs have bounded radii, so with a cell
  * side w >= 2 * maxR two discs in contact are always in the same or adjacent cells; a body's
  * neighbourhood changes only when its centre crosses a cell boundary, which is itself an exact
- * event (a root of a degree <= 2 polynomial). Each event then costs O(1) pair tests plus O(log N) in
- * the event queue, whatever N is. Swept boxes need a time bound per box and re-insertion when it
- * expires, which costs more per event for the dilute gases this engine is built for.
+ * event (a root of a degree <= 2 polynomial). Each event then costs O(1) pair tests plus O(1)
+ * expected in the event queue, whatever N is. Swept boxes need a time bound per box and
+ * re-insertion when it expires, which costs more per event for the dilute gases this engine is
+ * built for.
  *
- * A few discs far larger than the rest (big bodies, sim/state.ts) are kept out of the cells
- * (cellOf = BIG_CELL) so that the cells stay sized for the others.
+ * Levels (for scenes of very different radii): level k has cells of side w * 2^k over the same
+ * origin, so level k's column of a point is its level-0 column >> k and every level-k boundary is
+ * also a level-0 boundary. Each body is registered in one level, the finest whose cells fit it
+ * (`levelFor`). A pair is a candidate when the two bodies' cells are adjacent at the coarser of
+ * their two levels: a body of level k is tested against the bodies of its own and coarser levels in
+ * the 3x3 cells around it there, and against finer bodies in the finer cells under its own 3x3
+ * block. A body's cell at a coarser level can only change when it crosses a boundary of its own
+ * level, which is an event already, so adjacency stays exact. The top level may be a single cell
+ * (everything adjacent), which takes any radius. With one radius there is one level, and the scans
+ * are those of a plain grid.
  *
- * The outermost rows and columns extend to infinity, so a body leaving the region stays in an edge
- * cell and causes no more crossing events (a disc flying away for ever costs nothing). Cells are
- * doubly linked lists through per-slot arrays: insert, remove and move are O(1). `cellRadius` picks
- * the radius the cells are sized for, and so which bodies are big.
+ * The outermost rows and columns of every level extend to infinity, so a body leaving the region
+ * stays in an edge cell and causes no more crossing events (a disc flying away for ever costs
+ * nothing). Cells are doubly linked lists through per-slot arrays shared by all levels (a body is
+ * in one cell): insert, remove and move are O(1). Cell indices are global: level k's cells are
+ * base[k] ... base[k] + nxOf[k] * nyOf[k] - 1, row by row.
  */
-import { GRID_BIG_BODIES_MAX, GRID_BIG_RATIO } from "../tolerances.js";
+import { GRID_CELL_MARGIN } from "../tolerances.js";
 
-/** cellOf of a body too large for the cells: kept out of them, tested against every body (state.ts). */
-export const BIG_CELL = -2;
+const INF = Number.POSITIVE_INFINITY;
+
+/** Most levels a grid has: cells 2^(GRID_LEVELS_MAX - 1) times the finest ones reach any region. */
+const GRID_LEVELS_MAX = 31;
 
 export class Grid {
   ox = 0;
   oy = 0;
-  /** Cell side. */
+  /** Cell side at level 0. */
   w = 1;
+  /** Columns and rows at level 0. */
   nx = 1;
   ny = 1;
+  /** Number of levels (>= 1). */
+  levels = 1;
+  /** Per level: columns, rows, first global cell index, largest radius it fits, bodies in it. */
+  nxOf: Int32Array = new Int32Array([1]);
+  nyOf: Int32Array = new Int32Array([1]);
+  base: Int32Array = new Int32Array([0, 1]);
+  fitR: Float64Array = new Float64Array([INF]);
+  count: Int32Array = new Int32Array(1);
+  /** Levels that hold at least one body, ascending (the scans visit only these). */
+  occupied: number[] = [];
   head: Int32Array = new Int32Array(1).fill(-1);
   next: Int32Array;
   prev: Int32Array;
+  /** Global cell of each slot (-1: not registered), and its level. */
   cellOf: Int32Array;
+  levelOf: Int8Array;
 
   constructor(slotCapacity: number) {
     this.next = new Int32Array(slotCapacity).fill(-1);
     this.prev = new Int32Array(slotCapacity).fill(-1);
     this.cellOf = new Int32Array(slotCapacity).fill(-1);
+    this.levelOf = new Int8Array(slotCapacity);
   }
 
   reserve(capacity: number): void {
@@ -50,18 +77,86 @@ export class Grid {
     this.next = grow(this.next);
     this.prev = grow(this.prev);
     this.cellOf = grow(this.cellOf);
+    const lv = new Int8Array(cap);
+    lv.set(this.levelOf);
+    this.levelOf = lv;
   }
 
-  /** Reset to an empty grid of nx * ny cells of side w with lower-left corner (ox, oy). */
-  reset(ox: number, oy: number, w: number, nx: number, ny: number): void {
+  /**
+   * Reset to an empty grid with level-0 cells of side w, nx * ny of them, lower-left corner
+   * (ox, oy), and enough levels for a disc of radius `maxR` (fewer if a coarser level is a single
+   * cell, which fits any radius); level 0 fits `sizedFor`, the radius w was computed from (w is at
+   * least 2 * GRID_CELL_MARGIN times it, up to rounding). nx = ny = 1 gives one cell for everything.
+   */
+  reset(ox: number, oy: number, w: number, nx: number, ny: number, maxR = 0, sizedFor = 0): void {
     this.ox = ox;
     this.oy = oy;
     this.w = w;
     this.nx = nx;
     this.ny = ny;
-    if (this.head.length < nx * ny) this.head = new Int32Array(nx * ny);
-    this.head.fill(-1, 0, nx * ny);
+    const nxOf: number[] = [];
+    const nyOf: number[] = [];
+    const fit: number[] = [];
+    for (let k = 0; k < GRID_LEVELS_MAX; k++) {
+      const cx = ((nx - 1) >> k) + 1;
+      const cy = ((ny - 1) >> k) + 1;
+      const single = cx === 1 && cy === 1;
+      nxOf.push(cx);
+      nyOf.push(cy);
+      // Level 0 fits the radius its side was computed from, whatever the rounding of w / (2 margin).
+      fit.push(single ? INF : Math.max((w * 2 ** k) / (2 * GRID_CELL_MARGIN), k === 0 ? sizedFor : 0));
+      if (single || (fit[k] as number) >= maxR) break;
+    }
+    const levels = nxOf.length;
+    this.levels = levels;
+    this.nxOf = Int32Array.from(nxOf);
+    this.nyOf = Int32Array.from(nyOf);
+    this.fitR = Float64Array.from(fit);
+    this.base = new Int32Array(levels + 1);
+    for (let k = 0; k < levels; k++)
+      this.base[k + 1] = (this.base[k] as number) + (nxOf[k] as number) * (nyOf[k] as number);
+    const cells = this.base[levels] as number;
+    if (this.head.length < cells) this.head = new Int32Array(cells);
+    this.head.fill(-1, 0, cells);
+    this.count = new Int32Array(levels);
+    this.occupied = [];
     this.cellOf.fill(-1);
+  }
+
+  /** Largest radius the grid has a level for. */
+  maxRadius(): number {
+    return this.fitR[this.levels - 1] as number;
+  }
+
+  /** Finest level whose cells fit a disc of radius r (the top level if none: see maxRadius). */
+  levelFor(r: number): number {
+    let k = 0;
+    while (k < this.levels - 1 && r > (this.fitR[k] as number)) k++;
+    return k;
+  }
+
+  /** Global index of the level-k cell holding the level-0 cell (cx, cy). */
+  cellAt(k: number, cx: number, cy: number): number {
+    return (this.base[k] as number) + (cy >> k) * (this.nxOf[k] as number) + (cx >> k);
+  }
+
+  /** Register slot s in level k's cell `cell` (global index). */
+  enter(slot: number, k: number, cell: number): void {
+    this.levelOf[slot] = k;
+    this.insert(slot, cell);
+    const c = this.count[k] as number;
+    this.count[k] = c + 1;
+    if (c === 0) this.occupied = [...this.occupied, k].sort((a, b) => a - b);
+  }
+
+  /** Take slot s out of the grid (nothing if it is not registered). */
+  leave(slot: number): void {
+    if ((this.cellOf[slot] as number) < 0) return;
+    const k = this.levelOf[slot] as number;
+    this.remove(slot);
+    const c = (this.count[k] as number) - 1;
+    this.count[k] = c;
+    if (c === 0) this.occupied = this.occupied.filter((j) => j !== k);
   }
 
   /** Column of x (clamped to the grid: edge columns extend to infinity). */
@@ -119,9 +214,28 @@ export class Grid {
   obstStart: Int32Array = new Int32Array(2);
   obstList: Int32Array = new Int32Array(0);
 
-  /** Fill the per-cell obstacle lists from (cell, code) pairs. */
-  setObstacles(pairs: number[]): void {
-    const nc = this.nx * this.ny;
+  /**
+   * Fill the per-cell obstacle lists from level-0 (cell, code) pairs; a coarser cell lists what its
+   * level-0 cells list (each code once).
+   */
+  setObstacles(level0: number[]): void {
+    const pairs = level0.slice();
+    for (let k = 1; k < this.levels; k++) {
+      const seen = new Set<number>();
+      const cells = (this.base[k + 1] as number) - (this.base[k] as number);
+      for (let i = 0; i < level0.length; i += 2) {
+        const c = level0[i] as number;
+        const cx = c % this.nx;
+        const cell = this.cellAt(k, cx, (c - cx) / this.nx);
+        const code = level0[i + 1] as number;
+        // Codes run from -(points) to lines - 1; key each (cell, code) pair uniquely.
+        const key = cell - (this.base[k] as number) + cells * (code + level0.length);
+        if (seen.has(key)) continue;
+        seen.add(key);
+        pairs.push(cell, code);
+      }
+    }
+    const nc = this.base[this.levels] as number;
     const start = new Int32Array(nc + 1);
     for (let i = 0; i < pairs.length; i += 2)
       start[(pairs[i] as number) + 1] = (start[(pairs[i] as number) + 1] as number) + 1;
@@ -156,25 +270,20 @@ export class Grid {
     g.w = this.w;
     g.nx = this.nx;
     g.ny = this.ny;
+    g.levels = this.levels;
+    g.nxOf = this.nxOf;
+    g.nyOf = this.nyOf;
+    g.base = this.base;
+    g.fitR = this.fitR;
+    g.count = this.count.slice();
+    g.occupied = this.occupied;
     g.head = this.head.slice();
     g.next = this.next.slice();
     g.prev = this.prev.slice();
     g.cellOf = this.cellOf.slice();
+    g.levelOf = this.levelOf.slice();
     g.obstStart = this.obstStart;
     g.obstList = this.obstList;
     return g;
   }
-}
-
-/**
- * Radius the grid's cells are made for: the largest radius once the few largest are left out, when
- * they are more than GRID_BIG_RATIO times the (GRID_BIG_BODIES_MAX + 1)-th largest (they become big
- * bodies); else the largest radius.
- */
-export function cellRadius(radii: number[]): number {
-  const sorted = radii.slice().sort((a, b) => b - a);
-  if (sorted.length <= GRID_BIG_BODIES_MAX) return sorted[0] ?? 0;
-  const limit = GRID_BIG_RATIO * (sorted[GRID_BIG_BODIES_MAX] as number);
-  for (const r of sorted) if (r <= limit) return r;
-  return sorted[0] as number;
 }

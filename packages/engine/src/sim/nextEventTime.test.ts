@@ -121,16 +121,17 @@ describe("World.nextEventTime", () => {
   });
 
   it("a body that crosses cells and is re-predicted in one peek is put back as it was", () => {
-    // 36 discs at rest make the grid active. B, which A was to hit at t = 1.25, is knocked away by C
-    // at t = 0.5; after that A's prediction is stale. The peek then moves A across cells,
-    // re-predicts it at 1.25, and ends at A's hit on the east wall (t = 29.5 / 4).
+    // 36 discs at rest make the grid active (cells 2.27 wide from x = -2). B, which A was to hit at
+    // t = 0.75, is knocked away by C at t = 0.5; after that A's prediction is stale (A and B are
+    // neighbours from t = 0.135). The peek then moves A across cells, re-predicts it at 0.75, and
+    // ends at A's hit on the east wall (t = 27.5 / 4).
     const make = (): World => {
       const w = new World({ g: 0 });
       w.addLine("floor", [-50, -40], [50, -40], "segment");
       w.addLine("east", [30, -50], [30, 50], "segment");
       for (let i = 0; i < 36; i++)
         w.addBody(`f${i}`, { x: (i % 6) * 2.5, y: 20 + Math.floor(i / 6) * 2.5, r: 1, m: 1 });
-      w.addBody("A", { x: 0, y: 0, r: 0.5, m: 1, vx: 4 });
+      w.addBody("A", { x: 2, y: 0, r: 0.5, m: 1, vx: 4 });
       w.addBody("B", { x: 6, y: 0, r: 0.5, m: 1 });
       w.addBody("C", { x: 6, y: 3, r: 0.5, m: 1, vy: -4 });
       expect(record(w, { maxEvents: 1 })).toMatchObject([{ time: 0.5, a: "B", b: "C" }]);
@@ -140,17 +141,17 @@ describe("World.nextEventTime", () => {
     const twin = make();
     const cross = spyOnSim("processCrossing");
     const predict = spyOnSim("predict");
-    expect(w.nextEventTime()).toBe(7.375);
+    expect(w.nextEventTime()).toBe(6.875);
     const crossed = new Set(cross.mock.calls.map((c) => c[0]));
     expect(predict.mock.calls.length).toBeGreaterThan(0);
     expect(predict.mock.calls.every((c) => crossed.has(c[0]))).toBe(true);
     vi.restoreAllMocks();
-    // A disc added in A's path now (t = 0.5) is hit at t = 0.5 + (20 - 1 - 2) / 4.
+    // A disc added in A's path now (t = 0.5, A at x = 4) is hit at t = 0.5 + (20 - 1 - 4) / 4.
     for (const x of [w, twin]) x.addBody("late", { x: 20, y: 0, r: 0.5, m: 1 });
-    expect(w.nextEventTime()).toBe(4.75);
+    expect(w.nextEventTime()).toBe(4.25);
     const events = record(w, { maxEvents: 5 });
     expect(events).toStrictEqual(record(twin, { maxEvents: 5 }));
-    expect(events[0]).toMatchObject({ time: 4.75, kind: "bodyBody", a: "A", b: "late" });
+    expect(events[0]).toMatchObject({ time: 4.25, kind: "bodyBody", a: "A", b: "late" });
     expect(w.bodies()).toStrictEqual(twin.bodies());
   });
 

@@ -4,7 +4,7 @@
  * already there (touching is allowed), using the broad-phase grid for large scenes. Every check
  * throws ChapgameError naming the field before anything changes.
  */
-import { GRID_BIG_BODIES_MAX, OVERLAP_REL } from "../tolerances.js";
+import { OVERLAP_REL } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
 import { distanceToLine, type Line, type LineKind, makeLine, type Point } from "./obstacles.js";
 import { Simulator } from "./simulator.js";
@@ -45,8 +45,8 @@ export class Placement extends Simulator {
 
   /** Make sure the grid can answer overlap queries for a disc (x, y, r); rebuild it if not. */
   protected prepareGridFor(x: number, y: number, r: number): void {
-    // A disc too large for the cells may join the big bodies while there is room among them.
-    const tooLarge = r > this.gridMaxR && this.bigBodies.length >= GRID_BIG_BODIES_MAX;
+    // A disc larger than every level fits needs a coarser level.
+    const tooLarge = r > this.grid.maxRadius();
     if (this.index.size < LINEAR_SCAN_BODIES) {
       if (tooLarge) this.rebuildGrid(x, y, r, 2);
       return;
@@ -73,18 +73,9 @@ export class Placement extends Simulator {
       if (dx * dx + dy * dy < R * R)
         throw new ChapgameError("x", `the body would overlap body '${b.ids[s]}'`);
     };
-    // A disc larger than the cells can reach bodies beyond the 3x3 cells around it.
-    if (this.index.size < LINEAR_SCAN_BODIES || r > this.gridMaxR) {
+    if (this.index.size < LINEAR_SCAN_BODIES) {
       for (const s of this.index.values()) test(s);
-    } else {
-      for (const s of this.bigBodies) test(s);
-      const g = this.grid;
-      const cx = g.column(x);
-      const cy = g.row(y);
-      for (let yy = Math.max(0, cy - 1); yy <= Math.min(g.ny - 1, cy + 1); yy++)
-        for (let xx = Math.max(0, cx - 1); xx <= Math.min(g.nx - 1, cx + 1); xx++)
-          for (let s = g.head[yy * g.nx + xx] as number; s >= 0; s = g.next[s] as number) test(s);
-    }
+    } else this.forEachNear(x, y, r, test);
     const rk = r * keep;
     for (const line of this.lineList)
       if (distanceToLine(line, x, y) < rk)

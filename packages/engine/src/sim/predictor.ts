@@ -8,7 +8,6 @@
 import { EV_BODY, EV_LINE, EV_NONE, EV_POINT, EV_STOP } from "./bodyStore.js";
 import { axisExit } from "./cellExit.js";
 import { ContactTimes } from "./contactTimes.js";
-import { BIG_CELL } from "./grid.js";
 import type { Line, Point } from "./obstacles.js";
 
 const INF = Number.POSITIVE_INFINITY;
@@ -83,15 +82,19 @@ export class Predictor extends ContactTimes {
     b.evKind[s] = EV_NONE;
     const tEnd = b.mot[s * 8 + 7] as number;
     if (tEnd < INF) this.offer(s, Math.max(tEnd, this.now), EV_STOP, -1, 0);
+    this.stamp++;
+    b.crossTime[s] = this.grid.levels === 1 ? this.scanFlat(s, moving) : this.scanAllLevels(s, moving);
+    if (moving) for (const i of this.globalLines) this.testLine(s, i);
+    const key = Math.min(b.evTime[s] as number, b.crossTime[s] as number);
+    this.heap.set(s, key);
+  }
+
+  /** The scans of `predict` in a grid of one level; returns the next crossing time. */
+  private scanFlat(s: number, moving: boolean): number {
     const grid = this.grid;
     const cell = grid.cellOf[s] as number;
-    if (cell === BIG_CELL) {
-      this.predictBig(s, moving);
-      return;
-    }
     const cx = cell % grid.nx;
     const cy = (cell - cx) / grid.nx;
-    this.stamp++;
     for (let y = cy - 1; y <= cy + 1; y++) {
       if (y < 0 || y >= grid.ny) continue;
       for (let x = cx - 1; x <= cx + 1; x++) {
@@ -100,34 +103,72 @@ export class Predictor extends ContactTimes {
         if (moving) this.scanCellObstacles(s, y * grid.nx + x);
       }
     }
-    if (moving) for (const i of this.globalLines) this.testLine(s, i);
-    for (const o of this.bigBodies) this.testBody(s, o, moving);
-    b.crossTime[s] = moving && (grid.nx > 1 || grid.ny > 1) ? this.crossing(s, cx, cy) : INF;
-    const key = Math.min(b.evTime[s] as number, b.crossTime[s] as number);
-    this.heap.set(s, key);
+    return moving && (grid.nx > 1 || grid.ny > 1) ? this.crossing(s, 0, cx, cy) : INF;
   }
 
-  /** Test body s (moving or not) against body o. */
-  protected testBody(s: number, o: number, moving: boolean): void {
-    if (o === s || (!moving && this.opt.restingSkip && !this.isMoving(o))) return;
-    const t = this.pairTime(s, o);
-    if (t !== INF) this.offer(s, t, EV_BODY, o, 0);
+  /** The scans of `predict` in a grid of several levels; returns the next crossing time. */
+  private scanAllLevels(s: number, moving: boolean): number {
+    const grid = this.grid;
+    const k = grid.levelOf[s] as number;
+    const base = grid.base[k] as number;
+    const nxk = grid.nxOf[k] as number;
+    const nyk = grid.nyOf[k] as number;
+    const local = (grid.cellOf[s] as number) - base;
+    const cx = local % nxk;
+    const cy = (local - cx) / nxk;
+    this.scanLevels(s, k, cx, cy, moving);
+    if (moving)
+      for (let y = Math.max(0, cy - 1); y <= Math.min(nyk - 1, cy + 1); y++)
+        for (let x = Math.max(0, cx - 1); x <= Math.min(nxk - 1, cx + 1); x++)
+          this.scanCellObstacles(s, base + y * nxk + x);
+    return moving && (nxk > 1 || nyk > 1) ? this.crossing(s, k, cx, cy) : INF;
   }
 
-  /** Predict a big body (state.ts): against every body and obstacle; it never crosses cells. */
-  private predictBig(s: number, moving: boolean): void {
-    const b = this.store;
-    for (let o = 0; o < b.slotCount; o++) if (b.ids[o] !== undefined) this.testBody(s, o, moving);
-    if (moving) {
-      for (let i = 0; i < this.lineList.length; i++) this.testLine(s, i);
-      for (let i = 0; i < this.pointList.length; i++) {
-        const p = this.pointList[i] as Point;
-        const t = this.pointTime(s, p.x, p.y);
-        if (t !== INF) this.offer(s, t, EV_POINT, i, 0);
+  /** Test body s against the bodies in level j's cells [x0, x1] x [y0, y1] (clipped to the grid). */
+  protected scanBlock(
+    s: number,
+    j: number,
+    x0: number,
+    x1: number,
+    y0: number,
+    y1: number,
+    moving: boolean,
+  ): void {
+    const grid = this.grid;
+    const nxj = grid.nxOf[j] as number;
+    const base = grid.base[j] as number;
+    const xa = Math.max(0, x0);
+    const xb = Math.min(nxj - 1, x1);
+    const ya = Math.max(0, y0);
+    const yb = Math.min((grid.nyOf[j] as number) - 1, y1);
+    for (let y = ya; y <= yb; y++)
+      for (let x = xa; x <= xb; x++) this.scanCell(s, base + y * nxj + x, moving);
+  }
+
+  /**
+   * Test body s, of level k in level k's cell (cx, cy), against every body it is a candidate pair
+   * with (grid.ts): of each coarser or equal level j, those in the 3x3 cells around its own cell
+   * at level j; of each finer level, those in the cells under its 3x3 block at level k.
+   */
+  protected scanLevels(s: number, k: number, cx: number, cy: number, moving: boolean): void {
+    for (const j of this.grid.occupied) {
+      if (j >= k) {
+        const X = cx >> (j - k);
+        const Y = cy >> (j - k);
+        this.scanBlock(s, j, X - 1, X + 1, Y - 1, Y + 1, moving);
+      } else {
+        const sh = k - j;
+        this.scanBlock(
+          s,
+          j,
+          (cx - 1) << sh,
+          ((cx + 2) << sh) - 1,
+          (cy - 1) << sh,
+          ((cy + 2) << sh) - 1,
+          moving,
+        );
       }
     }
-    b.crossTime[s] = INF;
-    this.heap.set(s, b.evTime[s] as number);
   }
 
   /** Test body s against line i: its interior, and the end points of rays and segments. */
@@ -163,18 +204,19 @@ export class Predictor extends ContactTimes {
     }
   }
 
-  /** Time at which body s (in cell cx, cy) next leaves its cell; direction stored in crossDir. */
-  protected crossing(s: number, cx: number, cy: number): number {
+  /** Time at which body s (in level k's cell cx, cy) next leaves its cell; direction stored in crossDir. */
+  protected crossing(s: number, k: number, cx: number, cy: number): number {
     const b = this.store;
     const grid = this.grid;
     const t0 = b.mot[s * 8 + 0] as number;
     const lo = this.now - t0;
     const hi = (b.mot[s * 8 + 7] as number) - t0;
-    // Cell bounds without allocation; edge cells extend to infinity.
-    const x0 = cx === 0 ? -INF : grid.boundaryX(cx);
-    const x1 = cx === grid.nx - 1 ? INF : grid.boundaryX(cx + 1);
-    const y0 = cy === 0 ? -INF : grid.boundaryY(cy);
-    const y1 = cy === grid.ny - 1 ? INF : grid.boundaryY(cy + 1);
+    // Cell bounds without allocation; edge cells extend to infinity. Level k's boundaries are
+    // level 0's boundaries (cx << k), computed the same way.
+    const x0 = cx === 0 ? -INF : grid.boundaryX(cx << k);
+    const x1 = cx === (grid.nxOf[k] as number) - 1 ? INF : grid.boundaryX((cx + 1) << k);
+    const y0 = cy === 0 ? -INF : grid.boundaryY(cy << k);
+    const y1 = cy === (grid.nyOf[k] as number) - 1 ? INF : grid.boundaryY((cy + 1) << k);
     const tx = axisExit(
       b.mot[s * 8 + 1] as number,
       b.mot[s * 8 + 3] as number,

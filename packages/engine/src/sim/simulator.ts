@@ -117,40 +117,6 @@ export class Simulator extends ZenoGuard {
     }
   }
 
-  protected processCrossing(s: number): void {
-    const b = this.store;
-    const grid = this.grid;
-    const cell = grid.cellOf[s] as number;
-    let cx = cell % grid.nx;
-    let cy = (cell - cx) / grid.nx;
-    const dir = b.crossDir[s] as number;
-    if (dir === 0) cx--;
-    else if (dir === 1) cx++;
-    else if (dir === 2) cy--;
-    else cy++;
-    grid.move(s, cy * grid.nx + cx);
-    // Only the row or column that just became adjacent holds new partners.
-    this.stamp++;
-    if (dir <= 1) {
-      const x = dir === 0 ? cx - 1 : cx + 1;
-      if (x >= 0 && x < grid.nx)
-        for (let y = cy - 1; y <= cy + 1; y++)
-          if (y >= 0 && y < grid.ny) this.scanNewCell(s, y * grid.nx + x);
-    } else {
-      const y = dir === 2 ? cy - 1 : cy + 1;
-      if (y >= 0 && y < grid.ny)
-        for (let x = cx - 1; x <= cx + 1; x++)
-          if (x >= 0 && x < grid.nx) this.scanNewCell(s, y * grid.nx + x);
-    }
-    b.crossTime[s] = this.crossing(s, cx, cy);
-    this.heap.set(s, Math.min(b.evTime[s] as number, b.crossTime[s] as number));
-  }
-
-  protected scanNewCell(s: number, cell: number): void {
-    this.scanCell(s, cell, true);
-    this.scanCellObstacles(s, cell);
-  }
-
   protected processBodyBody(s: number, o: number): void {
     const b = this.store;
     // Canonical order: `a` is the body with the smaller id, so the arithmetic is the same whichever body held the event.

@@ -1,17 +1,16 @@
 /**
  * The state of the event-driven simulation: bodies (their current motions), obstacles, the grid,
  * the event heap, globals and counters; the motion and broad-phase helpers; and the canonical order
- * of simultaneous events. Prediction (predictor.ts) and processing (simulator.ts) build on it.
+ * of simultaneous events. The broad phase (broadPhase.ts), prediction (predictor.ts) and processing
+ * (simulator.ts) build on it.
  *
  * Cell crossings never change a motion: the grid only decides which pairs are tested.
  */
 import { type MotionLaw, motionLaw, positionAt, velocityAt } from "../physics/motion.js";
-import { GRID_CELL_MARGIN, GRID_CELLS_PER_BODY, GRID_MIN_BODIES } from "../tolerances.js";
 import { BodyStore, EV_BODY, EV_CROSS, EV_LINE, EV_POINT } from "./bodyStore.js";
 import { CalendarQueue } from "./calendarQueue.js";
-import { BIG_CELL, cellRadius, Grid } from "./grid.js";
+import { Grid } from "./grid.js";
 import type { Line, Point } from "./obstacles.js";
-import { rasterizeSegment } from "./rasterize.js";
 import type { EventCounts, Optimizations, Vec2, WorldEvent } from "./types.js";
 import { ZenoWatch } from "./zenoWatch.js";
 
@@ -35,17 +34,6 @@ export class SimState {
   /** Per obstacle: the prediction stamp that last tested it (avoids testing it twice per prediction). */
   protected obstStamp: Int32Array = new Int32Array(0);
   protected stamp = 0;
-  /**
-   * Largest radius the grid's cells were built for. A larger body is a big body (at most
-   * GRID_BIG_BODIES_MAX of them; more force a rebuild with larger cells).
-   */
-  protected gridMaxR = 0;
-  /**
-   * Slots of the big bodies: kept out of the cells (grid.cellOf = BIG_CELL), each tested against every
-   * body and obstacle when predicted, and every body tests them, so that one disc of radius 100
-   * among thousands of radius 1 does not make every cell 100 times too large.
-   */
-  protected bigBodies: number[] = [];
   /** Predictions of all bodies must be recomputed before the next event (grid rebuilt, obstacles or globals changed). */
   protected dirty = true;
   readonly counts: EventCounts = { bodyBody: 0, bodyLine: 0, bodyPoint: 0, stop: 0 };
@@ -114,8 +102,6 @@ export class SimState {
     target.heap = this.heap.cloneWith((a, b) => target.tieLess(a, b));
     target.lineList = this.lineList.slice();
     target.pointList = this.pointList.slice();
-    target.gridMaxR = this.gridMaxR;
-    target.bigBodies = this.bigBodies.slice();
     target.globalLines = this.globalLines;
     target.obstStamp = new Int32Array(this.obstStamp.length);
     target.dirty = this.dirty;
@@ -194,98 +180,6 @@ export class SimState {
     return (
       b.mot[s * 8 + 3] !== 0 || b.mot[s * 8 + 4] !== 0 || b.mot[s * 8 + 5] !== 0 || b.mot[s * 8 + 6] !== 0
     );
-  }
-
-  // ---- broad phase --------------------------------------------------------------------------
-
-  /**
-   * Rebuild the grid around the current positions (never changes a motion). A disc (ex, ey, er)
-   * about to be added is included; while editing (`slack` > 1) the grid is made roomier so that
-   * a stream of additions rebuilds it only O(log n) times; `advance` rebuilds it tight.
-   */
-  protected rebuildGrid(ex = Number.NaN, ey = Number.NaN, er = 0, slack = 1): void {
-    const b = this.store;
-    const extra = !Number.isNaN(ex);
-    const radii: number[] = extra ? [er] : [];
-    let minX = extra ? ex : INF;
-    let minY = extra ? ey : INF;
-    let maxX = extra ? ex : -INF;
-    let maxY = extra ? ey : -INF;
-    let n = extra ? 1 : 0;
-    for (let s = 0; s < b.slotCount; s++) {
-      if (b.ids[s] === undefined) continue;
-      n++;
-      const x = this.xAt(s, this.now);
-      const y = this.yAt(s, this.now);
-      radii.push(b.r[s] as number);
-      minX = Math.min(minX, x);
-      maxX = Math.max(maxX, x);
-      minY = Math.min(minY, y);
-      maxY = Math.max(maxY, y);
-    }
-    this.grid.reserve(b.capacity);
-    this.heap.reserve(b.capacity);
-    if (n < GRID_MIN_BODIES || !this.opt.broadPhase) {
-      this.grid.reset(0, 0, 1, 1, 1);
-      this.gridMaxR = INF;
-    } else {
-      let w = 2 * cellRadius(radii) * slack * GRID_CELL_MARGIN;
-      // Leave room around the bodies so that edits nearby do not force a rebuild.
-      const padX = slack > 1 ? Math.max(0.5 * slack * (maxX - minX), 2 * w) : 2 * w;
-      const padY = slack > 1 ? Math.max(0.5 * slack * (maxY - minY), 2 * w) : 2 * w;
-      const width = maxX - minX + 2 * padX;
-      const height = maxY - minY + 2 * padY;
-      const maxCells = Math.max(16, GRID_CELLS_PER_BODY * n);
-      if ((width / w) * (height / w) > maxCells) w = Math.sqrt((width * height) / maxCells);
-      const nx = Math.max(1, Math.min(maxCells, Math.ceil(width / w)));
-      const ny = Math.max(1, Math.min(maxCells, Math.ceil(height / w)));
-      this.grid.reset(minX - padX, minY - padY, w, nx, ny);
-      this.gridMaxR = w / (2 * GRID_CELL_MARGIN);
-    }
-    this.bigBodies = [];
-    for (let s = 0; s < b.slotCount; s++) {
-      if (b.ids[s] === undefined) continue;
-      this.placeInGrid(s, this.xAt(s, this.now), this.yAt(s, this.now));
-    }
-    this.rasterizeObstacles();
-    this.dirty = true;
-  }
-
-  /** Put body s (not in the grid yet), now at (x, y), in its cell, or among the big bodies. */
-  protected placeInGrid(s: number, x: number, y: number): void {
-    if ((this.store.r[s] as number) > this.gridMaxR) {
-      this.grid.cellOf[s] = BIG_CELL;
-      this.bigBodies.push(s);
-    } else this.grid.insert(s, this.cellAt(x, y));
-  }
-
-  /** Take body s out of its cell or out of the big bodies. */
-  protected takeFromGrid(s: number): void {
-    if (this.grid.cellOf[s] === BIG_CELL) {
-      this.bigBodies.splice(this.bigBodies.indexOf(s), 1);
-      this.grid.cellOf[s] = -1;
-    } else this.grid.remove(s);
-  }
-
-  protected cellAt(x: number, y: number): number {
-    return this.grid.row(y) * this.grid.nx + this.grid.column(x);
-  }
-
-  /** Register segments and points in the grid cells they pass through; lines and rays stay global. */
-  protected rasterizeObstacles(): void {
-    const pairs: number[] = [];
-    const global: number[] = [];
-    this.lineList.forEach((line, i) => {
-      if (line.kind === "segment") rasterizeSegment(this.grid, line.x1, line.y1, line.x2, line.y2, i, pairs);
-      else global.push(i);
-    });
-    this.pointList.forEach((p, i) => {
-      rasterizeSegment(this.grid, p.x, p.y, p.x, p.y, -(i + 1), pairs);
-    });
-    this.grid.setObstacles(pairs);
-    this.globalLines = global;
-    this.obstStamp = new Int32Array(this.lineList.length + this.pointList.length);
-    this.stamp = 0;
   }
 
   // ---- canonical order of simultaneous events -----------------------------------------------

@@ -6,9 +6,9 @@
  * bodies the event is about (for the message).
  */
 import { EV_BODY, EV_STOP } from "./bodyStore.js";
-import { Predictor } from "./predictor.js";
+import { CellCrossings } from "./cellCrossings.js";
 
-export class ZenoGuard extends Predictor {
+export class ZenoGuard extends CellCrossings {
   /**
    * Count the event about to be processed now in the Zeno watch (throws on a Zeno state); `before`
    * is the World's time before it (equal to now: at the same instant as the previous item).

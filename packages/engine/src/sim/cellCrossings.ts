@@ -1,0 +1,119 @@
+/**
+ * Cell crossings: moving a body to the next cell of its level when its centre crosses a boundary,
+ * and testing it against the bodies that have just become its neighbours, at every level of the
+ * grid (grid.ts). A crossing never changes a motion; it only adds candidate pairs.
+ */
+import { Predictor } from "./predictor.js";
+
+export class CellCrossings extends Predictor {
+  protected processCrossing(s: number): void {
+    if (this.grid.levels === 1) this.crossFlat(s);
+    else this.crossLevels(s);
+  }
+
+  /** A crossing in a grid of one level. */
+  private crossFlat(s: number): void {
+    const b = this.store;
+    const grid = this.grid;
+    const cell = grid.cellOf[s] as number;
+    let cx = cell % grid.nx;
+    let cy = (cell - cx) / grid.nx;
+    const dir = b.crossDir[s] as number;
+    if (dir === 0) cx--;
+    else if (dir === 1) cx++;
+    else if (dir === 2) cy--;
+    else cy++;
+    grid.move(s, cy * grid.nx + cx);
+    // Only the row or column that just became adjacent holds new partners.
+    this.stamp++;
+    if (dir <= 1) {
+      const x = dir === 0 ? cx - 1 : cx + 1;
+      if (x >= 0 && x < grid.nx)
+        for (let y = cy - 1; y <= cy + 1; y++)
+          if (y >= 0 && y < grid.ny) this.scanNewCell(s, y * grid.nx + x);
+    } else {
+      const y = dir === 2 ? cy - 1 : cy + 1;
+      if (y >= 0 && y < grid.ny)
+        for (let x = cx - 1; x <= cx + 1; x++)
+          if (x >= 0 && x < grid.nx) this.scanNewCell(s, y * grid.nx + x);
+    }
+    b.crossTime[s] = this.crossing(s, 0, cx, cy);
+    this.heap.set(s, Math.min(b.evTime[s] as number, b.crossTime[s] as number));
+  }
+
+  private scanNewCell(s: number, cell: number): void {
+    this.scanCell(s, cell, true);
+    this.scanCellObstacles(s, cell);
+  }
+
+  /** A crossing in a grid of several levels. */
+  private crossLevels(s: number): void {
+    const b = this.store;
+    const grid = this.grid;
+    const k = grid.levelOf[s] as number;
+    const base = grid.base[k] as number;
+    const nxk = grid.nxOf[k] as number;
+    const nyk = grid.nyOf[k] as number;
+    const local = (grid.cellOf[s] as number) - base;
+    const ocx = local % nxk;
+    const ocy = (local - ocx) / nxk;
+    const dir = b.crossDir[s] as number;
+    const cx = dir === 0 ? ocx - 1 : dir === 1 ? ocx + 1 : ocx;
+    const cy = dir === 2 ? ocy - 1 : dir === 3 ? ocy + 1 : ocy;
+    grid.move(s, base + cy * nxk + cx);
+    // Only the row or column that just became adjacent holds new partners.
+    this.stamp++;
+    const sx = dir === 0 ? cx - 1 : dir === 1 ? cx + 1 : cx;
+    const sy = dir === 2 ? cy - 1 : dir === 3 ? cy + 1 : cy;
+    // The new strip at level k: (x0, y0)-(x1, y1).
+    const x0 = dir <= 1 ? sx : cx - 1;
+    const x1 = dir <= 1 ? sx : cx + 1;
+    const y0 = dir <= 1 ? cy - 1 : sy;
+    const y1 = dir <= 1 ? cy + 1 : sy;
+    this.scanNewAcrossLevels(s, k, ocx, ocy, cx, cy, x0, x1, y0, y1);
+    for (let y = Math.max(0, y0); y <= Math.min(nyk - 1, y1); y++)
+      for (let x = Math.max(0, x0); x <= Math.min(nxk - 1, x1); x++)
+        this.scanCellObstacles(s, base + y * nxk + x);
+    b.crossTime[s] = this.crossing(s, k, cx, cy);
+    this.heap.set(s, Math.min(b.evTime[s] as number, b.crossTime[s] as number));
+  }
+
+  /**
+   * After body s of level k moved from level k's cell (ocx, ocy) to (cx, cy), whose new strip of
+   * neighbours is [x0, x1] x [y0, y1]: test it against the bodies that just became candidates
+   * (grid.ts). Finer levels: the bodies under the strip. Coarser levels: only where its coarser
+   * cell changed, the strip beside the new coarser cell.
+   */
+  protected scanNewAcrossLevels(
+    s: number,
+    k: number,
+    ocx: number,
+    ocy: number,
+    cx: number,
+    cy: number,
+    x0: number,
+    x1: number,
+    y0: number,
+    y1: number,
+  ): void {
+    for (const j of this.grid.occupied) {
+      if (j <= k) {
+        const sh = k - j;
+        this.scanBlock(s, j, x0 << sh, ((x1 + 1) << sh) - 1, y0 << sh, ((y1 + 1) << sh) - 1, true);
+        continue;
+      }
+      const sh = j - k;
+      const X = cx >> sh;
+      const Y = cy >> sh;
+      const OX = ocx >> sh;
+      const OY = ocy >> sh;
+      if (X !== OX) {
+        const col = X > OX ? X + 1 : X - 1;
+        this.scanBlock(s, j, col, col, Y - 1, Y + 1, true);
+      } else if (Y !== OY) {
+        const row = Y > OY ? Y + 1 : Y - 1;
+        this.scanBlock(s, j, X - 1, X + 1, row, row, true);
+      }
+    }
+  }
+}

@@ -1,0 +1,110 @@
+// The grid's levels (grid.ts): nested cells, the level that fits each radius, and when levels pay
+// (gridCost.ts).
+import { describe, expect, it } from "vitest";
+import { lcg } from "../../test/randomScene.js";
+import { GRID_CELL_MARGIN } from "../tolerances.js";
+import { Grid } from "./grid.js";
+import { levelOfRadius, levelsPay, predictionCost } from "./gridCost.js";
+
+describe("Grid levels", () => {
+  it("has levels up to one that fits the largest radius, each cell twice as wide", () => {
+    const g = new Grid(8);
+    g.reset(-10, -20, 2, 100, 40, 7);
+    // Level k fits r <= 2 * 2^k / (2 * margin): 1, 2, 4, 8.
+    expect(g.levels).toBe(4);
+    expect([...g.nxOf]).toEqual([100, 50, 25, 13]);
+    expect([...g.nyOf]).toEqual([40, 20, 10, 5]);
+    expect([...g.base]).toEqual([0, 4000, 5000, 5250, 5315]);
+    expect(g.levelFor(0.5)).toBe(0);
+    expect(g.levelFor(1.5)).toBe(1);
+    expect(g.levelFor(7)).toBe(3);
+    expect(g.maxRadius()).toBeCloseTo(8 / GRID_CELL_MARGIN, 12);
+  });
+
+  it("stops at a level of one cell, which fits any radius", () => {
+    const g = new Grid(8);
+    g.reset(0, 0, 1, 5, 3, 1e6);
+    expect([...g.nxOf]).toEqual([5, 3, 2, 1]);
+    expect([...g.nyOf]).toEqual([3, 2, 1, 1]);
+    expect(g.maxRadius()).toBe(Number.POSITIVE_INFINITY);
+    expect(g.levelFor(1e9)).toBe(3);
+  });
+
+  it("level 0 fits the radius its side was computed from, whatever the rounding", () => {
+    const g = new Grid(8);
+    const r = 0.1;
+    g.reset(0, 0, 2 * r * GRID_CELL_MARGIN, 50, 50, r, r);
+    expect(g.levels).toBe(1);
+    expect(g.levelFor(r)).toBe(0);
+  });
+
+  it("a point's cell at level k holds its level-0 cell, and level k's boundaries are level 0's", () => {
+    const g = new Grid(8);
+    g.reset(-3, 5, 1.5, 37, 23, 20);
+    const rnd = lcg(7);
+    for (let i = 0; i < 500; i++) {
+      const x = -10 + rnd() * 70;
+      const y = 0 + rnd() * 45;
+      const cx = g.column(x);
+      const cy = g.row(y);
+      for (let k = 0; k < g.levels; k++) {
+        const cell = g.cellAt(k, cx, cy) - (g.base[k] as number);
+        const kx = cell % (g.nxOf[k] as number);
+        const ky = (cell - kx) / (g.nxOf[k] as number);
+        // Inside the level-k cell's bounds, computed as level 0's boundaries (edges unbounded).
+        const last = (g.nxOf[k] as number) - 1;
+        if (kx > 0) expect(x).toBeGreaterThanOrEqual(g.boundaryX(kx << k));
+        if (kx < last) expect(x).toBeLessThan(g.boundaryX((kx + 1) << k));
+        if (ky > 0) expect(y).toBeGreaterThanOrEqual(g.boundaryY(ky << k));
+        if (ky < (g.nyOf[k] as number) - 1) expect(y).toBeLessThan(g.boundaryY((ky + 1) << k));
+      }
+    }
+  });
+
+  it("counts the bodies of each level and lists the levels that hold any", () => {
+    const g = new Grid(8);
+    g.reset(0, 0, 1, 16, 16, 3);
+    g.enter(0, 0, g.cellAt(0, 1, 1));
+    g.enter(1, 2, g.cellAt(2, 9, 9));
+    g.enter(2, 2, g.cellAt(2, 9, 10));
+    expect(g.occupied).toEqual([0, 2]);
+    expect([...g.count]).toEqual([1, 0, 2, 0]);
+    g.leave(1);
+    g.leave(1);
+    expect([...g.count]).toEqual([1, 0, 1, 0]);
+    g.leave(0);
+    expect(g.occupied).toEqual([2]);
+    const c = g.clone();
+    c.leave(2);
+    expect(c.occupied).toEqual([]);
+    expect(g.occupied).toEqual([2]);
+  });
+});
+
+describe("when levels pay", () => {
+  const gasArea = (radii: number[]) => radii.reduce((a, r) => a + Math.PI * r * r, 0) / 0.1;
+
+  it("levels: a hundred discs of radius 20 among 10,000 of radius 1", () => {
+    const radii = [...Array.from({ length: 100 }, () => 20), ...Array.from({ length: 10000 }, () => 1)];
+    const area = gasArea(radii);
+    const w0 = Math.sqrt(area / 30000);
+    expect(levelOfRadius(20, w0)).toBe(3);
+    expect(levelsPay(radii, area, w0, 40)).toBe(true);
+  });
+
+  it("one level: radii spread evenly on a log scale from 1 to 30 (cells sized for the density fit most)", () => {
+    const rnd = lcg(5);
+    const radii = Array.from({ length: 10000 }, () => Math.exp(rnd() * Math.log(30)));
+    const area = gasArea(radii);
+    const w0 = Math.sqrt(area / 30000);
+    expect(levelsPay(radii, area, w0, 60)).toBe(false);
+    expect(predictionCost(radii, area, w0, 60, true)).toBeLessThan(
+      predictionCost(radii, area, w0, 60, false),
+    );
+  });
+
+  it("one level when one size fits all", () => {
+    const radii = Array.from({ length: 1000 }, () => 1);
+    expect(levelsPay(radii, gasArea(radii), 2, 2)).toBe(false);
+  });
+});
