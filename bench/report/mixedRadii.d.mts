@@ -8,7 +8,16 @@ export interface MixedRadiiRow {
   bigEventShare?: number;
   error?: string;
 }
+/** A row of a gas with many large discs or radii over a range (bench/scenes/polydisperse.mjs). */
+export interface ManyRadiiRow {
+  law: string;
+  n: number;
+  batch?: number;
+  runs?: number;
+  eventsPerSecond?: number;
+  error?: string;
+}
 export function mixedRadiiBlock(
-  e: { mixedRadii?: { rows: MixedRadiiRow[]; error?: string } },
+  e: { mixedRadii?: { rows: MixedRadiiRow[]; manyRows?: ManyRadiiRow[]; error?: string } },
   out: string[],
 ): void;
