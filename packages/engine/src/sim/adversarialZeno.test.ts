@@ -125,5 +125,9 @@ describe("Zeno watch: states the model cannot pass are reported", () => {
     expect(events).toBeLessThan(1_000_000);
     expect(w.time).toBeGreaterThan(2.98);
     expect(w.time).toBeLessThan(2.99);
+    // The throw counted nothing: advancing again stops at the same event with the same message.
+    let again = 0;
+    expect((thrown(() => w.advance({}, () => again++)) as Error).message).toBe((e as Error).message);
+    expect(again).toBe(0);
   });
 });

@@ -16,6 +16,19 @@ describe("PushWatch", () => {
     expect(() => w.stop("pushed", true, 2.5)).toThrow(/body 'pushed' stopped .* in a row.*sustained push/);
   });
 
+  it("a stop that throws counts nothing: tried again, it throws the same message", () => {
+    const w = new PushWatch();
+    unmoved(w, "pushed", ZENO_PUSH_STREAK);
+    const message = `body 'pushed' stopped ${ZENO_PUSH_STREAK + 1} times in a row`;
+    expect(() => w.check("pushed", true, 2.5)).toThrow(message);
+    expect(() => w.stop("pushed", true, 2.5)).toThrow(message);
+    expect(() => w.stop("pushed", true, 2.5)).toThrow(message);
+    // A stop that moved the body is no push whatever the streak, and ends it.
+    expect(() => w.check("pushed", false, 2.5)).not.toThrow();
+    w.stop("pushed", false, 2.5);
+    expect(() => w.stop("pushed", true, 3)).not.toThrow();
+  });
+
   it("a stop that moved the body, or an edit of it, ends its streak", () => {
     const moved = new PushWatch();
     unmoved(moved, "a", ZENO_PUSH_STREAK);

@@ -25,21 +25,31 @@ export class PushWatch {
   private ids: string[] = [];
   private counts: number[] = [];
 
+  /**
+   * Throw if counting the stop of body `id` at `time` would reveal a sustained push; count nothing
+   * (so that the same stop, tried again after the throw, throws the same message).
+   */
+  check(id: string, unmoved: boolean, time: number): void {
+    if (!unmoved) return;
+    const k = this.ids.indexOf(id);
+    const n = k >= 0 ? (this.counts[k] as number) + 1 : 1;
+    if (n > ZENO_PUSH_STREAK)
+      throw new SimulationError(
+        `body '${id}' stopped ${n} times in a row where it had been set in motion, not moving by one rounding unit (to t=${time}): a disc pushed along against friction by another (a sustained push), which the model of elastic impulses and sliding friction resolves only by ever more collisions`,
+        time,
+      );
+  }
+
   /** Count the stop of body `id` at `time`; `unmoved`: it stopped where its motion started. */
   stop(id: string, unmoved: boolean, time: number): void {
+    this.check(id, unmoved, time);
     const k = this.ids.indexOf(id);
     if (!unmoved) {
       if (k >= 0) this.drop(k);
       return;
     }
     if (k >= 0) {
-      const n = (this.counts[k] as number) + 1;
-      this.counts[k] = n;
-      if (n > ZENO_PUSH_STREAK)
-        throw new SimulationError(
-          `body '${id}' stopped ${n} times in a row where it had been set in motion, not moving by one rounding unit (to t=${time}): a disc pushed along against friction by another (a sustained push), which the model of elastic impulses and sliding friction resolves only by ever more collisions`,
-          time,
-        );
+      this.counts[k] = (this.counts[k] as number) + 1;
       return;
     }
     if (this.ids.length < ZENO_PUSH_BODIES) {

@@ -15,8 +15,11 @@ export class ZenoGuard extends CellCrossings {
    */
   protected guardZeno(before: number, s: number, kind: number): void {
     this.guarded = s;
+    // Both watches test before either counts: an event that throws leaves the counters as they were.
+    const unmoved = kind === EV_STOP && this.stopsUnmoved(s);
+    if (unmoved) this.zeno.push.check(this.store.ids[s] as string, true, this.now);
     this.zeno.check(this.now, before, Math.max(1, this.store.slotCount), this.pumps, this.describeGuarded);
-    if (kind === EV_STOP) this.zeno.push.stop(this.store.ids[s] as string, this.stopsUnmoved(s), this.now);
+    if (kind === EV_STOP) this.zeno.push.stop(this.store.ids[s] as string, unmoved, this.now);
   }
 
   /** Whether body s, stopping now, is where its motion started, to the bit (a micro-stop). */

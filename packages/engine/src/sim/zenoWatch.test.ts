@@ -29,6 +29,16 @@ function throwsAt(interval: (i: number) => number, count: number, shift: number,
   return -1;
 }
 
+/** The message `f` throws ("" if it does not). */
+function thrownMessage(f: () => void): string {
+  try {
+    f();
+  } catch (e) {
+    return (e as Error).message;
+  }
+  return "";
+}
+
 const dyadic = (x: number): number => Math.floor(x * 2 ** 40) * 2 ** -40;
 /** A crush: intervals shrinking as 1/k² (their sum converges), from 2^-20 at the start. */
 const crush = (i: number): number => dyadic(2 ** -20 / (1 + i / 20_000) ** 2);
@@ -53,6 +63,31 @@ describe("ZenoWatch", () => {
     z.check(5, 4, n, never);
     for (let i = 0; i < limit; i++) z.check(5, 5, n, never);
     expect(() => z.check(5, 5, n, never)).toThrow(/at the same instant t=5/);
+  });
+
+  it("an event that throws counts nothing: tried again, it throws the same message", () => {
+    const n = 3;
+    const same = new ZenoWatch();
+    same.check(5, 4, n, never);
+    for (let i = 0; i < SIMULTANEOUS_EVENTS_PER_BODY * n; i++) same.check(5, 5, n, never);
+    const message = `more than ${SIMULTANEOUS_EVENTS_PER_BODY * n + 1} events at the same instant`;
+    expect(() => same.check(5, 5, n, never)).toThrow(message);
+    expect(() => same.check(5, 5, n, never)).toThrow(message);
+    // A converging run: the window that throws is thrown again, with the same text.
+    const i = throwsAt(crush, 40 * zenoWindow(2), 0);
+    expect(i).toBeGreaterThan(0);
+    const z = new ZenoWatch();
+    let t = 0;
+    for (let k = 0; k < i; k++) {
+      const before = t;
+      t += crush(k);
+      z.check(t, before, 2, always);
+    }
+    const last = t;
+    t += crush(i);
+    const first = thrownMessage(() => z.check(t, last, 2, always));
+    expect(first).toMatch(/accumulate at a finite time/);
+    expect(thrownMessage(() => z.check(t, last, 2, always))).toBe(first);
   });
 
   it("starts a new run of simultaneous events when time moves on", () => {

@@ -71,15 +71,21 @@ export class ZenoWatch {
    * completes a converging run. `what` describes the event, for the message only.
    */
   check(time: number, before: number, n: number, pumpsEnergy: () => boolean, what?: () => string): void {
-    if (time !== before) this.sameTimeCount = 0;
-    else if (++this.sameTimeCount > simultaneousLimit(n)) {
+    // Nothing is counted until the event has passed every test, so the same event, tried again
+    // after a throw, throws the same message (as a World rebuilt from the saved counters does).
+    const sameTime = time !== before ? 0 : this.sameTimeCount + 1;
+    if (sameTime > simultaneousLimit(n)) {
       throw new SimulationError(
-        `more than ${this.sameTimeCount} events at the same instant t=${time}${what === undefined ? "" : ` (the last: ${what()})`}: a Zeno state (resting contact, two discs pressed together, or an inelastic collapse) that the exact model cannot resolve`,
+        `more than ${sameTime} events at the same instant t=${time}${what === undefined ? "" : ` (the last: ${what()})`}: a Zeno state (resting contact, two discs pressed together, or an inelastic collapse) that the exact model cannot resolve`,
         time,
       );
     }
     const w = zenoWindow(n);
-    if (++this.windowCount < w) return;
+    if (this.windowCount + 1 < w) {
+      this.sameTimeCount = sameTime;
+      this.windowCount++;
+      return;
+    }
     const progress = time - this.windowStart;
     // The first window (no start yet) only starts the first run, at its end.
     if (this.windowStart === -INF) this.runStart = time;
@@ -90,6 +96,7 @@ export class ZenoWatch {
         time,
       );
     }
+    this.sameTimeCount = sameTime;
     this.lastProgress = progress;
     this.windowStart = time;
     this.windowCount = 0;
