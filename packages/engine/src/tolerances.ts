@@ -172,6 +172,7 @@ export const SIMULTANEOUS_EVENTS_PER_PAIR = 0.5;
  */
 export const ZENO_WINDOW_EVENTS = 200_000;
 export const ZENO_WINDOW_EVENTS_PER_BODY = 20;
+/** @deprecated Unused (see above); kept because it is exported. */
 export const ZENO_MIN_PROGRESS = 1e-6;
 
 /**
