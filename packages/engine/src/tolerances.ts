@@ -205,8 +205,8 @@ export const ZENO_STREAK_PROGRESS = 0.01;
 /**
  * @deprecated Unused since the grid has levels (sim/grid.ts); kept because they are exported.
  * They bounded the "big bodies" kept out of the cells and tested against every body: at most
- * GRID_BIG_BODIES_MAX discs more than GRID_BIG_RATIO times the next largest. A 101st disc of radius
- * 20 among 10,000 of radius 1 made every cell fit radius 20 (5 times slower than now).
+ * GRID_BIG_BODIES_MAX discs more than GRID_BIG_RATIO times the next largest. A 9th disc of radius 20
+ * among 10,000 of radius 1 made every cell fit radius 20 (100 of them: 2 times slower than now).
  */
 export const GRID_BIG_BODIES_MAX = 8;
 /** @deprecated See GRID_BIG_BODIES_MAX. */

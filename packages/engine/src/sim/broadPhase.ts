@@ -17,9 +17,11 @@ export class BroadPhase extends SimState {
    * about to be added is included; while editing (`slack` > 1) the grid is made roomier so that
    * a stream of additions rebuilds it only O(log n) times; `advance` rebuilds it tight.
    *
-   * Level 0's cells fit the smallest disc (or are larger, at most GRID_CELLS_PER_BODY cells per
-   * body); larger discs go to coarser levels, so one radius-100 disc among thousands of radius 1
-   * makes no cell 100 times too large, and neither do a hundred of them.
+   * Two layouts are weighed (gridCost.ts): level-0 cells that fit the smallest disc, larger discs
+   * in coarser levels, so that one radius-100 disc among thousands of radius 1 makes no cell 100
+   * times too large, and neither do a hundred of them; or cells that fit the largest disc. Either
+   * way cells are at least as large as GRID_CELLS_PER_BODY cells per body allow, and the levels go
+   * up to a single cell, so a disc that grows later has a level without a rebuild.
    */
   protected rebuildGrid(ex = Number.NaN, ey = Number.NaN, er = 0, slack = 1): void {
     const b = this.store;
@@ -68,8 +70,7 @@ export class BroadPhase extends SimState {
       const fine = layout(minR);
       const area = one[3] * one[2] * (one[4] * one[2]);
       const [ox, oy, w, nx, ny] = levelsPay(radii, area, fine[2], one[2]) ? fine : one;
-      // Levels up to one that fits the largest disc (or the edit's slack times it).
-      this.grid.reset(ox, oy, w, nx, ny, maxR * slack, w === one[2] ? maxR : minR);
+      this.grid.reset(ox, oy, w, nx, ny, w === one[2] ? maxR : minR);
     }
     for (let s = 0; s < b.slotCount; s++) {
       if (b.ids[s] === undefined) continue;
@@ -111,7 +112,6 @@ export class BroadPhase extends SimState {
   /**
    * Call `visit` for every body registered near a disc of radius r at (x, y): every body it could
    * touch before either crosses a cell boundary (the scan `predict` makes, for placement checks).
-   * Needs r <= grid.maxRadius().
    */
   protected forEachNear(x: number, y: number, r: number, visit: (s: number) => void): void {
     const g = this.grid;

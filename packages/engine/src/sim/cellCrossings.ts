@@ -7,7 +7,7 @@ import { Predictor } from "./predictor.js";
 
 export class CellCrossings extends Predictor {
   protected processCrossing(s: number): void {
-    if (this.grid.levels === 1) this.crossFlat(s);
+    if (this.grid.flat) this.crossFlat(s);
     else this.crossLevels(s);
   }
 
@@ -99,7 +99,7 @@ export class CellCrossings extends Predictor {
     for (const j of this.grid.occupied) {
       if (j <= k) {
         const sh = k - j;
-        this.scanBlock(s, j, x0 << sh, ((x1 + 1) << sh) - 1, y0 << sh, ((y1 + 1) << sh) - 1, true);
+        this.scanFiner(s, j, x0 << sh, ((x1 + 1) << sh) - 1, y0 << sh, ((y1 + 1) << sh) - 1, true);
         continue;
       }
       const sh = j - k;

@@ -6,7 +6,9 @@
  * side w >= 2 * maxR two discs in contact are always in the same or adjacent cells; a body's
  * neighbourhood changes only when its centre crosses a cell boundary, which is itself an exact
  * event (a root of a degree <= 2 polynomial). Each event then costs O(1) pair tests plus O(1)
- * expected in the event queue, whatever N is. Swept boxes need a time bound per box and
+ * expected in the event queue, whatever N is, for discs of similar sizes (a disc in a coarser
+ * level tests the finer discs under its 3x3 block, or all of a finer level when they are fewer
+ * than the cells there). Swept boxes need a time bound per box and
  * re-insertion when it expires, which costs more per event for the dilute gases this engine is
  * built for.
  *
@@ -18,8 +20,8 @@
  * the 3x3 cells around it there, and against finer bodies in the finer cells under its own 3x3
  * block. A body's cell at a coarser level can only change when it crosses a boundary of its own
  * level, which is an event already, so adjacency stays exact. The top level may be a single cell
- * (everything adjacent), which takes any radius. With one radius there is one level, and the scans
- * are those of a plain grid.
+ * (everything adjacent), which takes any radius. The levels always go up to it; while only level 0
+ * holds bodies (`flat`), the scans are those of a plain grid.
  *
  * The outermost rows and columns of every level extend to infinity, so a body leaving the region
  * stays in an edge cell and causes no more crossing events (a disc flying away for ever costs
@@ -52,6 +54,14 @@ export class Grid {
   count: Int32Array = new Int32Array(1);
   /** Levels that hold at least one body, ascending (the scans visit only these). */
   occupied: number[] = [];
+  /** Whether no level but level 0 holds a body (the scans of a plain grid then suffice). */
+  flat = true;
+  /**
+   * The bodies of each level, in no particular order, and each slot's place in its level's list: a
+   * coarse disc near more finer cells than the finer level has bodies tests those bodies instead.
+   */
+  members: number[][] = [[]];
+  memberPos: Int32Array;
   head: Int32Array = new Int32Array(1).fill(-1);
   next: Int32Array;
   prev: Int32Array;
@@ -64,6 +74,7 @@ export class Grid {
     this.prev = new Int32Array(slotCapacity).fill(-1);
     this.cellOf = new Int32Array(slotCapacity).fill(-1);
     this.levelOf = new Int8Array(slotCapacity);
+    this.memberPos = new Int32Array(slotCapacity);
   }
 
   reserve(capacity: number): void {
@@ -80,15 +91,19 @@ export class Grid {
     const lv = new Int8Array(cap);
     lv.set(this.levelOf);
     this.levelOf = lv;
+    const mp = new Int32Array(cap);
+    mp.set(this.memberPos);
+    this.memberPos = mp;
   }
 
   /**
    * Reset to an empty grid with level-0 cells of side w, nx * ny of them, lower-left corner
-   * (ox, oy), and enough levels for a disc of radius `maxR` (fewer if a coarser level is a single
-   * cell, which fits any radius); level 0 fits `sizedFor`, the radius w was computed from (w is at
-   * least 2 * GRID_CELL_MARGIN times it, up to rounding). nx = ny = 1 gives one cell for everything.
+   * (ox, oy), and coarser levels up to one of a single cell, which fits any radius (so a disc of any
+   * size has a level without a rebuild). Level 0 fits `sizedFor`, the radius w was computed from (w
+   * is at least 2 * GRID_CELL_MARGIN times it, up to rounding). nx = ny = 1 gives one cell for
+   * everything.
    */
-  reset(ox: number, oy: number, w: number, nx: number, ny: number, maxR = 0, sizedFor = 0): void {
+  reset(ox: number, oy: number, w: number, nx: number, ny: number, sizedFor = 0): void {
     this.ox = ox;
     this.oy = oy;
     this.w = w;
@@ -105,7 +120,7 @@ export class Grid {
       nyOf.push(cy);
       // Level 0 fits the radius its side was computed from, whatever the rounding of w / (2 margin).
       fit.push(single ? INF : Math.max((w * 2 ** k) / (2 * GRID_CELL_MARGIN), k === 0 ? sizedFor : 0));
-      if (single || (fit[k] as number) >= maxR) break;
+      if (single) break;
     }
     const levels = nxOf.length;
     this.levels = levels;
@@ -119,11 +134,13 @@ export class Grid {
     if (this.head.length < cells) this.head = new Int32Array(cells);
     this.head.fill(-1, 0, cells);
     this.count = new Int32Array(levels);
+    this.members = nxOf.map(() => []);
     this.occupied = [];
+    this.flat = true;
     this.cellOf.fill(-1);
   }
 
-  /** Largest radius the grid has a level for. */
+  /** Largest radius the grid has a level for (Infinity: the top level is a single cell). */
   maxRadius(): number {
     return this.fitR[this.levels - 1] as number;
   }
@@ -144,9 +161,12 @@ export class Grid {
   enter(slot: number, k: number, cell: number): void {
     this.levelOf[slot] = k;
     this.insert(slot, cell);
+    const list = this.members[k] as number[];
+    this.memberPos[slot] = list.length;
+    list.push(slot);
     const c = this.count[k] as number;
     this.count[k] = c + 1;
-    if (c === 0) this.occupied = [...this.occupied, k].sort((a, b) => a - b);
+    if (c === 0) this.setOccupied([...this.occupied, k].sort((a, b) => a - b));
   }
 
   /** Take slot s out of the grid (nothing if it is not registered). */
@@ -154,9 +174,21 @@ export class Grid {
     if ((this.cellOf[slot] as number) < 0) return;
     const k = this.levelOf[slot] as number;
     this.remove(slot);
+    const list = this.members[k] as number[];
+    const last = list.pop() as number;
+    if (last !== slot) {
+      const at = this.memberPos[slot] as number;
+      list[at] = last;
+      this.memberPos[last] = at;
+    }
     const c = (this.count[k] as number) - 1;
     this.count[k] = c;
-    if (c === 0) this.occupied = this.occupied.filter((j) => j !== k);
+    if (c === 0) this.setOccupied(this.occupied.filter((j) => j !== k));
+  }
+
+  private setOccupied(levels: number[]): void {
+    this.occupied = levels;
+    this.flat = levels.length === 0 || (levels.length === 1 && levels[0] === 0);
   }
 
   /** Column of x (clamped to the grid: edge columns extend to infinity). */
@@ -277,11 +309,14 @@ export class Grid {
     g.fitR = this.fitR;
     g.count = this.count.slice();
     g.occupied = this.occupied;
+    g.flat = this.flat;
     g.head = this.head.slice();
     g.next = this.next.slice();
     g.prev = this.prev.slice();
     g.cellOf = this.cellOf.slice();
     g.levelOf = this.levelOf.slice();
+    g.members = this.members.map((m) => m.slice());
+    g.memberPos = this.memberPos.slice();
     g.obstStart = this.obstStart;
     g.obstList = this.obstList;
     return g;

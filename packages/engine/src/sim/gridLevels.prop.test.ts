@@ -67,7 +67,7 @@ function build(scene: ReturnType<typeof levelScene>, opt: Optimizations): World 
 
 const gridOf = (w: World): Grid => (w as unknown as { grid: Grid }).grid;
 
-/** Edits at the same instant in both worlds (each may be refused, in both alike). */
+/** Edits at the same instant in both worlds (each may be refused, in both alike, with the same message). */
 function edit(w: World, seed: number): string[] {
   const rnd = lcg(seed ^ 0x2545f491);
   const ids = w.bodies().map((b) => b.id);
@@ -83,7 +83,7 @@ function edit(w: World, seed: number): string[] {
       t();
       return "ok";
     } catch (e) {
-      return (e as Error).message.replace(/body '\w+'/, "body");
+      return (e as Error).message;
     }
   });
 }

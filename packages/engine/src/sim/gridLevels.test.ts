@@ -7,40 +7,39 @@ import { Grid } from "./grid.js";
 import { levelOfRadius, levelsPay, predictionCost } from "./gridCost.js";
 
 describe("Grid levels", () => {
-  it("has levels up to one that fits the largest radius, each cell twice as wide", () => {
+  it("has levels of cells twice as wide up to a single cell, which fits any radius", () => {
     const g = new Grid(8);
-    g.reset(-10, -20, 2, 100, 40, 7);
-    // Level k fits r <= 2 * 2^k / (2 * margin): 1, 2, 4, 8.
-    expect(g.levels).toBe(4);
-    expect([...g.nxOf]).toEqual([100, 50, 25, 13]);
-    expect([...g.nyOf]).toEqual([40, 20, 10, 5]);
-    expect([...g.base]).toEqual([0, 4000, 5000, 5250, 5315]);
+    g.reset(-10, -20, 2, 100, 40);
+    // Level k fits r <= 2 * 2^k / (2 * margin): 1, 2, 4, ..., and the single cell anything.
+    expect(g.levels).toBe(8);
+    expect([...g.nxOf]).toEqual([100, 50, 25, 13, 7, 4, 2, 1]);
+    expect([...g.nyOf]).toEqual([40, 20, 10, 5, 3, 2, 1, 1]);
+    expect([...g.base]).toEqual([0, 4000, 5000, 5250, 5315, 5336, 5344, 5346, 5347]);
     expect(g.levelFor(0.5)).toBe(0);
     expect(g.levelFor(1.5)).toBe(1);
     expect(g.levelFor(7)).toBe(3);
-    expect(g.maxRadius()).toBeCloseTo(8 / GRID_CELL_MARGIN, 12);
+    expect(g.fitR[6]).toBeCloseTo(64 / GRID_CELL_MARGIN, 12);
+    expect(g.maxRadius()).toBe(Number.POSITIVE_INFINITY);
+    expect(g.levelFor(1e9)).toBe(7);
   });
 
-  it("stops at a level of one cell, which fits any radius", () => {
+  it("one cell for everything when nx = ny = 1", () => {
     const g = new Grid(8);
-    g.reset(0, 0, 1, 5, 3, 1e6);
-    expect([...g.nxOf]).toEqual([5, 3, 2, 1]);
-    expect([...g.nyOf]).toEqual([3, 2, 1, 1]);
-    expect(g.maxRadius()).toBe(Number.POSITIVE_INFINITY);
-    expect(g.levelFor(1e9)).toBe(3);
+    g.reset(0, 0, 1, 1, 1);
+    expect(g.levels).toBe(1);
+    expect(g.levelFor(1e9)).toBe(0);
   });
 
   it("level 0 fits the radius its side was computed from, whatever the rounding", () => {
     const g = new Grid(8);
     const r = 0.1;
-    g.reset(0, 0, 2 * r * GRID_CELL_MARGIN, 50, 50, r, r);
-    expect(g.levels).toBe(1);
+    g.reset(0, 0, 2 * r * GRID_CELL_MARGIN, 50, 50, r);
     expect(g.levelFor(r)).toBe(0);
   });
 
   it("a point's cell at level k holds its level-0 cell, and level k's boundaries are level 0's", () => {
     const g = new Grid(8);
-    g.reset(-3, 5, 1.5, 37, 23, 20);
+    g.reset(-3, 5, 1.5, 37, 23);
     const rnd = lcg(7);
     for (let i = 0; i < 500; i++) {
       const x = -10 + rnd() * 70;
@@ -63,17 +62,23 @@ describe("Grid levels", () => {
 
   it("counts the bodies of each level and lists the levels that hold any", () => {
     const g = new Grid(8);
-    g.reset(0, 0, 1, 16, 16, 3);
+    g.reset(0, 0, 1, 16, 16);
     g.enter(0, 0, g.cellAt(0, 1, 1));
     g.enter(1, 2, g.cellAt(2, 9, 9));
     g.enter(2, 2, g.cellAt(2, 9, 10));
     expect(g.occupied).toEqual([0, 2]);
-    expect([...g.count]).toEqual([1, 0, 2, 0]);
+    expect([...g.count]).toEqual([1, 0, 2, 0, 0]);
+    expect(g.flat).toBe(false);
     g.leave(1);
     g.leave(1);
-    expect([...g.count]).toEqual([1, 0, 1, 0]);
+    expect([...g.count]).toEqual([1, 0, 1, 0, 0]);
     g.leave(0);
     expect(g.occupied).toEqual([2]);
+    g.enter(0, 0, g.cellAt(0, 1, 1));
+    g.leave(2);
+    expect(g.flat).toBe(true);
+    g.leave(0);
+    g.enter(2, 2, g.cellAt(2, 9, 10));
     const c = g.clone();
     c.leave(2);
     expect(c.occupied).toEqual([]);

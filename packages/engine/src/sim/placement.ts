@@ -24,36 +24,42 @@ export class Placement extends Simulator {
     requireLineKind("kind", kind);
     if (a[0] === c[0] && a[1] === c[1]) throw new ChapgameError("p2", "must differ from p1");
     const line = makeLine(id, a, c, kind);
-    for (const [bid, s] of this.index) {
-      const r = this.store.r[s] as number;
-      if (distanceToLine(line, this.xAt(s, this.now), this.yAt(s, this.now)) < r)
-        throw new ChapgameError("p1", `the line would overlap body '${bid}'`);
-    }
+    const hit = this.firstBodyWhere(
+      (s) => distanceToLine(line, this.xAt(s, this.now), this.yAt(s, this.now)) < (this.store.r[s] as number),
+    );
+    if (hit !== undefined) throw new ChapgameError("p1", `the line would overlap body '${hit}'`);
     return line;
   }
 
   protected checkedPoint(id: string, p: Vec2): Point {
     const [x, y] = requireVec("p", p);
-    for (const [bid, s] of this.index) {
+    const hit = this.firstBodyWhere((s) => {
       const dx = this.xAt(s, this.now) - x;
       const dy = this.yAt(s, this.now) - y;
       const r = this.store.r[s] as number;
-      if (dx * dx + dy * dy < r * r) throw new ChapgameError("p", `the point would lie inside body '${bid}'`);
-    }
+      return dx * dx + dy * dy < r * r;
+    });
+    if (hit !== undefined) throw new ChapgameError("p", `the point would lie inside body '${hit}'`);
     return { id, x, y };
   }
 
-  /** Make sure the grid can answer overlap queries for a disc (x, y, r); rebuild it if not. */
+  /** The smallest id of the bodies for which `test` holds (a message independent of insertion order). */
+  private firstBodyWhere(test: (s: number) => boolean): string | undefined {
+    let best: string | undefined;
+    for (const [bid, s] of this.index) if ((best === undefined || bid < best) && test(s)) best = bid;
+    return best;
+  }
+
+  /**
+   * Make the grid roomier (rebuild it) when a disc (x, y, r) lands outside it in a large scene: the
+   * edge cells extend to infinity, so the grid stays right, but crowded edge cells are slow. Any
+   * radius has a level (the top one is a single cell).
+   */
   protected prepareGridFor(x: number, y: number, r: number): void {
-    // A disc larger than every level fits needs a coarser level.
-    const tooLarge = r > this.grid.maxRadius();
-    if (this.index.size < LINEAR_SCAN_BODIES) {
-      if (tooLarge) this.rebuildGrid(x, y, r, 2);
-      return;
-    }
+    if (this.index.size < LINEAR_SCAN_BODIES) return;
     const g = this.grid;
     const inside = x >= g.ox && x <= g.ox + g.nx * g.w && y >= g.oy && y <= g.oy + g.ny * g.w;
-    if (tooLarge || !inside) this.rebuildGrid(x, y, r, 2);
+    if (!inside) this.rebuildGrid(x, y, r, 2);
   }
 
   /**
@@ -65,24 +71,28 @@ export class Placement extends Simulator {
     const b = this.store;
     const now = this.now;
     const keep = roundOff ? 1 - OVERLAP_REL : 1;
+    // Every overlap is found and the smallest id named, so the message does not depend on the
+    // order bodies were added in or on the broad phase's scan order.
+    let body: string | undefined;
     const test = (s: number): void => {
       if (s === self) return;
       const dx = this.xAt(s, now) - x;
       const dy = this.yAt(s, now) - y;
       const R = (r + (b.r[s] as number)) * keep;
-      if (dx * dx + dy * dy < R * R)
-        throw new ChapgameError("x", `the body would overlap body '${b.ids[s]}'`);
+      const id = b.ids[s] as string;
+      if (dx * dx + dy * dy < R * R && (body === undefined || id < body)) body = id;
     };
     if (this.index.size < LINEAR_SCAN_BODIES) {
       for (const s of this.index.values()) test(s);
     } else this.forEachNear(x, y, r, test);
+    if (body !== undefined) throw new ChapgameError("x", `the body would overlap body '${body}'`);
     const rk = r * keep;
-    for (const line of this.lineList)
-      if (distanceToLine(line, x, y) < rk)
-        throw new ChapgameError("x", `the body would overlap line '${line.id}'`);
-    for (const p of this.pointList)
-      if ((p.x - x) * (p.x - x) + (p.y - y) * (p.y - y) < rk * rk)
-        throw new ChapgameError("x", `the body would overlap point '${p.id}'`);
+    const line = firstById(this.lineList.filter((l) => distanceToLine(l, x, y) < rk));
+    if (line) throw new ChapgameError("x", `the body would overlap line '${line.id}'`);
+    const point = firstById(
+      this.pointList.filter((p) => (p.x - x) * (p.x - x) + (p.y - y) * (p.y - y) < rk * rk),
+    );
+    if (point) throw new ChapgameError("x", `the body would overlap point '${point.id}'`);
   }
 
   // ---- obstacles ----------------------------------------------------------------------------
@@ -158,4 +168,11 @@ export class Placement extends Simulator {
       .sort((a, b) => (a.id < b.id ? -1 : 1))
       .map((p) => ({ id: p.id, p: [p.x, p.y] as Vec2 }));
   }
+}
+
+/** The obstacle with the smallest id, if any. */
+function firstById<T extends { id: string }>(list: T[]): T | undefined {
+  let best: T | undefined;
+  for (const o of list) if (best === undefined || o.id < best.id) best = o;
+  return best;
 }

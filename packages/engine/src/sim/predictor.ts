@@ -83,7 +83,7 @@ export class Predictor extends ContactTimes {
     const tEnd = b.mot[s * 8 + 7] as number;
     if (tEnd < INF) this.offer(s, Math.max(tEnd, this.now), EV_STOP, -1, 0);
     this.stamp++;
-    b.crossTime[s] = this.grid.levels === 1 ? this.scanFlat(s, moving) : this.scanAllLevels(s, moving);
+    b.crossTime[s] = this.grid.flat ? this.scanFlat(s, moving) : this.scanAllLevels(s, moving);
     if (moving) for (const i of this.globalLines) this.testLine(s, i);
     const key = Math.min(b.evTime[s] as number, b.crossTime[s] as number);
     this.heap.set(s, key);
@@ -146,6 +146,34 @@ export class Predictor extends ContactTimes {
   }
 
   /**
+   * Test body s against the bodies of a finer level j in its cells [x0, x1] x [y0, y1], or against
+   * all that level's bodies when there are fewer of them than cells (a superset of candidates
+   * changes no result: each pair's time depends on the two motions alone).
+   */
+  protected scanFiner(
+    s: number,
+    j: number,
+    x0: number,
+    x1: number,
+    y0: number,
+    y1: number,
+    moving: boolean,
+  ): void {
+    const grid = this.grid;
+    const cols = Math.min((grid.nxOf[j] as number) - 1, x1) - Math.max(0, x0) + 1;
+    const rows = Math.min((grid.nyOf[j] as number) - 1, y1) - Math.max(0, y0) + 1;
+    if (cols * rows <= (grid.count[j] as number)) {
+      this.scanBlock(s, j, x0, x1, y0, y1, moving);
+      return;
+    }
+    for (const o of grid.members[j] as number[]) {
+      if (o === s || (!moving && this.opt.restingSkip && !this.isMoving(o))) continue;
+      const t = this.pairTime(s, o);
+      if (t !== INF) this.offer(s, t, EV_BODY, o, 0);
+    }
+  }
+
+  /**
    * Test body s, of level k in level k's cell (cx, cy), against every body it is a candidate pair
    * with (grid.ts): of each coarser or equal level j, those in the 3x3 cells around its own cell
    * at level j; of each finer level, those in the cells under its 3x3 block at level k.
@@ -158,7 +186,7 @@ export class Predictor extends ContactTimes {
         this.scanBlock(s, j, X - 1, X + 1, Y - 1, Y + 1, moving);
       } else {
         const sh = k - j;
-        this.scanBlock(
+        this.scanFiner(
           s,
           j,
           (cx - 1) << sh,
