@@ -7,12 +7,11 @@ import { Predictor } from "./predictor.js";
 
 export class CellCrossings extends Predictor {
   protected processCrossing(s: number): void {
-    if (this.grid.flat) this.crossFlat(s);
-    else this.crossLevels(s);
-  }
-
-  /** A crossing in a grid of one level. */
-  private crossFlat(s: number): void {
+    if (!this.grid.flat) {
+      this.crossLevels(s);
+      return;
+    }
+    // Only level 0 holds bodies: a plain grid's crossing, inline (as in predict).
     const b = this.store;
     const grid = this.grid;
     const cell = grid.cellOf[s] as number;
@@ -24,7 +23,6 @@ export class CellCrossings extends Predictor {
     else if (dir === 2) cy--;
     else cy++;
     grid.move(s, cy * grid.nx + cx);
-    // Only the row or column that just became adjacent holds new partners.
     this.stamp++;
     if (dir <= 1) {
       const x = dir === 0 ? cx - 1 : cx + 1;

@@ -82,19 +82,20 @@ export class Predictor extends ContactTimes {
     b.evKind[s] = EV_NONE;
     const tEnd = b.mot[s * 8 + 7] as number;
     if (tEnd < INF) this.offer(s, Math.max(tEnd, this.now), EV_STOP, -1, 0);
-    this.stamp++;
-    b.crossTime[s] = this.grid.flat ? this.scanFlat(s, moving) : this.scanAllLevels(s, moving);
-    if (moving) for (const i of this.globalLines) this.testLine(s, i);
-    const key = Math.min(b.evTime[s] as number, b.crossTime[s] as number);
-    this.heap.set(s, key);
-  }
-
-  /** The scans of `predict` in a grid of one level; returns the next crossing time. */
-  private scanFlat(s: number, moving: boolean): number {
     const grid = this.grid;
+    if (!grid.flat) {
+      // Several levels hold bodies (grid.ts); the flat scans below are those of a plain grid, kept
+      // inline: split into their own method, the gas ran 5-10 % slower (V8 inlined less).
+      this.stamp++;
+      b.crossTime[s] = this.scanAllLevels(s, moving);
+      if (moving) for (const i of this.globalLines) this.testLine(s, i);
+      this.heap.set(s, Math.min(b.evTime[s] as number, b.crossTime[s] as number));
+      return;
+    }
     const cell = grid.cellOf[s] as number;
     const cx = cell % grid.nx;
     const cy = (cell - cx) / grid.nx;
+    this.stamp++;
     for (let y = cy - 1; y <= cy + 1; y++) {
       if (y < 0 || y >= grid.ny) continue;
       for (let x = cx - 1; x <= cx + 1; x++) {
@@ -103,7 +104,10 @@ export class Predictor extends ContactTimes {
         if (moving) this.scanCellObstacles(s, y * grid.nx + x);
       }
     }
-    return moving && (grid.nx > 1 || grid.ny > 1) ? this.crossing(s, 0, cx, cy) : INF;
+    if (moving) for (const i of this.globalLines) this.testLine(s, i);
+    b.crossTime[s] = moving && (grid.nx > 1 || grid.ny > 1) ? this.crossing(s, 0, cx, cy) : INF;
+    const key = Math.min(b.evTime[s] as number, b.crossTime[s] as number);
+    this.heap.set(s, key);
   }
 
   /** The scans of `predict` in a grid of several levels; returns the next crossing time. */

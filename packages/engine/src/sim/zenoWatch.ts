@@ -74,7 +74,7 @@ export class ZenoWatch {
     // Nothing is counted until the event has passed every test, so the same event, tried again
     // after a throw, throws the same message (as a World rebuilt from the saved counters does).
     const sameTime = time !== before ? 0 : this.sameTimeCount + 1;
-    if (sameTime > simultaneousLimit(n)) {
+    if (sameTime > 0 && sameTime > simultaneousLimit(n)) {
       throw new SimulationError(
         `more than ${sameTime} events at the same instant t=${time}${what === undefined ? "" : ` (the last: ${what()})`}: a Zeno state (resting contact, two discs pressed together, or an inelastic collapse) that the exact model cannot resolve`,
         time,
