@@ -3,7 +3,7 @@
 // grid World ended an open-ended advance at its last cell crossing (t = 213.4) where the World
 // without the grid stayed at its last event (t = 0), so every later edit landed elsewhere; and it
 // said "time" for an advance to a time while only crossings were left, where the other said "idle".
-import { describe, expect, it } from "vitest";
+import { describe, expect, it, vi } from "vitest";
 import type { Optimizations, WorldEvent } from "./types.js";
 import { World } from "./world.js";
 
@@ -63,5 +63,19 @@ describe("the end of an advance", () => {
     b.advance({ maxEvents: 20 }, (e) => eb.push({ ...e }));
     expect(ea).toEqual(eb);
     expect(ea.length).toBe(20);
+  });
+
+  it("an idle world's later advances skip the look-ahead until an edit", () => {
+    const w = spread({});
+    expect(w.advance({ untilTime: 1 }).reason).toBe("idle");
+    const peek = vi.spyOn(w, "nextEventTime");
+    for (let t = 2; t < 50; t++) expect(w.advance({ untilTime: t })).toEqual({ events: 0, reason: "idle" });
+    expect(peek).not.toHaveBeenCalled();
+    // An edit that sets up a collision: the next advance looks ahead again and says so.
+    w.updateBody("b0", { vx: -10, vy: 0 });
+    w.addBody("target", { x: w.body("b0").x - 10, y: w.body("b0").y, r: 1, m: 1 });
+    expect(w.advance({ untilTime: 49.5 })).toEqual({ events: 0, reason: "time" });
+    expect(peek).toHaveBeenCalledTimes(1);
+    vi.restoreAllMocks();
   });
 });

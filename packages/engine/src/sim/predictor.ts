@@ -76,6 +76,7 @@ export class Predictor extends ContactTimes {
 
   /** Recompute everything body s can run into next, and its next cell crossing. */
   protected predict(s: number): void {
+    this.idleAhead = false;
     const b = this.store;
     const moving = this.isMoving(s);
     b.evTime[s] = INF;

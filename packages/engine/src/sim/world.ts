@@ -177,9 +177,10 @@ export class World extends Edits {
 
   /** Whether a collision or stop lies ahead (internal items alone, such as cell crossings, are none). */
   private eventAhead(): boolean {
-    if (this.heap.size === 0) return false;
+    if (this.heap.size === 0 || this.idleAhead) return false;
     try {
-      return this.nextEventTime() !== INF;
+      this.idleAhead = this.nextEventTime() === INF;
+      return !this.idleAhead;
     } catch (e) {
       // Processing the next event would throw: so there is one.
       if (e instanceof SimulationError) return true;
