@@ -1,16 +1,8 @@
 // Types of bench/scenes/polydisperse.mjs, so TypeScript tests can build the benchmark's gases.
-import type { StressBody, StressWall } from "../stress/cases.d.mts";
+import type { GasScene } from "./gas.d.mts";
 
-export interface PolydisperseScene {
-  id: string;
-  title: string;
-  description: string;
-  span: number;
-  g: number;
-  gravity: [number, number];
-  bodies: StressBody[];
-  walls: StressWall[];
-}
+/** A gas scene without the single-radius gas's box and elasticity fields. */
+export type PolydisperseScene = Omit<GasScene, "box" | "elastic">;
 export const RADIUS_LAWS: Record<string, (i: number, rnd: () => number) => number>;
 export function polydisperseGas(options: {
   law: string;

@@ -48,13 +48,13 @@ export class CellCrossings extends Predictor {
   private crossLevels(s: number): void {
     const b = this.store;
     const grid = this.grid;
-    const k = grid.levelOf[s] as number;
+    grid.locate(s);
+    const k = grid.at[0] as number;
+    const ocx = grid.at[1] as number;
+    const ocy = grid.at[2] as number;
     const base = grid.base[k] as number;
     const nxk = grid.nxOf[k] as number;
     const nyk = grid.nyOf[k] as number;
-    const local = (grid.cellOf[s] as number) - base;
-    const ocx = local % nxk;
-    const ocy = (local - ocx) / nxk;
     const dir = b.crossDir[s] as number;
     const cx = dir === 0 ? ocx - 1 : dir === 1 ? ocx + 1 : ocx;
     const cy = dir === 2 ? ocy - 1 : dir === 3 ? ocy + 1 : ocy;

@@ -152,6 +152,20 @@ export class Grid {
     return k;
   }
 
+  /** Where `locate` puts a slot's level and its column and row in that level. */
+  readonly at = new Int32Array(3);
+
+  /** Set `at` to slot s's level, column and row (s must be registered). */
+  locate(slot: number): void {
+    const k = this.levelOf[slot] as number;
+    const nxk = this.nxOf[k] as number;
+    const local = (this.cellOf[slot] as number) - (this.base[k] as number);
+    const cx = local % nxk;
+    this.at[0] = k;
+    this.at[1] = cx;
+    this.at[2] = (local - cx) / nxk;
+  }
+
   /** Global index of the level-k cell holding the level-0 cell (cx, cy). */
   cellAt(k: number, cx: number, cy: number): number {
     return (this.base[k] as number) + (cy >> k) * (this.nxOf[k] as number) + (cx >> k);

@@ -114,13 +114,13 @@ export class Predictor extends ContactTimes {
   /** The scans of `predict` in a grid of several levels; returns the next crossing time. */
   private scanAllLevels(s: number, moving: boolean): number {
     const grid = this.grid;
-    const k = grid.levelOf[s] as number;
+    grid.locate(s);
+    const k = grid.at[0] as number;
+    const cx = grid.at[1] as number;
+    const cy = grid.at[2] as number;
     const base = grid.base[k] as number;
     const nxk = grid.nxOf[k] as number;
     const nyk = grid.nyOf[k] as number;
-    const local = (grid.cellOf[s] as number) - base;
-    const cx = local % nxk;
-    const cy = (local - cx) / nxk;
     this.scanLevels(s, k, cx, cy, moving);
     if (moving)
       for (let y = Math.max(0, cy - 1); y <= Math.min(nyk - 1, cy + 1); y++)
