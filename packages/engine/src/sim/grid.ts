@@ -140,12 +140,7 @@ export class Grid {
     this.cellOf.fill(-1);
   }
 
-  /** Largest radius the grid has a level for (Infinity: the top level is a single cell). */
-  maxRadius(): number {
-    return this.fitR[this.levels - 1] as number;
-  }
-
-  /** Finest level whose cells fit a disc of radius r (the top level if none: see maxRadius). */
+  /** Finest level whose cells fit a disc of radius r (the top level, a single cell, fits any). */
   levelFor(r: number): number {
     let k = 0;
     while (k < this.levels - 1 && r > (this.fitR[k] as number)) k++;
@@ -153,7 +148,7 @@ export class Grid {
   }
 
   /** Where `locate` puts a slot's level and its column and row in that level. */
-  readonly at = new Int32Array(3);
+  readonly at: Int32Array = new Int32Array(3);
 
   /** Set `at` to slot s's level, column and row (s must be registered). */
   locate(slot: number): void {

@@ -19,7 +19,7 @@ describe("Grid levels", () => {
     expect(g.levelFor(1.5)).toBe(1);
     expect(g.levelFor(7)).toBe(3);
     expect(g.fitR[6]).toBeCloseTo(64 / GRID_CELL_MARGIN, 12);
-    expect(g.maxRadius()).toBe(Number.POSITIVE_INFINITY);
+    expect(g.fitR[7]).toBe(Number.POSITIVE_INFINITY);
     expect(g.levelFor(1e9)).toBe(7);
   });
 

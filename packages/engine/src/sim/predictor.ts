@@ -76,7 +76,6 @@ export class Predictor extends ContactTimes {
 
   /** Recompute everything body s can run into next, and its next cell crossing. */
   protected predict(s: number): void {
-    this.idleAhead = false;
     const b = this.store;
     const moving = this.isMoving(s);
     b.evTime[s] = INF;
@@ -165,8 +164,8 @@ export class Predictor extends ContactTimes {
     moving: boolean,
   ): void {
     const grid = this.grid;
-    const cols = Math.min((grid.nxOf[j] as number) - 1, x1) - Math.max(0, x0) + 1;
-    const rows = Math.min((grid.nyOf[j] as number) - 1, y1) - Math.max(0, y0) + 1;
+    const cols = Math.max(0, Math.min((grid.nxOf[j] as number) - 1, x1) - Math.max(0, x0) + 1);
+    const rows = Math.max(0, Math.min((grid.nyOf[j] as number) - 1, y1) - Math.max(0, y0) + 1);
     if (cols * rows <= (grid.count[j] as number)) {
       this.scanBlock(s, j, x0, x1, y0, y1, moving);
       return;

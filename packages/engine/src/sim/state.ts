@@ -34,12 +34,6 @@ export class SimState {
   /** Per obstacle: the prediction stamp that last tested it (avoids testing it twice per prediction). */
   protected obstStamp: Int32Array = new Int32Array(0);
   protected stamp = 0;
-  /**
-   * A look-ahead found that no collision or stop will ever happen (World.advance), and no body has
-   * been predicted since: only an edit, which re-predicts, can change that. Saves repeating the
-   * look-ahead (which drains the remaining cell crossings) on every advance of an idle world.
-   */
-  protected idleAhead = false;
   /** Predictions of all bodies must be recomputed before the next event (grid rebuilt, obstacles or globals changed). */
   protected dirty = true;
   readonly counts: EventCounts = { bodyBody: 0, bodyLine: 0, bodyPoint: 0, stop: 0 };

@@ -9,7 +9,7 @@
  */
 import { positionAt, velocityAt } from "../physics/motion.js";
 import { Edits } from "./edits.js";
-import { ChapgameError, SimulationError } from "./errors.js";
+import { ChapgameError } from "./errors.js";
 import type { AdvanceLimits, AdvanceResult, BodyState, WorldEvent, WorldOptions } from "./types.js";
 import { requireFieldRate, requireFields, requireFinite, requireGravity } from "./validate.js";
 import type { ZenoCounters } from "./zenoWatch.js";
@@ -153,39 +153,14 @@ export class World extends Edits {
       throw new ChapgameError("maxEvents", "must be a whole number >= 0, or Infinity");
     this.prepare();
     let events = 0;
-    let lastEvent = this.now;
     while (events < maxEvents) {
       const r = this.stepOnce(untilTime, onEvent);
       if (r < 0) break;
       events += r;
-      if (r > 0) lastEvent = this.now;
     }
     if (events >= maxEvents && maxEvents !== INF) return { events, reason: "events" };
-    if (untilTime !== INF) {
-      this.now = untilTime;
-      return { events, reason: this.eventAhead() ? "time" : "idle" };
-    }
-    // Nothing will ever happen: the time is the last event's, not that of the internal items
-    // (cell crossings, stale predictions) processed after it, which depend on the optimizations.
-    // The grid then holds bodies where they will be, so it is rebuilt before it is used again.
-    if (this.now !== lastEvent) {
-      this.now = lastEvent;
-      this.dirty = true;
-    }
-    return { events, reason: "idle" };
-  }
-
-  /** Whether a collision or stop lies ahead (internal items alone, such as cell crossings, are none). */
-  private eventAhead(): boolean {
-    if (this.heap.size === 0 || this.idleAhead) return false;
-    try {
-      this.idleAhead = this.nextEventTime() === INF;
-      return !this.idleAhead;
-    } catch (e) {
-      // Processing the next event would throw: so there is one.
-      if (e instanceof SimulationError) return true;
-      throw e;
-    }
+    if (untilTime !== INF) this.now = untilTime;
+    return { events, reason: this.heap.size === 0 ? "idle" : "time" };
   }
 
   /**
