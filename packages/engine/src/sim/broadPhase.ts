@@ -5,7 +5,7 @@
  * grid only decides which pairs are tested, so no result depends on it, only speed.
  */
 import { GRID_CELL_MARGIN, GRID_CELLS_PER_BODY, GRID_MIN_BODIES } from "../tolerances.js";
-import { levelsPay } from "./gridCost.js";
+import { levelsPay, singleCellLevel } from "./gridCost.js";
 import { rasterizeSegment } from "./rasterize.js";
 import { SimState } from "./state.js";
 
@@ -69,7 +69,8 @@ export class BroadPhase extends SimState {
       const one = layout(maxR);
       const fine = layout(minR);
       const area = one[3] * one[2] * (one[4] * one[2]);
-      const [ox, oy, w, nx, ny] = levelsPay(radii, area, fine[2], one[2]) ? fine : one;
+      const top = singleCellLevel(fine[3], fine[4]);
+      const [ox, oy, w, nx, ny] = levelsPay(radii, area, fine[2], one[2], top) ? fine : one;
       this.grid.reset(ox, oy, w, nx, ny, w === one[2] ? maxR : minR);
     }
     for (let s = 0; s < b.slotCount; s++) {

@@ -4,7 +4,8 @@ import { describe, expect, it } from "vitest";
 import { lcg } from "../../test/randomScene.js";
 import { GRID_CELL_MARGIN } from "../tolerances.js";
 import { Grid } from "./grid.js";
-import { levelOfRadius, levelsPay, predictionCost } from "./gridCost.js";
+import { levelOfRadius, levelsPay, predictionCost, singleCellLevel } from "./gridCost.js";
+import { World } from "./world.js";
 
 describe("Grid levels", () => {
   it("has levels of cells twice as wide up to a single cell, which fits any radius", () => {
@@ -111,5 +112,25 @@ describe("when levels pay", () => {
   it("one level when one size fits all", () => {
     const radii = Array.from({ length: 1000 }, () => 1);
     expect(levelsPay(radii, gasArea(radii), 2, 2)).toBe(false);
+  });
+
+  it("no levels for a line of specks with discs among them (the discs would all land in the single top cell)", () => {
+    // Level-0 cells sized for the specks in a flat region are so small that a disc of radius 1
+    // would fit only the single top cell, tested against every body; the estimate counts that
+    // level as such (gridCost.ts, `top`), not as a level of cells that fit the discs.
+    const w = new World({ g: 0 });
+    for (let i = 0; i < 1000; i++)
+      w.addBody(`s${String(i).padStart(4, "0")}`, { x: 3 * i, y: 0, r: 1e-6, m: 1, vx: i % 2 ? 1 : -1 });
+    for (let i = 0; i < 50; i++)
+      w.addBody(`d${String(i).padStart(2, "0")}`, { x: 60 * i + 1.5, y: 0, r: 1, m: 1 });
+    w.advance({ maxEvents: 10 });
+    const grid = (w as unknown as { grid: Grid }).grid;
+    expect(grid.levelFor(1)).toBeLessThan(grid.levels - 1);
+  });
+
+  it("the single-cell level of a grid", () => {
+    expect(singleCellLevel(1, 1)).toBe(0);
+    expect(singleCellLevel(2, 1)).toBe(1);
+    expect(singleCellLevel(100, 40)).toBe(7);
   });
 });
