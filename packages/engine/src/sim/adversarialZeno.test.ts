@@ -89,6 +89,21 @@ describe("Zeno watch: states the model cannot pass are reported", () => {
     expect((e as Error).message).toMatch(/body 'd' rests against 'left' under an acceleration at t=0/);
   });
 
+  // Regression: the Zeno watch counted the refused event before the response refused it, so from
+  // the 64th retry on (64 events per body at one instant) the message turned into a Zeno state.
+  it("retrying a resting contact gives the same message every time, and nextEventTime agrees", () => {
+    const w = new World({ g: 0, gravity: [0, -10] });
+    w.addLine("floor", [-10, 0], [10, 0], "segment");
+    w.addBody("d", { x: 0, y: 1, r: 1, m: 1 });
+    const expected = /^body 'd' rests against 'floor' under an acceleration at t=0/;
+    for (let i = 0; i < 200; i++) {
+      expect((thrown(() => w.nextEventTime()) as Error).message).toMatch(expected);
+      expect((thrown(() => w.advance({ untilTime: 1 })) as Error).message).toMatch(expected);
+    }
+    expect(w.time).toBe(0);
+    expect(w.body("d")).toMatchObject({ x: 0, y: 1, vx: 0, vy: 0 });
+  });
+
   // Regression: with 64 events per body allowed at one instant, this rack was refused at the cue
   // ball's first contact ("more than 102465 events at the same instant"): the impulse passes
   // through 1,600 touching discs pair by pair, 140,613 events at t = 1.4964, and dies away.

@@ -44,10 +44,15 @@ export class Simulator extends ZenoGuard {
         return 0;
       }
     }
-    this.guardZeno(before, s, kind);
-    if (kind === EV_BODY) this.processBodyBody(s, b.evOther[s] as number);
-    else if (kind === EV_STOP) this.processStop(s);
-    else this.processObstacle(s, kind, b.evOther[s] as number, b.evAux[s] as number);
+    // An obstacle event guards itself, after the response's own refusal (a resting contact): a
+    // refused event counts nothing, so retrying gives the same message.
+    if (kind === EV_BODY) {
+      this.guardZeno(before, s, kind);
+      this.processBodyBody(s, b.evOther[s] as number);
+    } else if (kind === EV_STOP) {
+      this.guardZeno(before, s, kind);
+      this.processStop(s);
+    } else this.processObstacle(s, kind, b.evOther[s] as number, b.evAux[s] as number, before);
     onEvent?.(this.ev);
     return 1;
   }
@@ -98,7 +103,7 @@ export class Simulator extends ZenoGuard {
   private checkEvent(s: number, kind: number, before: number): void {
     const watch = this.zeno.save();
     try {
-      this.guardZeno(before, s, kind);
+      // The same order as stepOnce: an obstacle's resting refusal comes before the Zeno guard.
       if (kind === EV_LINE || kind === EV_POINT) {
         const b = this.store;
         const t = this.now;
@@ -112,6 +117,7 @@ export class Simulator extends ZenoGuard {
         );
         this.reflectOff(s, id, contact[0] as number, contact[1] as number);
       }
+      this.guardZeno(before, s, kind);
     } finally {
       this.zeno.load(watch);
     }
@@ -176,7 +182,8 @@ export class Simulator extends ZenoGuard {
     this.predict(s);
   }
 
-  protected processObstacle(s: number, kind: number, index: number, aux: number): void {
+  /** Process slot s's obstacle event now; `before` is the time before it, for the Zeno guard (after the refusal test). */
+  protected processObstacle(s: number, kind: number, index: number, aux: number, before: number): void {
     const b = this.store;
     const t = this.now;
     const x = this.xAt(s, t);
@@ -189,6 +196,7 @@ export class Simulator extends ZenoGuard {
     const approach = reflectResponse(this.vxAt(s, t), this.vyAt(s, t), nx, ny, vel);
     if (approach <= 0 && (b.mot[s * 8 + 5] as number) * nx + (b.mot[s * 8 + 6] as number) * ny > 0)
       this.reflectOff(s, otherId, nx, ny);
+    this.guardZeno(before, s, kind);
     this.setMotion(s, t, x, y, vel[0] as number, vel[1] as number);
     const nn = Math.sqrt(nx * nx + ny * ny);
     const ev = this.ev;

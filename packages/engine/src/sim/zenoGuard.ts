@@ -16,7 +16,7 @@ export class ZenoGuard extends CellCrossings {
   protected guardZeno(before: number, s: number, kind: number): void {
     this.guarded = s;
     // Both watches test before either counts: an event they refuse leaves the counters as they
-    // were. (A refusal by the response after this, a disc resting on a line, has been counted.)
+    // were. The response's own refusal (a disc resting on an obstacle) is tested before this.
     const unmoved = kind === EV_STOP && this.stopsUnmoved(s);
     if (unmoved) this.zeno.push.check(this.store.ids[s] as string, true, this.now);
     this.zeno.check(this.now, before, Math.max(1, this.store.slotCount), this.pumps, this.describeGuarded);
