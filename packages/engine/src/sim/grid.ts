@@ -134,6 +134,11 @@ export class Grid {
     if (this.head.length < cells) this.head = new Int32Array(cells);
     this.head.fill(-1, 0, cells);
     this.count = new Int32Array(levels);
+    // No obstacles until setObstacles (which a rebuild calls after placing the bodies).
+    this.obstPairs = [];
+    this.obstBuilt = new Uint8Array(levels).fill(1);
+    this.obstStart = new Int32Array(cells + 1);
+    this.obstList = new Int32Array(0);
     this.members = nxOf.map(() => []);
     this.occupied = [];
     this.flat = true;
@@ -175,7 +180,13 @@ export class Grid {
     list.push(slot);
     const c = this.count[k] as number;
     this.count[k] = c + 1;
-    if (c === 0) this.setOccupied([...this.occupied, k].sort((a, b) => a - b));
+    if (c === 0) {
+      this.setOccupied([...this.occupied, k].sort((a, b) => a - b));
+      if (this.obstBuilt[k] === 0) {
+        this.obstBuilt[k] = 1;
+        this.buildObstacles();
+      }
+    }
   }
 
   /** Take slot s out of the grid (nothing if it is not registered). */
@@ -250,18 +261,39 @@ export class Grid {
   /**
    * Static obstacles per cell in compressed rows: the codes of cell c are
    * obstList[obstStart[c] .. obstStart[c + 1]). Codes: i >= 0 is segment i of the world's line
-   * list, -(i + 1) is point i. Filled by `setObstacles`.
+   * list, -(i + 1) is point i. Filled by `setObstacles` for level 0 and the levels holding bodies
+   * (only a body scans its own level's obstacles); a level gets its lists when a body first enters
+   * it, so a rebuild does not pay for the many empty levels up to the single top cell.
    */
   obstStart: Int32Array = new Int32Array(2);
   obstList: Int32Array = new Int32Array(0);
+  /** The level-0 (cell, code) pairs of the last `setObstacles` (never mutated), and the levels whose lists are built. */
+  private obstPairs: readonly number[] = [];
+  private obstBuilt: Uint8Array = new Uint8Array(1).fill(1);
 
   /**
-   * Fill the per-cell obstacle lists from level-0 (cell, code) pairs; a coarser cell lists what its
-   * level-0 cells list (each code once).
+   * Set the obstacles from level-0 (cell, code) pairs; a coarser cell lists what its level-0 cells
+   * list (each code once, in the order first seen).
    */
   setObstacles(level0: number[]): void {
+    this.obstPairs = level0.slice();
+    this.obstBuilt = new Uint8Array(this.levels);
+    this.obstBuilt[0] = 1;
+    for (const k of this.occupied) this.obstBuilt[k] = 1;
+    this.buildObstacles();
+  }
+
+  /** Whether level k's obstacle lists are built (the others read as empty). */
+  obstaclesBuilt(k: number): boolean {
+    return this.obstBuilt[k] === 1;
+  }
+
+  /** Build the compressed rows for the levels marked in obstBuilt. */
+  private buildObstacles(): void {
+    const level0 = this.obstPairs;
     const pairs = level0.slice();
     for (let k = 1; k < this.levels; k++) {
+      if (this.obstBuilt[k] === 0) continue;
       const seen = new Set<number>();
       const cells = (this.base[k + 1] as number) - (this.base[k] as number);
       for (let i = 0; i < level0.length; i += 2) {
@@ -328,6 +360,8 @@ export class Grid {
     g.memberPos = this.memberPos.slice();
     g.obstStart = this.obstStart;
     g.obstList = this.obstList;
+    g.obstPairs = this.obstPairs;
+    g.obstBuilt = this.obstBuilt.slice();
     return g;
   }
 }

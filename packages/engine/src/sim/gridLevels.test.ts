@@ -38,6 +38,50 @@ describe("Grid levels", () => {
     expect(g.levelFor(r)).toBe(0);
   });
 
+  it("a coarse cell lists the obstacle codes of the level-0 cells under it, once each, in first-seen order, from when a body first enters its level", () => {
+    const g = new Grid(8);
+    g.reset(0, 0, 1, 37, 23);
+    const rnd = lcg(11);
+    const level0: number[] = [];
+    // Codes -5..29 (points and segments), each in a run of neighbouring cells, as a raster gives.
+    for (let code = -5; code < 30; code++) {
+      let cx = Math.floor(rnd() * 37);
+      let cy = Math.floor(rnd() * 23);
+      const cells = new Set<number>();
+      for (let i = 0, n = code < 0 ? 1 : 1 + Math.floor(rnd() * 40); i < n; i++) {
+        if (!cells.has(cy * 37 + cx)) level0.push(cy * 37 + cx, code);
+        cells.add(cy * 37 + cx);
+        cx = Math.min(36, Math.max(0, cx + Math.floor(rnd() * 3) - 1));
+        cy = Math.min(22, Math.max(0, cy + Math.floor(rnd() * 3) - 1));
+      }
+    }
+    // Level 2 holds a body before the obstacles are set; the others get theirs when a body enters.
+    g.enter(0, 2, g.cellAt(2, 5, 5));
+    g.setObstacles(level0);
+    expect(g.levels).toBeGreaterThan(4);
+    const built = (k: number) => g.obstaclesBuilt(k);
+    expect([...Array(g.levels).keys()].filter(built)).toEqual([0, 2]);
+    for (let k = 1; k < g.levels; k++) {
+      if (k !== 2) g.enter(k, k, g.cellAt(k, 0, 0));
+      expect(built(k)).toBe(true);
+    }
+    for (let k = 0; k < g.levels; k++) {
+      // Expected: scan level 0's pairs in order and keep each (level-k cell, code) the first time.
+      const want = new Map<number, number[]>();
+      for (let i = 0; i < level0.length; i += 2) {
+        const c = level0[i] as number;
+        const cell = g.cellAt(k, c % 37, Math.floor(c / 37));
+        const list = want.get(cell) ?? [];
+        if (!list.includes(level0[i + 1] as number)) list.push(level0[i + 1] as number);
+        want.set(cell, list);
+      }
+      for (let cell = g.base[k] as number; cell < (g.base[k + 1] as number); cell++) {
+        const got = [...g.obstList.subarray(g.obstStart[cell] as number, g.obstStart[cell + 1] as number)];
+        expect(got).toEqual(want.get(cell) ?? []);
+      }
+    }
+  });
+
   it("a point's cell at level k holds its level-0 cell, and level k's boundaries are level 0's", () => {
     const g = new Grid(8);
     g.reset(-3, 5, 1.5, 37, 23);
