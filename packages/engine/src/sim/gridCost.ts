@@ -54,7 +54,8 @@ export function predictionCost(
       if (nj === 0) continue;
       const m = Math.max(j, k);
       const side = w0 * 2 ** m;
-      const cells = j >= k ? 9 : (3 * 2 ** (k - j)) ** 2;
+      const block = j >= k ? 3 : 3 * 2 ** (k - j);
+      const cells = block * block;
       // The single top cell holds everything: its discs are tested against every body.
       cost += m === top ? nj : Math.min(nj, (9 * side * side * nj) / area) + cells * GRID_CELL_VISIT_COST;
     }
