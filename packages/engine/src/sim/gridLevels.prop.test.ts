@@ -91,18 +91,36 @@ function edit(w: World, seed: number): string[] {
 describe("broad phase with levels", () => {
   it("the World with a grid of several levels matches the World without a grid, bit for bit", () => {
     console.log(`[grid levels] fast-check seed ${SEED} (set FC_SEED to change)`);
+    let runs = 0;
+    let multiLevel = 0;
     fc.assert(
       fc.property(fc.integer({ min: 0, max: 2 ** 31 - 1 }), (seed) => {
         const scene = levelScene(seed);
         const grid = build(scene, {});
         const flat = build(scene, { broadPhase: false });
         expect(outcome(grid, 400)).toEqual(outcome(flat, 400));
-        expect(gridOf(grid).occupied.length).toBeGreaterThanOrEqual(2);
+        runs++;
+        if (gridOf(grid).occupied.length >= 2) multiLevel++;
         expect(edit(grid, seed)).toEqual(edit(flat, seed));
         expect(outcome(grid, 400)).toEqual(outcome(flat, 400));
         expect(grid.bodies()).toEqual(flat.bodies());
       }),
       { seed: SEED, numRuns: 20, verbose: true },
     );
+    // The property is about levels: most scenes must use several. Not every one: in about 3 % of
+    // these scenes the cost model rightly takes one layout sized for the largest disc (FC_SEED=707
+    // drew scene 329995747, 17 large discs among 121 small, when each scene had to have two levels).
+    expect(multiLevel, `scenes with two or more occupied levels, of ${runs}`).toBeGreaterThanOrEqual(15);
+  });
+
+  // The grid took one layout for this scene when the property above first drew it.
+  it("scene 329995747 (FC_SEED=707): the same result as without a grid", () => {
+    const scene = levelScene(329995747);
+    const grid = build(scene, {});
+    const flat = build(scene, { broadPhase: false });
+    expect(outcome(grid, 400)).toEqual(outcome(flat, 400));
+    expect(edit(grid, 329995747)).toEqual(edit(flat, 329995747));
+    expect(outcome(grid, 400)).toEqual(outcome(flat, 400));
+    expect(grid.bodies()).toEqual(flat.bodies());
   });
 });
