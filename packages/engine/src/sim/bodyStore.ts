@@ -6,6 +6,7 @@
  * removed bodies are reused; `version` only ever grows, so a prediction made against an older
  * version of a partner is recognised as stale.
  */
+import { idOrderKey } from "./idOrder.js";
 
 /** Internal event kinds of a body's next event. Ranks give the canonical order of simultaneous events. */
 export const EV_NONE = 0;
@@ -27,6 +28,7 @@ const F64_FIELDS = [
   "boxMinY",
   "boxMaxX",
   "boxMaxY",
+  "idKey",
 ] as const;
 const I32_FIELDS = ["evKind", "evOther", "evAux", "crossDir"] as const;
 
@@ -57,6 +59,8 @@ export class BodyStore {
   boxMinY: Float64Array;
   boxMaxX: Float64Array;
   boxMaxY: Float64Array;
+  /** Order key of each slot's id (idOrder.ts): the response orders a colliding pair without reading the strings. */
+  idKey: Float64Array;
 
   constructor(capacity = 16) {
     this.capacity = capacity;
@@ -76,6 +80,7 @@ export class BodyStore {
     this.boxMinY = new Float64Array(capacity);
     this.boxMaxX = new Float64Array(capacity);
     this.boxMaxY = new Float64Array(capacity);
+    this.idKey = new Float64Array(capacity);
   }
 
   /** Take a free slot for a new body (growing the arrays when full). */
@@ -83,6 +88,7 @@ export class BodyStore {
     const slot = this.free.length > 0 ? (this.free.pop() as number) : this.count++;
     if (slot >= this.capacity) this.grow(Math.max(16, this.capacity * 2));
     this.ids[slot] = id;
+    this.idKey[slot] = idOrderKey(id);
     return slot;
   }
 

@@ -7,6 +7,7 @@
 import { discDiscResponse, impulseMagnitude, reflectResponse } from "../physics/response.js";
 import { EV_BODY, EV_LINE, EV_POINT, EV_STOP } from "./bodyStore.js";
 import { SimulationError } from "./errors.js";
+import { idBefore } from "./idOrder.js";
 import type { Line, Point } from "./obstacles.js";
 import { PeekLog } from "./peek.js";
 import type { WorldEvent } from "./types.js";
@@ -126,7 +127,12 @@ export class Simulator extends ZenoGuard {
   protected processBodyBody(s: number, o: number): void {
     const b = this.store;
     // Canonical order: `a` is the body with the smaller id, so the arithmetic is the same whichever body held the event.
-    const sFirst = (b.ids[s] as string) < (b.ids[o] as string);
+    const sFirst = idBefore(
+      b.idKey[s] as number,
+      b.idKey[o] as number,
+      b.ids[s] as string,
+      b.ids[o] as string,
+    );
     const p = sFirst ? s : o;
     const q = sFirst ? o : s;
     const t = this.now;
