@@ -120,25 +120,61 @@ export function firstDownCrossingQuadratic(
   noise = 0,
   pressNoise = 0,
 ): number {
-  if (!(lo <= hi)) return Number.POSITIVE_INFINITY;
+  const a = DOWN_ARGS;
+  a[0] = c0;
+  a[1] = c1;
+  a[2] = c2;
+  a[3] = lo;
+  a[4] = hi;
+  a[5] = discriminant;
+  a[6] = noise;
+  a[7] = pressNoise;
+  downCrossing(immediate);
+  return a[8] as number;
+}
+
+/**
+ * The doubles of `downCrossing`: c0, c1, c2, lo, hi, discriminant, noise, pressNoise in, the result
+ * at [8]. The solver is too large for V8 to inline into its hot callers (pair tests, cell exits),
+ * and a double passed to or returned from a call that is not inlined is boxed: a heap allocation
+ * each, about 40 per collision in a gas. Through this array they cross the call unboxed, and the
+ * small wrapper above, which V8 does inline, keeps the pure signature.
+ */
+const DOWN_ARGS = new Float64Array(9);
+
+/** firstDownCrossingQuadratic on DOWN_ARGS. */
+function downCrossing(immediate: boolean): void {
+  const a = DOWN_ARGS;
+  const c0 = a[0] as number;
+  const c1 = a[1] as number;
+  const c2 = a[2] as number;
+  const lo = a[3] as number;
+  const hi = a[4] as number;
+  const noise = a[6] as number;
+  a[8] = Number.POSITIVE_INFINITY;
+  if (!(lo <= hi)) return;
   const hLo = c0 + lo * (c1 + lo * c2);
   const dLo = c1 + 2 * c2 * lo;
   // Touching and approaching (or resting under an acceleration into the contact) at lo.
-  if (hLo <= 0 && immediate && (dLo < -noise || (dLo <= 0 && c2 < -pressNoise)))
-    return quadraticUnderWay(c0, c1, c2, lo, hi, discriminant);
+  if (hLo <= 0 && immediate && (dLo < -noise || (dLo <= 0 && c2 < -(a[7] as number)))) {
+    a[8] = quadraticUnderWay(c0, c1, c2, lo, hi, a[5] as number);
+    return;
+  }
   // Touching and approaching by no more than the noise, with nothing pressing it in: a graze.
-  if (hLo <= 0 && immediate && dLo <= 0) return Number.POSITIVE_INFINITY;
+  if (hLo <= 0 && immediate && dLo <= 0) return;
   // Convex and not decreasing at lo: it never comes down again (the common, cheap rejection).
-  if (c2 >= 0 && dLo >= 0) return Number.POSITIVE_INFINITY;
+  if (c2 >= 0 && dLo >= 0) return;
   if (c2 === 0) {
     const r = -c0 / c1;
-    return r >= lo && r <= hi ? r : Number.POSITIVE_INFINITY;
+    if (r >= lo && r <= hi) a[8] = r;
+    return;
   }
-  const disc = Number.isNaN(discriminant) ? c1 * c1 - 4 * c2 * c0 : discriminant;
-  if (disc < 0) return Number.POSITIVE_INFINITY;
+  const given = a[5] as number;
+  const disc = Number.isNaN(given) ? c1 * c1 - 4 * c2 * c0 : given;
+  if (disc < 0) return;
   const sq = Math.sqrt(disc);
   const q = c1 >= 0 ? -0.5 * (c1 + sq) : -0.5 * (c1 - sq);
-  if (q === 0) return Number.POSITIVE_INFINITY; // c0 = c1 = 0: touching with zero slope, handled above
+  if (q === 0) return; // c0 = c1 = 0: touching with zero slope, handled above
   let r1 = q / c2;
   let r2 = c0 / q;
   if (r1 > r2) {
@@ -152,10 +188,11 @@ export function firstDownCrossingQuadratic(
   if (down < lo) {
     // Past the crossing already: a round-off overlap. Approaching now means the contact is under
     // way since the crossing (the caller clamps it to now).
-    return dLo < -noise && immediate ? down : Number.POSITIVE_INFINITY;
+    if (dLo < -noise && immediate) a[8] = down;
+    return;
   }
-  if (disc === 0) return Number.POSITIVE_INFINITY; // tangency without crossing: a graze, no impulse
-  return down <= hi ? down : Number.POSITIVE_INFINITY;
+  if (disc === 0) return; // tangency without crossing: a graze, no impulse
+  if (down <= hi) a[8] = down;
 }
 
 /**

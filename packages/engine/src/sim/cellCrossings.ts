@@ -36,7 +36,7 @@ export class CellCrossings extends Predictor {
         this.scanCell(s, c, true);
         this.scanCellObstacles(s, c);
       }
-    b.crossTime[s] = this.crossing(s, 0, cx, cy);
+    this.crossing(s, 0, cx, cy);
     this.heap.set(s, Math.min(b.evTime[s] as number, b.crossTime[s] as number));
   }
 
@@ -68,7 +68,7 @@ export class CellCrossings extends Predictor {
     for (let y = Math.max(0, y0); y <= Math.min(nyk - 1, y1); y++)
       for (let x = Math.max(0, x0); x <= Math.min(nxk - 1, x1); x++)
         this.scanCellObstacles(s, base + y * nxk + x);
-    b.crossTime[s] = this.crossing(s, k, cx, cy);
+    this.crossing(s, k, cx, cy);
     this.heap.set(s, Math.min(b.evTime[s] as number, b.crossTime[s] as number));
   }
 

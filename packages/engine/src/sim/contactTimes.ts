@@ -30,14 +30,13 @@ export class ContactTimes extends BroadPhase {
       this.now === this.memoTime
     )
       return this.memoResult;
-    const t = this.solvePair(s, o);
+    this.solvePair(s, o);
     this.memoS = s;
     this.memoO = o;
     this.memoVS = vs;
     this.memoVO = vo;
     this.memoTime = this.now;
-    this.memoResult = t;
-    return t;
+    return this.memoResult;
   }
 
   private memoS = -1;
@@ -47,7 +46,11 @@ export class ContactTimes extends BroadPhase {
   private memoTime = Number.NaN;
   private memoResult = INF;
 
-  private solvePair(s: number, o: number): number {
+  /**
+   * Solve the pair into `memoResult`. Not returned: V8 boxes a double that a call it does not
+   * inline returns (a heap allocation per pair test), and a double field is written in place.
+   */
+  private solvePair(s: number, o: number): void {
     const b = this.store;
     const ts = b.mot[s * 8 + 0] as number;
     const to = b.mot[o * 8 + 0] as number;
@@ -61,8 +64,10 @@ export class ContactTimes extends BroadPhase {
         (b.boxMinX[o] as number) > (b.boxMaxX[s] as number) ||
         (b.boxMinY[s] as number) > (b.boxMaxY[o] as number) ||
         (b.boxMinY[o] as number) > (b.boxMaxY[s] as number)
-      )
-        return INF;
+      ) {
+        this.memoResult = INF;
+        return;
+      }
     }
     const tb = Math.max(ts, to);
     const hi = Math.min(ends, endo) - tb;
@@ -83,7 +88,10 @@ export class ContactTimes extends BroadPhase {
     const ux = vxo - vxs;
     const uy = vyo - vys;
     // Cheap rejection before any solve: with no relative acceleration a receding pair never meets.
-    if (axo === axs && ayo === ays && dx * ux + dy * uy >= 0 && this.opt.quadraticFastPath) return INF;
+    if (axo === axs && ayo === ays && dx * ux + dy * uy >= 0 && this.opt.quadraticFastPath) {
+      this.memoResult = INF;
+      return;
+    }
     const R = (b.r[s] as number) + (b.r[o] as number);
     const tau = discDiscTimeScaled(
       dx,
@@ -101,9 +109,7 @@ export class ContactTimes extends BroadPhase {
       Math.abs(dx) * (Math.abs(vxs) + Math.abs(vxo)) + Math.abs(dy) * (Math.abs(vys) + Math.abs(vyo)),
       Math.abs(dx) * (Math.abs(axs) + Math.abs(axo)) + Math.abs(dy) * (Math.abs(ays) + Math.abs(ayo)),
     );
-    if (tau === INF) return INF;
-    const t = tb + tau;
-    return Math.max(t, this.now);
+    this.memoResult = tau === INF ? INF : Math.max(tb + tau, this.now);
   }
 
   /** Earliest contact of body s with a point at (px, py), or +Infinity. */

@@ -87,7 +87,7 @@ export class Predictor extends ContactTimes {
       // Several levels hold bodies (grid.ts); the flat scans below are those of a plain grid, kept
       // inline: split into their own method, the gas ran 5-10 % slower (V8 inlined less).
       this.stamp++;
-      b.crossTime[s] = this.scanAllLevels(s, moving);
+      this.scanAllLevels(s, moving);
       if (moving) for (const i of this.globalLines) this.testLine(s, i);
       this.heap.set(s, Math.min(b.evTime[s] as number, b.crossTime[s] as number));
       return;
@@ -105,13 +105,14 @@ export class Predictor extends ContactTimes {
       }
     }
     if (moving) for (const i of this.globalLines) this.testLine(s, i);
-    b.crossTime[s] = moving && (grid.nx > 1 || grid.ny > 1) ? this.crossing(s, 0, cx, cy) : INF;
+    if (moving && (grid.nx > 1 || grid.ny > 1)) this.crossing(s, 0, cx, cy);
+    else b.crossTime[s] = INF;
     const key = Math.min(b.evTime[s] as number, b.crossTime[s] as number);
     this.heap.set(s, key);
   }
 
-  /** The scans of `predict` in a grid of several levels; returns the next crossing time. */
-  private scanAllLevels(s: number, moving: boolean): number {
+  /** The scans of `predict` in a grid of several levels; sets the next crossing time. */
+  private scanAllLevels(s: number, moving: boolean): void {
     const grid = this.grid;
     grid.locate(s);
     const k = grid.at[0] as number;
@@ -125,7 +126,8 @@ export class Predictor extends ContactTimes {
       for (let y = Math.max(0, cy - 1); y <= Math.min(nyk - 1, cy + 1); y++)
         for (let x = Math.max(0, cx - 1); x <= Math.min(nxk - 1, cx + 1); x++)
           this.scanCellObstacles(s, base + y * nxk + x);
-    return moving && (nxk > 1 || nyk > 1) ? this.crossing(s, k, cx, cy) : INF;
+    if (moving && (nxk > 1 || nyk > 1)) this.crossing(s, k, cx, cy);
+    else this.store.crossTime[s] = INF;
   }
 
   /** Test body s against the bodies in level j's cells [x0, x1] x [y0, y1] (clipped to the grid). */
@@ -236,8 +238,12 @@ export class Predictor extends ContactTimes {
     }
   }
 
-  /** Time at which body s (in level k's cell cx, cy) next leaves its cell; direction stored in crossDir. */
-  protected crossing(s: number, k: number, cx: number, cy: number): number {
+  /**
+   * Set crossTime[s] to the time at which body s (in level k's cell cx, cy) next leaves its cell,
+   * and crossDir[s] to the direction. Stored, not returned: V8 boxes a double returned from a call
+   * it does not inline (a heap allocation per crossing).
+   */
+  protected crossing(s: number, k: number, cx: number, cy: number): void {
     const b = this.store;
     const grid = this.grid;
     const t0 = b.mot[s * 8 + 0] as number;
@@ -274,6 +280,6 @@ export class Predictor extends ContactTimes {
     // Directions: 0 -x, 1 +x, 2 -y, 3 +y.
     const best = Math.min(tx, ty);
     b.crossDir[s] = best === INF ? -1 : tx <= ty ? (sx < 0 ? 0 : 1) : sy < 0 ? 2 : 3;
-    return best === INF ? INF : Math.max(this.now, t0 + best);
+    b.crossTime[s] = best === INF ? INF : Math.max(this.now, t0 + best);
   }
 }
