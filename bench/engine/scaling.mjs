@@ -1,7 +1,7 @@
 /**
  * Engine section, scaling rows: events/s of the dilute gas (10 % packing, speed 10) against N, the
  * per-event cost ratio N = 1e5 vs 1e3 (target ≤ 2) and events/s at N = 1e4 (target ≥ 1e6); memory
- * per body. Beside each row, the same gas run by minimalGas.mjs (the algorithm with every product
+ * per body, and bytes of heap allocated per event. Beside each row, the same gas run by minimalGas.mjs (the algorithm with every product
  * feature stripped) and by its WebAssembly twin (bench/wasm): the ceilings JavaScript and
  * WebAssembly reach here with this algorithm, timed the same way.
  *
@@ -13,6 +13,7 @@
  */
 import { execFileSync } from "node:child_process";
 import { fileURLToPath } from "node:url";
+import { allocatedBytes } from "../lib/allocation.mjs";
 import { loadEngine } from "../lib/engine.mjs";
 import { gc, nowNs, timedRuns } from "../lib/timing.mjs";
 import { buildWorld } from "../peers/chapgame.mjs";
@@ -115,6 +116,9 @@ async function measureRow(engine, n, quick) {
     { runs, budgetNs: 30e9 },
   );
   const eventsPerSecond = batch / (t.medianNs / 1e9);
+  // Heap allocation per event, after the timed batches (the sampling profiler slows what it watches).
+  const allocEvents = Math.min(batch, 100000);
+  const allocated = await allocatedBytes(() => world.advance({ maxEvents: allocEvents }));
   const minimal = await ceilingRate(createMinimalGas, scene, batch, runs);
   const wasm = await wasmRate(scene, batch, runs);
   const row = {
@@ -126,6 +130,7 @@ async function measureRow(engine, n, quick) {
     nsPerEvent: t.medianNs / batch,
     buildNs,
     heapBytesPerBody,
+    allocatedBytesPerEvent: allocated / allocEvents,
     simTime: world.time,
     minimalEventsPerSecond: minimal.eventsPerSecond,
     minimalNsPerEvent: minimal.nsPerEvent,
@@ -172,6 +177,7 @@ function row(n, all) {
     eventsPerSecond: pick("eventsPerSecond"),
     nsPerEvent: pick("nsPerEvent"),
     heapBytesPerBody: pick("heapBytesPerBody"),
+    allocatedBytesPerEvent: pick("allocatedBytesPerEvent"),
     minimalEventsPerSecond: pick("minimalEventsPerSecond"),
     minimalNsPerEvent: pick("minimalNsPerEvent"),
     wasmEventsPerSecond: pick("wasmEventsPerSecond"),

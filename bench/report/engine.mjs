@@ -49,7 +49,7 @@ export function engineSection(e, out, svgs) {
   const sc = e.scaling;
   const perN = sc.processesPerN == null ? "several" : numberWord(sc.processesPerN);
   out.push(
-    `Dilute gas (10 % packing, r = 1, speed 10, box walls), timed batches of events after a warm-up that leaves the grid start; events/s = batch / median batch time. Each N runs in fresh Node processes (no JIT state from other rows or sections; the engine and both loops compiled first on a small gas), ${perN} per N in this run, in rounds of one process per N (so a drift of the machine's speed falls on every N alike, not on N = 10⁵, measured last), with the median kept, because at 10⁵ discs one process's rate differs from the next by up to 30 % (memory placement) while its own batches agree; the per-process rates are in latest.json. Memory per body = growth of the JS heap plus ArrayBuffer memory (where typed arrays live) when building and preparing (grid and event queue) copies of the world holding at least 10⁵ bodies in all, / bodies; typed arrays grow by doubling, so it varies with how full they are.\n`,
+    `Dilute gas (10 % packing, r = 1, speed 10, box walls), timed batches of events after a warm-up that leaves the grid start; events/s = batch / median batch time. Each N runs in fresh Node processes (no JIT state from other rows or sections; the engine and both loops compiled first on a small gas), ${perN} per N in this run, in rounds of one process per N (so a drift of the machine's speed falls on every N alike, not on N = 10⁵, measured last), with the median kept, because at 10⁵ discs one process's rate differs from the next by up to 30 % (memory placement) while its own batches agree; the per-process rates are in latest.json. Memory per body = growth of the JS heap plus ArrayBuffer memory (where typed arrays live) when building and preparing (grid and event queue) copies of the world holding at least 10⁵ bodies in all, / bodies; typed arrays grow by doubling, so it varies with how full they are. Heap allocated per event = bytes the JS heap allocates over up to 10⁵ further events, short-lived objects included (V8's sampling heap profiler, after the timed batches): doubles that cross a call V8 does not inline are boxed on the heap, and this column shows how many remain.\n`,
   );
   out.push(
     table(
@@ -62,11 +62,12 @@ export function engineSection(e, out, svgs) {
         "minimal loop, JS, events/s",
         "minimal loop, WebAssembly, events/s",
         "memory per body, bytes",
+        "heap allocated per event, bytes",
         "build time",
       ],
       sc.rows.map((r) =>
         r.error
-          ? [int(r.n), `error: ${r.error}`, "", "", "", "", "", "", ""]
+          ? [int(r.n), `error: ${r.error}`, "", "", "", "", "", "", "", ""]
           : [
               int(r.n),
               int(r.batch),
@@ -80,6 +81,7 @@ export function engineSection(e, out, svgs) {
                   ? "—"
                   : int(r.wasmEventsPerSecond),
               int(r.heapBytesPerBody),
+              r.allocatedBytesPerEvent == null ? "—" : int(r.allocatedBytesPerEvent),
               ms(r.buildNs),
             ],
       ),
