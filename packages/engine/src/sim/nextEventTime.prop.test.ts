@@ -7,7 +7,7 @@
  * - a world that peeks stays bit for bit equal to a twin that never does: every event, every
  *   advance result, every error, `time`, `counts` and `bodies()` after each operation;
  * - each answer (or error) equals that of a copy advanced by one event.
- * Each property logs its seed (fixed by default, so CI is reproducible); explore others with SEED=<n>.
+ * Each property logs its seed (fixed by default, so CI is reproducible); explore others with FC_SEED=<n>.
  */
 import fc from "fast-check";
 import { afterAll, beforeAll, describe, expect, it, type MockInstance, vi } from "vitest";
@@ -18,8 +18,8 @@ import { World } from "./world.js";
 const RUNS = Number(process.env.RUNS ?? 100);
 function seedFor(name: string): number {
   // A fixed default keeps CI reproducible; set SEED to explore others.
-  const seed = process.env.SEED ? Number(process.env.SEED) : 20261122;
-  console.log(`${name}: seed ${seed}`);
+  const seed = Number(process.env.FC_SEED ?? process.env.SEED ?? 20261122); // FC_SEED, as every property test (SEED still works)
+  console.log(`${name}: seed ${seed} (set FC_SEED to change)`);
   return seed;
 }
 

@@ -3,7 +3,7 @@
  * whose World is rebuilt from the keyframe's motions (keyframe.ts worldAt), and must give exactly
  * what building the edited scene from scratch gives. Gases of 40–120 discs (the broad-phase grid
  * active, keyframes every few hundred to thousand events), with and without friction. Logs its seed
- * (fixed by default so CI is reproducible); explore others with SEED=<n>.
+ * (fixed by default so CI is reproducible); explore others with FC_SEED=<n>.
  */
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
@@ -12,7 +12,7 @@ import type { Action, SceneFile } from "../scene/types.js";
 import { Timeline } from "./timeline.js";
 
 const RUNS = Number(process.env.RUNS ?? 8);
-const seed = process.env.SEED ? Number(process.env.SEED) : 20261122;
+const seed = Number(process.env.FC_SEED ?? process.env.SEED ?? 20261122); // FC_SEED, as every property test (SEED still works)
 
 /** The gas, with every disc given the friction coefficient mu (0: elastic). */
 function gasScene(n: number, gasSeed: number, mu: number): SceneFile {
@@ -26,7 +26,7 @@ function gasScene(n: number, gasSeed: number, mu: number): SceneFile {
 
 describe("Timeline restarts from keyframes rebuilt from motions", () => {
   it("an edit deep in a long history equals building the edited scene from scratch", () => {
-    console.log(`restart: seed ${seed}`);
+    console.log(`restart: seed ${seed} (set FC_SEED to change)`);
     let keyframesBefore = 0;
     fc.assert(
       fc.property(
