@@ -117,8 +117,10 @@ async function measureRow(engine, n, quick) {
   );
   const eventsPerSecond = batch / (t.medianNs / 1e9);
   // Heap allocation per event, after the timed batches (the sampling profiler slows what it watches).
-  const allocEvents = Math.min(batch, 100000);
-  const allocated = await allocatedBytes(() => world.advance({ maxEvents: allocEvents }));
+  let allocEvents = 0;
+  const allocated = await allocatedBytes(() => {
+    allocEvents = world.advance({ maxEvents: Math.min(batch, 100000) }).events;
+  });
   const minimal = await ceilingRate(createMinimalGas, scene, batch, runs);
   const wasm = await wasmRate(scene, batch, runs);
   const row = {
@@ -130,7 +132,7 @@ async function measureRow(engine, n, quick) {
     nsPerEvent: t.medianNs / batch,
     buildNs,
     heapBytesPerBody,
-    allocatedBytesPerEvent: allocated / allocEvents,
+    allocatedBytesPerEvent: allocEvents > 0 ? allocated / allocEvents : null,
     simTime: world.time,
     minimalEventsPerSecond: minimal.eventsPerSecond,
     minimalNsPerEvent: minimal.nsPerEvent,

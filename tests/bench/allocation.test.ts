@@ -11,9 +11,14 @@ describe("allocatedBytes", () => {
       for (let i = 0; i < 100_000; i++) kept.push({ i });
     });
     const out = new Float64Array(1024);
-    const inPlace = await allocatedBytes(() => {
+    const arithmetic = (): void => {
       for (let i = 0; i < 100_000; i++) out[i & 1023] = (out[i & 1023] as number) * 0.5 + i;
-    });
+    };
+    // Compiled first: V8's first tiers box doubles, and how long they run depends on the machine's
+    // load (review: 3 runs in 10 failed on a busy machine without this).
+    arithmetic();
+    arithmetic();
+    const inPlace = await allocatedBytes(arithmetic);
     expect(kept.length).toBe(100_000);
     expect(objects).toBeGreaterThan(100_000 * 16);
     expect(inPlace).toBeLessThan(objects / 20);

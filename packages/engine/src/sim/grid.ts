@@ -29,6 +29,8 @@
  * in one cell): insert, remove and move are O(1). Cell indices are global: level k's cells are
  * base[k] ... base[k] + nxOf[k] * nyOf[k] - 1, row by row.
  */
+
+import { mulPow2 } from "../roots/pow2.js";
 import { GRID_CELL_MARGIN } from "../tolerances.js";
 
 const INF = Number.POSITIVE_INFINITY;
@@ -119,7 +121,7 @@ export class Grid {
       nxOf.push(cx);
       nyOf.push(cy);
       // Level 0 fits the radius its side was computed from, whatever the rounding of w / (2 margin).
-      fit.push(single ? INF : Math.max((w * 2 ** k) / (2 * GRID_CELL_MARGIN), k === 0 ? sizedFor : 0));
+      fit.push(single ? INF : Math.max(mulPow2(w, k) / (2 * GRID_CELL_MARGIN), k === 0 ? sizedFor : 0));
       if (single) break;
     }
     const levels = nxOf.length;

@@ -4,6 +4,8 @@
  * of side w0 (levels above for larger discs) against one level of cells of side W that fit every
  * disc. Only speed depends on the answer, never a result.
  */
+
+import { mulPow2 } from "../roots/pow2.js";
 import { GRID_CELL_MARGIN, GRID_CELL_VISIT_COST, GRID_LEVEL_GAIN } from "../tolerances.js";
 
 /**
@@ -12,7 +14,7 @@ import { GRID_CELL_MARGIN, GRID_CELL_VISIT_COST, GRID_LEVEL_GAIN } from "../tole
  */
 export function levelOfRadius(r: number, w0: number, top = 30): number {
   let k = 0;
-  while (k < top && w0 * 2 ** k < 2 * GRID_CELL_MARGIN * r) k++;
+  while (k < top && mulPow2(w0, k) < 2 * GRID_CELL_MARGIN * r) k++;
   return k;
 }
 
@@ -53,8 +55,8 @@ export function predictionCost(
       const nj = counts[j] as number;
       if (nj === 0) continue;
       const m = Math.max(j, k);
-      const side = w0 * 2 ** m;
-      const block = j >= k ? 3 : 3 * 2 ** (k - j);
+      const side = mulPow2(w0, m);
+      const block = j >= k ? 3 : mulPow2(3, k - j);
       const cells = block * block;
       // The single top cell holds everything: its discs are tested against every body.
       cost += m === top ? nj : Math.min(nj, (9 * side * side * nj) / area) + cells * GRID_CELL_VISIT_COST;
