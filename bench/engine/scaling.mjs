@@ -8,8 +8,12 @@
  * Each N is measured in its own Node processes (three in full runs, in rounds of one process per N,
  * the median kept; `node
  * --expose-gc scaling.mjs <n> <quick>` prints one process's row as one JSON line), so that no row
- * inherits the JIT's state from other rows or sections, as a program simulating one gas would. Each process first compiles the engine and both
- * loops on a 1,000-disc gas, then times batches after a warm-up that leaves the grid start.
+ * inherits the JIT's state from other rows or sections, as a program simulating one gas would.
+ * Each process first compiles the engine and both loops on a 1,000-disc gas, then times batches
+ * after a warm-up that leaves the grid start. The JavaScript loop is timed twice: first as the only
+ * instance in its process, compiled on the measured gas (V8 then specialises its code to that one
+ * instance: the best plain JavaScript does here), then as a second instance after the small gas's
+ * (code shared by instances, as the engine's class-based code always is).
  */
 import { execFileSync } from "node:child_process";
 import { fileURLToPath } from "node:url";
@@ -80,6 +84,28 @@ async function ceilingRate(create, scene, batch, runs) {
   return { eventsPerSecond: batch / (t.medianNs / 1e9), nsPerEvent: t.medianNs / batch };
 }
 
+/**
+ * Events/s of a ceiling loop that is the only instance of its kind in this process, compiled on the
+ * measured gas itself (warmed by `warmEvents` events). V8 specialises a closure's optimised code to
+ * its one instance (its typed arrays and sizes become constants: "function context
+ * specialisation"); a second instance, such as ceilingRate's warm-up, loses that for both. Run it
+ * before ceilingRate in a process.
+ */
+function oneInstanceRate(create, scene, batch, runs, warmEvents) {
+  gc();
+  const loop = create(scene);
+  loop.advance(Math.max(2 * scene.bodies.length, warmEvents));
+  const t = timedRuns(
+    () => {
+      const a = nowNs();
+      loop.advance(batch);
+      return nowNs() - a;
+    },
+    { runs, budgetNs: 30e9 },
+  );
+  return { eventsPerSecond: batch / (t.medianNs / 1e9), nsPerEvent: t.medianNs / batch };
+}
+
 /** The WebAssembly ceiling, or its error (a failed compile must not cost the engine's numbers). */
 async function wasmRate(scene, batch, runs) {
   try {
@@ -121,6 +147,7 @@ async function measureRow(engine, n, quick) {
   const allocated = await allocatedBytes(() => {
     allocEvents = world.advance({ maxEvents: Math.min(batch, 100000) }).events;
   });
+  const minimalOne = oneInstanceRate(createMinimalGas, scene, batch, runs, quick ? 100000 : 300000);
   const minimal = await ceilingRate(createMinimalGas, scene, batch, runs);
   const wasm = await wasmRate(scene, batch, runs);
   const row = {
@@ -136,6 +163,8 @@ async function measureRow(engine, n, quick) {
     simTime: world.time,
     minimalEventsPerSecond: minimal.eventsPerSecond,
     minimalNsPerEvent: minimal.nsPerEvent,
+    minimalOneInstanceEventsPerSecond: minimalOne.eventsPerSecond,
+    minimalOneInstanceNsPerEvent: minimalOne.nsPerEvent,
     wasmEventsPerSecond: wasm.eventsPerSecond ?? null,
     wasmNsPerEvent: wasm.nsPerEvent ?? null,
     wasmError: wasm.error ?? null,
@@ -182,6 +211,8 @@ function row(n, all) {
     allocatedBytesPerEvent: pick("allocatedBytesPerEvent"),
     minimalEventsPerSecond: pick("minimalEventsPerSecond"),
     minimalNsPerEvent: pick("minimalNsPerEvent"),
+    minimalOneInstanceEventsPerSecond: pick("minimalOneInstanceEventsPerSecond"),
+    minimalOneInstanceNsPerEvent: pick("minimalOneInstanceNsPerEvent"),
     wasmEventsPerSecond: pick("wasmEventsPerSecond"),
     wasmNsPerEvent: pick("wasmNsPerEvent"),
   };
@@ -210,7 +241,7 @@ export async function scaling({ quick, log }) {
     if (errors.has(n)) return { n, error: errors.get(n) };
     const r = row(n, perN.get(n));
     log(
-      `  scaling N=${n}: ${(r.eventsPerSecond / 1e6).toFixed(3)} M events/s (minimal loop: JS ${(r.minimalEventsPerSecond / 1e6).toFixed(3)}, WebAssembly ${r.wasmError ? `error: ${r.wasmError}` : (r.wasmEventsPerSecond / 1e6).toFixed(3)}), ${r.heapBytesPerBody.toFixed(0)} B/body${processes > 1 ? ` (median of ${processes} processes, one per round: ${r.eventsPerSecondPerProcess.map((x) => (x / 1e6).toFixed(3)).join(", ")})` : ""}`,
+      `  scaling N=${n}: ${(r.eventsPerSecond / 1e6).toFixed(3)} M events/s (minimal loop: JS ${(r.minimalEventsPerSecond / 1e6).toFixed(3)}, JS one instance ${(r.minimalOneInstanceEventsPerSecond / 1e6).toFixed(3)}, WebAssembly ${r.wasmError ? `error: ${r.wasmError}` : (r.wasmEventsPerSecond / 1e6).toFixed(3)}), ${r.heapBytesPerBody.toFixed(0)} B/body${processes > 1 ? ` (median of ${processes} processes, one per round: ${r.eventsPerSecondPerProcess.map((x) => (x / 1e6).toFixed(3)).join(", ")})` : ""}`,
     );
     return r;
   });
@@ -225,6 +256,11 @@ export async function scaling({ quick, log }) {
     costRatio1e5over1e3: r3 && r5 ? r5.nsPerEvent / r3.nsPerEvent : null,
     minimalEventsPerSecondAt1e4: r4?.minimalEventsPerSecond ?? null,
     minimalCostRatio1e5over1e3: r3 && r5 ? r5.minimalNsPerEvent / r3.minimalNsPerEvent : null,
+    minimalOneInstanceEventsPerSecondAt1e4: r4?.minimalOneInstanceEventsPerSecond ?? null,
+    minimalOneInstanceCostRatio1e5over1e3:
+      r3?.minimalOneInstanceNsPerEvent && r5?.minimalOneInstanceNsPerEvent
+        ? r5.minimalOneInstanceNsPerEvent / r3.minimalOneInstanceNsPerEvent
+        : null,
     wasmEventsPerSecondAt1e4: r4?.wasmEventsPerSecond ?? null,
     wasmCostRatio1e5over1e3:
       r3?.wasmNsPerEvent && r5?.wasmNsPerEvent ? r5.wasmNsPerEvent / r3.wasmNsPerEvent : null,

@@ -29,13 +29,20 @@ function ceilingVerdict(sc) {
         : `The ${what} target is met in this run by the stripped ${met.join(" and ")} loop: an implementation like ${met.length > 1 ? "them" : "it"} could meet it.`,
     );
   };
+  // The JavaScript loop's best: one instance in its process where measured (older runs: shared code).
+  const best = (a, b, better) => (a == null ? (b ?? null) : b == null ? a : better(a, b) ? a : b);
   judge(
     "events/s",
-    sc.minimalEventsPerSecondAt1e4,
+    best(sc.minimalEventsPerSecondAt1e4, sc.minimalOneInstanceEventsPerSecondAt1e4, (a, b) => a >= b),
     sc.wasmEventsPerSecondAt1e4,
     (v) => v >= t.eventsPerSecondAt1e4,
   );
-  judge("cost-ratio", sc.minimalCostRatio1e5over1e3, sc.wasmCostRatio1e5over1e3, (v) => v <= t.costRatio);
+  judge(
+    "cost-ratio",
+    best(sc.minimalCostRatio1e5over1e3, sc.minimalOneInstanceCostRatio1e5over1e3, (a, b) => a <= b),
+    sc.wasmCostRatio1e5over1e3,
+    (v) => v <= t.costRatio,
+  );
   return said.join(" ");
 }
 
@@ -60,6 +67,7 @@ export function engineSection(e, out, svgs) {
         "events/s",
         "ns per event",
         "minimal loop, JS, events/s",
+        "minimal loop, JS, one instance, events/s",
         "minimal loop, WebAssembly, events/s",
         "memory per body, bytes",
         "heap allocated per event, bytes",
@@ -67,7 +75,7 @@ export function engineSection(e, out, svgs) {
       ],
       sc.rows.map((r) =>
         r.error
-          ? [int(r.n), `error: ${r.error}`, "", "", "", "", "", "", "", ""]
+          ? [int(r.n), `error: ${r.error}`, "", "", "", "", "", "", "", "", ""]
           : [
               int(r.n),
               int(r.batch),
@@ -75,6 +83,7 @@ export function engineSection(e, out, svgs) {
               int(r.eventsPerSecond),
               sig(r.nsPerEvent),
               r.minimalEventsPerSecond === undefined ? "—" : int(r.minimalEventsPerSecond),
+              r.minimalOneInstanceEventsPerSecond == null ? "—" : int(r.minimalOneInstanceEventsPerSecond),
               r.wasmError
                 ? `error: ${r.wasmError}`
                 : r.wasmEventsPerSecond == null
@@ -100,7 +109,7 @@ export function engineSection(e, out, svgs) {
         ? ""
         : ` Its WebAssembly twin (\`bench/wasm\`: AssemblyScript -O3, unchecked array access, the same event sequence bit for bit) reaches ${int(sc.wasmEventsPerSecondAt1e4)} events/s and a ratio of ${sig(sc.wasmCostRatio1e5over1e3)}.`;
     out.push(
-      `- Ceilings: the same algorithm with every product feature stripped (\`bench/engine/minimalGas.mjs\`: no API, ids, tie order, friction, gravity, lines or reports) reaches ${int(sc.minimalEventsPerSecondAt1e4)} events/s at N = 10,000 in JavaScript and a cost ratio of ${sig(sc.minimalCostRatio1e5over1e3)} between N = 100,000 and 1,000.${wasm} ${ceilingVerdict(sc)}`,
+      `- Ceilings: the same algorithm with every product feature stripped (\`bench/engine/minimalGas.mjs\`: no API, ids, tie order, friction, gravity, lines or reports) reaches ${int(sc.minimalEventsPerSecondAt1e4)} events/s at N = 10,000 in JavaScript and a cost ratio of ${sig(sc.minimalCostRatio1e5over1e3)} between N = 100,000 and 1,000, timed as a second instance in its process (its code shared by instances, as the engine's always is).${sc.minimalOneInstanceEventsPerSecondAt1e4 == null ? "" : ` As the only instance in its process, V8 specialises its code to that instance's arrays and sizes: ${int(sc.minimalOneInstanceEventsPerSecondAt1e4)} events/s and a ratio of ${sig(sc.minimalOneInstanceCostRatio1e5over1e3)}, the best plain JavaScript does here.`}${wasm} ${ceilingVerdict(sc)}`,
     );
   }
   const g = e.galperin7;
