@@ -51,7 +51,8 @@ describe("chapgame simulate", () => {
     expect(r.code).toBe(0);
     expect(r.stderr).toBe("");
     const out = JSON.parse(r.stdout);
-    expect(Object.keys(out)).toEqual(["time", "events", "counts", "bodies"]);
+    expect(Object.keys(out)).toEqual(["time", "reason", "events", "counts", "bodies"]);
+    expect(out.reason).toBe("idle");
     expect(out.time).toBe(100); // A stops at t = 100 (v = 98.49 under deceleration 1… after the hit)
     expect(out.events).toBe(2);
     expect(out.counts).toEqual({ bodyBody: 1, bodyLine: 0, bodyPoint: 0, stop: 1 });
@@ -65,10 +66,12 @@ describe("chapgame simulate", () => {
     const demo = file("demo2.json", serializeScene(originalDemo()));
     const t = JSON.parse(run(["simulate", demo, "--until-time", "1"]).stdout);
     expect(t.time).toBe(1);
+    expect(t.reason).toBe("time");
     expect(t.events).toBe(0);
     expect(t.bodies[1].x).toBe(600.5); // 700 − 100·1 + 1²/2
     const e = JSON.parse(run(["simulate", demo, "--max-events", "1", "--until-time", "50"]).stdout);
     expect(e.events).toBe(1);
+    expect(e.reason).toBe("events");
     expect(e.time).toBeCloseTo(100 - Math.sqrt(9700), 14);
   });
 

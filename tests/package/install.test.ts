@@ -194,16 +194,23 @@ describe("the installed chapgame bin (node_modules/.bin/chapgame)", () => {
     expect(v.stdout.trim()).toBe(`chapgame ${version}`);
   });
 
-  it("simulate and state on a scene file print JSON: the run until no event is left, the state at a time", () => {
-    type Out = { time: number; events: number; bodies: { id: string; x: number; vx: number }[] };
+  it("simulate and state on a scene file print JSON: the run up to a time, the state at a time", () => {
+    type Out = {
+      time: number;
+      reason?: string;
+      events: number;
+      bodies: { id: string; x: number; vx: number }[];
+    };
     const sim = bin(["simulate", "scene.json", "--until-time", "5"]);
     expect(sim.stderr).toBe("");
     const done = json(sim) as Out;
-    // Whichever comes first: after the hit at t = 3 no event is left.
-    expect(done.time).toBeCloseTo(3, 12);
+    // After the hit at t = 3 no event is left, and the bodies are printed at t = 5 all the same.
+    expect(done.time).toBe(5);
+    expect(done.reason).toBe("idle");
     expect(done.events).toBe(1);
     expect(done.bodies.map((b) => b.id)).toEqual(["a", "b"]);
     expect(done.bodies[1]?.vx).toBeCloseTo(1, 12);
+    expect(done.bodies[1]?.x).toBeCloseTo(7, 12);
     const state = bin(["state", "scene.json", "--at", "5"]);
     expect(state.stderr).toBe("");
     const at5 = json(state) as Out;

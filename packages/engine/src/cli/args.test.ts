@@ -24,6 +24,22 @@ describe("parseArgs", () => {
       events: false,
     });
   });
+  it("accepts times in every decimal notation", () => {
+    for (const [v, t] of [
+      [".5", 0.5],
+      ["3.", 3],
+      ["1E-3", 0.001],
+      ["+2", 2],
+      [" 7 ", 7],
+      ["0", 0],
+    ] as const)
+      expect(parseArgs(["state", "s.json", "--at", v])).toEqual({
+        command: "state",
+        scene: "s.json",
+        at: t,
+        events: false,
+      });
+  });
   it("accepts a count written with an exponent (--max-events 1e6) and --progress", () => {
     expect(parseArgs(["simulate", "s.json", "--max-events", "1e6", "--progress"])).toEqual({
       command: "simulate",
@@ -69,6 +85,13 @@ describe("parseArgs", () => {
     ],
     [["simulate", "a", "--max-events", "0x10"], "--max-events: must be a non-negative integer"],
     [["simulate", "a", "--max-events", "2.5e0"], "--max-events: must be a non-negative integer"],
+    // regression (acceptance audit): times took Number()'s other notations, counts did not
+    [["simulate", "a", "--until-time", "0x10"], '--until-time: must be a non-negative number, got "0x10"'],
+    [["state", "a", "--at", "0b11"], '--at: must be a non-negative number, got "0b11"'],
+    [["state", "a", "--at", "1_000"], '--at: must be a non-negative number, got "1_000"'],
+    // regression: an option was taken for the value of the one before it
+    [["simulate", "a", "--until-time", "--events"], "--until-time needs a value"],
+    [["--version", "extra"], '--version takes no arguments, got "extra"'],
   ];
   for (const [argv, msg] of bad)
     it(`refuses ${JSON.stringify(argv)}`, () => {

@@ -31,10 +31,12 @@ export type Command =
 
 export const USAGE = `Usage:
   chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--progress]
-      Run the scene's actions and simulate until time T, N events (collisions and stops), or no
-      event is left, whichever comes first; print the bodies then as JSON. Without --until-time
-      and --max-events a scene that never comes to rest (elastic balls bouncing under gravity)
-      runs until interrupted: give a bound.
+      Run the scene's actions and simulate until time T or N events (collisions and stops),
+      whichever comes first; print the bodies then as JSON, with "reason": "time", "events" or
+      "idle". With --until-time the bodies are printed at T even when no event is left before it
+      (they may still glide); without it an idle run stops at its last event. Without
+      --until-time and --max-events a scene that never comes to rest (elastic balls bouncing
+      under gravity) runs until interrupted: give a bound.
   chapgame state SCENE --at T [--events] [--progress]
       Print the bodies at time T as JSON.
   chapgame --help
@@ -44,11 +46,15 @@ SCENE is a scene file (format "chapgame", version 1), or - for standard input.
 --events adds the event log (kept in memory: bound long runs).
 --progress reports progress on stderr, one line per 200,000 events (it is on by itself, on one
 updating line, when stderr is a terminal).
-Exit status: 0 success, 2 invalid input, 1 internal error.`;
+Exit status: 0 success, 2 invalid input, 1 internal error or a result that could not be written.`;
+
+/** A time as written in decimal (12.5, .5, 3., 1e-3); Number() alone also takes 0x10 and 0b11. */
+const DECIMAL_TIME = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
 
 function time(name: string, v: string): number {
   const t = Number(v);
-  if (v.trim() === "" || Number.isNaN(t) || t < 0)
+  if (/^[+-]?infinity$/i.test(v.trim())) throw new UsageError(`${name}: must be a finite number, got "${v}"`);
+  if (!DECIMAL_TIME.test(v.trim()) || t < 0)
     throw new UsageError(`${name}: must be a non-negative number, got "${v}"`);
   if (!Number.isFinite(t)) throw new UsageError(`${name}: must be a finite number, got "${v}"`);
   return t;
@@ -72,7 +78,10 @@ function count(name: string, v: string): number {
 export function parseArgs(argv: readonly string[]): Command {
   if (argv.length === 0) throw new UsageError("missing command (try chapgame --help)");
   if (argv.includes("--help") || argv.includes("-h") || argv[0] === "help") return { command: "help" };
-  if (argv[0] === "--version" || argv[0] === "-V") return { command: "version" };
+  if (argv[0] === "--version" || argv[0] === "-V") {
+    if (argv.length > 1) throw new UsageError(`${argv[0]} takes no arguments, got "${argv[1]}"`);
+    return { command: "version" };
+  }
   const [cmd, ...rest] = argv;
   if (cmd !== "simulate" && cmd !== "state")
     throw new UsageError(`unknown command "${cmd}" (try chapgame --help)`);
@@ -96,7 +105,9 @@ export function parseArgs(argv: readonly string[]): Command {
     if (opts.has(name)) throw new UsageError(`${name} given twice`);
     if (valued.has(name)) {
       const v = eq >= 0 ? arg.slice(eq + 1) : rest[++i];
-      if (v === undefined) throw new UsageError(`${name} needs a value`);
+      // A value cannot be another option ("--until-time --events"); negative numbers are refused
+      // by their own check anyway.
+      if (v === undefined || (eq < 0 && v.startsWith("--"))) throw new UsageError(`${name} needs a value`);
       opts.set(name, v);
     } else {
       if (eq >= 0) throw new UsageError(`${name} takes no value`);

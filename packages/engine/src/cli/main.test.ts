@@ -87,3 +87,23 @@ it("a reader that does not keep up makes the bin wait, not hold the output in me
   expect(bytes).toBeGreaterThan(100e6); // about 130 MB of JSON
   expect(maxRss * 1024).toBeLessThan(bytes); // queued in memory, it was well above the output's size
 }, 120_000);
+
+it("a result that cannot be written (a full disk: Linux's /dev/full) exits 1 saying so, not as an internal error", () => {
+  const dir = mkdtempSync(join(tmpdir(), "chapgame-main-"));
+  const scene = join(dir, "gas.json");
+  writeFileSync(scene, serializeScene(dilutedGas({ n: 20, packing: 0.2 })));
+  let status: number | null = 0;
+  let stderr = "";
+  try {
+    execFileSync("sh", ["-c", `node "${bin}" simulate "${scene}" --max-events 10 > /dev/full`], {
+      stdio: ["ignore", "ignore", "pipe"],
+    });
+  } catch (e) {
+    const err = e as { status: number | null; stderr: Buffer };
+    status = err.status;
+    stderr = err.stderr.toString();
+  }
+  expect(status).toBe(1);
+  expect(stderr).toMatch(/^chapgame: cannot write the result: ENOSPC/);
+  expect(stderr.split("\n").filter(Boolean)).toHaveLength(1);
+});

@@ -8,7 +8,7 @@
  * The engine is built without Node's types (it must not depend on Node), so the few Node APIs used
  * here are typed locally and node:fs is loaded by a dynamic import.
  */
-import { runCli } from "./run.js";
+import { OutputError, runCli } from "./run.js";
 
 interface NodeProcess {
   argv: string[];
@@ -46,7 +46,8 @@ const { Buffer } = globalThis as unknown as { Buffer: NodeBuffer };
 let stdoutClosed = false;
 
 /** Writes all of `text` to standard output, waiting while a non-blocking pipe is full (EAGAIN); after
- *  EPIPE (the reader is gone) it writes nothing more. Any other error is thrown (exit 1). */
+ *  EPIPE (the reader is gone) it writes nothing more. Any other error (a full disk) is thrown as an
+ *  OutputError (exit 1, "cannot write the result"). */
 function writeOut(text: string): void {
   const bytes = Buffer.from(text, "utf8");
   let done = 0;
@@ -56,7 +57,7 @@ function writeOut(text: string): void {
     } catch (e) {
       const code = (e as NodeError).code;
       if (code === "EPIPE") stdoutClosed = true;
-      else if (code !== "EAGAIN") throw e;
+      else if (code !== "EAGAIN") throw new OutputError((e as Error).message);
     }
   }
 }

@@ -23,7 +23,7 @@ describe("writeResult", () => {
     const tl = Timeline.fromScene(galperin(3), { compute: false });
     tl.prolong({});
     const pieces: string[] = [];
-    writeResult(tl, tl.lastLoggedTime(), true, (t) => pieces.push(t), 50);
+    writeResult(tl, tl.lastLoggedTime(), true, (t) => pieces.push(t), undefined, 50);
     const text = pieces.join("");
     expect(text).toBe(atOnce(tl, tl.lastLoggedTime(), true));
     expect(JSON.parse(text).log).toHaveLength(314 + 3);
@@ -37,18 +37,18 @@ describe("writeResult", () => {
     tl.prolong({ time: 3 });
     for (const withLog of [false, true]) {
       const pieces: string[] = [];
-      writeResult(tl, 3, withLog, (t) => pieces.push(t), 4);
+      writeResult(tl, 3, withLog, (t) => pieces.push(t), undefined, 4);
       expect(pieces.join("")).toBe(atOnce(tl, 3, withLog));
     }
     const still = new Timeline({ g: 0 });
     still.apply({ time: 0, type: "addBody", id: "wall", x: 0, y: 0, r: 1, m: Number.POSITIVE_INFINITY });
     const pieces: string[] = [];
-    writeResult(still, 0, true, (t) => pieces.push(t), 4);
+    writeResult(still, 0, true, (t) => pieces.push(t), undefined, 4);
     expect(pieces.join("")).toBe(atOnce(still, 0, true));
     expect(pieces.join("")).toContain('"m": "Infinity"');
     const empty = new Timeline({ g: 0 });
     const nothing: string[] = [];
-    writeResult(empty, 0, true, (t) => nothing.push(t), 4);
+    writeResult(empty, 0, true, (t) => nothing.push(t), undefined, 4);
     expect(nothing.join("")).toBe(atOnce(empty, 0, true));
   });
 });

@@ -1,19 +1,26 @@
 /**
- * writeResult(tl, time, withLog, write, chunk): the CLI's JSON result (time, events, counts, the
- * bodies at `time`, and with withLog the event log up to `time`), pretty-printed exactly as
+ * writeResult(tl, time, withLog, write, reason, chunk): the CLI's JSON result (time, why the run
+ * stopped when `reason` is given, events, counts, the bodies at `time`, and with withLog the event
+ * log up to `time`), pretty-printed exactly as
  * JSON.stringify(result, …, 2) would, but written in pieces: the log goes out `chunk` events at a
  * time (Timeline.eventRange), so a long log is never one string (V8 caps a string at about 2^29
- * characters: a 1.7M-event log) nor one array of objects. Infinite numbers are written "Infinity",
- * as in scene files.
+ * characters: a 1.7M-event log) nor one array of objects. Infinite numbers are written "Infinity"
+ * as in scene files, and "-Infinity" likewise (a position overflows to it after a long fall).
  */
 import type { Timeline } from "../timeline/timeline.js";
-import type { LogEvent } from "../timeline/types.js";
+import type { LogEvent, ProlongResult } from "../timeline/types.js";
 
 /** Log events per written piece. */
 export const LOG_CHUNK_EVENTS = 4096;
 
+/** JSON has no infinities or NaN (JSON.stringify writes null): they are written as strings. */
+function nonFinite(_key: string, v: unknown): unknown {
+  if (typeof v !== "number" || Number.isFinite(v)) return v;
+  return Number.isNaN(v) ? "NaN" : v > 0 ? "Infinity" : "-Infinity";
+}
+
 function toJson(value: unknown): string {
-  return JSON.stringify(value, (_k, v) => (v === Number.POSITIVE_INFINITY ? "Infinity" : v), 2);
+  return JSON.stringify(value, nonFinite, 2);
 }
 
 /** `json` (a pretty-printed value) indented by `pad` more spaces on every line after the first. */
@@ -26,11 +33,13 @@ export function writeResult(
   time: number,
   withLog: boolean,
   write: (text: string) => void,
+  reason?: ProlongResult["reason"],
   chunk = LOG_CHUNK_EVENTS,
 ): void {
   const c = tl.counts();
   const head = {
     time,
+    ...(reason === undefined ? {} : { reason }),
     events: c.bodyBody + c.bodyLine + c.bodyPoint + c.stop,
     counts: { bodyBody: c.bodyBody, bodyLine: c.bodyLine, bodyPoint: c.bodyPoint, stop: c.stop },
     bodies: tl

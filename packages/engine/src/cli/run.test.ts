@@ -1,7 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { dilutedGas, galperin } from "../scene/presets.js";
 import { serializeScene } from "../scene/serialize.js";
-import { type CliIO, runCli } from "./run.js";
+import { type CliIO, OutputError, runCli } from "./run.js";
 
 function io(files: Record<string, string>, progress = false) {
   const out = { stdout: "", stderr: "" };
@@ -108,6 +108,59 @@ describe("runCli in-process", () => {
     const r = JSON.parse(out.stdout);
     expect(r.time).toBe(2);
     expect(r.bodies.map((b: { id: string; x: number }) => [b.id, b.x])).toEqual([["a", 2]]);
+  });
+
+  it("simulate --until-time T prints the bodies at T when no event is left before T (it printed the last event's time)", () => {
+    const pair = {
+      format: "chapgame",
+      version: 1,
+      g: 0,
+      gravity: [0, 0],
+      actions: [
+        { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [1, 0] },
+        { time: 0, type: "addBody", id: "b", x: 5, y: 0, r: 1, m: 1 },
+      ],
+    };
+    const files = { "pair.json": JSON.stringify(pair) };
+    const atT = io(files);
+    expect(runCli(["simulate", "pair.json", "--until-time", "30"], atT.cli)).toBe(0);
+    const r = JSON.parse(atT.out.stdout);
+    // a stops at 3 where b was hit; b glides on at 1 from x = 5: x = 32 at t = 30
+    expect(r).toMatchObject({ time: 30, reason: "idle", events: 1 });
+    expect(r.bodies.map((b: { id: string; x: number; vx: number }) => [b.id, b.x, b.vx])).toEqual([
+      ["a", 3, 0],
+      ["b", 32, 1],
+    ]);
+    // Without a time bound the run stops at its last event; an event bound says so.
+    const open = io(files);
+    expect(runCli(["simulate", "pair.json"], open.cli)).toBe(0);
+    expect(JSON.parse(open.out.stdout)).toMatchObject({ time: 3, reason: "idle" });
+    const capped = io(files);
+    expect(runCli(["simulate", "pair.json", "--max-events", "1", "--until-time", "30"], capped.cli)).toBe(0);
+    expect(JSON.parse(capped.out.stdout)).toMatchObject({ time: 3, reason: "events" });
+  });
+
+  it('writes a position that overflowed to -Infinity as "-Infinity", not null', () => {
+    const fall = {
+      format: "chapgame",
+      version: 1,
+      g: 0,
+      gravity: [0, -10],
+      actions: [{ time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 }],
+    };
+    const { cli, out } = io({ "fall.json": JSON.stringify(fall) });
+    expect(runCli(["state", "fall.json", "--at", "1e160"], cli)).toBe(0);
+    expect(out.stdout).toContain('"y": "-Infinity"');
+    expect(out.stdout).not.toContain("null");
+  });
+
+  it("a result that cannot be written exits 1 naming the write, not an internal error", () => {
+    const { cli, out } = io({ "g.json": serializeScene(galperin(1)) });
+    cli.stdout = () => {
+      throw new OutputError("ENOSPC: no space left on device, write");
+    };
+    expect(runCli(["simulate", "g.json"], cli)).toBe(1);
+    expect(out.stderr).toBe("chapgame: cannot write the result: ENOSPC: no space left on device, write\n");
   });
 
   it("counts Galperin's collisions (3 digits: 314)", () => {

@@ -2,7 +2,8 @@
  * runCli(argv, io): the `chapgame` command, with all input and output through `io` (so it can be
  * tested in-process and main.ts stays a thin wrapper). Returns the exit status: 0 success, 2 invalid
  * input (bad arguments, unreadable or invalid scene, a scene the exact model cannot continue), 1 an
- * internal error. Errors are one line on stderr, without a stack trace.
+ * internal error or a result that could not be written (OutputError). Errors are one line on
+ * stderr, without a stack trace.
  */
 import { SceneError } from "../scene/errors.js";
 import { parseScene } from "../scene/parse.js";
@@ -53,18 +54,28 @@ function compute(tl: Timeline, until: Until, mode: ProgressMode, io: CliIO): Pro
   }
 }
 
+/**
+ * Runs `simulate`; returns the time to print the bodies at and why the run stopped. With
+ * --until-time T that is T whenever no event limit stopped it first: a scene with no event left
+ * before T still moves (discs gliding for ever), and its state at T is exact. Without it, a run
+ * that no event is left in stops at its last event or action.
+ */
 function simulate(
   tl: Timeline,
   cmd: Extract<Command, { command: "simulate" }>,
   mode: ProgressMode,
   io: CliIO,
-): number {
+): { time: number; reason: ProlongResult["reason"] } {
   const until: Until = {};
   if (cmd.untilTime !== undefined) until.time = cmd.untilTime;
   if (cmd.maxEvents !== undefined) until.events = cmd.maxEvents;
   const reason = compute(tl, until, mode, io);
-  return reason === "idle" ? tl.lastLoggedTime() : tl.horizon;
+  if (reason !== "idle") return { time: tl.horizon, reason };
+  return { time: cmd.untilTime ?? tl.lastLoggedTime(), reason };
 }
+
+/** Thrown by a CliIO.stdout that cannot write (a full disk, a closed file): not a bug of the run. */
+export class OutputError extends Error {}
 
 export function runCli(argv: readonly string[], io: CliIO): number {
   let source: string | null = null; // the scene's name, once it is read
@@ -88,17 +99,22 @@ export function runCli(argv: readonly string[], io: CliIO): number {
     const scene = parseScene(text);
     const tl = Timeline.fromScene(scene, { history: cmd.events, compute: false });
     const mode: ProgressMode = io.progress ? "terminal" : cmd.progress === true ? "lines" : "off";
-    let time: number;
     if (cmd.command === "state") {
       // from horizon 0 (nothing computed yet), `time: at` ahead is exactly up to at
       compute(tl, { time: cmd.at }, mode, io);
-      time = cmd.at;
-    } else time = simulate(tl, cmd, mode, io);
-    writeResult(tl, time, cmd.events, (text) => io.stdout(text));
+      writeResult(tl, cmd.at, cmd.events, (text) => io.stdout(text));
+    } else {
+      const { time, reason } = simulate(tl, cmd, mode, io);
+      writeResult(tl, time, cmd.events, (text) => io.stdout(text), reason);
+    }
     return 0;
   } catch (e) {
     // Errors about the scene's content name the scene file first (a batch over many files).
     const file = source === null ? "" : `${source}: `;
+    if (e instanceof OutputError) {
+      io.stderr(`chapgame: cannot write the result: ${e.message}\n`);
+      return 1;
+    }
     if (e instanceof UsageError) {
       io.stderr(`chapgame: ${e.message}\n`);
       return 2;
