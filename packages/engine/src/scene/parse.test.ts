@@ -95,6 +95,18 @@ describe("parseScene on broken JSON", () => {
     expect(e.message).toMatch(/duplicate key "r" at line 1, column \d+/);
   });
 
+  it("writes control characters of a binary file as escapes (raw bytes went to the terminal)", () => {
+    const e = refused("\u007fELF\u0002\u0001\u0001\u0000\u0000");
+    expect(e.path).toBe("json");
+    expect(e.message).toMatch(/^json: invalid JSON/);
+    expect(e.message).toContain("\\u007fELF\\u0002");
+    expect(
+      [...e.message].filter(
+        (c) => c.charCodeAt(0) < 0x20 || (c.charCodeAt(0) >= 0x7f && c.charCodeAt(0) <= 0x9f),
+      ),
+    ).toEqual([]);
+  });
+
   it("says where a truncated text stops (the parser gives no position: it said only 'Unexpected end')", () => {
     const e = refused('{"format":"chapgame",\n"version":1,\n"actions":[');
     expect(e.path).toBe("json");

@@ -49,6 +49,30 @@ function where(text: string, message: string): string {
   return atEnd ? ` at the end (${at}): the text stops early` : ` at ${at}`;
 }
 
+/** The scene object's own keys, format and version, as a reader and a writer of version 1 check them. */
+export function checkHeader(raw: Record<string, unknown>): void {
+  onlyKeys(raw, ["format", "version", "g", "gravity", "actions", "meta"], "");
+  if (raw.format !== "chapgame") throw new SceneError("format", 'must be "chapgame"');
+  if (raw.version !== 1)
+    throw new SceneError(
+      "version",
+      `unsupported version ${JSON.stringify(raw.version)} (this reader knows 1)`,
+    );
+}
+
+/**
+ * `message` with control characters written as \u escapes: V8 quotes the start of the text in its
+ * JSON errors, and a binary file given as a scene put raw bytes on the user's terminal.
+ */
+function printable(message: string): string {
+  let out = "";
+  for (const ch of message) {
+    const c = ch.charCodeAt(0);
+    out += c < 0x20 || (c >= 0x7f && c <= 0x9f) ? `\\u${c.toString(16).padStart(4, "0")}` : ch;
+  }
+  return out;
+}
+
 export function parseScene(input: string | unknown): SceneFile {
   let raw: unknown = input;
   if (typeof input === "string") {
@@ -58,7 +82,7 @@ export function parseScene(input: string | unknown): SceneFile {
       raw = JSON.parse(text);
     } catch (e) {
       const message = (e as Error).message;
-      throw new SceneError("json", `invalid JSON${where(text, message)} (${message})`);
+      throw new SceneError("json", `invalid JSON${where(text, message)} (${printable(message)})`);
     }
     // JSON.parse keeps the last of two equal keys silently: the first value would be lost.
     const dup = firstDuplicateKey(text);
@@ -69,13 +93,7 @@ export function parseScene(input: string | unknown): SceneFile {
       );
   }
   if (!isObject(raw)) throw new SceneError("scene", "must be a JSON object");
-  onlyKeys(raw, ["format", "version", "g", "gravity", "actions", "meta"], "");
-  if (raw.format !== "chapgame") throw new SceneError("format", 'must be "chapgame"');
-  if (raw.version !== 1)
-    throw new SceneError(
-      "version",
-      `unsupported version ${JSON.stringify(raw.version)} (this reader knows 1)`,
-    );
+  checkHeader(raw);
   const g = raw.g === undefined ? SCENE_DEFAULTS.g : nonNegative(raw, "g", "");
   const gravity = raw.gravity === undefined ? SCENE_DEFAULTS.gravity : vec2(raw, "gravity", "");
   checkFieldMagnitudes(g, gravity, "");

@@ -105,7 +105,12 @@ describe("serializeScene round trip (property)", () => {
       [scene([], { g: Number.NaN }), "g: must be a non-negative finite number"],
       [scene([], { gravity: [0] }), "gravity: must be an array of two finite numbers"],
       [scene([], { meta: [1] }), "meta: must be an object"],
-      [{} as unknown as SceneFile, "actions: must be an array"],
+      [{ format: "chapgame", version: 1 } as unknown as SceneFile, "actions: must be an array"],
+      // regression (acceptance audit): these were written as version-1 files without complaint
+      [{} as unknown as SceneFile, 'format: must be "chapgame"'],
+      [scene([], { version: 2 }), "version: unsupported version 2"],
+      [scene([], { foo: 1 }), "foo: unknown field"],
+      [scene([], { format: undefined }), 'format: must be "chapgame"'],
     ];
     for (const [s, message] of cases) {
       expect(() => serializeScene(s)).toThrow(SceneError);

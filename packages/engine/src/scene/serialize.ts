@@ -3,7 +3,7 @@
  * gravity, actions, meta; in each action: time, type, then its fields in ACTION_FIELDS order, then
  * until), one action per line. Numbers are written so they read back bit-identical; an infinite
  * value (a mass) is written "Infinity". parseScene(serializeScene(s)) deep-equals a parsed s.
- * Every field is checked first as parseScene checks it (SceneError naming the field: a scene is
+ * Every field, the format and version included, is checked first as parseScene checks it (SceneError naming the field: a scene is
  * never written that could not be read back field by field); the scene rules that need the scene's
  * state (ids, overlaps) are parseScene's. Valid actions are written as given (no defaults added).
  */
@@ -11,6 +11,7 @@ import { ACTION_FIELDS, checkAction } from "./action.js";
 import { SceneError } from "./errors.js";
 import { isObject, nonNegative, vec2 } from "./fields.js";
 import { checkFieldMagnitudes } from "./magnitudes.js";
+import { checkHeader } from "./parse.js";
 import type { Action, SceneFile } from "./types.js";
 
 function value(v: unknown): string {
@@ -42,6 +43,9 @@ function actionLine(a: Action): string {
 function checkFields(scene: SceneFile): void {
   const raw = scene as unknown as Record<string, unknown>;
   if (!isObject(raw)) throw new SceneError("scene", "must be an object");
+  // A scene of another version, or with a key this version does not have, is refused, not rewritten
+  // as version 1 without it.
+  checkHeader(raw);
   if (!Array.isArray(raw.actions)) throw new SceneError("actions", "must be an array");
   checkFieldMagnitudes(nonNegative(raw, "g", ""), vec2(raw, "gravity", ""), "");
   if (raw.meta !== undefined && !isObject(raw.meta)) throw new SceneError("meta", "must be an object");

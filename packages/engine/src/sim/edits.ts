@@ -143,7 +143,7 @@ export class Edits extends Placement {
     checkFrictionGravity("mu", mu, this.gravity);
     if (patch.x !== undefined || patch.y !== undefined || patch.r !== undefined) {
       this.prepareGridFor(x, y, r);
-      this.checkOverlap(x, y, r, s);
+      this.checkOverlap(x, y, r, s, false, patch.x !== undefined ? "x" : patch.y !== undefined ? "y" : "r");
     }
     b.r[s] = r;
     b.m[s] = m;

@@ -65,9 +65,17 @@ export class Placement extends Simulator {
   /**
    * Throw if a disc (x, y, r) would overlap any body (other than slot `self`), line or point. With
    * `roundOff`, overlaps up to OVERLAP_REL of the contact distance are accepted: the round-off the
-   * engine's own collisions leave between bodies in contact (for restoring exact motions).
+   * engine's own collisions leave between bodies in contact (for restoring exact motions). The
+   * error names `field`: the edited field that made the overlap (an update that only grows r names r).
    */
-  protected checkOverlap(x: number, y: number, r: number, self: number, roundOff = false): void {
+  protected checkOverlap(
+    x: number,
+    y: number,
+    r: number,
+    self: number,
+    roundOff = false,
+    field: "x" | "y" | "r" = "x",
+  ): void {
     const b = this.store;
     const now = this.now;
     const keep = roundOff ? 1 - OVERLAP_REL : 1;
@@ -85,14 +93,14 @@ export class Placement extends Simulator {
     if (this.index.size < LINEAR_SCAN_BODIES) {
       for (const s of this.index.values()) test(s);
     } else this.forEachNear(x, y, r, test);
-    if (body !== undefined) throw new ChapgameError("x", `the body would overlap body '${body}'`);
+    if (body !== undefined) throw new ChapgameError(field, `the body would overlap body '${body}'`);
     const rk = r * keep;
     const line = firstById(this.lineList.filter((l) => distanceToLine(l, x, y) < rk));
-    if (line) throw new ChapgameError("x", `the body would overlap line '${line.id}'`);
+    if (line) throw new ChapgameError(field, `the body would overlap line '${line.id}'`);
     const point = firstById(
       this.pointList.filter((p) => (p.x - x) * (p.x - x) + (p.y - y) * (p.y - y) < rk * rk),
     );
-    if (point) throw new ChapgameError("x", `the body would overlap point '${point.id}'`);
+    if (point) throw new ChapgameError(field, `the body would overlap point '${point.id}'`);
   }
 
   // ---- obstacles ----------------------------------------------------------------------------

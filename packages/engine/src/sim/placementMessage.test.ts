@@ -60,3 +60,17 @@ describe("refused placements name the smallest id", () => {
     });
   }
 });
+
+describe("a refused update names the field that made the overlap", () => {
+  it("r when only the radius grew (it said x), y when only y moved, x when x moved", () => {
+    const w = new World({ g: 0 });
+    w.addBody("a", { x: 0, y: 0, r: 1, m: 1 });
+    w.addBody("b", { x: 5, y: 0, r: 1, m: 1 });
+    w.addLine("wall", [-10, 3], [10, 3], "segment");
+    expect(refusal(() => w.updateBody("a", { r: 4.5 }))).toBe("r: the body would overlap body 'b'");
+    expect(refusal(() => w.updateBody("a", { r: 3.5 }))).toBe("r: the body would overlap line 'wall'");
+    expect(refusal(() => w.updateBody("a", { y: 2.5 }))).toBe("y: the body would overlap line 'wall'");
+    expect(refusal(() => w.updateBody("a", { x: 4, r: 1 }))).toBe("x: the body would overlap body 'b'");
+    expect(w.body("a")).toMatchObject({ x: 0, y: 0, r: 1 });
+  });
+});

@@ -9,7 +9,7 @@
  */
 import { positionAt, velocityAt } from "../physics/motion.js";
 import { Edits } from "./edits.js";
-import { ChapgameError } from "./errors.js";
+import { ChapgameError, SimulationError } from "./errors.js";
 import type { AdvanceLimits, AdvanceResult, BodyState, WorldEvent, WorldOptions } from "./types.js";
 import { requireFieldRate, requireFields, requireFinite, requireGravity } from "./validate.js";
 import type { ZenoCounters } from "./zenoWatch.js";
@@ -68,17 +68,46 @@ export class World extends Edits {
 
   /**
    * State of a body at time t (default: now). Exact for t from the body's last event or edit (its
-   * current motion's start, `motion(id).t0`) up to its next event; a t before that start (or NaN)
-   * throws ChapgameError naming `t` (the World keeps no past: a Timeline does).
+   * current motion's start, `motion(id).t0`) up to the world's next event; a t before that start
+   * (or NaN) throws ChapgameError naming `t` (the World keeps no past: a Timeline does), and so
+   * does a t after the next event (the World has not computed it: advance first).
    */
   body(id: string, t: number = this.now): BodyState {
-    return this.stateOf(this.slotOf(id), t);
+    const s = this.slotOf(id);
+    this.requireNoEventBefore(t);
+    return this.stateOf(s, t);
   }
 
-  /** All bodies at time t (default: now), sorted by id. */
+  /** All bodies at time t (default: now), sorted by id; the same range of t as `body`. */
   bodies(t: number = this.now): BodyState[] {
+    this.requireNoEventBefore(t);
     const ids = [...this.index.keys()].sort();
     return ids.map((id) => this.stateOf(this.index.get(id) as number, t));
+  }
+
+  /**
+   * Throws ChapgameError naming `t` when an event (collision or stop) not yet processed lies before
+   * t: the current motions hold only up to the next event, and a state beyond it would be one the
+   * bodies never reach (discs passing through each other). Free for t <= now; otherwise it costs
+   * what `nextEventTime` does, with the predictions brought up to date first (as the next advance
+   * would: no motion changes), so that a loop of queries pays that once.
+   */
+  private requireNoEventBefore(t: number): void {
+    if (!(t > this.now)) return;
+    this.prepare();
+    let next: number;
+    try {
+      next = this.peekEventTime();
+    } catch (e) {
+      // The next event cannot be processed (a Zeno state, a resting contact): states hold up to it.
+      if (!(e instanceof SimulationError)) throw e;
+      next = e.time;
+    }
+    if (t > next)
+      throw new ChapgameError(
+        "t",
+        `must be at or before the next event at ${next} (got ${t}): advance({ untilTime: ${t} }) first, the World computes a state after an event only by processing it`,
+      );
   }
 
   private stateOf(s: number, t: number): BodyState {
@@ -151,6 +180,8 @@ export class World extends Edits {
       !(Number.isInteger(maxEvents) || maxEvents === INF)
     )
       throw new ChapgameError("maxEvents", "must be a whole number >= 0, or Infinity");
+    if (onEvent !== undefined && typeof onEvent !== "function")
+      throw new ChapgameError("onEvent", `must be a function called with each event, got ${typeof onEvent}`);
     this.prepare();
     let events = 0;
     while (events < maxEvents) {

@@ -1,0 +1,62 @@
+// The range of times the World's queries answer, and advance's callback check (acceptance audit):
+// a state after an event not yet processed was returned as if the discs passed through each other.
+import { describe, expect, it } from "vitest";
+import { ChapgameError } from "./errors.js";
+import { World } from "./world.js";
+
+/** a (r = 1) at x = 0 moving at 1 towards b (r = 2) at x = 10 moving at -1: contact at t = 3.5. */
+function headOn(): World {
+  const w = new World({ g: 0 });
+  w.addBody("a", { x: 0, y: 0, r: 1, m: 1, vx: 1 });
+  w.addBody("b", { x: 10, y: 0, r: 2, m: 1, vx: -1 });
+  return w;
+}
+
+describe("World.body / bodies after the current time", () => {
+  it("refuses a time after the next event, naming t and the event's time, before and after advancing", () => {
+    const w = headOn();
+    for (const query of [() => w.body("a", 10), () => w.bodies(10)]) {
+      expect(query).toThrow(ChapgameError);
+      expect(query).toThrow(/^t: must be at or before the next event at 3\.5 \(got 10\)/);
+    }
+    w.advance({ untilTime: 1 });
+    expect(() => w.body("b", 3.6)).toThrow(/next event at 3\.5/);
+  });
+
+  it("answers up to the next event, that event's instant included, and changes nothing", () => {
+    const w = headOn();
+    expect(w.body("a", 3.5)).toMatchObject({ x: 3.5, vx: 1 });
+    expect(w.bodies(2).map((b) => b.x)).toEqual([2, 8]);
+    expect(w.time).toBe(0);
+    const log: number[] = [];
+    w.advance({}, (e) => log.push(e.time));
+    expect(log).toEqual([3.5]);
+    // Nothing is left: every later time is exact.
+    expect(w.body("a", 100)).toMatchObject({ x: 3.5 - 96.5, vx: -1 });
+    expect(w.body("b", 100)).toMatchObject({ x: 6.5 + 96.5, vx: 1 });
+  });
+
+  it("answers the same whether or not it was asked first (the check leaves the future as it was)", () => {
+    const asked = headOn();
+    asked.bodies(1);
+    expect(() => asked.body("a", 5)).toThrow(ChapgameError);
+    const plain = headOn();
+    asked.advance({ untilTime: 50 });
+    plain.advance({ untilTime: 50 });
+    expect(asked.bodies()).toEqual(plain.bodies());
+  });
+});
+
+describe("World.advance's onEvent", () => {
+  it("is checked before anything moves: a non-function is refused by name and the world stays as it was", () => {
+    const w = headOn();
+    const before = w.bodies();
+    for (const bad of [5, "log", {}, null]) {
+      expect(() => w.advance({}, bad as never)).toThrow(ChapgameError);
+      expect(() => w.advance({}, bad as never)).toThrow(/^onEvent: must be a function/);
+    }
+    expect(w.time).toBe(0);
+    expect(w.counts.bodyBody).toBe(0);
+    expect(w.bodies()).toEqual(before);
+  });
+});
