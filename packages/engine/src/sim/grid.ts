@@ -141,6 +141,7 @@ export class Grid {
     this.obstBuilt = new Uint8Array(levels).fill(1);
     this.obstStart = new Int32Array(cells + 1);
     this.obstList = new Int32Array(0);
+    this.obstBits = new Int32Array((cells >> 5) + 1);
     this.members = nxOf.map(() => []);
     this.occupied = [];
     this.flat = true;
@@ -269,6 +270,11 @@ export class Grid {
    */
   obstStart: Int32Array = new Int32Array(2);
   obstList: Int32Array = new Int32Array(0);
+  /**
+   * One bit per cell, set when its list is not empty: 1/64 of obstStart's size, so the scans of a
+   * large grid whose cells are mostly empty of obstacles read a few cached words, not obstStart.
+   */
+  obstBits: Int32Array = new Int32Array(1);
   /** The level-0 (cell, code) pairs of the last `setObstacles` (never mutated), and the levels whose lists are built. */
   private obstPairs: readonly number[] = [];
   private obstBuilt: Uint8Array = new Uint8Array(1).fill(1);
@@ -322,8 +328,13 @@ export class Grid {
       list[fill[c] as number] = pairs[i + 1] as number;
       fill[c] = (fill[c] as number) + 1;
     }
+    const bits = new Int32Array((nc >> 5) + 1);
+    for (let c = 0; c < nc; c++)
+      if ((start[c + 1] as number) > (start[c] as number))
+        bits[c >> 5] = (bits[c >> 5] as number) | (1 << (c & 31));
     this.obstStart = start;
     this.obstList = list;
+    this.obstBits = bits;
   }
 
   /** Cell rectangle [x0, x1] x [y0, y1]; edge cells extend to infinity. */
@@ -362,6 +373,7 @@ export class Grid {
     g.memberPos = this.memberPos.slice();
     g.obstStart = this.obstStart;
     g.obstList = this.obstList;
+    g.obstBits = this.obstBits;
     g.obstPairs = this.obstPairs;
     g.obstBuilt = this.obstBuilt.slice();
     return g;

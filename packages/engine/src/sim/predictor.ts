@@ -223,6 +223,7 @@ export class Predictor extends ContactTimes {
   /** Test body s against the segments and points registered in one cell (each once per stamp). */
   protected scanCellObstacles(s: number, cell: number): void {
     const grid = this.grid;
+    if (((grid.obstBits[cell >> 5] as number) & (1 << (cell & 31))) === 0) return;
     const end = grid.obstStart[cell + 1] as number;
     for (let k = grid.obstStart[cell] as number; k < end; k++) {
       const code = grid.obstList[k] as number;
