@@ -29,20 +29,15 @@ function ceilingVerdict(sc) {
         : `The ${what} target is met in this run by the stripped ${met.join(" and ")} loop: an implementation like ${met.length > 1 ? "them" : "it"} could meet it.`,
     );
   };
-  // The JavaScript loop's best: one instance in its process where measured (older runs: shared code).
-  const best = (a, b, better) => (a == null ? (b ?? null) : b == null ? a : better(a, b) ? a : b);
+  // The JavaScript loop with code shared by instances, as a library's always is (a program makes
+  // several Worlds: a Timeline's keyframes, clones); the one-instance rate is only reported.
   judge(
     "events/s",
-    best(sc.minimalEventsPerSecondAt1e4, sc.minimalOneInstanceEventsPerSecondAt1e4, (a, b) => a >= b),
+    sc.minimalEventsPerSecondAt1e4,
     sc.wasmEventsPerSecondAt1e4,
     (v) => v >= t.eventsPerSecondAt1e4,
   );
-  judge(
-    "cost-ratio",
-    best(sc.minimalCostRatio1e5over1e3, sc.minimalOneInstanceCostRatio1e5over1e3, (a, b) => a <= b),
-    sc.wasmCostRatio1e5over1e3,
-    (v) => v <= t.costRatio,
-  );
+  judge("cost-ratio", sc.minimalCostRatio1e5over1e3, sc.wasmCostRatio1e5over1e3, (v) => v <= t.costRatio);
   return said.join(" ");
 }
 
@@ -109,7 +104,7 @@ export function engineSection(e, out, svgs) {
         ? ""
         : ` Its WebAssembly twin (\`bench/wasm\`: AssemblyScript -O3, unchecked array access, the same event sequence bit for bit) reaches ${int(sc.wasmEventsPerSecondAt1e4)} events/s and a ratio of ${sig(sc.wasmCostRatio1e5over1e3)}.`;
     out.push(
-      `- Ceilings: the same algorithm with every product feature stripped (\`bench/engine/minimalGas.mjs\`: no API, ids, tie order, friction, gravity, lines or reports) reaches ${int(sc.minimalEventsPerSecondAt1e4)} events/s at N = 10,000 in JavaScript and a cost ratio of ${sig(sc.minimalCostRatio1e5over1e3)} between N = 100,000 and 1,000, timed as a second instance in its process (its code shared by instances, as the engine's always is).${sc.minimalOneInstanceEventsPerSecondAt1e4 == null ? "" : ` As the only instance in its process, V8 specialises its code to that instance's arrays and sizes: ${int(sc.minimalOneInstanceEventsPerSecondAt1e4)} events/s and a ratio of ${sig(sc.minimalOneInstanceCostRatio1e5over1e3)}, the best plain JavaScript does here.`}${wasm} ${ceilingVerdict(sc)}`,
+      `- Ceilings: the same algorithm with every product feature stripped (\`bench/engine/minimalGas.mjs\`: no API, ids, tie order, friction, gravity, lines or reports) reaches ${int(sc.minimalEventsPerSecondAt1e4)} events/s at N = 10,000 in JavaScript and a cost ratio of ${sig(sc.minimalCostRatio1e5over1e3)} between N = 100,000 and 1,000, timed after another instance in its process (its code shared by instances, as the engine's always is).${sc.minimalOneInstanceEventsPerSecondAt1e4 == null ? "" : ` As the only instance in its process, V8 specialises its code to that instance's arrays and sizes: ${int(sc.minimalOneInstanceEventsPerSecondAt1e4)} events/s${sc.minimalOneInstanceCostRatio1e5over1e3 == null ? "" : ` and a ratio of ${sig(sc.minimalOneInstanceCostRatio1e5over1e3)}`}, the best plain JavaScript does here, but not what a library's code gets.`}${wasm} ${ceilingVerdict(sc)}`,
     );
   }
   const g = e.galperin7;

@@ -33,8 +33,8 @@ export const USAGE = `Usage:
   chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--progress]
       Run the scene's actions and simulate until time T or N events (collisions and stops),
       whichever comes first; print the bodies then as JSON, with "reason": "time", "events" or
-      "idle". With --until-time the bodies are printed at T even when no event is left before it
-      (they may still glide); without it an idle run stops at its last event. Without
+      "idle" (no event and no action left). An idle run's bodies are printed at T with
+      --until-time (they may still glide), else at its last event or action. Without
       --until-time and --max-events a scene that never comes to rest (elastic balls bouncing
       under gravity) runs until interrupted: give a bound.
   chapgame state SCENE --at T [--events] [--progress]

@@ -135,9 +135,43 @@ describe("runCli in-process", () => {
     const open = io(files);
     expect(runCli(["simulate", "pair.json"], open.cli)).toBe(0);
     expect(JSON.parse(open.out.stdout)).toMatchObject({ time: 3, reason: "idle" });
+    // An event limit that lands on the last event: nothing is left, so the run is idle at T (review).
     const capped = io(files);
     expect(runCli(["simulate", "pair.json", "--max-events", "1", "--until-time", "30"], capped.cli)).toBe(0);
-    expect(JSON.parse(capped.out.stdout)).toMatchObject({ time: 3, reason: "events" });
+    expect(JSON.parse(capped.out.stdout)).toMatchObject({ time: 30, reason: "idle" });
+  });
+
+  it("reason is idle when only discs gliding across grid cells are left (the queue still held crossings: it said time)", () => {
+    // 40 discs at rest 10 apart (enough for the grid) and one gliding past them all: no event ever.
+    const actions: unknown[] = [
+      { time: 0, type: "addBody", id: "glider", x: -5, y: 50, r: 1, m: 1, v: [1, 0] },
+    ];
+    for (let i = 0; i < 40; i++)
+      actions.push({
+        time: 0,
+        type: "addBody",
+        id: `s${i}`,
+        x: 10 * (i % 8),
+        y: 10 * Math.floor(i / 8),
+        r: 1,
+        m: 1,
+      });
+    const scene = { format: "chapgame", version: 1, g: 0, gravity: [0, 0], actions };
+    const files = { "glide.json": JSON.stringify(scene) };
+    const idle = io(files);
+    expect(runCli(["simulate", "glide.json", "--until-time", "10"], idle.cli)).toBe(0);
+    expect(JSON.parse(idle.out.stdout)).toMatchObject({ time: 10, reason: "idle", events: 0 });
+    // With an event still to come, the time limit is the reason.
+    const hit = {
+      ...scene,
+      actions: [
+        ...actions,
+        { time: 0, type: "addLine", id: "wall", p1: [200, 0], p2: [200, 100], kind: "segment" },
+      ],
+    };
+    const timed = io({ "hit.json": JSON.stringify(hit) });
+    expect(runCli(["simulate", "hit.json", "--until-time", "10"], timed.cli)).toBe(0);
+    expect(JSON.parse(timed.out.stdout)).toMatchObject({ time: 10, reason: "time", events: 0 });
   });
 
   it('writes a position that overflowed to -Infinity as "-Infinity", not null', () => {
@@ -152,6 +186,13 @@ describe("runCli in-process", () => {
     expect(runCli(["state", "fall.json", "--at", "1e160"], cli)).toBe(0);
     expect(out.stdout).toContain('"y": "-Infinity"');
     expect(out.stdout).not.toContain("null");
+  });
+
+  it("writes control characters of a key in a message as escapes (an ESC reached the terminal raw)", () => {
+    const bad = '{"format":"chapgame","version":1,"\\u001b[31mX":1,"actions":[]}';
+    const { cli, out } = io({ "esc.json": bad });
+    expect(runCli(["simulate", "esc.json"], cli)).toBe(2);
+    expect(out.stderr).toBe("chapgame: esc.json: \\u001b[31mX: unknown field\n");
   });
 
   it("a result that cannot be written exits 1 naming the write, not an internal error", () => {

@@ -6,7 +6,7 @@
  * stderr, without a stack trace.
  */
 import { SceneError } from "../scene/errors.js";
-import { parseScene } from "../scene/parse.js";
+import { parseScene, printable } from "../scene/parse.js";
 import type { Until } from "../scene/types.js";
 import { ChapgameError, SimulationError } from "../sim/errors.js";
 import { Timeline } from "../timeline/timeline.js";
@@ -55,10 +55,11 @@ function compute(tl: Timeline, until: Until, mode: ProgressMode, io: CliIO): Pro
 }
 
 /**
- * Runs `simulate`; returns the time to print the bodies at and why the run stopped. With
- * --until-time T that is T whenever no event limit stopped it first: a scene with no event left
- * before T still moves (discs gliding for ever), and its state at T is exact. Without it, a run
- * that no event is left in stops at its last event or action.
+ * Runs `simulate`; returns the time to print the bodies at and why the run stopped: "idle" when
+ * no event or action is left at all (checked exactly), else "time" or "events". With --until-time
+ * T the time is T unless an event limit stopped the run earlier with more to come: a scene with
+ * nothing left before T still moves (discs gliding for ever), and its state at T is exact. Without
+ * it, an idle run stops at its last event or action.
  */
 function simulate(
   tl: Timeline,
@@ -70,8 +71,12 @@ function simulate(
   if (cmd.untilTime !== undefined) until.time = cmd.untilTime;
   if (cmd.maxEvents !== undefined) until.events = cmd.maxEvents;
   const reason = compute(tl, until, mode, io);
-  if (reason !== "idle") return { time: tl.horizon, reason };
-  return { time: cmd.untilTime ?? tl.lastLoggedTime(), reason };
+  // "idle" exactly: the World's own reason can be "time" while only cell crossings are queued (a
+  // glide with no event left), and an event limit can land on the last event.
+  if (reason !== "idle" && !tl.nothingLeft()) return { time: tl.horizon, reason };
+  const time = cmd.untilTime ?? tl.lastLoggedTime();
+  if (tl.horizon < time) tl.prolong({ time }); // nothing happens on the way: the state at T is exact
+  return { time, reason: "idle" };
 }
 
 /** Thrown by a CliIO.stdout that cannot write (a full disk, a closed file): not a bug of the run. */
@@ -109,8 +114,10 @@ export function runCli(argv: readonly string[], io: CliIO): number {
     }
     return 0;
   } catch (e) {
-    // Errors about the scene's content name the scene file first (a batch over many files).
-    const file = source === null ? "" : `${source}: `;
+    // Errors about the scene's content name the scene file first (a batch over many files); a
+    // key, id or file name may hold control characters, which must not reach the terminal raw.
+    const file = source === null ? "" : `${printable(source)}: `;
+    if (e instanceof Error) e.message = printable(e.message);
     if (e instanceof OutputError) {
       io.stderr(`chapgame: cannot write the result: ${e.message}\n`);
       return 1;

@@ -62,9 +62,10 @@ export function checkHeader(raw: Record<string, unknown>): void {
 
 /**
  * `message` with control characters written as \u escapes: V8 quotes the start of the text in its
- * JSON errors, and a binary file given as a scene put raw bytes on the user's terminal.
+ * JSON errors, and a binary file given as a scene put raw bytes on the user's terminal (the CLI
+ * escapes every message the same way: a key or id may hold them too).
  */
-function printable(message: string): string {
+export function printable(message: string): string {
   let out = "";
   for (const ch of message) {
     const c = ch.charCodeAt(0);

@@ -143,7 +143,9 @@ export class Edits extends Placement {
     checkFrictionGravity("mu", mu, this.gravity);
     if (patch.x !== undefined || patch.y !== undefined || patch.r !== undefined) {
       this.prepareGridFor(x, y, r);
-      this.checkOverlap(x, y, r, s, false, patch.x !== undefined ? "x" : patch.y !== undefined ? "y" : "r");
+      // Name the field that changed (a state passed back whole gives every key).
+      const field = x !== this.xAt(s, now) ? "x" : y !== this.yAt(s, now) ? "y" : r !== b.r[s] ? "r" : "x";
+      this.checkOverlap(x, y, r, s, false, field);
     }
     b.r[s] = r;
     b.m[s] = m;
@@ -162,6 +164,7 @@ export class Edits extends Placement {
     this.heap.remove(s);
     this.store.release(s);
     this.index.delete(id);
+    this.changes++;
   }
 
   /** Slot of the body `id`; throws ChapgameError naming `id` when there is none. */
@@ -193,6 +196,6 @@ export class Edits extends Placement {
     this.gravY = gravity[1];
     for (const [s, x, y, vx, vy] of states)
       this.setMotion(s as number, now, x as number, y as number, vx as number, vy as number);
-    this.dirty = true;
+    this.markDirty();
   }
 }

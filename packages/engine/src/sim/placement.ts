@@ -118,7 +118,7 @@ export class Placement extends Simulator {
     if (this.hasLine(id)) throw new ChapgameError("id", `a line with id '${id}' already exists`);
     const line = this.checkedLine(id, p1, p2, kind);
     this.lineList = [...this.lineList, line];
-    this.dirty = true;
+    this.markDirty();
   }
 
   updateLine(id: string, patch: { p1?: Vec2; p2?: Vec2; kind?: LineKind }): void {
@@ -134,33 +134,33 @@ export class Placement extends Simulator {
       patch.kind ?? old.kind,
     );
     this.lineList = this.lineList.map((l, k) => (k === i ? line : l));
-    this.dirty = true;
+    this.markDirty();
   }
 
   removeLine(id: string): void {
     if (!this.hasLine(id)) throw new ChapgameError("id", `no line with id '${id}'`);
     this.lineList = this.lineList.filter((l) => l.id !== id);
-    this.dirty = true;
+    this.markDirty();
   }
 
   addPoint(id: string, p: Vec2): void {
     requireId("id", id);
     if (this.hasPoint(id)) throw new ChapgameError("id", `a point with id '${id}' already exists`);
     this.pointList = [...this.pointList, this.checkedPoint(id, p)];
-    this.dirty = true;
+    this.markDirty();
   }
 
   updatePoint(id: string, p: Vec2): void {
     if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id '${id}'`);
     const point = this.checkedPoint(id, p);
     this.pointList = this.pointList.map((q) => (q.id === id ? point : q));
-    this.dirty = true;
+    this.markDirty();
   }
 
   removePoint(id: string): void {
     if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id '${id}'`);
     this.pointList = this.pointList.filter((q) => q.id !== id);
-    this.dirty = true;
+    this.markDirty();
   }
 
   /** All lines, sorted by id. */

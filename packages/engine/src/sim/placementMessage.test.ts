@@ -71,6 +71,10 @@ describe("a refused update names the field that made the overlap", () => {
     expect(refusal(() => w.updateBody("a", { r: 3.5 }))).toBe("r: the body would overlap line 'wall'");
     expect(refusal(() => w.updateBody("a", { y: 2.5 }))).toBe("y: the body would overlap line 'wall'");
     expect(refusal(() => w.updateBody("a", { x: 4, r: 1 }))).toBe("x: the body would overlap body 'b'");
+    // a state passed back whole names what changed in it (review)
+    expect(refusal(() => w.updateBody("a", { ...w.body("a"), r: 4.5 }))).toBe(
+      "r: the body would overlap body 'b'",
+    );
     expect(w.body("a")).toMatchObject({ x: 0, y: 0, r: 1 });
   });
 });

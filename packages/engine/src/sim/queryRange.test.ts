@@ -23,6 +23,19 @@ describe("World.body / bodies after the current time", () => {
     expect(() => w.body("b", 3.6)).toThrow(/next event at 3\.5/);
   });
 
+  it("follows edits: the next event's time is found again after each change that can move it", () => {
+    const w = headOn();
+    expect(() => w.body("a", 5)).toThrow(/next event at 3\.5/);
+    w.updateBody("a", { vx: 0 }); // b alone closes the gap of 7: contact at t = 7
+    expect(w.body("a", 5)).toMatchObject({ x: 0 });
+    expect(() => w.body("a", 8)).toThrow(/next event at 7 /);
+    w.addLine("wall", [5, -10], [5, 10], "segment"); // b (r = 2) reaches it at t = 3
+    expect(() => w.body("a", 5)).toThrow(/next event at 3 /);
+    w.removeLine("wall");
+    w.removeBody("b");
+    expect(w.body("a", 1e9)).toMatchObject({ x: 0 });
+  });
+
   it("answers up to the next event, that event's instant included, and changes nothing", () => {
     const w = headOn();
     expect(w.body("a", 3.5)).toMatchObject({ x: 3.5, vx: 1 });
@@ -44,6 +57,42 @@ describe("World.body / bodies after the current time", () => {
     asked.advance({ untilTime: 50 });
     plain.advance({ untilTime: 50 });
     expect(asked.bodies()).toEqual(plain.bodies());
+  });
+});
+
+describe("queries ahead change nothing an edit or an advance sees (review)", () => {
+  /** 100 discs added one by one along a floor, each add followed (or not) by a query ahead. */
+  function grow(ask: boolean): World {
+    const w = new World({ g: 0.5 });
+    w.addLine("floor", [-10, -2], [4000, -2], "segment");
+    w.addPoint("pt", [50.5, 3]);
+    for (let i = 0; i < 100; i++) {
+      w.addBody(`b${String(i).padStart(4, "0")}`, {
+        x: 3 * i,
+        y: i % 3,
+        r: 0.5,
+        m: 1,
+        vx: ((i * 7) % 5) - 2,
+        vy: ((i * 3) % 5) - 2,
+      });
+      if (ask) expect(w.bodies(w.time + 0.01)).toHaveLength(i + 1);
+    }
+    return w;
+  }
+
+  it("the same events, end time and reason after them: a query rebuilt the grid tight, which moved the end of an idle advance", () => {
+    const asked = grow(true);
+    const plain = grow(false);
+    const run = (w: World) => {
+      const log: number[] = [];
+      const r = w.advance({ maxEvents: 3000 }, (e) => log.push(e.time));
+      return { log, r, time: w.time };
+    };
+    const a = run(asked);
+    const b = run(plain);
+    expect(a.log.length).toBeGreaterThan(50);
+    expect(a.r.reason).toBe("idle"); // the end time of an idle advance is the last item processed
+    expect(a).toEqual(b);
   });
 });
 

@@ -41,6 +41,18 @@ export class SimState {
   protected stamp = 0;
   /** Predictions of all bodies must be recomputed before the next event (grid rebuilt, obstacles or globals changed). */
   protected dirty = true;
+  /**
+   * Counts the changes that can move the next event: a new motion (an event or an edit), a body
+   * removed, an edit that leaves the predictions out of date (markDirty). Caches of the next event
+   * time (World's query range) compare it; a cell crossing or a grid rebuild does not count.
+   */
+  protected changes = 0;
+
+  /** The predictions are out of date (an obstacle or global edited): the next advance redoes them. */
+  protected markDirty(): void {
+    this.dirty = true;
+    this.changes++;
+  }
   readonly counts: EventCounts = { bodyBody: 0, bodyLine: 0, bodyPoint: 0, stop: 0 };
   /** Reports runs of events the exact model cannot pass (zenoWatch.ts). */
   protected readonly zeno = new ZenoWatch();
@@ -130,6 +142,7 @@ export class SimState {
 
   /** setMotion with t, x, y, vx, vy in MOTION_ARGS. */
   private setMotionFromArgs(s: number): void {
+    this.changes++;
     const a = MOTION_ARGS;
     const t = a[0] as number;
     const x = a[1] as number;

@@ -62,6 +62,7 @@ export class World extends Edits {
   /** @internal Restore counters taken by zenoWatch(). */
   setZenoWatch(w: Readonly<ZenoCounters>): void {
     this.zeno.load(w);
+    this.changes++; // whether the next event can be processed may differ
   }
 
   // ---- queries ----------------------------------------------------------------------------
@@ -86,29 +87,40 @@ export class World extends Edits {
   }
 
   /**
-   * Throws ChapgameError naming `t` when an event (collision or stop) not yet processed lies before
-   * t: the current motions hold only up to the next event, and a state beyond it would be one the
-   * bodies never reach (discs passing through each other). Free for t <= now; otherwise it costs
-   * what `nextEventTime` does, with the predictions brought up to date first (as the next advance
-   * would: no motion changes), so that a loop of queries pays that once.
+   * Throws ChapgameError naming `t` when an event (collision or stop, of any body) not yet
+   * processed lies before t: the current motions hold only up to the next event, and a state beyond
+   * it would be one the bodies never reach (discs passing through each other). Free for t <= now;
+   * otherwise the next event's time comes from `nextEventTime` (which changes nothing, not even the
+   * grid an edit sees) and is kept until a change could move it, so a loop of queries pays once.
    */
   private requireNoEventBefore(t: number): void {
     if (!(t > this.now)) return;
-    this.prepare();
-    let next: number;
-    try {
-      next = this.peekEventTime();
-    } catch (e) {
-      // The next event cannot be processed (a Zeno state, a resting contact): states hold up to it.
-      if (!(e instanceof SimulationError)) throw e;
-      next = e.time;
+    if (this.nextEventChanges !== this.changes) {
+      this.nextEventBlocked = "";
+      try {
+        this.nextEvent = this.nextEventTime();
+      } catch (e) {
+        // The next event cannot be processed (a Zeno state, a resting contact): states hold up to it.
+        if (!(e instanceof SimulationError)) throw e;
+        this.nextEvent = e.time;
+        this.nextEventBlocked = e.message;
+      }
+      this.nextEventChanges = this.changes;
     }
-    if (t > next)
-      throw new ChapgameError(
-        "t",
-        `must be at or before the next event at ${next} (got ${t}): advance({ untilTime: ${t} }) first, the World computes a state after an event only by processing it`,
-      );
+    const next = this.nextEvent;
+    if (t <= next) return;
+    throw new ChapgameError(
+      "t",
+      this.nextEventBlocked === ""
+        ? `must be at or before the next event at ${next} (got ${t}): advance({ untilTime: ${t} }) first, the World computes a state after an event only by processing it`
+        : `must be at or before ${next} (got ${t}), where the simulation cannot continue: ${this.nextEventBlocked}`,
+    );
   }
+
+  /** The query range's cache: the next event's time, and `changes` when it was found. */
+  private nextEvent = Number.NaN;
+  private nextEventBlocked = "";
+  private nextEventChanges = -1;
 
   private stateOf(s: number, t: number): BodyState {
     const b = this.store;

@@ -16,6 +16,7 @@ import { SceneError } from "../scene/errors.js";
 import { nonNegative } from "../scene/fields.js";
 import { applyOrder, parseScene } from "../scene/parse.js";
 import type { Action, SceneFile, Until } from "../scene/types.js";
+import { SimulationError } from "../sim/errors.js";
 import { copyAction, freezeAction, restartKeyframe, sameUntil } from "./actionData.js";
 import { checkActionList, checkBudget, checkUntil } from "./args.js";
 import { restoreKeyframe } from "./checkpoint.js";
@@ -58,6 +59,22 @@ export class Timeline extends TimelineReader {
     tl.setActions(s.actions);
     if (s.meta !== undefined) tl.metaJson = JSON.stringify(s.meta);
     return tl;
+  }
+
+  /**
+   * @internal Whether nothing is left after the horizon: no action scheduled later and no event the
+   * World would ever process (exact: `World.nextEventTime`, not the grid's queue). For the CLI's
+   * "idle".
+   */
+  nothingLeft(): boolean {
+    const c = this.core;
+    if (c.applied < c.acts.length) return false;
+    try {
+      return c.world.nextEventTime() === INF;
+    } catch (e) {
+      if (e instanceof SimulationError) return false; // an event that cannot be processed is left
+      throw e;
+    }
   }
 
   /** The scene file of this timeline (round-trips with fromScene, meta included): a copy, the
