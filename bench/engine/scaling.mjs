@@ -71,8 +71,12 @@ async function ceilingRate(create, scene, batch, runs, warmEvents = 0) {
     warmed.add(create);
   }
   gc();
-  const loop = await create(scene);
-  loop.advance(2 * scene.bodies.length);
+  return loopRate(await create(scene), scene.bodies.length, batch, runs, warmEvents);
+}
+
+/** Events/s of a ceiling loop of n discs: 2n events and `warmEvents` more, then `runs` timed batches. */
+function loopRate(loop, n, batch, runs, warmEvents) {
+  loop.advance(2 * n);
   if (warmEvents > 0) loop.advance(warmEvents);
   const t = timedRuns(
     () => {
@@ -94,18 +98,7 @@ async function ceilingRate(create, scene, batch, runs, warmEvents = 0) {
  */
 function oneInstanceRate(create, scene, batch, runs, warmEvents) {
   gc();
-  const loop = create(scene);
-  loop.advance(2 * scene.bodies.length);
-  loop.advance(warmEvents);
-  const t = timedRuns(
-    () => {
-      const a = nowNs();
-      loop.advance(batch);
-      return nowNs() - a;
-    },
-    { runs, budgetNs: 30e9 },
-  );
-  return { eventsPerSecond: batch / (t.medianNs / 1e9), nsPerEvent: t.medianNs / batch };
+  return loopRate(create(scene), scene.bodies.length, batch, runs, warmEvents);
 }
 
 /** The WebAssembly ceiling, or its error (a failed compile must not cost the engine's numbers). */

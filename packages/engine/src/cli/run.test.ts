@@ -22,6 +22,11 @@ function io(files: Record<string, string>, progress = false) {
   return { cli, out };
 }
 
+/** A version-1 scene file's text: these actions, no friction field, the given gravity. */
+function sceneText(actions: unknown[], gravity: [number, number] = [0, 0]): string {
+  return JSON.stringify({ format: "chapgame", version: 1, g: 0, gravity, actions });
+}
+
 describe("runCli in-process", () => {
   it("shows progress on stderr when asked (a terminal), and the same result", () => {
     const files = { "gas.json": serializeScene(dilutedGas({ n: 200, packing: 0.2 })) };
@@ -93,17 +98,11 @@ describe("runCli in-process", () => {
   });
 
   it("simulate --until-time T stops at T when an action is still scheduled after T (it printed t = 0)", () => {
-    const late = {
-      format: "chapgame",
-      version: 1,
-      g: 0,
-      gravity: [0, 0],
-      actions: [
-        { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [1, 0] },
-        { time: 5, type: "addBody", id: "b", x: 20, y: 0, r: 1, m: 1, v: [-1, 0] },
-      ],
-    };
-    const { cli, out } = io({ "late.json": JSON.stringify(late) });
+    const late = sceneText([
+      { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [1, 0] },
+      { time: 5, type: "addBody", id: "b", x: 20, y: 0, r: 1, m: 1, v: [-1, 0] },
+    ]);
+    const { cli, out } = io({ "late.json": late });
     expect(runCli(["simulate", "late.json", "--until-time", "2"], cli)).toBe(0);
     const r = JSON.parse(out.stdout);
     expect(r.time).toBe(2);
@@ -111,17 +110,12 @@ describe("runCli in-process", () => {
   });
 
   it("simulate --until-time T prints the bodies at T when no event is left before T (it printed the last event's time)", () => {
-    const pair = {
-      format: "chapgame",
-      version: 1,
-      g: 0,
-      gravity: [0, 0],
-      actions: [
+    const files = {
+      "pair.json": sceneText([
         { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [1, 0] },
         { time: 0, type: "addBody", id: "b", x: 5, y: 0, r: 1, m: 1 },
-      ],
+      ]),
     };
-    const files = { "pair.json": JSON.stringify(pair) };
     const atT = io(files);
     expect(runCli(["simulate", "pair.json", "--until-time", "30"], atT.cli)).toBe(0);
     const r = JSON.parse(atT.out.stdout);
@@ -156,33 +150,20 @@ describe("runCli in-process", () => {
         r: 1,
         m: 1,
       });
-    const scene = { format: "chapgame", version: 1, g: 0, gravity: [0, 0], actions };
-    const files = { "glide.json": JSON.stringify(scene) };
+    const files = { "glide.json": sceneText(actions) };
     const idle = io(files);
     expect(runCli(["simulate", "glide.json", "--until-time", "10"], idle.cli)).toBe(0);
     expect(JSON.parse(idle.out.stdout)).toMatchObject({ time: 10, reason: "idle", events: 0 });
     // With an event still to come, the time limit is the reason.
-    const hit = {
-      ...scene,
-      actions: [
-        ...actions,
-        { time: 0, type: "addLine", id: "wall", p1: [200, 0], p2: [200, 100], kind: "segment" },
-      ],
-    };
-    const timed = io({ "hit.json": JSON.stringify(hit) });
+    const wall = { time: 0, type: "addLine", id: "wall", p1: [200, 0], p2: [200, 100], kind: "segment" };
+    const timed = io({ "hit.json": sceneText([...actions, wall]) });
     expect(runCli(["simulate", "hit.json", "--until-time", "10"], timed.cli)).toBe(0);
     expect(JSON.parse(timed.out.stdout)).toMatchObject({ time: 10, reason: "time", events: 0 });
   });
 
   it('writes a position that overflowed to -Infinity as "-Infinity", not null', () => {
-    const fall = {
-      format: "chapgame",
-      version: 1,
-      g: 0,
-      gravity: [0, -10],
-      actions: [{ time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 }],
-    };
-    const { cli, out } = io({ "fall.json": JSON.stringify(fall) });
+    const fall = sceneText([{ time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 }], [0, -10]);
+    const { cli, out } = io({ "fall.json": fall });
     expect(runCli(["state", "fall.json", "--at", "1e160"], cli)).toBe(0);
     expect(out.stdout).toContain('"y": "-Infinity"');
     expect(out.stdout).not.toContain("null");
