@@ -42,6 +42,7 @@ export class BroadPhase extends SimState {
       maxY = Math.max(maxY, y);
     }
     const n = radii.length;
+    this.gridBodies = n;
     this.grid.reserve(b.capacity);
     this.heap.reserve(b.capacity);
     if (n < GRID_MIN_BODIES || !this.opt.broadPhase) {

@@ -41,6 +41,8 @@ export class SimState {
   protected stamp = 0;
   /** Predictions of all bodies must be recomputed before the next event (grid rebuilt, obstacles or globals changed). */
   protected dirty = true;
+  /** Bodies the grid's cells were sized for at its last rebuild (a disc about to be added included). */
+  protected gridBodies = 0;
   /**
    * Counts the changes that can move the next event: a new motion (an event or an edit), a body
    * removed, an edit that leaves the predictions out of date (markDirty). Caches of the next event
@@ -122,6 +124,7 @@ export class SimState {
     target.globalLines = this.globalLines;
     target.obstStamp = new Int32Array(this.obstStamp.length);
     target.dirty = this.dirty;
+    target.gridBodies = this.gridBodies;
     Object.assign(target.counts, this.counts);
     target.zeno.load(this.zeno.save());
   }
