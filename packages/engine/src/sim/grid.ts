@@ -271,7 +271,7 @@ export class Grid {
   obstStart: Int32Array = new Int32Array(2);
   obstList: Int32Array = new Int32Array(0);
   /**
-   * One bit per cell, set when its list is not empty: 1/64 of obstStart's size, so the scans of a
+   * One bit per cell, set when its list is not empty: 1/32 of obstStart's size, so the scans of a
    * large grid whose cells are mostly empty of obstacles read a few cached words, not obstStart.
    */
   obstBits: Int32Array = new Int32Array(1);
