@@ -80,7 +80,12 @@ const scene: SceneFile = parseScene('{"format":"chapgame","version":1,"actions":
 const tl = Timeline.fromScene(scene);
 tl.prolong({ time: 1 });
 const err: Error & { path: string } = new ChapgameError("body.r", "must be positive");
-export const out = [cue.x + cue.vx, roots, tl.horizon, kinds, err];
+// Options read from a config may be undefined: under exactOptionalPropertyTypes they still fit.
+const cfg: { until?: number | undefined; mu?: number | undefined; history?: boolean | undefined } = {};
+world.advance({ untilTime: cfg.until, maxEvents: 5 });
+world.addBody("far", { x: -1000, y: -1000, r: 1, m: 1, mu: cfg.mu });
+const headless = new Timeline({ g: 0, history: cfg.history });
+export const out = [cue.x + cue.vx, roots, tl.horizon, kinds, err, headless];
 `;
 
 /** Misuse: a string radius. Must fail to type-check (TS2322), or the types are not being read. */
@@ -97,6 +102,8 @@ export function tsconfig(module: string, moduleResolution: string, files: string
       module,
       moduleResolution,
       strict: true,
+      exactOptionalPropertyTypes: true,
+      noUncheckedIndexedAccess: true,
       noEmit: true,
       skipLibCheck: false,
       types: [],

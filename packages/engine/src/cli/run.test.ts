@@ -173,7 +173,9 @@ describe("runCli in-process", () => {
     const bad = '{"format":"chapgame","version":1,"\\u001b[31mX":1,"actions":[]}';
     const { cli, out } = io({ "esc.json": bad });
     expect(runCli(["simulate", "esc.json"], cli)).toBe(2);
-    expect(out.stderr).toBe("chapgame: esc.json: \\u001b[31mX: unknown field\n");
+    expect(out.stderr).toBe(
+      "chapgame: esc.json: \\u001b[31mX: unknown field (known: format, version, g, gravity, actions, meta)\n",
+    );
   });
 
   it("a result that cannot be written exits 1 naming the write, not an internal error", () => {

@@ -5,7 +5,6 @@
  * internal error or a result that could not be written (OutputError). Errors are one line on
  * stderr, without a stack trace.
  */
-import { SceneError } from "../scene/errors.js";
 import { parseScene, printable } from "../scene/parse.js";
 import type { Until } from "../scene/types.js";
 import { ChapgameError, SimulationError } from "../sim/errors.js";
@@ -126,7 +125,7 @@ export function runCli(argv: readonly string[], io: CliIO): number {
       io.stderr(`chapgame: ${e.message}\n`);
       return 2;
     }
-    if (e instanceof SceneError || e instanceof ChapgameError) {
+    if (e instanceof ChapgameError) {
       io.stderr(`chapgame: ${file}${e.message}\n`);
       return 2;
     }

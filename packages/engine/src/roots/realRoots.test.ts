@@ -257,6 +257,14 @@ describe("realRoots: input validation", () => {
     expect(() => realRoots([1, Number.NaN, 2], 0, 1)).toThrow(/coeffs\[1\] must be a finite number/);
     expect(() => realRoots([1, 2, Number.POSITIVE_INFINITY], 0, 1)).toThrow(/coeffs\[2\]/);
   });
+  it("says the type of a value that is not a number (a string \"1\" read as 'got 1', like a valid number)", () => {
+    expect(() => realRoots(["1", "-1"] as unknown as number[], 0, 2)).toThrow(
+      'realRoots: coeffs[0] must be a finite number, got string "1"',
+    );
+    expect(() => realRoots([1, 2], "0" as unknown as number, 1)).toThrow(
+      'lo must be a number, got string "0"',
+    );
+  });
   it("refuses NaN ends, naming them", () => {
     expect(() => realRoots([1, 2], Number.NaN, 1)).toThrow(/lo must be a number/);
     expect(() => realRoots([1, 2], 0, Number.NaN)).toThrow(/hi must be a number/);

@@ -158,19 +158,26 @@ export function realRootsInto(coeffs: ArrayLike<number>, lo: number, hi: number,
   return general(coeffs, lo, hi, out).length;
 }
 
+/** A value as a message shows it: a string quoted (so "1" does not read as the number 1), with its type. */
+function describe(v: unknown): string {
+  return typeof v === "number"
+    ? String(v)
+    : `${typeof v} ${typeof v === "string" ? JSON.stringify(v) : String(v)}`;
+}
+
 /** Everything but the quartic hot path (quartic.ts); out is empty. */
 function general(coeffs: ArrayLike<number>, lo: number, hi: number, out: number[]): number[] {
   if (typeof lo !== "number" || Number.isNaN(lo))
-    throw new RangeError(`realRoots: lo must be a number, got ${lo}`);
+    throw new RangeError(`realRoots: lo must be a number, got ${describe(lo)}`);
   if (typeof hi !== "number" || Number.isNaN(hi))
-    throw new RangeError(`realRoots: hi must be a number, got ${hi}`);
+    throw new RangeError(`realRoots: hi must be a number, got ${describe(hi)}`);
   const len = coeffs.length;
   let n = -1;
   let maxAbs = 0;
   for (let i = 0; i < len; i++) {
     const c = coeffs[i] as number;
     if (typeof c !== "number" || !(c - c === 0)) {
-      throw new RangeError(`realRoots: coeffs[${i}] must be a finite number, got ${c}`);
+      throw new RangeError(`realRoots: coeffs[${i}] must be a finite number, got ${describe(c)}`);
     }
     if (c !== 0) {
       n = i;

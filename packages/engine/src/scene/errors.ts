@@ -1,14 +1,15 @@
 /**
  * SceneError: invalid scene or action input. `path` names the offending field (`actions[3].r`),
  * `reason` says what is wrong, and the message is `${path}: ${reason}` (one line, for users).
+ * It is a ChapgameError, so one `instanceof ChapgameError` catches every refused input, whether a
+ * World, a Timeline or parseScene refused it.
  */
-export class SceneError extends Error {
-  readonly path: string;
-  readonly reason: string;
+import { ChapgameError } from "../sim/errors.js";
+
+export class SceneError extends ChapgameError {
   constructor(path: string, reason: string) {
-    super(path === "" ? reason : `${path}: ${reason}`);
+    super(path, reason);
+    if (path === "") this.message = reason;
     this.name = "SceneError";
-    this.path = path;
-    this.reason = reason;
   }
 }

@@ -94,8 +94,14 @@ export function lineKind(o: Obj, key: string, path: string): LineKind {
   return v as LineKind;
 }
 
-/** Refuses any key of `o` not in `allowed`. */
+/** Refuses any key of `o` not in `allowed`; the message lists the known ones. */
 export function onlyKeys(o: Obj, allowed: readonly string[], path: string): void {
   for (const k of Object.keys(o))
-    if (!allowed.includes(k)) throw new SceneError(join(path, k), "unknown field");
+    if (!allowed.includes(k)) throw new SceneError(join(path, k), unknownFieldReason(k, allowed));
+}
+
+/** "unknown field (known: ...)", with the scene format's spelling of a velocity when that is the slip. */
+function unknownFieldReason(k: string, allowed: readonly string[]): string {
+  const hint = (k === "vx" || k === "vy") && allowed.includes("v") ? "; a velocity is v: [vx, vy]" : "";
+  return `unknown field (known: ${allowed.join(", ")}${hint})`;
 }

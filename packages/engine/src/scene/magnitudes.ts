@@ -23,7 +23,8 @@ function under(path: string, check: () => unknown): void {
   try {
     check();
   } catch (e) {
-    if (e instanceof ChapgameError) throw new SceneError(join(path, e.path), e.reason);
+    if (e instanceof ChapgameError && !(e instanceof SceneError))
+      throw new SceneError(join(path, e.path), e.reason);
     throw e;
   }
 }

@@ -1,4 +1,5 @@
 import { describe, expect, it } from "vitest";
+import { ChapgameError } from "../sim/errors.js";
 import { SceneError } from "./errors.js";
 import { parseScene } from "./parse.js";
 
@@ -158,7 +159,11 @@ describe("parseScene refuses, naming the path and the reason", () => {
       base([{ time: 0, type: "explode", id: "a" }]),
       'actions[0].type: unknown action type "explode"',
     ],
-    ["unknown field", base([disc("a", 0, { vx: 1 })]), "actions[0].vx: unknown field"],
+    [
+      "unknown field, with the known ones and the scene's spelling of a velocity",
+      base([disc("a", 0, { vx: 1 })]),
+      "actions[0].vx: unknown field (known: time, type, until, id, x, y, r, m, mu, v; a velocity is v: [vx, vy])",
+    ],
     [
       "unknown line kind",
       base([{ time: 0, type: "addLine", id: "l", p1: [0, 0], p2: [1, 0], kind: "arc" }]),
@@ -272,4 +277,38 @@ describe("parseScene refuses, naming the path and the reason", () => {
       expect(e.message.startsWith(message)).toBe(true);
       expect(e.message.startsWith(`${e.path}: `)).toBe(true);
     });
+});
+
+describe("SceneError", () => {
+  it("is a ChapgameError, so one catch covers every refused input (World, Timeline, parseScene)", () => {
+    const e = refused(base([disc("a", 0, { r: -1 })]));
+    expect(e).toBeInstanceOf(ChapgameError);
+    expect(e.name).toBe("SceneError");
+    expect([e.path, e.reason]).toEqual(["actions[0].r", "must be a positive finite number"]);
+    expect(e.message).toBe("actions[0].r: must be a positive finite number");
+  });
+
+  it("has no leading colon when no field is at fault", () => {
+    const e = new SceneError("", "the file is empty");
+    expect(e).toBeInstanceOf(ChapgameError);
+    expect(e.message).toBe("the file is empty");
+  });
+});
+
+describe("parseScene on values JSON does not have", () => {
+  it("says where a NaN, Infinity or undefined is and what to write instead (V8 gave no position)", () => {
+    const text = base([disc("a", 0)]).replace('"r":1', '"r":NaN');
+    const col = text.indexOf("NaN") + 1;
+    expect(refused(text).message).toMatch(
+      new RegExp(
+        `^json: invalid JSON at line 1, column ${col}: JSON has no NaN \\(write a finite number\\) \\(`,
+      ),
+    );
+    const inf = `{\n "format": "chapgame", "version": 1, "g": -Infinity, "actions": []}`;
+    expect(refused(inf).message).toMatch(/^json: invalid JSON at line 2, column 44: JSON has no Infinity \(/);
+    const undef = '{"format": "chapgame", "version": 1, "meta": undefined, "actions": []}';
+    expect(refused(undef).message).toMatch(
+      /at line 1, column 46: JSON has no undefined \(leave the field out\)/,
+    );
+  });
 });

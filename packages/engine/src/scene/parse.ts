@@ -11,6 +11,7 @@ import { checkAction } from "./action.js";
 import { SceneError } from "./errors.js";
 import { isObject, nonNegative, onlyKeys, vec2 } from "./fields.js";
 import { firstDuplicateKey, lineColumn } from "./jsonDuplicates.js";
+import { jsonErrorOffset } from "./jsonSyntax.js";
 import { checkFieldMagnitudes } from "./magnitudes.js";
 import { checkAndApply, SceneView } from "./sceneRules.js";
 import { type Action, SCENE_DEFAULTS, type SceneFile } from "./types.js";
@@ -36,17 +37,20 @@ export function checkSceneRules(
 }
 
 /**
- * " at line L, column C" from the parser's "position N" (V8 gives only the offset), " at the end
- * (line L, column C)" for a text that stops early (a truncated file: V8 gives no position), or "".
+ * " at line L, column C" of the first character that is not JSON (jsonSyntax.ts: V8 gives an
+ * offset for some errors and none for others, such as a NaN), " at the end (line L, column C)" for
+ * a text that stops early (a truncated file), and a word on the values JSON does not have.
  */
-function where(text: string, message: string): string {
-  const m = /position (\d+)/.exec(message);
-  const atEnd = m === null && /end of JSON input/i.test(message);
-  if (m === null && !atEnd) return "";
-  const pos = m === null ? text.length : Math.min(Number(m[1]), text.length);
+function where(text: string): string {
+  const pos = jsonErrorOffset(text);
+  if (pos < 0) return "";
   const { line, column } = lineColumn(text, pos);
   const at = `line ${line}, column ${column}`;
-  return atEnd ? ` at the end (${at}): the text stops early` : ` at ${at}`;
+  if (pos >= text.length) return ` at the end (${at}): the text stops early`;
+  const word = /^(NaN|Infinity|undefined)/.exec(text.slice(pos, pos + 9));
+  if (word === null) return ` at ${at}`;
+  const fix = word[1] === "undefined" ? "leave the field out" : "write a finite number";
+  return ` at ${at}: JSON has no ${word[1]} (${fix})`;
 }
 
 /** The scene object's own keys, format and version, as a reader and a writer of version 1 check them. */
@@ -83,7 +87,7 @@ export function parseScene(input: string | unknown): SceneFile {
       raw = JSON.parse(text);
     } catch (e) {
       const message = (e as Error).message;
-      throw new SceneError("json", `invalid JSON${where(text, message)} (${printable(message)})`);
+      throw new SceneError("json", `invalid JSON${where(text)} (${printable(message)})`);
     }
     // JSON.parse keeps the last of two equal keys silently: the first value would be lost.
     const dup = firstDuplicateKey(text);

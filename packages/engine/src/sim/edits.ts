@@ -176,7 +176,7 @@ export class Edits extends Placement {
 
   // ---- globals ------------------------------------------------------------------------------
 
-  setGlobal(patch: { g?: number; gravity?: Vec2 }): void {
+  setGlobal(patch: { g?: number | undefined; gravity?: Vec2 | undefined }): void {
     requireFields("patch", patch, ["g", "gravity"]);
     const g = requireFieldRate("g", patch.g ?? this.frictionG);
     const gravity = requireGravity("gravity", patch.gravity ?? this.gravity);

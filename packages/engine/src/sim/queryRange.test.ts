@@ -23,6 +23,17 @@ describe("World.body / bodies after the current time", () => {
     expect(() => w.body("b", 3.6)).toThrow(/next event at 3\.5/);
   });
 
+  it("refuses an infinite time even when nothing will ever happen (a disc gliding on was at NaN)", () => {
+    const w = new World({ g: 0 });
+    w.addBody("a", { x: 0, y: 0, r: 1, m: 1, vx: 1 });
+    expect(w.nextEventTime()).toBe(Number.POSITIVE_INFINITY);
+    for (const t of [Number.POSITIVE_INFINITY, Number.NEGATIVE_INFINITY]) {
+      expect(() => w.body("a", t)).toThrow(`t: must be a finite time (got ${t})`);
+      expect(() => w.bodies(t)).toThrow(ChapgameError);
+    }
+    expect(w.body("a", 1e300).x).toBe(1e300);
+  });
+
   it("follows edits: the next event's time is found again after each change that can move it", () => {
     const w = headOn();
     expect(() => w.body("a", 5)).toThrow(/next event at 3\.5/);

@@ -28,7 +28,7 @@ export class SimState {
   protected frictionG: number;
   protected gravX: number;
   protected gravY: number;
-  readonly opt: Required<Optimizations>;
+  readonly opt: { [K in keyof Optimizations]-?: boolean };
   protected store: BodyStore;
   protected grid: Grid;
   protected heap: CalendarQueue;

@@ -9,9 +9,9 @@ export interface BodyInit {
   y: number;
   r: number;
   m: number;
-  mu?: number;
-  vx?: number;
-  vy?: number;
+  mu?: number | undefined;
+  vx?: number | undefined;
+  vy?: number | undefined;
 }
 
 /**
@@ -27,17 +27,17 @@ export interface BodyMotionInit {
   vy: number;
   r: number;
   m: number;
-  mu?: number;
+  mu?: number | undefined;
 }
 
 export interface BodyPatch {
-  x?: number;
-  y?: number;
-  vx?: number;
-  vy?: number;
-  r?: number;
-  m?: number;
-  mu?: number;
+  x?: number | undefined;
+  y?: number | undefined;
+  vx?: number | undefined;
+  vy?: number | undefined;
+  r?: number | undefined;
+  m?: number | undefined;
+  mu?: number | undefined;
 }
 
 /** A disc at one instant. */
@@ -88,25 +88,25 @@ export interface WorldEvent {
 /** Switches for the optimisations, so the benchmark can show what each one buys. All default on. */
 export interface Optimizations {
   /** Cell grid with crossing events; off = every body is tested against every body. */
-  broadPhase?: boolean;
+  broadPhase?: boolean | undefined;
   /** Reject pairs whose whole remaining paths (friction: finite segments) cannot meet, before solving. */
-  pathBounds?: boolean;
+  pathBounds?: boolean | undefined;
   /** Closed-form quadratic when the relative acceleration is zero; off = always the quartic solver. */
-  quadraticFastPath?: boolean;
+  quadraticFastPath?: boolean | undefined;
   /** Skip pairs where both bodies rest; off = test them too. */
-  restingSkip?: boolean;
+  restingSkip?: boolean | undefined;
 }
 
 export interface WorldOptions {
-  g?: number;
-  gravity?: Vec2;
-  time?: number;
-  optimizations?: Optimizations;
+  g?: number | undefined;
+  gravity?: Vec2 | undefined;
+  time?: number | undefined;
+  optimizations?: Optimizations | undefined;
 }
 
 export interface AdvanceLimits {
-  untilTime?: number;
-  maxEvents?: number;
+  untilTime?: number | undefined;
+  maxEvents?: number | undefined;
 }
 
 export interface AdvanceResult {

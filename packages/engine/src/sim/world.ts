@@ -70,8 +70,8 @@ export class World extends Edits {
   /**
    * State of a body at time t (default: now). Exact for t from the body's last event or edit (its
    * current motion's start, `motion(id).t0`) up to the world's next event; a t before that start
-   * (or NaN) throws ChapgameError naming `t` (the World keeps no past: a Timeline does), and so
-   * does a t after the next event (the World has not computed it: advance first).
+   * (or NaN, or an infinite t) throws ChapgameError naming `t` (the World keeps no past: a Timeline
+   * does), and so does a t after the next event (the World has not computed it: advance first).
    */
   body(id: string, t: number = this.now): BodyState {
     const s = this.slotOf(id);
@@ -94,6 +94,8 @@ export class World extends Edits {
    * grid an edit sees) and is kept until a change could move it, so a loop of queries pays once.
    */
   private requireNoEventBefore(t: number): void {
+    if (typeof t !== "number" || t === INF || t === -INF)
+      throw new ChapgameError("t", `must be a finite time (got ${String(t)})`);
     if (!(t > this.now)) return;
     if (this.nextEventChanges !== this.changes) {
       this.nextEventBlocked = "";

@@ -79,7 +79,8 @@ export function applyToWorld(w: World, a: Action, path: string): void {
   try {
     perform(w, a);
   } catch (e) {
-    if (e instanceof ChapgameError) throw new SceneError(`${path}.${e.path}`, e.reason);
+    if (e instanceof ChapgameError && !(e instanceof SceneError))
+      throw new SceneError(`${path}.${e.path}`, e.reason);
     throw e;
   }
 }

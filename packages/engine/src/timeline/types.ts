@@ -39,14 +39,14 @@ export interface TimelineCounts {
 
 export interface TimelineOptions {
   /** friction field (default 9.81) */
-  g?: number;
+  g?: number | undefined;
   /** uniform acceleration field (default [0, 0]) */
-  gravity?: Vec2;
+  gravity?: Vec2 | undefined;
   /** false = headless: no event log, no keyframes, no time travel (stateAt only at the horizon) */
-  history?: boolean;
+  history?: boolean | undefined;
   /** false = actions given to fromScene/setActions are only scheduled (applied when a prolong passes
    *  their time) and their `until`s are ignored; the caller drives with prolong/prolongSlice. */
-  compute?: boolean;
+  compute?: boolean | undefined;
 }
 
 export interface ProlongResult {
