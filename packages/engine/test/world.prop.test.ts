@@ -45,8 +45,35 @@ function worstOverlap(world: World, spec: SceneSpec, t: number): number {
       const d = Math.hypot(a.x - (l.p1[0] + u * ex), a.y - (l.p1[1] + u * ey));
       worst = Math.max(worst, (a.r - d) / a.r);
     }
+    for (const p of spec.points)
+      worst = Math.max(worst, (a.r - Math.hypot(a.x - p.p[0], a.y - p.p[1])) / a.r);
   }
   return worst;
+}
+
+/** Side of infinite line l that (x, y) is on: -1, 0 or 1. */
+function sideOf(l: SceneSpec["lines"][number], x: number, y: number): number {
+  return Math.sign((l.p2[0] - l.p1[0]) * (y - l.p1[1]) - (l.p2[1] - l.p1[1]) * (x - l.p1[0]));
+}
+
+/**
+ * Bodies that tunnelled at time t: outside the box (randomScene's walls wS..wW span [0, L]^2), or on
+ * the other side of an infinite line than where they started. A disc that passed through a wall
+ * between two samples overlaps nothing at either, so worstOverlap alone would not see it.
+ */
+function escaped(world: World, spec: SceneSpec, t: number): string[] {
+  const L = spec.lines.find((l) => l.id === "wS")!.p2[0];
+  const out: string[] = [];
+  for (const a of world.bodies(t)) {
+    const slack = 1e-9 * a.r;
+    const inside = [a.x - a.r, a.y - a.r, L - a.x - a.r, L - a.y - a.r].every((gap) => gap >= -slack);
+    const start = spec.bodies.find((b) => b.id === a.id)!;
+    const crossed = spec.lines.some(
+      (l) => l.kind === "line" && sideOf(l, start.x, start.y) * sideOf(l, a.x, a.y) < 0,
+    );
+    if (!inside || crossed) out.push(`${a.id} at t=${t}: (${a.x}, ${a.y})`);
+  }
+  return out;
 }
 
 describe("World matches the all-pairs reference", () => {
@@ -62,7 +89,7 @@ describe("World matches the all-pairs reference", () => {
 });
 
 describe("World invariants", () => {
-  it("event times never decrease and nothing overlaps or leaves the box, at events and in between", () => {
+  it("event times never decrease and nothing overlaps (discs, lines, points), leaves the box or crosses a line, at events and in between", () => {
     fc.assert(
       fc.property(
         sceneSeed,
@@ -86,6 +113,7 @@ describe("World invariants", () => {
           let prev = 0;
           probe.advance({ maxEvents: 300 }, (e) => {
             expect(worstOverlap(probe, spec, e.time)).toBeLessThanOrEqual(1e-9);
+            expect(escaped(probe, spec, e.time)).toEqual([]);
             prev = e.time;
           });
           const check = worldFromSpec(spec);
@@ -100,6 +128,7 @@ describe("World invariants", () => {
               throw e;
             }
             expect(worstOverlap(check, spec, t)).toBeLessThanOrEqual(1e-9);
+            expect(escaped(check, spec, t)).toEqual([]);
           }
         },
       ),

@@ -5,26 +5,40 @@
  * velocity like equal masses. Results are written to a caller-owned output array.
  */
 
+/** Half the largest double: above it, 2 * m overflows. */
+const HALF_MAX = Number.MAX_VALUE / 2;
+/** The smallest normal double: below it, products lose bits (and tiny masses' products vanish). */
+const MIN_NORMAL = 2 ** -1022;
+
 /**
  * Share of the normal velocity change taken by the body of mass `m` against mass `other`:
- * 2*other/(m + other), with the infinite limits.
+ * 2*other/(m + other), with the infinite limits. Masses near the top of the double range are
+ * rescaled (halved, which is exact) so that 2*other or m + other cannot overflow to a NaN share.
  */
 export function impulseShare(m: number, other: number): number {
   const mInf = m === Number.POSITIVE_INFINITY;
   const oInf = other === Number.POSITIVE_INFINITY;
   if (mInf) return oInf ? 1 : 0;
   if (oInf) return 2;
-  return (2 * other) / (m + other);
+  if (other <= HALF_MAX && m <= HALF_MAX) return (2 * other) / (m + other);
+  return other / (0.5 * m + 0.5 * other);
 }
 
-/** Magnitude of the impulse 2*m1*m2/(m1+m2) * approachSpeed, with the infinite limits. */
+/**
+ * Magnitude of the impulse 2*m1*m2/(m1+m2) * approachSpeed, with the infinite limits. Where the
+ * product m1*m2 would overflow or underflow (masses beyond about 1e154 or below 1e-154 each) it is
+ * computed as m2 * (2*m1/(m1+m2)), so a representable impulse is not reported as Infinity or 0.
+ */
 export function impulseMagnitude(m1: number, m2: number, approachSpeed: number): number {
   const inf1 = m1 === Number.POSITIVE_INFINITY;
   const inf2 = m2 === Number.POSITIVE_INFINITY;
   if (inf1 && inf2) return approachSpeed > 0 ? Number.POSITIVE_INFINITY : 0;
   if (inf1) return 2 * m2 * approachSpeed;
   if (inf2) return 2 * m1 * approachSpeed;
-  return ((2 * m1 * m2) / (m1 + m2)) * approachSpeed;
+  const product = m1 * m2;
+  if (product <= HALF_MAX && product >= MIN_NORMAL && m1 + m2 <= Number.MAX_VALUE)
+    return ((2 * product) / (m1 + m2)) * approachSpeed;
+  return m2 * impulseShare(m2, m1) * approachSpeed;
 }
 
 /**
