@@ -49,25 +49,48 @@ function mostlyResting(n, seed) {
   return s;
 }
 
-/** The scene where `flag` should matter. */
-function sceneFor(flag, quick) {
+/**
+ * Not an `optimizations` switch but a skip by construction: a scene without infinite lines or rays
+ * runs no line code (segments are filed in the grid's cells and tested only where a disc is near).
+ * "Off" is the same gas plus one infinite line outside the box that no disc ever reaches, which
+ * every prediction then tests.
+ */
+const LINE_FREE = "lineFree";
+
+/** The scene where `flag` should matter (for LINE_FREE, `state` "off" adds the far line). */
+function sceneFor(flag, quick, state = "on") {
   const n = quick ? 1000 : 3000;
   if (flag === "broadPhase") return gas({ n: 1000, packing: 0.1, speed: 10, seed: 5, span: 2 }); // all pairs is O(N²) per event: keep it small
-  if (flag === "quadraticFastPath") return gas({ n, packing: 0.1, speed: 10, seed: 5, span: quick ? 2 : 4 });
+  if (flag === "quadraticFastPath" || flag === "recedingReject")
+    return gas({ n, packing: 0.1, speed: 10, seed: 5, span: quick ? 2 : 4 });
+  if (flag === LINE_FREE) {
+    const s = gas({ n, packing: 0.1, speed: 10, seed: 5, span: quick ? 2 : 4 });
+    s.description += "; off: plus one infinite line 100 units below the box, never reached";
+    if (state === "off")
+      s.walls.push({
+        id: "far-line",
+        p1: [0, -100],
+        p2: [1, -100],
+        kind: "line",
+        inside: [0, 1],
+        thickness: 10,
+      });
+    return s;
+  }
   if (flag === "pathBounds") return frictionGas(n, 6, 1);
   if (flag === "restingSkip") return mostlyResting(quick ? 3000 : 10000, 7);
   throw new Error(`no ablation scene for '${flag}'`);
 }
 
-const FLAGS = ["broadPhase", "quadraticFastPath", "pathBounds", "restingSkip"];
+const FLAGS = ["broadPhase", "quadraticFastPath", "recedingReject", "pathBounds", "restingSkip", LINE_FREE];
 /** Alternating (on, off) process pairs per switch in a full run. */
 const PROCESS_PAIRS = 3;
 
 /** The child: one configuration, warmed up, then timed. */
 async function child(flag, state, quick) {
   const { engine } = await loadEngine();
-  const scene = sceneFor(flag, quick);
-  const opt = state === "on" ? {} : { [flag]: false };
+  const scene = sceneFor(flag, quick, state);
+  const opt = state === "on" || flag === LINE_FREE ? {} : { [flag]: false };
   const run = () => {
     const world = buildWorld(engine, scene, { optimizations: opt });
     const a = nowNs();

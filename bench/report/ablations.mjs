@@ -12,6 +12,10 @@ const SKIPS = {
   pathBounds:
     "pairs whose remaining paths (friction: finite segments) cannot meet are rejected before solving",
   restingSkip: "pairs of resting bodies are never tested",
+  recedingReject:
+    "a pair receding with no relative acceleration is rejected before any polynomial is formed (off: the solver finds no contact)",
+  lineFree:
+    "no infinite lines or rays in the scene, so no line code runs (not a switch: off is the same scene with one unreachable infinite line, tested at every prediction)",
 };
 
 /** Why a switch can show no gain on a given scene (printed only when a run measures none). */
@@ -29,7 +33,7 @@ export function ablationsBlock(e, out) {
     ? `${numberWord(counted)} process pair${counted === 1 ? "" : "s"}`
     : "process pairs";
   out.push(
-    `Each "skip what the scene does not need" optimisation switched off in turn (World option \`optimizations: { <flag>: false }\`), same scene and span; "same events" checks that the switch changes only the time. Each configuration runs in its own Node process (warmed up, then timed), as a program using one configuration would: in a shared process the JIT's type feedback from one skews the other. On and off alternate over ${pairs} in this run and the times are the medians over all their timed runs, so a drift of the machine's speed during the section falls on both.\n`,
+    `Each "skip what the scene does not need" optimisation switched off in turn (World option \`optimizations: { <flag>: false }\`), same scene and span; "same events" checks that the switch changes only the time. The last row, \`lineFree\`, is a skip by construction rather than a switch: it compares the scene with the same scene plus one infinite line that no disc reaches. Each configuration runs in its own Node process (warmed up, then timed), as a program using one configuration would: in a shared process the JIT's type feedback from one skews the other. On and off alternate over ${pairs} in this run and the times are the medians over all their timed runs, so a drift of the machine's speed during the section falls on both.\n`,
   );
   out.push(
     table(

@@ -67,7 +67,7 @@ describe("broad phase and skips", () => {
     expect(placed).toBeGreaterThanOrEqual(10 * RUNS);
   });
 
-  it("switching off the grid, the path bounds or the resting skip changes nothing, bit for bit", () => {
+  it("switching off the grid, the path bounds, the resting skip or the receding rejection changes nothing, bit for bit", () => {
     fc.assert(
       fc.property(sceneSeed, fc.boolean(), (seed, big) => {
         const spec = big
@@ -79,7 +79,8 @@ describe("broad phase and skips", () => {
           { broadPhase: false },
           { pathBounds: false },
           { restingSkip: false },
-          { broadPhase: false, pathBounds: false, restingSkip: false },
+          { recedingReject: false },
+          { broadPhase: false, pathBounds: false, restingSkip: false, recedingReject: false },
         ]) {
           const w = build(spec, opt);
           expect({ opt, ...outcome(w, 400) }).toStrictEqual({ opt, ...expected }); // errors included

@@ -88,7 +88,7 @@ export class ContactTimes extends BroadPhase {
     const ux = vxo - vxs;
     const uy = vyo - vys;
     // Cheap rejection before any solve: with no relative acceleration a receding pair never meets.
-    if (axo === axs && ayo === ays && dx * ux + dy * uy >= 0 && this.opt.quadraticFastPath) {
+    if (axo === axs && ayo === ays && dx * ux + dy * uy >= 0 && this.opt.recedingReject) {
       this.memoResult = INF;
       return;
     }

@@ -80,6 +80,7 @@ export class SimState {
       pathBounds: opt.pathBounds ?? true,
       quadraticFastPath: opt.quadraticFastPath ?? true,
       restingSkip: opt.restingSkip ?? true,
+      recedingReject: opt.recedingReject ?? true,
     };
     this.store = new BodyStore();
     this.grid = new Grid(this.store.capacity);

@@ -95,6 +95,11 @@ export interface Optimizations {
   quadraticFastPath?: boolean | undefined;
   /** Skip pairs where both bodies rest; off = test them too. */
   restingSkip?: boolean | undefined;
+  /**
+   * Reject a pair that recedes (d . u >= 0) with no relative acceleration before any polynomial is
+   * formed; off = such pairs go to the solver, which finds no contact either.
+   */
+  recedingReject?: boolean | undefined;
 }
 
 export interface WorldOptions {

@@ -25,6 +25,7 @@ export class World extends Edits {
         "pathBounds",
         "quadraticFastPath",
         "restingSkip",
+        "recedingReject",
       ]);
     const g = requireFieldRate("g", options.g ?? 9.81);
     const gravity = requireGravity("gravity", options.gravity ?? [0, 0]);
