@@ -51,6 +51,39 @@ function worstOverlap(world: World, spec: SceneSpec, t: number): number {
   return worst;
 }
 
+/** Distance from (x, y) to line l of any kind (a ray or segment: its nearest point, end points included). */
+function distanceToLine(l: SceneSpec["lines"][number], x: number, y: number): number {
+  const ex = l.p2[0] - l.p1[0];
+  const ey = l.p2[1] - l.p1[1];
+  let u = ((x - l.p1[0]) * ex + (y - l.p1[1]) * ey) / (ex * ex + ey * ey);
+  if (l.kind !== "line") u = Math.max(0, l.kind === "segment" ? Math.min(1, u) : u);
+  return Math.hypot(x - (l.p1[0] + u * ex), y - (l.p1[1] + u * ey));
+}
+
+/**
+ * How far a collision event is from a true contact, relative to the contact distance: the gap
+ * computed here from the states alone, independently of the time-of-impact code that chose the
+ * time (which the all-pairs reference shares with the World). An event fired early or late (discs
+ * bouncing apart, or through each other) shows here even where nothing overlaps.
+ */
+function contactError(world: World, spec: SceneSpec, e: WorldEvent): number {
+  if (e.kind === "stop") return 0;
+  const a = world.body(e.a, e.time);
+  if (e.kind === "bodyBody") {
+    const b = world.body(e.b!, e.time);
+    const R = a.r + b.r;
+    return Math.abs(Math.hypot(a.x - b.x, a.y - b.y) - R) / R;
+  }
+  const d =
+    e.kind === "bodyPoint"
+      ? Math.hypot(
+          a.x - spec.points.find((p) => p.id === e.b)!.p[0],
+          a.y - spec.points.find((p) => p.id === e.b)!.p[1],
+        )
+      : distanceToLine(spec.lines.find((l) => l.id === e.b)!, a.x, a.y);
+  return Math.abs(d - a.r) / a.r;
+}
+
 /** Side of infinite line l that (x, y) is on: -1, 0 or 1. */
 function sideOf(l: SceneSpec["lines"][number], x: number, y: number): number {
   return Math.sign((l.p2[0] - l.p1[0]) * (y - l.p1[1]) - (l.p2[1] - l.p1[1]) * (x - l.p1[0]));
@@ -89,7 +122,7 @@ describe("World matches the all-pairs reference", () => {
 });
 
 describe("World invariants", () => {
-  it("event times never decrease and nothing overlaps (discs, lines, points), leaves the box or crosses a line, at events and in between", () => {
+  it("event times never decrease, every collision is at a true contact, and nothing overlaps (discs, lines, points), leaves the box or crosses a line, at events and in between", () => {
     fc.assert(
       fc.property(
         sceneSeed,
@@ -114,6 +147,7 @@ describe("World invariants", () => {
           probe.advance({ maxEvents: 300 }, (e) => {
             expect(worstOverlap(probe, spec, e.time)).toBeLessThanOrEqual(1e-9);
             expect(escaped(probe, spec, e.time)).toEqual([]);
+            expect(contactError(probe, spec, e)).toBeLessThanOrEqual(1e-9);
             prev = e.time;
           });
           const check = worldFromSpec(spec);
