@@ -96,6 +96,7 @@ export const OVERLAP_REL = 1e-9;
  * 1e+-240, far from both ends of the double range (1e+-308).
  */
 export const MAGNITUDE_MAX = 1e30;
+/** Smallest radius the World accepts (see MAGNITUDE_MAX: below it the contact polynomials underflow). */
 export const RADIUS_MIN = 1e-30;
 /**
  * Smallest non-zero speed component an edit may give (0 is allowed): the squared relative speed of
@@ -140,6 +141,10 @@ export const GRID_CELLS_PER_BODY = 3;
  * depends on them: the pop order is (time, canonical order) whatever the width.
  */
 export const CALENDAR_BUCKET_TARGET = 2;
+/**
+ * The calendar queue rebuilds with a new bucket width when the measured entries per bucket exceed
+ * CALENDAR_BUCKET_TARGET times this factor or fall below the target divided by it.
+ */
 export const CALENDAR_REBUILD_FACTOR = 4;
 
 /**
@@ -171,8 +176,15 @@ export const SIMULTANEOUS_EVENTS_PER_PAIR = 0.5;
  * relative to |t|; nothing uses it now, and it stays exported because it is public.
  */
 export const ZENO_WINDOW_EVENTS = 200_000;
+/**
+ * Events per body in a Zeno watch window in large scenes: a window holds
+ * max(ZENO_WINDOW_EVENTS, ZENO_WINDOW_EVENTS_PER_BODY × bodies) events (see ZENO_WINDOW_EVENTS).
+ */
 export const ZENO_WINDOW_EVENTS_PER_BODY = 20;
-/** @deprecated Unused (see above); kept because it is exported. */
+/**
+ * The earlier Zeno rule's bound on a window's progress relative to |t| (see ZENO_WINDOW_EVENTS).
+ * @deprecated Unused; kept because it is exported.
+ */
 export const ZENO_MIN_PROGRESS = 1e-6;
 
 /**
@@ -199,17 +211,27 @@ export const ZENO_SHRINK = 0.99;
  * a game of 5,355 ordinary breaks, each with 6 micro-stops among 47 events (review).
  */
 export const ZENO_PUSH_STREAK = 100_000;
+/** Bodies whose streaks of stops the push watch follows at once (the shortest streak gives way; see ZENO_PUSH_STREAK). */
 export const ZENO_PUSH_BODIES = 4;
+/**
+ * The Zeno watch's second test (see ZENO_SHRINK): a run of shrinking windows is reported (while an
+ * immovable body moves) once a window lasts at most this fraction of the whole run before it.
+ */
 export const ZENO_STREAK_PROGRESS = 0.01;
 
 /**
+ * Before the grid had levels: the most "big bodies" (discs over GRID_BIG_RATIO times the next
+ * largest) kept out of the grid's cells.
  * @deprecated Unused since the grid has levels (sim/grid.ts); kept because they are exported.
  * They bounded the "big bodies" kept out of the cells and tested against every body: at most
  * GRID_BIG_BODIES_MAX discs more than GRID_BIG_RATIO times the next largest. A 9th disc of radius 20
  * among 10,000 of radius 1 made every cell fit radius 20 (100 of them: 2 times slower than now).
  */
 export const GRID_BIG_BODIES_MAX = 8;
-/** @deprecated See GRID_BIG_BODIES_MAX. */
+/**
+ * Ratio of radii that made a disc "big" before the grid had levels.
+ * @deprecated Unused; see GRID_BIG_BODIES_MAX.
+ */
 export const GRID_BIG_RATIO = 2;
 
 /**
@@ -225,6 +247,7 @@ export const GRID_BIG_RATIO = 2;
  * Only speed depends on them, never a result.
  */
 export const GRID_LEVEL_GAIN = 0.65;
+/** Cost of visiting an empty grid cell, in pair tests, in the grid's cost estimate (see GRID_LEVEL_GAIN). */
 export const GRID_CELL_VISIT_COST = 0.1;
 
 /**

@@ -63,6 +63,7 @@ export const ACTION_FIELDS: Readonly<Record<ActionType, readonly FieldSpec[]>> =
   ],
 };
 
+/** The type names of all actions ("addBody", "giveVelocity", ..., "setGlobal"). */
 export const ACTION_TYPES = Object.keys(ACTION_FIELDS) as ActionType[];
 
 function checkUntil(raw: unknown, path: string): { time?: number; events?: number } {

@@ -6,6 +6,11 @@
  */
 import { ChapgameError } from "../sim/errors.js";
 
+/**
+ * Invalid scene or action input (parseScene, serializeScene, checkAction, every Timeline edit and
+ * option): a ChapgameError, so `path` names the field (`actions[3].r`) and `reason` says what is
+ * wrong; the message is `${path}: ${reason}`.
+ */
 export class SceneError extends ChapgameError {
   constructor(path: string, reason: string) {
     super(path, reason);

@@ -78,6 +78,14 @@ export function printable(message: string): string {
   return out;
 }
 
+/**
+ * Validate a scene file v1, given as JSON text (a leading byte order mark allowed) or as an already
+ * parsed object, as far as it can be checked without simulating, and return it normalized: g 9.81
+ * and gravity [0, 0] when absent, each addBody's mu 0 and v [0, 0] filled in, actions in file order.
+ * Throws SceneError (a ChapgameError): `path` names the field (`actions[3].r`; `json` for a syntax
+ * error, with its line and column) and `reason` says what is wrong. Overlaps with bodies that have
+ * moved (actions after time 0) need the simulation: Timeline.fromScene checks those.
+ */
 export function parseScene(input: string | unknown): SceneFile {
   let raw: unknown = input;
   if (typeof input === "string") {

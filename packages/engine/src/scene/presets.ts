@@ -164,6 +164,11 @@ export interface PresetInfo {
   make: () => SceneFile;
 }
 
+/**
+ * The preset scenes for a menu (the editor's): originalDemo, newtonsCradle, galperin (4 digits),
+ * brownian, billiardsBreak, bouncingBalls and dilutedGas (200 discs, 10 % packing). Each `make()`
+ * returns a fresh SceneFile, the caller's to edit.
+ */
 export const presets: readonly PresetInfo[] = [
   { id: "originalDemo", title: "The original's sample (friction)", make: originalDemo },
   { id: "newtonsCradle", title: "Newton's cradle", make: newtonsCradle },

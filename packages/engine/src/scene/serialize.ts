@@ -54,6 +54,12 @@ function checkFields(scene: SceneFile): void {
   });
 }
 
+/**
+ * The scene as JSON text: a stable key order, one action per line, numbers that read back
+ * bit-identical (an infinite mass as "Infinity"); parseScene of the text deep-equals parseScene of
+ * the scene. Every field is checked first as parseScene checks it (SceneError naming the field, e.g.
+ * `actions[0].x`); the rules that need the scene's state (ids that exist, overlaps) are parseScene's.
+ */
 export function serializeScene(scene: SceneFile): string {
   checkFields(scene);
   const lines = [

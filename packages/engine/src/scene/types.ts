@@ -10,25 +10,84 @@ export type Vec2 = readonly [number, number];
 export type LineKind = "line" | "ray" | "segment";
 
 /** How far to compute after an action or a prolong: seconds and/or events ahead (whichever comes
- *  first); neither = until no event is left. */
+ *  first); neither = until no event is left. Both are counted from where the computation starts,
+ *  never absolute. */
 export interface Until {
+  /** Seconds to compute, counted from the action's `time` (an action's until) or from the horizon
+   *  (`Timeline.prolong`): a duration, not an absolute time. A finite number >= 0. */
   time?: number;
+  /** Collisions and stops to compute from there (actions not counted): a whole number >= 0. */
   events?: number;
 }
 
-/** One change to the scene at `time`. */
-export type Action = { time: number; until?: Until } & (
-  | { type: "addBody"; id: string; x: number; y: number; r: number; m: number; mu?: number; v?: Vec2 }
-  | { type: "giveVelocity"; id: string; v: Vec2 }
-  | { type: "updateBody"; id: string; x?: number; y?: number; v?: Vec2; r?: number; m?: number; mu?: number }
+/**
+ * One change to the scene at `time`. Ids are non-empty strings, unique per kind (a body, a line
+ * and a point may share one). Positions and coordinates are finite and at most 1e30 in size;
+ * parseScene, checkAction and Timeline.apply refuse anything else with a SceneError naming the
+ * field (`actions[3].r`, `action.v[0]`).
+ */
+export type Action = {
+  /** When the action applies: an absolute time >= 0 on the timeline's clock (0 = the scene's
+   *  start). Actions at the same time apply in list order, after the events at that time. */
+  time: number;
+  /** How far to compute after this action, counted from its `time`, not absolute. (Under the
+   *  Timeline option `compute: false`, only an action given to `apply` has its until honoured.) */
+  until?: Until;
+} & (
+  | {
+      type: "addBody";
+      id: string;
+      /** Centre. */
+      x: number;
+      y: number;
+      /** Radius, between 1e-30 and 1e30. */
+      r: number;
+      /** Mass: > 0, or Infinity (immovable by collisions; written "Infinity" in JSON). */
+      m: number;
+      /** Friction coefficient (default 0); must be 0 under a non-zero gravity field. */
+      mu?: number;
+      /** Velocity [vx, vy] (default [0, 0]); each component 0 or at least 1e-30 in size. */
+      v?: Vec2;
+    }
+  | {
+      type: "giveVelocity";
+      id: string;
+      /** The body's new velocity [vx, vy]. */
+      v: Vec2;
+    }
+  | {
+      /** Change a body; fields left out keep their values at the action's time. */
+      type: "updateBody";
+      id: string;
+      x?: number;
+      y?: number;
+      /** New velocity [vx, vy]. */
+      v?: Vec2;
+      r?: number;
+      m?: number;
+      mu?: number;
+    }
   | { type: "removeBody"; id: string }
-  | { type: "addLine"; id: string; p1: Vec2; p2: Vec2; kind: LineKind }
+  | {
+      type: "addLine";
+      id: string;
+      p1: Vec2;
+      /** Must differ from p1. */
+      p2: Vec2;
+      /** `line` (infinite, through p1 and p2), `ray` (from p1 through p2) or `segment` (p1 to p2). */
+      kind: LineKind;
+    }
   | { type: "updateLine"; id: string; p1?: Vec2; p2?: Vec2; kind?: LineKind }
   | { type: "removeLine"; id: string }
   | { type: "addPoint"; id: string; p: Vec2 }
   | { type: "updatePoint"; id: string; p: Vec2 }
   | { type: "removePoint"; id: string }
-  | { type: "setGlobal"; g?: number; gravity?: Vec2 }
+  | {
+      /** Change the friction field and/or the gravity field (left out: kept). */
+      type: "setGlobal";
+      g?: number;
+      gravity?: Vec2;
+    }
 );
 
 /** The type names of all actions. */
@@ -36,11 +95,17 @@ export type ActionType = Action["type"];
 
 /** A scene file, version 1 (JSON). `meta` is free data for tools (view, title), kept as is. */
 export interface SceneFile {
+  /** Always "chapgame". */
   format: "chapgame";
+  /** The format version: 1. */
   version: 1;
+  /** Friction field at time 0 (9.81 when the JSON leaves it out): a disc decelerates at mu·g. */
   g: number;
+  /** Uniform acceleration field at time 0 ([0, 0] when the JSON leaves it out). */
   gravity: Vec2;
+  /** The actions in file order; they apply in time order, ties in list order. */
   actions: Action[];
+  /** Free data for tools (view, title), kept as is; must be an object. */
   meta?: Record<string, unknown>;
 }
 

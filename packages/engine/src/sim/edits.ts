@@ -30,6 +30,12 @@ const restoredLaw: MotionLaw = { ax: 0, ay: 0, tEnd: Number.POSITIVE_INFINITY };
 export class Edits extends Placement {
   // ---- bodies -------------------------------------------------------------------------------
 
+  /**
+   * Add a disc at the current time (`init`: x, y, r, m, and optional mu, vx, vy, each defaulting to
+   * 0). Touching is allowed, overlapping another body, a line or a point is not. Throws
+   * ChapgameError naming the field: `id` (empty, or a body with it exists), a bad number (`r`,
+   * `vx`, ...), an overlap (`x`), an unknown key (`init.vX`); nothing changes then.
+   */
   addBody(id: string, init: BodyInit): void {
     requireId("id", id);
     requireFields("init", init, BODY_FIELDS, BODY_STATE_EXTRAS);
@@ -126,6 +132,12 @@ export class Edits extends Placement {
     if (!this.dirty) this.predict(s);
   }
 
+  /**
+   * Change a body at the current time: the fields in `patch` are set, the others keep their current
+   * values (position and velocity as they are now), and its motion restarts from there. A moved or
+   * grown body must not overlap anything. Throws ChapgameError naming `id` (no such body) or the
+   * refused field; nothing changes then. To strike a body: `updateBody(id, { vx, vy })`.
+   */
   updateBody(id: string, patch: BodyPatch): void {
     const s = this.slotOf(id);
     requireFields("patch", patch, BODY_FIELDS, BODY_STATE_EXTRAS);
@@ -157,6 +169,7 @@ export class Edits extends Placement {
     if (!this.dirty) this.predict(s);
   }
 
+  /** Remove a body at the current time. Throws ChapgameError naming `id` when there is no such body. */
   removeBody(id: string): void {
     const s = this.slotOf(id);
     this.zeno.push.forget(id);
@@ -176,6 +189,12 @@ export class Edits extends Placement {
 
   // ---- globals ------------------------------------------------------------------------------
 
+  /**
+   * Change the friction field `g` and/or the gravity field at the current time (a field left out is
+   * kept); every body continues from its current position and velocity under the new fields. Each
+   * is checked as in WorldOptions (ChapgameError naming `g` or `gravity[i]`); a non-zero gravity is
+   * refused while a body has mu > 0 (ChapgameError naming `bodies.<id>.mu`). Nothing changes on error.
+   */
   setGlobal(patch: { g?: number | undefined; gravity?: Vec2 | undefined }): void {
     requireFields("patch", patch, ["g", "gravity"]);
     const g = requireFieldRate("g", patch.g ?? this.frictionG);

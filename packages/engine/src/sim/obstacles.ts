@@ -6,6 +6,7 @@
  */
 import type { Vec2 } from "./types.js";
 
+/** Kind of a line obstacle: infinite `line` through p1 and p2, `ray` from p1 through p2, or `segment` p1–p2. */
 export type LineKind = "line" | "ray" | "segment";
 
 export interface Line {

@@ -108,14 +108,23 @@ export class Placement extends Simulator {
 
   // ---- obstacles ----------------------------------------------------------------------------
 
+  /** Whether a line (of any kind: line, ray or segment) with this id exists. */
   hasLine(id: string): boolean {
     return this.lineList.some((l) => l.id === id);
   }
 
+  /** Whether a point obstacle with this id exists. */
   hasPoint(id: string): boolean {
     return this.pointList.some((p) => p.id === id);
   }
 
+  /**
+   * Add a line obstacle at the current time: `kind` "line" (infinite, through p1 and p2), "ray"
+   * (from p1 through p2) or "segment" (p1 to p2). It may touch a disc but not cut into one. Throws
+   * ChapgameError naming `id` (empty, or taken by a line), `p1` or `p2` (not a pair [x, y]; `p1[1]`
+   * for a coordinate that is not finite or exceeds 1e30 in size), `p2` equal to p1, `p1` for an
+   * overlap with a body, or `kind`. Nothing changes on error.
+   */
   addLine(id: string, p1: Vec2, p2: Vec2, kind: LineKind): void {
     requireId("id", id);
     if (this.hasLine(id)) throw new ChapgameError("id", `a line with id '${id}' already exists`);
@@ -124,6 +133,11 @@ export class Placement extends Simulator {
     this.markDirty();
   }
 
+  /**
+   * Move a line or change its kind at the current time (fields left out are kept; a LineState's
+   * `id` is accepted and ignored). Checked as addLine; ChapgameError naming `id` when there is no
+   * such line. Nothing changes on error.
+   */
   updateLine(id: string, patch: { p1?: Vec2; p2?: Vec2; kind?: LineKind }): void {
     const i = this.lineList.findIndex((l) => l.id === id);
     if (i < 0) throw new ChapgameError("id", `no line with id '${id}'`);
@@ -140,12 +154,18 @@ export class Placement extends Simulator {
     this.markDirty();
   }
 
+  /** Remove a line at the current time. Throws ChapgameError naming `id` when there is no such line. */
   removeLine(id: string): void {
     if (!this.hasLine(id)) throw new ChapgameError("id", `no line with id '${id}'`);
     this.lineList = this.lineList.filter((l) => l.id !== id);
     this.markDirty();
   }
 
+  /**
+   * Add a point obstacle at `p` at the current time; it may lie on a disc's rim, not inside a disc.
+   * Throws ChapgameError naming `id` (empty, or taken by a point), `p` (not a pair [x, y], or inside
+   * a body) or a coordinate (`p[0]`: not finite, or over 1e30 in size).
+   */
   addPoint(id: string, p: Vec2): void {
     requireId("id", id);
     if (this.hasPoint(id)) throw new ChapgameError("id", `a point with id '${id}' already exists`);
@@ -153,6 +173,7 @@ export class Placement extends Simulator {
     this.markDirty();
   }
 
+  /** Move a point to `p` at the current time. Checked as addPoint; ChapgameError naming `id` when there is no such point. */
   updatePoint(id: string, p: Vec2): void {
     if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id '${id}'`);
     const point = this.checkedPoint(id, p);
@@ -160,6 +181,7 @@ export class Placement extends Simulator {
     this.markDirty();
   }
 
+  /** Remove a point at the current time. Throws ChapgameError naming `id` when there is no such point. */
   removePoint(id: string): void {
     if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id '${id}'`);
     this.pointList = this.pointList.filter((q) => q.id !== id);

@@ -28,6 +28,7 @@ export class SimState {
   protected frictionG: number;
   protected gravX: number;
   protected gravY: number;
+  /** The optimisation switches in effect: WorldOptions.optimizations with the defaults (all true) filled in. */
   readonly opt: { [K in keyof Optimizations]-?: boolean };
   protected store: BodyStore;
   protected grid: Grid;
@@ -55,6 +56,10 @@ export class SimState {
     this.dirty = true;
     this.changes++;
   }
+  /**
+   * Collisions by kind and friction stops processed by this World so far (a clone starts from a
+   * copy). A live object, updated as events are processed: copy it to keep a snapshot.
+   */
   readonly counts: EventCounts = { bodyBody: 0, bodyLine: 0, bodyPoint: 0, stop: 0 };
   /** Reports runs of events the exact model cannot pass (zenoWatch.ts). */
   protected readonly zeno = new ZenoWatch();
@@ -87,7 +92,10 @@ export class SimState {
     this.heap = new CalendarQueue(this.store.capacity, (a, b) => this.tieLess(a, b));
   }
 
-  /** The world's current time (read-only: `advance` and the edits move it). */
+  /**
+   * The world's current time, on its absolute clock: events before it have been processed, and
+   * edits happen at it (read-only: only `advance` moves it; edits do not).
+   */
   get time(): number {
     return this.now;
   }
@@ -97,11 +105,12 @@ export class SimState {
     return this.frictionG;
   }
 
-  /** The gravity field's components (read-only: change them with `setGlobal`). */
+  /** The gravity field's x component (read-only: change it with `setGlobal`). */
   get gx(): number {
     return this.gravX;
   }
 
+  /** The gravity field's y component (read-only: change it with `setGlobal`). */
   get gy(): number {
     return this.gravY;
   }

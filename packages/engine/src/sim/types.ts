@@ -1,16 +1,37 @@
 /** Public data types of the World (see docs/architecture.md). */
 
+/** A 2D vector `[x, y]`. */
 export type Vec2 = readonly [number, number];
 
+/**
+ * Kind of a World event: a disc–disc collision, a disc against a line, ray or segment (its end
+ * points included), a disc against a point, or a disc stopped by friction.
+ */
 export type EventKind = "bodyBody" | "bodyLine" | "bodyPoint" | "stop";
 
+/**
+ * A new disc for `World.addBody`, placed at the World's current time. Every number is checked
+ * (ChapgameError naming the field, e.g. `r`); a key not listed here is refused (`init.vX`), except
+ * the derived `id`, `ax`, `ay` of a BodyState, so a reported state can be passed back.
+ */
 export interface BodyInit {
+  /** Centre x; finite, at most MAGNITUDE_MAX (1e30) in size. */
   x: number;
+  /** Centre y; finite, at most MAGNITUDE_MAX (1e30) in size. */
   y: number;
+  /** Radius, between RADIUS_MIN (1e-30) and MAGNITUDE_MAX (1e30). */
   r: number;
+  /** Mass: positive, or Infinity (a body collisions cannot move). */
   m: number;
+  /**
+   * Friction coefficient (default 0): a moving disc decelerates at mu·g, g being the World's
+   * friction field, and stops exactly. 0, or between FIELD_MIN (1e-30) and MAGNITUDE_MAX; must be
+   * 0 while the gravity field is non-zero.
+   */
   mu?: number | undefined;
+  /** Velocity x (default 0): 0, or between SPEED_MIN (1e-30) and MAGNITUDE_MAX in size. */
   vx?: number | undefined;
+  /** Velocity y (default 0): 0, or between SPEED_MIN (1e-30) and MAGNITUDE_MAX in size. */
   vy?: number | undefined;
 }
 
@@ -20,40 +41,71 @@ export interface BodyInit {
  * or the gravity field) follows from v, mu and the World's globals exactly as for any motion.
  */
 export interface BodyMotionInit {
+  /** When the motion started: finite and at most the World's time (ChapgameError naming `t0`). */
   t0: number;
+  /** Position x at t0 (finite; not held to MAGNITUDE_MAX, a computed motion may exceed it). */
   x0: number;
+  /** Position y at t0 (finite). */
   y0: number;
+  /** Velocity x at t0 (finite). */
   vx: number;
+  /** Velocity y at t0 (finite). */
   vy: number;
+  /** Radius, as in BodyInit. */
   r: number;
+  /** Mass, as in BodyInit (positive, or Infinity). */
   m: number;
+  /** Friction coefficient (default 0), as in BodyInit. */
   mu?: number | undefined;
 }
 
+/**
+ * Changes for `World.updateBody`, made at the World's current time: a field left out keeps the
+ * body's current value (its position and velocity now), and the body's motion restarts from there.
+ * Each given field is checked as in BodyInit (ChapgameError naming it); a BodyState's `id`, `ax`,
+ * `ay` are accepted and ignored.
+ */
 export interface BodyPatch {
+  /** New centre x (the body must not overlap anything there). */
   x?: number | undefined;
+  /** New centre y (the body must not overlap anything there). */
   y?: number | undefined;
+  /** New velocity x. */
   vx?: number | undefined;
+  /** New velocity y. */
   vy?: number | undefined;
+  /** New radius (the grown body must not overlap anything). */
   r?: number | undefined;
+  /** New mass (positive, or Infinity). */
   m?: number | undefined;
+  /** New friction coefficient (must be 0 while the gravity field is non-zero). */
   mu?: number | undefined;
 }
 
 /** A disc at one instant. */
 export interface BodyState {
   id: string;
+  /** Centre x. */
   x: number;
+  /** Centre y. */
   y: number;
+  /** Velocity x (0 once friction has stopped the body). */
   vx: number;
+  /** Velocity y (0 once friction has stopped the body). */
   vy: number;
+  /** Acceleration x of the current motion: friction (−mu·g along the velocity; 0 once stopped) or the gravity field. */
   ax: number;
+  /** Acceleration y of the current motion: friction (−mu·g along the velocity; 0 once stopped) or the gravity field. */
   ay: number;
+  /** Radius. */
   r: number;
+  /** Mass (Infinity: immovable by collisions). */
   m: number;
+  /** Friction coefficient. */
   mu: number;
 }
 
+/** A line obstacle: infinite `line` through p1 and p2, `ray` from p1 through p2, or `segment` p1–p2. */
 export interface LineState {
   id: string;
   p1: Vec2;
@@ -61,6 +113,7 @@ export interface LineState {
   kind: "line" | "ray" | "segment";
 }
 
+/** A point obstacle at `p`. */
 export interface PointState {
   id: string;
   p: Vec2;
@@ -102,26 +155,77 @@ export interface Optimizations {
   recedingReject?: boolean | undefined;
 }
 
+/**
+ * Options of `new World(options)`. Each is checked (ChapgameError naming it: `g`, `gravity[1]`,
+ * `time`); an unknown key is refused (`options.gx`).
+ */
 export interface WorldOptions {
+  /**
+   * Friction field (default 9.81): a moving disc with friction coefficient mu decelerates at mu·g.
+   * 0 (no friction), or between FIELD_MIN (1e-30) and MAGNITUDE_MAX (1e30). It acts only on discs
+   * with mu > 0 (mu defaults to 0).
+   */
   g?: number | undefined;
+  /**
+   * Uniform acceleration field [gx, gy] acting on every disc (default [0, 0]); each component 0, or
+   * between FIELD_MIN and MAGNITUDE_MAX in size. While it is non-zero, every disc's mu must be 0.
+   */
   gravity?: Vec2 | undefined;
+  /**
+   * Starting time of the World's clock (default 0; any finite number). Times are doubles: keep
+   * them near 0 (seconds since the level started, not since 1970), since an event at time T is only
+   * located to within ulp(T).
+   */
   time?: number | undefined;
+  /** Switches for the optimisations, each on by default (they exist for the benchmarks). */
   optimizations?: Optimizations | undefined;
 }
 
+/**
+ * Limits of `World.advance`: it stops at whichever comes first. Both left out = run until nothing
+ * is queued (a scene that never comes to rest then runs for ever: give a bound).
+ */
 export interface AdvanceLimits {
+  /**
+   * An ABSOLUTE time on the World's clock (like `World.time`), not a duration: every event at or
+   * before it is processed (events exactly at it included), then the World's time becomes
+   * untilTime. Default +Infinity. Must be a number >= the World's current time (ChapgameError
+   * naming `untilTime`); to advance by dt, pass `world.time + dt`. (Timeline.prolong's `time`, by
+   * contrast, counts from the horizon; Timeline.prolongTo takes an absolute time.)
+   */
   untilTime?: number | undefined;
+  /**
+   * Stop after this many collisions and stops (internal work such as cell crossings does not
+   * count): a whole number >= 0, or Infinity (the default); ChapgameError naming `maxEvents`.
+   */
   maxEvents?: number | undefined;
 }
 
+/** What `World.advance` did. */
 export interface AdvanceResult {
+  /** Collisions and stops processed (each reported to the callback). */
   events: number;
+  /**
+   * Why it stopped: "events" = maxEvents reached (the World's time is then the last event's);
+   * "time" = untilTime reached with something still queued (with the broad-phase grid possibly only
+   * cell crossings that lead to no event: `nextEventTime()` answers exactly); "idle" = nothing is
+   * queued any more (with an untilTime, the World's time is untilTime; without one, the last item
+   * processed).
+   */
   reason: "time" | "events" | "idle";
 }
 
+/**
+ * Events a World has processed since it was made, by kind (`World.counts`: a live object, updated
+ * as events are processed; a clone starts from a copy).
+ */
 export interface EventCounts {
+  /** Disc–disc collisions. */
   bodyBody: number;
+  /** Collisions of a disc with a line, ray or segment (its end points included). */
   bodyLine: number;
+  /** Collisions of a disc with a point. */
   bodyPoint: number;
+  /** Discs stopped by friction. */
   stop: number;
 }

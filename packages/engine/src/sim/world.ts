@@ -16,7 +16,32 @@ import type { ZenoCounters } from "./zenoWatch.js";
 
 const INF = Number.POSITIVE_INFINITY;
 
+/**
+ * The exact simulation at one moving instant: discs, lines, rays, segments and points, a friction
+ * field `g` (default 9.81), a gravity field (default [0, 0]) and a clock (`time`, default 0).
+ *
+ * - Edits (addBody, updateBody, removeBody, addLine, addPoint, setGlobal, ...) happen at the current
+ *   time. Invalid input throws a ChapgameError (`path` names the field, `reason` says what is
+ *   wrong) and changes nothing.
+ * - `advance` processes collisions and stops in time order, up to an absolute time and/or a number
+ *   of events; `nextEventTime()` says when the next one will happen without moving the World.
+ * - `body` and `bodies` give exact states from each body's last event or edit up to the next event.
+ *   A World keeps no past: a Timeline does (history, time travel, edits in the past).
+ * - A state the exact model cannot continue from (a disc resting on a line under gravity, a Zeno
+ *   state) throws a SimulationError instead of looping.
+ *
+ * @example
+ * const world = new World({ g: 0 });
+ * world.addBody("a", { x: 0, y: 0, r: 1, m: 1, vx: 1 });
+ * world.addBody("b", { x: 5, y: 0, r: 1, m: 1 });
+ * world.advance({ untilTime: 10 }, (e) => console.log(e.kind, e.time)); // bodyBody 3
+ */
 export class World extends Edits {
+  /**
+   * A World with no bodies or obstacles. Options: `g` (friction field, default 9.81), `gravity`
+   * (default [0, 0]), `time` (default 0), `optimizations` (all on). Throws ChapgameError naming a
+   * bad option (`g`, `gravity[0]`, `time`) or an unknown key (`options.gx`).
+   */
   constructor(options: WorldOptions = {}) {
     requireFields("options", options, ["g", "gravity", "time", "optimizations"]);
     if (options.optimizations !== undefined)
@@ -46,6 +71,7 @@ export class World extends Edits {
     return w;
   }
 
+  /** Whether a body with this id exists (a line or a point may have the same id: ids are unique per kind). */
   hasBody(id: string): boolean {
     return this.index.has(id);
   }
@@ -182,6 +208,17 @@ export class World extends Edits {
 
   // ---- simulation ---------------------------------------------------------------------------
 
+  /**
+   * Process collisions and stops in time order, calling `onEvent` with each (one reused object: copy
+   * what you keep), until `limits.untilTime` or after `limits.maxEvents` events, whichever comes
+   * first; with neither, until nothing is queued. `untilTime` is an ABSOLUTE time on this World's
+   * clock (events exactly at it are processed, then `time` becomes untilTime), unlike
+   * `Timeline.prolong({ time })`, which counts from the horizon (`Timeline.prolongTo(t)` is
+   * absolute). Bad limits throw ChapgameError (`untilTime` NaN or before `time`; `maxEvents` not a
+   * whole number >= 0 or Infinity; `onEvent` not a function) before anything changes. An event the
+   * exact model cannot process throws SimulationError: the events before it stay processed, the
+   * World's time is the failing event's (`error.time`) and advancing again throws the same.
+   */
   advance(limits: AdvanceLimits = {}, onEvent?: (e: WorldEvent) => void): AdvanceResult {
     requireFields("limits", limits, ["untilTime", "maxEvents"]);
     const untilTime = limits.untilTime ?? INF;
@@ -210,8 +247,10 @@ export class World extends Edits {
   }
 
   /**
-   * Time of the next collision or stop (+Infinity when nothing will ever happen); throws what
-   * advancing to it would throw. Changes nothing observable. Costs O(1) per internal item (cell
+   * Time of the next collision or stop, predicted: the future, from this World's current state
+   * (+Infinity when nothing will ever happen). Not to be confused with `Timeline.nextEventTime(t)`,
+   * which looks up the next LOGGED event after t in a computed history and gives null when there
+   * is none. Throws the SimulationError that advancing to it would throw. Changes nothing observable. Costs O(1) per internal item (cell
    * crossing, stale prediction) before that event, processed in place and undone; only while
    * predictions are out of date (before the first advance, or after an edit of obstacles or
    * globals or a grid rebuild) does it cost a copy of the world and predicting every body, as the

@@ -15,6 +15,11 @@ import { K_ACTION } from "./records.js";
 import { headlessStateAt, stateAt } from "./replay.js";
 import type { LogEvent, SceneState, TimelineCounts } from "./types.js";
 
+/**
+ * The reading half of a Timeline (Timeline extends it): exact states, the event log and counts.
+ * Every time here is absolute, on the timeline's clock (0 = the scene's start). A time or index
+ * that is not accepted throws a RangeError naming the method and the argument.
+ */
 export class TimelineReader {
   /** @internal */
   protected core: TimelineCore;
@@ -28,15 +33,18 @@ export class TimelineReader {
     this.core = core;
   }
 
+  /** The absolute time the history is computed up to: `stateAt(t)` accepts 0 <= t <= horizon. */
   get horizon(): number {
     return this.core.horizon;
   }
 
+  /** Whether the log and keyframes are kept (the `history` option; false = headless). */
   get history(): boolean {
     return this.core.history;
   }
 
-  /** The exact state at t, 0 <= t <= horizon (without history: from the last event or action on). */
+  /** The exact state at the absolute time t, 0 <= t <= horizon (without history: from the last
+   *  logged event or action on). Any other t (NaN, a non-number) throws RangeError. */
   stateAt(t: number): SceneState {
     const c = this.core;
     const at = stateTime(t, c.horizon);
@@ -48,14 +56,18 @@ export class TimelineReader {
     return this.core.lastLogged;
   }
 
-  /** Time of the first logged event strictly after t, or null. */
+  /** Time of the first LOGGED entry (collision, stop or action) strictly after t, or null when there
+   *  is none (always null without history). A lookup in the computed history, not a prediction:
+   *  unlike `World.nextEventTime()`, it takes a time, never looks past the horizon (prolong first)
+   *  and gives null, not +Infinity. t may be ±Infinity; NaN or a non-number throws RangeError. */
   nextEventTime(t: number): number | null {
     const r = this.core.records;
     const i = r.upperBound(timeArg("nextEventTime", "t", t));
     return i < r.length ? (r.time[i] as number) : null;
   }
 
-  /** Time of the last logged event strictly before t, or null. */
+  /** Time of the last LOGGED entry (collision, stop or action) strictly before t, or null when there
+   *  is none. t may be ±Infinity; NaN or a non-number throws RangeError. */
   prevEventTime(t: number): number | null {
     const r = this.core.records;
     const i = r.lowerBound(timeArg("prevEventTime", "t", t)) - 1;
@@ -67,21 +79,23 @@ export class TimelineReader {
     return this.core.records.length;
   }
 
-  /** The i-th logged event in time order. */
+  /** The i-th logged entry in time order, 0 <= i < eventCount (otherwise RangeError). */
   event(i: number): LogEvent {
     eventIndex("event", i, this.eventCount);
     return this.cursor.read(this.core, i, i + 1)[0] as LogEvent;
   }
 
   /** The action the i-th logged event applied (frozen, the object in `actions`), or null when that
-   *  event is a collision or a stop: what a log entry of type "action" did. */
+   *  event is a collision or a stop: what a log entry of type "action" did. RangeError for an i
+   *  outside [0, eventCount). */
   eventAction(i: number): Action | null {
     eventIndex("eventAction", i, this.eventCount);
     const r = this.core.records;
     return r.kind[i] === K_ACTION ? (this.core.acts[r.a[i] as number] as Action) : null;
   }
 
-  /** Logged events with t0 <= time <= t1, in order. */
+  /** Logged entries with t0 <= time <= t1 (absolute times; ±Infinity allowed), in order. NaN or a
+   *  non-number throws RangeError. */
   eventsBetween(t0: number, t1: number): LogEvent[] {
     const r = this.core.records;
     const from = r.lowerBound(timeArg("eventsBetween", "t0", t0));
@@ -89,7 +103,8 @@ export class TimelineReader {
   }
 
   /** Logged events with index in [start, end) (end clamped to eventCount; Infinity = to the end), in
-   *  order: the log in pieces, to write a long one out without holding all of it. */
+   *  order: the log in pieces, to write a long one out without holding all of it. Indices must be
+   *  whole numbers >= 0 (RangeError). */
   eventRange(start: number, end: number): LogEvent[] {
     const [from, to] = indexRange(start, end);
     return this.cursor.read(this.core, from, Math.min(to, this.eventCount));

@@ -32,6 +32,29 @@ import { saveCore } from "./undo.js";
 
 const INF = Number.POSITIVE_INFINITY;
 
+/**
+ * A scene's history with exact time travel: every edit is an Action stamped with a time (on a clock
+ * that starts at 0), and the history is computed by a World up to the `horizon`.
+ *
+ * - `apply(action)` / `setActions(list)` edit; an action before the horizon cuts the computed future
+ *   at its time and recomputes it, identical to building from scratch with the action in place.
+ * - `prolong({ time, events })` computes further, counting from the horizon; `prolongTo(t)` up to an
+ *   absolute time; `prolongSlice` in bounded slices for a UI.
+ * - `stateAt(t)` is the exact state at any 0 <= t <= horizon; the log of collisions, stops and
+ *   actions is read with `event(i)`, `eventRange`, `eventsBetween`, `nextEventTime(t)`, ...
+ * - Refused edits throw a SceneError (a ChapgameError: `path` names the field, `reason` says what
+ *   is wrong) and change nothing; a Zeno state throws SimulationError. Reads given a bad time or
+ *   index throw RangeError.
+ * - `history: false` keeps no log and no keyframes (headless runs): states can be read only from the
+ *   last logged event or action up to the horizon.
+ *
+ * @example
+ * const tl = new Timeline({ g: 0 });
+ * tl.apply({ time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [1, 0] });
+ * tl.apply({ time: 0, type: "addBody", id: "b", x: 5, y: 0, r: 1, m: 1 });
+ * tl.prolong({ time: 10 });        // horizon 10: a collision at t = 3
+ * tl.stateAt(2).bodies;            // exact state at t = 2
+ */
 export class Timeline extends TimelineReader {
   private readonly options: CheckedOptions;
   private revision = 0;
@@ -41,6 +64,11 @@ export class Timeline extends TimelineReader {
   /** the scene's meta (JSON text, so each toScene gets its own copy), kept for toScene */
   private metaJson: string | null = null;
 
+  /**
+   * An empty timeline at horizon 0. Options: `g` (friction field, default 9.81), `gravity` (default
+   * [0, 0]), `history` (default true), `compute` (default true). Throws SceneError naming a bad
+   * option or an unknown key.
+   */
   constructor(options: TimelineOptions = {}) {
     const o = checkOptions(options);
     super(new TimelineCore(o.g, o.gravity, o.history, o.compute));
@@ -108,9 +136,11 @@ export class Timeline extends TimelineReader {
     notifyAll(this.listeners);
   }
 
-  /** Validate and apply one action (see the header). Throws SceneError; then nothing changes. When
-   *  it would make a later action invalid, the error names that one as `actions[i]` (its index in
-   *  `actions`) and says so. */
+  /** Validate and apply one action at its time (absolute, >= 0; see the header). Throws SceneError
+   *  (`action.<field>`), or SimulationError when the recomputed history meets a Zeno state before
+   *  the horizon; then nothing changes. When it would make a later action invalid, the error names
+   *  that one as `actions[i]` (its index in `actions`) and says so. Without history, an action before
+   *  the horizon is refused (`action.time`). */
   apply(action: Action): void {
     const a = freezeAction(checkAction(action, "action"));
     const c = this.core;
@@ -158,7 +188,8 @@ export class Timeline extends TimelineReader {
 
   /** Replace the whole action list (undo/redo, paste), atomically, recomputing up to at least the
    *  current horizon. Only the part after the first changed action is recomputed (from the last World
-   *  keyframe before it). Errors name `actions[i]` by the index in `actions`. */
+   *  keyframe before it). A refused action throws SceneError naming `actions[i]` (its index in the
+   *  list given), a Zeno state before the horizon SimulationError; either way nothing changes. */
   setActions(actions: readonly Action[]): void {
     const checked = checkActionList(actions).map((a, i) => freezeAction(checkAction(a, `actions[${i}]`)));
     const order = applyOrder(checked);
@@ -195,15 +226,23 @@ export class Timeline extends TimelineReader {
     this.changed();
   }
 
-  /** Compute further from the horizon: `until.time` seconds and/or `until.events` collisions and
-   *  stops, whichever first; neither = until nothing is left to happen. */
+  /** Compute further from the current horizon: `until.time` seconds COUNTED FROM THE HORIZON
+   *  (relative: at horizon 5, `prolong({ time: 2 })` computes up to 7) and/or `until.events` more
+   *  collisions and stops, whichever comes first; neither = until nothing is left to happen (a scene
+   *  that never comes to rest then runs for ever). For an absolute time use `prolongTo(t)`, as
+   *  `World.advance({ untilTime })` is. A bad `until` throws SceneError (`until.time`,
+   *  `until.events`). A Zeno state on the way throws SimulationError; what was computed up to it
+   *  is kept and the subscribers are told. */
   prolong(until: Until): ProlongResult {
     const u = checkUntil(until, "until");
     const res = this.compute(INF, goalFrom(this.core, u, this.core.horizon));
     return { events: res.events, reason: res.reason ?? "events" };
   }
 
-  /** Compute up to time t (if not computed yet). */
+  /** Compute up to the ABSOLUTE time t (the clock of the actions' times and of stateAt), if the
+   *  horizon is before it; otherwise nothing is computed (`events: 0`). Unlike `prolong({ time })`,
+   *  which counts from the horizon; like `World.advance({ untilTime })`. t must be a finite number
+   *  >= 0 (SceneError naming `t`). A Zeno state throws SimulationError, as for prolong. */
   prolongTo(t: number): ProlongResult {
     nonNegative({ t }, "t", "");
     const res = this.compute(INF, { tLimit: t, eLimit: INF });
@@ -211,7 +250,8 @@ export class Timeline extends TimelineReader {
   }
 
   /** Incremental prolong for UIs: at most `budget` events per call; call with the same `until` until
-   *  done (the target is fixed by the first call). */
+   *  done (the target is fixed by the first call: `until.time` counts from the horizon at that call,
+   *  as in prolong). A bad `until` or `budget` (a whole number >= 1, or Infinity) throws SceneError. */
   prolongSlice(
     until: Until,
     budget: number,
@@ -257,7 +297,8 @@ export class Timeline extends TimelineReader {
   // ---- observing --------------------------------------------------------------------------------
 
   /** Call `listener` after every change (apply, setActions, prolong). Returns the unsubscribe. A
-   *  listener that throws does not stop the others; its error is rethrown after them. */
+   *  listener that throws does not stop the others; its error is rethrown after them. A listener
+   *  that is not a function throws TypeError. */
   subscribe(listener: () => void): () => void {
     if (typeof listener !== "function") throw new TypeError("subscribe: listener must be a function");
     this.listeners.add(listener);

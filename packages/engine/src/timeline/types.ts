@@ -9,11 +9,18 @@ export type LogKind = EventKind | "action";
  *  null, and `action` = the action's type (the whole action: Timeline.eventAction(i)). For a stop:
  *  point = where the body stopped, normal null, impulse 0. */
 export interface LogEvent {
+  /** Absolute time of the entry. */
   time: number;
+  /** What happened: a collision (bodyBody, bodyLine, bodyPoint), a friction stop, or an action. */
   type: LogKind;
+  /** The participants: [body, body] in id order, [body, line], [body, point], [body] for a stop,
+   *  [the action's id] for an action ([] for setGlobal). */
   ids: string[];
+  /** Contact point; for a stop, where the body stopped; null for an action. */
   point: Vec2 | null;
+  /** Unit normal at contact from the first id towards the second; null for a stop or an action. */
   normal: Vec2 | null;
+  /** Magnitude of the impulse (Infinity when both masses are infinite); 0 for a stop; null for an action. */
   impulse: number | null;
   /** Only on entries of type "action": what the action did (addBody, giveVelocity, removeLine, …). */
   action?: ActionType;
@@ -21,35 +28,61 @@ export interface LogEvent {
 
 /** The exact state of the scene at one time; every list sorted by id. */
 export interface SceneState {
+  /** The absolute time of this state. */
   time: number;
+  /** The friction field at that time. */
   g: number;
+  /** The gravity field at that time. */
   gravity: Vec2;
+  /** Every disc, sorted by id. */
   bodies: BodyState[];
+  /** Every line, ray and segment, sorted by id. */
   lines: LineState[];
+  /** Every point obstacle, sorted by id. */
   points: PointState[];
 }
 
+/** Entries of the computed history by kind (`Timeline.counts()`; counted also without history). */
 export interface TimelineCounts {
+  /** Disc–disc collisions. */
   bodyBody: number;
+  /** Collisions of a disc with a line, ray or segment. */
   bodyLine: number;
+  /** Collisions of a disc with a point. */
   bodyPoint: number;
+  /** Discs stopped by friction. */
   stop: number;
+  /** Actions applied. */
   action: number;
 }
 
+/**
+ * Options of `new Timeline(options)` (and, without g and gravity, of `Timeline.fromScene`). Each is
+ * checked (SceneError naming it); an unknown key is refused.
+ */
 export interface TimelineOptions {
-  /** friction field (default 9.81) */
+  /** Friction field (default 9.81): a disc with friction coefficient mu decelerates at mu·g. 0, or
+   *  between FIELD_MIN (1e-30) and MAGNITUDE_MAX (1e30). */
   g?: number | undefined;
-  /** uniform acceleration field (default [0, 0]) */
+  /** Uniform acceleration field (default [0, 0]); each component 0, or between 1e-30 and 1e30 in size. */
   gravity?: Vec2 | undefined;
-  /** false = headless: no event log, no keyframes, no time travel (stateAt only at the horizon) */
+  /** false = headless: no event log, no keyframes, no time travel (stateAt only from the last
+   *  event or action to the horizon). Default true. */
   history?: boolean | undefined;
   /** false = actions given to fromScene/setActions are only scheduled (applied when a prolong passes
-   *  their time) and their `until`s are ignored; the caller drives with prolong/prolongSlice. */
+   *  their time) and their `until`s are ignored; the caller drives with prolong/prolongSlice.
+   *  Default true. */
   compute?: boolean | undefined;
 }
 
+/** What a prolong did. */
 export interface ProlongResult {
+  /** Collisions and stops computed by this call (actions not counted). */
   events: number;
+  /**
+   * Why it stopped: "time" = the target time was reached; "events" = `until.events` was reached;
+   * "idle" = nothing is left to happen (no event and no action to come; said
+   * rather than "time" when both hold).
+   */
   reason: "time" | "events" | "idle";
 }
