@@ -1,8 +1,9 @@
 /**
  * SceneError: invalid scene or action input. `path` names the offending field (`actions[3].r`),
  * `reason` says what is wrong, and the message is `${path}: ${reason}` (one line, for users).
- * It is a ChapgameError, so one `instanceof ChapgameError` catches every refused input, whether a
- * World, a Timeline or parseScene refused it.
+ * It is a ChapgameError, so one `instanceof ChapgameError` catches every refused edit, action,
+ * option or scene, whether a World, a Timeline or parseScene refused it. (Reads given a bad time or
+ * index, and realRoots's arguments, throw RangeError, as they did before this class existed.)
  */
 import { ChapgameError } from "../sim/errors.js";
 
