@@ -1,6 +1,7 @@
 /**
  * Errors the engine throws on bad input or on a state it cannot simulate.
- * Every error names the field (`path`) and the reason, and is thrown before anything changes.
+ * ChapgameError (bad input) names the field (`path`) and the reason, and is thrown before anything
+ * changes; SimulationError (a state the model cannot continue from) gives the time it was met.
  */
 
 /** Invalid input: `path` names the field (e.g. `bodies.a.r`), `reason` says what is wrong with it. */
@@ -17,7 +18,9 @@ export class ChapgameError extends Error {
 
 /**
  * A state the exact model cannot continue from (for example a disc resting on a line under gravity:
- * infinitely many zero-length bounces). The world is left as it was before the failing event.
+ * infinitely many zero-length bounces). The World's motions are left as they were before the failing
+ * event and its time is that event's `time`, so the states up to that instant can still be read; a
+ * Timeline keeps what it computed up to there.
  */
 export class SimulationError extends Error {
   readonly time: number;
