@@ -51,8 +51,14 @@ export function timeArg(method: string, name: string, t: number): number {
 
 /** stateAt's time: a number in [0, horizon] (-0 read as 0); else a RangeError. */
 export function stateTime(t: unknown, horizon: number): number {
-  if (typeof t !== "number" || !(t >= 0 && t <= horizon))
-    throw new RangeError(`stateAt: t must be a number in [0, ${horizon}], got ${show(t)}`);
+  if (typeof t !== "number" || !(t >= 0 && t <= horizon)) {
+    // Beyond the horizon is not computed yet, even when nothing more will happen (prolong said idle).
+    const hint =
+      typeof t === "number" && t > horizon && t < Number.POSITIVE_INFINITY
+        ? `: the history is computed up to ${horizon}, call prolongTo(${t}) first`
+        : "";
+    throw new RangeError(`stateAt: t must be a number in [0, ${horizon}], got ${show(t)}${hint}`);
+  }
   return t === 0 ? 0 : t;
 }
 

@@ -18,6 +18,10 @@ describe("Timeline as a debugger's back end", () => {
         `stateAt: t must be a number in [0, 20], got ${typeof t === "string" ? `"${t}"` : String(t)}`,
       );
     expect(() => tl.stateAt(20.000001)).toThrow(RangeError);
+    // Past the horizon, the message says how to get there (after an idle prolong it read like a dead end).
+    expect(() => tl.stateAt(25)).toThrow(
+      "stateAt: t must be a number in [0, 20], got 25: the history is computed up to 20, call prolongTo(25) first",
+    );
     expect(() => tl.stateAt(-1)).toThrow(RangeError);
     expect(Object.is(tl.stateAt(-0).time, 0)).toBe(true);
     expect(tl.stateAt(-0)).toEqual(tl.stateAt(0));
