@@ -17,6 +17,6 @@ export function expectMatchesReference(spec: SceneSpec, maxEvents: number): void
   expect(fast.map((e) => `${e.kind} ${e.a} ${e.b}`)).toEqual(ref.map((e) => `${e.kind} ${e.a} ${e.b}`));
   fast.forEach((e, i) => {
     const rt = (ref[i] as { time: number }).time;
-    expect(Math.abs(e.time - rt)).toBeLessThanOrEqual(1e-12 * Math.max(1, Math.abs(rt)));
+    expect(Math.abs(e.time - rt)).toBeLessThanOrEqual(1e-12 * Math.abs(rt));
   });
 }
