@@ -66,7 +66,7 @@ export function randomScene(seed: number, opts: RandomSceneOptions): SceneSpec {
   const clear = (x: number, y: number, r: number): boolean => {
     for (const b of spec.bodies) if ((b.x - x) ** 2 + (b.y - y) ** 2 < (b.r + r) ** 2) return false;
     for (const p of spec.points) if ((p.p[0] - x) ** 2 + (p.p[1] - y) ** 2 < r * r) return false;
-    for (const l of spec.lines) if (distance(l, x, y) < r) return false;
+    for (const l of spec.lines) if (distanceToLine(l, x, y) < r) return false;
     return true;
   };
   for (let i = 0, tries = 0; spec.bodies.length < n && tries < 50 * n; tries++) {
@@ -92,7 +92,8 @@ export function randomScene(seed: number, opts: RandomSceneOptions): SceneSpec {
   return spec;
 }
 
-function distance(l: SceneSpec["lines"][number], x: number, y: number): number {
+/** Distance from (x, y) to line l of any kind (a ray or segment: its nearest point, end points included). */
+export function distanceToLine(l: SceneSpec["lines"][number], x: number, y: number): number {
   const ex = l.p2[0] - l.p1[0];
   const ey = l.p2[1] - l.p1[1];
   let t = ((x - l.p1[0]) * ex + (y - l.p1[1]) * ey) / (ex * ex + ey * ey);

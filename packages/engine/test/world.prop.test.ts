@@ -7,7 +7,7 @@ import type { WorldEvent } from "../src/sim/types.js";
 import type { World } from "../src/sim/world.js";
 import { expectMatchesReference } from "./matchReference.js";
 import { outcome } from "./outcome.js";
-import { randomScene } from "./randomScene.js";
+import { distanceToLine, randomScene } from "./randomScene.js";
 import type { SceneSpec } from "./referenceWorld.js";
 import { shuffledOrder, worldFromSpec } from "./worldFromSpec.js";
 
@@ -37,27 +37,11 @@ function worstOverlap(world: World, spec: SceneSpec, t: number): number {
       const R = a.r + b.r;
       worst = Math.max(worst, (R - Math.hypot(a.x - b.x, a.y - b.y)) / R);
     }
-    for (const l of spec.lines) {
-      const ex = l.p2[0] - l.p1[0];
-      const ey = l.p2[1] - l.p1[1];
-      let u = ((a.x - l.p1[0]) * ex + (a.y - l.p1[1]) * ey) / (ex * ex + ey * ey);
-      if (l.kind !== "line") u = Math.max(0, l.kind === "segment" ? Math.min(1, u) : u);
-      const d = Math.hypot(a.x - (l.p1[0] + u * ex), a.y - (l.p1[1] + u * ey));
-      worst = Math.max(worst, (a.r - d) / a.r);
-    }
+    for (const l of spec.lines) worst = Math.max(worst, (a.r - distanceToLine(l, a.x, a.y)) / a.r);
     for (const p of spec.points)
       worst = Math.max(worst, (a.r - Math.hypot(a.x - p.p[0], a.y - p.p[1])) / a.r);
   }
   return worst;
-}
-
-/** Distance from (x, y) to line l of any kind (a ray or segment: its nearest point, end points included). */
-function distanceToLine(l: SceneSpec["lines"][number], x: number, y: number): number {
-  const ex = l.p2[0] - l.p1[0];
-  const ey = l.p2[1] - l.p1[1];
-  let u = ((x - l.p1[0]) * ex + (y - l.p1[1]) * ey) / (ex * ex + ey * ey);
-  if (l.kind !== "line") u = Math.max(0, l.kind === "segment" ? Math.min(1, u) : u);
-  return Math.hypot(x - (l.p1[0] + u * ex), y - (l.p1[1] + u * ey));
 }
 
 /**
