@@ -65,7 +65,7 @@ function sceneFor(flag, quick, state = "on") {
     return gas({ n, packing: 0.1, speed: 10, seed: 5, span: quick ? 2 : 4 });
   if (flag === LINE_FREE) {
     const s = gas({ n, packing: 0.1, speed: 10, seed: 5, span: quick ? 2 : 4 });
-    s.description += "; off: plus one infinite line 100 units below the box, never reached";
+    s.description = `${s.description.replace(/\.$/, "")}; off: plus one infinite line 100 units below the box, never reached.`;
     if (state === "off")
       s.walls.push({
         id: "far-line",

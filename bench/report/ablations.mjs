@@ -22,6 +22,8 @@ const SKIPS = {
 const WEAK_WHY = {
   restingSkip:
     "with it off a resting pair still never reaches a polynomial: zero relative velocity and acceleration, so the receding test rejects it first; it saves loads and a call per pair, which shows where many resting discs are re-predicted",
+  recedingReject:
+    "with it off a receding pair goes to the closed-form quadratic, which also finds no contact after a few products; the rejection saves those, which shows only where receding pairs dominate the pair tests",
   pathBounds:
     "it rejects pairs whose friction paths cannot meet, but the grid already limits tests to neighbouring cells; it pays where paths are short beside the cell size",
 };
