@@ -3,6 +3,7 @@ import { describe, expect, it } from "vitest";
 import type { SceneFile, Until } from "../engineTypes";
 import { crushScene } from "../testing/scenes";
 import { TimelineHost } from "./host";
+import { packFrame } from "./packFrame";
 import type { Frame, HostMessage, TimelineInfo } from "./protocol";
 import type { TimelineLike } from "./timelineLike";
 
@@ -68,6 +69,44 @@ describe("TimelineHost while computing", () => {
     const last = infos().at(-1)!;
     expect(last.computing).toBeNull();
     expect(last.horizon).toBe(40);
+  });
+});
+
+describe("TimelineHost on an edit in the past", () => {
+  it("answers at once, then recomputes the cut history to the old horizon in slices, with progress, and a compute-ahead request does not cut it short", () => {
+    const { host, tasks, sent, infos } = fakeHost();
+    host.handle({ id: 1, op: "compute", until: { time: 40 } });
+    while (tasks.length > 0) tasks.shift()!();
+    const reference = Timeline.fromScene(dilutedGas({ n: 60, packing: 0.3, seed: 5 }), { compute: false });
+    const edit = { time: 3, type: "giveVelocity" as const, id: "d0", v: [1, 2] as [number, number] };
+    reference.apply(edit);
+    reference.prolongTo(40);
+
+    host.handle({ id: 2, op: "apply", actions: [edit] });
+    expect(sent.at(-1)).toEqual({ type: "reply", id: 2, ok: true, value: null });
+    const after = infos().at(-1)!;
+    expect(after.horizon).toBe(3); // the edit itself was computed, not the 37 s after it
+    expect(after.computing).toMatchObject({ targetTime: 40, startHorizon: 3 });
+    // The editor asks to compute 10 s ahead after each edit: the recomputation to 40 s covers it.
+    host.handle({ id: 3, op: "compute", until: { time: 10 } });
+    expect(infos().at(-1)!.computing).toMatchObject({ targetTime: 40 });
+
+    let rounds = 0;
+    const horizons: number[] = [];
+    while (tasks.length > 0) {
+      tasks.shift()!();
+      rounds++;
+      horizons.push(infos().at(-1)!.horizon);
+    }
+    expect(rounds).toBeGreaterThan(5); // in slices, reporting progress between them
+    expect(new Set(horizons).size).toBeGreaterThan(2);
+    const last = infos().at(-1)!;
+    expect(last.computing).toBeNull();
+    expect(last.horizon).toBe(40);
+    expect(last.eventCount).toBe(reference.eventCount);
+    host.handle({ id: 4, op: "frame", t: 40, window: 0 });
+    const frame = (sent.at(-1) as { value: Frame }).value;
+    expect(Array.from(frame.data)).toEqual(Array.from(packFrame(reference.stateAt(40), 0).data));
   });
 });
 

@@ -14,6 +14,16 @@ export function show(v: unknown): string {
   return typeof v === "string" ? JSON.stringify(v) : String(v);
 }
 
+/** Validates apply's options; returns keepHorizon (default true). SceneError naming `options.<field>`. */
+export function checkApplyOptions(raw: unknown): boolean {
+  if (!isObject(raw)) throw new SceneError("options", "must be an object with an optional keepHorizon");
+  onlyKeys(raw, ["keepHorizon"], "options");
+  const k = raw.keepHorizon;
+  if (k !== undefined && typeof k !== "boolean")
+    throw new SceneError("options.keepHorizon", "must be true or false");
+  return k !== false;
+}
+
 /** Validates an until (a prolong's argument): SceneError naming `path`'s field. */
 export function checkUntil(raw: unknown, path: string): Until {
   if (!isObject(raw)) throw new SceneError(path, "must be an object with optional time and events");

@@ -1,6 +1,7 @@
 /** Barrel of src/timeline: the public exports of this folder. */
 export { Timeline } from "./timeline.js";
 export type {
+  ApplyOptions,
   LogEvent,
   LogKind,
   ProlongResult,

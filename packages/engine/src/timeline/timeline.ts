@@ -18,7 +18,7 @@ import { applyOrder, parseScene } from "../scene/parse.js";
 import type { Action, SceneFile, Until } from "../scene/types.js";
 import { SimulationError } from "../sim/errors.js";
 import { copyAction, freezeAction, restartKeyframe, sameUntil } from "./actionData.js";
-import { checkActionList, checkBudget, checkUntil } from "./args.js";
+import { checkActionList, checkApplyOptions, checkBudget, checkUntil } from "./args.js";
 import { restoreKeyframe } from "./checkpoint.js";
 import { TimelineCore } from "./core.js";
 import { type Goal, goalFrom, reopenGoals } from "./goals.js";
@@ -27,7 +27,7 @@ import { notifyAll } from "./listeners.js";
 import { type CheckedOptions, checkOptions, checkSceneOptions } from "./options.js";
 import { TimelineReader } from "./reader.js";
 import { K_ACTION } from "./records.js";
-import type { ProlongResult, TimelineOptions } from "./types.js";
+import type { ApplyOptions, ProlongResult, TimelineOptions } from "./types.js";
 import { saveCore } from "./undo.js";
 
 const INF = Number.POSITIVE_INFINITY;
@@ -141,8 +141,9 @@ export class Timeline extends TimelineReader {
    *  the horizon; then nothing changes. When it would make a later action invalid, the error names
    *  that one as `actions[i]` (its index in `actions`) and says so. Without history, an action before
    *  the horizon is refused (`action.time`). */
-  apply(action: Action): void {
+  apply(action: Action, options: ApplyOptions = {}): void {
     const a = freezeAction(checkAction(action, "action"));
+    const keepHorizon = checkApplyOptions(options);
     const c = this.core;
     let insertAt = c.acts.length;
     while (insertAt > 0 && (c.acts[insertAt - 1] as Action).time > a.time) insertAt--;
@@ -170,7 +171,10 @@ export class Timeline extends TimelineReader {
       c.pathOf = (i) => (i === insertAt ? "action" : `actions[${i > insertAt ? i - 1 : i}]`);
       if (!forward) {
         reopenGoals(c);
-        c.goals.push({ tLimit: oldHorizon, eLimit: INF });
+        // keepHorizon false: only as far as the last action (each is still validated), not the old horizon.
+        const lastAction = (c.acts[c.acts.length - 1] as Action).time;
+        const tLimit = keepHorizon ? oldHorizon : Math.max(a.time, Math.min(oldHorizon, lastAction));
+        c.goals.push({ tLimit, eLimit: INF });
       }
       c.drive(INF, { tLimit: a.time, eLimit: INF });
       if (!c.eager && a.until) c.goals.push(goalFrom(c, a.until, a.time));

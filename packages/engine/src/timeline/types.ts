@@ -75,6 +75,18 @@ export interface TimelineOptions {
   compute?: boolean | undefined;
 }
 
+/** Options of `Timeline.apply`. */
+export interface ApplyOptions {
+  /**
+   * What an action before the horizon recomputes. true (the default): the whole history up to the
+   * old horizon, in this call. false: only up to the last action's time (every action is still
+   * validated, so a refusal comes from this call as before), and the horizon moves back there; the
+   * rest is computed by a later prolong, prolongTo or prolongSlice (a UI's sliced computation with
+   * progress and cancel), which gives the same history bit for bit.
+   */
+  keepHorizon?: boolean | undefined;
+}
+
 /** What a prolong did. */
 export interface ProlongResult {
   /** Collisions and stops computed by this call (actions not counted). */
