@@ -140,4 +140,19 @@ describe("EventLog", () => {
     expect(selectionOf({ ...base, type: "bodyPoint", ids: ["a", "p"] })).toEqual({ kind: "body", id: "a" });
     expect(selectionOf({ ...base, type: "stop", ids: ["a"] })).toEqual({ kind: "body", id: "a" });
   });
+
+  it("filtered by a body, the header counts the body's entries shown, then the log's total", async () => {
+    const h = testEditor();
+    await h.editor.loadScene(newtonsCradle(), { undoable: false });
+    await settled(h.client);
+    act(() => h.editor.ui.setState({ t: 0.5, eventFilter: "c3" }));
+    const log = renderLog(h.editor);
+    const total = h.client.getSnapshot().eventCount;
+    expect(total).toBe(11); // 6 actions at t = 0, 5 collisions at t = 1
+    // c3: its add body at 0 and its two collisions at 1
+    await waitFor(() => expect(within(log).getAllByText(/c3/)).toHaveLength(3));
+    expect(screen.getByRole("heading", { name: /Event log/ }).textContent).toBe(
+      `Event log (3 shown for c3 · ${total} in all)`,
+    );
+  });
 });

@@ -68,6 +68,14 @@ export function selectionOf(e: LogEvent): Selection {
   return kind === null ? null : { kind, id };
 }
 
+/**
+ * The header's count: the log's number of events; filtered, how many of the body's events are shown
+ * (those around the current time) and the log's number ("3 shown for c3 · 11 in all").
+ */
+export function logCount(total: number, shown: number, body: string | null): string {
+  return body === null ? String(total) : `${shown} shown for ${body} · ${total} in all`;
+}
+
 export function EventLog() {
   const editor = useEditor();
   const t = useSlowTime();
@@ -100,7 +108,7 @@ export function EventLog() {
   return (
     <section className="panel" aria-labelledby="log-title">
       <h2 id="log-title">
-        Event log <small>({page?.total ?? 0})</small>
+        Event log <small>({logCount(page?.total ?? 0, events.length, body)})</small>
       </h2>
       <div className="row">
         <input
