@@ -10,6 +10,9 @@
 import { nextFreeId } from "./doc/ids";
 import { EditorTime } from "./editorTime";
 import type { Action, SceneFile, Vec2 } from "./engineTypes";
+import type { TimelineClient } from "./remote/client";
+import { dropStaleSelection } from "./store/selectionGuard";
+import type { UiStore } from "./store/uiStore";
 
 /** Velocity given by a cue strike, per world unit of offset between the click and the disc centre (1/s). */
 export const STRIKE_RATE = 4;
@@ -23,6 +26,12 @@ export const EMPTY_SCENE: SceneFile = {
 };
 
 export class Editor extends EditorTime {
+  constructor(client: TimelineClient, ui: UiStore) {
+    super(client, ui);
+    // A selection whose object an undo, a load or a rewrite removed is dropped.
+    dropStaleSelection(ui, client);
+  }
+
   /** Edits carry no `until`: the host computes ahead in slices (Calculation settings) after them. */
   private stamp<A extends Action>(a: A): A {
     return a;

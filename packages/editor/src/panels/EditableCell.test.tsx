@@ -52,4 +52,35 @@ describe("EditableCell", () => {
     });
     expect(onCommit).not.toHaveBeenCalled();
   });
+
+  it("opened while the value changes (playing), follows it and commits nothing until typed in", async () => {
+    // A cell opened during playback: the table refreshes to the paused time after it opened.
+    const onCommit = vi.fn(async () => null);
+    const { rerender } = render(<EditableCell label="a x" value="1" onCommit={onCommit} />);
+    let input = open("a x");
+    rerender(<EditableCell label="a x" value="1.5" onCommit={onCommit} />);
+    expect(input.value).toBe("1.5");
+    await act(async () => {
+      fireEvent.blur(input);
+    });
+    expect(onCommit).not.toHaveBeenCalled();
+    expect(screen.getByRole("button", { name: "a x" }).textContent).toBe("1.5");
+
+    input = open("a x");
+    rerender(<EditableCell label="a x" value="2" onCommit={onCommit} />);
+    await act(async () => {
+      fireEvent.keyDown(input, { key: "Enter" });
+    });
+    expect(onCommit).not.toHaveBeenCalled();
+
+    // Typed text is kept while the value moves on, and committed.
+    input = open("a x");
+    fireEvent.change(input, { target: { value: "7" } });
+    rerender(<EditableCell label="a x" value="2.5" onCommit={onCommit} />);
+    expect(input.value).toBe("7");
+    await act(async () => {
+      fireEvent.blur(input);
+    });
+    expect(onCommit).toHaveBeenCalledWith("7");
+  });
 });

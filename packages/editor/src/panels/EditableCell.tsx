@@ -1,7 +1,9 @@
 /**
  * An editable table cell. At rest it is a button showing the live value (cheap: tables of hundreds
  * of cells stay light to lay out and paint while values change); clicking or focusing it opens an
- * input holding the user's draft. Enter or leaving the input commits a changed draft through
+ * input. Until the user types, the input follows the live value (so a cell opened while playing shows
+ * the values of the time playback paused at once the table refreshes), and Enter or leaving it
+ * commits nothing. Once the user has typed, Enter or leaving the input commits a changed draft through
  * `onCommit`, which resolves to an error message (the value is refused, the message shown in place,
  * the draft kept for correction) or null (accepted). Escape closes without committing.
  * Both the button and the input carry `label` as their accessible name.
@@ -19,31 +21,35 @@ export interface EditableCellProps {
 }
 
 export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellProps) {
-  const [draft, setDraft] = useState<string | null>(null);
+  // null: at rest (a button); open: `typed` is null until the user types (the input then shows the
+  // live value), then the text typed.
+  const [edit, setEdit] = useState<{ typed: string | null } | null>(null);
   const [error, setError] = useState<string | null>(null);
   const errorId = useId();
   const editor = useContext(EditorContext);
   const open = () => {
     if (editor?.ui.getState().playing) editor.ui.setState({ playing: false });
-    setDraft(value);
+    setEdit({ typed: null });
   };
 
   const close = () => {
-    setDraft(null);
+    setEdit(null);
     setError(null);
   };
 
+  const typed = edit?.typed ?? null;
+
   const commit = async () => {
-    if (draft === null || draft === value) {
+    if (typed === null || typed === value) {
       close();
       return;
     }
-    const err = await onCommit(draft.trim());
+    const err = await onCommit(typed.trim());
     if (err === null) close();
     else setError(err);
   };
 
-  if (draft === null)
+  if (edit === null)
     return (
       <button type="button" className="cell-view" aria-label={label} onClick={open} onFocus={open}>
         {value}
@@ -59,8 +65,8 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
         size={size}
         // biome-ignore lint/a11y/noAutofocus: the input replaces the focused cell button
         autoFocus
-        value={draft}
-        onChange={(e) => setDraft(e.target.value)}
+        value={typed ?? value}
+        onChange={(e) => setEdit({ typed: e.target.value })}
         onBlur={() => {
           if (error === null) void commit();
         }}

@@ -3,13 +3,14 @@
 // be read and answered, and the log must still follow the scene (it once showed the previous
 // scene's events for the whole of a long computation: every report discarded the pending page).
 import { newtonsCradle } from "@chapgame/engine";
-import { act, cleanup, render, screen, waitFor, within } from "@testing-library/react";
+import { act, cleanup, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
 import type { Editor } from "../editor";
+import type { LogEvent } from "../engineTypes";
 import type { RequestMessage } from "../remote/protocol";
 import { settled, testEditor } from "../testing/harness";
-import { EventLog, kindLabel } from "./EventLog";
+import { EventLog, kindLabel, selectionOf } from "./EventLog";
 
 afterEach(cleanup);
 
@@ -92,5 +93,66 @@ describe("EventLog", () => {
     expect(kindLabel({ ...base, type: "bodyLine" })).toBe("body–line");
     expect(kindLabel({ ...base, type: "action", action: "setGlobal" })).toBe("action: set global");
     expect(kindLabel({ ...base, type: "action", action: "removePoint" })).toBe("action: remove point");
+  });
+
+  it("clicking an entry selects the object of its kind: a line's action selects the line", async () => {
+    // A body named like the line: selecting "body w" for the line's entry made Delete delete it.
+    const h = testEditor();
+    await h.editor.loadScene(
+      {
+        format: "chapgame",
+        version: 1,
+        g: 9.81,
+        gravity: [0, 0],
+        actions: [
+          { time: 0, type: "addBody", id: "w", x: 0, y: 0, r: 1, m: 1, v: [4, 0] },
+          { time: 0, type: "addLine", id: "w", p1: [10, -5], p2: [10, 5], kind: "segment" },
+          { time: 0, type: "addPoint", id: "q", p: [-10, 0] },
+        ],
+      },
+      { undoable: false },
+    );
+    await settled(h.client);
+    const log = renderLog(h.editor);
+    const row = async (text: string) => (await within(log).findByText(text)).closest("tr")!;
+    fireEvent.click(await row("action: add line"));
+    expect(h.editor.ui.getState().selection).toEqual({ kind: "line", id: "w" });
+    fireEvent.click(await row("action: add point"));
+    expect(h.editor.ui.getState().selection).toEqual({ kind: "point", id: "q" });
+    fireEvent.click(await row("action: add body"));
+    expect(h.editor.ui.getState().selection).toEqual({ kind: "body", id: "w" });
+    fireEvent.click(await row("body–line"));
+    expect(h.editor.ui.getState().selection).toEqual({ kind: "body", id: "w" });
+    expect(h.editor.ui.getState().highlight).toEqual(["w", "w"]);
+  });
+
+  it("selectionOf: an action's object by the action's type, a collision's body, nothing for setGlobal", () => {
+    const base = { time: 1, point: null, normal: null, impulse: null };
+    const action = (action: NonNullable<LogEvent["action"]>, ids = ["x"]) =>
+      selectionOf({ ...base, type: "action", action, ids });
+    expect(action("updateLine")).toEqual({ kind: "line", id: "x" });
+    expect(action("removeLine")).toEqual({ kind: "line", id: "x" });
+    expect(action("updatePoint")).toEqual({ kind: "point", id: "x" });
+    expect(action("removePoint")).toEqual({ kind: "point", id: "x" });
+    expect(action("giveVelocity")).toEqual({ kind: "body", id: "x" });
+    expect(action("removeBody")).toEqual({ kind: "body", id: "x" });
+    expect(action("setGlobal", [])).toBeNull();
+    expect(selectionOf({ ...base, type: "bodyPoint", ids: ["a", "p"] })).toEqual({ kind: "body", id: "a" });
+    expect(selectionOf({ ...base, type: "stop", ids: ["a"] })).toEqual({ kind: "body", id: "a" });
+  });
+
+  it("filtered by a body, the header counts the body's entries shown, then the log's total", async () => {
+    const h = testEditor();
+    await h.editor.loadScene(newtonsCradle(), { undoable: false });
+    await settled(h.client);
+    act(() => h.editor.ui.setState({ t: 0.5, eventFilter: "c3" }));
+    const log = renderLog(h.editor);
+    const total = h.client.getSnapshot().eventCount;
+    expect(total).toBe(11); // 6 actions at t = 0, 5 collisions at t = 1
+    // c3: its add body at 0 and its two collisions at 1
+    await waitFor(() => expect(within(log).getAllByText(/c3/)).toHaveLength(3));
+    expect(screen.getByRole("heading", { name: /Event log/ }).textContent).toBe(
+      `Event log (3 shown for c3 · ${total} in all)`,
+    );
   });
 });

@@ -1,13 +1,15 @@
 /**
  * The Event log: the events around the current time (time, kind, participants; an action entry says
  * what the action did). Clicking an entry
- * jumps there, selects and highlights its participants; a body filter keeps only that body's events.
+ * jumps there, highlights its participants and selects one (selectionOf); a body filter keeps only
+ * that body's events.
  * Only the rows in view are rendered (useRowWindow); the view follows the current time (useFollowTime).
  */
 import { useRef } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { LogEvent } from "../engineTypes";
 import type { EventPage } from "../remote/protocol";
+import type { Selection } from "../store/uiStore";
 import { formatNumber } from "./EditableCell";
 import { useFollowTime } from "./useFollowTime";
 import { useRefreshed } from "./useRefreshed";
@@ -35,6 +37,43 @@ export function kindLabel(e: LogEvent): string {
   const kind = KIND_NAMES[e.type] ?? e.type;
   if (e.action === undefined) return kind;
   return `${kind}: ${e.action.replace(/[A-Z]/g, (c) => ` ${c.toLowerCase()}`)}`;
+}
+
+/** The kind of object each action type acts on (setGlobal: none). */
+const ACTION_KIND: Record<NonNullable<LogEvent["action"]>, "body" | "line" | "point" | null> = {
+  addBody: "body",
+  updateBody: "body",
+  removeBody: "body",
+  giveVelocity: "body",
+  addLine: "line",
+  updateLine: "line",
+  removeLine: "line",
+  addPoint: "point",
+  updatePoint: "point",
+  removePoint: "point",
+  setGlobal: null,
+};
+
+/**
+ * What clicking an entry selects: an action's object (a body, line or point, by the action's type;
+ * nothing for setGlobal); for a collision or a stop, its body (the first participant: ids are
+ * [body, body], [body, line], [body, point] or [body]), never the obstacle, which would be taken
+ * for a body of the same id.
+ */
+export function selectionOf(e: LogEvent): Selection {
+  const id = e.ids[0];
+  if (id === undefined) return null;
+  if (e.type !== "action") return { kind: "body", id };
+  const kind = e.action === undefined ? null : ACTION_KIND[e.action];
+  return kind === null ? null : { kind, id };
+}
+
+/**
+ * The header's count: the log's number of events; filtered, how many of the body's events are shown
+ * (those around the current time) and the log's number ("3 shown for c3 · 11 in all").
+ */
+export function logCount(total: number, shown: number, body: string | null): string {
+  return body === null ? String(total) : `${shown} shown for ${body} · ${total} in all`;
 }
 
 export function EventLog() {
@@ -69,7 +108,7 @@ export function EventLog() {
   return (
     <section className="panel" aria-labelledby="log-title">
       <h2 id="log-title">
-        Event log <small>({page?.total ?? 0})</small>
+        Event log <small>({logCount(page?.total ?? 0, events.length, body)})</small>
       </h2>
       <div className="row">
         <input
@@ -107,7 +146,7 @@ export function EventLog() {
                       t: e.time,
                       playing: false,
                       highlight: e.ids,
-                      selection: e.ids[0] ? { kind: "body", id: e.ids[0] } : null,
+                      selection: selectionOf(e),
                     })
                   }
                   onKeyDown={(ev) => {

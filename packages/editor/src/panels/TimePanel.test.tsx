@@ -95,6 +95,33 @@ describe("TimePanel", () => {
     expect(editor.client.getSnapshot().horizon).toBeGreaterThanOrEqual(25);
   });
 
+  it("clicking into the time field while playing and away again does not move the time back", async () => {
+    const { editor, field } = await renderPanel();
+    act(() => editor.ui.setState({ playing: true, t: 0.5 }));
+    await waitFor(() => expect(field.value).toBe("0.5"));
+    fireEvent.focus(field);
+    act(() => editor.ui.setState({ t: 0.9 })); // playback goes on
+    await act(async () => {
+      fireEvent.blur(field);
+    });
+    expect(editor.ui.getState().t).toBe(0.9);
+    await waitFor(() => expect(field.value).toBe("0.9"));
+    fireEvent.focus(field);
+    act(() => editor.ui.setState({ t: 1.3 }));
+    await act(async () => {
+      fireEvent.keyDown(field, { key: "Enter" });
+    });
+    expect(editor.ui.getState().t).toBe(1.3);
+    // A typed time is gone to.
+    fireEvent.change(field, { target: { value: "2" } });
+    act(() => editor.ui.setState({ t: 1.6 }));
+    expect(field.value).toBe("2");
+    await act(async () => {
+      fireEvent.blur(field);
+    });
+    await waitFor(() => expect(editor.ui.getState().t).toBe(2));
+  });
+
   it("stepping past the last event says there is none instead of doing nothing", async () => {
     const { editor } = await renderPanel();
     act(() => editor.setTime(5)); // the cradle's last collisions are at t = 1

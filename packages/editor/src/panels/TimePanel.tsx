@@ -2,7 +2,9 @@
  * Time: the `Time` scrubber over [0, horizon] with event ticks, a time field (a time past the
  * horizon is computed first), −1 / 0 / +1 s and stepping to the previous / next event. Scrubbing is not an edit (no undo step).
  * While playing, this panel re-renders about 10 times a second (useShownTime); the slider's thumb
- * follows every frame by itself (TimeSlider).
+ * follows every frame by itself (TimeSlider). The time field shows the current time until the user
+ * types in it; only typed text is gone to (Enter or leaving the field), so clicking into the field
+ * while playing and away again leaves the time alone.
  */
 import { useMemo, useState } from "react";
 import { useEditor, useInfoValue } from "../EditorContext";
@@ -30,6 +32,7 @@ export function TimePanel() {
     NO_TICKS,
     TICKS_EVERY_MS,
   );
+  /** The text typed in the time field (null: nothing typed; the field shows the current time). */
   const [draft, setDraft] = useState<string | null>(null);
 
   const tickLines = useMemo(
@@ -66,7 +69,6 @@ export function TimePanel() {
             aria-label="Time (s)"
             size={9}
             value={draft ?? formatNumber(t)}
-            onFocus={() => setDraft(formatNumber(editor.ui.getState().t))}
             onChange={(e) => setDraft(e.target.value)}
             onBlur={commitDraft}
             onKeyDown={(e) => {
