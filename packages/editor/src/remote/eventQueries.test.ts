@@ -33,6 +33,16 @@ describe("event queries", () => {
     expect(page.events.every((e) => e.ids.includes("c3"))).toBe(true);
   });
 
+  it("filtered at t = 0, a page holds the body's events at time 0 (its add body)", () => {
+    const tl = cradle();
+    const page = eventPage(tl, 0, 10, 10, "c3");
+    expect(page.events.map((e) => [e.time, e.type])).toEqual([
+      [0, "action"],
+      [1, "bodyBody"],
+      [1, "bodyBody"],
+    ]);
+  });
+
   it("ticks mark the first event of every bin that has one", () => {
     const tl = Timeline.fromScene(originalDemo(), { compute: false });
     tl.prolong({ time: 10 });

@@ -72,7 +72,8 @@ export function eventPage(tl: Log, t: number, before: number, after: number, bod
   let hi = t;
   let span = density * 1000;
   let scanned = 0;
-  while (back.length < before && hi > 0 && scanned < FILTER_SCAN_LIMIT) {
+  // At t = 0 the one window [0, 0] is still read (the actions at time 0).
+  while (back.length < before && (hi > 0 || hi === t) && scanned < FILTER_SCAN_LIMIT) {
     const lo = Math.max(0, hi - span);
     const win = tl.eventsBetween(lo, hi);
     scanned += win.length;
