@@ -78,6 +78,25 @@ describe("keeping work", () => {
     await poll(() => cell("lonely x").count()).toBe(0);
   });
 
+  it("after Share link a reload keeps later edits, with or without a clipboard", async () => {
+    const first = (await bodies().getByRole("button", { name: / m$/ }).first().getAttribute("aria-label"))!;
+    for (const [i, clipboard] of [true, false].entries()) {
+      if (!clipboard)
+        await page.evaluate(() => {
+          navigator.clipboard.writeText = () => Promise.reject(new Error("no clipboard"));
+        });
+      await page.getByRole("button", { name: "Share link" }).click();
+      await poll(message).toMatch(clipboard ? /^Link copied/ : /address bar/);
+      const m = String(11 + i);
+      await editCell(first, m);
+      await poll(() => cellText(first)).toBe(m);
+      await poll(() => new URL(page.url()).hash).toBe("");
+      await page.reload();
+      await page.getByRole("slider", { name: "Time" }).waitFor();
+      await poll(() => cellText(first)).toBe(m);
+    }
+  });
+
   it("a broken shared link says so in plain words, leaves the address bar, and keeps the scene", async () => {
     const before = await bodies().getByRole("row").count();
     await open(`${s.url}#scene=abc%25%25`);

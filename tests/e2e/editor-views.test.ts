@@ -165,16 +165,19 @@ describe("editor views", () => {
     await page.getByRole("button", { name: "Pause" }).click();
   });
 
-  it("small windows keep the canvas, the Time slider and every time and speed control usable", async () => {
+  it("small windows keep the canvas, the Time slider and every time and speed control usable; nothing overflows sideways", async () => {
     await loadPreset("Billiards break", "ball15");
     try {
       for (const [width, height] of [
         [1024, 700],
         [800, 600],
+        [390, 844],
       ] as const) {
         await page.setViewportSize({ width, height });
         // the scene is fitted again to the smaller canvas (the view was never moved by hand)
         await poll(() => bodiesOutsideCanvas()).toBe(0);
+        // no sideways scrolling (at 390 px the Speed panel was once 4 px too wide)
+        expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(width);
         const canvas = (await page.getByTestId("scene-canvas").boundingBox())!;
         expect(canvas.width).toBeGreaterThanOrEqual(300);
         expect(canvas.height).toBeGreaterThanOrEqual(200);
@@ -194,6 +197,12 @@ describe("editor views", () => {
           });
           expect(onTop).toBe(true);
         }
+        // nor with the longest header (Galperin's digits field shown next to the presets list)
+        const presets = page.getByRole("combobox", { name: "Preset" });
+        const chosen = await presets.inputValue();
+        await presets.selectOption("galperin");
+        expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(width);
+        await presets.selectOption(chosen);
         await page.evaluate(() => window.scrollTo(0, 0));
         await screenshot(page, `13-window-${width}x${height}`);
       }

@@ -19,6 +19,10 @@ const write = (id, title, scene) => {
 };
 for (const p of presets) write(p.id, p.title, p.make());
 for (const digits of [1, 2, 3, 5, 6])
-  write(`galperin${digits}`, `Galperin's π billiard (${digits} digits)`, galperin(digits));
+  write(
+    `galperin${digits}`,
+    `Galperin's π billiard (${digits} ${digits === 1 ? "digit" : "digits"})`,
+    galperin(digits),
+  );
 writeFileSync(join(out, "index.json"), `${JSON.stringify(index, null, 2)}\n`);
 console.log(`wrote ${index.length} scene files to ${out}`);

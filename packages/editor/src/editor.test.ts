@@ -50,6 +50,23 @@ describe("Editor over the worker protocol", () => {
     expect(await h.client.nextEvent(0)).toBe(0.5);
   });
 
+  it("an undo asked while an edit is still being applied waits for it and undoes it (redo brings it back)", async () => {
+    const h = await cradle();
+    h.editor.ui.setState({ t: 0 });
+    const before = h.client.getSnapshot().doc!;
+    const edit = h.editor.updateBody("striker", { v: [8, 0] });
+    const undone = h.editor.undo();
+    expect(await edit).toBeNull();
+    await undone;
+    await settled(h.client);
+    expect(h.client.getSnapshot().doc).toEqual(before);
+    expect(h.editor.history.getState()).toMatchObject({ past: [], future: [expect.anything()] });
+    await h.editor.redo();
+    await settled(h.client);
+    expect(await h.client.nextEvent(0)).toBe(0.5);
+    expect(h.editor.history.getState()).toMatchObject({ past: [before], future: [] });
+  });
+
   it("a refused edit returns the engine's message and changes nothing", async () => {
     const h = await cradle();
     const before = h.client.getSnapshot().doc;

@@ -5,7 +5,8 @@
  * speed and selection are never recorded). It loads scenes, applies edits as undo steps, undoes and
  * redoes them, computes ahead after each (Calculation settings) and restarts a host that stopped
  * answering. Methods that can fail resolve to the engine's message (null on success) and show it in
- * the UI.
+ * the UI. Changes of the scene (loads, edits, undo, redo) run strictly one after another: an undo
+ * asked while an edit is still being applied waits for it, then undoes it.
  */
 
 import { EMPTY_HISTORY, type History, record, redo, undo } from "./doc/history";
@@ -20,6 +21,8 @@ export class EditorSession {
   readonly history: Store<History> = createStore<History>(EMPTY_HISTORY);
   /** Makes a fresh host (a new Web Worker) for restartEngine; null where none can be made. */
   portFactory: (() => Port) | null = null;
+  /** The tail of the queue of scene changes (see serial). */
+  private changes: Promise<unknown> = Promise.resolve();
 
   constructor(
     readonly client: TimelineClient,
@@ -41,6 +44,17 @@ export class EditorSession {
 
   get doc(): SceneFile {
     return this.client.getSnapshot().doc!;
+  }
+
+  /**
+   * Runs `change` once every scene change queued before it has been applied and recorded, so each
+   * one reads the scene and the history its predecessors left. Only the change itself is queued:
+   * the computing ahead that follows it is not waited for.
+   */
+  protected serial<T>(change: () => Promise<T>): Promise<T> {
+    const run = this.changes.then(change);
+    this.changes = run.catch(() => undefined);
+    return run;
   }
 
   protected fail(e: unknown): string {
@@ -101,6 +115,14 @@ export class EditorSession {
     scene: SceneFile,
     options: { undoable?: boolean; fit?: boolean; keepTime?: boolean } = {},
   ): Promise<string | null> {
+    return this.afterLoad(await this.serial(() => this.loadNow(scene, options)), options);
+  }
+
+  /** The queued part of loadScene: the load and its undo step; the old horizon, or the message. */
+  private async loadNow(
+    scene: SceneFile,
+    options: { undoable?: boolean; fit?: boolean; keepTime?: boolean },
+  ): Promise<number | string> {
     const before = this.doc;
     const oldHorizon = this.client.getSnapshot().horizon;
     try {
@@ -117,21 +139,31 @@ export class EditorSession {
       message: null,
       fitRequest: options.fit === false ? s.fitRequest : s.fitRequest + 1,
     }));
-    if (options.keepTime) await this.recompute(oldHorizon);
+    return oldHorizon;
+  }
+
+  /** The rest of loadScene, not queued: computing ahead. */
+  private async afterLoad(loaded: number | string, options: { keepTime?: boolean }): Promise<string | null> {
+    if (typeof loaded === "string") return loaded;
+    if (options.keepTime) await this.recompute(loaded);
     else await this.computeAhead();
     return null;
   }
 
   /** Applies edits as one undo step; on error nothing changes and the message is returned. */
   async edit(actions: Action[]): Promise<string | null> {
-    const before = this.doc;
-    try {
-      await this.client.apply(actions);
-    } catch (e) {
-      return this.fail(e);
-    }
-    this.history.setState(record(this.history.getState(), before));
-    this.ui.setState({ message: null });
+    const err = await this.serial(async () => {
+      const before = this.doc;
+      try {
+        await this.client.apply(actions);
+      } catch (e) {
+        return this.fail(e);
+      }
+      this.history.setState(record(this.history.getState(), before));
+      this.ui.setState({ message: null });
+      return null;
+    });
+    if (err !== null) return err;
     await this.ensureAhead();
     return null;
   }
@@ -143,40 +175,48 @@ export class EditorSession {
 
   /** Renames a body, line or point in the whole action list (one undo step). */
   async rename(kind: ObjectKind, from: string, to: string): Promise<string | null> {
-    let scene: SceneFile;
-    try {
-      scene = renameObject(this.doc, kind, from, to);
-    } catch (e) {
-      return this.fail(e);
-    }
-    const err = await this.rewrite(scene);
-    if (err === null) this.ui.setState({ selection: { kind, id: to } });
-    return err;
+    const options = { fit: false, keepTime: true };
+    const loaded = await this.serial(async () => {
+      let scene: SceneFile;
+      try {
+        scene = renameObject(this.doc, kind, from, to);
+      } catch (e) {
+        return this.fail(e);
+      }
+      return this.loadNow(scene, options);
+    });
+    if (typeof loaded !== "string") this.ui.setState({ selection: { kind, id: to } });
+    return this.afterLoad(loaded, options);
   }
 
   async undo(): Promise<void> {
-    const u = undo(this.history.getState(), this.doc);
-    if (!u) return;
-    await this.restore(u.scene, u.history);
+    const oldHorizon = await this.serial(() => {
+      const u = undo(this.history.getState(), this.doc);
+      return u ? this.restore(u.scene, u.history) : Promise.resolve(null);
+    });
+    if (oldHorizon !== null) await this.recompute(oldHorizon);
   }
 
   async redo(): Promise<void> {
-    const r = redo(this.history.getState(), this.doc);
-    if (!r) return;
-    await this.restore(r.scene, r.history);
+    const oldHorizon = await this.serial(() => {
+      const r = redo(this.history.getState(), this.doc);
+      return r ? this.restore(r.scene, r.history) : Promise.resolve(null);
+    });
+    if (oldHorizon !== null) await this.recompute(oldHorizon);
   }
 
-  private async restore(scene: SceneFile, history: History): Promise<void> {
+  /** The queued part of undo and redo: the old horizon, null if the scene could not be loaded. */
+  private async restore(scene: SceneFile, history: History): Promise<number | null> {
     const oldHorizon = this.client.getSnapshot().horizon;
     try {
       await this.client.load(scene);
     } catch (e) {
       this.fail(e);
-      return;
+      return null;
     }
     this.history.setState(history);
     this.ui.setState({ message: null });
-    await this.recompute(oldHorizon);
+    return oldHorizon;
   }
 
   /**
@@ -185,6 +225,8 @@ export class EditorSession {
    */
   async restartEngine(): Promise<void> {
     if (!this.portFactory) return;
+    // Not queued behind pending changes: they may be waiting for the host that stopped answering
+    // (replacePort rejects them).
     const doc = this.doc;
     const oldHorizon = this.client.getSnapshot().horizon;
     this.client.replacePort(this.portFactory());

@@ -75,6 +75,19 @@ describe("keyboard shortcuts", () => {
     off();
   });
 
+  it("on a button: space and Enter press it (no play/pause); the other shortcuts work", () => {
+    const { editor, calls } = recorder();
+    const off = bindKeyboard(editor);
+    for (const button of [control("button"), control("input", "button")]) {
+      expect(press(button, " ")).toBe(true);
+      expect(press(button, "Enter")).toBe(true);
+      expect(press(button, "ArrowRight")).toBe(false);
+      expect(press(button, "z", { ctrlKey: true })).toBe(false);
+    }
+    expect(calls).toEqual(["step 1", "undo", "step 1", "undo"]);
+    off();
+  });
+
   it("typing in a text field or a text area runs no shortcut", () => {
     const { editor, calls } = recorder();
     const off = bindKeyboard(editor);

@@ -2,8 +2,9 @@
  * Keyboard shortcuts: space play/pause, ←/→ previous/next event, Ctrl+Z undo, Ctrl+Shift+Z (or
  * Ctrl+Y) redo, Delete/Backspace delete the selection. Ignored while typing in a field; on other
  * controls (the Time slider, a checkbox, a list) only the keys the control uses itself are left to
- * it (the slider's arrows, a checkbox's space, a list's keys but Ctrl+Z/Y), so Ctrl+Z and space
- * still work after scrubbing or picking a line kind.
+ * it (the slider's arrows, a checkbox's or a button's space and Enter, a list's keys but Ctrl+Z/Y),
+ * so Ctrl+Z and space still work after scrubbing or picking a line kind, and space on a focused
+ * button presses it.
  */
 import type { Editor } from "./editor";
 
@@ -16,6 +17,8 @@ function ownsKey(target: EventTarget | null, e: KeyboardEvent): boolean {
   const tag = target.tagName;
   if (tag === "TEXTAREA" || target.isContentEditable) return true;
   if (tag === "SELECT") return !(e.ctrlKey || e.metaKey); // a list keeps its keys, not Ctrl+Z
+  if (tag === "BUTTON" || tag === "SUMMARY" || target.getAttribute("role") === "button")
+    return !(e.ctrlKey || e.metaKey || e.altKey) && (e.key === " " || e.key === "Enter");
   if (tag !== "INPUT") return false;
   const type = (target as HTMLInputElement).type;
   if (TEXT_INPUTS.has(type) || type.startsWith("date") || type === "time" || type === "month") return true;

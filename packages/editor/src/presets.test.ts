@@ -24,4 +24,11 @@ describe("presets menu", () => {
       expect(parseScene(text)).toEqual(parseScene(serializeScene(p.make())));
     }
   });
+
+  it("the titles in public/scenes/index.json say digit for one digit, digits for more", () => {
+    const index = JSON.parse(readFileSync(join(publicScenes, "index.json"), "utf8")) as { title: string }[];
+    const counts = index.flatMap((e) => [...e.title.matchAll(/\b(\d+) (digits?)\b/g)]);
+    expect(counts.length).toBeGreaterThan(1);
+    for (const [text, n, word] of counts) expect(word, text).toBe(n === "1" ? "digit" : "digits");
+  });
 });

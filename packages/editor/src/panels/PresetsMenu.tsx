@@ -1,12 +1,21 @@
-/** The presets menu: pick a scene to start from (Galperin's billiard takes a number of digits). */
+/**
+ * The presets menu: pick a scene to start from (Galperin's billiard takes a number of digits). The
+ * digits field keeps what is typed (an emptied field stays empty, so Backspace then 6 gives 6) and
+ * is clamped to 1..7 when it loses focus and when the preset is loaded.
+ */
 import { useState } from "react";
 import { useEditor } from "../EditorContext";
 import { buildPreset, PRESETS } from "../presets";
 
+/** The digits typed, as a whole number from 1 to 7 (1 for an empty or broken field). */
+export function clampDigits(text: string): number {
+  return Math.max(1, Math.min(7, Math.round(Number(text) || 1)));
+}
+
 export function PresetsMenu() {
   const editor = useEditor();
   const [id, setId] = useState(PRESETS[0]!.id);
-  const [digits, setDigits] = useState(4);
+  const [digits, setDigits] = useState("4");
   const entry = PRESETS.find((p) => p.id === id);
   return (
     <div className="presets">
@@ -29,11 +38,19 @@ export function PresetsMenu() {
             min={1}
             max={7}
             value={digits}
-            onChange={(e) => setDigits(Math.max(1, Math.min(7, Math.round(Number(e.target.value) || 1))))}
+            onChange={(e) => setDigits(e.target.value)}
+            onBlur={() => setDigits(String(clampDigits(digits)))}
           />
         </label>
       )}
-      <button type="button" onClick={() => void editor.loadScene(buildPreset(id, digits))}>
+      <button
+        type="button"
+        onClick={() => {
+          const n = clampDigits(digits);
+          setDigits(String(n));
+          void editor.loadScene(buildPreset(id, n));
+        }}
+      >
         Load preset
       </button>
     </div>

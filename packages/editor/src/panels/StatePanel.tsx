@@ -1,7 +1,7 @@
 /**
  * State: Copy / Paste the scene as JSON (format v1; a broken paste shows the validation message and
  * keeps the current scene), Save / Load a file (doc/openScene.ts, as a dropped file), Clear, a
- * shareable link, Undo / Redo.
+ * shareable link (copied, the address bar left as it is), Undo / Redo.
  */
 import { useRef, useState } from "react";
 import { openSceneFile, openSceneText } from "../doc/openScene";
@@ -51,14 +51,22 @@ export function StatePanel() {
     setTimeout(() => URL.revokeObjectURL(a.href), 1000);
   };
 
+  // The link is copied without touching the address bar: a reload then keeps later edits (a link
+  // in the address bar is loaded again on reload). Without a clipboard the link is shown there, but
+  // only until the next change of the scene.
   const share = async () => {
     const url = shareUrl(window.location, editor.doc);
-    history.replaceState(null, "", url);
     try {
       await navigator.clipboard.writeText(url);
-      editor.info("Link copied to the clipboard (and shown in the address bar).");
+      editor.info("Link copied to the clipboard.");
     } catch {
-      editor.info("The link is in the address bar.");
+      history.replaceState(null, "", url);
+      const stop = editor.history.subscribe(() => {
+        stop();
+        if (window.location.href === url)
+          history.replaceState(null, "", window.location.pathname + window.location.search);
+      });
+      editor.info("The link is in the address bar (until the next edit).");
     }
   };
 

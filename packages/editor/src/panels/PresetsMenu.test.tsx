@@ -1,0 +1,52 @@
+// @vitest-environment jsdom
+// The digits field of Galperin's billiard keeps what is typed (it once snapped an emptied field to
+// 1 at once, so Backspace then "6" gave "16", clamped to 7) and clamps to 1..7 on blur and on load.
+import { cleanup, fireEvent, render, screen } from "@testing-library/react";
+import { afterEach, describe, expect, it } from "vitest";
+import { EditorContext } from "../EditorContext";
+import type { Editor } from "../editor";
+import type { SceneFile } from "../engineTypes";
+import { buildPreset } from "../presets";
+import { PresetsMenu } from "./PresetsMenu";
+
+afterEach(cleanup);
+
+function setup() {
+  const loaded: SceneFile[] = [];
+  const editor = { loadScene: async (s: SceneFile) => void loaded.push(s) } as unknown as Editor;
+  render(
+    <EditorContext.Provider value={editor}>
+      <PresetsMenu />
+    </EditorContext.Provider>,
+  );
+  fireEvent.change(screen.getByRole("combobox", { name: "Preset" }), { target: { value: "galperin" } });
+  const field = screen.getByRole("spinbutton", { name: "Digits of π" }) as HTMLInputElement;
+  return { loaded, field, load: () => fireEvent.click(screen.getByRole("button", { name: "Load preset" })) };
+}
+
+describe("Presets menu: digits of π", () => {
+  it("an emptied field stays empty while typing: Backspace then 6 gives 6", () => {
+    const { loaded, field, load } = setup();
+    expect(field.value).toBe("4");
+    fireEvent.change(field, { target: { value: "" } });
+    expect(field.value).toBe("");
+    fireEvent.change(field, { target: { value: "6" } });
+    expect(field.value).toBe("6");
+    load();
+    expect(loaded).toEqual([buildPreset("galperin", 6)]);
+  });
+
+  it("clamps to 1..7 on blur and when the preset is loaded", () => {
+    const { loaded, field, load } = setup();
+    fireEvent.change(field, { target: { value: "9" } });
+    load();
+    expect(loaded).toEqual([buildPreset("galperin", 7)]);
+    expect(field.value).toBe("7");
+    fireEvent.change(field, { target: { value: "" } });
+    fireEvent.blur(field);
+    expect(field.value).toBe("1");
+    fireEvent.change(field, { target: { value: "2.6" } });
+    fireEvent.blur(field);
+    expect(field.value).toBe("3");
+  });
+});
