@@ -26,6 +26,22 @@ describe("EditableCell", () => {
     expect(screen.getByRole("button", { name: "a x" }).textContent).toBe("1");
   });
 
+  it("commits once when Enter is followed by leaving the cell before the edit is applied (it recorded two edits)", async () => {
+    let resolve: (v: string | null) => void = () => {};
+    const onCommit = vi.fn(() => new Promise<string | null>((r) => (resolve = r)));
+    render(<EditableCell label="a m" value="1" onCommit={onCommit} />);
+    const input = open("a m");
+    fireEvent.change(input, { target: { value: "4" } });
+    fireEvent.keyDown(input, { key: "Enter" });
+    fireEvent.blur(input);
+    fireEvent.keyDown(input, { key: "Enter" });
+    await act(async () => {
+      resolve(null);
+    });
+    expect(onCommit).toHaveBeenCalledTimes(1);
+    expect(screen.getByRole("button", { name: "a m" }).textContent).toBe("1");
+  });
+
   it("a refused value stays in the cell with the message, marked invalid", async () => {
     const onCommit = vi.fn(async () => "actions[4].r: must be a positive finite number");
     render(<EditableCell label="a r" value="1" onCommit={onCommit} />);

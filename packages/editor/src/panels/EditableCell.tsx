@@ -10,7 +10,7 @@
  * Opening a cell pauses playback (inside an editor): the edit applies at the current time, and the
  * values the cell and its row show are those of that time, not of a moment that playback has left.
  */
-import { useContext, useId, useState } from "react";
+import { useContext, useId, useRef, useState } from "react";
 import { EditorContext } from "../EditorContext";
 
 export interface EditableCellProps {
@@ -27,6 +27,9 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
   const [error, setError] = useState<string | null>(null);
   const errorId = useId();
   const editor = useContext(EditorContext);
+  // A commit in flight: Enter then a click elsewhere (blur) before the edit was applied committed the
+  // same draft twice (two undo steps for one edit).
+  const pending = useRef(false);
   const open = () => {
     if (editor?.ui.getState().playing) editor.ui.setState({ playing: false });
     setEdit({ typed: null });
@@ -40,13 +43,19 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
   const typed = edit?.typed ?? null;
 
   const commit = async () => {
+    if (pending.current) return;
     if (typed === null || typed === value) {
       close();
       return;
     }
-    const err = await onCommit(typed.trim());
-    if (err === null) close();
-    else setError(err);
+    pending.current = true;
+    try {
+      const err = await onCommit(typed.trim());
+      if (err === null) close();
+      else setError(err);
+    } finally {
+      pending.current = false;
+    }
   };
 
   if (edit === null)
