@@ -1,6 +1,13 @@
 import { describe, expect, it } from "vitest";
 import type { SceneFile } from "../engineTypes";
-import { decodeSceneFromUrl, encodeSceneForUrl, sceneFromHash } from "./persistence";
+import {
+  decodeSceneFromUrl,
+  encodeSceneForUrl,
+  MAX_SHARE_URL_CHARS,
+  sceneFromHash,
+  shareLinkProblem,
+  shareUrl,
+} from "./persistence";
 
 const scene: SceneFile = {
   format: "chapgame",
@@ -25,5 +32,31 @@ describe("persistence", () => {
     expect(() => decodeSceneFromUrl("abc%%")).toThrow("damaged or cut short");
     const bad = encodeSceneForUrl({ ...scene, actions: [{ ...scene.actions[0]!, r: -1 } as never] });
     expect(() => decodeSceneFromUrl(bad)).toThrow("actions[0].r");
+  });
+});
+
+describe("share links", () => {
+  it("refuses a link longer than browsers open, saying its size and what to do instead (20,000 discs gave a 3.2 MB link that failed to open)", () => {
+    const discs = Array.from({ length: 20_000 }, (_, i) => ({
+      time: 0,
+      type: "addBody" as const,
+      id: `d${i}`,
+      x: 3 * (i % 200),
+      y: 3 * Math.floor(i / 200),
+      r: 1,
+      m: 1,
+      v: [1.234567, -0.7654321] as [number, number],
+    }));
+    const big: SceneFile = { format: "chapgame", version: 1, g: 0, gravity: [0, 0], actions: discs };
+    const url = shareUrl({ origin: "http://127.0.0.1:5173", pathname: "/" }, big);
+    expect(url.length).toBeGreaterThan(MAX_SHARE_URL_CHARS);
+    expect(shareLinkProblem(url)).toMatch(
+      /^This scene's link would be \d+\.\d MB, longer than browsers open \(about 2 MB\): use Save/,
+    );
+    const small = shareUrl(
+      { origin: "http://127.0.0.1:5173", pathname: "/" },
+      { ...big, actions: discs.slice(0, 10) },
+    );
+    expect(shareLinkProblem(small)).toBeNull();
   });
 });

@@ -32,6 +32,19 @@ export function sceneFromHash(hash: string): SceneFile | null {
   return m?.[1] ? decodeSceneFromUrl(m[1]) : null;
 }
 
+/**
+ * The longest link Share offers. Chromium refuses URLs over 2 MiB (the editor audit's 3.2 MB link of
+ * 20,000 discs failed to open with ERR_ABORTED after "Link copied"); a little under it.
+ */
+export const MAX_SHARE_URL_CHARS = 2_000_000;
+
+/** Why `url` cannot be shared as a link (too long to open), or null. */
+export function shareLinkProblem(url: string): string | null {
+  if (url.length <= MAX_SHARE_URL_CHARS) return null;
+  const mb = (url.length / 1e6).toFixed(1);
+  return `This scene's link would be ${mb} MB, longer than browsers open (about 2 MB): use Save to share it as a file.`;
+}
+
 export function shareUrl(location: { origin: string; pathname: string }, scene: SceneFile): string {
   return `${location.origin}${location.pathname}#scene=${encodeSceneForUrl(scene)}`;
 }

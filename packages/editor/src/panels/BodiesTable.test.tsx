@@ -51,6 +51,35 @@ describe("BodiesTable", () => {
   });
 });
 
+describe("BodiesTable messages", () => {
+  it("opening a cell clears the message an earlier refusal left in the bar (two different errors showed at once)", async () => {
+    const h = testEditor();
+    await h.editor.loadScene(
+      {
+        format: "chapgame",
+        version: 1,
+        g: 0,
+        gravity: [0, 0],
+        actions: [{ time: 0, type: "addBody", id: "ball", x: 0, y: 0, r: 1, m: 1 }],
+      },
+      { undoable: false },
+    );
+    await settled(h.client);
+    const table = renderTable(h.editor);
+    await waitFor(() => expect(within(table).getByLabelText("ball r").textContent).toBe("1"));
+    fireEvent.click(within(table).getByLabelText("ball r"));
+    const r = within(table).getByRole("textbox", { name: "ball r" });
+    fireEvent.change(r, { target: { value: "-1" } });
+    await act(async () => {
+      fireEvent.keyDown(r, { key: "Enter" });
+    });
+    await waitFor(() => expect(h.editor.ui.getState().message).not.toBeNull());
+    fireEvent.keyDown(r, { key: "Escape" });
+    fireEvent.click(within(table).getByLabelText("ball m"));
+    expect(h.editor.ui.getState().message).toBeNull();
+  });
+});
+
 describe("BodiesTable order", () => {
   it("lists ids with numbers in natural order (ball2 before ball10)", async () => {
     const h = testEditor();

@@ -32,6 +32,8 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
   const pending = useRef(false);
   const open = () => {
     if (editor?.ui.getState().playing) editor.ui.setState({ playing: false });
+    // A message left by an earlier refusal would sit beside this cell's own (the audit saw two).
+    if (editor?.ui.getState().message) editor.ui.setState({ message: null });
     setEdit({ typed: null });
   };
 

@@ -5,7 +5,7 @@
  */
 import { useRef, useState } from "react";
 import { openSceneFile, openSceneText } from "../doc/openScene";
-import { shareUrl } from "../doc/persistence";
+import { shareLinkProblem, shareUrl } from "../doc/persistence";
 import { sceneText } from "../doc/sceneIo";
 import { useEditor, useHistory } from "../EditorContext";
 
@@ -56,6 +56,11 @@ export function StatePanel() {
   // only until the next change of the scene.
   const share = async () => {
     const url = shareUrl(window.location, editor.doc);
+    const problem = shareLinkProblem(url);
+    if (problem !== null) {
+      editor.info(problem);
+      return;
+    }
     try {
       await navigator.clipboard.writeText(url);
       editor.info("Link copied to the clipboard.");
