@@ -20,7 +20,12 @@ const KIND_OF: Record<string, ObjectKind> = {
 };
 
 export function kindOf(a: Action): ObjectKind | null {
-  return KIND_OF[a.type] ?? null;
+  return kindOfType(a.type);
+}
+
+/** The kind of object an action type acts on (setGlobal, or an unknown type: null). */
+export function kindOfType(type: string): ObjectKind | null {
+  return KIND_OF[type] ?? null;
 }
 
 /** The scene with `from` renamed to `to` for objects of `kind`; throws a message when refused. */

@@ -6,6 +6,7 @@
  * Only the rows in view are rendered (useRowWindow); the view follows the current time (useFollowTime).
  */
 import { useRef } from "react";
+import { kindOfType } from "../doc/rename";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { LogEvent } from "../engineTypes";
 import type { EventPage } from "../remote/protocol";
@@ -39,21 +40,6 @@ export function kindLabel(e: LogEvent): string {
   return `${kind}: ${e.action.replace(/[A-Z]/g, (c) => ` ${c.toLowerCase()}`)}`;
 }
 
-/** The kind of object each action type acts on (setGlobal: none). */
-const ACTION_KIND: Record<NonNullable<LogEvent["action"]>, "body" | "line" | "point" | null> = {
-  addBody: "body",
-  updateBody: "body",
-  removeBody: "body",
-  giveVelocity: "body",
-  addLine: "line",
-  updateLine: "line",
-  removeLine: "line",
-  addPoint: "point",
-  updatePoint: "point",
-  removePoint: "point",
-  setGlobal: null,
-};
-
 /**
  * What clicking an entry selects: an action's object (a body, line or point, by the action's type;
  * nothing for setGlobal); for a collision or a stop, its body (the first participant: ids are
@@ -64,7 +50,7 @@ export function selectionOf(e: LogEvent): Selection {
   const id = e.ids[0];
   if (id === undefined) return null;
   if (e.type !== "action") return { kind: "body", id };
-  const kind = e.action === undefined ? null : ACTION_KIND[e.action];
+  const kind = e.action === undefined ? null : kindOfType(e.action);
   return kind === null ? null : { kind, id };
 }
 
