@@ -7,6 +7,11 @@ import type { CalcSettings } from "../store/uiStore";
 import { formatNumber, parseNumber } from "./EditableCell";
 import { EngineWatch } from "./EngineWatch";
 
+/** Enter in a settings field applies it (as leaving the field does; it only applied on leaving). */
+function blurOnEnter(e: React.KeyboardEvent<HTMLInputElement>): void {
+  if (e.key === "Enter") e.currentTarget.blur();
+}
+
 export function CalculationPanel() {
   const editor = useEditor();
   const calc = useUi((s) => s.calc);
@@ -17,6 +22,15 @@ export function CalculationPanel() {
   const set = (patch: Partial<CalcSettings>) =>
     editor.ui.setState((s) => ({ calc: { ...s.calc, ...patch } }));
   const unlimited = !calc.useTime && !calc.useEvents;
+  // A refused setting is put back, and the message bar says so (it was restored without a word).
+  const refuse = (input: HTMLInputElement, name: string, what: string, kept: number) => {
+    const typed = input.value;
+    input.value = String(kept);
+    if (typed.trim() !== String(kept))
+      editor.ui.setState({
+        message: { text: `${name}: must be ${what}, got "${typed}" (kept ${kept})`, tone: "error" },
+      });
+  };
 
   let progress: number | null = null;
   if (computing) {
@@ -45,10 +59,11 @@ export function CalculationPanel() {
           aria-label="Seconds ahead"
           size={5}
           defaultValue={calc.seconds}
+          onKeyDown={blurOnEnter}
           onBlur={(e) => {
             const x = parseNumber(e.target.value);
             if (x !== null && x > 0 && Number.isFinite(x)) set({ seconds: x });
-            else e.target.value = String(calc.seconds);
+            else refuse(e.target, "Seconds ahead", "a positive finite number", calc.seconds);
           }}
         />{" "}
         s
@@ -65,10 +80,11 @@ export function CalculationPanel() {
           aria-label="Events ahead"
           size={6}
           defaultValue={calc.events}
+          onKeyDown={blurOnEnter}
           onBlur={(e) => {
             const x = parseNumber(e.target.value);
             if (x !== null && x >= 1 && Number.isInteger(x)) set({ events: x });
-            else e.target.value = String(calc.events);
+            else refuse(e.target, "Events ahead", "a whole number of at least 1", calc.events);
           }}
         />
         <button

@@ -1,0 +1,59 @@
+// @vitest-environment jsdom
+// The Calculation settings: Enter applies a field (it applied only on leaving it), and a refused
+// value is put back with a message (it was put back without a word).
+import { cleanup, fireEvent, render, screen } from "@testing-library/react";
+import { afterEach, describe, expect, it } from "vitest";
+import { EditorContext } from "../EditorContext";
+import { testEditor } from "../testing/harness";
+import { CalculationPanel } from "./CalculationPanel";
+
+afterEach(cleanup);
+
+function renderPanel() {
+  const h = testEditor();
+  render(
+    <EditorContext.Provider value={h.editor}>
+      <CalculationPanel />
+    </EditorContext.Provider>,
+  );
+  return h.editor;
+}
+
+describe("CalculationPanel", () => {
+  it("Enter applies Seconds ahead and Events ahead", () => {
+    const editor = renderPanel();
+    const seconds = screen.getByRole("textbox", { name: "Seconds ahead" }) as HTMLInputElement;
+    seconds.focus();
+    fireEvent.change(seconds, { target: { value: "25" } });
+    fireEvent.keyDown(seconds, { key: "Enter" });
+    expect(editor.ui.getState().calc.seconds).toBe(25);
+    const events = screen.getByRole("textbox", { name: "Events ahead" }) as HTMLInputElement;
+    events.focus();
+    fireEvent.change(events, { target: { value: "300" } });
+    fireEvent.keyDown(events, { key: "Enter" });
+    expect(editor.ui.getState().calc.events).toBe(300);
+    expect(editor.ui.getState().message).toBeNull();
+  });
+
+  it("puts a refused value back and says why", () => {
+    const editor = renderPanel();
+    const before = editor.ui.getState().calc.seconds;
+    const seconds = screen.getByRole("textbox", { name: "Seconds ahead" }) as HTMLInputElement;
+    seconds.focus();
+    fireEvent.change(seconds, { target: { value: "abc" } });
+    fireEvent.keyDown(seconds, { key: "Enter" });
+    expect(seconds.value).toBe(String(before));
+    expect(editor.ui.getState().calc.seconds).toBe(before);
+    expect(editor.ui.getState().message).toEqual({
+      text: `Seconds ahead: must be a positive finite number, got "abc" (kept ${before})`,
+      tone: "error",
+    });
+    const events = screen.getByRole("textbox", { name: "Events ahead" }) as HTMLInputElement;
+    events.focus();
+    fireEvent.change(events, { target: { value: "2.5" } });
+    fireEvent.blur(events);
+    expect(editor.ui.getState().message?.text).toMatch(
+      /^Events ahead: must be a whole number of at least 1, got "2.5"/,
+    );
+  });
+});
