@@ -23,6 +23,23 @@ async function renderPanel() {
   return { ...h, slider, field };
 }
 
+describe("TimePanel time field", () => {
+  it("a time that is not a finite number leaves the time where it is and says why", async () => {
+    const { editor, field } = await renderPanel();
+    act(() => editor.setTime(1.25));
+    for (const typed of ["abc", "1e400"]) {
+      field.focus();
+      fireEvent.change(field, { target: { value: typed } });
+      fireEvent.keyDown(field, { key: "Enter" });
+      expect(editor.ui.getState().t).toBe(1.25);
+      expect(editor.ui.getState().message).toEqual({
+        text: `Time (s): must be a finite number of seconds, got "${typed}"`,
+        tone: "error",
+      });
+    }
+  });
+});
+
 describe("TimePanel", () => {
   it("paused, the slider and the time field show every time exactly and at once", async () => {
     const { editor, slider, field } = await renderPanel();

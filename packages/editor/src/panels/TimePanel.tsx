@@ -50,6 +50,14 @@ export function TimePanel() {
     if (draft === null) return;
     const x = parseNumber(draft);
     if (x !== null && Number.isFinite(x)) void editor.goTo(x);
+    // It was dropped without a word (audit): say why the time did not move.
+    else
+      editor.ui.setState({
+        message: {
+          text: `Time (s): must be a finite number of seconds, got "${draft.trim()}"`,
+          tone: "error",
+        },
+      });
     setDraft(null);
   };
 
