@@ -6,6 +6,7 @@ import { act, cleanup, fireEvent, render, screen, waitFor, within } from "@testi
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
 import { settled, testEditor } from "../testing/harness";
+import { sceneOf } from "../testing/scenes";
 import { BodiesTable } from "./BodiesTable";
 
 afterEach(cleanup);
@@ -54,16 +55,9 @@ describe("BodiesTable", () => {
 describe("BodiesTable messages", () => {
   it("opening a cell clears the message an earlier refusal left in the bar (two different errors showed at once)", async () => {
     const h = testEditor();
-    await h.editor.loadScene(
-      {
-        format: "chapgame",
-        version: 1,
-        g: 0,
-        gravity: [0, 0],
-        actions: [{ time: 0, type: "addBody", id: "ball", x: 0, y: 0, r: 1, m: 1 }],
-      },
-      { undoable: false },
-    );
+    await h.editor.loadScene(sceneOf([{ time: 0, type: "addBody", id: "ball", x: 0, y: 0, r: 1, m: 1 }], 0), {
+      undoable: false,
+    });
     await settled(h.client);
     const table = renderTable(h.editor);
     await waitFor(() => expect(within(table).getByLabelText("ball r").textContent).toBe("1"));

@@ -10,6 +10,7 @@ import type { Editor } from "../editor";
 import type { LogEvent } from "../engineTypes";
 import type { RequestMessage } from "../remote/protocol";
 import { settled, testEditor } from "../testing/harness";
+import { sceneOf } from "../testing/scenes";
 import { EventLog, kindLabel, selectionOf } from "./EventLog";
 
 afterEach(cleanup);
@@ -99,17 +100,11 @@ describe("EventLog", () => {
     // A body named like the line: selecting "body w" for the line's entry made Delete delete it.
     const h = testEditor();
     await h.editor.loadScene(
-      {
-        format: "chapgame",
-        version: 1,
-        g: 9.81,
-        gravity: [0, 0],
-        actions: [
-          { time: 0, type: "addBody", id: "w", x: 0, y: 0, r: 1, m: 1, v: [4, 0] },
-          { time: 0, type: "addLine", id: "w", p1: [10, -5], p2: [10, 5], kind: "segment" },
-          { time: 0, type: "addPoint", id: "q", p: [-10, 0] },
-        ],
-      },
+      sceneOf([
+        { time: 0, type: "addBody", id: "w", x: 0, y: 0, r: 1, m: 1, v: [4, 0] },
+        { time: 0, type: "addLine", id: "w", p1: [10, -5], p2: [10, 5], kind: "segment" },
+        { time: 0, type: "addPoint", id: "q", p: [-10, 0] },
+      ]),
       { undoable: false },
     );
     await settled(h.client);

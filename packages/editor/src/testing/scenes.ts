@@ -1,7 +1,12 @@
 /**
  * Scene fixtures shared by the editor's tests.
  */
-import type { SceneFile } from "../engineTypes";
+import type { Action, SceneFile } from "../engineTypes";
+
+/** A version-1 scene of `actions` (friction field g, no gravity unless given). */
+export function sceneOf(actions: Action[], g = 9.81, gravity: [number, number] = [0, 0]): SceneFile {
+  return { format: "chapgame", version: 1, g, gravity, actions };
+}
 
 /**
  * An immovable disc crushes a small one against a wall: collisions pile up before t = 2 and the
