@@ -14,7 +14,16 @@ export function SpeedPanel() {
   const commit = () => {
     if (draft === null) return;
     const x = parseNumber(draft);
-    if (x !== null) editor.setSpeed(x);
+    // Speeds are kept to 0.001 (editorTime.setSpeed): a smaller one, or a non-number, was dropped or
+    // rounded to 0 without a word (audit).
+    const why =
+      x === null || !Number.isFinite(x)
+        ? "must be a finite number (negative plays backwards)"
+        : x !== 0 && Math.round(x * 1000) === 0
+          ? "must be 0 or at least 0.001 in size (speeds are kept to 0.001)"
+          : null;
+    if (why === null) editor.setSpeed(x as number);
+    else editor.ui.setState({ message: { text: `Speed: ${why}, got "${draft.trim()}"`, tone: "error" } });
     setDraft(null);
   };
   const play = (s: number) => {

@@ -1,0 +1,43 @@
+// @vitest-environment jsdom
+// The speed field: a speed too small to keep, or not a number, is refused with a message (it was
+// rounded to 0 or dropped without a word).
+import { cleanup, fireEvent, render, screen } from "@testing-library/react";
+import { afterEach, describe, expect, it } from "vitest";
+import { EditorContext } from "../EditorContext";
+import { testEditor } from "../testing/harness";
+import { SpeedPanel } from "./SpeedPanel";
+
+afterEach(cleanup);
+
+function type(field: HTMLElement, text: string): void {
+  fireEvent.focus(field);
+  fireEvent.change(field, { target: { value: text } });
+  fireEvent.keyDown(field, { key: "Enter" });
+}
+
+describe("SpeedPanel", () => {
+  it("takes a typed speed, negative included, and refuses what it cannot keep, saying why", () => {
+    const { editor } = testEditor();
+    render(
+      <EditorContext.Provider value={editor}>
+        <SpeedPanel />
+      </EditorContext.Provider>,
+    );
+    const field = screen.getByRole("textbox", { name: "Speed" });
+    type(field, "-0.25");
+    expect(editor.ui.getState().speed).toBe(-0.25);
+    expect(editor.ui.getState().message).toBeNull();
+    type(field, "0.0004");
+    expect(editor.ui.getState().speed).toBe(-0.25);
+    expect(editor.ui.getState().message?.text).toBe(
+      'Speed: must be 0 or at least 0.001 in size (speeds are kept to 0.001), got "0.0004"',
+    );
+    type(field, "fast");
+    expect(editor.ui.getState().speed).toBe(-0.25);
+    expect(editor.ui.getState().message?.text).toBe(
+      'Speed: must be a finite number (negative plays backwards), got "fast"',
+    );
+    type(field, "0");
+    expect(editor.ui.getState().speed).toBe(0);
+  });
+});
