@@ -17,6 +17,7 @@ export type Overlay =
 
 export interface DrawOptions {
   selection: Selection;
+  /** `kind:id` keys of the objects to light (uiStore's highlight). */
   highlight: ReadonlySet<string>;
   /** Recent world positions per body id, oldest first: x0, y0, x1, y1, ... */
   trails: ReadonlyMap<string, number[]> | null;
@@ -59,7 +60,7 @@ export function drawFrame(
   for (const l of f.lines) {
     const c = clipToRect(l.p1, l.p2, l.kind, rect);
     if (!c) continue;
-    const hot = (sel?.kind === "line" && sel.id === l.id) || o.highlight.has(l.id);
+    const hot = (sel?.kind === "line" && sel.id === l.id) || o.highlight.has(`line:${l.id}`);
     ctx.strokeStyle = hot ? COLORS.selected : "#444";
     ctx.lineWidth = hot ? 3 : 2;
     ctx.beginPath();
@@ -69,7 +70,7 @@ export function drawFrame(
   }
   // points
   for (const p of f.points) {
-    const hot = (sel?.kind === "point" && sel.id === p.id) || o.highlight.has(p.id);
+    const hot = (sel?.kind === "point" && sel.id === p.id) || o.highlight.has(`point:${p.id}`);
     const [sx, sy] = toScreen(view, size, p.p[0], p.p[1]);
     ctx.fillStyle = hot ? COLORS.selected : "#222";
     ctx.beginPath();
@@ -151,7 +152,7 @@ export function drawFrame(
     const rs = scr[3 * i + 2]!;
     if (rs < 0 || (rs < LABEL_MIN_RADIUS_PX && !anyHot)) continue;
     const id = f.ids[i]!;
-    const hot = anyHot && ((sel?.kind === "body" && sel.id === id) || o.highlight.has(id));
+    const hot = anyHot && ((sel?.kind === "body" && sel.id === id) || o.highlight.has(`body:${id}`));
     if (!hot && rs < LABEL_MIN_RADIUS_PX) continue;
     const sx = scr[3 * i]!;
     const sy = scr[3 * i + 1]!;

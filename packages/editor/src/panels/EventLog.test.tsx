@@ -11,7 +11,7 @@ import type { LogEvent } from "../engineTypes";
 import type { RequestMessage } from "../remote/protocol";
 import { settled, testEditor } from "../testing/harness";
 import { sceneOf } from "../testing/scenes";
-import { EventLog, kindLabel, selectionOf } from "./EventLog";
+import { EventLog, highlightOf, kindLabel, selectionOf } from "./EventLog";
 
 afterEach(cleanup);
 
@@ -118,7 +118,20 @@ describe("EventLog", () => {
     expect(h.editor.ui.getState().selection).toEqual({ kind: "body", id: "w" });
     fireEvent.click(await row("body–line"));
     expect(h.editor.ui.getState().selection).toEqual({ kind: "body", id: "w" });
-    expect(h.editor.ui.getState().highlight).toEqual(["w", "w"]);
+    // Both participants lit, each with its kind (by id alone the body and the line "w" were both lit
+    // by an entry naming either).
+    expect(h.editor.ui.getState().highlight).toEqual(["body:w", "line:w"]);
+    fireEvent.click(await row("action: add line"));
+    expect(h.editor.ui.getState().highlight).toEqual(["line:w"]);
+  });
+
+  it("highlightOf: every participant with its kind; an action's object; nothing for setGlobal", () => {
+    const base = { time: 1, point: null, normal: null, impulse: null };
+    expect(highlightOf({ ...base, type: "bodyBody", ids: ["a", "b"] })).toEqual(["body:a", "body:b"]);
+    expect(highlightOf({ ...base, type: "bodyPoint", ids: ["a", "p"] })).toEqual(["body:a", "point:p"]);
+    expect(highlightOf({ ...base, type: "stop", ids: ["a"] })).toEqual(["body:a"]);
+    expect(highlightOf({ ...base, type: "action", action: "removePoint", ids: ["p"] })).toEqual(["point:p"]);
+    expect(highlightOf({ ...base, type: "action", action: "setGlobal", ids: [] })).toEqual([]);
   });
 
   it("selectionOf: an action's object by the action's type, a collision's body, nothing for setGlobal", () => {

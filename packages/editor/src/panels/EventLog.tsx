@@ -55,6 +55,22 @@ export function selectionOf(e: LogEvent): Selection {
 }
 
 /**
+ * What clicking an entry highlights on the canvas, as `kind:id` keys (uiStore's `highlight`): every
+ * participant with its kind, so a body and a line of the same id are not both lit.
+ */
+export function highlightOf(e: LogEvent): string[] {
+  const [a, b] = e.ids;
+  if (a === undefined) return [];
+  if (e.type === "action") {
+    const kind = e.action === undefined ? null : kindOfType(e.action);
+    return kind === null ? [] : [`${kind}:${a}`];
+  }
+  if (b === undefined) return [`body:${a}`];
+  const other = e.type === "bodyLine" ? "line" : e.type === "bodyPoint" ? "point" : "body";
+  return [`body:${a}`, `${other}:${b}`];
+}
+
+/**
  * The header's count: the log's number of events; filtered, how many of the body's events are shown
  * (those around the current time) and the log's number ("3 shown for c3 · 11 in all").
  */
@@ -131,7 +147,7 @@ export function EventLog() {
                     editor.ui.setState({
                       t: e.time,
                       playing: false,
-                      highlight: e.ids,
+                      highlight: highlightOf(e),
                       selection: selectionOf(e),
                     })
                   }

@@ -38,6 +38,7 @@ export interface UiState {
   speed: number;
   playing: boolean;
   selection: Selection;
+  /** Objects lit on the canvas, as `kind:id` keys (`body:a`, `line:wall`; EventLog's highlightOf). */
   highlight: string[];
   tool: Tool;
   view: View;
