@@ -95,15 +95,20 @@ export class EditorSession {
     await this.computeAhead();
   }
 
-  /** After reloading at the same time (undo, redo, rename): recomputes at least the old horizon. */
-  protected async recompute(oldHorizon: number): Promise<void> {
+  /**
+   * How far a reload at the current time (undo, redo, rename, restart) must compute at least: the
+   * current time, and the Calculation panel's seconds past it. The host also brings back the
+   * history the scene had before the load (protocol.ts, `load`'s keepTo).
+   */
+  private keepTo(): number {
     const c = this.ui.getState().calc;
-    const target = Math.max(oldHorizon, this.now() + (c.useTime ? c.seconds : 0));
-    if (target > 0)
-      await this.client.compute({ time: target }).catch((e) => {
-        this.fail(e);
-      });
-    else await this.computeAhead();
+    return this.now() + (c.useTime ? c.seconds : 0);
+  }
+
+  /** After a reload at the current time: computes ahead when the host had nothing to bring back. */
+  private afterReload(): Promise<void> {
+    const info = this.client.getSnapshot();
+    return info.computing === null && info.horizon === 0 ? this.computeAhead() : Promise.resolve();
   }
 
   cancelCompute(): void {
@@ -118,15 +123,14 @@ export class EditorSession {
     return this.afterLoad(await this.serial(() => this.loadNow(scene, options)), options);
   }
 
-  /** The queued part of loadScene: the load and its undo step; the old horizon, or the message. */
+  /** The queued part of loadScene: the load and its undo step; null, or the message. */
   private async loadNow(
     scene: SceneFile,
     options: { undoable?: boolean; fit?: boolean; keepTime?: boolean },
-  ): Promise<number | string> {
+  ): Promise<string | null> {
     const before = this.doc;
-    const oldHorizon = this.client.getSnapshot().horizon;
     try {
-      await this.client.load(scene);
+      await this.client.load(scene, options.keepTime ? this.keepTo() : undefined);
     } catch (e) {
       return this.fail(e);
     }
@@ -139,21 +143,38 @@ export class EditorSession {
       message: null,
       fitRequest: options.fit === false ? s.fitRequest : s.fitRequest + 1,
     }));
-    return oldHorizon;
+    return null;
   }
 
   /** The rest of loadScene, not queued: computing ahead. */
-  private async afterLoad(loaded: number | string, options: { keepTime?: boolean }): Promise<string | null> {
-    if (typeof loaded === "string") return loaded;
-    if (options.keepTime) await this.recompute(loaded);
+  private async afterLoad(loaded: string | null, options: { keepTime?: boolean }): Promise<string | null> {
+    if (loaded !== null) return loaded;
+    if (options.keepTime) await this.afterReload();
     else await this.computeAhead();
     return null;
+  }
+
+  /**
+   * Why edits at these times must wait, or null. After an undo, a redo or a rename the history is
+   * recomputed from the start while the current time stays; until the computation reaches it, the
+   * canvas and the tables show the state at the horizon, not at the current time, and an edit would
+   * be built from those values (a velocity typed in one cell keeps the other component shown).
+   */
+  private notComputedYet(actions: Action[]): string | null {
+    const h = this.client.getSnapshot().horizon;
+    const late = Math.max(...actions.map((a) => a.time));
+    if (!(late > h)) return null;
+    const at = Number(late.toPrecision(6));
+    const now = Number(h.toPrecision(6));
+    return `The history is still being computed up to t = ${at} s (it reaches ${now} s): edit once it gets there.`;
   }
 
   /** Applies edits as one undo step; on error nothing changes and the message is returned. */
   async edit(actions: Action[]): Promise<string | null> {
     const err = await this.serial(async () => {
       const before = this.doc;
+      const behind = this.notComputedYet(actions);
+      if (behind !== null) return this.fail(behind);
       try {
         await this.client.apply(actions);
       } catch (e) {
@@ -185,38 +206,37 @@ export class EditorSession {
       }
       return this.loadNow(scene, options);
     });
-    if (typeof loaded !== "string") this.ui.setState({ selection: { kind, id: to } });
+    if (loaded === null) this.ui.setState({ selection: { kind, id: to } });
     return this.afterLoad(loaded, options);
   }
 
   async undo(): Promise<void> {
-    const oldHorizon = await this.serial(() => {
+    const loaded = await this.serial(() => {
       const u = undo(this.history.getState(), this.doc);
-      return u ? this.restore(u.scene, u.history) : Promise.resolve(null);
+      return u ? this.restore(u.scene, u.history) : Promise.resolve(false);
     });
-    if (oldHorizon !== null) await this.recompute(oldHorizon);
+    if (loaded) await this.afterReload();
   }
 
   async redo(): Promise<void> {
-    const oldHorizon = await this.serial(() => {
+    const loaded = await this.serial(() => {
       const r = redo(this.history.getState(), this.doc);
-      return r ? this.restore(r.scene, r.history) : Promise.resolve(null);
+      return r ? this.restore(r.scene, r.history) : Promise.resolve(false);
     });
-    if (oldHorizon !== null) await this.recompute(oldHorizon);
+    if (loaded) await this.afterReload();
   }
 
-  /** The queued part of undo and redo: the old horizon, null if the scene could not be loaded. */
-  private async restore(scene: SceneFile, history: History): Promise<number | null> {
-    const oldHorizon = this.client.getSnapshot().horizon;
+  /** The queued part of undo and redo: whether the scene was loaded. */
+  private async restore(scene: SceneFile, history: History): Promise<boolean> {
     try {
-      await this.client.load(scene);
+      await this.client.load(scene, this.keepTo());
     } catch (e) {
       this.fail(e);
-      return null;
+      return false;
     }
     this.history.setState(history);
     this.ui.setState({ message: null });
-    return oldHorizon;
+    return true;
   }
 
   /**
@@ -228,15 +248,16 @@ export class EditorSession {
     // Not queued behind pending changes: they may be waiting for the host that stopped answering
     // (replacePort rejects them).
     const doc = this.doc;
-    const oldHorizon = this.client.getSnapshot().horizon;
     this.client.replacePort(this.portFactory());
     try {
-      await this.client.load(doc);
+      // The new host starts with no history: compute up to the current time and the Calculation
+      // panel's seconds past it (not the old horizon, which the runaway computation may have set).
+      await this.client.load(doc, this.keepTo());
     } catch (e) {
       this.fail(e);
       return;
     }
     this.info("The engine was restarted.");
-    await this.recompute(Math.min(oldHorizon, this.now()));
+    await this.afterReload();
   }
 }

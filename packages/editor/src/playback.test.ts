@@ -19,6 +19,14 @@ describe("advanceClock", () => {
     expect(advanceClock(9.99, 1, 0.05, 10, true)).toEqual({ t: 10, stop: false });
     expect(advanceClock(9.99, 1, 0.05, 10, false)).toEqual({ t: 10, stop: true });
   });
+
+  it("holds a time past the horizon while the history is computed up to it, in either direction", () => {
+    // after an undo at t = 10 the history is recomputed from 0: playing must not jump back to 1.9
+    expect(advanceClock(10, 1, 0.05, 1.9, true)).toEqual({ t: 10, stop: false });
+    expect(advanceClock(10, -1, 0.05, 1.9, true)).toEqual({ t: 10, stop: false });
+    // nothing is computing any more (cancelled): go to the end of what there is, and stop
+    expect(advanceClock(10, 1, 0.05, 1.9, false)).toEqual({ t: 1.9, stop: true });
+  });
 });
 
 describe("canExtend", () => {

@@ -2,7 +2,8 @@
  * The playback clock: on every animation frame while playing, time moves by speed × elapsed
  * wall-clock time (negative speeds replay backwards), clamped to [0, horizon]. Playing forward near
  * the horizon asks for more computation (auto-extend) and waits at the horizon for it; playback
- * pauses at 0 going backwards and at the horizon when nothing more can be computed.
+ * pauses at 0 going backwards and at the horizon when nothing more can be computed. A time past the
+ * horizon (the history being recomputed after an undo) is held until the computation reaches it.
  */
 import type { Editor } from "./editor";
 
@@ -40,6 +41,9 @@ export function advanceClock(
   horizon: number,
   canExtend: boolean,
 ): { t: number; stop: boolean } {
+  // Ahead of the computed history (an undo or a rename recomputes it from the start while the time
+  // stays): wait there while it is computed, rather than jump back to where it has got so far.
+  if (t > horizon) return canExtend ? { t, stop: false } : { t: horizon, stop: true };
   const next = t + speed * Math.min(dt, MAX_FRAME_SECONDS);
   if (next <= 0 && speed < 0) return { t: 0, stop: true };
   if (next >= horizon && speed > 0) return { t: horizon, stop: !canExtend };

@@ -26,6 +26,7 @@ export function TimePanel() {
   const t = useShownTime();
   const horizon = useInfoValue((i) => i.horizon);
   const revision = useInfoValue((i) => i.revision);
+  const computing = useInfoValue((i) => i.computing !== null);
   const ticks = useRefreshed(
     () => (revision < 0 ? Promise.resolve([]) : editor.client.ticks(TICKS)),
     String(revision),
@@ -85,6 +86,15 @@ export function TimePanel() {
           />{" "}
           s of <output aria-label="Horizon">{formatNumber(horizon)}</output> s
         </label>
+        {/* After an undo, a redo or a rename the history is recomputed from the start while the time
+            stays: say why the canvas and tables show an earlier state until it gets there. */}
+        {t > horizon ? (
+          <span aria-live="polite" className="behind">
+            {" "}
+            {computing ? "computing up to t" : "past the computed history"}: the view shows t ={" "}
+            {formatNumber(horizon)} s{computing ? " until then" : ""}
+          </span>
+        ) : null}
       </div>
       <div className="row">
         <button

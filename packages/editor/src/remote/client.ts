@@ -115,14 +115,16 @@ export class TimelineClient {
     });
   }
 
-  load(scene: SceneFile): Promise<void> {
-    return this.request({ op: "load", scene });
+  /** Replaces the scene; with `keepTo`, the host recomputes the history the user had (protocol.ts). */
+  load(scene: SceneFile, keepTo?: number): Promise<void> {
+    return this.request(keepTo === undefined ? { op: "load", scene } : { op: "load", scene, keepTo });
   }
   apply(actions: Action[]): Promise<void> {
     return this.request({ op: "apply", actions });
   }
-  compute(until: Until | null): Promise<void> {
-    return this.request({ op: "compute", until });
+  /** Computes further from the horizon; `restore`: it brings back history the user had. */
+  compute(until: Until | null, restore = false): Promise<void> {
+    return this.request({ op: "compute", until, restore });
   }
   cancel(): Promise<void> {
     return this.request({ op: "cancel" });

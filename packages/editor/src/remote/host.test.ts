@@ -110,6 +110,32 @@ describe("TimelineHost on an edit in the past", () => {
   });
 });
 
+describe("TimelineHost on a second edit while the first one's history is recomputed", () => {
+  it("recomputes up to the horizon the user had, not to where the first recomputation had got", () => {
+    // Audit (session 15): two quick edits at t = 0.5 of a history computed to 40 s left it at 11.66 s.
+    const { host, tasks, infos } = fakeHost();
+    host.handle({ id: 1, op: "compute", until: { time: 40 } });
+    while (tasks.length > 0) tasks.shift()!();
+    host.handle({ id: 2, op: "apply", actions: [{ time: 0.5, type: "giveVelocity", id: "d0", v: [1, 2] }] });
+    for (let i = 0; i < 3; i++) tasks.shift()!();
+    const partial = infos().at(-1)!;
+    expect(partial.horizon).toBeLessThan(40);
+    expect(partial.computing).toMatchObject({ targetTime: 40, restore: true });
+    host.handle({ id: 3, op: "apply", actions: [{ time: 0.6, type: "giveVelocity", id: "d1", v: [2, 1] }] });
+    expect(infos().at(-1)!.computing).toMatchObject({ targetTime: 40, restore: true });
+    while (tasks.length > 0) tasks.shift()!();
+    expect(infos().at(-1)!).toMatchObject({ horizon: 40, computing: null });
+  });
+
+  it("a computation asked as a restore (the editor's recompute after an undo) says so", () => {
+    const { host, infos } = fakeHost();
+    host.handle({ id: 1, op: "compute", until: { time: 5 }, restore: true });
+    expect(infos().at(-1)!.computing).toMatchObject({ targetTime: 5, restore: true });
+    host.handle({ id: 2, op: "compute", until: { time: 50 } });
+    expect(infos().at(-1)!.computing).toMatchObject({ targetTime: 50, restore: false });
+  });
+});
+
 describe("TimelineHost when the engine refuses to go on", () => {
   it("a Zeno state met while computing ends the computation with its message; the history stays readable", () => {
     const zeno = crushScene();

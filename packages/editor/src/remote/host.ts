@@ -10,7 +10,14 @@ import type { Action, SceneFile, Until } from "../engineTypes";
 import { errorInfo } from "./errors";
 import { eventPage, eventTicks, lastEventTime } from "./eventQueries";
 import { packFrame } from "./packFrame";
-import type { ComputeStatus, HostMessage, Request, RequestMessage, TimelineInfo } from "./protocol";
+import {
+  type ComputeStatus,
+  type HostMessage,
+  type Request,
+  type RequestMessage,
+  restoreTarget,
+  type TimelineInfo,
+} from "./protocol";
 import { EXACT_MAX_BODIES, EXACT_MAX_EVENTS, exactSeries, SeriesRecorder } from "./series";
 import type { TimelineFactory, TimelineLike } from "./timelineLike";
 import { markValidity } from "./validity";
@@ -33,8 +40,6 @@ const RECORD_EVERY_MS = 100;
 
 interface Job extends ComputeStatus {
   budget: number;
-  /** Recomputing the history an edit in the past cut, up to the horizon it had (applyAll). */
-  restore: boolean;
 }
 
 export interface HostEnv {
@@ -85,18 +90,23 @@ export class TimelineHost {
   private run(r: Request): unknown {
     switch (r.op) {
       case "load": {
+        // Where the user's history reached, read before the load replaces it (a second undo while
+        // the first one's history is recomputed must not cut it to the part recomputed so far).
+        const keep =
+          r.keepTo === undefined ? null : Math.max(r.keepTo, this.tl.horizon, restoreTarget(this.job));
         const tl = this.factory(r.scene);
         this.job = null;
         this.tl = tl;
         this.series.clear();
         this.changed(true);
+        if (keep !== null && keep > tl.horizon) this.startJob({ time: keep - tl.horizon }, true);
         return null;
       }
       case "apply":
         this.applyAll(r.actions);
         return null;
       case "compute":
-        this.startJob(r.until);
+        this.startJob(r.until, r.restore === true);
         return null;
       case "cancel":
         this.job = null;
@@ -144,7 +154,9 @@ export class TimelineHost {
 
   private applyAll(actions: Action[]): void {
     const before = this.tl.actions.slice();
-    const horizon = this.tl.horizon;
+    // Where the user's history reaches: past the horizon while an earlier edit's history is still
+    // being brought back (a second quick edit must not cut it to the part recomputed so far).
+    const horizon = Math.max(this.tl.horizon, restoreTarget(this.job));
     this.job = null;
     let applied = 0;
     this.series.cut(Math.min(...actions.map((a) => a.time)));

@@ -49,6 +49,17 @@ export interface ComputeStatus {
   /** Target horizon in seconds (null: none). */
   targetTime: number | null;
   startHorizon: number;
+  /**
+   * True when this computation brings back history the user already had (after an edit in the past,
+   * an undo, a redo or a rename): its targetTime is where the user's history reaches, although the
+   * horizon is still short of it.
+   */
+  restore: boolean;
+}
+
+/** The time a running restore computation brings the history back to (-Infinity when none runs). */
+export function restoreTarget(job: ComputeStatus | null): number {
+  return job?.restore && job.targetTime !== null ? job.targetTime : Number.NEGATIVE_INFINITY;
 }
 
 export interface TimelineInfo {
@@ -84,9 +95,15 @@ export interface SeriesPoint {
 }
 
 export type Request =
-  | { op: "load"; scene: SceneFile }
+  /**
+   * Replaces the scene. `keepTo` keeps the history the user had (an undo, a redo, a rename at the
+   * current time): the host then recomputes, as a restore, up to the later of `keepTo` and where
+   * the history reached before the load (its horizon, or the target of a restore still running).
+   */
+  | { op: "load"; scene: SceneFile; keepTo?: number }
   | { op: "apply"; actions: Action[] }
-  | { op: "compute"; until: Until | null }
+  /** `restore`: the computation brings back history the user had (see ComputeStatus.restore). */
+  | { op: "compute"; until: Until | null; restore?: boolean }
   | { op: "cancel" }
   /** The frame at t; `window` > 0 asks for motion-law intervals reaching up to window seconds around t. */
   | { op: "frame"; t: number; window: number }
