@@ -81,10 +81,13 @@ export const ROOTS_HOT_MODEL_SPAN = 2 ** -12;
 export const FAR_CONTACT_REACH = 1024;
 
 // ---- scene validation (owned by src/scene and src/timeline) ---------------------------------
-/** Relative slack when refusing overlaps at an edit: two discs overlap when their distance is below
- *  (r1 + r2)(1 − OVERLAP_REL) (a disc and a line or point: below r(1 − OVERLAP_REL)). Touching bodies
- *  are allowed, and so are the round-off overlaps (a few ulps) that collisions leave between bodies
- *  in contact, so that editing a resting body is not refused for round-off the engine produced. */
+/** Relative slack when refusing overlaps at an edit (the scene file's check and the World's own, the
+ *  same): two discs overlap when their distance is below (r1 + r2)(1 − OVERLAP_REL) (a disc and a
+ *  line or point: below r(1 − OVERLAP_REL)). Touching bodies are allowed, with the round-off of
+ *  their coordinates (discs packed sqrt(3) apart touch only to the last digit) and the round-off
+ *  overlaps (a few ulps) that collisions leave between bodies in contact, so that editing a resting
+ *  body is not refused for round-off the engine produced. Such a pair collides at once if it
+ *  approaches and never if it separates. */
 export const OVERLAP_REL = 1e-9;
 
 /**

@@ -101,7 +101,7 @@ export class Edits extends Placement {
     const x = requireFinite("x0", positionAt(t0, x0, vx, restoredLaw.ax, this.now));
     const y = requireFinite("y0", positionAt(t0, y0, vy, restoredLaw.ay, this.now));
     this.prepareGridFor(x, y, r);
-    if (checkOverlap) this.checkOverlap(x, y, r, -1, true);
+    if (checkOverlap) this.checkOverlap(x, y, r, -1);
     this.insertBody(id, r, m, mu, t0, x0, y0, vx, vy, x, y);
   }
 
@@ -157,7 +157,7 @@ export class Edits extends Placement {
       this.prepareGridFor(x, y, r);
       // Name the field that changed (a state passed back whole gives every key).
       const field = x !== this.xAt(s, now) ? "x" : y !== this.yAt(s, now) ? "y" : r !== b.r[s] ? "r" : "x";
-      this.checkOverlap(x, y, r, s, false, field);
+      this.checkOverlap(x, y, r, s, field);
     }
     b.r[s] = r;
     b.m[s] = m;

@@ -11,6 +11,9 @@ import { Simulator } from "./simulator.js";
 import type { LineState, PointState, Vec2 } from "./types.js";
 import { requireFields, requireId, requireLineKind, requireVec } from "./validate.js";
 
+/** Contact distances are shortened by this factor before testing an overlap (OVERLAP_REL's slack). */
+const KEEP = 1 - OVERLAP_REL;
+
 /** Below this many bodies an overlap check scans them all instead of using the grid. */
 const LINEAR_SCAN_BODIES = 64;
 
@@ -25,7 +28,9 @@ export class Placement extends Simulator {
     if (a[0] === c[0] && a[1] === c[1]) throw new ChapgameError("p2", "must differ from p1");
     const line = makeLine(id, a, c, kind);
     const hit = this.firstBodyWhere(
-      (s) => distanceToLine(line, this.xAt(s, this.now), this.yAt(s, this.now)) < (this.store.r[s] as number),
+      (s) =>
+        distanceToLine(line, this.xAt(s, this.now), this.yAt(s, this.now)) <
+        (this.store.r[s] as number) * KEEP,
     );
     if (hit !== undefined) throw new ChapgameError("p1", `the line would overlap body '${hit}'`);
     return line;
@@ -36,7 +41,7 @@ export class Placement extends Simulator {
     const hit = this.firstBodyWhere((s) => {
       const dx = this.xAt(s, this.now) - x;
       const dy = this.yAt(s, this.now) - y;
-      const r = this.store.r[s] as number;
+      const r = (this.store.r[s] as number) * KEEP;
       return dx * dx + dy * dy < r * r;
     });
     if (hit !== undefined) throw new ChapgameError("p", `the point would lie inside body '${hit}'`);
@@ -66,22 +71,17 @@ export class Placement extends Simulator {
   }
 
   /**
-   * Throw if a disc (x, y, r) would overlap any body (other than slot `self`), line or point. With
-   * `roundOff`, overlaps up to OVERLAP_REL of the contact distance are accepted: the round-off the
-   * engine's own collisions leave between bodies in contact (for restoring exact motions). The
-   * error names `field`: the edited field that made the overlap (an update that only grows r names r).
+   * Throw if a disc (x, y, r) would overlap any body (other than slot `self`), line or point by more
+   * than OVERLAP_REL of the contact distance: touching is allowed, with the round-off of its
+   * coordinates (discs packed at distances like sqrt(3) touch only to the last digit) and the
+   * round-off the engine's own collisions leave between bodies in contact; the scene file's check
+   * (scene/overlap.ts) uses the same slack. The error names `field`: the edited field that made the
+   * overlap (an update that only grows r names r).
    */
-  protected checkOverlap(
-    x: number,
-    y: number,
-    r: number,
-    self: number,
-    roundOff = false,
-    field: "x" | "y" | "r" = "x",
-  ): void {
+  protected checkOverlap(x: number, y: number, r: number, self: number, field: "x" | "y" | "r" = "x"): void {
     const b = this.store;
     const now = this.now;
-    const keep = roundOff ? 1 - OVERLAP_REL : 1;
+    const keep = KEEP;
     // Every overlap is found and the smallest id named, so the message does not depend on the
     // order bodies were added in or on the broad phase's scan order.
     let body: string | undefined;
