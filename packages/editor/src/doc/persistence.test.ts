@@ -26,11 +26,24 @@ describe("persistence", () => {
     expect(sceneFromHash("#other")).toBeNull();
   });
 
+  it("infinite masses survive the link (plain JSON would write them as null and the link be refused)", () => {
+    const wall: SceneFile = {
+      ...scene,
+      actions: [{ time: 0, type: "addBody", id: "w", x: 0, y: 0, r: 1, m: Number.POSITIVE_INFINITY }],
+    };
+    const back = decodeSceneFromUrl(encodeSceneForUrl(wall));
+    expect(back.actions).toHaveLength(1);
+    expect(back.actions[0]).toMatchObject({ id: "w", m: Number.POSITIVE_INFINITY });
+  });
+
   it("a damaged link code is refused with a plain message; a scene error still names the field", () => {
     for (const code of ["abc%%", "@@@@", encodeSceneForUrl(scene).slice(0, 40)])
       expect(() => decodeSceneFromUrl(code)).toThrow(/^the scene code after #scene= is damaged|^json: /);
     expect(() => decodeSceneFromUrl("abc%%")).toThrow("damaged or cut short");
-    const bad = encodeSceneForUrl({ ...scene, actions: [{ ...scene.actions[0]!, r: -1 } as never] });
+    // encodeSceneForUrl refuses such a scene itself: a link made elsewhere
+    const text = JSON.stringify({ ...scene, actions: [{ ...scene.actions[0]!, id: "a", r: -1 }] });
+    const bad = btoa(text).replace(/\+/g, "-").replace(/\//g, "_").replace(/=+$/, "");
+    expect(() => encodeSceneForUrl(JSON.parse(text))).toThrow("actions[0].r");
     expect(() => decodeSceneFromUrl(bad)).toThrow("actions[0].r");
   });
 });

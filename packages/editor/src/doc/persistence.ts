@@ -3,10 +3,16 @@
  * decode. (The autosave is in autosaveSlots.ts.)
  */
 import type { SceneFile } from "../engineTypes";
-import { parseSceneText } from "./sceneIo";
+import { parseSceneText, sceneText } from "./sceneIo";
 
+/**
+ * The link code of a scene: its scene-file text (serializeScene writes infinite masses as
+ * "Infinity", which plain JSON.stringify turned into null: audit of session 15), without the
+ * file's indentation.
+ */
 export function encodeSceneForUrl(scene: SceneFile): string {
-  const bytes = new TextEncoder().encode(JSON.stringify(scene));
+  const compact = JSON.stringify(JSON.parse(sceneText(scene)));
+  const bytes = new TextEncoder().encode(compact);
   let bin = "";
   for (const b of bytes) bin += String.fromCharCode(b);
   return btoa(bin).replace(/\+/g, "-").replace(/\//g, "_").replace(/=+$/, "");
