@@ -36,7 +36,9 @@ export const USAGE = `Usage:
       "idle" (no event and no action left). An idle run's bodies are printed at T with
       --until-time (they may still glide), else at its last event or action. Without
       --until-time and --max-events a scene that never comes to rest (elastic balls bouncing
-      under gravity) runs until interrupted: give a bound.
+      under gravity) runs until interrupted: give a bound. A scene the exact model cannot
+      continue (a Zeno state) prints the result up to where it stopped, with "reason": "error"
+      and "error": why, and exits with status 2.
   chapgame state SCENE --at T [--events] [--progress]
       Print the bodies at time T as JSON.
   chapgame --help
@@ -46,7 +48,8 @@ SCENE is a scene file (format "chapgame", version 1), or - for standard input.
 --events adds the event log (kept in memory: bound long runs).
 --progress reports progress on stderr, one line per 200,000 events (it is on by itself, on one
 updating line, when stderr is a terminal).
-Exit status: 0 success, 2 invalid input, 1 internal error or a result that could not be written.`;
+Exit status: 0 success, 2 invalid input or a scene that cannot be continued, 1 internal error or
+a result that could not be written.`;
 
 /** A time as written in decimal (12.5, .5, 3., 1e-3); Number() alone also takes 0x10 and 0b11. */
 const DECIMAL_TIME = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;

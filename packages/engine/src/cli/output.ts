@@ -1,6 +1,6 @@
 /**
- * writeResult(tl, time, withLog, write, reason, chunk): the CLI's JSON result (time, why the run
- * stopped when `reason` is given, events, counts, the bodies at `time`, and with withLog the event
+ * writeResult(tl, time, withLog, write, end, chunk): the CLI's JSON result (time, why the run
+ * stopped when `end` is given, events, counts, the bodies at `time`, and with withLog the event
  * log up to `time`), pretty-printed exactly as
  * JSON.stringify(result, …, 2) would, but written in pieces: the log goes out `chunk` events at a
  * time (Timeline.eventRange), so a long log is never one string (V8 caps a string at about 2^29
@@ -28,18 +28,24 @@ function indent(json: string, pad: string): string {
   return json.replaceAll("\n", `\n${pad}`);
 }
 
+/**
+ * Why a simulate run stopped: the Timeline's reason, or "error" when the engine could not continue
+ * (a Zeno state); `error` then says why, and the result is the history up to where it stopped.
+ */
+export type RunEnd = { reason: ProlongResult["reason"] } | { reason: "error"; error: string };
+
 export function writeResult(
   tl: Timeline,
   time: number,
   withLog: boolean,
   write: (text: string) => void,
-  reason?: ProlongResult["reason"],
+  end?: RunEnd,
   chunk = LOG_CHUNK_EVENTS,
 ): void {
   const c = tl.counts();
   const head = {
     time,
-    ...(reason === undefined ? {} : { reason }),
+    ...end,
     events: c.bodyBody + c.bodyLine + c.bodyPoint + c.stop,
     counts: { bodyBody: c.bodyBody, bodyLine: c.bodyLine, bodyPoint: c.bodyPoint, stop: c.stop },
     bodies: tl

@@ -94,7 +94,32 @@ describe("runCli in-process", () => {
         `${String.fromCharCode(27)}[Kchapgame: gas.json: cannot simulate this scene: body 'rest'`,
       ),
     ).toBe(true);
-    expect(out.stdout).toBe("");
+    expect(JSON.parse(out.stdout)).toMatchObject({
+      reason: "error",
+      error: expect.stringMatching(/^body 'rest'/),
+    });
+  });
+
+  it("a run the engine cannot continue prints the result up to where it stopped, then exits 2", () => {
+    // Audit of session 15: exit 2 and nothing on stdout, so the events computed before were lost.
+    // a disc bounces between two walls; at t = 5 gravity comes on under a disc resting on a floor
+    const scene = [
+      { time: 0, type: "addLine", id: "left", p1: [-10, -5], p2: [-10, 5], kind: "line" },
+      { time: 0, type: "addLine", id: "right", p1: [10, -5], p2: [10, 5], kind: "line" },
+      { time: 0, type: "addLine", id: "floor", p1: [-50, -100], p2: [-30, -100], kind: "segment" },
+      { time: 0, type: "addBody", id: "ball", x: 0, y: 0, r: 1, m: 1, v: [9, 0] },
+      { time: 0, type: "addBody", id: "rest", x: -40, y: -99, r: 1, m: 1 },
+      { time: 5, type: "setGlobal", gravity: [0, -1] },
+    ];
+    const { cli, out } = io({ "rest.json": sceneText(scene) });
+    expect(runCli(["simulate", "rest.json", "--events"], cli)).toBe(2);
+    expect(out.stderr).toMatch(/^chapgame: rest\.json: cannot simulate this scene: body 'rest' rests .*\n$/);
+    const result = JSON.parse(out.stdout);
+    const why = out.stderr.replace("chapgame: rest.json: cannot simulate this scene: ", "").trim();
+    expect(result).toMatchObject({ reason: "error", error: why, time: 5, events: 3 });
+    // the ball meets a wall every 2 s from t = 1: the collisions up to the failure are all there
+    const hits = result.log.filter((e: { type: string }) => e.type === "bodyLine");
+    expect(hits.map((e: { time: number }) => e.time)).toEqual([1, 3, 5]);
   });
 
   it("simulate --until-time T stops at T when an action is still scheduled after T (it printed t = 0)", () => {

@@ -3,7 +3,8 @@
  * tested in-process and main.ts stays a thin wrapper). Returns the exit status: 0 success, 2 invalid
  * input (bad arguments, unreadable or invalid scene, a scene the exact model cannot continue), 1 an
  * internal error or a result that could not be written (OutputError). Errors are one line on
- * stderr, without a stack trace.
+ * stderr, without a stack trace. A simulate run the engine cannot continue still prints the result
+ * up to where it stopped, with "reason": "error" and the message in "error", then exits with 2.
  */
 import { parseScene, printable } from "../scene/parse.js";
 import type { Until } from "../scene/types.js";
@@ -108,8 +109,17 @@ export function runCli(argv: readonly string[], io: CliIO): number {
       compute(tl, { time: cmd.at }, mode, io);
       writeResult(tl, cmd.at, cmd.events, (text) => io.stdout(text));
     } else {
-      const { time, reason } = simulate(tl, cmd, mode, io);
-      writeResult(tl, time, cmd.events, (text) => io.stdout(text), reason);
+      let end: { time: number; reason: ProlongResult["reason"] };
+      try {
+        end = simulate(tl, cmd, mode, io);
+      } catch (e) {
+        // The engine cannot continue (a Zeno state): what was computed up to it is a result too.
+        if (!(e instanceof SimulationError)) throw e;
+        const error = printable(e.message);
+        writeResult(tl, tl.horizon, cmd.events, (text) => io.stdout(text), { reason: "error", error });
+        throw e;
+      }
+      writeResult(tl, end.time, cmd.events, (text) => io.stdout(text), { reason: end.reason });
     }
     return 0;
   } catch (e) {

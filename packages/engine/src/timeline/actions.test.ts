@@ -85,6 +85,19 @@ describe("actions and their validation against the simulated state", () => {
     expect(() => Timeline.fromScene(s)).toThrow('actions[1]: body "b" would overlap body "a" at time 3');
   });
 
+  it("a file's actions are named by their place in the file, also when a later prolong applies them (compute: false)", () => {
+    // Audit of session 15: the CLI (compute: false) named actions[2] for the file's actions[0].
+    const s = scene([disc("b", 10, 0, [0, 0], 1), disc("a", 0, 0, [10, 0])]);
+    expect(() => Timeline.fromScene(s)).toThrow('actions[0]: body "b" would overlap body "a" at time 1');
+    const lazy = Timeline.fromScene(s, { compute: false });
+    expect(() => lazy.prolongTo(2)).toThrow('actions[0]: body "b" would overlap body "a" at time 1');
+    // after an apply, indices are those of tl.actions (time order) again
+    const applied = Timeline.fromScene(s, { compute: false });
+    applied.apply({ time: 0, type: "addPoint", id: "p", p: [0, 50] });
+    expect(applied.actions[2]).toMatchObject({ type: "addBody", id: "b" });
+    expect(() => applied.prolongTo(2)).toThrow('actions[2]: body "b" would overlap body "a" at time 1');
+  });
+
   it("setActions is atomic: an invalid list leaves the timeline as it was", () => {
     const tl = moving();
     tl.prolongTo(5);

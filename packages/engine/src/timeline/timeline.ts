@@ -193,13 +193,17 @@ export class Timeline extends TimelineReader {
   /** Replace the whole action list (undo/redo, paste), atomically, recomputing up to at least the
    *  current horizon. Only the part after the first changed action is recomputed (from the last World
    *  keyframe before it). A refused action throws SceneError naming `actions[i]` (its index in the
-   *  list given), a Zeno state before the horizon SimulationError; either way nothing changes. */
+   *  list given, also when a later prolong applies it), a Zeno state before the horizon
+   *  SimulationError; either way nothing changes. */
   setActions(actions: readonly Action[]): void {
     const checked = checkActionList(actions).map((a, i) => freezeAction(checkAction(a, `actions[${i}]`)));
     const order = applyOrder(checked);
     const sorted = order.map((i) => checked[i] as Action);
     const c = this.core;
     const oldHorizon = c.horizon;
+    // Actions are named by their index in the list given, also when a later prolong applies them
+    // (with compute: false, as the CLI runs a file): a file's actions[0] is its first action, not
+    // the earliest. The next apply() names them by their index in `actions` again.
     const pathOf = (k: number) => `actions[${order[k]}]`;
     const k = c.history && c.eager ? restartKeyframe(c.acts, c.keyframes, sorted) : 0;
     if (k > 0) {
@@ -211,7 +215,6 @@ export class Timeline extends TimelineReader {
         reopenGoals(c);
         c.goals.push({ tLimit: oldHorizon, eLimit: INF });
         c.drive(INF, null);
-        c.pathOf = (i) => `actions[${i}]`;
       } catch (e) {
         undo();
         throw e;
@@ -223,7 +226,6 @@ export class Timeline extends TimelineReader {
       core.pathOf = pathOf;
       if (core.eager && oldHorizon > 0) core.goals.push({ tLimit: oldHorizon, eLimit: INF });
       core.drive(INF, null);
-      core.pathOf = (i) => `actions[${i}]`;
       this.core = core;
     }
     this.slice = null;
