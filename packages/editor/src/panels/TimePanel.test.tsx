@@ -40,6 +40,29 @@ describe("TimePanel time field", () => {
   });
 });
 
+describe("TimePanel time field, negative times", () => {
+  it("a negative time is refused with a message naming the field (it went to 0 without a word)", async () => {
+    const { editor, field } = await renderPanel();
+    act(() => editor.setTime(1.25));
+    field.focus();
+    fireEvent.change(field, { target: { value: " -3 " } });
+    await act(async () => {
+      fireEvent.keyDown(field, { key: "Enter" });
+    });
+    expect(editor.ui.getState().t).toBe(1.25);
+    expect(editor.ui.getState().message).toEqual({
+      text: 'Time (s): must be 0 or later, got "-3"',
+      tone: "error",
+    });
+    // -0 is 0.
+    fireEvent.change(field, { target: { value: "-0" } });
+    await act(async () => {
+      fireEvent.keyDown(field, { key: "Enter" });
+    });
+    expect(editor.ui.getState().t).toBe(0);
+  });
+});
+
 describe("TimePanel", () => {
   it("paused, the slider and the time field show every time exactly and at once", async () => {
     const { editor, slider, field } = await renderPanel();

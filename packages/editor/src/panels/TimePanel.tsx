@@ -49,15 +49,16 @@ export function TimePanel() {
   const commitDraft = () => {
     if (draft === null) return;
     const x = parseNumber(draft);
-    if (x !== null && Number.isFinite(x)) void editor.goTo(x);
-    // It was dropped without a word (audit): say why the time did not move.
-    else
-      editor.ui.setState({
-        message: {
-          text: `Time (s): must be a finite number of seconds, got "${draft.trim()}"`,
-          tone: "error",
-        },
-      });
+    // Text that is not a time was dropped without a word, a negative time went to 0 without one
+    // (audit): say why the time did not move.
+    const why =
+      x === null || !Number.isFinite(x)
+        ? "must be a finite number of seconds"
+        : x < 0
+          ? "must be 0 or later"
+          : null;
+    if (why === null) void editor.goTo(x as number);
+    else editor.ui.setState({ message: { text: `Time (s): ${why}, got "${draft.trim()}"`, tone: "error" } });
     setDraft(null);
   };
 
