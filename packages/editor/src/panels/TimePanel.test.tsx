@@ -123,6 +123,21 @@ describe("TimePanel", () => {
     }
   });
 
+  it("an edit in the past moves the event ticks at once (they stayed stale for up to a second)", async () => {
+    const { editor, slider } = await renderPanel();
+    // The times the ticks stand for (their x over the slider's horizon, rounded to 1 ms).
+    const ticks = () =>
+      [...document.querySelectorAll("svg.ticks line")].map(
+        (l) => Math.round(Number(l.getAttribute("x1")) * Number(slider.max)) / 1000,
+      );
+    await waitFor(() => expect(ticks()).toEqual([0, 1])); // the cradle's actions, its collisions at t = 1
+    // Twice as fast, the striker meets c1 at t = 0.5; edited just after the first ticks were read.
+    await act(async () => {
+      expect(await editor.updateBody("striker", { v: [8, 0] })).toBeNull();
+    });
+    await waitFor(() => expect(ticks()).toEqual([0, 0.5]), { timeout: 400 });
+  });
+
   it("a time typed past the horizon is computed and then shown (not cut to the horizon)", async () => {
     const { editor, field } = await renderPanel();
     expect(editor.client.getSnapshot().horizon).toBe(10);

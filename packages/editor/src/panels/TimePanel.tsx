@@ -26,11 +26,15 @@ export function TimePanel() {
   const t = useShownTime();
   const horizon = useInfoValue((i) => i.horizon);
   const revision = useInfoValue((i) => i.revision);
+  const docRevision = useInfoValue((i) => i.docRevision);
+  // Throttled while a computation extends the history; at once when the scene itself changes (an
+  // edit in the past moves the ticks after it, which stayed stale for up to TICKS_EVERY_MS).
   const ticks = useRefreshed(
     () => (revision < 0 ? Promise.resolve([]) : editor.client.ticks(TICKS)),
     String(revision),
     NO_TICKS,
     TICKS_EVERY_MS,
+    String(docRevision),
   );
   /** The text typed in the time field (null: nothing typed; the field shows the current time). */
   const [draft, setDraft] = useState<string | null>(null);
