@@ -11,6 +11,7 @@ import { nextFreeId } from "./doc/ids";
 import { EditorTime } from "./editorTime";
 import type { Action, SceneFile, Vec2 } from "./engineTypes";
 import type { TimelineClient } from "./remote/client";
+import { dropStaleHighlight } from "./store/highlightGuard";
 import { dropStaleSelection } from "./store/selectionGuard";
 import type { UiStore } from "./store/uiStore";
 
@@ -30,6 +31,8 @@ export class Editor extends EditorTime {
     super(client, ui);
     // A selection whose object an undo, a load or a rewrite removed is dropped.
     dropStaleSelection(ui, client);
+    // The participants of a clicked Event-log entry stay lit only while the time stays at it.
+    dropStaleHighlight(ui);
   }
 
   /** Edits carry no `until`: the host computes ahead in slices (Calculation settings) after them. */

@@ -1,22 +1,36 @@
 /**
  * EditorTime: the time controls of an Editor (editor.ts), over its EditorSession: the current time
  * (kept within [0, horizon]), going to a typed time (computing up to it first when it lies past the
- * horizon), stepping from event to event, play/pause and the playback speed. None of them is an edit:
+ * horizon), stepping from event to event (computing ahead to the next event past the horizon), play
+ * and pause (saying why playback cannot start) and the playback speed. None of them is an edit:
  * nothing here is recorded in the undo history.
  */
 
 import { EditorSession } from "./editorSession";
 
+/** A time as messages write it (6 significant digits). */
+const shown = (t: number): number => Number(t.toPrecision(6));
+
 export class EditorTime extends EditorSession {
+  /** The tail of the chain of event steps (see stepEvent). */
+  private steps: Promise<void> = Promise.resolve();
+  /** How many times the user cancelled a computation (Cancel): tells a cancelled one from one done. */
+  private cancels = 0;
+
   setTime(t: number): void {
     const h = this.client.getSnapshot().horizon;
     this.ui.setState({ t: Math.min(Math.max(t, 0), h) });
   }
 
+  override cancelCompute(): void {
+    this.cancels++;
+    super.cancelCompute();
+  }
+
   /**
    * Goes to time t (a typed time). Past the horizon it computes up to t first and then goes there
-   * (cut to the horizon if that computation is cancelled or refused). When the user moves the time
-   * or edits the scene while it computes, the time stays where they are.
+   * (cut to the horizon if that computation is cancelled, which is said, or refused). When the user
+   * moves the time or edits the scene while it computes, the time stays where they are.
    */
   async goTo(t: number): Promise<void> {
     const h = this.client.getSnapshot().horizon;
@@ -27,6 +41,7 @@ export class EditorTime extends EditorSession {
     this.ui.setState({ playing: false });
     const from = this.ui.getState().t;
     const docRevision = this.client.getSnapshot().docRevision;
+    const cancels = this.cancels;
     try {
       await this.client.compute({ time: t - h });
     } catch (e) {
@@ -35,41 +50,116 @@ export class EditorTime extends EditorSession {
     }
     await this.whenComputed();
     if (this.ui.getState().t !== from || this.client.getSnapshot().docRevision !== docRevision) return;
+    const horizon = this.client.getSnapshot().horizon;
+    if (horizon < t && this.cancels !== cancels)
+      this.info(`Computation cancelled at t = ${shown(horizon)} s; showing the end of the computed history.`);
     this.setTime(t);
   }
 
-  /** Resolves when the worker runs no computation. */
-  private whenComputed(): Promise<void> {
+  /**
+   * Resolves when the worker runs no computation, or earlier once `enough` holds (checked on every
+   * change of the timeline and of the UI store).
+   */
+  private whenComputed(enough: () => boolean = () => false): Promise<void> {
     return new Promise((resolve) => {
       const check = () => {
-        if (this.client.getSnapshot().computing !== null) return;
+        if (this.client.getSnapshot().computing !== null && !enough()) return;
         off();
+        offUi();
         resolve();
       };
       const off = this.client.subscribe(check);
+      const offUi = this.ui.subscribe(check);
       check();
     });
   }
 
-  /** Steps to the next or previous event; when there is none, says so. */
-  async stepEvent(direction: 1 | -1): Promise<void> {
-    const t = this.now();
-    const next = direction > 0 ? await this.client.nextEvent(t) : await this.client.prevEvent(t);
-    if (next !== null) this.ui.setState({ t: next, playing: false });
-    else {
-      const at = Number(t.toPrecision(6));
-      const h = Number(this.client.getSnapshot().horizon.toPrecision(6));
-      this.info(
-        direction > 0
-          ? `No event after t = ${at} s up to the computed horizon (${h} s).`
-          : `No event before t = ${at} s.`,
-      );
-    }
+  /**
+   * Steps to the next or previous event and pauses; when there is none, says so. Steps run one after
+   * another, each from the current time when it starts: where the previous step landed (quick
+   * presses of → step one event each), or where the user has moved the time since. A step lands
+   * only if the time and the scene did not change while it waited for the worker.
+   */
+  stepEvent(direction: 1 | -1): Promise<void> {
+    const run = this.steps.then(() => this.step(direction));
+    this.steps = run.catch(() => undefined);
+    return run;
   }
 
+  private async step(direction: 1 | -1): Promise<void> {
+    const t = this.now();
+    const docRevision = this.client.getSnapshot().docRevision;
+    this.ui.setState({ playing: false });
+    const moved = () => this.now() !== t || this.client.getSnapshot().docRevision !== docRevision;
+    let next: number | null;
+    try {
+      next = direction > 0 ? await this.client.nextEvent(t) : await this.client.prevEvent(t);
+      if (next === null && direction > 0 && !moved()) next = await this.eventAhead(t, moved);
+    } catch (e) {
+      this.fail(e);
+      return;
+    }
+    if (moved()) return;
+    if (next !== null) this.ui.setState({ t: next });
+    else if (direction < 0) this.info(`No event before t = ${shown(t)} s.`);
+  }
+
+  /**
+   * The first event after t when none is computed up to the horizon: waits for a running
+   * computation (until it logs an event after t), then computes ahead one event at a time (progress
+   * and Cancel as for any computation) until one lies after t. Null when there is none, after saying
+   * why (nothing more happens, the engine stopped, the computation was cancelled), or when the user
+   * moved the time or edited the scene meanwhile (the caller checks).
+   */
+  private async eventAhead(t: number, moved: () => boolean): Promise<number | null> {
+    const cancels = this.cancels;
+    const enough = () => {
+      const last = this.client.getSnapshot().lastEventTime;
+      return moved() || (last !== null && last > t);
+    };
+    for (let running = this.client.getSnapshot().computing !== null; ; running = true) {
+      if (running) {
+        await this.whenComputed(enough);
+        if (moved()) return null;
+        const next = await this.client.nextEvent(t);
+        if (next !== null) return next;
+      }
+      const info = this.client.getSnapshot();
+      if (info.idle || info.stopped !== null || this.cancels !== cancels) break;
+      // `events` counts collisions and stops from the horizon (actions before them are applied on
+      // the way); events at the horizon's own time can take more than one round.
+      await this.client.compute({ events: 1 });
+    }
+    const info = this.client.getSnapshot();
+    const at = shown(t);
+    const h = shown(info.horizon);
+    if (info.stopped !== null)
+      this.ui.setState({
+        message: {
+          text: `No event after t = ${at} s: the computation stopped at t = ${h} s: ${info.stopped}`,
+          tone: "error",
+        },
+      });
+    else if (info.idle) this.info(`No event after t = ${at} s: nothing more happens in this scene.`);
+    else this.info(`No event after t = ${at} s up to t = ${h} s: the computation was cancelled.`);
+    return null;
+  }
+
+  /** Plays or pauses. */
   togglePlay(): void {
+    if (this.ui.getState().playing) this.ui.setState({ playing: false });
+    else this.play();
+  }
+
+  /** Starts playback at the current speed; says why when it would stop at once. */
+  play(): void {
     const s = this.ui.getState();
-    this.ui.setState({ playing: !s.playing });
+    // Backwards from 0 the playback clock (playback.ts) stops at the first frame: it did nothing.
+    if (s.speed < 0 && s.t <= 0) {
+      this.info("Playing backwards from t = 0: nothing before it. Set a positive speed to play forwards.");
+      return;
+    }
+    this.ui.setState({ playing: true });
   }
 
   setSpeed(speed: number): void {

@@ -97,3 +97,27 @@ describe("BodiesTable order", () => {
     expect(shown).toEqual(["ball1", "ball2", "ball9", "ball10", "ball11", "cue"]);
   });
 });
+
+describe("BodiesTable selection", () => {
+  it("opening a cell of a row selects its body (the row's click was lost: the edited disc was not lit)", async () => {
+    const h = testEditor();
+    await h.editor.loadScene(
+      sceneOf([
+        { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 },
+        { time: 0, type: "addBody", id: "b", x: 5, y: 0, r: 1, m: 1 },
+      ]),
+      { undoable: false },
+    );
+    await settled(h.client);
+    const table = renderTable(h.editor);
+    await waitFor(() => expect(within(table).getByLabelText("b x").textContent).toBe("5"));
+    // A pointer press focuses the cell, which opens it at once; the click that follows lands on the
+    // input that replaced the button, not on the row: focus alone must select.
+    act(() => within(table).getByRole("button", { name: "b x" }).focus());
+    expect(within(table).getByRole("textbox", { name: "b x" })).toBeTruthy();
+    expect(h.editor.ui.getState().selection).toEqual({ kind: "body", id: "b" });
+    fireEvent.keyDown(within(table).getByRole("textbox", { name: "b x" }), { key: "Escape" });
+    act(() => within(table).getByRole("button", { name: "a id" }).focus());
+    expect(h.editor.ui.getState().selection).toEqual({ kind: "body", id: "a" });
+  });
+});

@@ -1,8 +1,9 @@
 /**
  * The Bodies table: id, x, y, vx, vy, |v|, r, m, μ of every body at the current time (live while
  * playing, refreshed a few times a second). Every cell is editable; an edit is an action at the
- * current time; refused values show the engine's message in place. Rows select bodies, listed in
- * natural id order (ball2 before ball10). Only the rows in view are rendered (useRowWindow).
+ * current time; refused values show the engine's message in place. Rows select bodies (clicked, or a
+ * cell of theirs focused or opened), listed in natural id order (ball2 before ball10). Only the rows
+ * in view are rendered (useRowWindow).
  */
 import { type ReactNode, useRef } from "react";
 import { freeSpot } from "../canvas/freeSpot";
@@ -71,7 +72,10 @@ export function BodiesTable() {
         key={id}
         aria-selected={id === selectedId}
         className={id === selectedId ? "selected" : undefined}
+        // Focusing a cell selects the body too: a cell opens on focus (its input replaces the button
+        // under the pointer), so the row's click was lost and the disc being edited was not lit.
         onClick={() => editor.ui.setState({ selection: { kind: "body", id } })}
+        onFocus={() => editor.ui.setState({ selection: { kind: "body", id } })}
       >
         <td>
           <EditableCell

@@ -125,6 +125,30 @@ describe("EventLog", () => {
     expect(h.editor.ui.getState().highlight).toEqual(["line:w"]);
   });
 
+  it("the participants of a clicked entry stay lit only while the time stays at it (→ moved on, the canvas kept them)", async () => {
+    // a (v = 4) meets the segment w at t = 2.25, then the point q at t = 6.75.
+    const h = testEditor();
+    await h.editor.loadScene(
+      sceneOf([
+        { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [4, 0] },
+        { time: 0, type: "addLine", id: "w", p1: [10, -5], p2: [10, 5], kind: "segment" },
+        { time: 0, type: "addPoint", id: "q", p: [-10, 0] },
+      ]),
+      { undoable: false },
+    );
+    await settled(h.client);
+    const log = renderLog(h.editor);
+    fireEvent.click((await within(log).findByText("body–line")).closest("tr")!);
+    expect(h.editor.ui.getState()).toMatchObject({ t: 2.25, highlight: ["body:a", "line:w"] });
+    await act(() => h.editor.stepEvent(1));
+    expect(h.editor.ui.getState()).toMatchObject({ t: 6.75, highlight: [] });
+    // Clicking another entry moves the time and lights that entry's participants.
+    fireEvent.click((await within(log).findByText("body–point")).closest("tr")!);
+    expect(h.editor.ui.getState()).toMatchObject({ t: 6.75, highlight: ["body:a", "point:q"] });
+    fireEvent.click((await within(log).findByText("body–line")).closest("tr")!);
+    expect(h.editor.ui.getState()).toMatchObject({ t: 2.25, highlight: ["body:a", "line:w"] });
+  });
+
   it("highlightOf: every participant with its kind; an action's object; nothing for setGlobal", () => {
     const base = { time: 1, point: null, normal: null, impulse: null };
     expect(highlightOf({ ...base, type: "bodyBody", ids: ["a", "b"] })).toEqual(["body:a", "body:b"]);

@@ -1,7 +1,8 @@
 /**
  * Shared pieces of the Lines and Points tables.
- * - ObjectRow: a row that selects its object when clicked and is marked while selected. It starts
- *   with the editable id cell (a rename is one undo step) and ends with the ✕ button.
+ * - ObjectRow: a row that selects its object when clicked or when one of its cells is focused (a
+ *   cell opening to be edited), and is marked while selected. It starts with the editable id cell
+ *   (a rename is one undo step) and ends with the ✕ button.
  * - CoordinateCell: one coordinate of a point, editable. Text that is not a number is refused in
  *   place and names the field. A number commits the point with that one coordinate replaced.
  */
@@ -27,6 +28,8 @@ export function ObjectRow({
       aria-selected={hot}
       className={hot ? "selected" : undefined}
       onClick={() => editor.ui.setState({ selection: { kind, id } })}
+      // A cell opens on focus (its input replaces the button under the pointer), losing the click.
+      onFocus={() => editor.ui.setState({ selection: { kind, id } })}
     >
       <td>
         <EditableCell label={`${id} id`} value={id} size={5} onCommit={(t) => editor.rename(kind, id, t)} />

@@ -69,4 +69,13 @@ describe("Lines and Points tables", () => {
     expect(editor.ui.getState().selection).toEqual({ kind: "point", id: pointId });
     await waitFor(() => expect(row.getAttribute("aria-selected")).toBe("true"));
   });
+
+  it("opening a cell of a row selects its object (the row's click was lost to the opened input)", async () => {
+    const { editor, pointId, lineId } = await setup();
+    act(() => screen.getByRole("button", { name: `${lineId} x2` }).focus());
+    expect(screen.getByRole("textbox", { name: `${lineId} x2` })).toBeTruthy();
+    expect(editor.ui.getState().selection).toEqual({ kind: "line", id: lineId });
+    act(() => screen.getByRole("button", { name: `${pointId} x` }).focus());
+    expect(editor.ui.getState().selection).toEqual({ kind: "point", id: pointId });
+  });
 });

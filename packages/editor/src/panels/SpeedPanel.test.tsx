@@ -40,4 +40,16 @@ describe("SpeedPanel", () => {
     type(field, "0");
     expect(editor.ui.getState().speed).toBe(0);
   });
+
+  it("Reverse (−1×) at t = 0 says why nothing plays instead of doing nothing", () => {
+    const { editor } = testEditor();
+    render(
+      <EditorContext.Provider value={editor}>
+        <SpeedPanel />
+      </EditorContext.Provider>,
+    );
+    fireEvent.click(screen.getByRole("button", { name: "Reverse" }));
+    expect(editor.ui.getState()).toMatchObject({ speed: -1, playing: false });
+    expect(editor.ui.getState().message?.text).toMatch(/^Playing backwards from t = 0: nothing before it/);
+  });
 });

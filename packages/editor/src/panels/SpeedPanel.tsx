@@ -28,7 +28,7 @@ export function SpeedPanel() {
   };
   const play = (s: number) => {
     editor.setSpeed(s);
-    editor.ui.setState({ playing: true });
+    editor.play();
   };
   return (
     <section className="panel" aria-labelledby="speed-title">

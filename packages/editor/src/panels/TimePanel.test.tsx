@@ -40,6 +40,29 @@ describe("TimePanel time field", () => {
   });
 });
 
+describe("TimePanel time field, negative times", () => {
+  it("a negative time is refused with a message naming the field (it went to 0 without a word)", async () => {
+    const { editor, field } = await renderPanel();
+    act(() => editor.setTime(1.25));
+    field.focus();
+    fireEvent.change(field, { target: { value: " -3 " } });
+    await act(async () => {
+      fireEvent.keyDown(field, { key: "Enter" });
+    });
+    expect(editor.ui.getState().t).toBe(1.25);
+    expect(editor.ui.getState().message).toEqual({
+      text: 'Time (s): must be 0 or later, got "-3"',
+      tone: "error",
+    });
+    // -0 is 0.
+    fireEvent.change(field, { target: { value: "-0" } });
+    await act(async () => {
+      fireEvent.keyDown(field, { key: "Enter" });
+    });
+    expect(editor.ui.getState().t).toBe(0);
+  });
+});
+
 describe("TimePanel", () => {
   it("paused, the slider and the time field show every time exactly and at once", async () => {
     const { editor, slider, field } = await renderPanel();
@@ -98,6 +121,21 @@ describe("TimePanel", () => {
     } finally {
       clearInterval(reports);
     }
+  });
+
+  it("an edit in the past moves the event ticks at once (they stayed stale for up to a second)", async () => {
+    const { editor, slider } = await renderPanel();
+    // The times the ticks stand for (their x over the slider's horizon, rounded to 1 ms).
+    const ticks = () =>
+      [...document.querySelectorAll("svg.ticks line")].map(
+        (l) => Math.round(Number(l.getAttribute("x1")) * Number(slider.max)) / 1000,
+      );
+    await waitFor(() => expect(ticks()).toEqual([0, 1])); // the cradle's actions, its collisions at t = 1
+    // Twice as fast, the striker meets c1 at t = 0.5; edited just after the first ticks were read.
+    await act(async () => {
+      expect(await editor.updateBody("striker", { v: [8, 0] })).toBeNull();
+    });
+    await waitFor(() => expect(ticks()).toEqual([0, 0.5]), { timeout: 400 });
   });
 
   it("a time typed past the horizon is computed and then shown (not cut to the horizon)", async () => {

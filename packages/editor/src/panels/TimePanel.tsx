@@ -27,11 +27,15 @@ export function TimePanel() {
   const horizon = useInfoValue((i) => i.horizon);
   const revision = useInfoValue((i) => i.revision);
   const computing = useInfoValue((i) => i.computing !== null);
+  const docRevision = useInfoValue((i) => i.docRevision);
+  // Throttled while a computation extends the history; at once when the scene itself changes (an
+  // edit in the past moves the ticks after it, which stayed stale for up to TICKS_EVERY_MS).
   const ticks = useRefreshed(
     () => (revision < 0 ? Promise.resolve([]) : editor.client.ticks(TICKS)),
     String(revision),
     NO_TICKS,
     TICKS_EVERY_MS,
+    String(docRevision),
   );
   /** The text typed in the time field (null: nothing typed; the field shows the current time). */
   const [draft, setDraft] = useState<string | null>(null);
@@ -50,15 +54,16 @@ export function TimePanel() {
   const commitDraft = () => {
     if (draft === null) return;
     const x = parseNumber(draft);
-    if (x !== null && Number.isFinite(x)) void editor.goTo(x);
-    // It was dropped without a word (audit): say why the time did not move.
-    else
-      editor.ui.setState({
-        message: {
-          text: `Time (s): must be a finite number of seconds, got "${draft.trim()}"`,
-          tone: "error",
-        },
-      });
+    // Text that is not a time was dropped without a word, a negative time went to 0 without one
+    // (audit): say why the time did not move.
+    const why =
+      x === null || !Number.isFinite(x)
+        ? "must be a finite number of seconds"
+        : x < 0
+          ? "must be 0 or later"
+          : null;
+    if (why === null) void editor.goTo(x as number);
+    else editor.ui.setState({ message: { text: `Time (s): ${why}, got "${draft.trim()}"`, tone: "error" } });
     setDraft(null);
   };
 

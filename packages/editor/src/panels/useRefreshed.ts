@@ -4,6 +4,8 @@
  * At most one request is in flight and requests start at most every `intervalMs`; after the inputs
  * last changed, one more request is always made, so the value ends on the latest inputs. Every reply
  * is shown, even one made for inputs that have changed since: it is newer than what is on screen.
+ * A change of `urgent` (optional: a string that changes with the inputs that must show at once, such
+ * as the scene itself) skips the wait: the next request starts as soon as none is in flight.
  *
  * A debounce (restart a timer and drop the pending reply on every change) does not do: while the
  * worker computes it reports progress every 50 ms, each report is a change, and a panel that waited
@@ -11,7 +13,13 @@
  */
 import { useEffect, useRef, useState } from "react";
 
-export function useRefreshed<T>(query: () => Promise<T>, key: string, initial: T, intervalMs: number): T {
+export function useRefreshed<T>(
+  query: () => Promise<T>,
+  key: string,
+  initial: T,
+  intervalMs: number,
+  urgent = "",
+): T {
   const [value, setValue] = useState<T>(initial);
   const latestQuery = useRef(query);
   latestQuery.current = query;
@@ -22,6 +30,7 @@ export function useRefreshed<T>(query: () => Promise<T>, key: string, initial: T
     timer: null as ReturnType<typeof setTimeout> | null,
     started: Number.NEGATIVE_INFINITY,
     mounted: true,
+    urgent,
   });
 
   const pump = useRef(() => {
@@ -58,9 +67,16 @@ export function useRefreshed<T>(query: () => Promise<T>, key: string, initial: T
 
   // biome-ignore lint/correctness/useExhaustiveDependencies: a new key is the change to follow
   useEffect(() => {
-    state.current.changes++;
+    const s = state.current;
+    s.changes++;
+    if (urgent !== s.urgent) {
+      s.urgent = urgent;
+      s.started = Number.NEGATIVE_INFINITY;
+      if (s.timer !== null) clearTimeout(s.timer);
+      s.timer = null;
+    }
     pump.current();
-  }, [key]);
+  }, [key, urgent]);
 
   return value;
 }
