@@ -161,4 +161,19 @@ describe("EditorTime typed times and Play", () => {
     h.editor.togglePlay();
     expect(h.editor.ui.getState().playing).toBe(true);
   });
+
+  it("Play forwards at the end of the history with nothing to compute says why; with auto-extend it plays", async () => {
+    const h = await loaded(farMeeting);
+    const end = h.client.getSnapshot().horizon;
+    h.editor.ui.setState((s) => ({ t: end, calc: { ...s.calc, autoExtend: false } }));
+    h.editor.togglePlay();
+    expect(h.editor.ui.getState().playing).toBe(false);
+    expect(h.editor.ui.getState().message).toEqual({
+      text: `At the end of the computed history (t = ${Number(end.toPrecision(6))} s): auto-extend is off (Calculation panel).`,
+      tone: "info",
+    });
+    h.editor.ui.setState((s) => ({ calc: { ...s.calc, autoExtend: true } }));
+    h.editor.togglePlay();
+    expect(h.editor.ui.getState().playing).toBe(true);
+  });
 });

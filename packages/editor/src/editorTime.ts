@@ -7,6 +7,7 @@
  */
 
 import { EditorSession } from "./editorSession";
+import { canExtend } from "./playback";
 
 /** A time as messages write it (6 significant digits). */
 const shown = (t: number): number => Number(t.toPrecision(6));
@@ -157,6 +158,24 @@ export class EditorTime extends EditorSession {
     // Backwards from 0 the playback clock (playback.ts) stops at the first frame: it did nothing.
     if (s.speed < 0 && s.t <= 0) {
       this.info("Playing backwards from t = 0: nothing before it. Set a positive speed to play forwards.");
+      return;
+    }
+    // Forwards from the end of the history with nothing to compute further, it stopped at once too.
+    const info = this.client.getSnapshot();
+    if (
+      s.speed > 0 &&
+      s.t >= info.horizon &&
+      info.computing === null &&
+      !canExtend(s.calc.autoExtend, info)
+    ) {
+      const end = Number(info.horizon.toPrecision(6));
+      const why =
+        info.stopped !== null
+          ? "the computation stopped there"
+          : info.idle
+            ? "no event is left to compute (type a later time to go further)"
+            : "auto-extend is off (Calculation panel)";
+      this.info(`At the end of the computed history (t = ${end} s): ${why}.`);
       return;
     }
     this.ui.setState({ playing: true });
