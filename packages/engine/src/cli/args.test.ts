@@ -16,6 +16,19 @@ describe("parseArgs", () => {
       events: true,
     });
   });
+  it("parses --compact for both commands", () => {
+    expect(parseArgs(["simulate", "s.json", "--compact"])).toMatchObject({
+      command: "simulate",
+      compact: true,
+    });
+    expect(parseArgs(["state", "s.json", "--at", "1", "--compact"])).toMatchObject({
+      command: "state",
+      compact: true,
+    });
+    expect(() => parseArgs(["state", "s.json", "--at", "1", "--compact=yes"])).toThrow(
+      "--compact takes no value",
+    );
+  });
   it("parses state --at", () => {
     expect(parseArgs(["state", "-", "--at=1e3"])).toEqual({
       command: "state",

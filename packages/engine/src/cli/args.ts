@@ -1,7 +1,7 @@
 /**
  * Command-line arguments of the `chapgame` bin, parsed into a Command (pure; no process access).
- *   chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--progress]
- *   chapgame state SCENE --at T [--events] [--progress]
+ *   chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--compact] [--progress]
+ *   chapgame state SCENE --at T [--events] [--compact] [--progress]
  *   chapgame --help | help
  *   chapgame --version
  * Options take their value as the next argument or after "=". Any other argument that starts with
@@ -25,12 +25,13 @@ export type Command =
       untilTime?: number;
       maxEvents?: number;
       events: boolean;
+      compact?: boolean;
       progress?: boolean;
     }
-  | { command: "state"; scene: string; at: number; events: boolean; progress?: boolean };
+  | { command: "state"; scene: string; at: number; events: boolean; compact?: boolean; progress?: boolean };
 
 export const USAGE = `Usage:
-  chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--progress]
+  chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--compact] [--progress]
       Run the scene's actions and simulate until time T or N events (collisions and stops),
       whichever comes first; print the bodies then as JSON, with "reason": "time", "events" or
       "idle" (no event and no action left). An idle run's bodies are printed at T with
@@ -39,13 +40,22 @@ export const USAGE = `Usage:
       under gravity) runs until interrupted: give a bound. A scene the exact model cannot
       continue (a Zeno state) prints the result up to where it stopped, with "reason": "error"
       and "error": why, and exits with status 2.
-  chapgame state SCENE --at T [--events] [--progress]
-      Print the bodies at time T as JSON.
+  chapgame state SCENE --at T [--events] [--compact] [--progress]
+      Print the bodies at time T as JSON (the actions are computed, and checked, up to T).
   chapgame --help
   chapgame --version
 
 SCENE is a scene file (format "chapgame", version 1), or - for standard input.
+The result: "time", "reason" (simulate), "events" (collisions and stops), "counts" (bodyBody,
+bodyLine, bodyPoint, stop), "bodies" (id, x, y, vx, vy, r, m, mu at "time", sorted by id) and
+with --events "log": every entry up to "time" in order, each with "time", "type" (bodyBody,
+bodyLine, bodyPoint, stop, action), "ids" (the participants; the action's id), "point"
+(contact, or where a body stopped), "normal" (unit, from the first id to the second),
+"impulse" (0 for a stop) and, for an action, "action" (its type); null where it does not apply.
+The log also lists the actions, which "events" does not count. Infinite numbers are written
+"Infinity" and "-Infinity", NaN "NaN".
 --events adds the event log (kept in memory: bound long runs).
+--compact writes the JSON without indentation, the log one entry per line (a third of the size).
 --progress reports progress on stderr, one line per 200,000 events (it is on by itself, on one
 updating line, when stderr is a terminal).
 Exit status: 0 success, 2 invalid input or a scene that cannot be continued, 1 internal error or
@@ -93,8 +103,8 @@ export function parseArgs(argv: readonly string[]): Command {
   const valued = new Set(["--until-time", "--max-events", "--at"]);
   const allowed =
     cmd === "simulate"
-      ? ["--until-time", "--max-events", "--events", "--progress"]
-      : ["--at", "--events", "--progress"];
+      ? ["--until-time", "--max-events", "--events", "--compact", "--progress"]
+      : ["--at", "--events", "--compact", "--progress"];
   for (let i = 0; i < rest.length; i++) {
     const arg = rest[i] as string;
     if (!arg.startsWith("-") || arg === "-") {
@@ -123,14 +133,17 @@ export function parseArgs(argv: readonly string[]): Command {
   const scene = positional[0] as string;
   const events = opts.has("--events");
   const progress = opts.has("--progress");
+  const compact = opts.has("--compact");
   if (cmd === "state") {
     const at = opts.get("--at");
     if (at === undefined) throw new UsageError("state: --at T is required");
     const c: Command = { command: "state", scene, at: time("--at", at as string), events };
+    if (compact) c.compact = true;
     if (progress) c.progress = true;
     return c;
   }
   const c: Command = { command: "simulate", scene, events };
+  if (compact) c.compact = true;
   if (progress) c.progress = true;
   const ut = opts.get("--until-time");
   if (ut !== undefined) c.untilTime = time("--until-time", ut as string);

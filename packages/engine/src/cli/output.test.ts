@@ -51,4 +51,23 @@ describe("writeResult", () => {
     writeResult(empty, 0, true, (t) => nothing.push(t), undefined, 4);
     expect(nothing.join("")).toBe(atOnce(empty, 0, true));
   });
+
+  it("compact: the same value, without indentation, one log entry per line", () => {
+    const tl = Timeline.fromScene(galperin(2), { compute: false });
+    tl.prolong({});
+    const end = tl.lastLoggedTime();
+    for (const withLog of [false, true]) {
+      const pieces: string[] = [];
+      writeResult(tl, end, withLog, (t) => pieces.push(t), { reason: "idle" }, 7, true);
+      const text = pieces.join("");
+      const pretty = JSON.parse(atOnce(tl, end, withLog));
+      expect(JSON.parse(text)).toEqual({ time: end, reason: "idle", ...pretty });
+      const lines = text.trimEnd().split("\n");
+      expect(lines).toHaveLength(withLog ? 1 + 31 + 3 + 1 : 1); // head, 31 collisions and 3 actions, "]}"
+      if (withLog) expect(lines.slice(1, -1).every((l) => /^\{"time":.*\},?$/.test(l))).toBe(true);
+    }
+    const empty: string[] = [];
+    writeResult(new Timeline({ g: 0 }), 0, true, (t) => empty.push(t), undefined, 4, true);
+    expect(JSON.parse(empty.join(""))).toMatchObject({ log: [] });
+  });
 });

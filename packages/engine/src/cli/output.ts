@@ -4,7 +4,9 @@
  * log up to `time`), pretty-printed exactly as
  * JSON.stringify(result, …, 2) would, but written in pieces: the log goes out `chunk` events at a
  * time (Timeline.eventRange), so a long log is never one string (V8 caps a string at about 2^29
- * characters: a 1.7M-event log) nor one array of objects. Infinite numbers are written "Infinity"
+ * characters: a 1.7M-event log) nor one array of objects. With `compact`, the same object without
+ * indentation, the log one event per line (a third of the size, and a reader can take it line by
+ * line). Infinite numbers are written "Infinity"
  * as in scene files, and "-Infinity" likewise (a position overflows to it after a long fall).
  */
 import type { Timeline } from "../timeline/timeline.js";
@@ -19,8 +21,8 @@ function nonFinite(_key: string, v: unknown): unknown {
   return Number.isNaN(v) ? "NaN" : v > 0 ? "Infinity" : "-Infinity";
 }
 
-function toJson(value: unknown): string {
-  return JSON.stringify(value, nonFinite, 2);
+function toJson(value: unknown, compact = false): string {
+  return compact ? JSON.stringify(value, nonFinite) : JSON.stringify(value, nonFinite, 2);
 }
 
 /** `json` (a pretty-printed value) indented by `pad` more spaces on every line after the first. */
@@ -41,6 +43,7 @@ export function writeResult(
   write: (text: string) => void,
   end?: RunEnd,
   chunk = LOG_CHUNK_EVENTS,
+  compact = false,
 ): void {
   const c = tl.counts();
   const head = {
@@ -52,22 +55,25 @@ export function writeResult(
       .stateAt(time)
       .bodies.map((b) => ({ id: b.id, x: b.x, y: b.y, vx: b.vx, vy: b.vy, r: b.r, m: b.m, mu: b.mu })),
   };
-  const text = toJson(head);
+  const text = toJson(head, compact);
   if (!withLog) {
     write(`${text}\n`);
     return;
   }
-  write(`${text.slice(0, -2)},\n  "log": [`); // without the closing "\n}"
+  // Pretty: the log indented like JSON.stringify(…, 2). Compact: one event per line.
+  const pad = compact ? "" : "    ";
+  write(compact ? `${text.slice(0, -1)},"log":[` : `${text.slice(0, -2)},\n  "log": [`); // without the closing "}"
   let first = true;
   for (let i = 0; i < tl.eventCount; i += chunk) {
     const events: LogEvent[] = tl.eventRange(i, i + chunk);
     const kept = events.filter((e) => e.time <= time); // the log is in time order
     if (kept.length > 0) {
-      const lead = first ? "\n    " : ",\n    ";
-      write(lead + kept.map((e) => indent(toJson(e), "    ")).join(",\n    "));
+      const lead = first ? `\n${pad}` : `,\n${pad}`;
+      write(lead + kept.map((e) => indent(toJson(e, compact), pad)).join(`,\n${pad}`));
       first = false;
     }
     if (kept.length < events.length) break;
   }
-  write(first ? "]\n}\n" : "\n  ]\n}\n");
+  if (compact) write(first ? "]}\n" : "\n]}\n");
+  else write(first ? "]\n}\n" : "\n  ]\n}\n");
 }

@@ -107,7 +107,7 @@ export function runCli(argv: readonly string[], io: CliIO): number {
     if (cmd.command === "state") {
       // from horizon 0 (nothing computed yet), `time: at` ahead is exactly up to at
       compute(tl, { time: cmd.at }, mode, io);
-      writeResult(tl, cmd.at, cmd.events, (text) => io.stdout(text));
+      writeResult(tl, cmd.at, cmd.events, (text) => io.stdout(text), undefined, undefined, cmd.compact);
     } else {
       let end: { time: number; reason: ProlongResult["reason"] };
       try {
@@ -116,10 +116,19 @@ export function runCli(argv: readonly string[], io: CliIO): number {
         // The engine cannot continue (a Zeno state): what was computed up to it is a result too.
         if (!(e instanceof SimulationError)) throw e;
         const error = printable(e.message);
-        writeResult(tl, tl.horizon, cmd.events, (text) => io.stdout(text), { reason: "error", error });
+        const failed = { reason: "error" as const, error };
+        writeResult(tl, tl.horizon, cmd.events, (text) => io.stdout(text), failed, undefined, cmd.compact);
         throw e;
       }
-      writeResult(tl, end.time, cmd.events, (text) => io.stdout(text), { reason: end.reason });
+      writeResult(
+        tl,
+        end.time,
+        cmd.events,
+        (text) => io.stdout(text),
+        { reason: end.reason },
+        undefined,
+        cmd.compact,
+      );
     }
     return 0;
   } catch (e) {
