@@ -55,7 +55,7 @@ bodyLine, bodyPoint, stop, action), "ids" (the participants; the action's id), "
 The log also lists the actions, which "events" does not count. Infinite numbers are written
 "Infinity" and "-Infinity", NaN "NaN".
 --events adds the event log (kept in memory: bound long runs).
---compact writes the JSON without indentation, the log one entry per line (a third of the size).
+--compact writes the JSON without indentation, the log one entry per line (about half the size).
 --progress reports progress on stderr, one line per 200,000 events (it is on by itself, on one
 updating line, when stderr is a terminal).
 Exit status: 0 success, 2 invalid input or a scene that cannot be continued, 1 internal error or

@@ -5,7 +5,7 @@
  * JSON.stringify(result, …, 2) would, but written in pieces: the log goes out `chunk` events at a
  * time (Timeline.eventRange), so a long log is never one string (V8 caps a string at about 2^29
  * characters: a 1.7M-event log) nor one array of objects. With `compact`, the same object without
- * indentation, the log one event per line (a third of the size, and a reader can take it line by
+ * indentation, the log one event per line (about half the size, and a reader can take it line by
  * line). Infinite numbers are written "Infinity"
  * as in scene files, and "-Infinity" likewise (a position overflows to it after a long fall).
  */
