@@ -16,6 +16,14 @@ describe("parseArgs", () => {
       events: true,
     });
   });
+  it('takes what follows "--" as the file name, even when it starts with "-"', () => {
+    expect(parseArgs(["simulate", "--events", "--", "-odd.json"])).toMatchObject({
+      scene: "-odd.json",
+      events: true,
+    });
+    expect(parseArgs(["state", "--at", "1", "--", "--"])).toMatchObject({ scene: "--" });
+    expect(() => parseArgs(["simulate", "-odd.json"])).toThrow("unknown option -odd.json");
+  });
   it("parses --compact for both commands", () => {
     expect(parseArgs(["simulate", "s.json", "--compact"])).toMatchObject({
       command: "simulate",

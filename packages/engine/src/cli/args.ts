@@ -5,8 +5,8 @@
  *   chapgame --help | help
  *   chapgame --version
  * Options take their value as the next argument or after "=". Any other argument that starts with
- * "-" (except "-" itself, standard input) is an unknown option, never a file name. Invalid arguments
- * throw UsageError with a one-line message.
+ * "-" (except "-" itself, standard input) is an unknown option, never a file name, unless it comes
+ * after "--" (the end of options). Invalid arguments throw UsageError with a one-line message.
  */
 
 export class UsageError extends Error {
@@ -45,7 +45,8 @@ export const USAGE = `Usage:
   chapgame --help
   chapgame --version
 
-SCENE is a scene file (format "chapgame", version 1), or - for standard input.
+SCENE is a scene file (format "chapgame", version 1), or - for standard input; after --, a name
+that starts with "-" is a file name.
 The result: "time", "reason" (simulate), "events" (collisions and stops), "counts" (bodyBody,
 bodyLine, bodyPoint, stop), "bodies" (id, x, y, vx, vy, r, m, mu at "time", sorted by id) and
 with --events "log": every entry up to "time" in order, each with "time", "type" (bodyBody,
@@ -105,9 +106,14 @@ export function parseArgs(argv: readonly string[]): Command {
     cmd === "simulate"
       ? ["--until-time", "--max-events", "--events", "--compact", "--progress"]
       : ["--at", "--events", "--compact", "--progress"];
+  let optionsEnd = false;
   for (let i = 0; i < rest.length; i++) {
     const arg = rest[i] as string;
-    if (!arg.startsWith("-") || arg === "-") {
+    if (arg === "--" && !optionsEnd) {
+      optionsEnd = true; // what follows is a file name, even one that starts with "-"
+      continue;
+    }
+    if (optionsEnd || !arg.startsWith("-") || arg === "-") {
       positional.push(arg);
       continue;
     }

@@ -13,6 +13,7 @@ import { isObject, nonNegative, onlyKeys, vec2 } from "./fields.js";
 import { firstDuplicateKey, lineColumn } from "./jsonDuplicates.js";
 import { jsonErrorOffset } from "./jsonSyntax.js";
 import { checkFieldMagnitudes } from "./magnitudes.js";
+import { checkMeta } from "./meta.js";
 import { checkAndApply, SceneView } from "./sceneRules.js";
 import { type Action, SCENE_DEFAULTS, type SceneFile } from "./types.js";
 
@@ -115,7 +116,7 @@ export function parseScene(input: string | unknown): SceneFile {
   checkSceneRules(g, gravity, actions);
   const scene: SceneFile = { format: "chapgame", version: 1, g, gravity, actions };
   if (raw.meta !== undefined) {
-    if (!isObject(raw.meta)) throw new SceneError("meta", "must be an object");
+    checkMeta(raw.meta);
     scene.meta = raw.meta;
   }
   return scene;

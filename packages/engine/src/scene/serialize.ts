@@ -7,10 +7,12 @@
  * never written that could not be read back field by field); the scene rules that need the scene's
  * state (ids, overlaps) are parseScene's. Valid actions are written as given (no defaults added).
  */
+
 import { ACTION_FIELDS, checkAction } from "./action.js";
 import { SceneError } from "./errors.js";
 import { isObject, nonNegative, vec2 } from "./fields.js";
 import { checkFieldMagnitudes } from "./magnitudes.js";
+import { checkMeta } from "./meta.js";
 import { checkHeader } from "./parse.js";
 import type { Action, SceneFile } from "./types.js";
 
@@ -48,7 +50,7 @@ function checkFields(scene: SceneFile): void {
   checkHeader(raw);
   if (!Array.isArray(raw.actions)) throw new SceneError("actions", "must be an array");
   checkFieldMagnitudes(nonNegative(raw, "g", ""), vec2(raw, "gravity", ""), "");
-  if (raw.meta !== undefined && !isObject(raw.meta)) throw new SceneError("meta", "must be an object");
+  if (raw.meta !== undefined) checkMeta(raw.meta);
   raw.actions.forEach((a, i) => {
     checkAction(a, `actions[${i}]`);
   });
