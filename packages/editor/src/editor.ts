@@ -3,11 +3,13 @@
  * EditorSession (editorSession.ts: the TimelineClient, the UI store, the undo history, loading,
  * edits as undo steps, undo/redo, computing ahead), EditorTime (editorTime.ts: the current time,
  * go to, event steps, play and speed) and, here, the edits at the current time: every edit is an
- * action stamped with the current time (add, move, strike, update, delete, clear). Methods that can
- * fail resolve to the engine's message (null on success) and show it in the UI.
+ * action stamped with the current time (add, move, strike, update, delete, clear), and the removal
+ * of one action of any time (an Event-log entry's). Methods that can fail resolve to the engine's
+ * message (null on success) and show it in the UI.
  */
 
 import { nextFreeId } from "./doc/ids";
+import { type ActionEntry, withoutAction } from "./doc/removeAction";
 import { EditorTime } from "./editorTime";
 import type { Action, SceneFile, Vec2 } from "./engineTypes";
 import type { TimelineClient } from "./remote/client";
@@ -98,6 +100,16 @@ export class Editor extends EditorTime {
     const err = await this.edit([this.stamp({ time: this.now(), type, id: sel.id })]);
     if (err === null) this.ui.setState({ selection: null });
     return err;
+  }
+
+  /**
+   * Removes `actions[index]` of the scene (an Event-log entry's actionIndex) as one undo step, the
+   * current time and the history range kept. Refused when that index no longer holds the entry's
+   * action (the scene changed since the log was read), and by the engine when a later action needs
+   * it (its message says which one).
+   */
+  removeAction(index: number, entry: ActionEntry): Promise<string | null> {
+    return this.rewrite((doc) => withoutAction(doc, index, entry));
   }
 
   clear(): Promise<string | null> {

@@ -6,9 +6,12 @@
  * redoes them, computes ahead after each (Calculation settings) and restarts a host that stopped
  * answering. Methods that can fail resolve to the engine's message (null on success) and show it in
  * the UI. Changes of the scene (loads, edits, undo, redo) run strictly one after another: an undo
- * asked while an edit is still being applied waits for it, then undoes it.
+ * asked while an edit is still being applied waits for it, then undoes it. An edit, rewrite or rename
+ * refused because a later action would become invalid (the engine's path `actions[i]`) also says
+ * which action that is (doc/actionRefs.ts).
  */
 
+import { explainRefusal } from "./doc/actionRefs";
 import { EMPTY_HISTORY, type History, record, redo, undo } from "./doc/history";
 import { type ObjectKind, renameObject } from "./doc/rename";
 import type { Action, SceneFile, Until } from "./engineTypes";
@@ -61,6 +64,16 @@ export class EditorSession {
     const text = e instanceof Error ? e.message : String(e);
     this.ui.setState({ message: { text, tone: "error" } });
     return text;
+  }
+
+  /**
+   * fail, the message saying which action the engine's `actions[i]` is; `actions` is the list its
+   * index refers to (the scene before an edit, the scene given to a load).
+   */
+  private failNaming(e: unknown, actions: readonly Action[]): string {
+    const text = e instanceof Error ? e.message : String(e);
+    const path = (e as { path?: unknown } | null)?.path;
+    return this.fail(explainRefusal(text, typeof path === "string" ? path : null, actions));
   }
 
   info(text: string): void {
@@ -123,16 +136,22 @@ export class EditorSession {
     return this.afterLoad(await this.serial(() => this.loadNow(scene, options)), options);
   }
 
-  /** The queued part of loadScene: the load and its undo step; null, or the message. */
+  /**
+   * The queued part of loadScene: the load and its undo step; null, or the message. `naming`: a
+   * refusal says which action the engine's `actions[i]` is (for rewrites of the current scene, whose
+   * actions are in the Event log; not for a file, a paste or a preset).
+   */
   private async loadNow(
     scene: SceneFile,
     options: { undoable?: boolean; fit?: boolean; keepTime?: boolean },
+    naming = false,
   ): Promise<string | null> {
     const before = this.doc;
     try {
       await this.client.load(scene, options.keepTime ? this.keepTo() : undefined);
     } catch (e) {
-      return this.fail(e);
+      // The engine names actions by their index in the list it was given.
+      return naming ? this.failNaming(e, scene.actions) : this.fail(e);
     }
     if (options.undoable !== false) this.history.setState(record(this.history.getState(), before));
     this.ui.setState((s) => ({
@@ -178,7 +197,9 @@ export class EditorSession {
       try {
         await this.client.apply(actions);
       } catch (e) {
-        return this.fail(e);
+        // The engine names a later action by its index in the list before this edit (Timeline.apply);
+        // with several actions, the later ones meet a list holding the earlier ones.
+        return actions.length === 1 ? this.failNaming(e, before.actions) : this.fail(e);
       }
       this.history.setState(record(this.history.getState(), before));
       this.ui.setState({ message: null });
@@ -189,9 +210,23 @@ export class EditorSession {
     return null;
   }
 
-  /** Replaces the action list as one undo step (renames, and other whole-scene rewrites). */
-  rewrite(scene: SceneFile): Promise<string | null> {
-    return this.loadScene(scene, { fit: false, keepTime: true });
+  /**
+   * Replaces the action list as one undo step (renames, removing an action, other whole-scene
+   * rewrites). `scene` may be a function of the current scene, called when the change's turn comes
+   * (after the changes queued before it); one that throws refuses the rewrite with its message.
+   */
+  async rewrite(scene: SceneFile | ((doc: SceneFile) => SceneFile)): Promise<string | null> {
+    const options = { fit: false, keepTime: true };
+    const loaded = await this.serial(async () => {
+      let next: SceneFile;
+      try {
+        next = typeof scene === "function" ? scene(this.doc) : scene;
+      } catch (e) {
+        return this.fail(e);
+      }
+      return this.loadNow(next, options, true);
+    });
+    return this.afterLoad(loaded, options);
   }
 
   /** Renames a body, line or point in the whole action list (one undo step). */
@@ -204,7 +239,7 @@ export class EditorSession {
       } catch (e) {
         return this.fail(e);
       }
-      return this.loadNow(scene, options);
+      return this.loadNow(scene, options, true);
     });
     if (loaded === null) this.ui.setState({ selection: { kind, id: to } });
     return this.afterLoad(loaded, options);

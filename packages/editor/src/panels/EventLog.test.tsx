@@ -89,6 +89,48 @@ describe("EventLog", () => {
     expect(within(log).getAllByText("stop")).toHaveLength(1);
   });
 
+  it("an action entry's ✕ removes exactly that action, as one undo step, without jumping to the entry", async () => {
+    const h = testEditor();
+    await h.editor.loadScene(
+      sceneOf([
+        { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, mu: 0.5 },
+        { time: 0, type: "addBody", id: "b", x: 0, y: 10, r: 1, m: 1 },
+        { time: 0.25, type: "giveVelocity", id: "a", v: [4, 0] },
+        { time: 0.25, type: "giveVelocity", id: "b", v: [0, 4] },
+      ]),
+      { undoable: false },
+    );
+    await settled(h.client);
+    act(() => h.editor.ui.setState({ t: 5 }));
+    const log = renderLog(h.editor);
+    // One button per action entry; none for a's stop.
+    await waitFor(() =>
+      expect(within(log).getAllByRole("button", { name: /^Remove action/ })).toHaveLength(4),
+    );
+    expect(within(log).getAllByText("stop")).toHaveLength(1);
+    const remove = within(log).getByRole("button", { name: "Remove action giveVelocity of b at t = 0.25" });
+    // Enter on the button is the button's, not the row's (the row jumps to its time on Enter).
+    fireEvent.keyDown(remove, { key: "Enter" });
+    expect(h.editor.ui.getState().t).toBe(5);
+    await act(async () => {
+      fireEvent.click(remove);
+      await settled(h.client);
+    });
+    expect(h.editor.doc.actions.map((a) => [a.time, a.type, "id" in a ? a.id : null])).toEqual([
+      [0, "addBody", "a"],
+      [0, "addBody", "b"],
+      [0.25, "giveVelocity", "a"],
+    ]);
+    expect(h.editor.ui.getState().t).toBe(5);
+    expect(h.editor.history.getState().past).toHaveLength(1);
+    await waitFor(() =>
+      expect(within(log).getAllByRole("button", { name: /^Remove action/ })).toHaveLength(3),
+    );
+    expect(
+      within(log).getByRole("button", { name: "Remove action giveVelocity of a at t = 0.25" }),
+    ).toBeTruthy();
+  });
+
   it("labels an entry by its kind, with the action's type in words for an action", () => {
     const base = { time: 1, ids: ["a"], point: null, normal: null, impulse: null };
     expect(kindLabel({ ...base, type: "bodyLine" })).toBe("body–line");

@@ -2,16 +2,17 @@
  * The Event log: the events around the current time (time, kind, participants; an action entry says
  * what the action did). Clicking an entry
  * jumps there, highlights its participants and selects one (selectionOf); a body filter keeps only
- * that body's events.
+ * that body's events. An action entry's ✕ removes that action from the scene (RemoveActionButton).
  * Only the rows in view are rendered (useRowWindow); the view follows the current time (useFollowTime).
  */
 import { useRef } from "react";
 import { kindOfType } from "../doc/rename";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { LogEvent } from "../engineTypes";
-import type { EventPage } from "../remote/protocol";
+import type { EventPage, PageEvent } from "../remote/protocol";
 import type { Selection } from "../store/uiStore";
 import { formatNumber } from "./EditableCell";
+import { RemoveActionButton } from "./RemoveActionButton";
 import { useFollowTime } from "./useFollowTime";
 import { useRefreshed } from "./useRefreshed";
 import { spacerRow, useRowWindow } from "./useRowWindow";
@@ -78,6 +79,12 @@ export function logCount(total: number, shown: number, body: string | null): str
   return body === null ? String(total) : `${shown} shown for ${body} · ${total} in all`;
 }
 
+/** An action entry's remove button (null for other entries, and for an action not identified). */
+function removable(e: PageEvent) {
+  if (e.type !== "action" || e.action === undefined || e.actionIndex === undefined) return null;
+  return <RemoveActionButton index={e.actionIndex} time={e.time} type={e.action} id={e.ids[0] ?? null} />;
+}
+
 export function EventLog() {
   const editor = useEditor();
   const t = useSlowTime();
@@ -128,10 +135,11 @@ export function EventLog() {
               <th>time</th>
               <th>kind</th>
               <th>participants</th>
+              <th />
             </tr>
           </thead>
           <tbody>
-            {spacerRow("before", win.before, 3)}
+            {spacerRow("before", win.before, 4)}
             {events.slice(win.start, win.end).map((e, j) => {
               const k = win.start + j;
               const cls = e.time === t ? "current" : e.time < t ? "past" : undefined;
@@ -152,16 +160,18 @@ export function EventLog() {
                     })
                   }
                   onKeyDown={(ev) => {
-                    if (ev.key === "Enter") ev.currentTarget.click();
+                    // Enter on the row itself; Enter on its button presses only the button.
+                    if (ev.key === "Enter" && ev.target === ev.currentTarget) ev.currentTarget.click();
                   }}
                 >
                   <td>{formatNumber(e.time)}</td>
                   <td>{kindLabel(e)}</td>
                   <td>{e.ids.join(", ")}</td>
+                  <td className="row-end">{removable(e)}</td>
                 </tr>
               );
             })}
-            {spacerRow("after", win.after, 3)}
+            {spacerRow("after", win.after, 4)}
           </tbody>
         </table>
       </div>

@@ -1,5 +1,6 @@
 import { newtonsCradle, originalDemo, Timeline } from "@chapgame/engine";
 import { describe, expect, it } from "vitest";
+import { sceneOf } from "../testing/scenes";
 import { eventPage, eventTicks, lastEventTime } from "./eventQueries";
 import { exactSeries, SeriesRecorder } from "./series";
 
@@ -16,7 +17,8 @@ describe("event queries", () => {
     const all = tl.eventsBetween(0, tl.horizon);
     const page = eventPage(tl, 0.5, 3, 2, null);
     expect(page.total).toBe(tl.eventCount);
-    expect(page.events).toEqual([
+    // the log's entries (action entries also say which action: see below)
+    expect(page.events).toMatchObject([
       ...all.filter((e) => e.time <= 0.5).slice(-3),
       ...all.filter((e) => e.time > 0.5).slice(0, 2),
     ]);
@@ -52,6 +54,82 @@ describe("event queries", () => {
     for (const t of ticks) expect(times).toContain(t);
     expect(ticks).toEqual([...new Set(ticks)].sort((a, b) => a - b));
     expect(eventTicks(tl, 100)[0]).toBe(0);
+  });
+});
+
+/**
+ * Two actions at t = 1 (a given velocity, b moved away) after three at t = 0; a meets the point q
+ * at t = 4.
+ */
+function twoAtOnce() {
+  const tl = Timeline.fromScene(
+    sceneOf(
+      [
+        { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 },
+        { time: 0, type: "addBody", id: "b", x: 0, y: 10, r: 1, m: 1 },
+        { time: 0, type: "addPoint", id: "q", p: [4, 0] },
+        { time: 1, type: "giveVelocity", id: "a", v: [1, 0] },
+        { time: 1, type: "updateBody", id: "b", x: 20 },
+      ],
+      0,
+    ),
+    { compute: false },
+  );
+  tl.prolong({ time: 10 });
+  return tl;
+}
+
+/** The action entries of a page: time, action, id and actionIndex. */
+function actionRows(
+  events: { time: number; type: string; action?: string; ids: string[]; actionIndex?: number }[],
+) {
+  return events.filter((e) => e.type === "action").map((e) => [e.time, e.action, e.ids[0], e.actionIndex]);
+}
+
+describe("event pages name each action entry's action (actionIndex in the timeline's actions)", () => {
+  it("every action entry, two of them at the same time; collisions carry none", () => {
+    const tl = twoAtOnce();
+    const page = eventPage(tl, 1, 10, 10, null);
+    expect(actionRows(page.events)).toEqual([
+      [0, "addBody", "a", 0],
+      [0, "addBody", "b", 1],
+      [0, "addPoint", "q", 2],
+      [1, "giveVelocity", "a", 3],
+      [1, "updateBody", "b", 4],
+    ]);
+    for (const e of page.events.filter((e) => e.type === "action"))
+      expect(tl.actions[e.actionIndex!]).toMatchObject({ time: e.time, type: e.action, id: e.ids[0] });
+    const hit = page.events.find((e) => e.type === "bodyPoint")!;
+    expect(hit.time).toBe(4);
+    expect("actionIndex" in hit).toBe(false);
+  });
+
+  it("a page that starts inside a group of entries at one time counts the group from its start", () => {
+    const tl = twoAtOnce();
+    // The last entry at or before t = 1: the second action at t = 1.
+    expect(actionRows(eventPage(tl, 1, 1, 0, null).events)).toEqual([[1, "updateBody", "b", 4]]);
+    // Four entries: from the second action at t = 0.
+    expect(actionRows(eventPage(tl, 1, 4, 0, null).events)).toEqual([
+      [0, "addBody", "b", 1],
+      [0, "addPoint", "q", 2],
+      [1, "giveVelocity", "a", 3],
+      [1, "updateBody", "b", 4],
+    ]);
+    // Cut at the end inside the group at t = 0.
+    expect(actionRows(eventPage(tl, -1, 0, 2, null).events)).toEqual([
+      [0, "addBody", "a", 0],
+      [0, "addBody", "b", 1],
+    ]);
+  });
+
+  it("filtered by a body, its action entries keep their places among all the actions", () => {
+    const tl = twoAtOnce();
+    expect(actionRows(eventPage(tl, 1, 10, 10, "b").events)).toEqual([
+      [0, "addBody", "b", 1],
+      [1, "updateBody", "b", 4],
+    ]);
+    expect(actionRows(eventPage(tl, 1, 1, 10, "b").events)).toEqual([[1, "updateBody", "b", 4]]);
+    expect(actionRows(eventPage(tl, 0, 10, 10, "q").events)).toEqual([[0, "addPoint", "q", 2]]);
   });
 });
 

@@ -1,29 +1,22 @@
 /**
  * Read-only queries over a timeline's event log for the UI. Built on nextEventTime / prevEventTime
  * (O(log n)) and one eventsBetween per query: reading single events by index is costly in the
- * engine (each read reconstructs its contact data), reading a time window is not.
+ * engine (each read reconstructs its contact data), reading a time window is not. A page's action
+ * entries carry the action's index in the timeline's `actions` (actionIndices.ts), found before the
+ * page is cut, while every entry at each time is at hand.
  */
 import type { LogEvent } from "../engineTypes";
-import type { EventPage } from "./protocol";
+import { withActionIndices } from "./actionIndices";
+import type { EventPage, PageEvent } from "./protocol";
 import type { TimelineLike } from "./timelineLike";
 
-type Log = Pick<TimelineLike, "eventCount" | "nextEventTime" | "prevEventTime" | "eventsBetween" | "horizon">;
+type Log = Pick<
+  TimelineLike,
+  "actions" | "eventCount" | "nextEventTime" | "prevEventTime" | "eventsBetween" | "horizon"
+>;
 
 /** Largest number of events one filtered query may read on each side of t. */
 export const FILTER_SCAN_LIMIT = 200_000;
-
-function copy(e: LogEvent): LogEvent {
-  const c: LogEvent = {
-    time: e.time,
-    type: e.type,
-    ids: [...e.ids],
-    point: e.point,
-    normal: e.normal,
-    impulse: e.impulse,
-  };
-  if (e.action !== undefined) c.action = e.action;
-  return c;
-}
 
 /** The time `steps` distinct event times after t (null when there is none). */
 function walkForward(tl: Log, t: number, steps: number): number | null {
@@ -50,10 +43,14 @@ function walkBack(tl: Log, t: number, steps: number): number {
 /**
  * Up to `before` events at or before t and `after` events after t, in time order (events sharing a
  * time count once per time when walking). With `body`, only that body's events, found by scanning
- * windows outward from t (at most FILTER_SCAN_LIMIT events per side).
+ * windows outward from t (at most FILTER_SCAN_LIMIT events per side). Action entries carry their
+ * action's index (PageEvent.actionIndex).
  */
 export function eventPage(tl: Log, t: number, before: number, after: number, body: string | null): EventPage {
   const total = tl.eventCount;
+  // Every eventsBetween window holds all the entries at each time in it: action indices are found
+  // there, before a page or a filter keeps part of them.
+  const actions = () => tl.actions;
   if (total === 0) return { first: -1, total, events: [] };
   if (body === null) {
     const t0 = walkBack(tl, t, before);
@@ -61,13 +58,14 @@ export function eventPage(tl: Log, t: number, before: number, after: number, bod
     const all = tl.eventsBetween(t0, t1);
     const split = all.findIndex((e) => e.time > t);
     const mid = split < 0 ? all.length : split;
-    const events = all.slice(Math.max(0, mid - before), mid + after).map(copy);
+    const from = Math.max(0, mid - before);
+    const events = withActionIndices(all, actions, (_e, i) => i >= from && i < mid + after);
     return { first: -1, total, events };
   }
   const mine = (e: LogEvent) => e.ids.includes(body);
   const density = Math.max(tl.horizon / total, 1e-12);
-  const back: LogEvent[] = [];
-  const ahead: LogEvent[] = [];
+  const back: PageEvent[] = [];
+  const ahead: PageEvent[] = [];
   // backwards from t
   let hi = t;
   let span = density * 1000;
@@ -77,7 +75,7 @@ export function eventPage(tl: Log, t: number, before: number, after: number, bod
     const lo = Math.max(0, hi - span);
     const win = tl.eventsBetween(lo, hi);
     scanned += win.length;
-    const found = win.filter((e) => mine(e) && e.time <= t && (e.time < hi || hi === t));
+    const found = withActionIndices(win, actions, (e) => mine(e) && e.time <= t && (e.time < hi || hi === t));
     back.unshift(...found);
     if (lo === 0) break;
     hi = lo;
@@ -91,12 +89,12 @@ export function eventPage(tl: Log, t: number, before: number, after: number, bod
     const top = Math.min(tl.horizon, lo + span);
     const win = tl.eventsBetween(lo, top);
     scanned += win.length;
-    ahead.push(...win.filter((e) => mine(e) && e.time > lo));
+    ahead.push(...withActionIndices(win, actions, (e) => mine(e) && e.time > lo));
     lo = top;
     span *= 2;
   }
   // Windows share their edges; each window keeps only events strictly inside its far edge.
-  const events = [...back.slice(-before), ...ahead.slice(0, after)].map(copy);
+  const events = [...back.slice(-before), ...ahead.slice(0, after)];
   return { first: -1, total, events };
 }
 

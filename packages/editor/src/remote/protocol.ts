@@ -115,12 +115,18 @@ export type Request =
 
 export type RequestMessage = Request & { id: number };
 
+/**
+ * A log entry as an event page carries it: an action entry also says which action it is, by its
+ * index in the timeline's action list (the scene's `actions`, in time order) when the page was read.
+ */
+export type PageEvent = LogEvent & { actionIndex?: number };
+
 export interface EventPage {
   /** Index of the first returned event in the log, or -1 when not known (the log is read by time). */
   first: number;
   /** Number of events in the whole log. */
   total: number;
-  events: LogEvent[];
+  events: PageEvent[];
 }
 
 export type HostMessage =
