@@ -29,6 +29,24 @@ function renderLog(editor: Editor): HTMLElement {
   return screen.getByRole("table", { name: "Event log" });
 }
 
+/**
+ * The Event log of a scene where body `body` (v = 4 from the origin) meets the segment w at
+ * t = 2.25, then the point q at t = 6.75.
+ */
+async function bodyLinePointLog(body: string) {
+  const h = testEditor();
+  await h.editor.loadScene(
+    sceneOf([
+      { time: 0, type: "addBody", id: body, x: 0, y: 0, r: 1, m: 1, v: [4, 0] },
+      { time: 0, type: "addLine", id: "w", p1: [10, -5], p2: [10, 5], kind: "segment" },
+      { time: 0, type: "addPoint", id: "q", p: [-10, 0] },
+    ]),
+    { undoable: false },
+  );
+  await settled(h.client);
+  return { h, log: renderLog(h.editor) };
+}
+
 describe("EventLog", () => {
   it("follows a newly loaded scene while progress reports keep arriving faster than pages", async () => {
     const h = testEditor();
@@ -140,17 +158,7 @@ describe("EventLog", () => {
 
   it("clicking an entry selects the object of its kind: a line's action selects the line", async () => {
     // A body named like the line: selecting "body w" for the line's entry made Delete delete it.
-    const h = testEditor();
-    await h.editor.loadScene(
-      sceneOf([
-        { time: 0, type: "addBody", id: "w", x: 0, y: 0, r: 1, m: 1, v: [4, 0] },
-        { time: 0, type: "addLine", id: "w", p1: [10, -5], p2: [10, 5], kind: "segment" },
-        { time: 0, type: "addPoint", id: "q", p: [-10, 0] },
-      ]),
-      { undoable: false },
-    );
-    await settled(h.client);
-    const log = renderLog(h.editor);
+    const { h, log } = await bodyLinePointLog("w");
     const row = async (text: string) => (await within(log).findByText(text)).closest("tr")!;
     fireEvent.click(await row("action: add line"));
     expect(h.editor.ui.getState().selection).toEqual({ kind: "line", id: "w" });
@@ -169,17 +177,7 @@ describe("EventLog", () => {
 
   it("the participants of a clicked entry stay lit only while the time stays at it (→ moved on, the canvas kept them)", async () => {
     // a (v = 4) meets the segment w at t = 2.25, then the point q at t = 6.75.
-    const h = testEditor();
-    await h.editor.loadScene(
-      sceneOf([
-        { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [4, 0] },
-        { time: 0, type: "addLine", id: "w", p1: [10, -5], p2: [10, 5], kind: "segment" },
-        { time: 0, type: "addPoint", id: "q", p: [-10, 0] },
-      ]),
-      { undoable: false },
-    );
-    await settled(h.client);
-    const log = renderLog(h.editor);
+    const { h, log } = await bodyLinePointLog("a");
     fireEvent.click((await within(log).findByText("body–line")).closest("tr")!);
     expect(h.editor.ui.getState()).toMatchObject({ t: 2.25, highlight: ["body:a", "line:w"] });
     await act(() => h.editor.stepEvent(1));
