@@ -98,6 +98,7 @@ export async function currentTime(page: Page): Promise<number> {
   return Number(await page.getByRole("slider", { name: "Time" }).inputValue());
 }
 
+/** The horizon, as the `Time` slider's max (the slider spans the whole history unless zoomed). */
 export async function horizon(page: Page): Promise<number> {
   return Number(await page.getByRole("slider", { name: "Time" }).getAttribute("max"));
 }

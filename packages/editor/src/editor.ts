@@ -15,6 +15,7 @@ import type { Action, SceneFile, Vec2 } from "./engineTypes";
 import type { TimelineClient } from "./remote/client";
 import { dropStaleHighlight } from "./store/highlightGuard";
 import { dropStaleSelection } from "./store/selectionGuard";
+import { keepTimeWindow } from "./store/timeWindowGuard";
 import type { UiStore } from "./store/uiStore";
 
 /** Velocity given by a cue strike, per world unit of offset between the click and the disc centre (1/s). */
@@ -35,6 +36,8 @@ export class Editor extends EditorTime {
     dropStaleSelection(ui, client);
     // The participants of a clicked Event-log entry stay lit only while the time stays at it.
     dropStaleHighlight(ui);
+    // The Time slider's zoom follows the time and stays inside the history.
+    keepTimeWindow(ui, client);
   }
 
   /** Edits carry no `until`: the host computes ahead in slices (Calculation settings) after them. */

@@ -161,6 +161,8 @@ export class EditorSession {
       highlight: [],
       message: null,
       fitRequest: options.fit === false ? s.fitRequest : s.fitRequest + 1,
+      // the Time slider's zoom was a window of the other scene's history
+      timeWindow: options.keepTime ? s.timeWindow : null,
     }));
     return null;
   }

@@ -1,15 +1,19 @@
 /**
- * Time: the `Time` scrubber over [0, horizon] with event ticks, a time field (a time past the
- * horizon is computed first), −1 / 0 / +1 s and stepping to the previous / next event. Scrubbing is not an edit (no undo step).
+ * Time: the `Time` scrubber over the time window (the whole history [0, horizon] unless zoomed,
+ * TimeZoom) with the window's event ticks, a time field (a time past the horizon is computed
+ * first), −1 / 0 / +1 s and stepping to the previous / next event. Scrubbing and zooming are not
+ * edits (no undo step).
  * While playing, this panel re-renders about 10 times a second (useShownTime); the slider's thumb
  * follows every frame by itself (TimeSlider). The time field shows the current time until the user
  * types in it; only typed text is gone to (Enter or leaving the field), so clicking into the field
  * while playing and away again leaves the time alone.
  */
 import { useMemo, useState } from "react";
-import { useEditor, useInfoValue } from "../EditorContext";
+import { useEditor, useInfoValue, useUi } from "../EditorContext";
+import { viewRange } from "../store/timeWindow";
 import { formatNumber, parseNumber } from "./EditableCell";
 import { TimeSlider } from "./TimeSlider";
+import { TimeZoom } from "./TimeZoom";
 import { useRefreshed } from "./useRefreshed";
 import { useShownTime } from "./useThrottledTime";
 
@@ -28,28 +32,38 @@ export function TimePanel() {
   const revision = useInfoValue((i) => i.revision);
   const computing = useInfoValue((i) => i.computing !== null);
   const docRevision = useInfoValue((i) => i.docRevision);
+  const timeWindow = useUi((s) => s.timeWindow);
+  const windowKey = timeWindow === null ? "all" : `${timeWindow.lo}:${timeWindow.hi}`;
   // Throttled while a computation extends the history; at once when the scene itself changes (an
-  // edit in the past moves the ticks after it, which stayed stale for up to TICKS_EVERY_MS).
+  // edit in the past moves the ticks after it, which stayed stale for up to TICKS_EVERY_MS) or the
+  // slider's window does (a zoom or a page turn).
   const ticks = useRefreshed(
-    () => (revision < 0 ? Promise.resolve([]) : editor.client.ticks(TICKS)),
-    String(revision),
+    () =>
+      revision < 0
+        ? Promise.resolve([])
+        : timeWindow === null
+          ? editor.client.ticks(TICKS)
+          : editor.client.ticks(TICKS, timeWindow.lo, timeWindow.hi),
+    `${revision} ${windowKey}`,
     NO_TICKS,
     TICKS_EVERY_MS,
-    String(docRevision),
+    `${docRevision} ${windowKey}`,
   );
   /** The text typed in the time field (null: nothing typed; the field shows the current time). */
   const [draft, setDraft] = useState<string | null>(null);
 
-  const tickLines = useMemo(
-    () =>
-      horizon > 0
-        ? ticks.map((x, i) => (
-            // biome-ignore lint/suspicious/noArrayIndexKey: ticks are positional (equal times repeat) and never reordered
-            <line key={i} x1={(x / horizon) * 1000} x2={(x / horizon) * 1000} y1={0} y2={10} />
-          ))
-        : null,
-    [ticks, horizon],
-  );
+  // Ticks are times: a reply asked for an earlier window is drawn on the current one, in its range.
+  const tickLines = useMemo(() => {
+    const { lo, hi } = viewRange(timeWindow, horizon);
+    if (!(hi > lo)) return null;
+    return ticks
+      .filter((x) => x >= lo && x <= hi)
+      .map((x, i) => {
+        const at = ((x - lo) / (hi - lo)) * 1000;
+        // biome-ignore lint/suspicious/noArrayIndexKey: ticks are positional (equal times repeat) and never reordered
+        return <line key={i} x1={at} x2={at} y1={0} y2={10} />;
+      });
+  }, [ticks, horizon, timeWindow]);
 
   const commitDraft = () => {
     if (draft === null) return;
@@ -91,6 +105,7 @@ export function TimePanel() {
           />{" "}
           s of <output aria-label="Horizon">{formatNumber(horizon)}</output> s
         </label>
+        <TimeZoom />
         {/* After an undo, a redo or a rename the history is recomputed from the start while the time
             stays: say why the canvas and tables show an earlier state until it gets there. */}
         {t > horizon ? (

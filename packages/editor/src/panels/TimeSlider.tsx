@@ -1,18 +1,25 @@
 /**
- * The `Time` slider over [0, horizon]. Its thumb follows the store's time outside React (a store
- * subscription writes the input's value): playback changes the time on every animation frame and
- * re-rendering a panel per frame is not needed to move one thumb. While playing, a change that moves
- * the thumb by less than a pixel is not written (each write of a range input's value costs Chromium a
- * relayout, repaint and re-layerization of the page, about 1 ms per frame in the 2,000-disc profile).
- * Paused, the slider always shows the exact time. Dragging it sets the time (not an edit); holding it
- * while playing pauses until it is let go.
+ * The `Time` slider over the time window: the whole history [0, horizon] unless zoomed
+ * (store/timeWindow.ts; the window follows the time by itself, store/timeWindowGuard.ts). Its thumb
+ * and range follow the store outside React (a store subscription writes the input's value): playback
+ * changes the time on every animation frame and re-rendering a panel per frame is not needed to move
+ * one thumb. While playing, a change that moves the thumb by less than a pixel is not written (each
+ * write of a range input's value costs Chromium a relayout, repaint and re-layerization of the page,
+ * about 1 ms per frame in the 2,000-disc profile); a new range is always written. Paused, the slider
+ * always shows the exact time. Dragging it sets the time (not an edit); holding it while playing
+ * pauses until it is let go.
  */
 import { useEffect, useRef } from "react";
-import { useEditor, useInfoValue } from "../EditorContext";
+import { useEditor, useInfoValue, useUi } from "../EditorContext";
+import { viewRange } from "../store/timeWindow";
 
 export function TimeSlider() {
   const editor = useEditor();
   const horizon = useInfoValue((i) => i.horizon);
+  const range = viewRange(
+    useUi((s) => s.timeWindow),
+    horizon,
+  );
   const ref = useRef<HTMLInputElement>(null);
 
   useEffect(() => {
@@ -27,19 +34,29 @@ export function TimeSlider() {
           });
     ro?.observe(input);
     let shown = Number.NaN;
+    let shownLo = Number.NaN;
+    let shownHi = Number.NaN;
     const show = (force: boolean) => {
       const s = ui.getState();
       const h = client.getSnapshot().horizon;
+      const { lo, hi } = viewRange(s.timeWindow, h);
       const t = Math.min(s.t, h);
-      if (t === shown) return;
-      if (!force && s.playing && Math.abs(t - shown) * Math.max(width, 1) < h) return;
+      const sameRange = lo === shownLo && hi === shownHi;
+      if (t === shown && sameRange) return;
+      if (!force && sameRange && s.playing && Math.abs(t - shown) * Math.max(width, 1) < hi - lo) return;
       shown = t;
-      input.max = String(h); // before the value: a value above the old max would be clamped
+      shownLo = lo;
+      shownHi = hi;
+      if (!sameRange) {
+        // the range before the value: a value outside the old range would be clamped
+        input.min = String(lo);
+        input.max = String(hi);
+      }
       input.value = String(t);
     };
     show(true);
     const offUi = ui.subscribe((s, p) => {
-      if (s.t !== p.t || s.playing !== p.playing) show(!s.playing);
+      if (s.t !== p.t || s.playing !== p.playing || s.timeWindow !== p.timeWindow) show(!s.playing);
     });
     const offInfo = client.subscribe(() => show(true));
     return () => {
@@ -69,8 +86,8 @@ export function TimeSlider() {
       onPointerDown={onPointerDown}
       type="range"
       aria-label="Time"
-      min={0}
-      max={horizon}
+      min={range.lo}
+      max={range.hi}
       step="any"
       defaultValue={0}
       onChange={(e) => editor.setTime(Number(e.target.value))}

@@ -148,8 +148,14 @@ export class TimelineClient {
   events(t: number, before: number, after: number, body: string | null): Promise<EventPage> {
     return this.request({ op: "events", t, before, after, body });
   }
-  ticks(n: number): Promise<number[]> {
-    return this.request({ op: "ticks", n });
+  /** The first event of each of n bins of [lo, hi] (by default the whole history [0, horizon]). */
+  ticks(n: number, lo?: number, hi?: number): Promise<number[]> {
+    return this.request({
+      op: "ticks",
+      n,
+      ...(lo === undefined ? {} : { lo }),
+      ...(hi === undefined ? {} : { hi }),
+    });
   }
   series(n: number): Promise<SeriesPoint[]> {
     return this.request({ op: "series", n });

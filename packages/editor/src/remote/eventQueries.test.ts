@@ -55,6 +55,41 @@ describe("event queries", () => {
     expect(ticks).toEqual([...new Set(ticks)].sort((a, b) => a - b));
     expect(eventTicks(tl, 100)[0]).toBe(0);
   });
+
+  it("ticks over a sub-range [lo, hi] (the zoomed Time slider) bin that range only", () => {
+    // a disc bouncing between two walls: a collision every 0.1 s
+    const tl = Timeline.fromScene(
+      sceneOf(
+        [
+          { time: 0, type: "addLine", id: "left", p1: [-3, -5], p2: [-3, 5], kind: "line" },
+          { time: 0, type: "addLine", id: "right", p1: [3, -5], p2: [3, 5], kind: "line" },
+          { time: 0, type: "addBody", id: "a", x: 0.5, y: 0, r: 1, m: 1, v: [40, 0] },
+        ],
+        0,
+      ),
+      { compute: false },
+    );
+    tl.prolong({ time: 10 });
+    const times = [...new Set(tl.eventsBetween(0, tl.horizon).map((e) => e.time))];
+    // from an event's own time (it is included), 2 s on, in 10 bins of 0.2 s (two bounces each)
+    const lo = times.find((t) => t > 3)!;
+    const hi = lo + 2;
+    const n = 10;
+    // the first event of every bin of [lo, hi] that has one
+    const expected: number[] = [];
+    let bin = -1;
+    for (const t of times.filter((t) => t >= lo && t <= hi)) {
+      const k = Math.min(n - 1, Math.floor(((t - lo) / (hi - lo)) * n));
+      if (k > bin) expected.push(t);
+      bin = Math.max(bin, k);
+    }
+    expect(expected.length).toBe(n);
+    expect(eventTicks(tl, n, lo, hi)).toEqual(expected);
+    expect(eventTicks(tl, n, lo, hi)[0]).toBe(lo);
+    // no range is the whole history; an empty range has no ticks
+    expect(eventTicks(tl, n, 0, tl.horizon)).toEqual(eventTicks(tl, n));
+    expect(eventTicks(tl, n, lo, lo)).toEqual([]);
+  });
 });
 
 /**

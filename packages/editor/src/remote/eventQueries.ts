@@ -106,20 +106,28 @@ export function lastEventTime(tl: Log): number | null {
   return tl.nextEventTime(before) ?? before;
 }
 
-/** Event times for the scrubber: for each of n equal bins of [0, horizon], the first event in it. */
-export function eventTicks(tl: Log, n: number): number[] {
+/** The time of the first logged event at or after t, or null when there is none. */
+function firstEventFrom(tl: Log, t: number): number | null {
+  return tl.nextEventTime(tl.prevEventTime(t) ?? Number.NEGATIVE_INFINITY);
+}
+
+/**
+ * Event times for the scrubber: for each of n equal bins of [lo, hi] (by default the whole history
+ * [0, horizon]; the Time slider's zoom asks for its window), the first event in it.
+ */
+export function eventTicks(tl: Log, n: number, lo = 0, hi = tl.horizon): number[] {
   const out: number[] = [];
-  const h = tl.horizon;
-  if (tl.eventCount === 0 || !(h > 0)) return out;
-  let k = 0;
-  let from = -1;
-  while (k < n) {
-    const next = tl.nextEventTime(from);
-    if (next === null) break;
+  const span = hi - lo;
+  if (tl.eventCount === 0 || !(span > 0)) return out;
+  let next = firstEventFrom(tl, lo);
+  while (next !== null && next <= hi) {
     out.push(next);
     // jump to the bin after the one holding `next`
-    k = Math.floor((next / h) * n) + 1;
-    from = Math.max((k * h) / n, next);
+    const k = Math.floor(((next - lo) / span) * n) + 1;
+    if (k >= n) break;
+    // (an event on the bin's edge is the bin's first)
+    const edge = lo + (k * span) / n;
+    next = edge > next ? firstEventFrom(tl, edge) : tl.nextEventTime(next);
   }
   return out;
 }

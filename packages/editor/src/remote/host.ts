@@ -132,7 +132,7 @@ export class TimelineHost {
       case "events":
         return eventPage(this.tl, r.t, r.before, r.after, r.body);
       case "ticks":
-        return eventTicks(this.tl, r.n);
+        return eventTicks(this.tl, r.n, r.lo, r.hi);
       case "series": {
         const tl = this.tl;
         const small =

@@ -110,7 +110,8 @@ export type Request =
   | { op: "nextEvent"; t: number }
   | { op: "prevEvent"; t: number }
   | { op: "events"; t: number; before: number; after: number; body: string | null }
-  | { op: "ticks"; n: number }
+  /** Event ticks over n bins of [lo, hi] (by default [0, horizon]; eventQueries.ts eventTicks). */
+  | { op: "ticks"; n: number; lo?: number; hi?: number }
   | { op: "series"; n: number };
 
 export type RequestMessage = Request & { id: number };

@@ -1,8 +1,9 @@
 /**
  * The editor's UI state (never the scene: the Timeline in the worker is the one source of truth for
- * that). Time, speed, selection, tool, view and settings live here; none of them is an undo step.
+ * that). Time, speed, selection, tool, view, the Time slider's zoom and settings live here; none of them is an undo step.
  */
 import { createStore, type Store } from "./createStore";
+import type { TimeWindow } from "./timeWindow";
 
 export type Tool = "move" | "velocity" | "cue" | "disc" | "line" | "ray" | "segment" | "point";
 export type Selection = { kind: "body" | "line" | "point"; id: string } | null;
@@ -49,6 +50,8 @@ export interface UiState {
   message: Message | null;
   newerWork: NewerWork | null;
   eventFilter: string;
+  /** The part of the history the Time slider spans (null: all of it; timeWindow.ts). */
+  timeWindow: TimeWindow | null;
 }
 
 export const initialUiState: UiState = {
@@ -65,6 +68,7 @@ export const initialUiState: UiState = {
   message: null,
   newerWork: null,
   eventFilter: "",
+  timeWindow: null,
 };
 
 export type UiStore = Store<UiState>;

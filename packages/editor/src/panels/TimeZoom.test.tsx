@@ -1,0 +1,95 @@
+// @vitest-environment jsdom
+import { act, cleanup, fireEvent, render, screen, waitFor } from "@testing-library/react";
+import { afterEach, describe, expect, it } from "vitest";
+import { EditorContext } from "../EditorContext";
+import { cradleEditor } from "../testing/harness";
+import { TimePanel } from "./TimePanel";
+
+afterEach(cleanup);
+
+async function renderPanel() {
+  const h = await cradleEditor();
+  render(
+    <EditorContext.Provider value={h.editor}>
+      <TimePanel />
+    </EditorContext.Provider>,
+  );
+  const slider = screen.getByRole("slider", { name: "Time" }) as HTMLInputElement;
+  const button = (name: string) => screen.getByRole("button", { name }) as HTMLButtonElement;
+  const click = (name: string) => act(() => fireEvent.click(button(name)));
+  const range = () => [slider.min, slider.max];
+  const shown = () => screen.queryByRole("status", { name: "Time range shown" })?.textContent ?? null;
+  return { ...h, slider, button, click, range, shown };
+}
+
+describe("Time slider zoom", () => {
+  it("Zoom in, Zoom out and Whole history set the slider's range; the time stays exact", async () => {
+    const { editor, slider, button, click, range, shown } = await renderPanel();
+    expect(editor.client.getSnapshot().horizon).toBe(10);
+    expect(range()).toEqual(["0", "10"]);
+    expect(shown()).toBeNull();
+    expect(button("Zoom out").disabled).toBe(true);
+    expect(button("Whole history").disabled).toBe(true);
+    act(() => editor.setTime(2.5));
+    // half the span, the time keeping its place (a quarter of the way along)
+    click("Zoom in");
+    expect(range()).toEqual(["1.25", "6.25"]);
+    expect(slider.value).toBe("2.5");
+    expect(shown()).toBe("showing 1.25–6.25 s");
+    click("Zoom in");
+    expect(range()).toEqual(["1.875", "4.375"]);
+    // every time exactly, on the slider and from it
+    act(() => editor.setTime(2.5000001));
+    expect(slider.value).toBe("2.5000001");
+    fireEvent.change(slider, { target: { value: "3.3000001" } });
+    expect(editor.ui.getState().t).toBe(3.3000001);
+    // a time past the window turns the page: same span, from where the window ended
+    act(() => editor.setTime(5));
+    expect(range()).toEqual(["4.375", "6.875"]);
+    expect(slider.value).toBe("5");
+    expect(shown()).toBe("showing 4.375–6.875 s");
+    // twice the span around the time, up to the whole history
+    click("Zoom out");
+    expect(range()).toEqual(["3.75", "8.75"]);
+    click("Zoom out");
+    expect(range()).toEqual(["0", "10"]);
+    expect(editor.ui.getState().timeWindow).toBeNull();
+    expect(button("Zoom out").disabled).toBe(true);
+    click("Zoom in");
+    click("Zoom in");
+    expect(button("Whole history").disabled).toBe(false);
+    click("Whole history");
+    expect(range()).toEqual(["0", "10"]);
+    expect(slider.value).toBe("5");
+    expect(shown()).toBeNull();
+    // not an undo step
+    expect(editor.history.getState().past).toHaveLength(0);
+  });
+
+  it("the event ticks are those of the window, placed on it", async () => {
+    const { editor, click } = await renderPanel();
+    const ticks = () => [...document.querySelectorAll("svg.ticks line")].map((l) => l.getAttribute("x1"));
+    // the cradle's actions at 0 and its collisions at t = 1 of a 10 s horizon
+    await waitFor(() => expect(ticks()).toEqual(["0", "100"]));
+    act(() => editor.setTime(1));
+    click("Zoom in");
+    click("Zoom in");
+    click("Zoom in");
+    expect(editor.ui.getState().timeWindow).toEqual({ lo: 0.875, hi: 2.125 });
+    // t = 1 is a tenth of the way along [0.875, 2.125]; the actions at 0 are outside it
+    await waitFor(() => expect(ticks()).toEqual(["100"]));
+  });
+
+  it("playing, the thumb turns to the next page at the window's end (the new range is always written)", async () => {
+    const { editor, slider, click, range } = await renderPanel();
+    act(() => editor.setTime(2));
+    click("Zoom in"); // [1, 6]
+    act(() => editor.ui.setState({ playing: true, t: 2.5 }));
+    // jsdom lays nothing out: the slider is taken as 1 px wide, every move inside the window is sub-pixel
+    expect(slider.value).toBe("2");
+    act(() => editor.ui.setState({ t: 6.5 }));
+    // [6, 11] is past the history's end: shifted back inside it
+    expect(range()).toEqual(["5", "10"]);
+    expect(slider.value).toBe("6.5");
+  });
+});

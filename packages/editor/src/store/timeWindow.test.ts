@@ -1,0 +1,113 @@
+import { describe, expect, it } from "vitest";
+import { canZoomIn, fitInside, follow, minSpan, viewRange, windowLabel, zoomIn, zoomOut } from "./timeWindow";
+
+describe("time window: zoom", () => {
+  it("the whole history (null) spans [0, horizon]; a window spans itself", () => {
+    expect(viewRange(null, 40)).toEqual({ lo: 0, hi: 40 });
+    expect(viewRange({ lo: 5, hi: 10 }, 40)).toEqual({ lo: 5, hi: 10 });
+  });
+
+  it("zoom in halves the span around the time, which keeps its place on the slider", () => {
+    // t = 10 is a quarter of the way along [0, 40]: it stays a quarter of the way along [5, 25]
+    expect(zoomIn(null, 10, 40)).toEqual({ lo: 5, hi: 25 });
+    expect(zoomIn({ lo: 5, hi: 25 }, 10, 40)).toEqual({ lo: 7.5, hi: 17.5 });
+    // at an end the window keeps that end
+    expect(zoomIn(null, 0, 40)).toEqual({ lo: 0, hi: 20 });
+    expect(zoomIn(null, 40, 40)).toEqual({ lo: 20, hi: 40 });
+    // a time outside the window (the history being recomputed) zooms around the nearest end
+    expect(zoomIn({ lo: 5, hi: 25 }, 30, 40)).toEqual({ lo: 15, hi: 25 });
+  });
+
+  it("zoom out doubles the span around the time, inside the history, and ends on the whole history", () => {
+    expect(zoomOut({ lo: 7.5, hi: 17.5 }, 10, 40)).toEqual({ lo: 5, hi: 25 });
+    // shifted back inside [0, end] when it would start before 0
+    expect(zoomOut({ lo: 1, hi: 11 }, 10, 40)).toEqual({ lo: 0, hi: 20 });
+    // or end past the history
+    expect(zoomOut({ lo: 32, hi: 40 }, 39, 40)).toEqual({ lo: 24, hi: 40 });
+    // covering the history (or more) is the whole history
+    expect(zoomOut({ lo: 5, hi: 25 }, 10, 40)).toBeNull();
+    expect(zoomOut({ lo: 0, hi: 30 }, 10, 40)).toBeNull();
+    expect(zoomOut(null, 10, 40)).toBeNull();
+  });
+
+  it("zooming in and out again around the same time gives back the window", () => {
+    let w = zoomIn(zoomIn(zoomIn(null, 1e9 - 3, 1e9), 1e9 - 3, 1e9), 1e9 - 3, 1e9);
+    expect(w!.hi - w!.lo).toBe(1.25e8);
+    w = zoomOut(zoomOut(zoomOut(w, 1e9 - 3, 1e9), 1e9 - 3, 1e9), 1e9 - 3, 1e9);
+    expect(w).toBeNull();
+    const a = zoomIn(zoomIn(null, 12, 40), 12, 40);
+    expect(zoomOut(zoomIn(a, 12, 40), 12, 40)).toEqual(a);
+  });
+
+  it("zoom in stops at the smallest span and on an empty history", () => {
+    expect(canZoomIn(null, 0)).toBe(false);
+    expect(zoomIn(null, 0, 0)).toBeNull();
+    const tiny = { lo: 1e9, hi: 1e9 + 1.5 * minSpan(1e9) };
+    expect(canZoomIn(tiny, 2e9)).toBe(false);
+    expect(zoomIn(tiny, 1e9, 2e9)).toBe(tiny);
+    // halving a billion seconds 60 times stops at about a millisecond (thousands of
+    // floating-point steps), around the time
+    let w = zoomIn(null, 5e8, 1e9);
+    for (let i = 0; i < 60; i++) w = zoomIn(w, 5e8, 1e9);
+    expect(zoomIn(w, 5e8, 1e9)).toBe(w);
+    expect(w!.hi - w!.lo).toBeGreaterThan(minSpan(1e9) / 2);
+    expect(w!.lo).toBeLessThanOrEqual(5e8);
+    expect(w!.hi).toBeGreaterThanOrEqual(5e8);
+  });
+});
+
+describe("time window: following the time", () => {
+  const w = { lo: 10, hi: 20 };
+
+  it("a time inside the window leaves it as it is (the same object)", () => {
+    for (const t of [10, 15, 20]) expect(follow(w, t, 100)).toBe(w);
+    expect(follow(null, 500, 100)).toBeNull();
+  });
+
+  it("a time running off an edge turns to the next page of the same span", () => {
+    expect(follow(w, 20.01, 100)).toEqual({ lo: 20, hi: 30 });
+    expect(follow(w, 30, 100)).toEqual({ lo: 20, hi: 30 });
+    expect(follow(w, 9.99, 100)).toEqual({ lo: 0, hi: 10 });
+    expect(follow({ lo: 30, hi: 40 }, 25, 100)).toEqual({ lo: 20, hi: 30 });
+  });
+
+  it("a jump of more than a page centres the window on the time", () => {
+    expect(follow(w, 55, 100)).toEqual({ lo: 50, hi: 60 });
+    expect(follow({ lo: 50, hi: 60 }, 12, 100)).toEqual({ lo: 7, hi: 17 });
+  });
+
+  it("the window is shifted back inside the history", () => {
+    // a page past the end of the history ends at its end
+    expect(follow(w, 24, 25)).toEqual({ lo: 15, hi: 25 });
+    // a jump to the end (a typed far time) shows the last span
+    expect(follow(w, 1e9, 1e9)).toEqual({ lo: 1e9 - 10, hi: 1e9 });
+    expect(follow({ lo: 50, hi: 60 }, 2, 100)).toEqual({ lo: 0, hi: 10 });
+    // a time past the end of the history counts as its end
+    expect(follow(w, 90, 50)).toEqual({ lo: 40, hi: 50 });
+  });
+
+  it("a history ending before the window is the whole history, as is a page no shorter than it", () => {
+    expect(follow(w, 0, 5)).toBeNull();
+    expect(follow(w, 0, 0)).toBeNull();
+    expect(follow({ lo: 5, hi: 15 }, 2, 9)).toBeNull();
+  });
+
+  it("a history cut inside the window (an edit in the past) keeps it while it holds the time", () => {
+    expect(follow(w, 12, 15)).toBe(w);
+    expect(follow({ lo: 0, hi: 10 }, 0, 0)).toEqual({ lo: 0, hi: 10 });
+  });
+
+  it("fitInside shifts a window into [0, end], or gives the whole history", () => {
+    expect(fitInside(-3, 10, 40)).toEqual({ lo: 0, hi: 10 });
+    expect(fitInside(35, 10, 40)).toEqual({ lo: 30, hi: 40 });
+    expect(fitInside(5, 40, 40)).toBeNull();
+  });
+});
+
+describe("time window: label", () => {
+  it("writes 6 significant digits, more when the window is narrow for its times", () => {
+    expect(windowLabel({ lo: 12.5, hi: 25 })).toBe("12.5–25");
+    expect(windowLabel({ lo: 0, hi: 1 / 3 })).toBe("0–0.333333");
+    expect(windowLabel({ lo: 1e9 - 0.5, hi: 1e9 + 0.5 })).toBe("999999999.5–1000000000.5");
+  });
+});

@@ -1,0 +1,97 @@
+/**
+ * The Time slider's view window: the part [lo, hi] of the history the slider spans, so that a long
+ * history (a time typed far ahead) can still be scrubbed second by second. null is the whole
+ * history [0, horizon], the default, which follows the horizon as it grows. Pure functions; the UI
+ * store holds the window (`timeWindow`, not an undo step, not saved) and timeWindowGuard.ts keeps it
+ * inside the history and around the current time.
+ *
+ * - Zoom in halves the span and zoom out doubles it, both around the current time: the time keeps
+ *   its place on the slider (the thumb does not move), so zooming in and out again is the same
+ *   window. Zooming out to the whole history or more is the whole history (null).
+ * - Following the time (`follow`), like turning pages: a time that runs off an edge (playing past
+ *   hi, stepping to the next event) turns to the next page of the same span, which starts where the
+ *   window ended (backwards: ends where it started), so playback reads the history page by page. A
+ *   jump of more than one page (a typed time, a far event step) centres the window on the time.
+ *   Either way the new page is shifted inside [0, end of the history].
+ */
+
+export interface TimeWindow {
+  lo: number;
+  hi: number;
+}
+
+/** The range the slider spans: the window, or [0, horizon] for the whole history. */
+export function viewRange(w: TimeWindow | null, horizon: number): TimeWindow {
+  return w ?? { lo: 0, hi: horizon };
+}
+
+/**
+ * Smallest span zoom in goes to (s): a billionth of a second, and never so small that the slider's
+ * values are only a few floating-point steps apart (1e-12 of the time's size, thousands of steps).
+ */
+export function minSpan(hi: number): number {
+  return Math.max(1e-9, Math.abs(hi) * 1e-12);
+}
+
+const clamp = (x: number, lo: number, hi: number): number => Math.min(Math.max(x, lo), hi);
+
+/** Whether zoom in would narrow the range (a history to zoom into, not at the smallest span yet). */
+export function canZoomIn(w: TimeWindow | null, horizon: number): boolean {
+  const r = viewRange(w, horizon);
+  return r.hi > r.lo && (r.hi - r.lo) / 2 >= minSpan(r.hi);
+}
+
+/** Half the span, around t (kept at its place on the slider); the window itself when it cannot. */
+export function zoomIn(w: TimeWindow | null, t: number, horizon: number): TimeWindow | null {
+  if (!canZoomIn(w, horizon)) return w;
+  const r = viewRange(w, horizon);
+  const x = clamp(t, r.lo, r.hi);
+  return { lo: clamp(x - (x - r.lo) / 2, r.lo, r.hi), hi: clamp(x + (r.hi - x) / 2, r.lo, r.hi) };
+}
+
+/**
+ * Twice the span, around t (kept at its place on the slider), shifted inside [0, end]; the whole
+ * history (null) once it would cover it. `end`: where the history ends (timeWindowGuard's historyEnd).
+ */
+export function zoomOut(w: TimeWindow | null, t: number, end: number): TimeWindow | null {
+  if (w === null) return null;
+  const x = clamp(t, w.lo, w.hi);
+  return fitInside(x - 2 * (x - w.lo), 2 * (w.hi - w.lo), end);
+}
+
+/** The window [lo, lo + span] shifted inside [0, end]; null (the whole history) when it does not fit. */
+export function fitInside(lo: number, span: number, end: number): TimeWindow | null {
+  if (!(span < end)) return null;
+  const from = clamp(lo, 0, end - span);
+  return { lo: from, hi: Math.min(from + span, end) };
+}
+
+/**
+ * The window kept around the time t in a history ending at `end` (the same object when it stays):
+ * the whole history (null) when the history ends before the window starts; the window itself while
+ * it holds t, even when the history now ends inside it (cut by an edit in the past, it is about to be
+ * computed again); otherwise the page holding t (see the header), shifted inside [0, end].
+ */
+export function follow(w: TimeWindow | null, t: number, end: number): TimeWindow | null {
+  if (w === null) return null;
+  if (end < w.lo) return null;
+  const span = w.hi - w.lo;
+  const x = clamp(t, 0, end);
+  if (x >= w.lo && x <= w.hi) return w;
+  const lo =
+    x > w.hi ? (x <= w.hi + span ? w.hi : x - span / 2) : x >= w.lo - span ? w.lo - span : x - span / 2;
+  return fitInside(lo, span, end);
+}
+
+/**
+ * The window as the Time panel writes it ("12.5–25"): 6 significant digits, more when the window
+ * is narrow for its times, so its two ends always read differently (999999999.5–1000000000.5).
+ */
+export function windowLabel(w: TimeWindow): string {
+  const span = w.hi - w.lo;
+  const size = Math.max(Math.abs(w.lo), Math.abs(w.hi));
+  const digits = span > 0 && size > 0 ? Math.ceil(Math.log10(size / span)) + 3 : 6;
+  const p = clamp(digits, 6, 15);
+  const text = (x: number) => String(Number(x.toPrecision(p)));
+  return `${text(w.lo)}–${text(w.hi)}`;
+}

@@ -1,0 +1,45 @@
+/**
+ * Keeps the UI store's time window (the Time slider's zoom, timeWindow.ts) around the current time:
+ * whenever the time moves (playing, stepping, scrubbing, a typed time) or the history changes
+ * (computing, an edit, an undo), the window follows the time page by page inside the history
+ * (`follow`). The history's end is the horizon, the target of a running restore (after an edit in
+ * the past, an undo, a redo, the history the user had is computed again), or the current time while
+ * it is held past the horizon for such a restore: an undo or an edit in the past keeps the zoom
+ * though the horizon drops to the edit's time or to 0 before the restore starts (two messages from
+ * the host). A load of another scene returns to the whole history with the time (editorSession.ts).
+ */
+import { type ComputeStatus, restoreTarget } from "../remote/protocol";
+import { follow } from "./timeWindow";
+import type { UiStore } from "./uiStore";
+
+/** What the guard watches: the TimelineClient's snapshot (horizon, computation) and its changes. */
+export interface HistorySource {
+  getSnapshot(): { horizon: number; computing: ComputeStatus | null };
+  subscribe(listener: () => void): () => void;
+}
+
+/**
+ * Where the history ends for the window: the horizon, the target of a running restore, or the time t
+ * held past them (the history up to it is about to be computed again).
+ */
+export function historyEnd(info: { horizon: number; computing: ComputeStatus | null }, t = 0): number {
+  return Math.max(info.horizon, restoreTarget(info.computing), t);
+}
+
+/** Keeps the time window of `ui` around the time and inside the history of `source`; returns the unsubscribe. */
+export function keepTimeWindow(ui: UiStore, source: HistorySource): () => void {
+  const check = () => {
+    const s = ui.getState();
+    if (s.timeWindow === null) return;
+    const next = follow(s.timeWindow, s.t, historyEnd(source.getSnapshot(), s.t));
+    if (next !== s.timeWindow) ui.setState({ timeWindow: next });
+  };
+  const offUi = ui.subscribe((s, p) => {
+    if (s.t !== p.t || s.timeWindow !== p.timeWindow) check();
+  });
+  const offSource = source.subscribe(check);
+  return () => {
+    offUi();
+    offSource();
+  };
+}
