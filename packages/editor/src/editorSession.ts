@@ -12,6 +12,7 @@
  */
 
 import { explainRefusal } from "./doc/actionRefs";
+import { summarizeEdit } from "./doc/editSummary";
 import { EMPTY_HISTORY, type History, record, redo, undo } from "./doc/history";
 import { type ObjectKind, renameObject } from "./doc/rename";
 import type { Action, SceneFile, Until } from "./engineTypes";
@@ -247,24 +248,32 @@ export class EditorSession {
     return this.afterLoad(loaded, options);
   }
 
+  /** Undoes the last edit and says which it was (e.g. "Undone: giveVelocity of "a" at t = 4 s."). */
   async undo(): Promise<void> {
     const loaded = await this.serial(() => {
-      const u = undo(this.history.getState(), this.doc);
-      return u ? this.restore(u.scene, u.history) : Promise.resolve(false);
+      const current = this.doc;
+      const u = undo(this.history.getState(), current);
+      return u
+        ? this.restore(u.scene, u.history, `Undone: ${summarizeEdit(u.scene, current)}.`)
+        : Promise.resolve(false);
     });
     if (loaded) await this.afterReload();
   }
 
+  /** Redoes the last undone edit and says which it was. */
   async redo(): Promise<void> {
     const loaded = await this.serial(() => {
-      const r = redo(this.history.getState(), this.doc);
-      return r ? this.restore(r.scene, r.history) : Promise.resolve(false);
+      const current = this.doc;
+      const r = redo(this.history.getState(), current);
+      return r
+        ? this.restore(r.scene, r.history, `Redone: ${summarizeEdit(current, r.scene)}.`)
+        : Promise.resolve(false);
     });
     if (loaded) await this.afterReload();
   }
 
-  /** The queued part of undo and redo: whether the scene was loaded. */
-  private async restore(scene: SceneFile, history: History): Promise<boolean> {
+  /** The queued part of undo and redo: whether the scene was loaded (then `said` is shown). */
+  private async restore(scene: SceneFile, history: History, said: string): Promise<boolean> {
     try {
       await this.client.load(scene, this.keepTo());
     } catch (e) {
@@ -272,7 +281,7 @@ export class EditorSession {
       return false;
     }
     this.history.setState(history);
-    this.ui.setState({ message: null });
+    this.info(said);
     return true;
   }
 

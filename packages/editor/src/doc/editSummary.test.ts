@@ -1,0 +1,40 @@
+import { describe, expect, it } from "vitest";
+import type { Action, SceneFile } from "../engineTypes";
+import { summarizeEdit } from "./editSummary";
+
+const a: Action = { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 };
+const kick: Action = { time: 4.25, type: "giveVelocity", id: "a", v: [1, 0] };
+const scene = (actions: Action[], g = 9.81): SceneFile => ({
+  format: "chapgame",
+  version: 1,
+  g,
+  gravity: [0, 0],
+  actions,
+});
+
+describe("summarizeEdit", () => {
+  it("names one added or removed action with its time, comparing actions by content", () => {
+    expect(summarizeEdit(scene([a]), scene([{ ...a }, kick]))).toBe('giveVelocity of "a" at t = 4.25 s');
+    expect(summarizeEdit(scene([a, kick]), scene([{ ...a }]))).toBe(
+      'the removal of giveVelocity of "a" at t = 4.25 s',
+    );
+  });
+
+  it("counts repeated identical actions, and sums up larger changes by their earliest time", () => {
+    expect(summarizeEdit(scene([a, kick]), scene([a, kick, { ...kick }]))).toBe(
+      'giveVelocity of "a" at t = 4.25 s',
+    );
+    const renamed = [
+      { ...a, id: "b" },
+      { ...kick, id: "b" },
+    ];
+    expect(summarizeEdit(scene([a, kick]), scene(renamed))).toBe(
+      "a change of 4 actions, the earliest at t = 0 s",
+    );
+  });
+
+  it("says when only the globals changed, or nothing did", () => {
+    expect(summarizeEdit(scene([a]), scene([a], 1))).toBe("a change of the scene's g or gravity");
+    expect(summarizeEdit(scene([a]), scene([a]))).toBe("a change that left the actions as they were");
+  });
+});

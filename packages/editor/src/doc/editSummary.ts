@@ -1,0 +1,43 @@
+/**
+ * summarizeEdit(before, after): one line saying what an edit changed, for the message shown after
+ * Undo and Redo (an audit found they said nothing, and undoing an edit at a later time showed no
+ * change at all). Actions are compared by content (the scenes come from the worker, so the same
+ * action is a different object in each), as multisets. Pure.
+ */
+import type { Action, SceneFile } from "../engineTypes";
+import { describeAction } from "./actionRefs";
+
+function key(a: Action): string {
+  return JSON.stringify(a);
+}
+
+/** The actions of `a` that `b` lacks (counting repeats). */
+function minus(a: readonly Action[], b: readonly Action[]): Action[] {
+  const left = new Map<string, number>();
+  for (const x of b) left.set(key(x), (left.get(key(x)) ?? 0) + 1);
+  const out: Action[] = [];
+  for (const x of a) {
+    const n = left.get(key(x)) ?? 0;
+    if (n > 0) left.set(key(x), n - 1);
+    else out.push(x);
+  }
+  return out;
+}
+
+function at(a: Action): string {
+  return `${describeAction(a)} at t = ${Number(a.time.toPrecision(6))} s`;
+}
+
+export function summarizeEdit(before: SceneFile, after: SceneFile): string {
+  const added = minus(after.actions, before.actions);
+  const removed = minus(before.actions, after.actions);
+  if (added.length === 1 && removed.length === 0) return at(added[0]!);
+  if (added.length === 0 && removed.length === 1) return `the removal of ${at(removed[0]!)}`;
+  const changed = [...added, ...removed];
+  if (changed.length > 0) {
+    const first = Math.min(...changed.map((a) => a.time));
+    return `a change of ${added.length + removed.length} actions, the earliest at t = ${Number(first.toPrecision(6))} s`;
+  }
+  const globals = before.g !== after.g || before.gravity.join() !== after.gravity.join();
+  return globals ? "a change of the scene's g or gravity" : "a change that left the actions as they were";
+}
