@@ -11,7 +11,7 @@ import type { TimelineLike } from "./timelineLike";
  * A host on a fake clock: computing takes 0.5 ms per event, every reading of the clock 0.01 ms;
  * scheduled rounds run when the test says.
  */
-function fakeHost() {
+function fakeHost(initial: SceneFile = dilutedGas({ n: 60, packing: 0.3, seed: 5 })) {
   let clock = 0;
   const tasks: (() => void)[] = [];
   const sent: HostMessage[] = [];
@@ -36,7 +36,7 @@ function fakeHost() {
         return clock;
       },
     },
-    dilutedGas({ n: 60, packing: 0.3, seed: 5 }),
+    initial,
   );
   const infos = () =>
     sent.filter((m): m is { type: "info"; info: TimelineInfo } => m.type === "info").map((m) => m.info);

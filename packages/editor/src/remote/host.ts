@@ -12,6 +12,7 @@ import { eventPage, eventTicks, lastEventTime } from "./eventQueries";
 import { packFrame } from "./packFrame";
 import {
   type ComputeStatus,
+  type ErrorInfo,
   type HostMessage,
   type Request,
   type RequestMessage,
@@ -42,6 +43,25 @@ interface Job extends ComputeStatus {
   budget: number;
 }
 
+/**
+ * An edit in the past whose later actions the running restore job is still checking: its reply
+ * waits until the history passes `checkTo` (ok) or a later action is refused (the edit is taken
+ * back, and the reply carries the refusal as a synchronous apply would have).
+ */
+interface PendingEdit {
+  /** The request to answer. */
+  id: number;
+  /** The action list before the edit, to take it back. */
+  before: Action[];
+  /** The last action's time, up to the old history's end: the check is done once the horizon passes it. */
+  checkTo: number;
+  /** The old history's end, recomputed again after a take-back. */
+  horizon: number;
+}
+
+/** run()'s value for a request answered later (an edit whose later actions are being checked). */
+const DEFERRED = Symbol("deferred");
+
 export interface HostEnv {
   post(message: HostMessage, transfer?: Transferable[]): void;
   /** Runs fn soon, after pending messages were handled (setTimeout 0 or a MessageChannel). */
@@ -57,6 +77,7 @@ export class TimelineHost {
   private idle = false;
   private stopped: string | null = null;
   private job: Job | null = null;
+  private pending: PendingEdit | null = null;
   private scheduled = false;
   private readonly series = new SeriesRecorder();
   private lastRecord = Number.NEGATIVE_INFINITY;
@@ -78,6 +99,7 @@ export class TimelineHost {
   handle(message: RequestMessage): void {
     try {
       const value = this.run(message);
+      if (value === DEFERRED) return;
       if (value instanceof Float64Array) this.env.post({ type: "reply", id: message.id, ok: true, value });
       else if (value && typeof value === "object" && "data" in value && value.data instanceof Float64Array) {
         this.env.post({ type: "reply", id: message.id, ok: true, value }, [value.data.buffer]);
@@ -87,7 +109,7 @@ export class TimelineHost {
     }
   }
 
-  private run(r: Request): unknown {
+  private run(r: RequestMessage): unknown {
     switch (r.op) {
       case "load": {
         // Where the user's history reached, read before the load replaces it (a second undo while
@@ -95,6 +117,10 @@ export class TimelineHost {
         const keep =
           r.keepTo === undefined ? null : Math.max(r.keepTo, this.tl.horizon, restoreTarget(this.job));
         const tl = this.factory(r.scene);
+        this.answerPending({
+          message: "the scene was replaced before the edit's later actions were checked",
+          path: null,
+        });
         this.job = null;
         this.tl = tl;
         this.series.clear();
@@ -103,12 +129,20 @@ export class TimelineHost {
         return null;
       }
       case "apply":
-        this.applyAll(r.actions);
-        return null;
+        return this.applyAll(r.actions, r.id);
       case "compute":
         this.startJob(r.until, r.restore === true);
         return null;
       case "cancel":
+        // Cancelling the check of an edit's later actions takes the edit back (it is not known
+        // valid) and brings the old history back in slices (Cancel again stops that).
+        if (this.pending) {
+          this.takeBack(
+            "Cancelled: the edit was taken back (the actions after it were still being checked).",
+            null,
+          );
+          return null;
+        }
         this.job = null;
         this.changed(false);
         return null;
@@ -152,7 +186,14 @@ export class TimelineHost {
     return this.index;
   }
 
-  private applyAll(actions: Action[]): void {
+  /**
+   * Applies an edit. An edit in the past recomputes only up to its own time (checkLater: false) and
+   * the rest in slices, with progress and Cancel: an edit before a later action at t = 100 of a
+   * 20,000-disc scene blocked the worker for 3.5 s while the engine checked the later actions. The
+   * reply then waits until the recomputation has passed them (PendingEdit).
+   */
+  private applyAll(actions: Action[], id: number): null | typeof DEFERRED {
+    if (this.pending) throw new Error("an edit is still being checked: wait for it");
     const before = this.tl.actions.slice();
     // Where the user's history reaches: past the horizon while an earlier edit's history is still
     // being brought back (a second quick edit must not cut it to the part recomputed so far).
@@ -161,11 +202,8 @@ export class TimelineHost {
     let applied = 0;
     this.series.cut(Math.min(...actions.map((a) => a.time)));
     try {
-      // Each edit in the past recomputes only up to the last action (validating every action at
-      // once); the rest of the old history is recomputed below in slices, with progress and Cancel
-      // (an edit at t = 3 of a 4-million-event history blocked the worker for 10 s).
       for (const a of actions) {
-        this.tl.apply(a, { keepHorizon: false });
+        this.tl.apply(a, { keepHorizon: false, checkLater: false });
         applied++;
       }
     } catch (e) {
@@ -178,12 +216,52 @@ export class TimelineHost {
       throw e;
     }
     this.changed(true);
+    const last = this.tl.actions.at(-1)?.time ?? 0;
+    const checkTo = Math.min(horizon, last);
+    if (this.tl.horizon < checkTo) {
+      this.pending = { id, before, checkTo, horizon };
+      this.startJob({ time: horizon - this.tl.horizon }, true);
+      return DEFERRED;
+    }
     if (this.tl.horizon < horizon) this.startJob({ time: horizon - this.tl.horizon }, true);
+    return null;
+  }
+
+  /** Answers the pending edit (ok when `error` is null) and forgets it. */
+  private answerPending(error: ErrorInfo | null): void {
+    const p = this.pending;
+    if (!p) return;
+    this.pending = null;
+    if (error === null) this.env.post({ type: "reply", id: p.id, ok: true, value: null });
+    else this.env.post({ type: "reply", id: p.id, ok: false, error });
+  }
+
+  /**
+   * Takes the pending edit back (its later actions were refused, or their check was cancelled):
+   * the old action list (the timeline computes lazily, so setActions starts it from 0 at once),
+   * then the old history recomputed in slices.
+   */
+  private takeBack(message: string, path: string | null): void {
+    const p = this.pending!;
+    this.job = null;
+    this.tl.setActions(p.before);
+    this.answerPending({ message, path });
+    this.changed(true);
+    if (this.tl.horizon < p.horizon) this.startJob({ time: p.horizon - this.tl.horizon }, true);
   }
 
   private startJob(until: Until | null, restore = false): void {
     const h = this.tl.horizon;
     const running = this.job;
+    // While an edit's later actions are being checked, its job runs on (a compute-ahead request
+    // would otherwise replace it and the edit's reply would never come); a request for more time
+    // extends it.
+    if (this.pending && running && !restore) {
+      if (until?.time !== undefined && until.events === undefined && running.targetTime !== null)
+        running.targetTime = Math.max(running.targetTime, h + until.time);
+      this.changed(false);
+      return;
+    }
     // A request for less than a running restore covers (the editor's "compute ahead" after an edit)
     // leaves it running: it would otherwise cut the recomputation of the user's history short.
     if (
@@ -242,11 +320,20 @@ export class TimelineHost {
       try {
         res = this.tl.prolongSlice(until, job.budget);
       } catch (e) {
+        if (this.pending) {
+          // A later action the edit made invalid (or a Zeno state before the old horizon): the
+          // edit is refused, as a synchronous apply would have refused it.
+          const info = errorInfo(e);
+          const later = info.path?.startsWith("actions[") === true;
+          this.takeBack(later ? `${info.message} (once this action is in place)` : info.message, info.path);
+          return;
+        }
         // The engine refuses to go on (a Zeno state): the history up to the horizon stands.
         this.stopped = errorInfo(e).message;
         this.job = null;
         break;
       }
+      if (this.pending && (res.done || this.tl.horizon >= this.pending.checkTo)) this.answerPending(null);
       const took = this.env.now() - t0;
       job.events += res.events;
       job.budget = Math.max(16, Math.min(1 << 20, Math.round(job.budget * (took > 0 ? SLICE_MS / took : 2))));

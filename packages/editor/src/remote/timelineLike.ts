@@ -8,7 +8,7 @@ export interface TimelineLike {
   readonly actions: readonly Action[];
   readonly horizon: number;
   readonly eventCount: number;
-  apply(action: Action, options?: { keepHorizon?: boolean }): void;
+  apply(action: Action, options?: { keepHorizon?: boolean; checkLater?: boolean }): void;
   setActions(actions: readonly Action[]): void;
   prolongSlice(until: Until, budget: number): { done: boolean; events: number; horizon: number };
   stateAt(t: number): SceneState;

@@ -8,7 +8,7 @@ import { disc, fingerprint, scene } from "./testSupport.js";
 import { Timeline } from "./timeline.js";
 
 /** Four discs bouncing in a box of segments, no friction: events for ever. */
-function boxed(): Timeline {
+function boxed(options: { compute?: boolean } = {}): Timeline {
   const wall = (id: string, p1: [number, number], p2: [number, number]): Action => ({
     time: 0,
     type: "addLine",
@@ -31,6 +31,7 @@ function boxed(): Timeline {
       ],
       0,
     ),
+    options,
   );
 }
 
@@ -79,10 +80,46 @@ describe("Timeline.apply with keepHorizon: false", () => {
     tl.apply({ time: 7, type: "giveVelocity", id: "small", v: [0, 0] }, { keepHorizon: false });
     expect(tl.horizon).toBe(7);
     expect(() => tl.apply(nudge, { keepHorizn: false } as unknown as { keepHorizon: boolean })).toThrow(
-      "options.keepHorizn: unknown field (known: keepHorizon)",
+      "options.keepHorizn: unknown field (known: keepHorizon, checkLater)",
     );
     expect(() => tl.apply(nudge, { keepHorizon: "no" } as unknown as { keepHorizon: boolean })).toThrow(
       "options.keepHorizon: must be true or false",
     );
+    expect(() => tl.apply(nudge, { checkLater: false })).toThrow(
+      "options.checkLater: can be false only with keepHorizon: false",
+    );
+  });
+});
+
+describe("Timeline.apply with keepHorizon: false and checkLater: false (compute: false)", () => {
+  it("recomputes only to the edit's own time; prolonging through the later actions gives the same history bit for bit", () => {
+    const full = boxed({ compute: false });
+    full.apply({ time: 60, type: "giveVelocity", id: "c", v: [1, 1] });
+    full.prolongTo(200);
+    const lazy = boxed({ compute: false });
+    lazy.apply({ time: 60, type: "giveVelocity", id: "c", v: [1, 1] });
+    lazy.prolongTo(200);
+    full.apply(nudge);
+    lazy.apply(nudge, { keepHorizon: false, checkLater: false });
+    expect(lazy.horizon).toBe(2.5); // not 60, where the later action is
+    for (let k = 0; k < 10_000 && !lazy.prolongSlice({ time: 200 - lazy.horizon }, 64).done; k++);
+    expect(fingerprint(lazy)).toEqual(fingerprint(full));
+  });
+
+  it("a later action made invalid is refused by the prolong that reaches it, named as apply would; setActions takes the edit back", () => {
+    const tl = boxed({ compute: false });
+    tl.apply({ time: 6, type: "addBody", id: "e", x: 10, y: 10, r: 1, m: 1 });
+    tl.prolongTo(50);
+    const before = tl.actions.slice();
+    const fresh = fingerprint(tl);
+    const blocker: Action = { time: 4, type: "addBody", id: "z", x: 10, y: 10.5, r: 1, m: 1 };
+    tl.apply(blocker, { keepHorizon: false, checkLater: false });
+    expect(tl.horizon).toBe(4);
+    // actions[8] is e's addBody in the list before the edit, as the synchronous refusal names it
+    expect(() => tl.prolongTo(50)).toThrow(/^actions\[8\]: body "e" would overlap body "z" at time 6$/);
+    expect(tl.horizon).toBe(6);
+    tl.setActions(before);
+    tl.prolongTo(50);
+    expect(fingerprint(tl)).toEqual(fresh);
   });
 });

@@ -14,14 +14,20 @@ export function show(v: unknown): string {
   return typeof v === "string" ? JSON.stringify(v) : String(v);
 }
 
-/** Validates apply's options; returns keepHorizon (default true). SceneError naming `options.<field>`. */
-export function checkApplyOptions(raw: unknown): boolean {
-  if (!isObject(raw)) throw new SceneError("options", "must be an object with an optional keepHorizon");
-  onlyKeys(raw, ["keepHorizon"], "options");
+/** Validates apply's options: keepHorizon (default true) and checkLater (default true; false only
+ *  with keepHorizon false). SceneError naming `options.<field>`. */
+export function checkApplyOptions(raw: unknown): { keepHorizon: boolean; checkLater: boolean } {
+  if (!isObject(raw))
+    throw new SceneError("options", "must be an object with optional keepHorizon and checkLater");
+  onlyKeys(raw, ["keepHorizon", "checkLater"], "options");
   const k = raw.keepHorizon;
   if (k !== undefined && typeof k !== "boolean")
     throw new SceneError("options.keepHorizon", "must be true or false");
-  return k !== false;
+  const c = raw.checkLater;
+  if (c !== undefined && typeof c !== "boolean") throw new SceneError("options.checkLater", "must be true or false");
+  if (c === false && k !== false)
+    throw new SceneError("options.checkLater", "can be false only with keepHorizon: false");
+  return { keepHorizon: k !== false, checkLater: c !== false };
 }
 
 /** Validates an until (a prolong's argument): SceneError naming `path`'s field. */

@@ -143,7 +143,7 @@ export class Timeline extends TimelineReader {
    *  the horizon is refused (`action.time`). */
   apply(action: Action, options: ApplyOptions = {}): void {
     const a = freezeAction(checkAction(action, "action"));
-    const keepHorizon = checkApplyOptions(options);
+    const { keepHorizon, checkLater } = checkApplyOptions(options);
     const c = this.core;
     let insertAt = c.acts.length;
     while (insertAt > 0 && (c.acts[insertAt - 1] as Action).time > a.time) insertAt--;
@@ -171,15 +171,21 @@ export class Timeline extends TimelineReader {
       c.pathOf = (i) => (i === insertAt ? "action" : `actions[${i > insertAt ? i - 1 : i}]`);
       if (!forward) {
         reopenGoals(c);
-        // keepHorizon false: only as far as the last action (each is still validated), not the old horizon.
+        // keepHorizon false: only as far as the last action (each is still validated), not the old
+        // horizon; with checkLater false only as far as this action (later ones checked by prolong).
         const lastAction = (c.acts[c.acts.length - 1] as Action).time;
-        const tLimit = keepHorizon ? oldHorizon : Math.max(a.time, Math.min(oldHorizon, lastAction));
+        const tLimit = keepHorizon
+          ? oldHorizon
+          : checkLater
+            ? Math.max(a.time, Math.min(oldHorizon, lastAction))
+            : a.time;
         c.goals.push({ tLimit, eLimit: INF });
       }
       c.drive(INF, { tLimit: a.time, eLimit: INF });
       if (!c.eager && a.until) c.goals.push(goalFrom(c, a.until, a.time));
       c.drive(INF, null);
-      c.pathOf = (i) => `actions[${i}]`;
+      // checkLater false: the later actions are checked by a prolong; it names them as this call would.
+      if (checkLater) c.pathOf = (i) => `actions[${i}]`;
     } catch (e) {
       undo();
       if (e instanceof SceneError && e.path.startsWith("actions["))

@@ -85,6 +85,18 @@ export interface ApplyOptions {
    * progress and cancel), which gives the same history bit for bit.
    */
   keepHorizon?: boolean | undefined;
+  /**
+   * With keepHorizon false: whether this call also validates the actions after this one, up to the
+   * old horizon. true (the default): it does, recomputing up to the last of them. false: it
+   * recomputes only up to this action's own time; the later actions are validated when a prolong,
+   * prolongTo or prolongSlice reaches them, and one made invalid is refused there (SceneError
+   * naming it as `actions[i]`, its index in `actions` before this call, the history up to it
+   * kept), this action staying applied: the caller takes it back with setActions. For a UI that
+   * computes in slices with progress and Cancel (an edit before a later action at t = 100 of a
+   * 20,000-disc scene blocked for 3.5 s). Only with keepHorizon: false, and only a timeline made
+   * with `compute: false` defers them: with `compute: true` every action is applied at once anyway.
+   */
+  checkLater?: boolean | undefined;
 }
 
 /** What a prolong did. */

@@ -1,0 +1,140 @@
+import { Timeline } from "@chapgame/engine";
+import { describe, expect, it } from "vitest";
+import type { Action, SceneFile, Until } from "../engineTypes";
+import { sceneOf } from "../testing/scenes";
+import { TimelineHost } from "./host";
+import type { HostMessage, TimelineInfo } from "./protocol";
+import type { TimelineLike } from "./timelineLike";
+
+/**
+ * An edit in the past, before later actions: the host recomputes only up to the edit and checks
+ * the later actions in slices (audit of session 15: an edit before an action at t = 100 of a
+ * 20,000-disc scene blocked the worker for 3.5 s with no progress and no Cancel). The reply waits
+ * for the check. Four discs in a box; a disc "e" is added at t = 30.
+ */
+const wall = (id: string, p1: [number, number], p2: [number, number]): Action => ({
+  time: 0,
+  type: "addLine",
+  id,
+  p1,
+  p2,
+  kind: "segment",
+});
+const disc = (id: string, x: number, y: number, v: [number, number]): Action => ({
+  time: 0,
+  type: "addBody",
+  id,
+  x,
+  y,
+  r: 1,
+  m: 1,
+  v,
+});
+const later: Action = { time: 30, type: "addBody", id: "e", x: 50, y: 50, r: 1, m: 1 };
+const box: SceneFile = sceneOf(
+  [
+    wall("s", [0, 0], [100, 0]),
+    wall("e", [100, 0], [100, 100]),
+    wall("n", [100, 100], [0, 100]),
+    wall("w", [0, 100], [0, 0]),
+    disc("a", 3, 3, [2, 1.3]),
+    disc("b", 10, 4, [-1.1, 2]),
+    disc("c", 15, 15, [0.7, -2.2]),
+    disc("d", 5, 12, [1.9, 0.4]),
+    later,
+  ],
+  0,
+);
+
+/** A host on a manual schedule: every prolongSlice computes at most one event. */
+function slowHost() {
+  const tasks: (() => void)[] = [];
+  const sent: HostMessage[] = [];
+  let clock = 0;
+  const factory = (scene: SceneFile): TimelineLike => {
+    const tl = Timeline.fromScene(scene, { compute: false });
+    const slice = tl.prolongSlice.bind(tl);
+    return Object.assign(tl, { prolongSlice: (u: Until, budget: number) => slice(u, Math.min(budget, 1)) });
+  };
+  const host = new TimelineHost(
+    factory,
+    { post: (m) => sent.push(m), schedule: (fn) => tasks.push(fn), now: () => (clock += 1) },
+    box,
+  );
+  const run = () => {
+    for (let k = 0; k < 100_000 && tasks.length > 0; k++) tasks.shift()!();
+  };
+  const infos = () =>
+    sent.filter((m): m is { type: "info"; info: TimelineInfo } => m.type === "info").map((m) => m.info);
+  const lastDoc = () =>
+    infos()
+      .filter((i) => i.doc !== null)
+      .at(-1)!.doc;
+  const reply = (id: number) => sent.find((m) => m.type === "reply" && m.id === id);
+  host.handle({ id: 1, op: "compute", until: { time: 40 } });
+  run();
+  return { host, tasks, sent, run, infos, reply, lastDoc };
+}
+
+describe("TimelineHost: an edit in the past before later actions", () => {
+  it("answers once the later actions are checked, computing in slices meanwhile; the history is as from scratch", () => {
+    const h = slowHost();
+    const edit: Action = { time: 3, type: "giveVelocity", id: "a", v: [1, 1] };
+    h.host.handle({ id: 2, op: "apply", actions: [edit] });
+    expect(h.reply(2)).toBeUndefined(); // not yet: e's addBody at t = 30 is still to be checked
+    expect(h.infos().at(-1)!).toMatchObject({ horizon: 3, computing: { restore: true, targetTime: 40 } });
+    // a compute-ahead request meanwhile does not replace the check (the reply would never come)
+    h.host.handle({ id: 3, op: "compute", until: { time: 5 } });
+    h.host.handle({ id: 4, op: "frame", t: 1, window: 0 }); // answered between slices
+    expect(h.reply(4)).toMatchObject({ ok: true });
+    h.run();
+    expect(h.reply(2)).toEqual({ type: "reply", id: 2, ok: true, value: null });
+    const reference = Timeline.fromScene(box, { compute: false });
+    reference.apply(edit);
+    reference.prolongTo(40);
+    expect(h.infos().at(-1)!).toMatchObject({
+      horizon: 40,
+      computing: null,
+      eventCount: reference.eventCount,
+    });
+  });
+
+  it("an edit that makes a later action invalid is refused when the check reaches it, and taken back", () => {
+    const h = slowHost();
+    const before = h.infos().at(-1)!;
+    const doc = h.lastDoc();
+    // a disc at rest at (50, 50.5) from t = 10: e, added there at t = 30, would overlap it
+    const blocker: Action = { time: 10, type: "addBody", id: "z", x: 50, y: 50.5, r: 1, m: 1 };
+    h.host.handle({ id: 2, op: "apply", actions: [blocker] });
+    expect(h.reply(2)).toBeUndefined();
+    h.run();
+    expect(h.reply(2)).toEqual({
+      type: "reply",
+      id: 2,
+      ok: false,
+      error: {
+        message: 'actions[8]: body "e" would overlap body "z" at time 30 (once this action is in place)',
+        path: "actions[8]",
+      },
+    });
+    const after = h.infos().at(-1)!;
+    expect(after).toMatchObject({ horizon: 40, computing: null, eventCount: before.eventCount });
+    expect(h.lastDoc()).toEqual(doc);
+  });
+
+  it("Cancel during the check takes the edit back and says so", () => {
+    const h = slowHost();
+    const before = h.infos().at(-1)!.eventCount;
+    const doc = h.lastDoc();
+    h.host.handle({ id: 2, op: "apply", actions: [{ time: 3, type: "giveVelocity", id: "a", v: [1, 1] }] });
+    expect(h.reply(2)).toBeUndefined(); // the check is under way (it takes a few rounds here)
+    h.host.handle({ id: 3, op: "cancel" });
+    expect(h.reply(2)).toMatchObject({
+      ok: false,
+      error: { message: expect.stringMatching(/^Cancelled: the edit was taken back/) },
+    });
+    h.run();
+    expect(h.infos().at(-1)!).toMatchObject({ eventCount: before, horizon: 40 });
+    expect(h.lastDoc()).toEqual(doc);
+  });
+});
