@@ -39,6 +39,8 @@ export const EMPTY_INFO: TimelineInfo = {
 export class TimelineClient {
   private info: TimelineInfo = EMPTY_INFO;
   private nextId = 1;
+  /** When the host's last message arrived (performance.now()). */
+  private lastHeard = Number.NEGATIVE_INFINITY;
   private readonly pending = new Map<
     number,
     { resolve: (v: unknown) => void; reject: (e: Error) => void; sent: number }
@@ -73,11 +75,17 @@ export class TimelineClient {
     this.latestAsked = Number.NaN;
   }
 
-  /** Milliseconds the oldest unanswered request has been waiting (0 when none). */
+  /**
+   * Milliseconds the host has been silent while a request waits: since the oldest unanswered
+   * request was sent or the host's last message, whichever is later (0 when none waits). A host
+   * that reports progress is not stalled, also while a request waits for its computation (an edit
+   * in the past is answered once its later actions are checked, in slices).
+   */
   stalledFor(now: number = performance.now()): number {
+    if (this.pending.size === 0) return 0;
     let oldest = now;
     for (const p of this.pending.values()) oldest = Math.min(oldest, p.sent);
-    return now - oldest;
+    return now - Math.max(oldest, this.lastHeard);
   }
 
   getSnapshot = (): TimelineInfo => this.info;
@@ -93,6 +101,7 @@ export class TimelineClient {
   }
 
   private receive(m: HostMessage): void {
+    this.lastHeard = performance.now();
     if (m.type === "info") {
       const doc = m.info.doc ?? this.info.doc;
       this.info = { ...m.info, doc };
