@@ -24,7 +24,8 @@ export function checkApplyOptions(raw: unknown): { keepHorizon: boolean; checkLa
   if (k !== undefined && typeof k !== "boolean")
     throw new SceneError("options.keepHorizon", "must be true or false");
   const c = raw.checkLater;
-  if (c !== undefined && typeof c !== "boolean") throw new SceneError("options.checkLater", "must be true or false");
+  if (c !== undefined && typeof c !== "boolean")
+    throw new SceneError("options.checkLater", "must be true or false");
   if (c === false && k !== false)
     throw new SceneError("options.checkLater", "can be false only with keepHorizon: false");
   return { keepHorizon: k !== false, checkLater: c !== false };
