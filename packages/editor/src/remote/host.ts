@@ -14,7 +14,6 @@ import {
   type ComputeStatus,
   type ErrorInfo,
   type HostMessage,
-  type Request,
   type RequestMessage,
   restoreTarget,
   type TimelineInfo,
