@@ -72,6 +72,30 @@ describe("Editor.removeAction", () => {
   });
 });
 
+describe("Editor.removeAction checks the actions after the removed one", () => {
+  it("a removal that makes a later addBody overlap is refused and taken back (it was accepted and the computation stopped)", async () => {
+    // a, at x = 10, moves away at t = 1 to leave room for b, placed at x = 10 at t = 3
+    const h = testEditor();
+    const actions: Action[] = [
+      { time: 0, type: "addBody", id: "a", x: 10, y: 0, r: 1, m: 1 },
+      { time: 1, type: "giveVelocity", id: "a", v: [5, 0] },
+      { time: 3, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 1 },
+    ];
+    expect(await h.editor.loadScene(sceneOf(actions, 0), { undoable: false })).toBeNull();
+    await settled(h.client);
+    const horizon = h.client.getSnapshot().horizon;
+    const before = h.editor.doc;
+    const err = await h.editor.removeAction(1, { time: 1, type: "giveVelocity", id: "a" });
+    expect(err).toMatch(
+      /^actions\[1\]: body "b" would overlap body "a" at time 3 — actions\[1\] is the action at t = 3 s: addBody of "b"/,
+    );
+    await settled(h.client);
+    expect(h.editor.doc).toEqual(before);
+    expect(h.editor.history.getState().past).toHaveLength(0);
+    expect(h.client.getSnapshot()).toMatchObject({ horizon, stopped: null });
+  });
+});
+
 describe("a refused edit names the later action it would make invalid", () => {
   it("an edit in the past that makes a later addBody overlap", async () => {
     const h = await loaded();

@@ -149,7 +149,9 @@ export class EditorSession {
   ): Promise<string | null> {
     const before = this.doc;
     try {
-      await this.client.load(scene, options.keepTime ? this.keepTo() : undefined);
+      // A rewrite of the current scene is checked up to where its history reached before the
+      // reply (a removed action could leave a later one invalid).
+      await this.client.load(scene, options.keepTime ? this.keepTo() : undefined, naming);
     } catch (e) {
       // The engine names actions by their index in the list it was given.
       return naming ? this.failNaming(e, scene.actions) : this.fail(e);

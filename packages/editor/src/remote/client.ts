@@ -124,9 +124,11 @@ export class TimelineClient {
     });
   }
 
-  /** Replaces the scene; with `keepTo`, the host recomputes the history the user had (protocol.ts). */
-  load(scene: SceneFile, keepTo?: number): Promise<void> {
-    return this.request(keepTo === undefined ? { op: "load", scene } : { op: "load", scene, keepTo });
+  /** Replaces the scene; with `keepTo`, the host recomputes the history the user had, and with
+   *  `check` answers once the scene's actions are checked (protocol.ts). */
+  load(scene: SceneFile, keepTo?: number, check = false): Promise<void> {
+    if (keepTo === undefined) return this.request({ op: "load", scene });
+    return this.request(check ? { op: "load", scene, keepTo, check } : { op: "load", scene, keepTo });
   }
   apply(actions: Action[]): Promise<void> {
     return this.request({ op: "apply", actions });

@@ -43,19 +43,22 @@ interface Job extends ComputeStatus {
 }
 
 /**
- * An edit in the past whose later actions the running restore job is still checking: its reply
- * waits until the history passes `checkTo` (ok) or a later action is refused (the edit is taken
- * back, and the reply carries the refusal as a synchronous apply would have).
+ * An edit in the past, or a rewrite of the scene (a removed action), whose later actions the
+ * running restore job is still checking: its reply waits until the history passes `checkTo` (ok)
+ * or a later action is refused (the change is taken back, and the reply carries the refusal as a
+ * synchronous apply would have).
  */
 interface PendingEdit {
   /** The request to answer. */
   id: number;
-  /** The action list before the edit, to take it back. */
-  before: Action[];
+  /** How to take the change back: the action list before an edit, or the timeline before a load. */
+  undo: { actions: Action[] } | { timeline: TimelineLike };
   /** The last action's time, up to the old history's end: the check is done once the horizon passes it. */
   checkTo: number;
   /** The old history's end, recomputed again after a take-back. */
   horizon: number;
+  /** Appended to a refusal of a later action (an edit: " (once this action is in place)"). */
+  suffix: string;
 }
 
 /** run()'s value for a request answered later (an edit whose later actions are being checked). */
@@ -113,18 +116,26 @@ export class TimelineHost {
       case "load": {
         // Where the user's history reached, read before the load replaces it (a second undo while
         // the first one's history is recomputed must not cut it to the part recomputed so far).
-        const keep =
-          r.keepTo === undefined ? null : Math.max(r.keepTo, this.tl.horizon, restoreTarget(this.job));
+        const oldEnd = Math.max(this.tl.horizon, restoreTarget(this.job));
+        const keep = r.keepTo === undefined ? null : Math.max(r.keepTo, oldEnd);
         const tl = this.factory(r.scene);
         this.answerPending({
           message: "the scene was replaced before the edit's later actions were checked",
           path: null,
         });
+        const previous = this.tl;
         this.job = null;
         this.tl = tl;
         this.series.clear();
         this.changed(true);
         if (keep !== null && keep > tl.horizon) this.startJob({ time: keep - tl.horizon }, true);
+        // A rewrite of the scene (a removed action) is answered once its actions are checked up to
+        // the old history's end; a refused one gives the previous timeline back as it was.
+        const checkTo = Math.min(keep ?? 0, tl.actions.at(-1)?.time ?? 0);
+        if (r.check === true && tl.horizon < checkTo) {
+          this.pending = { id: r.id, undo: { timeline: previous }, checkTo, horizon: oldEnd, suffix: "" };
+          return DEFERRED;
+        }
         return null;
       }
       case "apply":
@@ -218,7 +229,13 @@ export class TimelineHost {
     const last = this.tl.actions.at(-1)?.time ?? 0;
     const checkTo = Math.min(horizon, last);
     if (this.tl.horizon < checkTo) {
-      this.pending = { id, before, checkTo, horizon };
+      this.pending = {
+        id,
+        undo: { actions: before },
+        checkTo,
+        horizon,
+        suffix: " (once this action is in place)",
+      };
       this.startJob({ time: horizon - this.tl.horizon }, true);
       return DEFERRED;
     }
@@ -236,14 +253,18 @@ export class TimelineHost {
   }
 
   /**
-   * Takes the pending edit back (its later actions were refused, or their check was cancelled):
-   * the old action list (the timeline computes lazily, so setActions starts it from 0 at once),
-   * then the old history recomputed in slices.
+   * Takes the pending change back (its later actions were refused, or their check was cancelled):
+   * the old action list (the timeline computes lazily, so setActions starts it from 0 at once) or
+   * the timeline before the load, then the old history recomputed in slices.
    */
   private takeBack(message: string, path: string | null): void {
     const p = this.pending!;
     this.job = null;
-    this.tl.setActions(p.before);
+    if ("actions" in p.undo) this.tl.setActions(p.undo.actions);
+    else {
+      this.tl = p.undo.timeline;
+      this.series.clear();
+    }
     this.answerPending({ message, path });
     this.changed(true);
     if (this.tl.horizon < p.horizon) this.startJob({ time: p.horizon - this.tl.horizon }, true);
@@ -324,7 +345,7 @@ export class TimelineHost {
           // edit is refused, as a synchronous apply would have refused it.
           const info = errorInfo(e);
           const later = info.path?.startsWith("actions[") === true;
-          this.takeBack(later ? `${info.message} (once this action is in place)` : info.message, info.path);
+          this.takeBack(later ? `${info.message}${this.pending.suffix}` : info.message, info.path);
           return;
         }
         // The engine refuses to go on (a Zeno state): the history up to the horizon stands.

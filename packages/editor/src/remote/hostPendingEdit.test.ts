@@ -122,6 +122,30 @@ describe("TimelineHost: an edit in the past before later actions", () => {
     expect(h.lastDoc()).toEqual(doc);
   });
 
+  it("a checked load (a rewrite of the scene) that a later action refuses gives the previous timeline back as it was", () => {
+    const h = slowHost();
+    const before = h.infos().at(-1)!;
+    const doc = h.lastDoc()!;
+    // the same scene with a disc at rest at (50, 50.5) from t = 10, where e is added at t = 30
+    const rewritten = {
+      ...doc,
+      actions: [
+        ...doc.actions.slice(0, 8),
+        { time: 10, type: "addBody" as const, id: "z", x: 50, y: 50.5, r: 1, m: 1 },
+        doc.actions[8]!,
+      ],
+    };
+    h.host.handle({ id: 2, op: "load", scene: rewritten, keepTo: 0, check: true });
+    expect(h.reply(2)).toBeUndefined();
+    h.run();
+    expect(h.reply(2)).toMatchObject({
+      ok: false,
+      error: { message: 'actions[9]: body "e" would overlap body "z" at time 30', path: "actions[9]" },
+    });
+    expect(h.infos().at(-1)!).toMatchObject({ horizon: 40, computing: null, eventCount: before.eventCount });
+    expect(h.lastDoc()).toEqual(doc);
+  });
+
   it("Cancel during the check takes the edit back and says so", () => {
     const h = slowHost();
     const before = h.infos().at(-1)!.eventCount;

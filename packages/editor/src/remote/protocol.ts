@@ -99,8 +99,11 @@ export type Request =
    * Replaces the scene. `keepTo` keeps the history the user had (an undo, a redo, a rename at the
    * current time): the host then recomputes, as a restore, up to the later of `keepTo` and where
    * the history reached before the load (its horizon, or the target of a restore still running).
+   * `check` (a rewrite of the current scene, e.g. a removed action; with keepTo): the reply waits
+   * until the actions are checked up to where the old history reached, and a refused scene is
+   * taken back, the previous one kept as it was.
    */
-  | { op: "load"; scene: SceneFile; keepTo?: number }
+  | { op: "load"; scene: SceneFile; keepTo?: number; check?: boolean }
   | { op: "apply"; actions: Action[] }
   /** `restore`: the computation brings back history the user had (see ComputeStatus.restore). */
   | { op: "compute"; until: Until | null; restore?: boolean }
