@@ -27,6 +27,12 @@ export class EditorSession {
   portFactory: (() => Port) | null = null;
   /** The tail of the queue of scene changes (see serial). */
   private changes: Promise<unknown> = Promise.resolve();
+  /**
+   * The scene before a change the host has not answered yet (an edit or a rewrite whose later
+   * actions it is still checking; its doc already shows the change): what a restarted engine loads,
+   * since the change is answered "engine restarted" and never recorded.
+   */
+  private unconfirmed: SceneFile | null = null;
 
   constructor(
     readonly client: TimelineClient,
@@ -150,11 +156,14 @@ export class EditorSession {
     const before = this.doc;
     try {
       // A rewrite of the current scene is checked up to where its history reached before the
-      // reply (a removed action could leave a later one invalid).
+      // reply (a removed action could leave a later one invalid); until then it is unconfirmed.
+      if (naming) this.unconfirmed = before;
       await this.client.load(scene, options.keepTime ? this.keepTo() : undefined, naming);
     } catch (e) {
       // The engine names actions by their index in the list it was given.
       return naming ? this.failNaming(e, scene.actions) : this.fail(e);
+    } finally {
+      this.unconfirmed = null;
     }
     if (options.undoable !== false) this.history.setState(record(this.history.getState(), before));
     this.ui.setState((s) => ({
@@ -200,11 +209,14 @@ export class EditorSession {
       const behind = this.notComputedYet(actions);
       if (behind !== null) return this.fail(behind);
       try {
+        this.unconfirmed = before;
         await this.client.apply(actions);
       } catch (e) {
         // The engine names a later action by its index in the list before this edit (Timeline.apply);
         // with several actions, the later ones meet a list holding the earlier ones.
         return actions.length === 1 ? this.failNaming(e, before.actions) : this.fail(e);
+      } finally {
+        this.unconfirmed = null;
       }
       this.history.setState(record(this.history.getState(), before));
       this.ui.setState({ message: null });
@@ -295,7 +307,7 @@ export class EditorSession {
     if (!this.portFactory) return;
     // Not queued behind pending changes: they may be waiting for the host that stopped answering
     // (replacePort rejects them).
-    const doc = this.doc;
+    const doc = this.unconfirmed ?? this.doc;
     this.client.replacePort(this.portFactory());
     try {
       // The new host starts with no history: compute up to the current time and the Calculation

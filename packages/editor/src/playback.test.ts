@@ -24,8 +24,10 @@ describe("advanceClock", () => {
     // after an undo at t = 10 the history is recomputed from 0: playing must not jump back to 1.9
     expect(advanceClock(10, 1, 0.05, 1.9, true)).toEqual({ t: 10, stop: false });
     expect(advanceClock(10, -1, 0.05, 1.9, true)).toEqual({ t: 10, stop: false });
-    // nothing is computing any more (cancelled): go to the end of what there is, and stop
+    // nothing is computing any more (cancelled): go to the end of what there is, and stop there
+    // forwards; backwards, play on from it (it stood still at 10 for ever: review of session 15)
     expect(advanceClock(10, 1, 0.05, 1.9, false)).toEqual({ t: 1.9, stop: true });
+    expect(advanceClock(10, -1, 0.05, 1.9, false)).toEqual({ t: 1.9, stop: false });
   });
 });
 

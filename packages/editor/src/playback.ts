@@ -43,7 +43,8 @@ export function advanceClock(
 ): { t: number; stop: boolean } {
   // Ahead of the computed history (an undo or a rename recomputes it from the start while the time
   // stays): wait there while it is computed, rather than jump back to where it has got so far.
-  if (t > horizon) return canExtend ? { t, stop: false } : { t: horizon, stop: true };
+  // Nothing coming: back to the end of the history, from where a backward play goes on.
+  if (t > horizon) return canExtend ? { t, stop: false } : { t: horizon, stop: speed > 0 };
   const next = t + speed * Math.min(dt, MAX_FRAME_SECONDS);
   if (next <= 0 && speed < 0) return { t: 0, stop: true };
   if (next >= horizon && speed > 0) return { t: horizon, stop: !canExtend };
@@ -70,7 +71,9 @@ export function startPlayback(editor: Editor, now: () => number = () => performa
       }
     }
     if (!s.playing || s.speed === 0) return;
-    const waiting = extend || info.computing !== null;
+    // Auto-extend asks for more only when playing forwards: backwards, only a running computation
+    // is worth waiting for (an undo's, past whose horizon the time may stand).
+    const waiting = info.computing !== null || (s.speed > 0 && extend);
     const step = advanceClock(s.t, s.speed, dt, info.horizon, waiting);
     ui.setState(step.stop ? { t: step.t, playing: false } : { t: step.t });
   });

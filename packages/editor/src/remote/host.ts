@@ -131,7 +131,9 @@ export class TimelineHost {
         if (keep !== null && keep > tl.horizon) this.startJob({ time: keep - tl.horizon }, true);
         // A rewrite of the scene (a removed action) is answered once its actions are checked up to
         // the old history's end; a refused one gives the previous timeline back as it was.
-        const checkTo = Math.min(keep ?? 0, tl.actions.at(-1)?.time ?? 0);
+        // Checked only up to where the old history reached: an action beyond it was never checked
+        // before, and a refusal there would be blamed on this change.
+        const checkTo = Math.min(keep === null ? 0 : oldEnd, tl.actions.at(-1)?.time ?? 0);
         if (r.check === true && tl.horizon < checkTo) {
           this.pending = { id: r.id, undo: { timeline: previous }, checkTo, horizon: oldEnd, suffix: "" };
           return DEFERRED;
@@ -148,7 +150,7 @@ export class TimelineHost {
         // valid) and brings the old history back in slices (Cancel again stops that).
         if (this.pending) {
           this.takeBack(
-            "Cancelled: the edit was taken back (the actions after it were still being checked).",
+            "Cancelled: the change was taken back (the actions after it were still being checked).",
             null,
           );
           return null;
@@ -237,6 +239,9 @@ export class TimelineHost {
         suffix: " (once this action is in place)",
       };
       this.startJob({ time: horizon - this.tl.horizon }, true);
+      // exact: h + (H - h) may round below H (TypeScript still takes this.job for the null set above)
+      const job = this.job as Job | null;
+      if (job) job.targetTime = horizon;
       return DEFERRED;
     }
     if (this.tl.horizon < horizon) this.startJob({ time: horizon - this.tl.horizon }, true);
@@ -265,9 +270,10 @@ export class TimelineHost {
       this.tl = p.undo.timeline;
       this.series.clear();
     }
-    this.answerPending({ message, path });
+    this.pending = null;
     this.changed(true);
     if (this.tl.horizon < p.horizon) this.startJob({ time: p.horizon - this.tl.horizon }, true);
+    this.env.post({ type: "reply", id: p.id, ok: false, error: { message, path } });
   }
 
   private startJob(until: Until | null, restore = false): void {
@@ -337,6 +343,7 @@ export class TimelineHost {
       }
       const t0 = this.env.now();
       let res: { done: boolean; events: number };
+      const before = this.tl.horizon;
       try {
         res = this.tl.prolongSlice(until, job.budget);
       } catch (e) {
@@ -353,7 +360,19 @@ export class TimelineHost {
         this.job = null;
         break;
       }
-      if (this.pending && (res.done || this.tl.horizon >= this.pending.checkTo)) this.answerPending(null);
+      // A time target reached only up to round-off (h + (T - h) < T): one more slice gets there
+      // (T - h is then exact, so h + (T - h) = T). A slice that made no progress ends the job.
+      const short =
+        res.done &&
+        job.targetTime !== null &&
+        this.tl.horizon < job.targetTime &&
+        job.targetEvents === null &&
+        this.tl.horizon > before;
+      if (short) res = { ...res, done: false };
+      if (this.pending && (res.done || this.tl.horizon >= this.pending.checkTo)) {
+        this.changed(false);
+        this.answerPending(null);
+      }
       const took = this.env.now() - t0;
       job.events += res.events;
       job.budget = Math.max(16, Math.min(1 << 20, Math.round(job.budget * (took > 0 ? SLICE_MS / took : 2))));

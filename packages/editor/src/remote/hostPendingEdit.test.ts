@@ -155,7 +155,7 @@ describe("TimelineHost: an edit in the past before later actions", () => {
     h.host.handle({ id: 3, op: "cancel" });
     expect(h.reply(2)).toMatchObject({
       ok: false,
-      error: { message: expect.stringMatching(/^Cancelled: the edit was taken back/) },
+      error: { message: expect.stringMatching(/^Cancelled: the change was taken back/) },
     });
     h.run();
     expect(h.infos().at(-1)!).toMatchObject({ eventCount: before, horizon: 40 });
