@@ -88,6 +88,11 @@ export class TimelineClient {
     return now - Math.max(oldest, this.lastHeard);
   }
 
+  /** Requests sent and not answered yet. */
+  get waiting(): number {
+    return this.pending.size;
+  }
+
   getSnapshot = (): TimelineInfo => this.info;
 
   subscribe = (listener: () => void): (() => void) => {

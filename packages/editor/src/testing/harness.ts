@@ -42,11 +42,14 @@ export async function cradleEditor(): Promise<ReturnType<typeof testEditor>> {
   return h;
 }
 
-/** Resolves when the host has no computation running (after a load, edit or compute). */
+/**
+ * Resolves when the host has no computation running and no request of the client waits for an
+ * answer (after a load, edit or compute; an edit in the past is answered only after a check).
+ */
 export async function settled(client: TimelineClient, timeoutMs = 10_000): Promise<void> {
   const end = Date.now() + timeoutMs;
   await new Promise((r) => setTimeout(r, 0));
-  while (client.getSnapshot().computing !== null || client.getSnapshot().revision < 0) {
+  while (client.getSnapshot().computing !== null || client.getSnapshot().revision < 0 || client.waiting > 0) {
     if (Date.now() > end) throw new Error("host did not settle");
     await new Promise((r) => setTimeout(r, 5));
   }
