@@ -248,6 +248,21 @@ export class TimelineHost {
     return null;
   }
 
+  /**
+   * A refusal of a later action, named by its index in the action list before the edit (as a
+   * synchronous apply names it, and as the editor explains it): the engine names it by its index in
+   * the current list, which holds the edit. Actions are the same objects in both lists.
+   */
+  private beforeEdit(info: ErrorInfo, p: PendingEdit): ErrorInfo {
+    const m = info.path === null ? null : /^actions\[(\d+)\]/.exec(info.path);
+    if (m === null || !("actions" in p.undo)) return info;
+    const j = p.undo.actions.indexOf(this.tl.actions[Number(m[1])] as Action);
+    if (j < 0) return info;
+    const was = m[0];
+    const now = `actions[${j}]`;
+    return { message: info.message.replace(was, now), path: (info.path as string).replace(was, now) };
+  }
+
   /** Answers the pending edit (ok when `error` is null) and forgets it. */
   private answerPending(error: ErrorInfo | null): void {
     const p = this.pending;
@@ -350,7 +365,7 @@ export class TimelineHost {
         if (this.pending) {
           // A later action the edit made invalid (or a Zeno state before the old horizon): the
           // edit is refused, as a synchronous apply would have refused it.
-          const info = errorInfo(e);
+          const info = this.beforeEdit(errorInfo(e), this.pending);
           const later = info.path?.startsWith("actions[") === true;
           this.takeBack(later ? `${info.message}${this.pending.suffix}` : info.message, info.path);
           return;

@@ -106,7 +106,7 @@ describe("Timeline.apply with keepHorizon: false and checkLater: false (compute:
     expect(fingerprint(lazy)).toEqual(fingerprint(full));
   });
 
-  it("a later action made invalid is refused by the prolong that reaches it, named as apply would; setActions takes the edit back", () => {
+  it("a later action made invalid is refused by the prolong that reaches it, named by its index in actions; setActions takes the edit back", () => {
     const tl = boxed({ compute: false });
     tl.apply({ time: 6, type: "addBody", id: "e", x: 10, y: 10, r: 1, m: 1 });
     tl.prolongTo(50);
@@ -115,8 +115,9 @@ describe("Timeline.apply with keepHorizon: false and checkLater: false (compute:
     const blocker: Action = { time: 4, type: "addBody", id: "z", x: 10, y: 10.5, r: 1, m: 1 };
     tl.apply(blocker, { keepHorizon: false, checkLater: false });
     expect(tl.horizon).toBe(4);
-    // actions[8] is e's addBody in the list before the edit, as the synchronous refusal names it
-    expect(() => tl.prolongTo(50)).toThrow(/^actions\[8\]: body "e" would overlap body "z" at time 6$/);
+    // actions[9] is e's addBody in `actions`, the edit included (z's addBody at t = 4 is before it)
+    expect(tl.actions[9]).toMatchObject({ type: "addBody", id: "e" });
+    expect(() => tl.prolongTo(50)).toThrow(/^actions\[9\]: body "e" would overlap body "z" at time 6$/);
     expect(tl.horizon).toBe(6);
     tl.setActions(before);
     tl.prolongTo(50);

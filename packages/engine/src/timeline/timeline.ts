@@ -184,8 +184,7 @@ export class Timeline extends TimelineReader {
       c.drive(INF, { tLimit: a.time, eLimit: INF });
       if (!c.eager && a.until) c.goals.push(goalFrom(c, a.until, a.time));
       c.drive(INF, null);
-      // checkLater false: the later actions are checked by a prolong; it names them as this call would.
-      if (checkLater) c.pathOf = (i) => `actions[${i}]`;
+      c.pathOf = (i) => `actions[${i}]`;
     } catch (e) {
       undo();
       if (e instanceof SceneError && e.path.startsWith("actions["))

@@ -90,7 +90,7 @@ export interface ApplyOptions {
    * old horizon. true (the default): it does, recomputing up to the last of them. false: it
    * recomputes only up to this action's own time; the later actions are validated when a prolong,
    * prolongTo or prolongSlice reaches them, and one made invalid is refused there (SceneError
-   * naming it as `actions[i]`, its index in `actions` before this call, the history up to it
+   * naming it as `actions[i]`, its index in `actions`, this action included; the history up to it
    * kept), this action staying applied: the caller takes it back with setActions. For a UI that
    * computes in slices with progress and Cancel (an edit before a later action at t = 100 of a
    * 20,000-disc scene blocked for 3.5 s). Only with keepHorizon: false, and only a timeline made
