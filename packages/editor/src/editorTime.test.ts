@@ -93,6 +93,23 @@ describe("EditorTime event steps", () => {
     });
   });
 
+  it("→ from a time past the computed history first computes up to that time in one request", async () => {
+    // after an undo's recomputation was cancelled short of the time: one event per request took
+    // about an hour to cover 20 s of a 20,000-disc gas (audit of session 15)
+    const h = await loaded(farMeeting);
+    const asked: RequestMessage[] = [];
+    const handle = h.host.handle.bind(h.host);
+    h.host.handle = (m: RequestMessage) => {
+      if (m.op === "compute") asked.push(m);
+      handle(m);
+    };
+    h.editor.ui.setState({ t: 15 }); // what a reload at t = 15 leaves, its recomputation cancelled
+    await h.editor.stepEvent(1);
+    expect(h.editor.ui.getState().t).toBe(20);
+    expect(asked[0]).toMatchObject({ until: { time: 5 } });
+    expect(asked.length).toBeLessThanOrEqual(3);
+  });
+
   it("computing ahead to the next event can be cancelled: the step says so and stays", async () => {
     const h = await loaded(farMeeting);
     h.editor.setTime(1);
