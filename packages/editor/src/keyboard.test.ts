@@ -104,6 +104,24 @@ describe("keyboard shortcuts", () => {
     off();
   });
 
+  it("in a table cell (a cell's button): Delete and Backspace delete nothing, the others work", () => {
+    // a focused cell selects its row: Backspace after Enter in a cell deleted that body (audit)
+    const { editor, calls } = recorder();
+    const off = bindKeyboard(editor);
+    const table = document.createElement("table");
+    const cell = document.createElement("td");
+    const button = document.createElement("button");
+    cell.append(button);
+    table.append(cell);
+    document.body.append(table);
+    button.focus();
+    expect(press(button, "Backspace")).toBe(true);
+    expect(press(button, "Delete")).toBe(true);
+    press(button, "z", { ctrlKey: true });
+    expect(calls).toEqual(["undo"]);
+    off();
+  });
+
   it("elsewhere (the page, a button): every shortcut", () => {
     const { editor, calls } = recorder();
     const off = bindKeyboard(editor);

@@ -14,6 +14,9 @@ const TEXT_INPUTS = new Set(["text", "search", "number", "email", "url", "tel", 
 /** Whether the focused element `target` uses `e` itself, so it is no shortcut. */
 function ownsKey(target: EventTarget | null, e: KeyboardEvent): boolean {
   if (!(target instanceof HTMLElement)) return false;
+  // A table cell keeps Delete and Backspace (as a spreadsheet's does): they deleted the body whose
+  // row a focused cell had selected.
+  if ((e.key === "Delete" || e.key === "Backspace") && target.closest("td, th") !== null) return true;
   const tag = target.tagName;
   if (tag === "TEXTAREA" || target.isContentEditable) return true;
   if (tag === "SELECT") return !(e.ctrlKey || e.metaKey); // a list keeps its keys, not Ctrl+Z

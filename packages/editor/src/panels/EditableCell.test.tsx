@@ -69,6 +69,23 @@ describe("EditableCell", () => {
     expect(onCommit).not.toHaveBeenCalled();
   });
 
+  it("closed by Enter or Escape, the cell keeps the focus on its button, closed (focus went to the page)", async () => {
+    const onCommit = vi.fn(async () => null);
+    render(<EditableCell label="a vx" value="1" onCommit={onCommit} />);
+    let input = open("a vx");
+    fireEvent.change(input, { target: { value: "2" } });
+    await act(async () => {
+      fireEvent.keyDown(input, { key: "Enter" });
+    });
+    const button = screen.getByRole("button", { name: "a vx" });
+    expect(document.activeElement).toBe(button);
+    expect(screen.queryByRole("textbox")).toBeNull(); // not opened again by that focus
+    input = open("a vx");
+    fireEvent.keyDown(input, { key: "Escape" });
+    expect(document.activeElement).toBe(screen.getByRole("button", { name: "a vx" }));
+    expect(screen.queryByRole("textbox")).toBeNull();
+  });
+
   it("opened while the value changes (playing), follows it and commits nothing until typed in", async () => {
     // A cell opened during playback: the table refreshes to the paused time after it opened.
     const onCommit = vi.fn(async () => null);

@@ -10,7 +10,7 @@
  * Opening a cell pauses playback (inside an editor): the edit applies at the current time, and the
  * values the cell and its row show are those of that time, not of a moment that playback has left.
  */
-import { useContext, useId, useRef, useState } from "react";
+import { useContext, useEffect, useId, useRef, useState } from "react";
 import { EditorContext } from "../EditorContext";
 
 export interface EditableCellProps {
@@ -37,23 +37,36 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
     setEdit({ typed: null });
   };
 
-  const close = () => {
+  // Closed by Enter or Escape, the cell keeps the focus (on its button, without opening again): it
+  // went to the page, where Backspace then deleted the body the cell's row had selected (audit).
+  const view = useRef<HTMLButtonElement>(null);
+  const refocus = useRef(false);
+  useEffect(() => {
+    if (edit !== null || !refocus.current) return;
+    view.current?.focus();
+  }, [edit]);
+  const close = (byKey = false) => {
+    refocus.current = byKey;
     setEdit(null);
     setError(null);
+  };
+  const focused = () => {
+    if (refocus.current) refocus.current = false;
+    else open();
   };
 
   const typed = edit?.typed ?? null;
 
-  const commit = async () => {
+  const commit = async (byKey = false) => {
     if (pending.current) return;
     if (typed === null || typed === value) {
-      close();
+      close(byKey);
       return;
     }
     pending.current = true;
     try {
       const err = await onCommit(typed.trim());
-      if (err === null) close();
+      if (err === null) close(byKey);
       else setError(err);
     } finally {
       pending.current = false;
@@ -62,7 +75,14 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
 
   if (edit === null)
     return (
-      <button type="button" className="cell-view" aria-label={label} onClick={open} onFocus={open}>
+      <button
+        type="button"
+        className="cell-view"
+        aria-label={label}
+        onClick={open}
+        onFocus={focused}
+        ref={view}
+      >
         {value}
       </button>
     );
@@ -82,8 +102,8 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
           if (error === null) void commit();
         }}
         onKeyDown={(e) => {
-          if (e.key === "Enter") void commit();
-          if (e.key === "Escape") close();
+          if (e.key === "Enter") void commit(true);
+          if (e.key === "Escape") close(true);
         }}
       />
       {error && (
