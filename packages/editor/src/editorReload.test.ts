@@ -30,6 +30,17 @@ describe("Editor while a reload's history is recomputed", () => {
     expect(await h.editor.updateBody("c3", { v: [0, 1] })).toBeNull();
   });
 
+  it('says so when the recomputation was cancelled short of the time (it said "still being computed")', async () => {
+    const h = await cradleEditor();
+    // what an undo at t = 50 leaves when its recomputation is cancelled at the horizon (10 s)
+    h.editor.ui.setState({ t: 50 });
+    expect(h.client.getSnapshot()).toMatchObject({ horizon: 10, computing: null });
+    const err = await h.editor.updateBody("c3", { v: [0, 1] });
+    expect(err).toBe(
+      "The history reaches only t = 10 s (its computation was cancelled): go to a computed time, or type t = 50 s to compute up to it, then edit.",
+    );
+  });
+
   it("a second undo while the first one's history is recomputed keeps the whole range the user had", async () => {
     const h = testEditor();
     await h.editor.loadScene(dilutedGas({ n: 1500, packing: 0.1, seed: 3 }), { undoable: false });

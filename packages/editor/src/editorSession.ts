@@ -199,6 +199,8 @@ export class EditorSession {
     if (!(late > h)) return null;
     const at = Number(late.toPrecision(6));
     const now = Number(h.toPrecision(6));
+    if (this.client.getSnapshot().computing === null)
+      return `The history reaches only t = ${now} s (its computation was cancelled): go to a computed time, or type t = ${at} s to compute up to it, then edit.`;
     return `The history is still being computed up to t = ${at} s (it reaches ${now} s): edit once it gets there.`;
   }
 

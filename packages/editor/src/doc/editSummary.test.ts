@@ -20,7 +20,7 @@ describe("summarizeEdit", () => {
     );
   });
 
-  it("counts repeated identical actions, and sums up larger changes by their earliest time", () => {
+  it("counts repeated identical actions, names a rename, and sums up other changes by their earliest time", () => {
     expect(summarizeEdit(scene([a, kick]), scene([a, kick, { ...kick }]))).toBe(
       'giveVelocity of "a" at t = 4.25 s',
     );
@@ -28,7 +28,12 @@ describe("summarizeEdit", () => {
       { ...a, id: "b" },
       { ...kick, id: "b" },
     ];
-    expect(summarizeEdit(scene([a, kick]), scene(renamed))).toBe(
+    expect(summarizeEdit(scene([a, kick]), scene(renamed))).toBe('the rename of "a" to "b"');
+    const moved = [
+      { ...a, id: "b", x: 5 },
+      { ...kick, id: "b" },
+    ];
+    expect(summarizeEdit(scene([a, kick]), scene(moved))).toBe(
       "a change of 4 actions, the earliest at t = 0 s",
     );
   });

@@ -28,11 +28,29 @@ function at(a: Action): string {
   return `${describeAction(a)} at t = ${Number(a.time.toPrecision(6))} s`;
 }
 
+/**
+ * "the rename of "a" to "b"" when the change replaced every action of one id by the same actions
+ * of another (a rename), else null.
+ */
+function renameOf(added: Action[], removed: Action[]): string | null {
+  if (added.length === 0 || added.length !== removed.length) return null;
+  const ids = (list: Action[]) => new Set(list.map((a) => ("id" in a ? a.id : null)));
+  const from = [...ids(removed)];
+  const to = [...ids(added)];
+  if (from.length !== 1 || to.length !== 1 || from[0] === null || to[0] === null) return null;
+  const renamed = removed.map((a) => key({ ...a, id: to[0] } as Action));
+  const left = minus(added, []).map(key);
+  if (renamed.sort().join() !== left.sort().join()) return null;
+  return `the rename of ${JSON.stringify(from[0])} to ${JSON.stringify(to[0])}`;
+}
+
 export function summarizeEdit(before: SceneFile, after: SceneFile): string {
   const added = minus(after.actions, before.actions);
   const removed = minus(before.actions, after.actions);
   if (added.length === 1 && removed.length === 0) return at(added[0]!);
   if (added.length === 0 && removed.length === 1) return `the removal of ${at(removed[0]!)}`;
+  const rename = renameOf(added, removed);
+  if (rename !== null) return rename;
   const changed = [...added, ...removed];
   if (changed.length > 0) {
     const first = Math.min(...changed.map((a) => a.time));
