@@ -27,4 +27,11 @@ describe("withoutAction", () => {
       "nothing was removed",
     );
   });
+
+  it("says an action already removed is no longer in the scene (a second click said 'try again')", () => {
+    const once = withoutAction(scene, 1, { time: 1, type: "giveVelocity", id: "a" });
+    expect(() => withoutAction(once, 1, { time: 1, type: "giveVelocity", id: "a" })).toThrow(
+      'giveVelocity of "a" at t = 1 s is no longer in the scene: nothing was removed.',
+    );
+  });
 });

@@ -19,6 +19,11 @@ export function withoutAction(scene: SceneFile, index: number, entry: ActionEntr
   if (a === undefined || a.time !== entry.time || a.type !== entry.type || id !== entry.id) {
     const what = entry.id === null ? entry.type : `${entry.type} of ${JSON.stringify(entry.id)}`;
     const t = Number(entry.time.toPrecision(6));
+    // A second click on the ✕ of an entry just removed said "try again" (audit of session 15).
+    const same = (b: (typeof scene.actions)[number]) =>
+      b.time === entry.time && b.type === entry.type && ("id" in b ? b.id : null) === entry.id;
+    if (!scene.actions.some(same))
+      throw new Error(`${what} at t = ${t} s is no longer in the scene: nothing was removed.`);
     throw new Error(
       `The scene changed since the Event log listed ${what} at t = ${t} s: nothing was removed (try again).`,
     );
