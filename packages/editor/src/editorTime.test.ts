@@ -104,8 +104,10 @@ describe("EditorTime event steps", () => {
       handle(m);
     };
     h.editor.ui.setState({ t: 15 }); // what a reload at t = 15 leaves, its recomputation cancelled
+    h.editor.info("No event before t = 0 s."); // an earlier step's notice: a successful step clears it
     await h.editor.stepEvent(1);
     expect(h.editor.ui.getState().t).toBe(20);
+    expect(h.editor.ui.getState().message).toBeNull();
     expect(asked[0]).toMatchObject({ until: { time: 5 } });
     expect(asked.length).toBeLessThanOrEqual(3);
   });

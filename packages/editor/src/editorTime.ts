@@ -101,8 +101,11 @@ export class EditorTime extends EditorSession {
       return;
     }
     if (moved()) return;
-    if (next !== null) this.ui.setState({ t: next });
-    else if (direction < 0) this.info(`No event before t = ${shown(t)} s.`);
+    if (next !== null) {
+      // An earlier step's or Play's notice ("No event after …") no longer holds (it stayed up).
+      const info = this.ui.getState().message?.tone === "info";
+      this.ui.setState(info ? { t: next, message: null } : { t: next });
+    } else if (direction < 0) this.info(`No event before t = ${shown(t)} s.`);
   }
 
   /**
