@@ -6,51 +6,26 @@
 import { describe, expect, it } from "vitest";
 import type { Action, SceneFile } from "./engineTypes";
 import { settled, testEditor } from "./testing/harness";
-import { sceneOf } from "./testing/scenes";
+import { boxScene } from "./testing/scenes";
 
-const wall = (id: string, p1: [number, number], p2: [number, number]): Action => ({
-  time: 0,
-  type: "addLine",
-  id,
-  p1,
-  p2,
-  kind: "segment",
-});
-const disc = (id: string, x: number, y: number, v: [number, number]): Action => ({
-  time: 0,
-  type: "addBody",
-  id,
-  x,
-  y,
-  r: 1,
-  m: 1,
-  v,
-});
-const box: SceneFile = sceneOf(
-  [
-    wall("s", [0, 0], [100, 0]),
-    wall("e", [100, 0], [100, 100]),
-    wall("n", [100, 100], [0, 100]),
-    wall("w", [0, 100], [0, 0]),
-    disc("a", 3, 3, [2, 1.3]),
-    disc("b", 10, 4, [-1.1, 2]),
-    disc("c", 15, 15, [0.7, -2.2]),
-    disc("d", 5, 12, [1.9, 0.4]),
-    { time: 30, type: "addBody", id: "e", x: 50, y: 50, r: 1, m: 1 },
-  ],
-  0,
-);
+const box: SceneFile = boxScene([{ time: 30, type: "addBody", id: "e", x: 50, y: 50, r: 1, m: 1 }]);
 const blocker: Action = { time: 10, type: "addBody", id: "z", x: 50, y: 50.5, r: 1, m: 1 };
+/** An editor with the box loaded and its history computed to t = 40. */
+async function boxTo40() {
+  const h = testEditor();
+  await h.editor.loadScene(box, { undoable: false });
+  await settled(h.client);
+  await h.editor.goTo(40);
+  await settled(h.client);
+  return h;
+}
+
 const hasZ = (s: SceneFile | null | undefined) =>
   !!s?.actions.some((a) => a.type === "addBody" && a.id === "z");
 
 describe("a taken-back edit and the next queued change", () => {
   it("an edit queued behind a refused edit in the past records the scene without it", async () => {
-    const h = testEditor();
-    await h.editor.loadScene(box, { undoable: false });
-    await settled(h.client);
-    await h.editor.goTo(40);
-    await settled(h.client);
+    const h = await boxTo40();
     h.editor.ui.setState({ t: 10 });
     const first = h.editor.edit([blocker]);
     const second = h.editor.edit([{ time: 10, type: "giveVelocity", id: "a", v: [1, 1] }]);
@@ -67,11 +42,7 @@ describe("a taken-back edit and the next queued change", () => {
   });
 
   it("an undo queued behind a cancelled edit does not put the cancelled edit in Redo", async () => {
-    const h = testEditor();
-    await h.editor.loadScene(box, { undoable: false });
-    await settled(h.client);
-    await h.editor.goTo(40);
-    await settled(h.client);
+    const h = await boxTo40();
     h.editor.ui.setState({ t: 10 });
     expect(await h.editor.edit([{ time: 10, type: "giveVelocity", id: "b", v: [0, 1] }])).toBeNull();
     await settled(h.client);
@@ -93,11 +64,7 @@ describe("a taken-back edit and the next queued change", () => {
 
 describe("a restart while an edit's later actions are being checked", () => {
   it("the restarted engine gets the unchecked edit that was answered 'engine restarted' and not recorded", async () => {
-    const h = testEditor();
-    await h.editor.loadScene(box, { undoable: false });
-    await settled(h.client);
-    await h.editor.goTo(40);
-    await settled(h.client);
+    const h = await boxTo40();
     const rev = h.client.getSnapshot().docRevision;
     h.editor.ui.setState({ t: 10 });
     const edit = h.editor.edit([blocker]); // refused once checked (e would overlap z at t = 30)
@@ -115,11 +82,7 @@ describe("a restart while an edit's later actions are being checked", () => {
 
 describe("the reply of a checked edit comes after the info with its horizon", () => {
   it("an edit queued behind an edit in the past is not refused as 'still being computed' once the host is past it", async () => {
-    const h = testEditor();
-    await h.editor.loadScene(box, { undoable: false });
-    await settled(h.client);
-    await h.editor.goTo(40);
-    await settled(h.client);
+    const h = await boxTo40();
     h.editor.ui.setState({ t: 5 });
     const first = h.editor.edit([{ time: 5, type: "giveVelocity", id: "a", v: [1, 1] }]);
     h.editor.ui.setState({ t: 10 });

@@ -1,7 +1,7 @@
 import { Timeline } from "@chapgame/engine";
 import { describe, expect, it } from "vitest";
 import type { Action, SceneFile, Until } from "../engineTypes";
-import { sceneOf } from "../testing/scenes";
+import { boxScene } from "../testing/scenes";
 import { TimelineHost } from "./host";
 import type { HostMessage, TimelineInfo } from "./protocol";
 import type { TimelineLike } from "./timelineLike";
@@ -12,39 +12,8 @@ import type { TimelineLike } from "./timelineLike";
  * 20,000-disc scene blocked the worker for 3.5 s with no progress and no Cancel). The reply waits
  * for the check. Four discs in a box; a disc "e" is added at t = 30.
  */
-const wall = (id: string, p1: [number, number], p2: [number, number]): Action => ({
-  time: 0,
-  type: "addLine",
-  id,
-  p1,
-  p2,
-  kind: "segment",
-});
-const disc = (id: string, x: number, y: number, v: [number, number]): Action => ({
-  time: 0,
-  type: "addBody",
-  id,
-  x,
-  y,
-  r: 1,
-  m: 1,
-  v,
-});
 const later: Action = { time: 30, type: "addBody", id: "e", x: 50, y: 50, r: 1, m: 1 };
-const box: SceneFile = sceneOf(
-  [
-    wall("s", [0, 0], [100, 0]),
-    wall("e", [100, 0], [100, 100]),
-    wall("n", [100, 100], [0, 100]),
-    wall("w", [0, 100], [0, 0]),
-    disc("a", 3, 3, [2, 1.3]),
-    disc("b", 10, 4, [-1.1, 2]),
-    disc("c", 15, 15, [0.7, -2.2]),
-    disc("d", 5, 12, [1.9, 0.4]),
-    later,
-  ],
-  0,
-);
+const box: SceneFile = boxScene([later]);
 
 /** A host on a manual schedule: every prolongSlice computes at most one event. */
 function slowHost() {

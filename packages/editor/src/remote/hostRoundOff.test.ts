@@ -3,41 +3,18 @@
 // it, and the refused edit was answered OK (review of session 15).
 import { Timeline } from "@chapgame/engine";
 import { expect, it } from "vitest";
-import type { Action, SceneFile } from "../engineTypes";
-import { sceneOf } from "../testing/scenes";
+import type { SceneFile } from "../engineTypes";
+import { boxScene } from "../testing/scenes";
 import { TimelineHost } from "./host";
 import type { HostMessage, TimelineInfo } from "./protocol";
 
-const wall = (id: string, p1: [number, number], p2: [number, number]): Action => ({
-  time: 0,
-  type: "addLine",
-  id,
-  p1,
-  p2,
-  kind: "segment",
-});
-const disc = (id: string, x: number, y: number, v: [number, number]): Action => ({
-  time: 0,
-  type: "addBody",
-  id,
-  x,
-  y,
-  r: 1,
-  m: 1,
-  v,
-});
 const T = 42.88; // 7.52 + (42.88 - 7.52) === 42.879999999999995
-const box: SceneFile = sceneOf(
+const box: SceneFile = boxScene(
+  [{ time: T, type: "addBody", id: "e", x: 50, y: 50, r: 1, m: 1 }],
   [
-    wall("s", [0, 0], [100, 0]),
-    wall("e", [100, 0], [100, 100]),
-    wall("n", [100, 100], [0, 100]),
-    wall("w", [0, 100], [0, 0]),
-    disc("a", 3, 3, [2, 1.3]),
-    disc("b", 10, 4, [-1.1, 2]),
-    { time: T, type: "addBody", id: "e", x: 50, y: 50, r: 1, m: 1 },
+    ["a", 3, 3, [2, 1.3]],
+    ["b", 10, 4, [-1.1, 2]],
   ],
-  0,
 );
 
 it("an edit in the past whose last later action is at the old horizon is checked against it", () => {

@@ -36,3 +36,38 @@ export function loneDiscScene(): SceneFile {
     actions: [{ time: 0, type: "addBody", id: "lonely", x: 0, y: 0, r: 1, m: 1 }],
   };
 }
+
+/**
+ * Discs of radius 1 bouncing in a 100 × 100 box of segments, no friction: `discs` as [id, x, y,
+ * v] (by default four, a to d, near a corner), then `later` (actions after t = 0, e.g. a disc
+ * added at the centre, which an edit in the past can make invalid).
+ */
+export function boxScene(
+  later: Action[],
+  discs: [string, number, number, [number, number]][] = [
+    ["a", 3, 3, [2, 1.3]],
+    ["b", 10, 4, [-1.1, 2]],
+    ["c", 15, 15, [0.7, -2.2]],
+    ["d", 5, 12, [1.9, 0.4]],
+  ],
+): SceneFile {
+  const wall = (id: string, p1: [number, number], p2: [number, number]): Action => ({
+    time: 0,
+    type: "addLine",
+    id,
+    p1,
+    p2,
+    kind: "segment",
+  });
+  return sceneOf(
+    [
+      wall("s", [0, 0], [100, 0]),
+      wall("e", [100, 0], [100, 100]),
+      wall("n", [100, 100], [0, 100]),
+      wall("w", [0, 100], [0, 0]),
+      ...discs.map(([id, x, y, v]): Action => ({ time: 0, type: "addBody", id, x, y, r: 1, m: 1, v })),
+      ...later,
+    ],
+    0,
+  );
+}
