@@ -80,6 +80,8 @@ export class TimelineHost {
   private stopped: string | null = null;
   private job: Job | null = null;
   private pending: PendingEdit | null = null;
+  /** A computation asked while an edit was being checked, to start once the check has passed. */
+  private afterCheck: Until | null | undefined = undefined;
   private scheduled = false;
   private readonly series = new SeriesRecorder();
   private lastRecord = Number.NEGATIVE_INFINITY;
@@ -280,6 +282,7 @@ export class TimelineHost {
   private takeBack(message: string, path: string | null): void {
     const p = this.pending!;
     this.job = null;
+    this.afterCheck = undefined; // asked for the scene with the change: it is not there any more
     if ("actions" in p.undo) this.tl.setActions(p.undo.actions);
     else {
       this.tl = p.undo.timeline;
@@ -300,6 +303,9 @@ export class TimelineHost {
     if (this.pending && running && !restore) {
       if (until?.time !== undefined && until.events === undefined && running.targetTime !== null)
         running.targetTime = Math.max(running.targetTime, h + until.time);
+      // Another kind (until idle, a count of events) runs once the check has passed: it was
+      // dropped without a word (audit of session 15).
+      else this.afterCheck = until;
       this.changed(false);
       return;
     }
@@ -387,6 +393,12 @@ export class TimelineHost {
       if (this.pending && (res.done || this.tl.horizon >= this.pending.checkTo)) {
         this.changed(false);
         this.answerPending(null);
+        const asked = this.afterCheck;
+        this.afterCheck = undefined;
+        if (asked !== undefined) {
+          this.startJob(asked);
+          return;
+        }
       }
       const took = this.env.now() - t0;
       job.events += res.events;

@@ -115,6 +115,18 @@ describe("TimelineHost: an edit in the past before later actions", () => {
     expect(h.lastDoc()).toEqual(doc);
   });
 
+  it("a computation of another kind asked during the check (until idle, a count) runs once it has passed", () => {
+    const h = slowHost();
+    h.host.handle({ id: 2, op: "apply", actions: [{ time: 3, type: "giveVelocity", id: "a", v: [1, 1] }] });
+    h.host.handle({ id: 3, op: "compute", until: { events: 5 } }); // it was dropped without a word
+    expect(h.infos().at(-1)!.computing).toMatchObject({ restore: true, targetEvents: null });
+    h.run();
+    expect(h.reply(2)).toMatchObject({ ok: true });
+    const after = h.infos().filter((i) => i.computing?.targetEvents === 5);
+    expect(after.length).toBeGreaterThan(0);
+    expect(h.infos().at(-1)!.computing).toBeNull();
+  });
+
   it("Cancel during the check takes the edit back and says so", () => {
     const h = slowHost();
     const before = h.infos().at(-1)!.eventCount;
