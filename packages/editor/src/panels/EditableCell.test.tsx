@@ -1,7 +1,7 @@
 // @vitest-environment jsdom
 import { act, cleanup, fireEvent, render, screen } from "@testing-library/react";
 import { afterEach, describe, expect, it, vi } from "vitest";
-import { EditableCell } from "./EditableCell";
+import { EditableCell, SLOW_COMMIT_MS } from "./EditableCell";
 
 afterEach(cleanup);
 
@@ -40,6 +40,29 @@ describe("EditableCell", () => {
     });
     expect(onCommit).toHaveBeenCalledTimes(1);
     expect(screen.getByRole("button", { name: "a m" }).textContent).toBe("1");
+  });
+
+  it("a commit not answered within SLOW_COMMIT_MS says it is being checked, until it is answered", async () => {
+    vi.useFakeTimers();
+    try {
+      let resolve: (v: string | null) => void = () => {};
+      const onCommit = vi.fn(() => new Promise<string | null>((r) => (resolve = r)));
+      render(<EditableCell label="a r" value="1" onCommit={onCommit} />);
+      const input = open("a r");
+      fireEvent.change(input, { target: { value: "2" } });
+      fireEvent.keyDown(input, { key: "Enter" });
+      expect(screen.queryByRole("status")).toBeNull(); // a quick answer shows nothing
+      act(() => {
+        vi.advanceTimersByTime(SLOW_COMMIT_MS);
+      });
+      expect(screen.getByRole("status").textContent).toBe("checking the later actions…");
+      await act(async () => {
+        resolve(null);
+      });
+      expect(screen.queryByRole("status")).toBeNull();
+    } finally {
+      vi.useRealTimers();
+    }
   });
 
   it("a refused value stays in the cell with the message, marked invalid", async () => {

@@ -20,11 +20,15 @@ export interface EditableCellProps {
   size?: number;
 }
 
+/** A commit not answered after this many milliseconds shows that it is being checked. */
+export const SLOW_COMMIT_MS = 300;
+
 export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellProps) {
   // null: at rest (a button); open: `typed` is null until the user types (the input then shows the
   // live value), then the text typed.
   const [edit, setEdit] = useState<{ typed: string | null } | null>(null);
   const [error, setError] = useState<string | null>(null);
+  const [waiting, setWaiting] = useState(false);
   const errorId = useId();
   const editor = useContext(EditorContext);
   // A commit in flight: Enter then a click elsewhere (blur) before the edit was applied committed the
@@ -64,11 +68,16 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
       return;
     }
     pending.current = true;
+    // An edit in the past is answered once the actions after it are checked (seconds in a large
+    // scene): past SLOW_COMMIT_MS the cell says so.
+    const slow = setTimeout(() => setWaiting(true), SLOW_COMMIT_MS);
     try {
       const err = await onCommit(typed.trim());
       if (err === null) close(byKey);
       else setError(err);
     } finally {
+      clearTimeout(slow);
+      setWaiting(false);
       pending.current = false;
     }
   };
@@ -106,6 +115,11 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
           if (e.key === "Escape") close(true);
         }}
       />
+      {waiting && (
+        <span role="status" className="cell-waiting">
+          checking the later actions…
+        </span>
+      )}
       {error && (
         <span id={errorId} role="alert" className="cell-error">
           {error}
