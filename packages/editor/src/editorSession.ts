@@ -21,6 +21,9 @@ import type { Port } from "./remote/protocol";
 import { createStore, type Store } from "./store/createStore";
 import type { UiStore } from "./store/uiStore";
 
+/** A time as messages write it (6 significant digits). */
+export const shown = (t: number): number => Number(t.toPrecision(6));
+
 export class EditorSession {
   readonly history: Store<History> = createStore<History>(EMPTY_HISTORY);
   /** Makes a fresh host (a new Web Worker) for restartEngine; null where none can be made. */
@@ -45,7 +48,7 @@ export class EditorSession {
       if (info.stopped === stopped) return;
       stopped = info.stopped;
       if (stopped === null) return;
-      const h = Number(info.horizon.toPrecision(6));
+      const h = shown(info.horizon);
       this.ui.setState({
         message: { text: `The computation stopped at t = ${h} s: ${stopped}`, tone: "error" },
       });
@@ -194,12 +197,12 @@ export class EditorSession {
    * be built from those values (a velocity typed in one cell keeps the other component shown).
    */
   private notComputedYet(actions: Action[]): string | null {
-    const h = this.client.getSnapshot().horizon;
+    const info = this.client.getSnapshot();
     const late = Math.max(...actions.map((a) => a.time));
-    if (!(late > h)) return null;
-    const at = Number(late.toPrecision(6));
-    const now = Number(h.toPrecision(6));
-    if (this.client.getSnapshot().computing === null)
+    if (!(late > info.horizon)) return null;
+    const at = shown(late);
+    const now = shown(info.horizon);
+    if (info.computing === null)
       return `The history reaches only t = ${now} s (its computation was cancelled): go to a computed time, or type t = ${at} s to compute up to it, then edit.`;
     return `The history is still being computed up to t = ${at} s (it reaches ${now} s): edit once it gets there.`;
   }

@@ -6,11 +6,8 @@
  * nothing here is recorded in the undo history.
  */
 
-import { EditorSession } from "./editorSession";
+import { EditorSession, shown } from "./editorSession";
 import { canExtend } from "./playback";
-
-/** A time as messages write it (6 significant digits). */
-const shown = (t: number): number => Number(t.toPrecision(6));
 
 export class EditorTime extends EditorSession {
   /** The tail of the chain of event steps (see stepEvent). */
@@ -176,7 +173,7 @@ export class EditorTime extends EditorSession {
       info.computing === null &&
       !canExtend(s.calc.autoExtend, info)
     ) {
-      const end = Number(info.horizon.toPrecision(6));
+      const end = shown(info.horizon);
       const why =
         info.stopped !== null
           ? "the computation stopped there"

@@ -130,7 +130,7 @@ export class TimelineHost {
         this.tl = tl;
         this.series.clear();
         this.changed(true);
-        if (keep !== null && keep > tl.horizon) this.startJob({ time: keep - tl.horizon }, true);
+        if (keep !== null && keep > tl.horizon) this.restoreTo(keep);
         // A rewrite of the scene (a removed action) is answered once its actions are checked up to
         // the old history's end; a refused one gives the previous timeline back as it was.
         // Checked only up to where the old history reached: an action beyond it was never checked
@@ -225,7 +225,7 @@ export class TimelineHost {
         // Undo the part that was applied: rebuild the old list and recompute the old horizon.
         this.tl.setActions(before);
         this.changed(true);
-        this.startJob({ time: horizon - this.tl.horizon }, true);
+        this.restoreTo(horizon);
       }
       throw e;
     }
@@ -240,13 +240,10 @@ export class TimelineHost {
         horizon,
         suffix: " (once this action is in place)",
       };
-      this.startJob({ time: horizon - this.tl.horizon }, true);
-      // exact: h + (H - h) may round below H (TypeScript still takes this.job for the null set above)
-      const job = this.job as Job | null;
-      if (job) job.targetTime = horizon;
+      this.restoreTo(horizon);
       return DEFERRED;
     }
-    if (this.tl.horizon < horizon) this.startJob({ time: horizon - this.tl.horizon }, true);
+    if (this.tl.horizon < horizon) this.restoreTo(horizon);
     return null;
   }
 
@@ -288,10 +285,17 @@ export class TimelineHost {
       this.tl = p.undo.timeline;
       this.series.clear();
     }
-    this.pending = null;
     this.changed(true);
-    if (this.tl.horizon < p.horizon) this.startJob({ time: p.horizon - this.tl.horizon }, true);
-    this.env.post({ type: "reply", id: p.id, ok: false, error: { message, path } });
+    if (this.tl.horizon < p.horizon) this.restoreTo(p.horizon);
+    // Answered last: the info that takes the change back must reach the client first (the next
+    // queued change reads the scene from it).
+    this.answerPending({ message, path });
+  }
+
+  /** Starts a restore job up to the absolute time `end`, exactly (h + (end - h) may round below end). */
+  private restoreTo(end: number): void {
+    this.startJob({ time: end - this.tl.horizon }, true);
+    if (this.job) this.job.targetTime = end;
   }
 
   private startJob(until: Until | null, restore = false): void {
