@@ -23,7 +23,7 @@ describe("writeResult", () => {
     const tl = Timeline.fromScene(galperin(3), { compute: false });
     tl.prolong({});
     const pieces: string[] = [];
-    writeResult(tl, tl.lastLoggedTime(), true, (t) => pieces.push(t), undefined, 50);
+    writeResult(tl, tl.lastLoggedTime(), (t) => pieces.push(t), { log: true, chunk: 50 });
     const text = pieces.join("");
     expect(text).toBe(atOnce(tl, tl.lastLoggedTime(), true));
     expect(JSON.parse(text).log).toHaveLength(314 + 3);
@@ -37,18 +37,18 @@ describe("writeResult", () => {
     tl.prolong({ time: 3 });
     for (const withLog of [false, true]) {
       const pieces: string[] = [];
-      writeResult(tl, 3, withLog, (t) => pieces.push(t), undefined, 4);
+      writeResult(tl, 3, (t) => pieces.push(t), { log: withLog, chunk: 4 });
       expect(pieces.join("")).toBe(atOnce(tl, 3, withLog));
     }
     const still = new Timeline({ g: 0 });
     still.apply({ time: 0, type: "addBody", id: "wall", x: 0, y: 0, r: 1, m: Number.POSITIVE_INFINITY });
     const pieces: string[] = [];
-    writeResult(still, 0, true, (t) => pieces.push(t), undefined, 4);
+    writeResult(still, 0, (t) => pieces.push(t), { log: true, chunk: 4 });
     expect(pieces.join("")).toBe(atOnce(still, 0, true));
     expect(pieces.join("")).toContain('"m": "Infinity"');
     const empty = new Timeline({ g: 0 });
     const nothing: string[] = [];
-    writeResult(empty, 0, true, (t) => nothing.push(t), undefined, 4);
+    writeResult(empty, 0, (t) => nothing.push(t), { log: true, chunk: 4 });
     expect(nothing.join("")).toBe(atOnce(empty, 0, true));
   });
 
@@ -58,7 +58,12 @@ describe("writeResult", () => {
     const end = tl.lastLoggedTime();
     for (const withLog of [false, true]) {
       const pieces: string[] = [];
-      writeResult(tl, end, withLog, (t) => pieces.push(t), { reason: "idle" }, 7, true);
+      writeResult(tl, end, (t) => pieces.push(t), {
+        log: withLog,
+        end: { reason: "idle" },
+        chunk: 7,
+        compact: true,
+      });
       const text = pieces.join("");
       const pretty = JSON.parse(atOnce(tl, end, withLog));
       expect(JSON.parse(text)).toEqual({ time: end, reason: "idle", ...pretty });
@@ -67,7 +72,7 @@ describe("writeResult", () => {
       if (withLog) expect(lines.slice(1, -1).every((l) => /^\{"time":.*\},?$/.test(l))).toBe(true);
     }
     const empty: string[] = [];
-    writeResult(new Timeline({ g: 0 }), 0, true, (t) => empty.push(t), undefined, 4, true);
+    writeResult(new Timeline({ g: 0 }), 0, (t) => empty.push(t), { log: true, chunk: 4, compact: true });
     expect(JSON.parse(empty.join(""))).toMatchObject({ log: [] });
   });
 });

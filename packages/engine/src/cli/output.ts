@@ -1,6 +1,6 @@
 /**
- * writeResult(tl, time, withLog, write, end, chunk): the CLI's JSON result (time, why the run
- * stopped when `end` is given, events, counts, the bodies at `time`, and with withLog the event
+ * writeResult(tl, time, write, format): the CLI's JSON result (time, why the run stopped when
+ * `format.end` is given, events, counts, the bodies at `time`, and with `format.log` the event
  * log up to `time`), pretty-printed exactly as
  * JSON.stringify(result, …, 2) would, but written in pieces: the log goes out `chunk` events at a
  * time (Timeline.eventRange), so a long log is never one string (V8 caps a string at about 2^29
@@ -36,15 +36,21 @@ function indent(json: string, pad: string): string {
  */
 export type RunEnd = { reason: ProlongResult["reason"] } | { reason: "error"; error: string };
 
+/** How writeResult writes: with the log, why the run ended, without indentation, log piece size. */
+export interface ResultFormat {
+  log: boolean;
+  end?: RunEnd | undefined;
+  compact?: boolean | undefined;
+  chunk?: number | undefined;
+}
+
 export function writeResult(
   tl: Timeline,
   time: number,
-  withLog: boolean,
   write: (text: string) => void,
-  end?: RunEnd,
-  chunk = LOG_CHUNK_EVENTS,
-  compact = false,
+  format: ResultFormat,
 ): void {
+  const { log: withLog, end, compact = false, chunk = LOG_CHUNK_EVENTS } = format;
   const c = tl.counts();
   const head = {
     time,

@@ -104,10 +104,11 @@ export function runCli(argv: readonly string[], io: CliIO): number {
     const scene = parseScene(text);
     const tl = Timeline.fromScene(scene, { history: cmd.events, compute: false });
     const mode: ProgressMode = io.progress ? "terminal" : cmd.progress === true ? "lines" : "off";
+    const out = (text: string) => io.stdout(text);
     if (cmd.command === "state") {
       // from horizon 0 (nothing computed yet), `time: at` ahead is exactly up to at
       compute(tl, { time: cmd.at }, mode, io);
-      writeResult(tl, cmd.at, cmd.events, (text) => io.stdout(text), undefined, undefined, cmd.compact);
+      writeResult(tl, cmd.at, out, { log: cmd.events, compact: cmd.compact });
     } else {
       let end: { time: number; reason: ProlongResult["reason"] };
       try {
@@ -116,19 +117,14 @@ export function runCli(argv: readonly string[], io: CliIO): number {
         // The engine cannot continue (a Zeno state): what was computed up to it is a result too.
         if (!(e instanceof SimulationError)) throw e;
         const error = printable(e.message);
-        const failed = { reason: "error" as const, error };
-        writeResult(tl, tl.horizon, cmd.events, (text) => io.stdout(text), failed, undefined, cmd.compact);
+        writeResult(tl, tl.horizon, out, {
+          log: cmd.events,
+          end: { reason: "error", error },
+          compact: cmd.compact,
+        });
         throw e;
       }
-      writeResult(
-        tl,
-        end.time,
-        cmd.events,
-        (text) => io.stdout(text),
-        { reason: end.reason },
-        undefined,
-        cmd.compact,
-      );
+      writeResult(tl, end.time, out, { log: cmd.events, end: { reason: end.reason }, compact: cmd.compact });
     }
     return 0;
   } catch (e) {
