@@ -273,8 +273,9 @@ export class TimelineHost {
 
   /**
    * Takes the pending change back (its later actions were refused, or their check was cancelled):
-   * the old action list (the timeline computes lazily, so setActions starts it from 0 at once) or
-   * the timeline before the load, then the old history recomputed in slices.
+   * the old action list (the timeline computes lazily: setActions leaves it at its last keyframe
+   * before the edit, or at 0) or the timeline before the load, then the old history recomputed in
+   * slices.
    */
   private takeBack(message: string, path: string | null): void {
     const p = this.pending!;

@@ -129,6 +129,27 @@ describe("actions and their validation against the simulated state", () => {
     expect(tl.counts()).toEqual(original.counts());
   });
 
+  it("a take-back by setActions on a compute: false timeline restarts from the keyframe, not from 0", () => {
+    // Session 16: the editor's host (compute: false) took a refused edit back with setActions,
+    // which recomputed the whole history from t = 0.
+    const s = dilutedGas({ n: 100, packing: 0.2, seed: 4 });
+    const tl = Timeline.fromScene(s, { compute: false });
+    tl.prolong({ events: 40_000 });
+    const H = tl.horizon;
+    const late: Action = { time: 0.9 * H, type: "giveVelocity", id: "d7", v: [0.5, 0.5] };
+    tl.apply(late);
+    tl.setActions(s.actions);
+    // back at the last keyframe before the changed action, far past 0
+    expect(tl.horizon).toBeGreaterThan(0.8 * H);
+    expect(tl.horizon).toBeLessThan(0.9 * H);
+    tl.prolongTo(H);
+    const original = Timeline.fromScene(s, { compute: false });
+    original.prolongTo(H);
+    expect(tl.eventsBetween(0.85 * H, H)).toEqual(original.eventsBetween(0.85 * H, H));
+    expect(tl.stateAt(H)).toEqual(original.stateAt(H));
+    expect(tl.counts()).toEqual(original.counts());
+  });
+
   it("events an action causes at its own time are part of the state at that time (touching cradle at t = 0)", () => {
     const s = newtonsCradle();
     const striker = s.actions.find((a) => a.type === "addBody" && a.id === "striker");

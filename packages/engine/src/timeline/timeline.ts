@@ -197,7 +197,8 @@ export class Timeline extends TimelineReader {
 
   /** Replace the whole action list (undo/redo, paste), atomically, recomputing up to at least the
    *  current horizon. Only the part after the first changed action is recomputed (from the last World
-   *  keyframe before it). A refused action throws SceneError naming `actions[i]` (its index in the
+   *  keyframe before it). A `compute: false` timeline computes nothing further: its horizon goes
+   *  back to that keyframe (to 0 without history or keyframe), for the caller to prolong. A refused action throws SceneError naming `actions[i]` (its index in the
    *  list given, also when a later prolong applies it), a Zeno state before the horizon
    *  SimulationError; either way nothing changes. */
   setActions(actions: readonly Action[]): void {
@@ -210,7 +211,7 @@ export class Timeline extends TimelineReader {
     // (with compute: false, as the CLI runs a file): a file's actions[0] is its first action, not
     // the earliest. The next apply() names them by their index in `actions` again.
     const pathOf = (k: number) => `actions[${order[k]}]`;
-    const k = c.history && c.eager ? restartKeyframe(c.acts, c.keyframes, sorted) : 0;
+    const k = c.history ? restartKeyframe(c.acts, c.keyframes, sorted) : 0;
     if (k > 0) {
       const undo = saveCore(c, (c.keyframes[k] as Keyframe).record);
       try {
@@ -218,7 +219,9 @@ export class Timeline extends TimelineReader {
         c.acts = sorted;
         c.pathOf = pathOf;
         reopenGoals(c);
-        c.goals.push({ tLimit: oldHorizon, eLimit: INF });
+        // A compute: false timeline stays at the keyframe (as one rebuilt from scratch stays at 0):
+        // its caller computes further when it needs to.
+        if (c.eager) c.goals.push({ tLimit: oldHorizon, eLimit: INF });
         c.drive(INF, null);
       } catch (e) {
         undo();

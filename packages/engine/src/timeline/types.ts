@@ -71,6 +71,7 @@ export interface TimelineOptions {
   history?: boolean | undefined;
   /** false = actions given to fromScene/setActions are only scheduled (applied when a prolong passes
    *  their time) and their `until`s are ignored; the caller drives with prolong/prolongSlice.
+   *  setActions then leaves the horizon at the keyframe it restarted from (or 0).
    *  Default true. */
   compute?: boolean | undefined;
 }
