@@ -73,6 +73,12 @@ export interface TimelineOptions {
    *  their time) and their `until`s are ignored; the caller drives with prolong/prolongSlice.
    *  Default true. */
   compute?: boolean | undefined;
+  /**
+   * @internal With `compute: false`: each action's `until` becomes a goal when a prolong,
+   * prolongTo or prolongSlice applies the action, and the computation goes on until it is met, as
+   * with `compute: true` (for the CLI, which computes a scene's own bound in slices). Default false.
+   */
+  untils?: boolean | undefined;
 }
 
 /** Options of `Timeline.apply`. */
