@@ -47,21 +47,22 @@ export const USAGE = `Usage:
       to where it stopped, with "reason": "error" and "error": why, and exits with status 2.
   chapgame state SCENE --at T [--events] [--compact] [--progress]
       Print the bodies at time T as JSON (the actions are computed, and checked, up to T).
-Interrupting a run (Ctrl-C: SIGINT, or SIGTERM) while it computes prints the result up to
-where it got, with "time" there and "reason": "interrupted" (state too), and exits with status
-130 (SIGINT) or 143 (SIGTERM). In a pipeline Ctrl-C reaches the reader as well: to keep the
-result, send the signal to chapgame alone (kill -INT PID) or write to a file.
   chapgame --help
   chapgame --version
 
 SCENE is a scene file (format "chapgame", version 1), or - for standard input; after --, a name
 that starts with "-" is a file name.
-The result: "time", "reason" (simulate, and an interrupted state), "events" (collisions and stops), "counts" (bodyBody,
-bodyLine, bodyPoint, stop), "bodies" (id, x, y, vx, vy, r, m, mu at "time", sorted by id) and
-with --events "log": every entry up to "time" in order, each with "time", "type" (bodyBody,
-bodyLine, bodyPoint, stop, action), "ids" (the participants; the action's id), "point"
-(contact, or where a body stopped), "normal" (unit, from the first id to the second),
-"impulse" (0 for a stop) and, for an action, "action" (its type); null where it does not apply.
+Interrupting a run (Ctrl-C: SIGINT, or SIGTERM) while it computes prints the result up to
+where it got, with "time" there and "reason": "interrupted" (state too), and exits with status
+130 (SIGINT) or 143 (SIGTERM). In a pipeline Ctrl-C reaches the reader as well: to keep the
+result, send the signal to chapgame alone (kill -INT PID) or write to a file.
+The result: "time", "reason" (simulate, and an interrupted state), "events" (collisions and
+stops), "counts" (bodyBody, bodyLine, bodyPoint, stop), "bodies" (id, x, y, vx, vy, r, m, mu at
+"time", sorted by id) and with --events "log": every entry up to "time" in order, each with
+"time", "type" (bodyBody, bodyLine, bodyPoint, stop, action), "ids" (the participants; the
+action's id), "point" (contact, or where a body stopped), "normal" (unit, from the first id to
+the second), "impulse" (0 for a stop) and, for an action, "action" (its type); null where it
+does not apply.
 The log also lists the actions, which "events" does not count. Infinite numbers are written
 "Infinity" and "-Infinity", NaN "NaN".
 --events adds the event log (kept in memory: bound long runs).
