@@ -155,6 +155,18 @@ describe("chapgame on invalid input: exit 2, one line on stderr, no stack trace"
       overlapLater,
       'chapgame: <stdin>: actions[1]: body "b" would overlap body "a" at time 3',
     ],
+    [
+      'a mass written 1e999 (JSON reads it as Infinity; the format writes "Infinity")',
+      ["simulate", "-"],
+      '{"format":"chapgame","version":1,"actions":[{"time":0,"type":"addBody","id":"a","x":0,"y":0,"r":1,"m":1e999}]}',
+      'chapgame: <stdin>: actions[0].m: the number 1e999 at line 1, column 103 is beyond the largest double (about 1.8e308): JSON would read it as Infinity; for an immovable body (an infinite mass) write the string "Infinity"',
+    ],
+    [
+      "a radius written 1e-999 (JSON reads it as 0)",
+      ["state", "-", "--at", "1"],
+      '{"format":"chapgame","version":1,"actions":[{"time":0,"type":"addBody","id":"a","x":0,"y":0,"r":1e-999,"m":1}]}',
+      "chapgame: <stdin>: actions[0].r: must be a positive finite number (the file writes 1e-999, below the smallest double (about 5e-324): JSON reads it as 0)",
+    ],
   ];
   it("a truncated scene file: its name, and where the text stops", () => {
     const file = join(dir, "truncated.json");

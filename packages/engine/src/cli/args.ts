@@ -2,6 +2,7 @@
  * Command-line arguments of the `chapgame` bin, parsed into a Command (pure; no process access).
  *   chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--compact] [--progress]
  *   chapgame state SCENE --at T [--events] [--compact] [--progress]
+ * (USAGE, the --help text, describes them, the result, how a run ends and the exit statuses.)
  *   chapgame --help | help
  *   chapgame --version
  * Options take their value as the next argument or after "=". Any other argument that starts with
@@ -35,11 +36,15 @@ export const USAGE = `Usage:
       Run the scene's actions and simulate until time T or N events (collisions and stops),
       whichever comes first; print the bodies then as JSON, with "reason": "time", "events" or
       "idle" (no event and no action left). An idle run's bodies are printed at T with
-      --until-time (they may still glide), else at its last event or action. Without
-      --until-time and --max-events a scene that never comes to rest (elastic balls bouncing
-      under gravity) runs until interrupted: give a bound. A scene the exact model cannot
-      continue (a Zeno state) prints the result up to where it stopped, with "reason": "error"
-      and "error": why, and exits with status 2.
+      --until-time (they may still glide), else at its last event or action.
+      Without --until-time and --max-events, a scene whose actions carry an "until" (seconds
+      and/or events to compute after the action) is computed as far as they say: every action
+      applied and each until met, counted from its action; "reason" is then "until" (or "idle"),
+      and the bodies are printed where it ended. Options given here win: with either of them the
+      scene's untils are ignored. With no bound at all the run goes on until no event is left,
+      so a scene that never comes to rest (elastic balls bouncing under gravity) runs until
+      interrupted. A scene the exact model cannot continue (a Zeno state) prints the result up
+      to where it stopped, with "reason": "error" and "error": why, and exits with status 2.
   chapgame state SCENE --at T [--events] [--compact] [--progress]
       Print the bodies at time T as JSON (the actions are computed, and checked, up to T).
   chapgame --help
@@ -47,12 +52,17 @@ export const USAGE = `Usage:
 
 SCENE is a scene file (format "chapgame", version 1), or - for standard input; after --, a name
 that starts with "-" is a file name.
-The result: "time", "reason" (simulate), "events" (collisions and stops), "counts" (bodyBody,
-bodyLine, bodyPoint, stop), "bodies" (id, x, y, vx, vy, r, m, mu at "time", sorted by id) and
-with --events "log": every entry up to "time" in order, each with "time", "type" (bodyBody,
-bodyLine, bodyPoint, stop, action), "ids" (the participants; the action's id), "point"
-(contact, or where a body stopped), "normal" (unit, from the first id to the second),
-"impulse" (0 for a stop) and, for an action, "action" (its type); null where it does not apply.
+Interrupting a run (Ctrl-C: SIGINT, or SIGTERM) while it computes prints the result up to
+where it got, with "time" there and "reason": "interrupted" (state too), and exits with status
+130 (SIGINT) or 143 (SIGTERM). In a pipeline Ctrl-C reaches the reader as well: to keep the
+result, send the signal to chapgame alone (kill -INT PID) or write to a file.
+The result: "time", "reason" (simulate, and an interrupted state), "events" (collisions and
+stops), "counts" (bodyBody, bodyLine, bodyPoint, stop), "bodies" (id, x, y, vx, vy, r, m, mu at
+"time", sorted by id) and with --events "log": every entry up to "time" in order, each with
+"time", "type" (bodyBody, bodyLine, bodyPoint, stop, action), "ids" (the participants; the
+action's id), "point" (contact, or where a body stopped), "normal" (unit, from the first id to
+the second), "impulse" (0 for a stop) and, for an action, "action" (its type); null where it
+does not apply.
 The log also lists the actions, which "events" does not count. Infinite numbers are written
 "Infinity" and "-Infinity", NaN "NaN".
 --events adds the event log (kept in memory: bound long runs).
@@ -60,7 +70,7 @@ The log also lists the actions, which "events" does not count. Infinite numbers 
 --progress reports progress on stderr, one line per 200,000 events (it is on by itself, on one
 updating line, when stderr is a terminal).
 Exit status: 0 success, 2 invalid input or a scene that cannot be continued, 1 internal error or
-a result that could not be written.`;
+a result that could not be written, 130 or 143 interrupted (SIGINT, SIGTERM).`;
 
 /** A time as written in decimal (12.5, .5, 3., 1e-3); Number() alone also takes 0x10 and 0b11. */
 const DECIMAL_TIME = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;

@@ -5,15 +5,23 @@
  * the bin wait instead of queueing the whole output in memory (a 2M-event log held 2 GB). A reader
  * that closes it early (`chapgame ... | head`) ends the output quietly: the broken pipe is not an
  * error of the run (no stack trace, the run's exit status).
+ * SIGINT (Ctrl-C) and SIGTERM during the computation stop it: the run computes in slices with a
+ * setImmediate pause between them (runCliInterruptible), so the handler runs, and the result up to
+ * there is printed with "reason": "interrupted"; the exit status is 130 (SIGINT) or 143 (SIGTERM).
+ * Once the computation is over the handlers are removed, so a signal while the result is written
+ * ends the process at once, as without them.
  * The engine is built without Node's types (it must not depend on Node), so the few Node APIs used
  * here are typed locally and node:fs is loaded by a dynamic import.
  */
-import { OutputError, runCli } from "./run.js";
+import { OutputError, runCliInterruptible } from "./run.js";
+import type { InterruptSignal } from "./slices.js";
 
 interface NodeProcess {
   argv: string[];
   stderr: { write(text: string): unknown; isTTY?: boolean };
   exitCode?: number;
+  on(signal: InterruptSignal, listener: () => void): unknown;
+  removeListener(signal: InterruptSignal, listener: () => void): unknown;
 }
 interface NodeFs {
   readFileSync(path: string | number | object, encoding: "utf8"): string;
@@ -62,13 +70,43 @@ function writeOut(text: string): void {
   }
 }
 
-proc.exitCode = runCli(proc.argv.slice(2), {
-  readFile: (path) => fs.readFileSync(path === "-" ? 0 : path, "utf8"),
-  stdout: writeOut,
-  stderr: (text) => proc.stderr.write(text),
-  progress: proc.stderr.isTTY === true,
-  ...versionField(),
-});
+/** The first interrupting signal received while computing, or null. */
+let received: InterruptSignal | null = null;
+const onSignal = {
+  SIGINT: () => {
+    received ??= "SIGINT";
+  },
+  SIGTERM: () => {
+    received ??= "SIGTERM";
+  },
+};
+const signals = ["SIGINT", "SIGTERM"] as const;
+for (const s of signals) proc.on(s, onSignal[s]);
+/** Back to the default action of the signals (end the process at once). */
+function stopCatching(): void {
+  for (const s of signals) proc.removeListener(s, onSignal[s]);
+}
+
+const { setImmediate } = globalThis as unknown as { setImmediate: (callback: () => void) => unknown };
+try {
+  proc.exitCode = await runCliInterruptible(
+    proc.argv.slice(2),
+    {
+      readFile: (path) => fs.readFileSync(path === "-" ? 0 : path, "utf8"),
+      stdout: writeOut,
+      stderr: (text) => proc.stderr.write(text),
+      progress: proc.stderr.isTTY === true,
+      computed: stopCatching,
+      ...versionField(),
+    },
+    {
+      pause: () => new Promise<void>((resume) => setImmediate(resume)),
+      interrupted: () => received,
+    },
+  );
+} finally {
+  stopCatching();
+}
 
 function versionField(): { version?: string } {
   const version = packageVersion();

@@ -31,10 +31,14 @@ function indent(json: string, pad: string): string {
 }
 
 /**
- * Why a simulate run stopped: the Timeline's reason, or "error" when the engine could not continue
- * (a Zeno state); `error` then says why, and the result is the history up to where it stopped.
+ * Why a run stopped: the Timeline's reason ("time", "events", "idle"), "until" when the scene's own
+ * bound (its actions' untils) stopped it, "interrupted" by a signal, or "error" when the engine
+ * could not continue (a Zeno state); `error` then says why. After an interrupt or an error the
+ * result is the history up to where it stopped.
  */
-export type RunEnd = { reason: ProlongResult["reason"] } | { reason: "error"; error: string };
+export type RunEnd =
+  | { reason: ProlongResult["reason"] | "until" | "interrupted" }
+  | { reason: "error"; error: string };
 
 /** How writeResult writes: with the log, why the run ended, without indentation, log piece size. */
 export interface ResultFormat {

@@ -1,7 +1,8 @@
 import { describe, expect, it } from "vitest";
 import { dilutedGas, galperin } from "../scene/presets.js";
 import { serializeScene } from "../scene/serialize.js";
-import { type CliIO, OutputError, runCli } from "./run.js";
+import { type CliIO, OutputError, runCli, runCliInterruptible } from "./run.js";
+import { type InterruptSignal, SLICE_EVENTS } from "./slices.js";
 
 function io(files: Record<string, string>, progress = false) {
   const out = { stdout: "", stderr: "" };
@@ -227,5 +228,112 @@ describe("runCli in-process", () => {
     };
     expect(runCli(["simulate", "g.json"], cli)).toBe(1);
     expect(out.stderr).toBe("chapgame: internal error: disk full\n");
+  });
+});
+
+/** Pauses at once; reports `signal` from the `after`-th pause on. */
+function interruptAfter(after: number, signal: InterruptSignal) {
+  let pauses = 0;
+  return {
+    pause: async () => {
+      pauses++;
+    },
+    interrupted: () => (pauses >= after ? signal : null),
+  };
+}
+
+describe("runCliInterruptible: an interrupt prints the result so far", () => {
+  const files = { "gas.json": serializeScene(dilutedGas({ n: 100, packing: 0.2 })) };
+
+  it("simulate without a bound (a gas never rests): reason interrupted, exit 130, the bodies of exactly that many events", async () => {
+    // Audit: Ctrl-C killed the synchronous run and printed nothing.
+    const cut = io(files);
+    expect(
+      await runCliInterruptible(["simulate", "gas.json", "--events"], cut.cli, interruptAfter(3, "SIGINT")),
+    ).toBe(130);
+    const r = JSON.parse(cut.out.stdout);
+    expect(r).toMatchObject({ reason: "interrupted", events: 3 * SLICE_EVENTS });
+    expect(cut.out.stderr).toMatch(
+      new RegExp(
+        `^chapgame: gas\\.json: interrupted by SIGINT at t = [\\d.]+ after ${3 * SLICE_EVENTS} events: the result up to there is printed\n$`,
+      ),
+    );
+    // slicing changed nothing: the same history as a run bounded at that many events
+    const capped = io(files);
+    expect(
+      runCli(["simulate", "gas.json", "--events", "--max-events", String(3 * SLICE_EVENTS)], capped.cli),
+    ).toBe(0);
+    expect({ ...JSON.parse(capped.out.stdout), reason: "interrupted" }).toEqual(r);
+  });
+
+  it("state --at T interrupted before T: the bodies where the computation got to, reason interrupted, exit 143 (SIGTERM)", async () => {
+    const cut = io(files);
+    expect(
+      await runCliInterruptible(["state", "gas.json", "--at", "1e9"], cut.cli, interruptAfter(1, "SIGTERM")),
+    ).toBe(143);
+    const r = JSON.parse(cut.out.stdout);
+    expect(r).toMatchObject({ reason: "interrupted", events: SLICE_EVENTS });
+    expect(r.time).toBeLessThan(1e9);
+    const at = io(files);
+    expect(runCli(["state", "gas.json", "--at", String(r.time)], at.cli)).toBe(0);
+    expect(JSON.parse(at.out.stdout).bodies).toEqual(r.bodies);
+  });
+
+  it("a run that ends before any interrupt gives the result runCli gives", async () => {
+    const { cli, out } = io({ "g.json": serializeScene(galperin(3)) });
+    expect(await runCliInterruptible(["simulate", "g.json"], cli, interruptAfter(1, "SIGINT"))).toBe(0);
+    expect(JSON.parse(out.stdout)).toMatchObject({ reason: "idle", events: 314 });
+  });
+});
+
+describe("simulate honours the scene's own until when the command line gives no bound", () => {
+  // a disc between two walls (it never rests); the addBody's until says how far to compute
+  const box = (until: unknown) =>
+    sceneText([
+      { time: 0, type: "addLine", id: "l", p1: [-10, -5], p2: [-10, 5], kind: "line" },
+      { time: 0, type: "addLine", id: "r", p1: [10, -5], p2: [10, 5], kind: "line" },
+      { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [3, 0], until },
+      { time: 2, type: "giveVelocity", id: "a", v: [-5, 0] },
+    ]);
+
+  it('until { time: 30 }: up to t = 30, "reason": "until", the state --until-time 30 gives (it ran for ever)', () => {
+    const files = { "box.json": box({ time: 30 }) };
+    const own = io(files);
+    expect(runCli(["simulate", "box.json"], own.cli)).toBe(0);
+    const r = JSON.parse(own.out.stdout);
+    expect(r).toMatchObject({ time: 30, reason: "until", events: 7 });
+    const timed = io(files);
+    expect(runCli(["simulate", "box.json", "--until-time", "30"], timed.cli)).toBe(0);
+    expect({ ...JSON.parse(timed.out.stdout), reason: "until" }).toEqual(r);
+  });
+
+  it("until { events: 5 }: five events after the action; the command line's bounds win", () => {
+    const files = { "box.json": box({ events: 5 }) };
+    const own = io(files);
+    expect(runCli(["simulate", "box.json"], own.cli)).toBe(0);
+    expect(JSON.parse(own.out.stdout)).toMatchObject({ reason: "until", events: 5 });
+    const events = io(files);
+    expect(runCli(["simulate", "box.json", "--max-events", "2"], events.cli)).toBe(0);
+    expect(JSON.parse(events.out.stdout)).toMatchObject({ reason: "events", events: 2 });
+    const time = io(files);
+    expect(runCli(["simulate", "box.json", "--until-time", "50"], time.cli)).toBe(0);
+    expect(JSON.parse(time.out.stdout)).toMatchObject({ time: 50, reason: "time" });
+  });
+
+  it("a scene idle before its bound: reason idle, the bodies at the bound (they glide on)", () => {
+    const files = {
+      "pair.json": sceneText([
+        { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [1, 0], until: { time: 30 } },
+        { time: 0, type: "addBody", id: "b", x: 5, y: 0, r: 1, m: 1 },
+      ]),
+    };
+    const { cli, out } = io(files);
+    expect(runCli(["simulate", "pair.json"], cli)).toBe(0);
+    const r = JSON.parse(out.stdout);
+    expect(r).toMatchObject({ time: 30, reason: "idle", events: 1 });
+    expect(r.bodies.map((b: { id: string; x: number }) => [b.id, b.x])).toEqual([
+      ["a", 3],
+      ["b", 32],
+    ]);
   });
 });

@@ -5,14 +5,28 @@
  * internal error or a result that could not be written (OutputError). Errors are one line on
  * stderr, without a stack trace. A simulate run the engine cannot continue still prints the result
  * up to where it stopped, with "reason": "error" and the message in "error", then exits with 2.
+ * runCliInterruptible(argv, io, control): the same, computing in slices with a pause between them
+ * (slices.ts); an interrupt (SIGINT, SIGTERM) stops the computation and prints the result up to
+ * there with "reason": "interrupted" (simulate and state alike), then exits with 130 or 143.
+ * Without --until-time and --max-events, simulate computes a scene whose actions carry an `until`
+ * as far as they say (every action applied and each until met: what Timeline.fromScene computes),
+ * with "reason": "until" (or "idle"); options given on the command line win over the scene's.
  */
 import { parseScene, printable } from "../scene/parse.js";
-import type { Until } from "../scene/types.js";
+import type { SceneFile, Until } from "../scene/types.js";
 import { ChapgameError, SimulationError } from "../sim/errors.js";
 import { Timeline } from "../timeline/timeline.js";
 import type { ProlongResult } from "../timeline/types.js";
 import { type Command, parseArgs, USAGE, UsageError } from "./args.js";
-import { writeResult } from "./output.js";
+import { type RunEnd, writeResult } from "./output.js";
+import {
+  computeSlices,
+  type InterruptControl,
+  Interrupted,
+  type Progress,
+  runInterruptible,
+  runToEnd,
+} from "./slices.js";
 
 export interface CliIO {
   /** Contents of a file ("-" = standard input); throws when it cannot be read. */
@@ -24,53 +38,82 @@ export interface CliIO {
   progress: boolean;
   /** the package's version, for --version (the bin reads it from package.json) */
   version?: string;
+  /** Called once the computation is over, before the result is written (the bin stops catching
+   *  interrupts then: a Ctrl-C while a long result is written ends the process at once). */
+  computed?: () => void;
 }
-
-/** Events computed between two progress lines. */
-const PROGRESS_EVERY_EVENTS = 200_000;
 
 /** How progress is shown on stderr: one updating line (a terminal), one line each, or not at all. */
 type ProgressMode = "terminal" | "lines" | "off";
 
-/** Computes `until` from the horizon in slices of PROGRESS_EVERY_EVENTS events, reporting after each
- *  slice that does not finish the run; returns why it ended. */
-function compute(tl: Timeline, until: Until, mode: ProgressMode, io: CliIO): ProlongResult["reason"] {
-  if (mode === "off") return tl.prolong(until).reason;
+/** Progress lines on stderr for a run toward `until`, or null when they are off. */
+function progressLines(until: Until, mode: ProgressMode, io: CliIO): Progress | null {
+  if (mode === "off") return null;
   const goal = until.events === undefined ? "" : ` of ${until.events}`;
-  let total = 0;
-  let shown = false;
-  try {
-    for (;;) {
-      const r = tl.prolongSlice(until, PROGRESS_EVERY_EVENTS);
-      total += r.events;
-      if (r.done) return r.reason ?? "idle";
-      const line = `chapgame: t = ${r.horizon.toPrecision(6)}, ${total}${goal} events`;
+  return {
+    report(horizon, events) {
+      const line = `chapgame: t = ${horizon.toPrecision(6)}, ${events}${goal} events`;
       io.stderr(mode === "terminal" ? `\r${line}` : `${line}\n`);
-      shown = true;
-    }
-  } finally {
-    // clear the progress line, also when the run ends in an error (printed after this)
-    if (shown && mode === "terminal") io.stderr("\r\x1b[K");
-  }
+    },
+    // clear the progress line, also when the run ends in an error or an interrupt (printed after this)
+    end() {
+      if (mode === "terminal") io.stderr("\r\x1b[K");
+    },
+  };
+}
+
+/** Computes `until` from the horizon in slices (slices.ts), with progress; returns why it ended. */
+function compute(
+  tl: Timeline,
+  until: Until,
+  mode: ProgressMode,
+  io: CliIO,
+): Generator<void, ProlongResult["reason"], void> {
+  return computeSlices(tl, until, progressLines(until, mode, io));
 }
 
 /**
- * Runs `simulate`; returns the time to print the bodies at and why the run stopped: "idle" when
- * no event or action is left at all (checked exactly), else "time" or "events". With --until-time
- * T the time is T unless an event limit stopped the run earlier with more to come: a scene with
- * nothing left before T still moves (discs gliding for ever), and its state at T is exact. Without
- * it, an idle run stops at its last event or action.
+ * The scene's own bound, when one of its actions has an `until`: up to its last action's time,
+ * counted from horizon 0 (a Timeline made with the untils option goes on until every until is met).
+ * Null when no action has one.
  */
-function simulate(
+function sceneBound(scene: SceneFile): Until | null {
+  let last = 0;
+  let any = false;
+  for (const a of scene.actions) {
+    if (a.time > last) last = a.time;
+    if (a.until !== undefined) any = true;
+  }
+  return any ? { time: last } : null;
+}
+
+/** Why a simulate run stopped (without an error or an interrupt) and the time to print the bodies at. */
+type SimulateEnd = { time: number; reason: ProlongResult["reason"] | "until" };
+
+/**
+ * Runs `simulate`; returns the time to print the bodies at and why the run stopped: "idle" when
+ * no event or action is left at all (checked exactly), else "time" or "events", or "until" when the
+ * scene's own bound (`bound`: its actions' untils) stopped it. With --until-time T the time is T
+ * unless an event limit stopped the run earlier with more to come: a scene with nothing left before
+ * T still moves (discs gliding for ever), and its state at T is exact. With the scene's bound the
+ * time is where it ended (the bodies may glide on). Otherwise an idle run stops at its last event or
+ * action.
+ */
+function* simulate(
   tl: Timeline,
   cmd: Extract<Command, { command: "simulate" }>,
+  bound: Until | null,
   mode: ProgressMode,
   io: CliIO,
-): { time: number; reason: ProlongResult["reason"] } {
+): Generator<void, SimulateEnd, void> {
+  if (bound !== null) {
+    yield* compute(tl, bound, mode, io);
+    return { time: tl.horizon, reason: tl.nothingLeft() ? "idle" : "until" };
+  }
   const until: Until = {};
   if (cmd.untilTime !== undefined) until.time = cmd.untilTime;
   if (cmd.maxEvents !== undefined) until.events = cmd.maxEvents;
-  const reason = compute(tl, until, mode, io);
+  const reason = yield* compute(tl, until, mode, io);
   // "idle" exactly: the World's own reason can be "time" while only cell crossings are queued (a
   // glide with no event left), and an event limit can land on the last event.
   if (reason !== "idle" && !tl.nothingLeft()) return { time: tl.horizon, reason };
@@ -82,7 +125,23 @@ function simulate(
 /** Thrown by a CliIO.stdout that cannot write (a full disk, a closed file): not a bug of the run. */
 export class OutputError extends Error {}
 
+/** Runs the command through, without interrupts (see the header). */
 export function runCli(argv: readonly string[], io: CliIO): number {
+  return runToEnd(command(argv, io));
+}
+
+/** Runs the command in slices with a pause between them; an interrupt prints the result so far
+ *  (see the header). */
+export function runCliInterruptible(
+  argv: readonly string[],
+  io: CliIO,
+  control: InterruptControl,
+): Promise<number> {
+  return runInterruptible(command(argv, io), control);
+}
+
+/** The command as a generator that yields between slices of the computation (slices.ts). */
+function* command(argv: readonly string[], io: CliIO): Generator<void, number, void> {
   let source: string | null = null; // the scene's name, once it is read
   try {
     const cmd = parseArgs(argv);
@@ -102,30 +161,49 @@ export function runCli(argv: readonly string[], io: CliIO): number {
     }
     source = cmd.scene === "-" ? "<stdin>" : cmd.scene;
     const scene = parseScene(text);
-    const tl = Timeline.fromScene(scene, { history: cmd.events, compute: false });
+    // the scene's own bound only when the command line gives none
+    const bound =
+      cmd.command === "simulate" && cmd.untilTime === undefined && cmd.maxEvents === undefined
+        ? sceneBound(scene)
+        : null;
+    const tl = Timeline.fromScene(scene, { history: cmd.events, compute: false, untils: bound !== null });
     const mode: ProgressMode = io.progress ? "terminal" : cmd.progress === true ? "lines" : "off";
     const out = (text: string) => io.stdout(text);
-    if (cmd.command === "state") {
-      // from horizon 0 (nothing computed yet), `time: at` ahead is exactly up to at
-      compute(tl, { time: cmd.at }, mode, io);
-      writeResult(tl, cmd.at, out, { log: cmd.events, compact: cmd.compact });
-    } else {
-      let end: { time: number; reason: ProlongResult["reason"] };
-      try {
-        end = simulate(tl, cmd, mode, io);
-      } catch (e) {
-        // The engine cannot continue (a Zeno state): what was computed up to it is a result too.
-        if (!(e instanceof SimulationError)) throw e;
-        const error = printable(e.message);
-        writeResult(tl, tl.horizon, out, {
-          log: cmd.events,
-          end: { reason: "error", error },
-          compact: cmd.compact,
-        });
-        throw e;
+    /** Writes the result up to where the computation stopped, with why. */
+    const partial = (end: RunEnd) => {
+      io.computed?.();
+      writeResult(tl, tl.horizon, out, { log: cmd.events, end, compact: cmd.compact });
+    };
+    let time: number;
+    let end: RunEnd | undefined;
+    try {
+      if (cmd.command === "state") {
+        // from horizon 0 (nothing computed yet), `time: at` ahead is exactly up to at
+        yield* compute(tl, { time: cmd.at }, mode, io);
+        time = cmd.at;
+      } else {
+        const r = yield* simulate(tl, cmd, bound, mode, io);
+        time = r.time;
+        end = { reason: r.reason };
       }
-      writeResult(tl, end.time, out, { log: cmd.events, end: { reason: end.reason }, compact: cmd.compact });
+    } catch (e) {
+      if (e instanceof Interrupted) {
+        // What was computed up to the interrupt is a result too (simulate and state alike).
+        partial({ reason: "interrupted" });
+        const c = tl.counts();
+        const n = c.bodyBody + c.bodyLine + c.bodyPoint + c.stop;
+        io.stderr(
+          `chapgame: ${printable(source)}: interrupted by ${e.signal} at t = ${tl.horizon} after ${n} events: the result up to there is printed\n`,
+        );
+        return e.status;
+      }
+      // The engine cannot continue (a Zeno state): what simulate computed up to it is a result too.
+      if (e instanceof SimulationError && cmd.command === "simulate")
+        partial({ reason: "error", error: printable(e.message) });
+      throw e;
     }
+    io.computed?.();
+    writeResult(tl, time, out, { log: cmd.events, end, compact: cmd.compact });
     return 0;
   } catch (e) {
     // Errors about the scene's content name the scene file first (a batch over many files); a

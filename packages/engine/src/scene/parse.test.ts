@@ -312,3 +312,55 @@ describe("parseScene on values JSON does not have", () => {
     );
   });
 });
+
+describe("parseScene on number literals a double cannot hold", () => {
+  it('refuses "m": 1e999 (JSON.parse read it as an infinite mass), naming the field and saying to write "Infinity"', () => {
+    const text = base([disc("a", 0)]).replace('"m":1', '"m":1e999');
+    const col = text.indexOf("1e999") + 1;
+    const e = refused(text);
+    expect(e.path).toBe("actions[0].m");
+    expect(e.message).toBe(
+      `actions[0].m: the number 1e999 at line 1, column ${col} is beyond the largest double (about 1.8e308): JSON would read it as Infinity; for an immovable body (an infinite mass) write the string "Infinity"; otherwise write a finite number`,
+    );
+    // the string form is the infinite mass
+    expect(parseScene(base([disc("a", 0, { m: "Infinity" })])).actions[0]).toMatchObject({ m: Infinity });
+  });
+
+  it("refuses an overflowing literal anywhere: a coordinate, an array element, g, meta", () => {
+    const cases: [string, string][] = [
+      [base([disc("a", 0)]).replace('"x":0', '"x":-2e308'), "actions[0].x"],
+      [base([disc("a", 0, { v: [1, 0] })]).replace('"v":[1,0]', '"v":[1,1E+400]'), "actions[0].v[1]"],
+      [base([], { g: 1 }).replace('"g":1', '"g":1e309'), "g"],
+      [base([], { meta: { zoom: [1, 2] } }).replace("[1,2]", "[1,9e999]"), "meta.zoom[1]"],
+      [base([disc("a", 0)]).replace('"m":1', `"m":1${"0".repeat(400)}`), "actions[0].m"],
+    ];
+    for (const [text, path] of cases) {
+      const e = refused(text);
+      expect(e.path, text).toBe(path);
+      expect(e.reason).toMatch(/is beyond the largest double .*JSON would read it as -?Infinity; /);
+    }
+    expect(refused(cases[0]?.[0]).reason).toMatch(/read it as -Infinity; write a finite number$/);
+  });
+
+  it("accepts the largest doubles and long literals that stay in range", () => {
+    const text = base([], { meta: { big: 1 } }).replace('"big":1', '"big":[1.7976931348623157e308, -1e308]');
+    expect(parseScene(text).meta).toEqual({ big: [1.7976931348623157e308, -1e308] });
+  });
+
+  it("explains a radius written 1e-999 (it reads as 0): the literal and why, not only 'must be positive'", () => {
+    const e = refused(base([disc("a", 0)]).replace('"r":1', '"r":1e-999'));
+    expect(e.message).toBe(
+      "actions[0].r: must be a positive finite number (the file writes 1e-999, below the smallest double (about 5e-324): JSON reads it as 0)",
+    );
+    const neg = refused(base([disc("a", 0)]).replace('"m":1', '"m":-0.5e-400'));
+    expect(neg.message).toMatch(/^actions\[0\]\.m: must be a positive .*\(the file writes -0\.5e-400, /);
+    // an element of a vector: a segment whose ends read as equal
+    const line = { time: 0, type: "addLine", id: "l", p1: [0, 0], p2: [7, 0], kind: "segment" };
+    const same = refused(base([line]).replace('"p2":[7,0]', '"p2":[1e-999,0]'));
+    expect(same.message).toMatch(/^actions\[0\]\.p2: must differ from p1 \(the file writes 1e-999, /);
+    // a field that takes 0 keeps the value: 1e-999 is 0 there, as JSON reads it
+    expect(parseScene(base([disc("a", 0)]).replace('"x":0', '"x":1e-999')).actions[0]).toMatchObject({
+      x: 0,
+    });
+  });
+});

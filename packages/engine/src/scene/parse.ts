@@ -1,6 +1,7 @@
 /**
  * parseScene(json | object): SceneFile. Validates a scene file v1 completely as far as it can without
- * simulating: JSON syntax, format and version, every field of every action (checkAction), and the
+ * simulating: JSON syntax, duplicate keys and number literals a double cannot hold (jsonNumbers.ts:
+ * 1e999 is refused, not read as Infinity), format and version, every field of every action (checkAction), and the
  * scene rules in time order (sceneRules.ts): ids that exist at each action's time, duplicate ids,
  * overlaps among bodies at time 0 (and among bodies placed at the same later time), overlaps with
  * lines and points at any time. Overlaps with bodies that moved (time > 0) need the simulation:
@@ -11,6 +12,7 @@ import { checkAction } from "./action.js";
 import { SceneError } from "./errors.js";
 import { isObject, nonNegative, onlyKeys, vec2 } from "./fields.js";
 import { firstDuplicateKey, lineColumn } from "./jsonDuplicates.js";
+import { type NumberLiteral, unrepresentableNumbers } from "./jsonNumbers.js";
 import { jsonErrorOffset } from "./jsonSyntax.js";
 import { checkFieldMagnitudes } from "./magnitudes.js";
 import { checkMeta } from "./meta.js";
@@ -79,33 +81,87 @@ export function printable(message: string): string {
   return out;
 }
 
+/** The refusal of a number literal beyond the largest double (JSON.parse would read it as ±Infinity). */
+function overflowError(o: NumberLiteral): SceneError {
+  const at = `line ${o.line}, column ${o.column}`;
+  const infinity = o.literal.startsWith("-") ? "-Infinity" : "Infinity";
+  const fix =
+    /(^|\.)m$/.test(o.path) && infinity === "Infinity"
+      ? 'for an immovable body (an infinite mass) write the string "Infinity"; otherwise write a finite number'
+      : "write a finite number";
+  return new SceneError(
+    o.path,
+    `the number ${o.literal} at ${at} is beyond the largest double (about 1.8e308): JSON would read it as ${infinity}; ${fix}`,
+  );
+}
+
+/**
+ * JSON text to a value: syntax errors with their line and column, duplicate keys and number
+ * literals that overflow refused (SceneError); returns the value and the literals that underflow
+ * to 0 (path to literal), to explain a refusal of their field.
+ */
+function readText(input: string): { raw: unknown; underflow: Map<string, string> } {
+  // a leading byte order mark (written by some editors) is not part of the JSON text
+  const text = input.charCodeAt(0) === 0xfeff ? input.slice(1) : input;
+  let raw: unknown;
+  try {
+    raw = JSON.parse(text);
+  } catch (e) {
+    const message = (e as Error).message;
+    throw new SceneError("json", `invalid JSON${where(text)} (${printable(message)})`);
+  }
+  // JSON.parse keeps the last of two equal keys silently: the first value would be lost.
+  const dup = firstDuplicateKey(text);
+  if (dup !== null)
+    throw new SceneError(
+      dup.path,
+      `duplicate key "${dup.key}" at line ${dup.line}, column ${dup.column}: an object may name a key only once (JSON would keep the last value and drop the first)`,
+    );
+  // JSON.parse reads 1e999 as Infinity and 1e-999 as 0 without a word.
+  const numbers = unrepresentableNumbers(text);
+  if (numbers.overflow !== null && numbers.overflow.path !== "") throw overflowError(numbers.overflow);
+  return { raw, underflow: numbers.underflow };
+}
+
+/** `e` with the literal that read as 0 named, when its field (or an element of it) wrote one. */
+function explainUnderflow(e: unknown, underflow: Map<string, string>): unknown {
+  if (!(e instanceof SceneError) || underflow.size === 0) return e;
+  let literal = underflow.get(e.path);
+  if (literal === undefined)
+    for (const [path, lit] of underflow)
+      if (path.startsWith(`${e.path}[`)) {
+        literal = lit;
+        break;
+      }
+  if (literal === undefined) return e;
+  return new SceneError(
+    e.path,
+    `${e.reason} (the file writes ${literal}, below the smallest double (about 5e-324): JSON reads it as 0)`,
+  );
+}
+
 /**
  * Validate a scene file v1, given as JSON text (a leading byte order mark allowed) or as an already
  * parsed object, as far as it can be checked without simulating, and return it normalized: g 9.81
  * and gravity [0, 0] when absent, each addBody's mu 0 and v [0, 0] filled in, actions in file order.
  * Throws SceneError (a ChapgameError): `path` names the field (`actions[3].r`; `json` for a syntax
- * error, with its line and column) and `reason` says what is wrong. Overlaps with bodies that have
- * moved (actions after time 0) need the simulation: Timeline.fromScene checks those.
+ * error, with its line and column) and `reason` says what is wrong. A number literal beyond the
+ * largest double (1e999: JSON would read it as Infinity) is refused wherever it is (an infinite mass
+ * is written "Infinity"). Overlaps with bodies that have moved (actions after time 0) need the
+ * simulation: Timeline.fromScene checks those.
  */
 export function parseScene(input: string | unknown): SceneFile {
-  let raw: unknown = input;
-  if (typeof input === "string") {
-    // a leading byte order mark (written by some editors) is not part of the JSON text
-    const text = input.charCodeAt(0) === 0xfeff ? input.slice(1) : input;
-    try {
-      raw = JSON.parse(text);
-    } catch (e) {
-      const message = (e as Error).message;
-      throw new SceneError("json", `invalid JSON${where(text)} (${printable(message)})`);
-    }
-    // JSON.parse keeps the last of two equal keys silently: the first value would be lost.
-    const dup = firstDuplicateKey(text);
-    if (dup !== null)
-      throw new SceneError(
-        dup.path,
-        `duplicate key "${dup.key}" at line ${dup.line}, column ${dup.column}: an object may name a key only once (JSON would keep the last value and drop the first)`,
-      );
+  if (typeof input !== "string") return checkScene(input);
+  const { raw, underflow } = readText(input);
+  try {
+    return checkScene(raw);
+  } catch (e) {
+    throw explainUnderflow(e, underflow);
   }
+}
+
+/** The parsed scene value checked and normalized (parseScene's checks after the JSON text's). */
+function checkScene(raw: unknown): SceneFile {
   if (!isObject(raw)) throw new SceneError("scene", "must be a JSON object");
   checkHeader(raw);
   const g = raw.g === undefined ? SCENE_DEFAULTS.g : nonNegative(raw, "g", "");

@@ -2,7 +2,7 @@
  * applyGroup(core): applies every scheduled action at the core World's current time, each validated
  * first against the scene at that time (sceneRules.ts), then performed on the World (applyAction.ts),
  * tracked in the registry (body, line and point numbers) and the motion table, logged as an action
- * record, and its `until` turned into a goal when the core is eager. Ends with a keyframe (one per
+ * record, and its `until` turned into a goal when the core takes untils (eager, or the untils option). Ends with a keyframe (one per
  * instant: a group applied one call at a time at the same instant replaces its previous keyframe).
  */
 import { checkAndApply, SceneView } from "../scene/sceneRules.js";
@@ -38,7 +38,7 @@ export function applyGroup(c: TimelineCore): void {
     c.counts.action++;
     c.lastLogged = t;
     if (c.history) c.records.push(t, K_ACTION, k, 0, 0, 0, 0, 0);
-    if (c.eager && a.until) c.goals.push(goalFrom(c, a.until, t));
+    if (c.untils && a.until) c.goals.push(goalFrom(c, a.until, t));
     c.applied++;
   }
   c.idle = false;

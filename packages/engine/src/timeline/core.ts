@@ -38,6 +38,8 @@ export class TimelineCore {
   readonly history: boolean;
   /** actions given to setActions are applied and their untils honoured as the computation goes */
   readonly eager: boolean;
+  /** each action's until becomes a goal when the action is applied (eager, or the untils option) */
+  readonly untils: boolean;
   readonly g0: number;
   readonly gravity0: Vec2;
   world: World;
@@ -77,11 +79,12 @@ export class TimelineCore {
   sortedLive: Uint32Array | null = null;
   private readonly onEvent: (e: WorldEvent) => void;
 
-  constructor(g: number, gravity: Vec2, history: boolean, eager: boolean) {
+  constructor(g: number, gravity: Vec2, history: boolean, eager: boolean, untils = eager) {
     this.g0 = g;
     this.gravity0 = gravity;
     this.history = history;
     this.eager = eager;
+    this.untils = untils;
     this.world = new World({ g, gravity });
     this.onEvent = (e) => this.record(e);
     if (history) takeKeyframe(this, false);
@@ -128,6 +131,11 @@ export class TimelineCore {
       (this.atTimeLimit || this.groupOpen) &&
       (this.acts[this.applied] as Action).time === this.world.time
     );
+  }
+
+  /** Apply the scheduled actions due now (at the World's time), computing nothing. */
+  applyDue(): void {
+    if (this.due()) applyGroup(this);
   }
 
   /**

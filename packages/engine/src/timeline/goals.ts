@@ -39,7 +39,7 @@ export function satisfied(c: TimelineCore, g: Goal): "events" | "idle" | "time" 
 /** Goals of the applied actions' untils, as they stand at the current point (after a restore). */
 export function reopenGoals(c: TimelineCore): void {
   c.goals = [];
-  if (!c.eager) return;
+  if (!c.untils) return;
   for (let k = 0; k < c.applied; k++) {
     const a = c.acts[k] as Action;
     if (!a.until) continue;

@@ -1,5 +1,6 @@
 import { describe, expect, it } from "vitest";
 import { galperin } from "../scene/presets.js";
+import type { Action, SceneFile, Until } from "../scene/types.js";
 import { Timeline } from "./timeline.js";
 import type { TimelineOptions } from "./types.js";
 
@@ -25,5 +26,53 @@ describe("Timeline options", () => {
     expect(new Timeline({ g: 1, gravity: [0, -1], history: false, compute: true }).history).toBe(false);
     expect(Timeline.fromScene(galperin(1), { history: true, compute: false }).history).toBe(true);
     expect(new Timeline().history).toBe(true);
+  });
+});
+
+describe("Timeline option untils (compute: false)", () => {
+  /** A disc between two walls (it never rests), struck again at t = 2; `untils` are the addBody's
+   *  and the strike's. */
+  function bouncing(untils: [Until | undefined, Until | undefined]): SceneFile {
+    const [add, strike] = untils;
+    const actions: Action[] = [
+      { time: 0, type: "addLine", id: "l", p1: [-10, -5], p2: [-10, 5], kind: "line" },
+      { time: 0, type: "addLine", id: "r", p1: [10, -5], p2: [10, 5], kind: "line" },
+      { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [3, 0], ...(add && { until: add }) },
+      { time: 2, type: "giveVelocity", id: "a", v: [-5, 0], ...(strike && { until: strike }) },
+    ];
+    return { format: "chapgame", version: 1, g: 0, gravity: [0, 0], actions };
+  }
+
+  it("computes, in slices, as far as the untils say: the history compute: true computes at once", () => {
+    const cases: [Until | undefined, Until | undefined][] = [
+      [{ time: 30 }, undefined],
+      [{ time: 5 }, { events: 7 }],
+      [{ events: 3 }, { time: 40, events: 100 }],
+      [undefined, { time: 10 }],
+    ];
+    for (const untils of cases) {
+      const scene = bouncing(untils);
+      const eager = Timeline.fromScene(scene);
+      const sliced = Timeline.fromScene(scene, { compute: false, untils: true });
+      expect(sliced.horizon, "fromScene computes nothing").toBe(0);
+      let calls = 0;
+      while (!sliced.prolongSlice({ time: 2 }, 2).done) calls++;
+      const what = JSON.stringify(untils);
+      expect(calls, what).toBeGreaterThan(0);
+      expect(sliced.horizon, what).toBe(eager.horizon);
+      expect(sliced.counts(), what).toEqual(eager.counts());
+      expect(sliced.stateAt(sliced.horizon), what).toEqual(eager.stateAt(eager.horizon));
+      // without the option the untils are ignored: only up to the last action
+      const plain = Timeline.fromScene(scene, { compute: false });
+      plain.prolong({ time: 2 });
+      expect(plain.horizon).toBe(2);
+      expect(eager.horizon, what).toBeGreaterThan(2);
+    }
+  });
+
+  it("refuses a value other than true or false", () => {
+    expect(() => new Timeline({ untils: 1 } as unknown as TimelineOptions)).toThrow(
+      "untils: must be true or false",
+    );
   });
 });

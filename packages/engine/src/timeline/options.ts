@@ -1,7 +1,7 @@
 /**
  * checkOptions(options): the Timeline constructor's options validated (SceneError naming the key:
  * unknown keys, g and gravity as in scene files, magnitudes included; history and compute booleans) with the defaults
- * filled in (g 9.81, gravity [0, 0], history and compute true). checkSceneOptions: fromScene's
+ * filled in (g 9.81, gravity [0, 0], history and compute true; untils true with compute, else false). checkSceneOptions: fromScene's
  * options, which must not carry g or gravity (they come from the scene).
  */
 import { SceneError } from "../scene/errors.js";
@@ -15,12 +15,14 @@ export interface CheckedOptions {
   gravity: Vec2;
   history: boolean;
   compute: boolean;
+  /** the actions' untils are goals (always with compute) */
+  untils: boolean;
 }
 
 export function checkOptions(options: TimelineOptions): CheckedOptions {
   const o = options as Record<string, unknown>;
-  onlyKeys(o, ["g", "gravity", "history", "compute"], "");
-  for (const key of ["history", "compute"])
+  onlyKeys(o, ["g", "gravity", "history", "compute", "untils"], "");
+  for (const key of ["history", "compute", "untils"])
     if (o[key] !== undefined && typeof o[key] !== "boolean")
       throw new SceneError(key, "must be true or false");
   const checked: CheckedOptions = {
@@ -31,6 +33,7 @@ export function checkOptions(options: TimelineOptions): CheckedOptions {
         : vec2(o, "gravity", ""),
     history: options.history !== false,
     compute: options.compute !== false,
+    untils: options.compute !== false || options.untils === true,
   };
   checkFieldMagnitudes(checked.g, checked.gravity, "");
   return checked;

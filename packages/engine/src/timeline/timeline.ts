@@ -71,7 +71,7 @@ export class Timeline extends TimelineReader {
    */
   constructor(options: TimelineOptions = {}) {
     const o = checkOptions(options);
-    super(new TimelineCore(o.g, o.gravity, o.history, o.compute));
+    super(new TimelineCore(o.g, o.gravity, o.history, o.compute, o.untils));
     this.options = o;
   }
 
@@ -182,7 +182,7 @@ export class Timeline extends TimelineReader {
         c.goals.push({ tLimit, eLimit: INF });
       }
       c.drive(INF, { tLimit: a.time, eLimit: INF });
-      if (!c.eager && a.until) c.goals.push(goalFrom(c, a.until, a.time));
+      if (!c.untils && a.until) c.goals.push(goalFrom(c, a.until, a.time));
       c.drive(INF, null);
       c.pathOf = (i) => `actions[${i}]`;
     } catch (e) {
@@ -229,11 +229,14 @@ export class Timeline extends TimelineReader {
       }
     } else {
       const o = this.options;
-      const core = new TimelineCore(o.g, o.gravity, o.history, o.compute);
+      const core = new TimelineCore(o.g, o.gravity, o.history, o.compute, o.untils);
       core.acts = sorted;
       core.pathOf = pathOf;
       if (core.eager && oldHorizon > 0) core.goals.push({ tLimit: oldHorizon, eLimit: INF });
-      core.drive(INF, null);
+      // compute: false applies only the actions at time 0 (with the untils option, their untils
+      // wait for a prolong: they are not computed here)
+      if (core.eager) core.drive(INF, null);
+      else core.applyDue();
       this.core = core;
     }
     this.slice = null;

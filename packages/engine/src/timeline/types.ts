@@ -74,6 +74,12 @@ export interface TimelineOptions {
    *  setActions then leaves the horizon at the keyframe it restarted from (or 0).
    *  Default true. */
   compute?: boolean | undefined;
+  /**
+   * @internal With `compute: false`: each action's `until` becomes a goal when a prolong,
+   * prolongTo or prolongSlice applies the action, and the computation goes on until it is met, as
+   * with `compute: true` (for the CLI, which computes a scene's own bound in slices). Default false.
+   */
+  untils?: boolean | undefined;
 }
 
 /** Options of `Timeline.apply`. */

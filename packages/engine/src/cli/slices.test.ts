@@ -1,0 +1,145 @@
+import { describe, expect, it } from "vitest";
+import { dilutedGas } from "../scene/presets.js";
+import type { Until } from "../scene/types.js";
+import { Timeline } from "../timeline/timeline.js";
+import {
+  computeSlices,
+  Interrupted,
+  PROGRESS_EVERY_EVENTS,
+  type Progress,
+  runInterruptible,
+  runToEnd,
+  SLICE_EVENTS,
+  type Sliceable,
+} from "./slices.js";
+
+/** A Timeline stand-in that finishes after `slices` slices (the last one short), recording calls. */
+function fake(slices: number) {
+  const calls: [Until, number][] = [];
+  let horizon = 0;
+  const tl: Sliceable = {
+    prolongSlice(until, budget) {
+      calls.push([until, budget]);
+      horizon += 1;
+      if (calls.length < slices) return { done: false, events: budget, horizon };
+      return { done: true, events: 7, horizon, reason: "time" };
+    },
+  };
+  return { tl, calls };
+}
+
+function recorder() {
+  const log: string[] = [];
+  const progress: Progress = {
+    report: (h, n) => log.push(`${h}:${n}`),
+    end: () => log.push("end"),
+  };
+  return { log, progress };
+}
+
+describe("computeSlices", () => {
+  it("computes in slices of SLICE_EVENTS toward one until, yields between them, returns the reason", () => {
+    const { tl, calls } = fake(3);
+    const steps = computeSlices(tl, { time: 5 }, null);
+    expect(steps.next()).toEqual({ done: false, value: undefined });
+    expect(steps.next()).toEqual({ done: false, value: undefined });
+    expect(steps.next()).toEqual({ done: true, value: "time" });
+    expect(calls).toEqual([
+      [{ time: 5 }, SLICE_EVENTS],
+      [{ time: 5 }, SLICE_EVENTS],
+      [{ time: 5 }, SLICE_EVENTS],
+    ]);
+  });
+
+  it("reports progress every PROGRESS_EVERY_EVENTS events and ends it once, also when interrupted", () => {
+    const per = PROGRESS_EVERY_EVENTS / SLICE_EVENTS;
+    const done = recorder();
+    expect(runToEnd(computeSlices(fake(2 * per + 1).tl, {}, done.progress))).toBe("time");
+    expect(done.log).toEqual([
+      `${per}:${PROGRESS_EVERY_EVENTS}`,
+      `${2 * per}:${2 * PROGRESS_EVERY_EVENTS}`,
+      "end",
+    ]);
+    // no report, no end (a terminal line is cleared only when one was written)
+    const short = recorder();
+    runToEnd(computeSlices(fake(per).tl, {}, short.progress));
+    expect(short.log).toEqual([]);
+    // interrupted at a yield after a report: the line is cleared, the interrupt goes on up
+    const cut = recorder();
+    const steps = computeSlices(fake(10 * per).tl, {}, cut.progress);
+    for (let i = 0; i < per; i++) steps.next();
+    expect(() => steps.throw(new Interrupted("SIGINT"))).toThrow(Interrupted);
+    expect(cut.log).toEqual([`${per}:${PROGRESS_EVERY_EVENTS}`, "end"]);
+  });
+
+  it("gives a real Timeline the history one prolong gives, bit for bit", () => {
+    const scene = dilutedGas({ n: 100, packing: 0.2 });
+    const whole = Timeline.fromScene(scene, { compute: false });
+    whole.prolong({ events: 3 * SLICE_EVENTS + 17 });
+    const sliced = Timeline.fromScene(scene, { compute: false });
+    let yields = 0;
+    const steps = computeSlices(sliced, { events: 3 * SLICE_EVENTS + 17 }, null);
+    while (!steps.next().done) yields++;
+    expect(yields).toBe(3);
+    expect(sliced.horizon).toBe(whole.horizon);
+    expect(sliced.stateAt(sliced.horizon)).toEqual(whole.stateAt(whole.horizon));
+    expect(sliced.eventRange(0, Infinity)).toEqual(whole.eventRange(0, Infinity));
+  });
+});
+
+describe("runInterruptible", () => {
+  /** A command that counts its steps and answers an interrupt with its status. */
+  function* command(steps: number, seen: string[]): Generator<void, number, void> {
+    try {
+      for (let i = 0; i < steps; i++) {
+        seen.push(`step ${i}`);
+        yield;
+      }
+      return 0;
+    } catch (e) {
+      if (!(e instanceof Interrupted)) throw e;
+      seen.push(`interrupted by ${e.signal}`);
+      return e.status;
+    }
+  }
+
+  it("runs to the end with a pause between steps when nothing interrupts", async () => {
+    const seen: string[] = [];
+    let pauses = 0;
+    const status = await runInterruptible(command(3, seen), {
+      pause: async () => {
+        pauses++;
+      },
+      interrupted: () => null,
+    });
+    expect([status, pauses, seen]).toEqual([0, 3, ["step 0", "step 1", "step 2"]]);
+  });
+
+  it("throws the signal into the command at the step where it stands: 130 for SIGINT, 143 for SIGTERM", async () => {
+    for (const [signal, status] of [
+      ["SIGINT", 130],
+      ["SIGTERM", 143],
+    ] as const) {
+      const seen: string[] = [];
+      let pauses = 0;
+      const got = await runInterruptible(command(100, seen), {
+        pause: async () => {
+          pauses++;
+        },
+        interrupted: () => (pauses >= 2 ? signal : null),
+      });
+      expect(got).toBe(status);
+      expect(seen).toEqual(["step 0", "step 1", `interrupted by ${signal}`]);
+    }
+  });
+
+  it("rejects with the interrupt when the command does not catch it", async () => {
+    function* plain(): Generator<void, number, void> {
+      yield;
+      return 0;
+    }
+    await expect(
+      runInterruptible(plain(), { pause: async () => {}, interrupted: () => "SIGTERM" }),
+    ).rejects.toBeInstanceOf(Interrupted);
+  });
+});

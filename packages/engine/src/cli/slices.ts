@@ -1,0 +1,107 @@
+/**
+ * The CLI's computation in slices, and how it is stopped (pure: no process access).
+ * computeSlices(tl, until, progress) is a generator: each step computes one slice of at most
+ * SLICE_EVENTS collisions and stops (Timeline.prolongSlice toward `until`, counted from the horizon
+ * at the first slice), reports progress every PROGRESS_EVERY_EVENTS events, and yields unless the
+ * run is done; it returns why the run ended. Slicing changes nothing in the history (the Timeline's
+ * contract), so the result is the one a single prolong gives.
+ * A driver runs such a generator (the whole command is one: run.ts): runToEnd runs it through
+ * without pausing; runInterruptible pauses between steps (`pause`, the bin's setImmediate, lets a
+ * signal handler run) and, once `interrupted()` names a signal, throws an Interrupted into the
+ * generator at the yield where it stands, so the command can print what it computed so far.
+ */
+import type { Until } from "../scene/types.js";
+import type { ProlongResult } from "../timeline/types.js";
+
+/** Collisions and stops computed between two chances to stop (a few ms to tens of ms). */
+export const SLICE_EVENTS = 10_000;
+/** Events computed between two progress lines (a multiple of SLICE_EVENTS). */
+export const PROGRESS_EVERY_EVENTS = 200_000;
+
+/** The signals that interrupt a run, and the exit status of a run each interrupted (128 + number). */
+export const INTERRUPT_STATUS = { SIGINT: 130, SIGTERM: 143 } as const;
+export type InterruptSignal = keyof typeof INTERRUPT_STATUS;
+
+/** Thrown into a command's generator when a signal interrupts it. */
+export class Interrupted extends Error {
+  readonly signal: InterruptSignal;
+  constructor(signal: InterruptSignal) {
+    super(`interrupted by ${signal}`);
+    this.name = "Interrupted";
+    this.signal = signal;
+  }
+  /** The exit status of the interrupted run: 130 (SIGINT), 143 (SIGTERM). */
+  get status(): number {
+    return INTERRUPT_STATUS[this.signal];
+  }
+}
+
+/** What computeSlices needs of a Timeline. */
+export interface Sliceable {
+  prolongSlice(
+    until: Until,
+    budget: number,
+  ): { done: boolean; events: number; horizon: number; reason?: ProlongResult["reason"] };
+}
+
+/** Progress reports: after each PROGRESS_EVERY_EVENTS events that do not finish the run, and once
+ *  when the run ends (done, failed or interrupted) after a report was made. */
+export interface Progress {
+  report(horizon: number, events: number): void;
+  end(): void;
+}
+
+/** Computes `until` in slices, yielding between them; returns why the run ended (see the header). */
+export function* computeSlices(
+  tl: Sliceable,
+  until: Until,
+  progress: Progress | null,
+): Generator<void, ProlongResult["reason"], void> {
+  let total = 0;
+  let reported = false;
+  try {
+    for (;;) {
+      const r = tl.prolongSlice(until, SLICE_EVENTS);
+      total += r.events;
+      if (r.done) return r.reason ?? "idle";
+      if (progress !== null && total % PROGRESS_EVERY_EVENTS === 0) {
+        progress.report(r.horizon, total);
+        reported = true;
+      }
+      yield;
+    }
+  } finally {
+    if (reported) progress?.end();
+  }
+}
+
+/** Runs a command's generator through without pausing (nothing can interrupt it). */
+export function runToEnd<T>(steps: Generator<void, T, void>): T {
+  for (;;) {
+    const r = steps.next();
+    if (r.done) return r.value;
+  }
+}
+
+/** How runInterruptible pauses between steps and learns of an interrupt. */
+export interface InterruptControl {
+  /** Resolves once other work may have run (the bin: setImmediate, so signal handlers run). */
+  pause(): Promise<void>;
+  /** The signal received, or null. */
+  interrupted(): InterruptSignal | null;
+}
+
+/** Runs a command's generator, pausing between steps; an interrupt is thrown into it as Interrupted
+ *  (it may catch it and return, or let it propagate: then this rejects with it). */
+export async function runInterruptible<T>(
+  steps: Generator<void, T, void>,
+  control: InterruptControl,
+): Promise<T> {
+  let r = steps.next();
+  while (!r.done) {
+    await control.pause();
+    const signal = control.interrupted();
+    r = signal === null ? steps.next() : steps.throw(new Interrupted(signal));
+  }
+  return r.value;
+}
