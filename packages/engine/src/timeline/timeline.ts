@@ -219,10 +219,12 @@ export class Timeline extends TimelineReader {
         c.acts = sorted;
         c.pathOf = pathOf;
         reopenGoals(c);
-        // A compute: false timeline stays at the keyframe (as one rebuilt from scratch stays at 0):
-        // its caller computes further when it needs to.
-        if (c.eager) c.goals.push({ tLimit: oldHorizon, eLimit: INF });
-        c.drive(INF, null);
+        // A compute: false timeline stays at the keyframe (as one rebuilt from scratch stays at 0),
+        // its actions due there applied: its caller computes further when it needs to.
+        if (c.eager) {
+          c.goals.push({ tLimit: oldHorizon, eLimit: INF });
+          c.drive(INF, null);
+        } else c.applyDue();
       } catch (e) {
         undo();
         throw e;
