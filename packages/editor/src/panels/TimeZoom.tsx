@@ -3,10 +3,27 @@
  * time), Zoom out (twice the span, up to the whole history) and Whole history, and, when zoomed,
  * the part of the history the slider shows ("showing 12.5–25 s"). Zooming is not an edit (no undo
  * step) and is not saved.
+ * A button that cannot act is aria-disabled (announced and drawn as unavailable, pressing it does
+ * nothing) rather than disabled: a disabled button drops the keyboard focus to the page, so pressing
+ * Zoom in until the smallest span, or Whole history, lost the user's place in the tab order.
  */
+import type { ReactNode } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import { canZoomIn, type TimeWindow, windowLabel, zoomIn, zoomOut } from "../store/timeWindow";
 import { historyEnd } from "../store/timeWindowGuard";
+
+/** A button that keeps the focus when it cannot act: aria-disabled, its click a no-op. */
+function ZoomButton(props: { enabled: boolean; onPress: () => void; children: ReactNode }) {
+  return (
+    <button
+      type="button"
+      aria-disabled={props.enabled ? undefined : true}
+      onClick={props.enabled ? props.onPress : undefined}
+    >
+      {props.children}
+    </button>
+  );
+}
 
 export function TimeZoom() {
   const editor = useEditor();
@@ -17,29 +34,27 @@ export function TimeZoom() {
   const now = () => ({ ...editor.ui.getState(), info: editor.client.getSnapshot() });
   return (
     <span className="zoom">
-      <button
-        type="button"
-        disabled={!canZoomIn(w, horizon)}
-        onClick={() => {
+      <ZoomButton
+        enabled={canZoomIn(w, horizon)}
+        onPress={() => {
           const { timeWindow, t, info } = now();
           set(zoomIn(timeWindow, t, info.horizon));
         }}
       >
         Zoom in
-      </button>
-      <button
-        type="button"
-        disabled={w === null}
-        onClick={() => {
+      </ZoomButton>
+      <ZoomButton
+        enabled={w !== null}
+        onPress={() => {
           const { timeWindow, t, info } = now();
           set(zoomOut(timeWindow, t, historyEnd(info, t)));
         }}
       >
         Zoom out
-      </button>
-      <button type="button" disabled={w === null} onClick={() => set(null)}>
+      </ZoomButton>
+      <ZoomButton enabled={w !== null} onPress={() => set(null)}>
         Whole history
-      </button>
+      </ZoomButton>
       {w === null ? null : <output aria-label="Time range shown">showing {windowLabel(w)} s</output>}
     </span>
   );
