@@ -1,5 +1,16 @@
 import { describe, expect, it } from "vitest";
-import { canZoomIn, fitInside, follow, minSpan, viewRange, windowLabel, zoomIn, zoomOut } from "./timeWindow";
+import {
+  canZoomIn,
+  fitInside,
+  follow,
+  minSpan,
+  timeInWindow,
+  viewRange,
+  windowDigits,
+  windowLabel,
+  zoomIn,
+  zoomOut,
+} from "./timeWindow";
 
 describe("time window: zoom", () => {
   it("the whole history (null) spans [0, horizon]; a window spans itself", () => {
@@ -109,5 +120,24 @@ describe("time window: label", () => {
     expect(windowLabel({ lo: 12.5, hi: 25 })).toBe("12.5–25");
     expect(windowLabel({ lo: 0, hi: 1 / 3 })).toBe("0–0.333333");
     expect(windowLabel({ lo: 1e9 - 0.5, hi: 1e9 + 0.5 })).toBe("999999999.5–1000000000.5");
+  });
+});
+
+describe("time window: the time's precision", () => {
+  const short = (x: number) => `short ${x}`;
+
+  it("while zoomed the time is written to the window's precision, else in the short form", () => {
+    // 6 significant digits read 1e+9 for every time of a few seconds around 1e9
+    expect(timeInWindow(1e9 + 2.3456789, { lo: 1e9, hi: 1e9 + 4 }, short)).toBe("1000000002.346");
+    // at most 15 digits (about the floating-point step there)
+    expect(timeInWindow(1e9 - 2.3456789e-4, { lo: 1e9 - 1e-3, hi: 1e9 }, short)).toBe("999999999.999765");
+    expect(timeInWindow(12.3456789, { lo: 0, hi: 40 }, short)).toBe("12.3457");
+    expect(timeInWindow(12.3456789, { lo: 12.3, hi: 12.4 }, short)).toBe("12.34568");
+    expect(timeInWindow(12.3456789, null, short)).toBe("short 12.3456789");
+    expect(timeInWindow(0, { lo: 0, hi: 1e-6 }, short)).toBe("short 0");
+    expect(windowDigits({ lo: 1e9, hi: 1e9 + 4 })).toBe(12);
+    expect(windowDigits({ lo: 1e9, hi: 1e9 + 4 }, 4)).toBe(13);
+    expect(windowDigits({ lo: 0, hi: 0 })).toBe(6);
+    expect(windowDigits({ lo: 1e15, hi: 1e15 + 1 })).toBe(15);
   });
 });

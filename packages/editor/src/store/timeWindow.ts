@@ -84,14 +84,34 @@ export function follow(w: TimeWindow | null, t: number, end: number): TimeWindow
 }
 
 /**
+ * Significant digits that tell times in the window apart: 6, more when the window is narrow for its
+ * times, at most 15. `finer`: the last digit is 10^-finer of the span or less (3: a thousandth, for
+ * its ends; 4 for the time, finer than a pixel of the slider).
+ */
+export function windowDigits(w: TimeWindow, finer = 3): number {
+  const span = w.hi - w.lo;
+  const size = Math.max(Math.abs(w.lo), Math.abs(w.hi));
+  const digits = span > 0 && size > 0 ? Math.ceil(Math.log10(size / span)) + finer : 6;
+  return clamp(digits, 6, 15);
+}
+
+const written = (x: number, digits: number) => String(Number(x.toPrecision(digits)));
+
+/**
  * The window as the Time panel writes it ("12.5–25"): 6 significant digits, more when the window
  * is narrow for its times, so its two ends always read differently (999999999.5–1000000000.5).
  */
 export function windowLabel(w: TimeWindow): string {
-  const span = w.hi - w.lo;
-  const size = Math.max(Math.abs(w.lo), Math.abs(w.hi));
-  const digits = span > 0 && size > 0 ? Math.ceil(Math.log10(size / span)) + 3 : 6;
-  const p = clamp(digits, 6, 15);
-  const text = (x: number) => String(Number(x.toPrecision(p)));
-  return `${text(w.lo)}–${text(w.hi)}`;
+  const p = windowDigits(w);
+  return `${written(w.lo, p)}–${written(w.hi, p)}`;
+}
+
+/**
+ * The time t as the Time panel's field writes it while zoomed: to a ten-thousandth of the window
+ * (1000000002.346 in a 4 s window around 1e9, where 6 digits read 1e+9 whatever the time);
+ * `fallback` (the 6-digit short form) for the whole history.
+ */
+export function timeInWindow(t: number, w: TimeWindow | null, fallback: (x: number) => string): string {
+  if (w === null || Math.abs(t) < 1e-12) return fallback(t);
+  return written(t, windowDigits(w, 4));
 }
