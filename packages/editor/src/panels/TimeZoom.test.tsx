@@ -124,7 +124,13 @@ describe("Time slider zoom", () => {
     // jsdom lays nothing out: the slider is taken as 1 px wide, every move inside the window is sub-pixel
     expect(slider.value).toBe("2");
     act(() => editor.ui.setState({ t: 6.5 }));
-    // [6, 11] is past the history's end: shifted back inside it
+    // playing into the computation (auto-extend): the whole next page, its end computed as time runs
+    expect(range()).toEqual(["6", "11"]);
+    expect(slider.value).toBe("6.5");
+    // with auto-extend off the history ends at 10: [6, 11] is shifted back inside it
+    act(() => editor.ui.setState({ t: 2.5, timeWindow: { lo: 1, hi: 6 } }));
+    act(() => editor.ui.setState({ calc: { ...editor.ui.getState().calc, autoExtend: false } }));
+    act(() => editor.ui.setState({ t: 6.5 }));
     expect(range()).toEqual(["5", "10"]);
     expect(slider.value).toBe("6.5");
   });

@@ -97,6 +97,17 @@ describe("time window: following the time", () => {
     expect(follow(w, 90, 50)).toEqual({ lo: 40, hi: 50 });
   });
 
+  it("while the history grows, a page turned forward is whole (its part past the end is computed as time runs)", () => {
+    // playing into the computation: [20, 40] though the history ends at 22 (shifted back: [2, 22])
+    expect(follow({ lo: 0, hi: 20 }, 20.5, 22, true)).toEqual({ lo: 20, hi: 40 });
+    expect(follow({ lo: 0, hi: 20 }, 20.5, 22)).toEqual({ lo: 2, hi: 22 });
+    // the time kept at the end of the history while it is computed: the same page
+    expect(follow({ lo: 20, hi: 40 }, 22, 22, true)).toEqual({ lo: 20, hi: 40 });
+    // a jump, or a page turned backwards, is shifted inside the history as before
+    expect(follow({ lo: 0, hi: 10 }, 35, 35, true)).toEqual({ lo: 25, hi: 35 });
+    expect(follow({ lo: 5, hi: 15 }, 4, 35, true)).toEqual({ lo: 0, hi: 10 });
+  });
+
   it("a history ending before the window is the whole history, as is a page no shorter than it", () => {
     expect(follow(w, 0, 5)).toBeNull();
     expect(follow(w, 0, 0)).toBeNull();

@@ -12,7 +12,10 @@
  *   hi, stepping to the next event) turns to the next page of the same span, which starts where the
  *   window ended (backwards: ends where it started), so playback reads the history page by page. A
  *   jump of more than one page (a typed time, a far event step) centres the window on the time.
- *   Either way the new page is shifted inside [0, end of the history].
+ *   Either way the new page is shifted inside [0, end of the history], except a page turned forward
+ *   while the history grows (playing into the computation): that page is whole, its part past the
+ *   end filled in as it is computed. Shifted back, it crept by the computation's lead (about 2 s)
+ *   every couple of seconds, the thumb near its right edge.
  */
 
 export interface TimeWindow {
@@ -70,16 +73,18 @@ export function fitInside(lo: number, span: number, end: number): TimeWindow | n
  * The window kept around the time t in a history ending at `end` (the same object when it stays):
  * the whole history (null) when the history ends before the window starts; the window itself while
  * it holds t, even when the history now ends inside it (cut by an edit in the past, it is about to be
- * computed again); otherwise the page holding t (see the header), shifted inside [0, end].
+ * computed again); otherwise the page holding t (see the header), shifted inside [0, end] unless it
+ * is the next page forward and the history is `growing` (computed on past its end as time runs).
  */
-export function follow(w: TimeWindow | null, t: number, end: number): TimeWindow | null {
+export function follow(w: TimeWindow | null, t: number, end: number, growing = false): TimeWindow | null {
   if (w === null) return null;
   if (end < w.lo) return null;
   const span = w.hi - w.lo;
   const x = clamp(t, 0, end);
   if (x >= w.lo && x <= w.hi) return w;
-  const lo =
-    x > w.hi ? (x <= w.hi + span ? w.hi : x - span / 2) : x >= w.lo - span ? w.lo - span : x - span / 2;
+  const nextPage = x > w.hi && x <= w.hi + span;
+  if (nextPage && growing) return { lo: w.hi, hi: w.hi + span };
+  const lo = x > w.hi ? (nextPage ? w.hi : x - span / 2) : x >= w.lo - span ? w.lo - span : x - span / 2;
   return fitInside(lo, span, end);
 }
 
