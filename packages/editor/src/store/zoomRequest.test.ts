@@ -23,6 +23,9 @@ describe("zoom request: by a factor (the wheel)", () => {
       expect(z.hi).toBeLessThanOrEqual(100);
       expect(z.lo <= Math.min(t, z.hi) && Math.min(t, 100 - 1e-9) <= z.hi).toBe(true);
     }
+    // zooming in stays inside the window, also one reaching past the history's end (a page turned
+    // into the computation): the thumb keeps its place
+    expect(zoomBy({ lo: 20, hi: 40 }, 1 / 2, 22, 25, 25)).toEqual({ lo: 21, hi: 31 });
     // a time outside the window (being recomputed) zooms around the window's nearest end
     expect(zoomBy({ lo: 10, hi: 20 }, 1 / 2, 30, 100, 100)).toEqual({ lo: 15, hi: 20 });
   });

@@ -21,8 +21,8 @@ const same = (w: TimeWindow | null, next: TimeWindow | null): TimeWindow | null 
   w !== null && next !== null && next.lo === w.lo && next.hi === w.hi ? w : next;
 
 /**
- * The window of `factor` times the span around t (kept at its place on the slider), shifted inside
- * [0, end], at least minSpan wide; null (the whole history) once it would cover [0, end]; `w` itself
+ * The window of `factor` times the span around t (kept at its place on the slider), inside the
+ * window when zooming in and shifted inside [0, end] when zooming out, at least minSpan wide; null (the whole history) once it would cover [0, end]; `w` itself
  * when nothing changes (at the smallest span, on an empty history, a factor that is not positive).
  * `horizon`: the whole history's range when `w` is null.
  */
@@ -40,7 +40,10 @@ export function zoomBy(
   const next = Math.max(span * factor, minSpan(r.hi));
   if (factor < 1 && !(next < span)) return w;
   const x = clamp(t, r.lo, r.hi);
-  return same(w, fitInside(x - (x - r.lo) * (next / span), next, end));
+  const lo = x - (x - r.lo) * (next / span);
+  // zooming in stays inside the window (as Zoom in does: a page turned into the computation reaches
+  // past the horizon, and shifting it inside would move the thumb); zooming out stays in the history
+  return same(w, factor < 1 ? { lo, hi: Math.min(lo + next, r.hi) } : fitInside(lo, next, end));
 }
 
 /**
