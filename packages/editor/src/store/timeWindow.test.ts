@@ -4,6 +4,7 @@ import {
   fitInside,
   follow,
   minSpan,
+  sliderTime,
   timeInWindow,
   viewRange,
   windowDigits,
@@ -64,6 +65,17 @@ describe("time window: zoom", () => {
     expect(w!.hi - w!.lo).toBeGreaterThan(minSpan(1e9) / 2);
     expect(w!.lo).toBeLessThanOrEqual(5e8);
     expect(w!.hi).toBeGreaterThanOrEqual(5e8);
+  });
+});
+
+describe("time window: the slider's value", () => {
+  it("is the time, clamped to the slider's range (a value read just past an end stays at it)", () => {
+    const w = { lo: 2.4995, hi: 2.5004999999999997 };
+    expect(sliderTime(2.5005, w, 10)).toBe(w.hi);
+    expect(sliderTime(2.4994999999999, w, 10)).toBe(w.lo);
+    expect(sliderTime(2.5001, w, 10)).toBe(2.5001);
+    expect(sliderTime(10.000000000000002, null, 10)).toBe(10);
+    expect(sliderTime(3, null, 0)).toBe(0);
   });
 });
 

@@ -23,9 +23,23 @@ export interface TimeWindow {
   hi: number;
 }
 
+const clamp = (x: number, lo: number, hi: number): number => Math.min(Math.max(x, lo), hi);
+
 /** The range the slider spans: the window, or [0, horizon] for the whole history. */
 export function viewRange(w: TimeWindow | null, horizon: number): TimeWindow {
   return w ?? { lo: 0, hi: horizon };
+}
+
+/**
+ * The time a value of the slider stands for: the value clamped to the slider's range. Chromium
+ * writes a range input's value to about 15 significant digits, so a thumb at an end of a window
+ * whose ends need 16 or 17 (2.5004999999999997) reads just past it (2.5005): the guard turned the
+ * page, the thumb under the pointer was at the new page's end, and holding it there turned a page on
+ * every pointer move.
+ */
+export function sliderTime(value: number, w: TimeWindow | null, horizon: number): number {
+  const r = viewRange(w, horizon);
+  return clamp(value, r.lo, Math.max(r.lo, r.hi));
 }
 
 /**
@@ -35,8 +49,6 @@ export function viewRange(w: TimeWindow | null, horizon: number): TimeWindow {
 export function minSpan(hi: number): number {
   return Math.max(1e-9, Math.abs(hi) * 1e-12);
 }
-
-const clamp = (x: number, lo: number, hi: number): number => Math.min(Math.max(x, lo), hi);
 
 /** Whether zoom in would narrow the range (a history to zoom into, not at the smallest span yet). */
 export function canZoomIn(w: TimeWindow | null, horizon: number): boolean {
