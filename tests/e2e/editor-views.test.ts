@@ -212,6 +212,13 @@ describe("editor views", () => {
     expect(from).toBeCloseTo(2.5000001234 - 0.0005, 12);
     expect(to).toBeCloseTo(2.5000001234 + 0.0005, 12);
     expect(await page.getByRole("textbox", { name: "Time (s)" }).inputValue()).toBe("2.5000001");
+    // the thumb held at the end (its value read past it, to 15 digits) does not turn page after page
+    const end = (await slider.boundingBox())!;
+    await page.mouse.move(end.x + end.width / 2, end.y + end.height / 2);
+    await page.mouse.down();
+    for (let i = 1; i <= 6; i++) await page.mouse.move(end.x + end.width + 5 * i, end.y + end.height / 2);
+    await page.mouse.up();
+    expect(await range()).toEqual([from, to]);
     await page.getByRole("button", { name: "Whole history" }).click();
     expect(await range()).toEqual([0, 10]);
   });
