@@ -1,6 +1,7 @@
 /**
  * End-to-end: what the panels and the canvas show a scene author, in Debian's Chromium: the Event
- * log keeps the current time in view, and the layout stays usable in small windows.
+ * log keeps the current time in view, the Time slider's zoom (keyboard focus, wheel, typed width),
+ * and the layout stays usable in small windows.
  */
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -163,6 +164,63 @@ describe("editor views", () => {
     await page.mouse.up();
     await waitFor(async () => Number(await slider.inputValue()) > held + 0.2);
     await page.getByRole("button", { name: "Pause" }).click();
+  });
+
+  it("Time zoom: a zoom button keeps the focus once it cannot act; the wheel and a typed width zoom around the time", async () => {
+    await loadPreset("Newton's cradle", "striker");
+    await scrubTo(page, 2.5);
+    const slider = page.getByRole("slider", { name: "Time" });
+    const range = async (): Promise<[number, number]> => [
+      Number(await slider.getAttribute("min")),
+      Number(await slider.getAttribute("max")),
+    ];
+    const focused = () => page.evaluate(() => document.activeElement?.textContent ?? null);
+    // Enter on Zoom in down to the smallest span: the button becomes unavailable and keeps the focus
+    const zoomIn = page.getByRole("button", { name: "Zoom in", exact: true });
+    await zoomIn.focus();
+    for (let i = 0; i < 40 && (await zoomIn.getAttribute("aria-disabled")) !== "true"; i++)
+      await page.keyboard.press("Enter");
+    expect(await zoomIn.getAttribute("aria-disabled")).toBe("true");
+    expect(await focused()).toBe("Zoom in");
+    // Tab on to Whole history: pressing it makes it unavailable, the focus stays
+    await page.keyboard.press("Tab");
+    await page.keyboard.press("Tab");
+    expect(await focused()).toBe("Whole history");
+    await page.keyboard.press("Enter");
+    expect(await range()).toEqual([0, 10]);
+    expect(await focused()).toBe("Whole history");
+    // two wheel notches up over the slider: 16x in around the time, the page does not scroll
+    await page.evaluate(() => window.scrollTo(0, 0));
+    const box = (await slider.boundingBox())!;
+    await page.mouse.move(box.x + box.width * 0.8, box.y + box.height / 2);
+    await page.mouse.wheel(0, -100);
+    await page.mouse.wheel(0, -100);
+    await poll(async () => {
+      const [a, b] = await range();
+      return b - a;
+    }).toBeCloseTo(10 / 16, 9);
+    const [lo, hi] = await range();
+    expect((2.5 - lo) / (hi - lo)).toBeCloseTo(0.25, 9);
+    expect(Number(await slider.inputValue())).toBe(2.5);
+    expect(await page.evaluate(() => window.scrollY)).toBe(0);
+    // a typed width: 1 ms centred on the time, whose field shows it to the window's precision
+    await scrubTo(page, 2.5000001234);
+    const width = page.getByRole("textbox", { name: "Window width (s)" });
+    await width.fill("0.001");
+    await width.press("Enter");
+    const [from, to] = await range();
+    expect(from).toBeCloseTo(2.5000001234 - 0.0005, 12);
+    expect(to).toBeCloseTo(2.5000001234 + 0.0005, 12);
+    expect(await page.getByRole("textbox", { name: "Time (s)" }).inputValue()).toBe("2.5000001");
+    // the thumb held at the end (its value read past it, to 15 digits) does not turn page after page
+    const end = (await slider.boundingBox())!;
+    await page.mouse.move(end.x + end.width / 2, end.y + end.height / 2);
+    await page.mouse.down();
+    for (let i = 1; i <= 6; i++) await page.mouse.move(end.x + end.width + 5 * i, end.y + end.height / 2);
+    await page.mouse.up();
+    expect(await range()).toEqual([from, to]);
+    await page.getByRole("button", { name: "Whole history" }).click();
+    expect(await range()).toEqual([0, 10]);
   });
 
   it("small windows keep the canvas, the Time slider and every time and speed control usable; nothing overflows sideways", async () => {

@@ -1,21 +1,23 @@
 /**
  * Time: the `Time` scrubber over the time window (the whole history [0, horizon] unless zoomed,
- * TimeZoom) with the window's event ticks, a time field (a time past the horizon is computed
+ * TimeZoom; the wheel over it zooms, useWheelZoom) with the window's event ticks, a time field (a time past the horizon is computed
  * first), −1 / 0 / +1 s and stepping to the previous / next event. Scrubbing and zooming are not
  * edits (no undo step).
  * While playing, this panel re-renders about 10 times a second (useShownTime); the slider's thumb
  * follows every frame by itself (TimeSlider). The time field shows the current time until the user
  * types in it; only typed text is gone to (Enter or leaving the field), so clicking into the field
- * while playing and away again leaves the time alone.
+ * while playing and away again leaves the time alone. Zoomed, it shows the time to the window's
+ * precision (timeInWindow) and widens to fit.
  */
-import { useMemo, useState } from "react";
+import { useMemo, useRef, useState } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
-import { viewRange } from "../store/timeWindow";
+import { timeInWindow, viewRange } from "../store/timeWindow";
 import { formatNumber, parseNumber } from "./EditableCell";
 import { TimeSlider } from "./TimeSlider";
 import { TimeZoom } from "./TimeZoom";
 import { useRefreshed } from "./useRefreshed";
 import { useShownTime } from "./useThrottledTime";
+import { useWheelZoom } from "./useWheelZoom";
 
 const TICKS = 300;
 /**
@@ -51,6 +53,10 @@ export function TimePanel() {
   );
   /** The text typed in the time field (null: nothing typed; the field shows the current time). */
   const [draft, setDraft] = useState<string | null>(null);
+  const scrubber = useRef<HTMLDivElement>(null);
+  useWheelZoom(editor, scrubber);
+  // zoomed, to the window's precision (6 digits read 1e+9 for every time of a window of seconds there)
+  const timeText = draft ?? timeInWindow(t, timeWindow, formatNumber);
 
   // Ticks are times: a reply asked for an earlier window is drawn on the current one, in its range.
   const tickLines = useMemo(() => {
@@ -84,7 +90,7 @@ export function TimePanel() {
   return (
     <section className="panel time-panel" aria-labelledby="time-title">
       <h2 id="time-title">Time</h2>
-      <div className="scrubber">
+      <div className="scrubber" ref={scrubber} title="Wheel: zoom in and out around the current time">
         <TimeSlider />
         <svg className="ticks" viewBox="0 0 1000 10" preserveAspectRatio="none" aria-hidden="true">
           {tickLines}
@@ -95,8 +101,8 @@ export function TimePanel() {
           t ={" "}
           <input
             aria-label="Time (s)"
-            size={9}
-            value={draft ?? formatNumber(t)}
+            size={Math.max(9, timeText.length + 1)}
+            value={timeText}
             onChange={(e) => setDraft(e.target.value)}
             onBlur={commitDraft}
             onKeyDown={(e) => {

@@ -6,12 +6,13 @@
  * one thumb. While playing, a change that moves the thumb by less than a pixel is not written (each
  * write of a range input's value costs Chromium a relayout, repaint and re-layerization of the page,
  * about 1 ms per frame in the 2,000-disc profile); a new range is always written. Paused, the slider
- * always shows the exact time. Dragging it sets the time (not an edit); holding it while playing
- * pauses until it is let go.
+ * always shows the exact time. Dragging it sets the time (not an edit), within its range (sliderTime:
+ * Chromium's value at an end can read just past it, which turned the page under the pointer);
+ * holding it while playing pauses until it is let go.
  */
 import { useEffect, useRef } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
-import { viewRange } from "../store/timeWindow";
+import { sliderTime, viewRange } from "../store/timeWindow";
 
 export function TimeSlider() {
   const editor = useEditor();
@@ -90,7 +91,11 @@ export function TimeSlider() {
       max={range.hi}
       step="any"
       defaultValue={0}
-      onChange={(e) => editor.setTime(Number(e.target.value))}
+      onChange={(e) => {
+        // clamped to the range: a value read just past an end turned the page (sliderTime)
+        const w = editor.ui.getState().timeWindow;
+        editor.setTime(sliderTime(Number(e.target.value), w, editor.client.getSnapshot().horizon));
+      }}
     />
   );
 }

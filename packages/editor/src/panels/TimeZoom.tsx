@@ -1,45 +1,51 @@
 /**
  * The Time slider's zoom controls (store/timeWindow.ts): Zoom in (half the span around the current
- * time), Zoom out (twice the span, up to the whole history) and Whole history, and, when zoomed,
- * the part of the history the slider shows ("showing 12.5–25 s"). Zooming is not an edit (no undo
- * step) and is not saved.
+ * time), Zoom out (twice the span, up to the whole history), Whole history, the window's width
+ * (ZoomWidthField: type 5 for 5 s around the current time) and, when zoomed, the part of the
+ * history the slider shows ("showing 12.5–25 s"). The wheel over the slider zooms too
+ * (useWheelZoom). Zooming is not an edit (no undo step) and is not saved.
+ * A button that cannot act is aria-disabled (announced and drawn as unavailable, pressing it does
+ * nothing) rather than disabled: a disabled button drops the keyboard focus to the page, so pressing
+ * Zoom in until the smallest span, or Whole history, lost the user's place in the tab order.
  */
+import type { ReactNode } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
-import { canZoomIn, type TimeWindow, windowLabel, zoomIn, zoomOut } from "../store/timeWindow";
-import { historyEnd } from "../store/timeWindowGuard";
+import { canZoomIn, windowLabel, zoomIn, zoomOut } from "../store/timeWindow";
+import { ZoomWidthField } from "./ZoomWidthField";
+import { applyZoom } from "./zoomActions";
+
+/** A button that keeps the focus when it cannot act: aria-disabled, its click a no-op. */
+function ZoomButton(props: { enabled: boolean; onPress: () => void; children: ReactNode }) {
+  return (
+    <button
+      type="button"
+      aria-disabled={props.enabled ? undefined : true}
+      onClick={props.enabled ? props.onPress : undefined}
+    >
+      {props.children}
+    </button>
+  );
+}
 
 export function TimeZoom() {
   const editor = useEditor();
   const w = useUi((s) => s.timeWindow);
   const horizon = useInfoValue((i) => i.horizon);
-  const set = (next: TimeWindow | null) => editor.ui.setState({ timeWindow: next });
-  // Read at the click: the time moves without re-rendering this panel while playing.
-  const now = () => ({ ...editor.ui.getState(), info: editor.client.getSnapshot() });
   return (
     <span className="zoom">
-      <button
-        type="button"
-        disabled={!canZoomIn(w, horizon)}
-        onClick={() => {
-          const { timeWindow, t, info } = now();
-          set(zoomIn(timeWindow, t, info.horizon));
-        }}
+      <ZoomButton
+        enabled={canZoomIn(w, horizon)}
+        onPress={() => applyZoom(editor, (s) => zoomIn(s.w, s.t, s.horizon))}
       >
         Zoom in
-      </button>
-      <button
-        type="button"
-        disabled={w === null}
-        onClick={() => {
-          const { timeWindow, t, info } = now();
-          set(zoomOut(timeWindow, t, historyEnd(info, t)));
-        }}
-      >
+      </ZoomButton>
+      <ZoomButton enabled={w !== null} onPress={() => applyZoom(editor, (s) => zoomOut(s.w, s.t, s.end))}>
         Zoom out
-      </button>
-      <button type="button" disabled={w === null} onClick={() => set(null)}>
+      </ZoomButton>
+      <ZoomButton enabled={w !== null} onPress={() => applyZoom(editor, () => null)}>
         Whole history
-      </button>
+      </ZoomButton>
+      <ZoomWidthField />
       {w === null ? null : <output aria-label="Time range shown">showing {windowLabel(w)} s</output>}
     </span>
   );

@@ -1,5 +1,17 @@
 import { describe, expect, it } from "vitest";
-import { canZoomIn, fitInside, follow, minSpan, viewRange, windowLabel, zoomIn, zoomOut } from "./timeWindow";
+import {
+  canZoomIn,
+  fitInside,
+  follow,
+  minSpan,
+  sliderTime,
+  timeInWindow,
+  viewRange,
+  windowDigits,
+  windowLabel,
+  zoomIn,
+  zoomOut,
+} from "./timeWindow";
 
 describe("time window: zoom", () => {
   it("the whole history (null) spans [0, horizon]; a window spans itself", () => {
@@ -56,6 +68,17 @@ describe("time window: zoom", () => {
   });
 });
 
+describe("time window: the slider's value", () => {
+  it("is the time, clamped to the slider's range (a value read just past an end stays at it)", () => {
+    const w = { lo: 2.4995, hi: 2.5004999999999997 };
+    expect(sliderTime(2.5005, w, 10)).toBe(w.hi);
+    expect(sliderTime(2.4994999999999, w, 10)).toBe(w.lo);
+    expect(sliderTime(2.5001, w, 10)).toBe(2.5001);
+    expect(sliderTime(10.000000000000002, null, 10)).toBe(10);
+    expect(sliderTime(3, null, 0)).toBe(0);
+  });
+});
+
 describe("time window: following the time", () => {
   const w = { lo: 10, hi: 20 };
 
@@ -86,6 +109,17 @@ describe("time window: following the time", () => {
     expect(follow(w, 90, 50)).toEqual({ lo: 40, hi: 50 });
   });
 
+  it("while the history grows, a page turned forward is whole (its part past the end is computed as time runs)", () => {
+    // playing into the computation: [20, 40] though the history ends at 22 (shifted back: [2, 22])
+    expect(follow({ lo: 0, hi: 20 }, 20.5, 22, true)).toEqual({ lo: 20, hi: 40 });
+    expect(follow({ lo: 0, hi: 20 }, 20.5, 22)).toEqual({ lo: 2, hi: 22 });
+    // the time kept at the end of the history while it is computed: the same page
+    expect(follow({ lo: 20, hi: 40 }, 22, 22, true)).toEqual({ lo: 20, hi: 40 });
+    // a jump, or a page turned backwards, is shifted inside the history as before
+    expect(follow({ lo: 0, hi: 10 }, 35, 35, true)).toEqual({ lo: 25, hi: 35 });
+    expect(follow({ lo: 5, hi: 15 }, 4, 35, true)).toEqual({ lo: 0, hi: 10 });
+  });
+
   it("a history ending before the window is the whole history, as is a page no shorter than it", () => {
     expect(follow(w, 0, 5)).toBeNull();
     expect(follow(w, 0, 0)).toBeNull();
@@ -109,5 +143,24 @@ describe("time window: label", () => {
     expect(windowLabel({ lo: 12.5, hi: 25 })).toBe("12.5–25");
     expect(windowLabel({ lo: 0, hi: 1 / 3 })).toBe("0–0.333333");
     expect(windowLabel({ lo: 1e9 - 0.5, hi: 1e9 + 0.5 })).toBe("999999999.5–1000000000.5");
+  });
+});
+
+describe("time window: the time's precision", () => {
+  const short = (x: number) => `short ${x}`;
+
+  it("while zoomed the time is written to the window's precision, else in the short form", () => {
+    // 6 significant digits read 1e+9 for every time of a few seconds around 1e9
+    expect(timeInWindow(1e9 + 2.3456789, { lo: 1e9, hi: 1e9 + 4 }, short)).toBe("1000000002.346");
+    // at most 15 digits (about the floating-point step there)
+    expect(timeInWindow(1e9 - 2.3456789e-4, { lo: 1e9 - 1e-3, hi: 1e9 }, short)).toBe("999999999.999765");
+    expect(timeInWindow(12.3456789, { lo: 0, hi: 40 }, short)).toBe("12.3457");
+    expect(timeInWindow(12.3456789, { lo: 12.3, hi: 12.4 }, short)).toBe("12.34568");
+    expect(timeInWindow(12.3456789, null, short)).toBe("short 12.3456789");
+    expect(timeInWindow(0, { lo: 0, hi: 1e-6 }, short)).toBe("short 0");
+    expect(windowDigits({ lo: 1e9, hi: 1e9 + 4 })).toBe(12);
+    expect(windowDigits({ lo: 1e9, hi: 1e9 + 4 }, 4)).toBe(13);
+    expect(windowDigits({ lo: 0, hi: 0 })).toBe(6);
+    expect(windowDigits({ lo: 1e15, hi: 1e15 + 1 })).toBe(15);
   });
 });

@@ -12,7 +12,10 @@
  *   hi, stepping to the next event) turns to the next page of the same span, which starts where the
  *   window ended (backwards: ends where it started), so playback reads the history page by page. A
  *   jump of more than one page (a typed time, a far event step) centres the window on the time.
- *   Either way the new page is shifted inside [0, end of the history].
+ *   Either way the new page is shifted inside [0, end of the history], except a page turned forward
+ *   while the history grows (playing into the computation): that page is whole, its part past the
+ *   end filled in as it is computed. Shifted back, it crept by the computation's lead (about 2 s)
+ *   every couple of seconds, the thumb near its right edge.
  */
 
 export interface TimeWindow {
@@ -20,9 +23,23 @@ export interface TimeWindow {
   hi: number;
 }
 
+const clamp = (x: number, lo: number, hi: number): number => Math.min(Math.max(x, lo), hi);
+
 /** The range the slider spans: the window, or [0, horizon] for the whole history. */
 export function viewRange(w: TimeWindow | null, horizon: number): TimeWindow {
   return w ?? { lo: 0, hi: horizon };
+}
+
+/**
+ * The time a value of the slider stands for: the value clamped to the slider's range. Chromium
+ * writes a range input's value to about 15 significant digits, so a thumb at an end of a window
+ * whose ends need 16 or 17 (2.5004999999999997) reads just past it (2.5005): the guard turned the
+ * page, the thumb under the pointer was at the new page's end, and holding it there turned a page on
+ * every pointer move.
+ */
+export function sliderTime(value: number, w: TimeWindow | null, horizon: number): number {
+  const r = viewRange(w, horizon);
+  return clamp(value, r.lo, Math.max(r.lo, r.hi));
 }
 
 /**
@@ -32,8 +49,6 @@ export function viewRange(w: TimeWindow | null, horizon: number): TimeWindow {
 export function minSpan(hi: number): number {
   return Math.max(1e-9, Math.abs(hi) * 1e-12);
 }
-
-const clamp = (x: number, lo: number, hi: number): number => Math.min(Math.max(x, lo), hi);
 
 /** Whether zoom in would narrow the range (a history to zoom into, not at the smallest span yet). */
 export function canZoomIn(w: TimeWindow | null, horizon: number): boolean {
@@ -70,28 +85,50 @@ export function fitInside(lo: number, span: number, end: number): TimeWindow | n
  * The window kept around the time t in a history ending at `end` (the same object when it stays):
  * the whole history (null) when the history ends before the window starts; the window itself while
  * it holds t, even when the history now ends inside it (cut by an edit in the past, it is about to be
- * computed again); otherwise the page holding t (see the header), shifted inside [0, end].
+ * computed again); otherwise the page holding t (see the header), shifted inside [0, end] unless it
+ * is the next page forward and the history is `growing` (computed on past its end as time runs).
  */
-export function follow(w: TimeWindow | null, t: number, end: number): TimeWindow | null {
+export function follow(w: TimeWindow | null, t: number, end: number, growing = false): TimeWindow | null {
   if (w === null) return null;
   if (end < w.lo) return null;
   const span = w.hi - w.lo;
   const x = clamp(t, 0, end);
   if (x >= w.lo && x <= w.hi) return w;
-  const lo =
-    x > w.hi ? (x <= w.hi + span ? w.hi : x - span / 2) : x >= w.lo - span ? w.lo - span : x - span / 2;
+  const nextPage = x > w.hi && x <= w.hi + span;
+  if (nextPage && growing) return { lo: w.hi, hi: w.hi + span };
+  const lo = x > w.hi ? (nextPage ? w.hi : x - span / 2) : x >= w.lo - span ? w.lo - span : x - span / 2;
   return fitInside(lo, span, end);
 }
+
+/**
+ * Significant digits that tell times in the window apart: 6, more when the window is narrow for its
+ * times, at most 15. `finer`: the last digit is 10^-finer of the span or less (3: a thousandth, for
+ * its ends; 4 for the time, finer than a pixel of the slider).
+ */
+export function windowDigits(w: TimeWindow, finer = 3): number {
+  const span = w.hi - w.lo;
+  const size = Math.max(Math.abs(w.lo), Math.abs(w.hi));
+  const digits = span > 0 && size > 0 ? Math.ceil(Math.log10(size / span)) + finer : 6;
+  return clamp(digits, 6, 15);
+}
+
+const written = (x: number, digits: number) => String(Number(x.toPrecision(digits)));
 
 /**
  * The window as the Time panel writes it ("12.5–25"): 6 significant digits, more when the window
  * is narrow for its times, so its two ends always read differently (999999999.5–1000000000.5).
  */
 export function windowLabel(w: TimeWindow): string {
-  const span = w.hi - w.lo;
-  const size = Math.max(Math.abs(w.lo), Math.abs(w.hi));
-  const digits = span > 0 && size > 0 ? Math.ceil(Math.log10(size / span)) + 3 : 6;
-  const p = clamp(digits, 6, 15);
-  const text = (x: number) => String(Number(x.toPrecision(p)));
-  return `${text(w.lo)}–${text(w.hi)}`;
+  const p = windowDigits(w);
+  return `${written(w.lo, p)}–${written(w.hi, p)}`;
+}
+
+/**
+ * The time t as the Time panel's field writes it while zoomed: to a ten-thousandth of the window
+ * (1000000002.346 in a 4 s window around 1e9, where 6 digits read 1e+9 whatever the time);
+ * `fallback` (the 6-digit short form) for the whole history.
+ */
+export function timeInWindow(t: number, w: TimeWindow | null, fallback: (x: number) => string): string {
+  if (w === null || Math.abs(t) < 1e-12) return fallback(t);
+  return written(t, windowDigits(w, 4));
 }

@@ -15,7 +15,12 @@ const restoring = (targetTime: number): ComputeStatus => ({
 });
 
 function guarded(horizon: number) {
-  const info = createStore({ horizon, computing: null as ComputeStatus | null });
+  const info = createStore({
+    horizon,
+    computing: null as ComputeStatus | null,
+    idle: false,
+    stopped: null as string | null,
+  });
   const source = { getSnapshot: () => info.getState(), subscribe: (l: () => void) => info.subscribe(l) };
   const ui = createUiStore({ t: 15, timeWindow: { lo: 10, hi: 20 } });
   keepTimeWindow(ui, source);
@@ -36,6 +41,41 @@ describe("time window guard", () => {
     // the whole history stays the whole history
     ui.setState({ timeWindow: null, t: 3 });
     expect(ui.getState().timeWindow).toBeNull();
+  });
+
+  it("playing into the computation turns whole pages; paused, or with nothing more to compute, they stay inside the history", () => {
+    const { info, ui } = guarded(22);
+    ui.setState({ playing: true, speed: 1, t: 20.5 });
+    // the next page, though the history ends at 22 (shifted back to [12, 22] it crept 2 s at a time)
+    expect(ui.getState().timeWindow).toEqual({ lo: 20, hi: 30 });
+    // the horizon catches up: the same page
+    info.setState({ horizon: 26 });
+    ui.setState({ t: 25 });
+    expect(ui.getState().timeWindow).toEqual({ lo: 20, hi: 30 });
+    // backwards, or with auto-extend off, or no event left: shifted inside the history
+    ui.setState({ timeWindow: { lo: 10, hi: 20 }, t: 15, speed: -1 });
+    ui.setState({ t: 20.5 });
+    expect(ui.getState().timeWindow).toEqual({ lo: 16, hi: 26 });
+    ui.setState({
+      timeWindow: { lo: 10, hi: 20 },
+      t: 15,
+      speed: 1,
+      calc: { ...ui.getState().calc, autoExtend: false },
+    });
+    ui.setState({ t: 20.5 });
+    expect(ui.getState().timeWindow).toEqual({ lo: 16, hi: 26 });
+    ui.setState({ timeWindow: { lo: 10, hi: 20 }, t: 15, calc: { ...ui.getState().calc, autoExtend: true } });
+    info.setState({ idle: true });
+    ui.setState({ t: 20.5 });
+    expect(ui.getState().timeWindow).toEqual({ lo: 16, hi: 26 });
+    // paused, a running computation grows the history too
+    ui.setState({ timeWindow: { lo: 10, hi: 20 }, t: 15, playing: false });
+    info.setState({
+      idle: false,
+      computing: { events: 0, targetEvents: null, targetTime: 100, startHorizon: 22, restore: false },
+    });
+    ui.setState({ t: 20.5 });
+    expect(ui.getState().timeWindow).toEqual({ lo: 20, hi: 30 });
   });
 
   it("an undo keeps the window: the time is held past the horizon, then a restore brings the history back", () => {

@@ -7,15 +7,34 @@
  * it is held past the horizon for such a restore: an undo or an edit in the past keeps the zoom
  * though the horizon drops to the edit's time or to 0 before the restore starts (two messages from
  * the host). A load of another scene returns to the whole history with the time (editorSession.ts).
+ * The history grows (`historyGrows`) while a computation runs or while playing forward can ask for
+ * one (auto-extend, events left, not stopped): a page turned forward then is whole (timeWindow.ts).
  */
+import { canExtend } from "../playback";
 import { type ComputeStatus, restoreTarget } from "../remote/protocol";
 import { follow } from "./timeWindow";
-import type { UiStore } from "./uiStore";
+import type { UiState, UiStore } from "./uiStore";
 
-/** What the guard watches: the TimelineClient's snapshot (horizon, computation) and its changes. */
+/** The part of the TimelineClient's snapshot the guard reads. */
+export interface HistoryInfo {
+  horizon: number;
+  computing: ComputeStatus | null;
+  idle: boolean;
+  stopped: string | null;
+}
+
+/** What the guard watches: the TimelineClient's snapshot and its changes. */
 export interface HistorySource {
-  getSnapshot(): { horizon: number; computing: ComputeStatus | null };
+  getSnapshot(): HistoryInfo;
   subscribe(listener: () => void): () => void;
+}
+
+/** Whether the history is about to reach past its end: computing, or playing forward into it. */
+export function historyGrows(
+  s: Pick<UiState, "playing" | "speed" | "calc">,
+  info: Pick<HistoryInfo, "computing" | "idle" | "stopped">,
+): boolean {
+  return info.computing !== null || (s.playing && s.speed > 0 && canExtend(s.calc.autoExtend, info));
 }
 
 /**
@@ -31,7 +50,8 @@ export function keepTimeWindow(ui: UiStore, source: HistorySource): () => void {
   const check = () => {
     const s = ui.getState();
     if (s.timeWindow === null) return;
-    const next = follow(s.timeWindow, s.t, historyEnd(source.getSnapshot(), s.t));
+    const info = source.getSnapshot();
+    const next = follow(s.timeWindow, s.t, historyEnd(info, s.t), historyGrows(s, info));
     if (next !== s.timeWindow) ui.setState({ timeWindow: next });
   };
   const offUi = ui.subscribe((s, p) => {
