@@ -4,10 +4,11 @@
  * of a billion seconds to a few seconds around the current time without 28 presses of Zoom in).
  */
 import { act, cleanup, fireEvent, render, screen } from "@testing-library/react";
-import { afterEach, describe, expect, it } from "vitest";
+import { afterEach, describe, expect, it, vi } from "vitest";
 import { EditorContext } from "../EditorContext";
 import { cradleEditor } from "../testing/harness";
 import { TimePanel } from "./TimePanel";
+import { WHEEL_LATCH_MS } from "./useWheelZoom";
 
 afterEach(cleanup);
 
@@ -63,6 +64,29 @@ describe("Time slider: wheel zoom", () => {
     expect(editor.ui.getState().timeWindow).toBeNull();
     // not an undo step
     expect(editor.history.getState().past).toHaveLength(0);
+  });
+});
+
+describe("Time slider: a page scroll that passes over it", () => {
+  it("keeps scrolling the page (no zoom) while its wheel events keep coming; a wheel after a pause zooms", async () => {
+    const { editor, wheel } = await renderPanel();
+    let now = 1000;
+    const clock = vi.spyOn(performance, "now").mockImplementation(() => now);
+    try {
+      act(() => {
+        fireEvent.wheel(document.body, { deltaY: 100 });
+      });
+      now += 40;
+      expect(wheel({ deltaY: 100 })).toBe(true); // the page's: not prevented
+      now += 40;
+      expect(wheel({ deltaY: -100 })).toBe(true); // still the same gesture
+      expect(editor.ui.getState().timeWindow).toBeNull();
+      now += WHEEL_LATCH_MS;
+      expect(wheel({ deltaY: -100 })).toBe(false); // a new gesture over the slider zooms
+      expect(editor.ui.getState().timeWindow).not.toBeNull();
+    } finally {
+      clock.mockRestore();
+    }
   });
 });
 

@@ -8,6 +8,9 @@
  * The listener is not passive: a vertical wheel over the slider zooms and does not scroll the page,
  * also at the smallest span and at the whole history (the page would jump under the pointer when a
  * zoom hits its limit). A mostly horizontal wheel (a touchpad's sideways swipe) is left to the page.
+ * So is a wheel that scrolls the page and passes over the slider: the wheel events that follow
+ * another outside the slider by less than WHEEL_LATCH_MS are one gesture, and stay the page's (the
+ * way a browser keeps a scroll gesture on the scroller it started on).
  */
 import { type RefObject, useEffect } from "react";
 import type { Editor } from "../editor";
@@ -22,14 +25,34 @@ export function wheelZoom(editor: Pick<Editor, "ui" | "client">, e: WheelEvent):
   return true;
 }
 
+/** A wheel event this soon (ms) after the previous one continues its gesture (a page scroll that
+ *  reaches the slider keeps scrolling). Wheel events of one gesture come every 10–50 ms; a user who
+ *  stops scrolling and then zooms pauses longer. */
+export const WHEEL_LATCH_MS = 300;
+
+/** Whether a wheel event at `now` (ms) belongs to a page scroll whose last event was at `pageAt`. */
+export function continuesPageScroll(now: number, pageAt: number): boolean {
+  return now - pageAt < WHEEL_LATCH_MS;
+}
+
 export function useWheelZoom(editor: Editor, ref: RefObject<HTMLElement | null>): void {
   useEffect(() => {
     const el = ref.current;
     if (!el) return;
-    const onWheel = (e: WheelEvent) => {
-      if (wheelZoom(editor, e)) e.preventDefault();
+    let pageAt = Number.NEGATIVE_INFINITY;
+    const onAnyWheel = (e: WheelEvent) => {
+      if (!(e.target instanceof Node && el.contains(e.target))) pageAt = performance.now();
     };
+    const onWheel = (e: WheelEvent) => {
+      const now = performance.now();
+      if (continuesPageScroll(now, pageAt)) pageAt = now;
+      else if (wheelZoom(editor, e)) e.preventDefault();
+    };
+    window.addEventListener("wheel", onAnyWheel, { capture: true, passive: true });
     el.addEventListener("wheel", onWheel, { passive: false });
-    return () => el.removeEventListener("wheel", onWheel);
+    return () => {
+      window.removeEventListener("wheel", onAnyWheel, { capture: true });
+      el.removeEventListener("wheel", onWheel);
+    };
   }, [editor, ref]);
 }
