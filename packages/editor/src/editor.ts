@@ -10,6 +10,7 @@
 
 import { nextFreeId } from "./doc/ids";
 import { type ActionEntry, withoutAction } from "./doc/removeAction";
+import { shown } from "./editorSession";
 import { EditorTime } from "./editorTime";
 import type { Action, SceneFile, Vec2 } from "./engineTypes";
 import type { TimelineClient } from "./remote/client";
@@ -109,10 +110,14 @@ export class Editor extends EditorTime {
    * Removes `actions[index]` of the scene (an Event-log entry's actionIndex) as one undo step, the
    * current time and the history range kept. Refused when that index no longer holds the entry's
    * action (the scene changed since the log was read), and by the engine when a later action needs
-   * it (its message says which one).
+   * it (its message says which one). Removed, it says which action went and that Undo brings it back.
    */
-  removeAction(index: number, entry: ActionEntry): Promise<string | null> {
-    return this.rewrite((doc) => withoutAction(doc, index, entry));
+  async removeAction(index: number, entry: ActionEntry): Promise<string | null> {
+    const err = await this.rewrite((doc) => withoutAction(doc, index, entry));
+    if (err !== null) return err;
+    const what = entry.id === null ? entry.type : `${entry.type} of ${JSON.stringify(entry.id)}`;
+    this.info(`Removed ${what} at t = ${shown(entry.time)} s from the scene (Undo brings it back).`);
+    return null;
   }
 
   clear(): Promise<string | null> {

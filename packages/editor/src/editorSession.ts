@@ -3,21 +3,22 @@
  * TimelineClient (the scene lives in the worker's Timeline), the UI store (time, speed, selection...)
  * and the undo history (whole scenes; only edits are recorded: a drag ends in one action, scrubbing,
  * speed and selection are never recorded). It loads scenes, applies edits as undo steps, undoes and
- * redoes them, computes ahead after each (Calculation settings) and restarts a host that stopped
- * answering. Methods that can fail resolve to the engine's message (null on success) and show it in
- * the UI. Changes of the scene (loads, edits, undo, redo) run strictly one after another: an undo
- * asked while an edit is still being applied waits for it, then undoes it. An edit, rewrite or rename
- * refused because a later action would become invalid (the engine's path `actions[i]`) also says
- * which action that is (doc/actionRefs.ts).
+ * redoes them (editorUndo.ts), computes ahead after each (Calculation settings) and restarts a host
+ * that stopped answering. Methods that can fail resolve to the engine's message (null on success)
+ * and show it in the UI. Changes of the scene (loads, edits, undo, redo) run strictly one after
+ * another; each undoable change gets a ticket when asked (doc/undoIntents.ts), so an Undo asked
+ * while it is still queued or checked is bound to it. An edit, rewrite or rename refused because a
+ * later action would become invalid (the engine's path `actions[i]`) also says which action that
+ * is (doc/actionRefs.ts).
  */
 
 import { explainRefusal } from "./doc/actionRefs";
-import { summarizeEdit } from "./doc/editSummary";
-import { EMPTY_HISTORY, type History, record, redo, undo } from "./doc/history";
+import { EMPTY_HISTORY, type History, record } from "./doc/history";
 import { type ObjectKind, renameObject } from "./doc/rename";
+import { changeAsked, type Intents, isUndone, NO_INTENTS, type Ticket } from "./doc/undoIntents";
 import type { Action, SceneFile, Until } from "./engineTypes";
 import type { TimelineClient } from "./remote/client";
-import type { Port } from "./remote/protocol";
+import { type Port, UNDONE_DURING_CHECK } from "./remote/protocol";
 import { createStore, type Store } from "./store/createStore";
 import type { UiStore } from "./store/uiStore";
 
@@ -26,6 +27,12 @@ export const shown = (t: number): number => Number(t.toPrecision(6));
 
 export class EditorSession {
   readonly history: Store<History> = createStore<History>(EMPTY_HISTORY);
+  /** Undo and Redo as the user asked them, over `history`, while changes are queued (undoIntents.ts). */
+  readonly intents: Store<Intents> = createStore<Intents>(NO_INTENTS);
+  /** Scene changes queued or running (intents are cleared when none is left). */
+  private queued = 0;
+  /** The take-back asked for a running change an Undo is bound to (client.takeBack). */
+  private readonly takeBacks = new WeakMap<Ticket, Promise<SceneFile | null>>();
   /** Makes a fresh host (a new Web Worker) for restartEngine; null where none can be made. */
   portFactory: (() => Port) | null = null;
   /** The tail of the queue of scene changes (see serial). */
@@ -35,7 +42,7 @@ export class EditorSession {
    * actions it is still checking; its doc already shows the change): what a restarted engine loads,
    * since the change is answered "engine restarted" and never recorded.
    */
-  private unconfirmed: SceneFile | null = null;
+  protected unconfirmed: SceneFile | null = null;
 
   constructor(
     readonly client: TimelineClient,
@@ -65,9 +72,54 @@ export class EditorSession {
    * the computing ahead that follows it is not waited for.
    */
   protected serial<T>(change: () => Promise<T>): Promise<T> {
-    const run = this.changes.then(change);
+    this.queued++;
+    const run = this.changes.then(change).finally(() => {
+      // Nothing queued: the history recorded is the history the user asked for.
+      if (--this.queued === 0) this.intents.setState(NO_INTENTS);
+    });
     this.changes = run.catch(() => undefined);
     return run;
+  }
+
+  /**
+   * `change` (an undoable change: it resolves to null or the message, after recording its undo
+   * step) queued with a ticket taken now, which says what became of it (undoIntents.ts).
+   */
+  private ticketed(change: (ticket: Ticket) => Promise<string | null>): Promise<string | null> {
+    const ticket: Ticket = { fate: "queued" };
+    this.intents.setState(changeAsked(this.intents.getState(), ticket));
+    return this.serial(async () => {
+      ticket.fate = "running";
+      try {
+        const err = await change(ticket);
+        if (ticket.fate === "running") ticket.fate = err === null ? "done" : "refused";
+        return err;
+      } finally {
+        this.takeBacks.delete(ticket);
+      }
+    });
+  }
+
+  /**
+   * Asks the host to take back the running change of `ticket` if an Undo is bound to it and its
+   * later actions are being checked (an Undo during the check: the change goes, nothing else).
+   */
+  protected takeBackIfUndone(ticket: Ticket): void {
+    if (ticket.fate !== "running" || this.takeBacks.has(ticket)) return;
+    if (!isUndone(this.intents.getState(), ticket)) return;
+    this.takeBacks.set(
+      ticket,
+      this.client.takeBack().catch(() => null),
+    );
+  }
+
+  /** After the change of `ticket` was refused: whether an Undo took it back (its fate is then set). */
+  private async tookBack(ticket: Ticket): Promise<boolean> {
+    const scene = await (this.takeBacks.get(ticket) ?? null);
+    if (scene === null) return false;
+    ticket.fate = "takenBack";
+    ticket.scene = scene;
+    return true;
   }
 
   protected fail(e: unknown): string {
@@ -80,7 +132,7 @@ export class EditorSession {
    * fail, the message saying which action the engine's `actions[i]` is; `actions` is the list its
    * index refers to (the scene before an edit, the scene given to a load).
    */
-  private failNaming(e: unknown, actions: readonly Action[]): string {
+  protected failNaming(e: unknown, actions: readonly Action[]): string {
     const text = e instanceof Error ? e.message : String(e);
     const path = (e as { path?: unknown } | null)?.path;
     return this.fail(explainRefusal(text, typeof path === "string" ? path : null, actions));
@@ -123,13 +175,13 @@ export class EditorSession {
    * current time, and the Calculation panel's seconds past it. The host also brings back the
    * history the scene had before the load (protocol.ts, `load`'s keepTo).
    */
-  private keepTo(): number {
+  protected keepTo(): number {
     const c = this.ui.getState().calc;
     return this.now() + (c.useTime ? c.seconds : 0);
   }
 
   /** After a reload at the current time: computes ahead when the host had nothing to bring back. */
-  private afterReload(): Promise<void> {
+  protected afterReload(): Promise<void> {
     const info = this.client.getSnapshot();
     return info.computing === null && info.horizon === 0 ? this.computeAhead() : Promise.resolve();
   }
@@ -143,7 +195,11 @@ export class EditorSession {
     scene: SceneFile,
     options: { undoable?: boolean; fit?: boolean; keepTime?: boolean } = {},
   ): Promise<string | null> {
-    return this.afterLoad(await this.serial(() => this.loadNow(scene, options)), options);
+    const loaded =
+      options.undoable === false
+        ? await this.serial(() => this.loadNow(scene, options))
+        : await this.ticketed((ticket) => this.loadNow(scene, options, false, ticket));
+    return this.afterLoad(loaded, options);
   }
 
   /**
@@ -155,14 +211,18 @@ export class EditorSession {
     scene: SceneFile,
     options: { undoable?: boolean; fit?: boolean; keepTime?: boolean },
     naming = false,
+    ticket: Ticket | null = null,
   ): Promise<string | null> {
     const before = this.doc;
     try {
       // A rewrite of the current scene is checked up to where its history reached before the
       // reply (a removed action could leave a later one invalid); until then it is unconfirmed.
       if (naming) this.unconfirmed = before;
-      await this.client.load(scene, options.keepTime ? this.keepTo() : undefined, naming);
+      const loaded = this.client.load(scene, options.keepTime ? this.keepTo() : undefined, naming);
+      if (ticket !== null) this.takeBackIfUndone(ticket);
+      await loaded;
     } catch (e) {
+      if (ticket !== null && (await this.tookBack(ticket))) return UNDONE_DURING_CHECK;
       // The engine names actions by their index in the list it was given.
       return naming ? this.failNaming(e, scene.actions) : this.fail(e);
     } finally {
@@ -209,14 +269,18 @@ export class EditorSession {
 
   /** Applies edits as one undo step; on error nothing changes and the message is returned. */
   async edit(actions: Action[]): Promise<string | null> {
-    const err = await this.serial(async () => {
+    const err = await this.ticketed(async (ticket) => {
       const before = this.doc;
       const behind = this.notComputedYet(actions);
       if (behind !== null) return this.fail(behind);
       try {
         this.unconfirmed = before;
-        await this.client.apply(actions);
+        const applied = this.client.apply(actions);
+        this.takeBackIfUndone(ticket);
+        await applied;
       } catch (e) {
+        // Taken back by an Undo during its check: that Undo says so.
+        if (await this.tookBack(ticket)) return UNDONE_DURING_CHECK;
         // The engine names a later action by its index in the list before this edit (Timeline.apply);
         // with several actions, the later ones meet a list holding the earlier ones.
         return actions.length === 1 ? this.failNaming(e, before.actions) : this.fail(e);
@@ -239,14 +303,14 @@ export class EditorSession {
    */
   async rewrite(scene: SceneFile | ((doc: SceneFile) => SceneFile)): Promise<string | null> {
     const options = { fit: false, keepTime: true };
-    const loaded = await this.serial(async () => {
+    const loaded = await this.ticketed(async (ticket) => {
       let next: SceneFile;
       try {
         next = typeof scene === "function" ? scene(this.doc) : scene;
       } catch (e) {
         return this.fail(e);
       }
-      return this.loadNow(next, options, true);
+      return this.loadNow(next, options, true, ticket);
     });
     return this.afterLoad(loaded, options);
   }
@@ -254,54 +318,17 @@ export class EditorSession {
   /** Renames a body, line or point in the whole action list (one undo step). */
   async rename(kind: ObjectKind, from: string, to: string): Promise<string | null> {
     const options = { fit: false, keepTime: true };
-    const loaded = await this.serial(async () => {
+    const loaded = await this.ticketed(async (ticket) => {
       let scene: SceneFile;
       try {
         scene = renameObject(this.doc, kind, from, to);
       } catch (e) {
         return this.fail(e);
       }
-      return this.loadNow(scene, options, true);
+      return this.loadNow(scene, options, true, ticket);
     });
     if (loaded === null) this.ui.setState({ selection: { kind, id: to } });
     return this.afterLoad(loaded, options);
-  }
-
-  /** Undoes the last edit and says which it was (e.g. "Undone: giveVelocity of "a" at t = 4 s."). */
-  async undo(): Promise<void> {
-    const loaded = await this.serial(() => {
-      const current = this.doc;
-      const u = undo(this.history.getState(), current);
-      return u
-        ? this.restore(u.scene, u.history, `Undone: ${summarizeEdit(u.scene, current)}.`)
-        : Promise.resolve(false);
-    });
-    if (loaded) await this.afterReload();
-  }
-
-  /** Redoes the last undone edit and says which it was. */
-  async redo(): Promise<void> {
-    const loaded = await this.serial(() => {
-      const current = this.doc;
-      const r = redo(this.history.getState(), current);
-      return r
-        ? this.restore(r.scene, r.history, `Redone: ${summarizeEdit(current, r.scene)}.`)
-        : Promise.resolve(false);
-    });
-    if (loaded) await this.afterReload();
-  }
-
-  /** The queued part of undo and redo: whether the scene was loaded (then `said` is shown). */
-  private async restore(scene: SceneFile, history: History, said: string): Promise<boolean> {
-    try {
-      await this.client.load(scene, this.keepTo());
-    } catch (e) {
-      this.fail(e);
-      return false;
-    }
-    this.history.setState(history);
-    this.info(said);
-    return true;
   }
 
   /**

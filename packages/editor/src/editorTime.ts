@@ -1,15 +1,16 @@
 /**
- * EditorTime: the time controls of an Editor (editor.ts), over its EditorSession: the current time
+ * EditorTime: the time controls of an Editor (editor.ts), over its EditorSession and EditorUndo: the current time
  * (kept within [0, horizon]), going to a typed time (computing up to it first when it lies past the
  * horizon), stepping from event to event (computing ahead to the next event past the horizon), play
  * and pause (saying why playback cannot start) and the playback speed. None of them is an edit:
  * nothing here is recorded in the undo history.
  */
 
-import { EditorSession, shown } from "./editorSession";
+import { shown } from "./editorSession";
+import { EditorUndo } from "./editorUndo";
 import { canExtend } from "./playback";
 
-export class EditorTime extends EditorSession {
+export class EditorTime extends EditorUndo {
   /** The tail of the chain of event steps (see stepEvent). */
   private steps: Promise<void> = Promise.resolve();
   /** How many times the user cancelled a computation (Cancel): tells a cancelled one from one done. */

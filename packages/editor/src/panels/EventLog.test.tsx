@@ -4,7 +4,7 @@
 // scene's events for the whole of a long computation: every report discarded the pending page).
 import { newtonsCradle } from "@chapgame/engine";
 import { act, cleanup, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
-import { afterEach, describe, expect, it } from "vitest";
+import { afterEach, describe, expect, it, vi } from "vitest";
 import { EditorContext } from "../EditorContext";
 import type { Editor } from "../editor";
 import type { LogEvent } from "../engineTypes";
@@ -12,6 +12,7 @@ import type { RequestMessage } from "../remote/protocol";
 import { settled, testEditor } from "../testing/harness";
 import { sceneOf } from "../testing/scenes";
 import { EventLog, highlightOf, kindLabel, selectionOf } from "./EventLog";
+import { CONFIRM_DELAY_MS } from "./removeConfirm";
 
 afterEach(cleanup);
 
@@ -130,10 +131,16 @@ describe("EventLog", () => {
     // Enter on the button is the button's, not the row's (the row jumps to its time on Enter).
     fireEvent.keyDown(remove, { key: "Enter" });
     expect(h.editor.ui.getState().t).toBe(5);
+    // Two presses (RemoveActionButton): the first arms it, the second, not too soon, removes.
+    let now = 1000;
+    vi.spyOn(performance, "now").mockImplementation(() => now);
+    fireEvent.click(remove);
+    now += CONFIRM_DELAY_MS;
     await act(async () => {
       fireEvent.click(remove);
       await settled(h.client);
     });
+    vi.restoreAllMocks();
     expect(h.editor.doc.actions.map((a) => [a.time, a.type, "id" in a ? a.id : null])).toEqual([
       [0, "addBody", "a"],
       [0, "addBody", "b"],

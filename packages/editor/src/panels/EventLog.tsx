@@ -2,7 +2,8 @@
  * The Event log: the events around the current time (time, kind, participants; an action entry says
  * what the action did). Clicking an entry
  * jumps there, highlights its participants and selects one (selectionOf); a body filter keeps only
- * that body's events. An action entry's ✕ removes that action from the scene (RemoveActionButton).
+ * that body's events. An action entry's ✕ removes that action from the scene once confirmed by a
+ * second press (RemoveActionButton).
  * Only the rows in view are rendered (useRowWindow); the view follows the current time (useFollowTime).
  */
 import { useRef } from "react";

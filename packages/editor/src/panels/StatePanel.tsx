@@ -1,18 +1,29 @@
 /**
  * State: Copy / Paste the scene as JSON (format v1; a broken paste shows the validation message and
  * keeps the current scene), Save / Load a file (doc/openScene.ts, as a dropped file), Clear, a
- * shareable link (copied, the address bar left as it is), Undo / Redo.
+ * shareable link (copied, the address bar left as it is), Undo / Redo (editorUndo.ts).
  */
 import { useRef, useState } from "react";
 import { openSceneFile, openSceneText } from "../doc/openScene";
 import { shareLinkProblem, shareUrl } from "../doc/persistence";
 import { sceneText } from "../doc/sceneIo";
+import { canRedo as redoable, canUndo as undoable } from "../doc/undoIntents";
 import { useEditor, useHistory } from "../EditorContext";
+import { useStore } from "../store/createStore";
 
 export function StatePanel() {
   const editor = useEditor();
-  const canUndo = useHistory((h) => h.past.length > 0);
-  const canRedo = useHistory((h) => h.future.length > 0);
+  // Undo is offered as soon as an edit is asked (also while its later actions are being checked:
+  // Undo then takes it back), Redo for what Undo took (doc/undoIntents.ts).
+  const intents = useStore(editor.intents, (s) => s);
+  const canUndo = undoable(
+    intents,
+    useHistory((h) => h.past.length),
+  );
+  const canRedo = redoable(
+    intents,
+    useHistory((h) => h.future.length),
+  );
   const [text, setText] = useState("");
   const fileRef = useRef<HTMLInputElement>(null);
 

@@ -146,6 +146,13 @@ export class TimelineClient {
     return this.request({ op: "cancel" });
   }
   /**
+   * Takes back the change whose later actions are being checked (an Undo during the check): the
+   * scene that held it, or null when no change was being checked (protocol.ts `takeBack`).
+   */
+  takeBack(): Promise<SceneFile | null> {
+    return this.request({ op: "takeBack" });
+  }
+  /**
    * The frame at t, with motion-law intervals reaching up to `window` seconds around t (protocol.ts).
    * Only this client may ask for frames: the host leaves out ids it already sent.
    */

@@ -17,6 +17,7 @@ import {
   type RequestMessage,
   restoreTarget,
   type TimelineInfo,
+  UNDONE_DURING_CHECK,
 } from "./protocol";
 import { EXACT_MAX_BODIES, EXACT_MAX_EVENTS, exactSeries, SeriesRecorder } from "./series";
 import type { TimelineFactory, TimelineLike } from "./timelineLike";
@@ -160,6 +161,14 @@ export class TimelineHost {
         this.job = null;
         this.changed(false);
         return null;
+      case "takeBack": {
+        // An Undo pressed during the check: the change goes, nothing else (no pending change: the
+        // Undo will undo what was answered, and the computation running is left alone).
+        if (!this.pending) return null;
+        const scene = this.tl.toScene();
+        this.takeBack(UNDONE_DURING_CHECK, null);
+        return scene;
+      }
       case "frame": {
         const h = this.tl.horizon;
         const t = Math.min(Math.max(r.t, 0), h);

@@ -3,7 +3,7 @@ import { describe, expect, it } from "vitest";
 import type { Action, SceneFile, Until } from "../engineTypes";
 import { boxScene } from "../testing/scenes";
 import { TimelineHost } from "./host";
-import type { HostMessage, TimelineInfo } from "./protocol";
+import { type HostMessage, type TimelineInfo, UNDONE_DURING_CHECK } from "./protocol";
 import type { TimelineLike } from "./timelineLike";
 
 /**
@@ -141,5 +141,39 @@ describe("TimelineHost: an edit in the past before later actions", () => {
     h.run();
     expect(h.infos().at(-1)!).toMatchObject({ eventCount: before, horizon: 40 });
     expect(h.lastDoc()).toEqual(doc);
+  });
+
+  it("takeBack (an Undo) during the check takes the edit back, answers with the scene that held it", () => {
+    const h = slowHost();
+    const before = h.infos().at(-1)!.eventCount;
+    const doc = h.lastDoc()!;
+    const edit: Action = { time: 3, type: "giveVelocity", id: "a", v: [1, 1] };
+    h.host.handle({ id: 2, op: "apply", actions: [edit] });
+    h.host.handle({ id: 3, op: "takeBack" });
+    expect(h.reply(2)).toEqual({
+      type: "reply",
+      id: 2,
+      ok: false,
+      error: { message: UNDONE_DURING_CHECK, path: null },
+    });
+    const held = (h.reply(3) as { value: SceneFile }).value;
+    expect(held.actions).toEqual([...doc.actions.slice(0, 8), edit, ...doc.actions.slice(8)]);
+    // the edit's reply comes before takeBack's (the editor reads it once the edit is answered)
+    expect(h.sent.findIndex((m) => m.type === "reply" && m.id === 2)).toBeLessThan(
+      h.sent.findIndex((m) => m.type === "reply" && m.id === 3),
+    );
+    h.run();
+    expect(h.infos().at(-1)!).toMatchObject({ eventCount: before, horizon: 40 });
+    expect(h.lastDoc()).toEqual(doc);
+  });
+
+  it("takeBack with no change being checked does nothing: the computation running goes on", () => {
+    const h = slowHost();
+    h.host.handle({ id: 2, op: "compute", until: { time: 10 } });
+    h.host.handle({ id: 3, op: "takeBack" });
+    expect(h.reply(3)).toMatchObject({ ok: true, value: null });
+    expect(h.infos().at(-1)!.computing).toMatchObject({ targetTime: 50 });
+    h.run();
+    expect(h.infos().at(-1)!).toMatchObject({ horizon: 50, computing: null });
   });
 });

@@ -108,6 +108,13 @@ export type Request =
   /** `restore`: the computation brings back history the user had (see ComputeStatus.restore). */
   | { op: "compute"; until: Until | null; restore?: boolean }
   | { op: "cancel" }
+  /**
+   * Undo of the change whose later actions are being checked (an `apply` or a checked `load` not
+   * answered yet): takes it back as Cancel does (its reply: refused, `UNDONE_DURING_CHECK`) and
+   * answers with the scene that held it; with no change being checked it does nothing (answers
+   * null) and, unlike Cancel, leaves any computation running.
+   */
+  | { op: "takeBack" }
   /** The frame at t; `window` > 0 asks for motion-law intervals reaching up to window seconds around t. */
   | { op: "frame"; t: number; window: number }
   | { op: "nextEvent"; t: number }
@@ -118,6 +125,9 @@ export type Request =
   | { op: "series"; n: number };
 
 export type RequestMessage = Request & { id: number };
+
+/** The refusal a change taken back by `takeBack` (an Undo during its check) is answered with. */
+export const UNDONE_DURING_CHECK = "Undone while the actions after it were being checked.";
 
 /**
  * A log entry as an event page carries it: an action entry also says which action it is, by its

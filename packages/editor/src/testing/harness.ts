@@ -4,21 +4,39 @@
  */
 import { newtonsCradle, Timeline } from "@chapgame/engine";
 import { Editor } from "../editor";
+import type { SceneFile, Until } from "../engineTypes";
 import { TimelineClient } from "../remote/client";
 import { TimelineHost } from "../remote/host";
 import { portPair } from "../remote/localPort";
 import type { Port, RequestMessage } from "../remote/protocol";
+import type { TimelineLike } from "../remote/timelineLike";
 import { createUiStore } from "../store/uiStore";
 
+/**
+ * Options of a test host. `slow`: each slice computes at most one event and each reading of the
+ * host's clock takes 3 ms, so a round of slices (ROUND_MS = 8) computes one event: the check of an edit
+ * in the past lasts many rounds (requests sent meanwhile meet it).
+ */
+export interface HostOptions {
+  slow?: boolean;
+}
+
 /** A host in-process behind a fresh port pair; `host.handle` may be replaced to simulate a hang. */
-export function hostPort(): { port: Port; host: TimelineHost } {
+export function hostPort(options: HostOptions = {}): { port: Port; host: TimelineHost } {
   const [main, worker] = portPair();
+  let clock = 0;
+  const timeline = (scene: SceneFile): TimelineLike => {
+    const tl = Timeline.fromScene(scene, { compute: false });
+    if (!options.slow) return tl;
+    const slice = tl.prolongSlice.bind(tl);
+    return Object.assign(tl, { prolongSlice: (u: Until, _budget: number) => slice(u, 1) });
+  };
   const host = new TimelineHost(
-    (scene) => Timeline.fromScene(scene, { compute: false }),
+    timeline,
     {
       post: (m) => worker.postMessage(m),
       schedule: (fn) => setTimeout(fn, 0),
-      now: () => performance.now(),
+      now: options.slow ? () => (clock += 3) : () => performance.now(),
     },
     { format: "chapgame", version: 1, g: 9.81, gravity: [0, 0], actions: [] },
   );
@@ -26,11 +44,15 @@ export function hostPort(): { port: Port; host: TimelineHost } {
   return { port: main, host };
 }
 
-export function testEditor(): { editor: Editor; client: TimelineClient; host: TimelineHost } {
-  const { port, host } = hostPort();
+export function testEditor(options: HostOptions = {}): {
+  editor: Editor;
+  client: TimelineClient;
+  host: TimelineHost;
+} {
+  const { port, host } = hostPort(options);
   const client = new TimelineClient(port);
   const editor = new Editor(client, createUiStore());
-  editor.portFactory = () => hostPort().port;
+  editor.portFactory = () => hostPort(options).port;
   return { editor, client, host };
 }
 

@@ -1,0 +1,101 @@
+/**
+ * EditorUndo: Undo and Redo of an Editor (editor.ts), over its EditorSession. Undo undoes the last
+ * change the user had asked for when they pressed it, and Redo redoes the last change Undo took
+ * (doc/undoIntents.ts): an Undo pressed while that change is still queued or being checked is bound
+ * to it. During the check of its later actions the change is taken back at once (as Cancel does)
+ * and nothing else is undone; a change the check refuses is not there to undo, so an Undo bound to
+ * it undoes nothing (it once undid the edit before it). A change taken back so goes to Redo, which
+ * brings it back checked again (a later action may refuse it then). Each says what it did
+ * ("Undone: giveVelocity of "a" at t = 4 s.").
+ */
+
+import { summarizeEdit } from "./doc/editSummary";
+import { type History, redo, undo } from "./doc/history";
+import { redoAsked, redoTurn, type Ticket, undoAsked, undoTurn } from "./doc/undoIntents";
+import { EditorSession } from "./editorSession";
+import type { SceneFile } from "./engineTypes";
+
+export class EditorUndo extends EditorSession {
+  /** Scenes in Redo whose later actions were never checked (changes an Undo took back during it). */
+  private readonly unchecked = new WeakSet<SceneFile>();
+
+  /** Undoes the last change asked for and says which it was. */
+  async undo(): Promise<void> {
+    const { intents, ticket } = undoAsked(this.intents.getState());
+    this.intents.setState(intents);
+    // The change is being applied or checked: take it back now rather than wait for the check.
+    this.takeBackIfUndone(ticket);
+    const loaded = await this.serial(() => this.undoNow(ticket));
+    if (loaded) await this.afterReload();
+  }
+
+  /** Redoes the last change Undo took and says which it was. */
+  async redo(): Promise<void> {
+    const { intents, ticket } = redoAsked(this.intents.getState());
+    this.intents.setState(intents);
+    const loaded = await this.serial(() => this.redoNow(ticket));
+    if (loaded) await this.afterReload();
+  }
+
+  /** The queued part of undo: whether a scene was loaded. */
+  private async undoNow(ticket: Ticket): Promise<boolean> {
+    const current = this.doc;
+    const h = this.history.getState();
+    const turn = undoTurn(ticket);
+    if (turn === "nothing") return false; // refused: the message said why, and nothing is undone
+    if (turn === "toFuture") {
+      // The host already took it back (and brings the old history back): only Redo learns of it.
+      const scene = ticket.scene as SceneFile;
+      this.unchecked.add(scene);
+      this.history.setState({ past: h.past, future: [scene, ...h.future] });
+      ticket.fate = "done";
+      this.info(
+        `Undone: ${summarizeEdit(current, scene)} (taken back while the actions after it were being checked).`,
+      );
+      return false;
+    }
+    const u = undo(h, current);
+    const loaded =
+      u !== null && (await this.restore(u.scene, u.history, `Undone: ${summarizeEdit(u.scene, current)}.`));
+    if (!loaded) ticket.fate = "refused"; // nothing undone: a Redo bound to it has nothing to redo
+    return loaded;
+  }
+
+  /** The queued part of redo: whether a scene was loaded. */
+  private async redoNow(ticket: Ticket | null): Promise<boolean> {
+    if (ticket === null || redoTurn(ticket) === "nothing") return false;
+    const current = this.doc;
+    const r = redo(this.history.getState(), current);
+    const loaded =
+      r !== null && (await this.restore(r.scene, r.history, `Redone: ${summarizeEdit(current, r.scene)}.`));
+    if (!loaded) ticket.fate = "refused"; // nothing redone: an Undo bound to it has nothing to undo
+    return loaded;
+  }
+
+  /**
+   * The queued part of undo and redo: whether the scene was loaded (then `said` is shown). A scene
+   * never checked is checked as a rewrite is; refused, it leaves Redo (it cannot be brought back).
+   */
+  private async restore(scene: SceneFile, history: History, said: string): Promise<boolean> {
+    const check = this.unchecked.has(scene);
+    try {
+      if (check) this.unconfirmed = this.doc; // what a restart loads meanwhile
+      await this.client.load(scene, this.keepTo(), check);
+    } catch (e) {
+      if (!check) {
+        this.fail(e);
+        return false;
+      }
+      const h = this.history.getState();
+      this.history.setState({ past: h.past, future: h.future.filter((s) => s !== scene) });
+      this.failNaming(e, scene.actions);
+      return false;
+    } finally {
+      this.unconfirmed = null;
+    }
+    this.unchecked.delete(scene);
+    this.history.setState(history);
+    this.info(said);
+    return true;
+  }
+}

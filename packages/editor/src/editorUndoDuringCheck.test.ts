@@ -1,0 +1,185 @@
+// Undo pressed while an edit in the past is being checked (the host answers it only once the
+// actions after it are checked: host.ts PendingEdit). The Undo is the user's answer to that edit:
+// it takes that edit back and nothing else, whether the check would have passed or refused it
+// (it once undid the edit before as well when the checked edit was refused), and Redo brings back
+// only what Undo took.
+import { describe, expect, it } from "vitest";
+import type { Action, SceneFile } from "./engineTypes";
+import { settled, testEditor } from "./testing/harness";
+import { boxScene } from "./testing/scenes";
+
+const addE: Action = { time: 30, type: "addBody", id: "e", x: 50, y: 50, r: 1, m: 1 };
+const box: SceneFile = boxScene([addE]);
+/** The box with six discs near its floor (a to d, f, g): a check from t = 10 to 30 lasts a dozen events. */
+const busyBox: SceneFile = boxScene(
+  [addE],
+  [..."abcdfg"].map((id, k): [string, number, number, [number, number]] => [
+    id,
+    5 + 7 * k,
+    5,
+    [6 - k, 2 + k],
+  ]),
+);
+/** Refused once checked: e, added at t = 30, would overlap z. */
+const blocker: Action = { time: 10, type: "addBody", id: "z", x: 50, y: 50.5, r: 1, m: 1 };
+const earlier: Action = { time: 10, type: "giveVelocity", id: "b", v: [0, 1] };
+const valid: Action = { time: 5, type: "giveVelocity", id: "a", v: [1, 1] };
+
+/** The box with its history to t = 40 and one accepted edit (b's velocity at t = 10). */
+async function boxWithOneEdit(scene = box) {
+  const h = testEditor({ slow: true }); // a check lasts many rounds of the host
+  await h.editor.loadScene(scene, { undoable: false });
+  await settled(h.client);
+  await h.editor.goTo(40);
+  await settled(h.client);
+  h.editor.ui.setState({ t: 10 });
+  expect(await h.editor.edit([earlier])).toBeNull();
+  await settled(h.client);
+  return h;
+}
+
+/** How many actions of the current scene are `a` (same time, type and id). */
+function count(h: ReturnType<typeof testEditor>, a: Action): number {
+  const doc = h.client.getSnapshot().doc!;
+  const id = (x: Action) => ("id" in x ? x.id : null);
+  return doc.actions.filter((x) => x.time === a.time && x.type === a.type && id(x) === id(a)).length;
+}
+
+/**
+ * Resolves once the host shows a changed scene (the edit's apply was handled and its check runs);
+ * call before the edit.
+ */
+function checking(h: ReturnType<typeof testEditor>): Promise<void> {
+  const rev = h.client.getSnapshot().docRevision;
+  return new Promise((resolve) => {
+    const stop = h.client.subscribe(() => {
+      if (h.client.getSnapshot().docRevision === rev) return;
+      stop();
+      resolve();
+    });
+  });
+}
+
+describe("Undo while an edit's later actions are being checked", () => {
+  it("takes back only that edit when the check would have refused it: the edit before stays", async () => {
+    const h = await boxWithOneEdit();
+    const seen = checking(h);
+    const edit = h.editor.edit([blocker]);
+    await seen;
+    const undone = h.editor.undo();
+    await edit;
+    await undone;
+    await settled(h.client);
+    expect({ blocker: count(h, blocker), earlier: count(h, earlier) }).toEqual({ blocker: 0, earlier: 1 });
+    expect(h.editor.history.getState().past).toHaveLength(1); // b's edit is still undoable
+  });
+
+  it("takes back only that edit when the check would have passed it, says so, and Redo brings it back once", async () => {
+    const h = await boxWithOneEdit();
+    h.editor.ui.setState({ t: 5 });
+    const seen = checking(h);
+    const edit = h.editor.edit([valid]);
+    await seen;
+    const undone = h.editor.undo();
+    expect(await edit).not.toBeNull(); // not applied
+    await undone;
+    await settled(h.client);
+    expect({ valid: count(h, valid), earlier: count(h, earlier) }).toEqual({ valid: 0, earlier: 1 });
+    expect(h.editor.ui.getState().message).toEqual({
+      text: 'Undone: giveVelocity of "a" at t = 5 s (taken back while the actions after it were being checked).',
+      tone: "info",
+    });
+    await h.editor.redo();
+    await settled(h.client);
+    expect({ valid: count(h, valid), earlier: count(h, earlier) }).toEqual({ valid: 1, earlier: 1 });
+    expect(h.editor.history.getState()).toMatchObject({ past: { length: 2 }, future: [] });
+    await h.editor.undo();
+    await h.editor.undo();
+    await settled(h.client);
+    expect({ valid: count(h, valid), earlier: count(h, earlier) }).toEqual({ valid: 0, earlier: 0 });
+  });
+
+  it("Undo then Redo during the check: the edit is there once, the edit before stays", async () => {
+    const h = await boxWithOneEdit();
+    h.editor.ui.setState({ t: 5 });
+    const seen = checking(h);
+    const edit = h.editor.edit([valid]);
+    await seen;
+    const undone = h.editor.undo();
+    const redone = h.editor.redo();
+    await Promise.all([edit, undone, redone]);
+    await settled(h.client);
+    expect({ valid: count(h, valid), earlier: count(h, earlier) }).toEqual({ valid: 1, earlier: 1 });
+    expect(h.editor.history.getState()).toMatchObject({ past: { length: 2 }, future: [] });
+  });
+
+  it("Undo then Redo of a refused edit brings back nothing and undoes nothing", async () => {
+    const h = await boxWithOneEdit();
+    const seen = checking(h);
+    const edit = h.editor.edit([blocker]);
+    await seen;
+    const undone = h.editor.undo();
+    const redone = h.editor.redo();
+    await Promise.all([edit, undone, redone]);
+    await settled(h.client);
+    expect({ blocker: count(h, blocker), earlier: count(h, earlier) }).toEqual({ blocker: 0, earlier: 1 });
+    expect(h.editor.history.getState().past).toHaveLength(1);
+  });
+
+  it("Undo asked right after an edit (before the host has it) binds to that edit, not the one before", async () => {
+    const h = await boxWithOneEdit();
+    const edit = h.editor.edit([blocker]);
+    const undone = h.editor.undo();
+    await Promise.all([edit, undone]);
+    await settled(h.client);
+    expect({ blocker: count(h, blocker), earlier: count(h, earlier) }).toEqual({ blocker: 0, earlier: 1 });
+  });
+
+  it("two Undos during the check take back that edit and the one before, no more", async () => {
+    const h = await boxWithOneEdit();
+    h.editor.ui.setState({ t: 5 });
+    const seen = checking(h);
+    const edit = h.editor.edit([valid]);
+    await seen;
+    await Promise.all([edit, h.editor.undo(), h.editor.undo(), h.editor.undo()]);
+    await settled(h.client);
+    expect({ valid: count(h, valid), earlier: count(h, earlier) }).toEqual({ valid: 0, earlier: 0 });
+    expect(h.editor.history.getState()).toMatchObject({ past: [], future: { length: 2 } });
+    await h.editor.redo();
+    await h.editor.redo();
+    await settled(h.client);
+    expect({ valid: count(h, valid), earlier: count(h, earlier) }).toEqual({ valid: 1, earlier: 1 });
+  });
+
+  it("Redo of an edit Undo took back during its check checks it again: refused, it leaves Redo and nothing else moves", async () => {
+    const h = await boxWithOneEdit(busyBox);
+    const seen = checking(h);
+    const edit = h.editor.edit([blocker]);
+    await seen;
+    await Promise.all([edit, h.editor.undo()]);
+    expect(h.editor.ui.getState().message?.text).toMatch(/^Undone: addBody of "z" at t = 10 s \(taken back/);
+    expect(h.editor.history.getState().future).toHaveLength(1);
+    await h.editor.redo();
+    await settled(h.client);
+    expect(h.editor.ui.getState().message).toMatchObject({
+      tone: "error",
+      text: expect.stringMatching(/overlap/),
+    });
+    expect({ blocker: count(h, blocker), earlier: count(h, earlier) }).toEqual({ blocker: 0, earlier: 1 });
+    expect(h.editor.history.getState()).toMatchObject({ past: { length: 1 }, future: [] });
+  });
+
+  it("Undo during the check of a removal from the Event log puts the action back, and says which", async () => {
+    const h = await boxWithOneEdit();
+    const i = h.client.getSnapshot().doc!.actions.findIndex((a) => a.type === "giveVelocity");
+    const seen = checking(h);
+    const removed = h.editor.removeAction(i, { time: 10, type: "giveVelocity", id: "b" });
+    await seen;
+    await Promise.all([removed, h.editor.undo()]);
+    await settled(h.client);
+    expect(count(h, earlier)).toBe(1);
+    expect(h.editor.ui.getState().message?.text).toBe(
+      'Undone: the removal of giveVelocity of "b" at t = 10 s (taken back while the actions after it were being checked).',
+    );
+  });
+});

@@ -1,0 +1,170 @@
+// @vitest-environment jsdom
+// Removing an action from the Event log takes two presses (removeConfirm.ts): a single click, or a
+// double-click, once removed an action at once, and after a removal the rows moved up under the
+// pointer, so a double-click removed two actions (audit of session 16).
+import { act, cleanup, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
+import { afterEach, describe, expect, it, vi } from "vitest";
+import { EditorContext } from "../EditorContext";
+import { settled, testEditor } from "../testing/harness";
+import { sceneOf } from "../testing/scenes";
+import { EventLog } from "./EventLog";
+import { ARMED_MS, CONFIRM_DELAY_MS } from "./removeConfirm";
+
+afterEach(() => {
+  cleanup();
+  vi.restoreAllMocks();
+  vi.useRealTimers();
+});
+
+/** The clock the button reads (performance.now), moved by the test. */
+function clock() {
+  let now = 10_000;
+  vi.spyOn(performance, "now").mockImplementation(() => now);
+  return (ms: number) => {
+    now += ms;
+  };
+}
+
+/** Two discs, each given a velocity at t = 0.25 (two action entries at the same time); the log at t = 5. */
+async function twoVelocities() {
+  const h = testEditor();
+  await h.editor.loadScene(
+    sceneOf([
+      { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 },
+      { time: 0, type: "addBody", id: "b", x: 0, y: 10, r: 1, m: 1 },
+      { time: 0.25, type: "giveVelocity", id: "a", v: [4, 0] },
+      { time: 0.25, type: "giveVelocity", id: "b", v: [0, 4] },
+    ]),
+    { undoable: false },
+  );
+  await settled(h.client);
+  act(() => h.editor.ui.setState({ t: 5 }));
+  render(
+    <EditorContext.Provider value={h.editor}>
+      <EventLog />
+    </EditorContext.Provider>,
+  );
+  const log = screen.getByRole("table", { name: "Event log" });
+  await waitFor(() => expect(within(log).getAllByRole("button", { name: /^Remove action/ })).toHaveLength(4));
+  const velocities = () => h.editor.doc.actions.filter((a) => a.type === "giveVelocity").map((a) => a.id);
+  return { h, log, velocities };
+}
+
+const B = "Remove action giveVelocity of b at t = 0.25";
+const ARMED_B = "Confirm: remove action giveVelocity of b at t = 0.25 (press again; Escape keeps it)";
+
+describe("RemoveActionButton", () => {
+  it("a single click only arms the button; the confirm removes the action, says so, and Undo brings it back", async () => {
+    const tick = clock();
+    const { h, log, velocities } = await twoVelocities();
+    const button = within(log).getByRole("button", { name: B });
+    fireEvent.click(button);
+    await settled(h.client);
+    expect(velocities()).toEqual(["a", "b"]);
+    expect(button).toHaveProperty("textContent", "Remove?");
+    expect(button.getAttribute("aria-label")).toBe(ARMED_B);
+    expect(h.editor.ui.getState().t).toBe(5); // the press does not reach the row
+    tick(CONFIRM_DELAY_MS);
+    await act(async () => {
+      fireEvent.click(button);
+      await settled(h.client);
+    });
+    expect(velocities()).toEqual(["a"]);
+    expect(h.editor.ui.getState().message).toEqual({
+      text: 'Removed giveVelocity of "b" at t = 0.25 s from the scene (Undo brings it back).',
+      tone: "info",
+    });
+    await act(async () => {
+      await h.editor.undo();
+      await settled(h.client);
+    });
+    expect(velocities()).toEqual(["a", "b"]);
+    expect(h.editor.ui.getState().message?.text).toBe(
+      'Undone: the removal of giveVelocity of "b" at t = 0.25 s.',
+    );
+  });
+
+  it("Escape, leaving the button (pointer or focus) and the timeout disarm it", async () => {
+    const tick = clock();
+    const { h, log, velocities } = await twoVelocities();
+    const button = () => within(log).getByRole("button", { name: /giveVelocity of b/ });
+    const disarmers: [string, () => void][] = [
+      ["Escape", () => fireEvent.keyDown(button(), { key: "Escape" })],
+      ["pointer", () => fireEvent.mouseLeave(button())],
+      ["focus", () => fireEvent.blur(button())],
+    ];
+    for (const [, disarmIt] of disarmers) {
+      fireEvent.click(button());
+      expect(button().getAttribute("aria-label")).toBe(ARMED_B);
+      act(disarmIt);
+      expect(button().getAttribute("aria-label")).toBe(B);
+      tick(CONFIRM_DELAY_MS);
+      fireEvent.click(button()); // arms again: nothing removed
+      await settled(h.client);
+      expect(velocities()).toEqual(["a", "b"]);
+      act(() => fireEvent.keyDown(button(), { key: "Escape" }));
+    }
+    vi.useFakeTimers({ toFake: ["setTimeout", "clearTimeout"] });
+    fireEvent.click(button());
+    expect(button().getAttribute("aria-label")).toBe(ARMED_B);
+    act(() => vi.advanceTimersByTime(ARMED_MS));
+    expect(button().getAttribute("aria-label")).toBe(B);
+  });
+
+  it("a double-click removes nothing, and a press on the row that moved up after a removal only arms it", async () => {
+    const tick = clock();
+    const { h, log, velocities } = await twoVelocities();
+    const button = within(log).getByRole("button", { name: B });
+    await act(async () => {
+      fireEvent.click(button, { detail: 1 });
+      tick(120);
+      fireEvent.click(button, { detail: 2 });
+      fireEvent.doubleClick(button);
+      await settled(h.client);
+    });
+    expect(velocities()).toEqual(["a", "b"]);
+    expect(button.getAttribute("aria-label")).toBe(ARMED_B); // still armed: a later click confirms
+    act(() => fireEvent.keyDown(button, { key: "Escape" }));
+    // the confirm, then at once more presses where the pointer is: one action removed
+    const a = within(log).getByRole("button", { name: "Remove action giveVelocity of a at t = 0.25" });
+    const row = a.closest("tr")!;
+    const index = [...row.parentElement!.children].indexOf(row);
+    fireEvent.click(a);
+    tick(CONFIRM_DELAY_MS);
+    await act(async () => {
+      fireEvent.click(a);
+      await settled(h.client);
+    });
+    expect(velocities()).toEqual(["b"]);
+    const there = () => row.parentElement!.children[index]!;
+    await waitFor(() => expect(there().textContent).toMatch(/velocityb/), { timeout: 3000 });
+    // the row where a's entry was now shows b's: its button is at rest, a press only arms it
+    const moved = there().querySelector("button")!;
+    expect(moved.getAttribute("aria-label")).toBe(B);
+    tick(CONFIRM_DELAY_MS);
+    await act(async () => {
+      fireEvent.click(moved);
+      await settled(h.client);
+    });
+    expect(velocities()).toEqual(["b"]);
+    expect(moved.getAttribute("aria-label")).toBe(ARMED_B);
+  });
+
+  it("keyboard: the button takes the focus, and Enter on it is the button's (the row does not jump)", async () => {
+    const tick = clock();
+    const { h, log, velocities } = await twoVelocities();
+    const button = within(log).getByRole("button", { name: B });
+    button.focus();
+    expect(document.activeElement).toBe(button);
+    fireEvent.keyDown(button, { key: "Enter" }); // a button's Enter is its click (below)
+    expect(h.editor.ui.getState().t).toBe(5);
+    fireEvent.click(button);
+    expect(button.getAttribute("aria-label")).toBe(ARMED_B);
+    tick(CONFIRM_DELAY_MS);
+    await act(async () => {
+      fireEvent.click(button);
+      await settled(h.client);
+    });
+    expect(velocities()).toEqual(["a"]);
+  });
+});
