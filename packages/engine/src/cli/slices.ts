@@ -58,13 +58,16 @@ export function* computeSlices(
   progress: Progress | null,
 ): Generator<void, ProlongResult["reason"], void> {
   let total = 0;
+  let nextReport = PROGRESS_EVERY_EVENTS;
   let reported = false;
   try {
     for (;;) {
       const r = tl.prolongSlice(until, SLICE_EVENTS);
       total += r.events;
       if (r.done) return r.reason ?? "idle";
-      if (progress !== null && total % PROGRESS_EVERY_EVENTS === 0) {
+      if (progress !== null && total >= nextReport) {
+        // a slice that is not done computes its whole budget, but do not rely on it for progress
+        while (nextReport <= total) nextReport += PROGRESS_EVERY_EVENTS;
         progress.report(r.horizon, total);
         reported = true;
       }
