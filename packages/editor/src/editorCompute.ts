@@ -1,0 +1,127 @@
+/**
+ * EditorCompute: the base of EditorSession (editorSession.ts): the TimelineClient (the scene lives
+ * in the worker's Timeline) and the UI store, the messages shown in it, and computing ahead. Methods
+ * that can fail show the engine's message in the UI (fail; an edit, rewrite or rename refused
+ * because a later action would become invalid, the engine's path `actions[i]`, also says which
+ * action that is: failNaming, doc/actionRefs.ts). After each change the session computes ahead as
+ * the Calculation settings say (computeUntil, ensureAhead), a reload at the current time computes at
+ * least up to it (keepTo), and a computation the engine refused to continue (a Zeno state) is said.
+ * Edits past the computed history wait for it (notComputedYet).
+ */
+
+import { explainRefusal } from "./doc/actionRefs";
+import type { Action, SceneFile, Until } from "./engineTypes";
+import type { TimelineClient } from "./remote/client";
+import type { UiStore } from "./store/uiStore";
+
+/** A time as messages write it (6 significant digits). */
+export const shown = (t: number): number => Number(t.toPrecision(6));
+
+export class EditorCompute {
+  constructor(
+    readonly client: TimelineClient,
+    readonly ui: UiStore,
+  ) {
+    // A computation the engine refused to continue (a Zeno state): say why the horizon stops there.
+    let stopped: string | null = null;
+    client.subscribe(() => {
+      const info = client.getSnapshot();
+      if (info.stopped === stopped) return;
+      stopped = info.stopped;
+      if (stopped === null) return;
+      const h = shown(info.horizon);
+      this.ui.setState({
+        message: { text: `The computation stopped at t = ${h} s: ${stopped}`, tone: "error" },
+      });
+    });
+  }
+
+  get doc(): SceneFile {
+    return this.client.getSnapshot().doc!;
+  }
+
+  protected fail(e: unknown): string {
+    const text = e instanceof Error ? e.message : String(e);
+    this.ui.setState({ message: { text, tone: "error" } });
+    return text;
+  }
+
+  /**
+   * fail, the message saying which action the engine's `actions[i]` is; `actions` is the list its
+   * index refers to (the scene before an edit, the scene given to a load).
+   */
+  protected failNaming(e: unknown, actions: readonly Action[]): string {
+    const text = e instanceof Error ? e.message : String(e);
+    const path = (e as { path?: unknown } | null)?.path;
+    return this.fail(explainRefusal(text, typeof path === "string" ? path : null, actions));
+  }
+
+  info(text: string): void {
+    this.ui.setState({ message: { text, tone: "info" } });
+  }
+
+  /** The current time (the UI store's). */
+  protected now(): number {
+    return this.ui.getState().t;
+  }
+
+  /** What "compute ahead" means with the current Calculation settings (null: until idle). */
+  computeUntil(): Until | null {
+    const c = this.ui.getState().calc;
+    const u: Until = {};
+    if (c.useTime) u.time = c.seconds;
+    if (c.useEvents) u.events = c.events;
+    return c.useTime || c.useEvents ? u : null;
+  }
+
+  computeAhead(): Promise<void> {
+    return this.client.compute(this.computeUntil()).catch((e) => {
+      this.fail(e);
+    });
+  }
+
+  /** After an edit: computes ahead unless the horizon is already far enough past the current time. */
+  protected async ensureAhead(): Promise<void> {
+    const c = this.ui.getState().calc;
+    const h = this.client.getSnapshot().horizon;
+    if (c.useTime && !c.useEvents && h >= this.now() + c.seconds) return;
+    await this.computeAhead();
+  }
+
+  /**
+   * How far a reload at the current time (undo, redo, rename, restart) must compute at least: the
+   * current time, and the Calculation panel's seconds past it. The host also brings back the
+   * history the scene had before the load (protocol.ts, `load`'s keepTo).
+   */
+  protected keepTo(): number {
+    const c = this.ui.getState().calc;
+    return this.now() + (c.useTime ? c.seconds : 0);
+  }
+
+  /** After a reload at the current time: computes ahead when the host had nothing to bring back. */
+  protected afterReload(): Promise<void> {
+    const info = this.client.getSnapshot();
+    return info.computing === null && info.horizon === 0 ? this.computeAhead() : Promise.resolve();
+  }
+
+  cancelCompute(): void {
+    this.client.cancel().catch((e) => this.fail(e));
+  }
+
+  /**
+   * Why edits at these times must wait, or null. After an undo, a redo or a rename the history is
+   * recomputed from the start while the current time stays; until the computation reaches it, the
+   * canvas and the tables show the state at the horizon, not at the current time, and an edit would
+   * be built from those values (a velocity typed in one cell keeps the other component shown).
+   */
+  protected notComputedYet(actions: Action[]): string | null {
+    const info = this.client.getSnapshot();
+    const late = Math.max(...actions.map((a) => a.time));
+    if (!(late > info.horizon)) return null;
+    const at = shown(late);
+    const now = shown(info.horizon);
+    if (info.computing === null)
+      return `The history reaches only t = ${now} s (its computation was cancelled): go to a computed time, or type t = ${at} s to compute up to it, then edit.`;
+    return `The history is still being computed up to t = ${at} s (it reaches ${now} s): edit once it gets there.`;
+  }
+}

@@ -1,0 +1,242 @@
+/**
+ * HostCompute: the base of TimelineHost (host.ts) that owns the Timeline and computes it. Long
+ * computations run in slices of a few milliseconds (Timeline.prolongSlice), rounds of ROUND_MS, so
+ * frame, scrub and edit requests are answered between rounds and Cancel takes effect at once. Every
+ * change of the timeline posts `info` (at most every INFO_EVERY_MS while computing; the revision
+ * moves only then, so frames and info always agree). A computation the engine refuses to continue
+ * (a Zeno state) ends with the engine's message in `info.stopped`, the history computed so far
+ * kept. While a change's later actions are checked (pendingEdit.ts) its restore job runs on: a
+ * refusal takes the change back (takeBack), and once the history passes the check the change is
+ * answered and a computation asked meanwhile starts.
+ */
+import type { Until } from "../engineTypes";
+import { errorInfo } from "./errors";
+import { lastEventTime } from "./eventQueries";
+import { PendingEdits } from "./pendingEdit";
+import type { ComputeStatus, HostMessage, TimelineInfo } from "./protocol";
+import { SeriesRecorder } from "./series";
+import type { TimelineLike } from "./timelineLike";
+
+/**
+ * Wall-clock milliseconds one round of slices may take before the host yields to messages (a frame
+ * or scrub request waits at most about this long while computing).
+ */
+const ROUND_MS = 8;
+/**
+ * While computing, the host tells the client about progress at most this often (ms): each `info`
+ * re-renders the panels that show counts and the horizon on the main thread, and rounds end 100
+ * times a second. The revision moves only when info is sent, so frames and info always agree.
+ */
+const INFO_EVERY_MS = 50;
+/** Wall-clock milliseconds one prolongSlice call should take (the event budget adapts to it). */
+const SLICE_MS = 3;
+/** While computing, energy/event samples are recorded at most this often (ms of wall-clock time). */
+const RECORD_EVERY_MS = 100;
+
+interface Job extends ComputeStatus {
+  budget: number;
+}
+
+export interface HostEnv {
+  post(message: HostMessage, transfer?: Transferable[]): void;
+  /** Runs fn soon, after pending messages were handled (setTimeout 0 or a MessageChannel). */
+  schedule(fn: () => void): void;
+  now(): number;
+}
+
+export class HostCompute {
+  protected revision = 0;
+  private docRevision = 0;
+  private sentDocRevision = -1;
+  private idle = false;
+  private stopped: string | null = null;
+  protected job: Job | null = null;
+  protected readonly pending: PendingEdits;
+  private scheduled = false;
+  protected readonly series = new SeriesRecorder();
+  private lastRecord = Number.NEGATIVE_INFINITY;
+  private lastInfo = Number.NEGATIVE_INFINITY;
+
+  constructor(
+    protected readonly env: HostEnv,
+    protected tl: TimelineLike,
+  ) {
+    this.pending = new PendingEdits((message) => this.env.post(message));
+  }
+
+  /**
+   * Takes the pending change back (its later actions were refused, or their check was cancelled):
+   * the old action list (the timeline computes lazily: setActions leaves it at its last keyframe
+   * before the edit, or at 0) or the timeline before the load, then the old history recomputed in
+   * slices.
+   */
+  protected takeBack(message: string, path: string | null): void {
+    const p = this.pending.edit!;
+    this.job = null;
+    this.pending.afterCheck = undefined; // asked for the scene with the change: it is not there any more
+    if ("actions" in p.undo) this.tl.setActions(p.undo.actions);
+    else {
+      this.tl = p.undo.timeline;
+      this.series.clear();
+    }
+    this.changed(true);
+    if (this.tl.horizon < p.horizon) this.restoreTo(p.horizon);
+    // Answered last: the info that takes the change back must reach the client first (the next
+    // queued change reads the scene from it).
+    this.pending.answer({ message, path });
+  }
+
+  /** Starts a restore job up to the absolute time `end`, exactly (h + (end - h) may round below end). */
+  protected restoreTo(end: number): void {
+    this.startJob({ time: end - this.tl.horizon }, true);
+    if (this.job) this.job.targetTime = end;
+  }
+
+  protected startJob(until: Until | null, restore = false): void {
+    const h = this.tl.horizon;
+    const running = this.job;
+    // While an edit's later actions are being checked, its job runs on (PendingEdits.hold).
+    if (this.pending.hold(running, h, until, restore)) {
+      this.changed(false);
+      return;
+    }
+    // A request for less than a running restore covers (the editor's "compute ahead" after an edit)
+    // leaves it running: it would otherwise cut the recomputation of the user's history short.
+    if (
+      !restore &&
+      running?.restore &&
+      running.targetTime !== null &&
+      until !== null &&
+      until.events === undefined &&
+      until.time !== undefined &&
+      h + until.time <= running.targetTime
+    ) {
+      this.changed(false);
+      return;
+    }
+    this.job = {
+      restore,
+      events: 0,
+      targetEvents: until?.events ?? null,
+      targetTime: until?.time === undefined ? null : h + until.time,
+      startHorizon: h,
+      budget: 256,
+    };
+    this.idle = false;
+    this.stopped = null;
+    this.changed(false);
+    this.kick();
+  }
+
+  private kick(): void {
+    if (this.scheduled) return;
+    this.scheduled = true;
+    this.env.schedule(() => {
+      this.scheduled = false;
+      this.round();
+    });
+  }
+
+  /** One round of slices: computes for about ROUND_MS, reports, then yields to pending messages. */
+  private round(): void {
+    const job = this.job;
+    if (!job) return;
+    const start = this.env.now();
+    while (this.job === job && this.env.now() - start < ROUND_MS) {
+      const until: Until = {};
+      if (job.targetTime !== null) until.time = job.targetTime - this.tl.horizon;
+      if (job.targetEvents !== null) until.events = job.targetEvents - job.events;
+      if (
+        (until.time !== undefined && until.time <= 0) ||
+        (until.events !== undefined && until.events <= 0)
+      ) {
+        this.job = null;
+        break;
+      }
+      const t0 = this.env.now();
+      let res: { done: boolean; events: number };
+      const before = this.tl.horizon;
+      try {
+        res = this.tl.prolongSlice(until, job.budget);
+      } catch (e) {
+        if (this.pending.edit) {
+          // A later action the edit made invalid (or a Zeno state before the old horizon): the
+          // edit is refused, as a synchronous apply would have refused it.
+          const refusal = this.pending.refusal(e, this.tl.actions);
+          this.takeBack(refusal.message, refusal.path);
+          return;
+        }
+        // The engine refuses to go on (a Zeno state): the history up to the horizon stands.
+        this.stopped = errorInfo(e).message;
+        this.job = null;
+        break;
+      }
+      // A time target reached only up to round-off (h + (T - h) < T): one more slice gets there
+      // (T - h is then exact, so h + (T - h) = T). A slice that made no progress ends the job.
+      const short =
+        res.done &&
+        job.targetTime !== null &&
+        this.tl.horizon < job.targetTime &&
+        job.targetEvents === null &&
+        this.tl.horizon > before;
+      if (short) res = { ...res, done: false };
+      const p = this.pending.edit;
+      if (p && (res.done || this.tl.horizon >= p.checkTo)) {
+        this.changed(false);
+        const asked = this.pending.passed();
+        if (asked !== undefined) {
+          this.startJob(asked);
+          return;
+        }
+      }
+      const took = this.env.now() - t0;
+      job.events += res.events;
+      job.budget = Math.max(16, Math.min(1 << 20, Math.round(job.budget * (took > 0 ? SLICE_MS / took : 2))));
+      if (res.done) {
+        const timeLeft = job.targetTime !== null && this.tl.horizon < job.targetTime;
+        const eventsLeft = job.targetEvents !== null && job.events < job.targetEvents;
+        const unlimited = job.targetTime === null && job.targetEvents === null;
+        this.idle = unlimited || timeLeft || eventsLeft;
+        this.job = null;
+      }
+    }
+    if (!this.job || this.env.now() - this.lastInfo >= INFO_EVERY_MS) this.changed(false);
+    if (this.job) this.kick();
+  }
+
+  protected changed(docChanged: boolean): void {
+    this.revision++;
+    const now = this.env.now();
+    if (docChanged || this.job === null || now - this.lastRecord >= RECORD_EVERY_MS) {
+      this.lastRecord = now;
+      this.series.record(this.tl);
+    }
+    if (docChanged) {
+      this.docRevision++;
+      this.idle = false;
+      this.stopped = null;
+    }
+    this.lastInfo = now;
+    this.env.post({ type: "info", info: this.info() });
+  }
+
+  info(): TimelineInfo {
+    const tl = this.tl;
+    const n = tl.eventCount;
+    const sendDoc = this.sentDocRevision !== this.docRevision;
+    this.sentDocRevision = this.docRevision;
+    return {
+      revision: this.revision,
+      horizon: tl.horizon,
+      eventCount: n,
+      counts: tl.counts(),
+      lastEventTime: lastEventTime(tl),
+      idle: this.idle,
+      doc: sendDoc ? tl.toScene() : null,
+      docRevision: this.docRevision,
+      computing: this.job ? { ...this.job } : null,
+      stopped: this.stopped,
+      historyBytes: tl.historyBytes(),
+    };
+  }
+}

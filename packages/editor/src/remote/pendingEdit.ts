@@ -1,0 +1,107 @@
+/**
+ * PendingEdits: the host's (host.ts) change whose reply waits. An edit in the past is applied with
+ * `checkLater: false` and a rewrite of the scene (a `load` with `check`, a removed action) replaces
+ * the timeline; the restore job (hostCompute.ts) then checks their later actions in slices, and the
+ * request is answered (DEFERRED until then) once the history passes `checkTo` (ok) or a later
+ * action is refused (the change is taken back, and the reply carries the refusal as a synchronous
+ * apply would have, its path renamed to the action list before the edit: beforeEdit). Cancel, the
+ * `takeBack` request (an Undo during the check) and a load take the change back too. At most one
+ * change is pending: a further edit is refused until it is answered, and a computation asked
+ * meanwhile extends the check's job or waits for the check to pass (`afterCheck`). This module holds
+ * that state and answers the reply; the host restores its timeline (HostCompute.takeBack).
+ */
+import type { Action, Until } from "../engineTypes";
+import { errorInfo } from "./errors";
+import type { ComputeStatus, ErrorInfo, HostMessage } from "./protocol";
+import type { TimelineLike } from "./timelineLike";
+
+/**
+ * An edit in the past, or a rewrite of the scene (a removed action), whose later actions the
+ * running restore job is still checking: its reply waits until the history passes `checkTo` (ok)
+ * or a later action is refused (the change is taken back, and the reply carries the refusal as a
+ * synchronous apply would have).
+ */
+export interface PendingEdit {
+  /** The request to answer. */
+  id: number;
+  /** How to take the change back: the action list before an edit, or the timeline before a load. */
+  undo: { actions: Action[] } | { timeline: TimelineLike };
+  /** The last action's time, up to the old history's end: the check is done once the horizon passes it. */
+  checkTo: number;
+  /** The old history's end, recomputed again after a take-back. */
+  horizon: number;
+  /** Appended to a refusal of a later action (an edit: " (once this action is in place)"). */
+  suffix: string;
+}
+
+/** run()'s value for a request answered later (an edit whose later actions are being checked). */
+export const DEFERRED = Symbol("deferred");
+
+export class PendingEdits {
+  /** The change whose later actions are being checked, or null. */
+  edit: PendingEdit | null = null;
+  /** A computation asked while an edit was being checked, to start once the check has passed. */
+  afterCheck: Until | null | undefined = undefined;
+
+  constructor(private readonly post: (message: HostMessage) => void) {}
+
+  /** Answers the pending edit (ok when `error` is null) and forgets it. */
+  answer(error: ErrorInfo | null): void {
+    const p = this.edit;
+    if (!p) return;
+    this.edit = null;
+    if (error === null) this.post({ type: "reply", id: p.id, ok: true, value: null });
+    else this.post({ type: "reply", id: p.id, ok: false, error });
+  }
+
+  /**
+   * A computation asked (not a restore) while `running` checks the pending edit's later actions:
+   * whether it was held here. The check's job runs on (a compute-ahead request would otherwise
+   * replace it and the edit's reply would never come); a request for more time extends it (the
+   * horizon is `h`).
+   */
+  hold(running: ComputeStatus | null, h: number, until: Until | null, restore: boolean): boolean {
+    if (!this.edit || !running || restore) return false;
+    if (until?.time !== undefined && until.events === undefined && running.targetTime !== null)
+      running.targetTime = Math.max(running.targetTime, h + until.time);
+    // Another kind (until idle, a count of events) runs once the check has passed: it was
+    // dropped without a word (audit of session 15).
+    else this.afterCheck = until;
+    return true;
+  }
+
+  /** The check has passed: answers the edit ok; the computation asked meanwhile (undefined: none). */
+  passed(): Until | null | undefined {
+    this.answer(null);
+    const asked = this.afterCheck;
+    this.afterCheck = undefined;
+    return asked;
+  }
+
+  /**
+   * The take-back's reply for an error met while checking: a later action the edit made invalid
+   * (or a Zeno state before the old horizon), the edit refused as a synchronous apply would have
+   * refused it. `actions`: the timeline's current action list (the engine's indices refer to it).
+   */
+  refusal(e: unknown, actions: readonly Action[]): ErrorInfo {
+    const p = this.edit!;
+    const info = beforeEdit(errorInfo(e), p, actions);
+    const later = info.path?.startsWith("actions[") === true;
+    return { message: later ? `${info.message}${p.suffix}` : info.message, path: info.path };
+  }
+}
+
+/**
+ * A refusal of a later action, named by its index in the action list before the edit (as a
+ * synchronous apply names it, and as the editor explains it): the engine names it by its index in
+ * the current list (`actions`), which holds the edit. Actions are the same objects in both lists.
+ */
+export function beforeEdit(info: ErrorInfo, p: PendingEdit, actions: readonly Action[]): ErrorInfo {
+  const m = info.path === null ? null : /^actions\[(\d+)\]/.exec(info.path);
+  if (m === null || !("actions" in p.undo)) return info;
+  const j = p.undo.actions.indexOf(actions[Number(m[1])] as Action);
+  if (j < 0) return info;
+  const was = m[0];
+  const now = `actions[${j}]`;
+  return { message: info.message.replace(was, now), path: (info.path as string).replace(was, now) };
+}
