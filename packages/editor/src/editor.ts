@@ -1,8 +1,10 @@
 /**
  * Editor: the one object that turns user intentions into timeline requests. It is built in layers:
- * EditorSession (editorSession.ts: the TimelineClient, the UI store, the undo history, loading,
- * edits as undo steps, undo/redo, computing ahead), EditorTime (editorTime.ts: the current time,
- * go to, event steps, play and speed) and, here, the edits at the current time: every edit is an
+ * EditorCompute (editorCompute.ts: the TimelineClient, the UI store, messages, computing ahead),
+ * EditorSession (editorSession.ts: the undo history, loading, edits as undo steps; its queue of
+ * changes in sceneChanges.ts), EditorUndo (editorUndo.ts: undo and redo, also while an edit is
+ * checked), EditorTime (editorTime.ts: the current time, go to, event steps, play and speed) and,
+ * here, the edits at the current time: every edit is an
  * action stamped with the current time (add, move, strike, update, delete, clear), and the removal
  * of one action of any time (an Event-log entry's). Methods that can fail resolve to the engine's
  * message (null on success) and show it in the UI.

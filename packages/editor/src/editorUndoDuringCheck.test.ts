@@ -1,5 +1,5 @@
 // Undo pressed while an edit in the past is being checked (the host answers it only once the
-// actions after it are checked: host.ts PendingEdit). The Undo is the user's answer to that edit:
+// actions after it are checked: pendingEdit.ts). The Undo is the user's answer to that edit:
 // it takes that edit back and nothing else, whether the check would have passed or refused it
 // (it once undid the edit before as well when the checked edit was refused), and Redo brings back
 // only what Undo took.
