@@ -7,7 +7,7 @@
  * (a Zeno state) ends with the engine's message in `info.stopped`, the history computed so far
  * kept. While a change's later actions are checked (pendingEdit.ts) its restore job runs on: a
  * refusal takes the change back (takeBack), and once the history passes the check the change is
- * answered and a computation asked meanwhile starts.
+ * answered; a computation asked meanwhile starts once the old history is back (afterRestore).
  */
 import type { Until } from "../engineTypes";
 import { errorInfo } from "./errors";
@@ -56,6 +56,9 @@ export class HostCompute {
   protected readonly series = new SeriesRecorder();
   private lastRecord = Number.NEGATIVE_INFINITY;
   private lastInfo = Number.NEGATIVE_INFINITY;
+  /** A computation asked during a check that passed before its restore job had brought the old
+   *  history back: it starts when that job (and no other) ends. */
+  private afterRestore: { job: Job; until: Until | null } | null = null;
 
   constructor(
     protected readonly env: HostEnv,
@@ -185,8 +188,14 @@ export class HostCompute {
         this.changed(false);
         const asked = this.pending.passed();
         if (asked !== undefined) {
-          this.startJob(asked);
-          return;
+          // The user's history comes back first: a count of events asked meanwhile counts from
+          // its end, not from the edit's check (which would leave the rest of it uncomputed).
+          if (job.restore && job.targetTime !== null && this.tl.horizon < job.targetTime)
+            this.afterRestore = { job, until: asked };
+          else {
+            this.startJob(asked);
+            return;
+          }
         }
       }
       const took = this.env.now() - t0;
@@ -198,6 +207,14 @@ export class HostCompute {
         const unlimited = job.targetTime === null && job.targetEvents === null;
         this.idle = unlimited || timeLeft || eventsLeft;
         this.job = null;
+      }
+    }
+    const next = this.afterRestore;
+    if (next !== null && next.job === job && this.job === null) {
+      this.afterRestore = null;
+      if (this.stopped === null) {
+        this.startJob(next.until);
+        return;
       }
     }
     if (!this.job || this.env.now() - this.lastInfo >= INFO_EVERY_MS) this.changed(false);

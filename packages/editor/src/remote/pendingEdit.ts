@@ -40,7 +40,8 @@ export const DEFERRED = Symbol("deferred");
 export class PendingEdits {
   /** The change whose later actions are being checked, or null. */
   edit: PendingEdit | null = null;
-  /** A computation asked while an edit was being checked, to start once the check has passed. */
+  /** A computation asked while an edit was being checked, to start once the check has passed
+   *  and the old history is back (hostCompute.ts). */
   afterCheck: Until | null | undefined = undefined;
 
   constructor(private readonly post: (message: HostMessage) => void) {}
