@@ -39,8 +39,7 @@ export class TimelineHost extends HostCompute {
     try {
       const value = this.run(message);
       if (value === DEFERRED) return;
-      if (value instanceof Float64Array) this.env.post({ type: "reply", id: message.id, ok: true, value });
-      else if (value && typeof value === "object" && "data" in value && value.data instanceof Float64Array) {
+      if (value && typeof value === "object" && "data" in value && value.data instanceof Float64Array) {
         this.env.post({ type: "reply", id: message.id, ok: true, value }, [value.data.buffer]);
       } else this.env.post({ type: "reply", id: message.id, ok: true, value });
     } catch (e) {
@@ -157,6 +156,7 @@ export class TimelineHost extends HostCompute {
    */
   private applyAll(actions: Action[], id: number): null | typeof DEFERRED {
     if (this.pending.edit) throw new Error("an edit is still being checked: wait for it");
+    if (actions.length === 0) return null; // nothing changes (Math.min of no times is Infinity)
     const before = this.tl.actions.slice();
     // Where the user's history reaches: past the horizon while an earlier edit's history is still
     // being brought back (a second quick edit must not cut it to the part recomputed so far).
