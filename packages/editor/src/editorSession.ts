@@ -12,7 +12,7 @@
  * (the engine's path `actions[i]`) also says which action that is (doc/actionRefs.ts).
  */
 
-import { EMPTY_HISTORY, type History, record } from "./doc/history";
+import { EMPTY_HISTORY, type History, record, takenBack } from "./doc/history";
 import { type ObjectKind, renameObject } from "./doc/rename";
 import type { Intents, Ticket } from "./doc/undoIntents";
 import { EditorCompute } from "./editorCompute";
@@ -48,6 +48,17 @@ export class EditorSession extends EditorCompute {
     this.changes.takeBackIfUndone(ticket);
   }
 
+  /**
+   * After the change of `ticket` was refused: whether an Undo took it back during its check
+   * (SceneChanges.tookBack). Such a change was made, so it clears Redo as recording it would have
+   * (history.ts takenBack); its Undo then puts it first in Redo.
+   */
+  private async tookBack(ticket: Ticket): Promise<boolean> {
+    if (!(await this.changes.tookBack(ticket))) return false;
+    this.history.setState(takenBack(this.history.getState()));
+    return true;
+  }
+
   /** Loads a scene (preset, paste, file, URL). Invalid scenes are refused and the current one kept. */
   async loadScene(
     scene: SceneFile,
@@ -80,7 +91,7 @@ export class EditorSession extends EditorCompute {
       if (ticket !== null) this.takeBackIfUndone(ticket);
       await loaded;
     } catch (e) {
-      if (ticket !== null && (await this.changes.tookBack(ticket))) return UNDONE_DURING_CHECK;
+      if (ticket !== null && (await this.tookBack(ticket))) return UNDONE_DURING_CHECK;
       // The engine names actions by their index in the list it was given.
       return naming ? this.failNaming(e, scene.actions) : this.fail(e);
     } finally {
@@ -121,7 +132,7 @@ export class EditorSession extends EditorCompute {
         await applied;
       } catch (e) {
         // Taken back by an Undo during its check: that Undo says so.
-        if (await this.changes.tookBack(ticket)) return UNDONE_DURING_CHECK;
+        if (await this.tookBack(ticket)) return UNDONE_DURING_CHECK;
         // The engine names a later action by its index in the list before this edit (Timeline.apply);
         // with several actions, the later ones meet a list holding the earlier ones.
         return actions.length === 1 ? this.failNaming(e, before.actions) : this.fail(e);

@@ -5,7 +5,8 @@
  * to it. During the check of its later actions the change is taken back at once (as Cancel does)
  * and nothing else is undone; a change the check refuses is not there to undo, so an Undo bound to
  * it undoes nothing (it once undid the edit before it). A change taken back so goes to Redo, which
- * brings it back checked again (a later action may refuse it then). Each says what it did
+ * brings it back checked again (a later action may refuse it then); like any change made it
+ * cleared Redo first (EditorSession.tookBack), so Redo then holds it alone. Each says what it did
  * ("Undone: giveVelocity of "a" at t = 4 s.").
  */
 

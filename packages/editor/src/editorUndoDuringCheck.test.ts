@@ -4,6 +4,7 @@
 // (it once undid the edit before as well when the checked edit was refused), and Redo brings back
 // only what Undo took.
 import { describe, expect, it } from "vitest";
+import { canRedo } from "./doc/undoIntents";
 import type { Action, SceneFile } from "./engineTypes";
 import { settled, testEditor } from "./testing/harness";
 import { boxScene } from "./testing/scenes";
@@ -24,6 +25,8 @@ const busyBox: SceneFile = boxScene(
 const blocker: Action = { time: 10, type: "addBody", id: "z", x: 50, y: 50.5, r: 1, m: 1 };
 const earlier: Action = { time: 10, type: "giveVelocity", id: "b", v: [0, 1] };
 const valid: Action = { time: 5, type: "giveVelocity", id: "a", v: [1, 1] };
+/** Another change in the past (c's velocity at t = 7), checked up to e's addition at t = 30. */
+const other: Action = { time: 7, type: "giveVelocity", id: "c", v: [-1, 0.5] };
 
 /** The box with its history to t = 40 and one accepted edit (b's velocity at t = 10). */
 async function boxWithOneEdit(scene = box) {
@@ -181,5 +184,36 @@ describe("Undo while an edit's later actions are being checked", () => {
     expect(h.editor.ui.getState().message?.text).toBe(
       'Undone: the removal of giveVelocity of "b" at t = 10 s (taken back while the actions after it were being checked).',
     );
+  });
+
+  it("a new edit clears Redo even when Undo takes it back during its check: Redo then brings back only that edit", async () => {
+    // The audit's sequence: X undone (X in Redo), Y asked and taken back by Undo during its check,
+    // Redo brings Y back; Redo once more used to load X's stored scene (X back, Y silently gone).
+    const h = await boxWithOneEdit();
+    expect(await h.editor.edit([valid])).toBeNull(); // X
+    await settled(h.client);
+    await h.editor.undo();
+    await settled(h.client);
+    expect(h.editor.history.getState().future).toHaveLength(1); // X in Redo
+    const seen = checking(h);
+    const edit = h.editor.edit([other]); // Y
+    await seen;
+    await Promise.all([edit, h.editor.undo()]);
+    await settled(h.client);
+    expect(h.editor.history.getState()).toMatchObject({ past: { length: 1 }, future: { length: 1 } });
+    await h.editor.redo();
+    await settled(h.client);
+    const state = () => ({
+      valid: count(h, valid),
+      other: count(h, other),
+      earlier: count(h, earlier),
+      past: h.editor.history.getState().past.length,
+      future: h.editor.history.getState().future.length,
+      canRedo: canRedo(h.editor.intents.getState(), h.editor.history.getState().future.length),
+    });
+    expect(state()).toEqual({ valid: 0, other: 1, earlier: 1, past: 2, future: 0, canRedo: false });
+    await h.editor.redo(); // nothing to redo
+    await settled(h.client);
+    expect(state()).toEqual({ valid: 0, other: 1, earlier: 1, past: 2, future: 0, canRedo: false });
   });
 });

@@ -1,6 +1,6 @@
 import { describe, expect, it } from "vitest";
 import type { SceneFile } from "../engineTypes";
-import { EMPTY_HISTORY, HISTORY_LIMIT, record, redo, undo } from "./history";
+import { EMPTY_HISTORY, HISTORY_LIMIT, record, redo, takenBack, undo } from "./history";
 
 const scene = (n: number): SceneFile => ({
   format: "chapgame",
@@ -30,6 +30,15 @@ describe("history", () => {
     const h = record(u.history, scene(1));
     expect(h.future).toEqual([]);
     expect(h.past.map((s) => s.g)).toEqual([1]);
+  });
+
+  it("an edit taken back before it was recorded clears the redo list, the past stays", () => {
+    const u = undo(record(record(EMPTY_HISTORY, scene(1)), scene(2)), scene(3))!;
+    expect(u.history.future.map((s) => s.g)).toEqual([3]);
+    const h = takenBack(u.history);
+    expect(h.future).toEqual([]);
+    expect(h.past).toBe(u.history.past);
+    expect(takenBack(EMPTY_HISTORY)).toBe(EMPTY_HISTORY);
   });
 
   it("keeps at most HISTORY_LIMIT steps, dropping the oldest", () => {

@@ -1,7 +1,8 @@
 /**
  * Undo/redo of scene edits as a pure value: each entry is a whole scene (immutable, actions shared
  * between entries), so undoing is `timeline.setActions` / reload of the previous entry.
- * Only edits enter the history; time, speed and selection never do.
+ * Only edits enter the history; time, speed and selection never do. Every edit made clears Redo,
+ * also one an Undo took back during its check (takenBack; that Undo then puts it first in Redo).
  */
 import type { SceneFile } from "../engineTypes";
 
@@ -20,6 +21,16 @@ export function record(h: History, before: SceneFile): History {
   const past = [...h.past, before];
   if (past.length > HISTORY_LIMIT) past.shift();
   return { past, future: [] };
+}
+
+/**
+ * Records that an edit was made and at once taken back by the Undo bound to it (during its check,
+ * doc/undoIntents.ts), before being recorded: as `record` then `undo`, it clears Redo (the edits
+ * undone before it are obsolete) and leaves the past as it was. Its Undo, at its turn, puts the
+ * taken-back scene first in Redo (editorUndo.ts).
+ */
+export function takenBack(h: History): History {
+  return h.future.length === 0 ? h : { past: h.past, future: [] };
 }
 
 /** The scene to go back to and the history after undoing from `current`; null when nothing to undo. */

@@ -33,7 +33,12 @@ export interface Intents {
   readonly past: readonly Ticket[];
   /** Tickets in front of the recorded future, the first one redone first. */
   readonly future: readonly Ticket[];
-  /** A change was asked since the last reset: it clears the future, so Redo past `future` has nothing. */
+  /**
+   * A change was asked since the last reset: it clears the future, so Redo past `future` has
+   * nothing. The recorded future itself is cleared when the change is recorded or taken back by
+   * its Undo (history.ts record, takenBack), so it stays cleared once these intents are reset; a
+   * change refused or cancelled leaves it.
+   */
   readonly futureCleared: boolean;
 }
 
