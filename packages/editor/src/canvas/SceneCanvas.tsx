@@ -3,12 +3,14 @@
  * component once; time, view and selection are read from the store each frame). Each animation frame
  * draws the current time: the latest Frame from the worker evaluated at that time (frameAt.ts), so
  * playback is smooth even when the worker answers late.
- * Pointer gestures are gestures.ts's; Escape (or a cancelled pointer) drops a drag under way.
+ * Pointer gestures are gestures.ts's; Escape (or a cancelled pointer) drops a drag under way. The
+ * wheel zooms the view around the pointer, except a wheel that continues a page scroll (wheelLatch.ts).
  */
 import { useEffect, useRef } from "react";
 import { useEditor } from "../EditorContext";
 import { motionWindow } from "../playback";
 import type { Frame } from "../remote/protocol";
+import { addWheelZoom } from "../wheelLatch";
 import { drawFrame } from "./draw";
 import { drawStats } from "./drawStats";
 import { fitFrame } from "./fitScene";
@@ -125,11 +127,13 @@ export function SceneCanvas() {
       return [e.clientX - r.left, e.clientY - r.top];
     };
 
-    const onWheel = (e: WheelEvent) => {
-      e.preventDefault();
+    // A wheel over the canvas zooms the view, unless it continues a page scroll passing over it
+    // (wheelLatch.ts: at 390 px the canvas fills the screen and stopped the page's scroll).
+    const zoom = (e: WheelEvent) => {
       fitted = false;
       const [sx, sy] = local(e);
       ui.setState((s) => ({ view: zoomAt(s.view, size, sx, sy, Math.exp(-e.deltaY * 0.0015)) }));
+      return true;
     };
 
     let pointerId: number | null = null;
@@ -157,7 +161,7 @@ export function SceneCanvas() {
       e.stopImmediatePropagation();
     };
 
-    canvas.addEventListener("wheel", onWheel, { passive: false });
+    const removeWheelZoom = addWheelZoom(canvas, zoom);
     canvas.addEventListener("pointerdown", onDown);
     canvas.addEventListener("pointermove", onMove);
     canvas.addEventListener("pointerup", onUp);
@@ -167,7 +171,7 @@ export function SceneCanvas() {
       cancelAnimationFrame(raf);
       ro?.disconnect();
       unsubUi();
-      canvas.removeEventListener("wheel", onWheel);
+      removeWheelZoom();
       canvas.removeEventListener("pointerdown", onDown);
       canvas.removeEventListener("pointermove", onMove);
       canvas.removeEventListener("pointerup", onUp);

@@ -61,6 +61,29 @@ describe("TimePanel time field, negative times", () => {
     });
     expect(editor.ui.getState().t).toBe(0);
   });
+
+  it("a valid time clears the field's own error (it stayed), not another message", async () => {
+    const { editor, field } = await renderPanel();
+    const type = async (text: string) => {
+      field.focus();
+      fireEvent.change(field, { target: { value: text } });
+      await act(async () => {
+        fireEvent.keyDown(field, { key: "Enter" });
+      });
+    };
+    await type("-3");
+    expect(editor.ui.getState().message?.tone).toBe("error");
+    await type("2");
+    expect(editor.ui.getState().t).toBe(2);
+    expect(editor.ui.getState().message).toBeNull();
+    const other = {
+      text: 'Window width (s): must be a positive number of seconds, got "0"',
+      tone: "error" as const,
+    };
+    act(() => editor.ui.setState({ message: other }));
+    await type("3");
+    expect(editor.ui.getState().message).toBe(other);
+  });
 });
 
 describe("TimePanel", () => {

@@ -1,20 +1,24 @@
 /**
- * Time: the `Time` scrubber over the time window (the whole history [0, horizon] unless zoomed,
- * TimeZoom; the wheel over it zooms, useWheelZoom) with the window's event ticks, a time field (a time past the horizon is computed
- * first), −1 / 0 / +1 s and stepping to the previous / next event. Scrubbing and zooming are not
- * edits (no undo step).
+ * Time: the `Time` scrubber over the time window (the whole history [0, its end] unless zoomed,
+ * TimeZoom; the wheel over it zooms, useWheelZoom; during an undo's restore the end is the history
+ * being restored, useHistoryEnd) with the window's event ticks, a time field (a time past the
+ * horizon is computed first), −1 / 0 / +1 s and stepping to the previous / next event. Scrubbing and
+ * zooming are not edits (no undo step).
  * While playing, this panel re-renders about 10 times a second (useShownTime); the slider's thumb
  * follows every frame by itself (TimeSlider). The time field shows the current time until the user
  * types in it; only typed text is gone to (Enter or leaving the field), so clicking into the field
- * while playing and away again leaves the time alone. Zoomed, it shows the time to the window's
- * precision (timeInWindow) and widens to fit.
+ * while playing and away again leaves the time alone; text that is not a time is refused with a
+ * message, which a valid time then clears (fieldMessages.ts). Zoomed, it shows the time to the
+ * window's precision (timeInWindow) and widens to fit.
  */
 import { useMemo, useRef, useState } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import { timeInWindow, viewRange } from "../store/timeWindow";
 import { formatNumber, parseNumber } from "./EditableCell";
+import { isFieldMessage } from "./fieldMessages";
 import { TimeSlider } from "./TimeSlider";
 import { TimeZoom } from "./TimeZoom";
+import { useHistoryEnd } from "./useHistoryEnd";
 import { useRefreshed } from "./useRefreshed";
 import { useShownTime } from "./useThrottledTime";
 import { useWheelZoom } from "./useWheelZoom";
@@ -26,6 +30,7 @@ const TICKS = 300;
  */
 const TICKS_EVERY_MS = 1000;
 const NO_TICKS: number[] = [];
+const TIME_LABEL = "Time (s)";
 
 export function TimePanel() {
   const editor = useEditor();
@@ -35,6 +40,7 @@ export function TimePanel() {
   const computing = useInfoValue((i) => i.computing !== null);
   const docRevision = useInfoValue((i) => i.docRevision);
   const timeWindow = useUi((s) => s.timeWindow);
+  const end = useHistoryEnd();
   const windowKey = timeWindow === null ? "all" : `${timeWindow.lo}:${timeWindow.hi}`;
   // Throttled while a computation extends the history; at once when the scene itself changes (an
   // edit in the past moves the ticks after it, which stayed stale for up to TICKS_EVERY_MS) or the
@@ -60,7 +66,7 @@ export function TimePanel() {
 
   // Ticks are times: a reply asked for an earlier window is drawn on the current one, in its range.
   const tickLines = useMemo(() => {
-    const { lo, hi } = viewRange(timeWindow, horizon);
+    const { lo, hi } = viewRange(timeWindow, end);
     if (!(hi > lo)) return null;
     return ticks
       .filter((x) => x >= lo && x <= hi)
@@ -69,7 +75,7 @@ export function TimePanel() {
         // biome-ignore lint/suspicious/noArrayIndexKey: ticks are positional (equal times repeat) and never reordered
         return <line key={i} x1={at} x2={at} y1={0} y2={10} />;
       });
-  }, [ticks, horizon, timeWindow]);
+  }, [ticks, end, timeWindow]);
 
   const commitDraft = () => {
     if (draft === null) return;
@@ -82,8 +88,15 @@ export function TimePanel() {
         : x < 0
           ? "must be 0 or later"
           : null;
-    if (why === null) void editor.goTo(x as number);
-    else editor.ui.setState({ message: { text: `Time (s): ${why}, got "${draft.trim()}"`, tone: "error" } });
+    if (why === null) {
+      // the field's earlier refusal no longer holds (it stayed up)
+      const { message } = editor.ui.getState();
+      if (isFieldMessage(message, TIME_LABEL)) editor.ui.setState({ message: null });
+      void editor.goTo(x as number);
+    } else
+      editor.ui.setState({
+        message: { text: `${TIME_LABEL}: ${why}, got "${draft.trim()}"`, tone: "error" },
+      });
     setDraft(null);
   };
 
@@ -100,7 +113,7 @@ export function TimePanel() {
         <label>
           t ={" "}
           <input
-            aria-label="Time (s)"
+            aria-label={TIME_LABEL}
             size={Math.max(9, timeText.length + 1)}
             value={timeText}
             onChange={(e) => setDraft(e.target.value)}

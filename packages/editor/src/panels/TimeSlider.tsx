@@ -1,6 +1,8 @@
 /**
- * The `Time` slider over the time window: the whole history [0, horizon] unless zoomed
- * (store/timeWindow.ts; the window follows the time by itself, store/timeWindowGuard.ts). Its thumb
+ * The `Time` slider over the time window: the whole history unless zoomed (store/timeWindow.ts; the
+ * window follows the time by itself, store/timeWindowGuard.ts). The whole history is [0, where it
+ * ends] (historyEnd): during an undo's restore, the history being restored, the thumb at the
+ * restore's progress (the time shown until the restore reaches the time held). Its thumb
  * and range follow the store outside React (a store subscription writes the input's value): playback
  * changes the time on every animation frame and re-rendering a panel per frame is not needed to move
  * one thumb. While playing, a change that moves the thumb by less than a pixel is not written (each
@@ -11,15 +13,16 @@
  * holding it while playing pauses until it is let go.
  */
 import { useEffect, useRef } from "react";
-import { useEditor, useInfoValue, useUi } from "../EditorContext";
+import { useEditor, useUi } from "../EditorContext";
 import { sliderTime, viewRange } from "../store/timeWindow";
+import { historyEnd } from "../store/timeWindowGuard";
+import { useHistoryEnd } from "./useHistoryEnd";
 
 export function TimeSlider() {
   const editor = useEditor();
-  const horizon = useInfoValue((i) => i.horizon);
   const range = viewRange(
     useUi((s) => s.timeWindow),
-    horizon,
+    useHistoryEnd(),
   );
   const ref = useRef<HTMLInputElement>(null);
 
@@ -39,9 +42,9 @@ export function TimeSlider() {
     let shownHi = Number.NaN;
     const show = (force: boolean) => {
       const s = ui.getState();
-      const h = client.getSnapshot().horizon;
-      const { lo, hi } = viewRange(s.timeWindow, h);
-      const t = Math.min(s.t, h);
+      const info = client.getSnapshot();
+      const { lo, hi } = viewRange(s.timeWindow, historyEnd(info, s.t));
+      const t = Math.min(s.t, info.horizon);
       const sameRange = lo === shownLo && hi === shownHi;
       if (t === shown && sameRange) return;
       if (!force && sameRange && s.playing && Math.abs(t - shown) * Math.max(width, 1) < hi - lo) return;
@@ -93,8 +96,9 @@ export function TimeSlider() {
       defaultValue={0}
       onChange={(e) => {
         // clamped to the range: a value read just past an end turned the page (sliderTime)
-        const w = editor.ui.getState().timeWindow;
-        editor.setTime(sliderTime(Number(e.target.value), w, editor.client.getSnapshot().horizon));
+        const { timeWindow, t } = editor.ui.getState();
+        const end = historyEnd(editor.client.getSnapshot(), t);
+        editor.setTime(sliderTime(Number(e.target.value), timeWindow, end));
       }}
     />
   );

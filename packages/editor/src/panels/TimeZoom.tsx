@@ -3,14 +3,17 @@
  * time), Zoom out (twice the span, up to the whole history), Whole history, the window's width
  * (ZoomWidthField: type 5 for 5 s around the current time) and, when zoomed, the part of the
  * history the slider shows ("showing 12.5–25 s"). The wheel over the slider zooms too
- * (useWheelZoom). Zooming is not an edit (no undo step) and is not saved.
+ * (useWheelZoom). The whole history is [0, where the history ends] (useHistoryEnd): during an undo's
+ * restore, the history being restored, so a zoom step halves that and not the restore's progress.
+ * Zooming is not an edit (no undo step) and is not saved.
  * A button that cannot act is aria-disabled (announced and drawn as unavailable, pressing it does
  * nothing) rather than disabled: a disabled button drops the keyboard focus to the page, so pressing
  * Zoom in until the smallest span, or Whole history, lost the user's place in the tab order.
  */
 import type { ReactNode } from "react";
-import { useEditor, useInfoValue, useUi } from "../EditorContext";
+import { useEditor, useUi } from "../EditorContext";
 import { canZoomIn, windowLabel, zoomIn, zoomOut } from "../store/timeWindow";
+import { useHistoryEnd } from "./useHistoryEnd";
 import { ZoomWidthField } from "./ZoomWidthField";
 import { applyZoom } from "./zoomActions";
 
@@ -30,12 +33,12 @@ function ZoomButton(props: { enabled: boolean; onPress: () => void; children: Re
 export function TimeZoom() {
   const editor = useEditor();
   const w = useUi((s) => s.timeWindow);
-  const horizon = useInfoValue((i) => i.horizon);
+  const end = useHistoryEnd();
   return (
     <span className="zoom">
       <ZoomButton
-        enabled={canZoomIn(w, horizon)}
-        onPress={() => applyZoom(editor, (s) => zoomIn(s.w, s.t, s.horizon))}
+        enabled={canZoomIn(w, end)}
+        onPress={() => applyZoom(editor, (s) => zoomIn(s.w, s.t, s.end))}
       >
         Zoom in
       </ZoomButton>

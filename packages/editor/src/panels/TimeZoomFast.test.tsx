@@ -7,8 +7,8 @@ import { act, cleanup, fireEvent, render, screen } from "@testing-library/react"
 import { afterEach, describe, expect, it, vi } from "vitest";
 import { EditorContext } from "../EditorContext";
 import { cradleEditor } from "../testing/harness";
+import { WHEEL_LATCH_MS } from "../wheelLatch";
 import { TimePanel } from "./TimePanel";
-import { WHEEL_LATCH_MS } from "./useWheelZoom";
 
 afterEach(cleanup);
 
@@ -88,6 +88,26 @@ describe("Time slider: a page scroll that passes over it", () => {
       clock.mockRestore();
     }
   });
+
+  it("a wheel another zoom target took (the canvas) is not a page scroll: the slider zooms right after", async () => {
+    const { editor, wheel } = await renderPanel();
+    const canvas = document.body.appendChild(document.createElement("canvas"));
+    const zoomCanvas = (e: WheelEvent) => e.preventDefault();
+    canvas.addEventListener("wheel", zoomCanvas, { passive: false });
+    let now = 1000;
+    const clock = vi.spyOn(performance, "now").mockImplementation(() => now);
+    try {
+      act(() => {
+        fireEvent.wheel(canvas, { deltaY: -100 });
+      });
+      now += 40;
+      expect(wheel({ deltaY: -100 })).toBe(false);
+      expect(editor.ui.getState().timeWindow).not.toBeNull();
+    } finally {
+      clock.mockRestore();
+      canvas.remove();
+    }
+  });
 });
 
 describe("Time slider: typed window width", () => {
@@ -156,6 +176,57 @@ describe("Time slider: typed window width", () => {
     expect(width.value).toBe("2");
     act(() => fireEvent.blur(width));
     expect(editor.ui.getState().timeWindow).toBe(w);
+  });
+
+  it("a valid width clears the field's own error (it stayed after the zoom), not other messages", async () => {
+    const { editor, typeWidth } = await renderPanel();
+    act(() => editor.setTime(5));
+    typeWidth("0");
+    expect(editor.ui.getState().message?.tone).toBe("error");
+    typeWidth("4");
+    expect(editor.ui.getState().timeWindow).toEqual({ lo: 3, hi: 7 });
+    expect(editor.ui.getState().message).toBeNull();
+    // also a width that changes nothing (the same window)
+    typeWidth("abc");
+    typeWidth("4.0");
+    expect(editor.ui.getState().message).toBeNull();
+    // another field's or the editor's message is not this field's to clear
+    const other = { text: "Autosave failed: the browser's storage is full", tone: "error" as const };
+    act(() => editor.ui.setState({ message: other }));
+    typeWidth("2");
+    expect(editor.ui.getState().message).toBe(other);
+  });
+
+  it("a width below the smallest window is widened to it and says so, naming that width and why", async () => {
+    const { editor, width, typeWidth } = await renderPanel();
+    act(() => editor.setTime(3.3));
+    typeWidth("1e-300");
+    let w = editor.ui.getState().timeWindow!;
+    expect(w.hi - w.lo).toBeCloseTo(1e-9, 15);
+    expect(width.value).toBe("1e-9");
+    expect(editor.ui.getState().message).toEqual({
+      text: 'Window width (s): "1e-300" is narrower than the smallest window, 1e-9 s (a billionth of a second); the window is widened to that',
+      tone: "info",
+    });
+    // a width the window can have: the note goes
+    typeWidth("0.5");
+    expect(editor.ui.getState().message).toBeNull();
+    // far in the history the smallest window is 1e-12 of the time (the time's precision)
+    await act(() => editor.goTo(1.23456789e8));
+    typeWidth("1e-6");
+    w = editor.ui.getState().timeWindow!;
+    // (to the floating-point step of times near 1.2e8, 1.5e-8 s)
+    expect(w.hi - w.lo).toBeCloseTo(1.23456789e-4, 8);
+    expect(editor.ui.getState().message).toEqual({
+      text:
+        'Window width (s): "1e-6" is narrower than the smallest window at t = 1.23457e+8 s, 0.000123457 s' +
+        " (the time's precision: a window spans at least 1e-12 of its time); the window is widened to that",
+      tone: "info",
+    });
+    // the field is wide enough to show the width whole
+    // (the window's ends are a floating-point step apart from its width: 0.000123456 here)
+    expect(width.value).toMatch(/^0\.00012345\d$/);
+    expect(width.size).toBeGreaterThan(width.value.length);
   });
 
   it("a history of a billion seconds: one typed width shows seconds around the time, to the digit", async () => {

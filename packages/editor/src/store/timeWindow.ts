@@ -1,7 +1,8 @@
 /**
  * The Time slider's view window: the part [lo, hi] of the history the slider spans, so that a long
  * history (a time typed far ahead) can still be scrubbed second by second. null is the whole
- * history [0, horizon], the default, which follows the horizon as it grows. Pure functions; the UI
+ * history [0, end], the default, which follows the history's end as it grows (the horizon, or during
+ * an undo's restore the history being restored: timeWindowGuard's historyEnd). Pure functions; the UI
  * store holds the window (`timeWindow`, not an undo step, not saved) and timeWindowGuard.ts keeps it
  * inside the history and around the current time.
  *
@@ -25,9 +26,12 @@ export interface TimeWindow {
 
 const clamp = (x: number, lo: number, hi: number): number => Math.min(Math.max(x, lo), hi);
 
-/** The range the slider spans: the window, or [0, horizon] for the whole history. */
-export function viewRange(w: TimeWindow | null, horizon: number): TimeWindow {
-  return w ?? { lo: 0, hi: horizon };
+/**
+ * The range the slider spans: the window, or [0, end] for the whole history (`end`: where the history
+ * ends, timeWindowGuard's historyEnd; during an undo's restore, the history being restored).
+ */
+export function viewRange(w: TimeWindow | null, end: number): TimeWindow {
+  return w ?? { lo: 0, hi: end };
 }
 
 /**
@@ -37,8 +41,8 @@ export function viewRange(w: TimeWindow | null, horizon: number): TimeWindow {
  * page, the thumb under the pointer was at the new page's end, and holding it there turned a page on
  * every pointer move.
  */
-export function sliderTime(value: number, w: TimeWindow | null, horizon: number): number {
-  const r = viewRange(w, horizon);
+export function sliderTime(value: number, w: TimeWindow | null, end: number): number {
+  const r = viewRange(w, end);
   return clamp(value, r.lo, Math.max(r.lo, r.hi));
 }
 
@@ -51,15 +55,15 @@ export function minSpan(hi: number): number {
 }
 
 /** Whether zoom in would narrow the range (a history to zoom into, not at the smallest span yet). */
-export function canZoomIn(w: TimeWindow | null, horizon: number): boolean {
-  const r = viewRange(w, horizon);
+export function canZoomIn(w: TimeWindow | null, end: number): boolean {
+  const r = viewRange(w, end);
   return r.hi > r.lo && (r.hi - r.lo) / 2 >= minSpan(r.hi);
 }
 
 /** Half the span, around t (kept at its place on the slider); the window itself when it cannot. */
-export function zoomIn(w: TimeWindow | null, t: number, horizon: number): TimeWindow | null {
-  if (!canZoomIn(w, horizon)) return w;
-  const r = viewRange(w, horizon);
+export function zoomIn(w: TimeWindow | null, t: number, end: number): TimeWindow | null {
+  if (!canZoomIn(w, end)) return w;
+  const r = viewRange(w, end);
   const x = clamp(t, r.lo, r.hi);
   return { lo: clamp(x - (x - r.lo) / 2, r.lo, r.hi), hi: clamp(x + (r.hi - x) / 2, r.lo, r.hi) };
 }

@@ -5,7 +5,8 @@
  * - `zoomBy`: the span times any factor (the wheel over the slider), around the current time t,
  *   which keeps its place on the slider (the thumb does not move), as the Zoom buttons do. A factor
  *   of 1/2 is Zoom in's step and 2 Zoom out's (to rounding).
- * - `zoomToSpan`: a window of a typed width centred on t (the user asks for "5 s around now").
+ * - `zoomToSpan`: a window of a typed width centred on t (the user asks for "5 s around now");
+ *   `smallestSpanAt`: the narrowest such window (a narrower width is widened to it).
  *
  * Both stay inside [0, end] (end: where the history ends, timeWindowGuard's historyEnd), never go
  * below the smallest span (minSpan) and give the whole history (null) once the window would cover
@@ -22,18 +23,12 @@ const same = (w: TimeWindow | null, next: TimeWindow | null): TimeWindow | null 
 
 /**
  * The window of `factor` times the span around t (kept at its place on the slider), inside the
- * window when zooming in and shifted inside [0, end] when zooming out, at least minSpan wide; null (the whole history) once it would cover [0, end]; `w` itself
- * when nothing changes (at the smallest span, on an empty history, a factor that is not positive).
- * `horizon`: the whole history's range when `w` is null.
+ * window when zooming in and shifted inside [0, end] when zooming out, at least minSpan wide; null
+ * (the whole history, [0, end]) once it would cover [0, end]; `w` itself when nothing changes (at
+ * the smallest span, on an empty history, a factor that is not positive).
  */
-export function zoomBy(
-  w: TimeWindow | null,
-  factor: number,
-  t: number,
-  horizon: number,
-  end: number,
-): TimeWindow | null {
-  const r = viewRange(w, horizon);
+export function zoomBy(w: TimeWindow | null, factor: number, t: number, end: number): TimeWindow | null {
+  const r = viewRange(w, end);
   const span = r.hi - r.lo;
   if (!(span > 0) || !(factor > 0) || factor === 1 || !Number.isFinite(factor)) return w;
   if (w === null && factor > 1) return null;
@@ -54,8 +49,16 @@ export function zoomBy(
 export function zoomToSpan(w: TimeWindow | null, span: number, t: number, end: number): TimeWindow | null {
   if (!(span > 0)) return w;
   const x = clamp(t, 0, end);
-  const s = Math.max(span, minSpan(x + span / 2));
+  const s = Math.max(span, smallestSpanAt(span, t, end));
   return same(w, fitInside(x - s / 2, s, end));
+}
+
+/**
+ * The smallest width a window of `span` seconds centred on t (zoomToSpan) can have: minSpan at its
+ * far end. A narrower typed width is widened to it.
+ */
+export function smallestSpanAt(span: number, t: number, end: number): number {
+  return minSpan(clamp(t, 0, end) + span / 2);
 }
 
 /** Wheel pixels for one line (deltaMode 1, Firefox: 3 lines a notch) and one page (deltaMode 2). */
