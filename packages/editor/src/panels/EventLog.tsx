@@ -3,10 +3,12 @@
  * what the action did). Clicking an entry
  * jumps there, highlights its participants and selects one (selectionOf); a body filter keeps only
  * that body's events. An action entry's ✕ removes that action from the scene once confirmed by a
- * second press (RemoveActionButton).
+ * second press (RemoveActionButton); when the ✕ had the keyboard focus, the focus then goes to the
+ * ✕ of the next action entry shown, else the previous one, else the log's table (removeFocus.ts),
+ * once the log shows the scene without the action.
  * Only the rows in view are rendered (useRowWindow); the view follows the current time (useFollowTime).
  */
-import { useRef } from "react";
+import { useEffect, useRef, useState } from "react";
 import { kindOfType } from "../doc/rename";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { LogEvent } from "../engineTypes";
@@ -14,6 +16,7 @@ import type { EventPage, PageEvent } from "../remote/protocol";
 import type { Selection } from "../store/uiStore";
 import { formatNumber } from "./EditableCell";
 import { RemoveActionButton } from "./RemoveActionButton";
+import { focusAfterRemoval } from "./removeFocus";
 import { useFollowTime } from "./useFollowTime";
 import { useRefreshed } from "./useRefreshed";
 import { spacerRow, useRowWindow } from "./useRowWindow";
@@ -80,10 +83,25 @@ export function logCount(total: number, shown: number, body: string | null): str
   return body === null ? String(total) : `${shown} shown for ${body} · ${total} in all`;
 }
 
-/** An action entry's remove button (null for other entries, and for an action not identified). */
-function removable(e: PageEvent) {
+/**
+ * An action entry's remove button (null for other entries, and for an action not identified), on a
+ * page read at scene revision `revision`; `onRemoved(index)` once it removed its action while focused.
+ */
+function removable(e: PageEvent, revision: number, onRemoved: (index: number) => void) {
   if (e.type !== "action" || e.action === undefined || e.actionIndex === undefined) return null;
-  return <RemoveActionButton index={e.actionIndex} time={e.time} type={e.action} id={e.ids[0] ?? null} />;
+  const index = e.actionIndex;
+  return (
+    <RemoveActionButton
+      index={index}
+      time={e.time}
+      type={e.action}
+      id={e.ids[0] ?? null}
+      revision={revision}
+      onRemoved={(focused) => {
+        if (focused) onRemoved(index);
+      }}
+    />
+  );
 }
 
 export function EventLog() {
@@ -94,11 +112,13 @@ export function EventLog() {
   const body = filter.trim() === "" ? null : filter.trim();
   // Each page keeps the time it was read around: the view follows that time, so a page that
   // arrives after the time moved on is not scrolled to rows it does not hold yet.
-  const read = useRefreshed<{ at: number; page: EventPage } | null>(
-    () =>
-      revision < 0
-        ? Promise.resolve(null)
-        : editor.client.events(t, BEFORE, AFTER, body).then((page) => ({ at: t, page })),
+  // ... and the scene revision it was asked at: the remove buttons' state belongs to one revision.
+  const read = useRefreshed<{ at: number; page: EventPage; doc: number } | null>(
+    () => {
+      if (revision < 0) return Promise.resolve(null);
+      const doc = editor.client.getSnapshot().docRevision;
+      return editor.client.events(t, BEFORE, AFTER, body).then((page) => ({ at: t, page, doc }));
+    },
     `${revision} ${t} ${body}`,
     null,
     REFRESH_MS,
@@ -115,6 +135,27 @@ export function EventLog() {
     win.geometry,
   );
 
+  // A removal made from the keyboard: the action's index and the revision of the page that showed it.
+  const tableRef = useRef<HTMLTableElement>(null);
+  const [refocus, setRefocus] = useState<{ index: number; from: number } | null>(null);
+  const doc = read?.doc ?? -1;
+  useEffect(() => {
+    if (refocus === null || doc === refocus.from) return;
+    setRefocus(null);
+    const box = scrollRef.current;
+    const active = document.activeElement;
+    // the focus was lost with the button, or is still in the log; elsewhere, the user moved it on
+    if (box === null || (active !== null && active !== document.body && !box.contains(active))) return;
+    const buttons = [...box.querySelectorAll<HTMLButtonElement>("button[data-action-index]")];
+    const at = focusAfterRemoval(
+      refocus.index,
+      buttons.map((b) => Number(b.dataset.actionIndex)),
+    );
+    const target = buttons.find((b) => Number(b.dataset.actionIndex) === at) ?? tableRef.current;
+    target?.focus();
+  }, [refocus, doc]);
+  const onRemoved = (index: number) => setRefocus({ index, from: doc });
+
   return (
     <section className="panel" aria-labelledby="log-title">
       <h2 id="log-title">
@@ -130,7 +171,7 @@ export function EventLog() {
         />
       </div>
       <div className="table-scroll log" ref={scrollRef}>
-        <table aria-label="Event log">
+        <table aria-label="Event log" ref={tableRef} tabIndex={-1}>
           <thead>
             <tr>
               <th>time</th>
@@ -168,7 +209,7 @@ export function EventLog() {
                   <td>{formatNumber(e.time)}</td>
                   <td>{kindLabel(e)}</td>
                   <td>{e.ids.join(", ")}</td>
-                  <td className="row-end">{removable(e)}</td>
+                  <td className="row-end">{removable(e, doc, onRemoved)}</td>
                 </tr>
               );
             })}

@@ -1,7 +1,10 @@
 // @vitest-environment jsdom
 // Removing an action from the Event log takes two presses (removeConfirm.ts): a single click, or a
 // double-click, once removed an action at once, and after a removal the rows moved up under the
-// pointer, so a double-click removed two actions (audit of session 16).
+// pointer, so a double-click removed two actions (audit of session 16). Then (audit of session 16, in
+// Chromium): the wider armed button moved out from under the pointer at wide windows, which
+// disarmed it; the ✕ of the next identical action stayed at "…" after a removal; a held Enter
+// removed; and the focus fell to the page after a removal made from the keyboard.
 import { act, cleanup, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
 import { afterEach, describe, expect, it, vi } from "vitest";
 import { EditorContext } from "../EditorContext";
@@ -50,6 +53,30 @@ async function twoVelocities() {
   return { h, log, velocities };
 }
 
+/** Two identical actions (updateBody of a at t = 0.5, as editing a's vx then vy there makes). */
+async function twoUpdates() {
+  const h = testEditor();
+  await h.editor.loadScene(
+    sceneOf([
+      { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 },
+      { time: 0.5, type: "updateBody", id: "a", v: [10, 0] },
+      { time: 0.5, type: "updateBody", id: "a", v: [10, 20] },
+    ]),
+    { undoable: false },
+  );
+  await settled(h.client);
+  act(() => h.editor.ui.setState({ t: 5 }));
+  render(
+    <EditorContext.Provider value={h.editor}>
+      <EventLog />
+    </EditorContext.Provider>,
+  );
+  const log = screen.getByRole("table", { name: "Event log" });
+  await waitFor(() => expect(within(log).getAllByRole("button", { name: /^Remove action/ })).toHaveLength(3));
+  const updates = () => h.editor.doc.actions.filter((a) => a.type === "updateBody").map((a) => a.v);
+  return { h, log, updates };
+}
+
 const B = "Remove action giveVelocity of b at t = 0.25";
 const ARMED_B = "Confirm: remove action giveVelocity of b at t = 0.25 (press again; Escape keeps it)";
 
@@ -61,7 +88,7 @@ describe("RemoveActionButton", () => {
     fireEvent.click(button);
     await settled(h.client);
     expect(velocities()).toEqual(["a", "b"]);
-    expect(button).toHaveProperty("textContent", "Remove?");
+    expect(button.textContent).toContain("Remove?");
     expect(button.getAttribute("aria-label")).toBe(ARMED_B);
     expect(h.editor.ui.getState().t).toBe(5); // the press does not reach the row
     tick(CONFIRM_DELAY_MS);
@@ -166,5 +193,91 @@ describe("RemoveActionButton", () => {
       await settled(h.client);
     });
     expect(velocities()).toEqual(["a"]);
+  });
+
+  it("armed, the button keeps what it shows in the layout: 'Remove?' is a part of it drawn outside the flow", async () => {
+    clock();
+    const { log } = await twoVelocities();
+    const button = within(log).getByRole("button", { name: B });
+    const rest = button.textContent;
+    fireEvent.click(button);
+    const prompt = button.querySelector(".log-remove-prompt");
+    expect(prompt?.textContent).toBe("Remove?"); // inside the button: pointing at it is pointing at the button
+    expect(prompt?.getAttribute("aria-hidden")).toBe("true"); // the name says it already
+    expect(button.textContent?.replace("Remove?", "")).toBe(rest); // the rest of the button is unchanged
+    // the stylesheet takes the prompt out of the layout (e2e editor-views checks the box in Chromium)
+  });
+
+  it("removing the first of two identical actions leaves the second's ✕ at rest, and it removes", async () => {
+    const tick = clock();
+    const { h, log, updates } = await twoUpdates();
+    const first = within(log).getAllByRole("button", {
+      name: "Remove action updateBody of a at t = 0.5",
+    })[0]!;
+    fireEvent.click(first);
+    tick(CONFIRM_DELAY_MS);
+    await act(async () => {
+      fireEvent.click(first);
+      await settled(h.client);
+    });
+    expect(updates()).toEqual([[10, 20]]);
+    // the log shows the scene without it: one update entry, in the row the first one had
+    await waitFor(() => expect(within(log).getAllByText("action: update body")).toHaveLength(1));
+    const second = within(log).getByRole("button", { name: /updateBody of a/ });
+    expect(second.getAttribute("aria-label")).toBe("Remove action updateBody of a at t = 0.5");
+    expect(second.getAttribute("aria-disabled")).toBe("false");
+    expect(second.textContent).toBe("✕");
+    fireEvent.click(second);
+    tick(CONFIRM_DELAY_MS);
+    await act(async () => {
+      fireEvent.click(second);
+      await settled(h.client);
+    });
+    expect(updates()).toEqual([]);
+  });
+
+  it("a held key's repeats never press it (Enter presses on keydown; only the first counts)", async () => {
+    clock();
+    const { log } = await twoVelocities();
+    const button = within(log).getByRole("button", { name: B });
+    // fireEvent returns false when the handler prevented the default action (the press)
+    expect(fireEvent.keyDown(button, { key: "Enter" })).toBe(true);
+    expect(fireEvent.keyDown(button, { key: "Enter", repeat: true })).toBe(false);
+    expect(fireEvent.keyDown(button, { key: " ", repeat: true })).toBe(false);
+    expect(fireEvent.keyDown(button, { key: "Escape", repeat: true })).toBe(true);
+  });
+
+  it("a removal from the keyboard moves the focus to the next action's ✕, else the previous one's", async () => {
+    const tick = clock();
+    const { h, log, velocities } = await twoVelocities();
+    const removeFocused = async (name: string) => {
+      const button = within(log).getByRole("button", { name });
+      button.focus();
+      fireEvent.click(button);
+      tick(CONFIRM_DELAY_MS);
+      await act(async () => {
+        fireEvent.click(button);
+        await settled(h.client);
+      });
+    };
+    // b is the last action: the focus goes to a's ✕ (the previous action)
+    await removeFocused(B);
+    expect(velocities()).toEqual(["a"]);
+    await waitFor(() =>
+      expect(document.activeElement?.getAttribute("aria-label")).toBe(
+        "Remove action giveVelocity of a at t = 0.25",
+      ),
+    );
+    // a's, with b's after it: the focus goes to b's ✕ (the next action, at a's index now)
+    await act(async () => {
+      await h.editor.undo();
+      await settled(h.client);
+    });
+    await waitFor(() =>
+      expect(within(log).getAllByRole("button", { name: /^Remove action/ })).toHaveLength(4),
+    );
+    await removeFocused("Remove action giveVelocity of a at t = 0.25");
+    expect(velocities()).toEqual(["b"]);
+    await waitFor(() => expect(document.activeElement?.getAttribute("aria-label")).toBe(B));
   });
 });

@@ -2,22 +2,37 @@
  * The ✕ of an Event-log action entry: removes that one action from the scene (Editor.removeAction,
  * one undo step) in two steps (removeConfirm.ts): the first press (click, Enter or Space) arms it
  * and it reads "Remove?"; a second press removes. Leaving it (pointer or focus), Escape, or a few
- * seconds without a press disarm it; a double-click only arms it; and a row that now shows another
- * action (the log moved up after a removal) shows its button at rest. Its accessible name says which
- * action, and when armed that the next press removes it: `Remove action updateBody of b1 at t = 4`,
+ * seconds without a press disarm it; a double-click only arms it, and so do a held key's repeats
+ * (they never press it). Armed, the button keeps its size and place: "Remove?" is drawn to its left
+ * outside the table's layout, as a part of the button (pointing at it is pointing at the button), so
+ * the second click lands on it at any window width. A row that now shows another action (the log
+ * moved up after a removal, or the scene changed: the state's key holds the scene's revision and
+ * the action's index) shows its button at rest, and a finished removal (done or refused) brings it
+ * to rest. Its accessible name says which action, and when armed that the next press removes it:
+ * `Remove action updateBody of b1 at t = 4`,
  * `Confirm: remove action updateBody of b1 at t = 4 (press again; Escape keeps it)`, then
- * `Removing action updateBody of b1 at t = 4` until the log shows the scene without it. The press does
- * not reach the row (which would jump to the entry's time).
+ * `Removing action updateBody of b1 at t = 4` until the removal is done. The press does not reach
+ * the row (which would jump to the entry's time). `onRemoved(focused)` is called once the action is
+ * removed, `focused` when the button had the keyboard focus at the confirming press (the Event log
+ * then moves the focus on: the button may be gone).
  */
 import { useEffect, useState } from "react";
 import { useEditor } from "../EditorContext";
 import { formatNumber } from "./EditableCell";
-import { ARMED_MS, current, disarm, idle, press } from "./removeConfirm";
+import { ARMED_MS, current, disarm, finished, idle, press } from "./removeConfirm";
 
-export function RemoveActionButton(props: { index: number; time: number; type: string; id: string | null }) {
+export function RemoveActionButton(props: {
+  index: number;
+  time: number;
+  type: string;
+  id: string | null;
+  /** The scene revision (docRevision) of the log page that shows the entry. */
+  revision: number;
+  onRemoved?: (focused: boolean) => void;
+}) {
   const editor = useEditor();
-  const { index, time, type, id } = props;
-  const key = `${index} ${time} ${type} ${id}`;
+  const { index, time, type, id, revision, onRemoved } = props;
+  const key = `${revision} ${index} ${time} ${type} ${id}`;
   const [stored, setState] = useState(() => idle(key));
   const state = current(stored, key);
   const armed = state.phase === "armed";
@@ -39,6 +54,7 @@ export function RemoveActionButton(props: { index: number; time: number; type: s
       className={armed ? "log-remove armed" : "log-remove"}
       aria-label={label}
       aria-disabled={state.phase === "removing"}
+      data-action-index={index}
       title={
         armed
           ? "Click again to remove this action (Undo brings it back)"
@@ -49,20 +65,33 @@ export function RemoveActionButton(props: { index: number; time: number; type: s
         const next = press(state, performance.now());
         setState(next.state);
         if (!next.remove) return;
+        const focused = document.activeElement === ev.currentTarget;
         void editor.removeAction(index, { time, type, id }).then((err) => {
-          // Refused: the message says why; the button is at rest again.
-          if (err !== null) setState((s) => (s.key === key ? idle(key) : s));
+          // Done or refused (the message says why): at rest again, whichever action the row shows now.
+          setState((s) => finished(s));
+          if (err === null) onRemoved?.(focused);
         });
       }}
       onMouseLeave={() => setState((s) => disarm(current(s, key)))}
       onBlur={() => setState((s) => disarm(current(s, key)))}
       onKeyDown={(ev) => {
+        // A held key's repeats would press it again and again (Enter presses on keydown): only the
+        // first keydown counts.
+        if (ev.repeat && (ev.key === "Enter" || ev.key === " ")) {
+          ev.preventDefault();
+          return;
+        }
         if (ev.key !== "Escape" || !armed) return;
         ev.stopPropagation();
         setState((s) => disarm(current(s, key)));
       }}
     >
-      {armed ? "Remove?" : state.phase === "removing" ? "…" : "✕"}
+      {armed && (
+        <span className="log-remove-prompt" aria-hidden="true">
+          Remove?
+        </span>
+      )}
+      {state.phase === "removing" ? "…" : "✕"}
     </button>
   );
 }

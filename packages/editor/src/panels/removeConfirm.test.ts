@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { CONFIRM_DELAY_MS, current, disarm, idle, press } from "./removeConfirm";
+import { CONFIRM_DELAY_MS, current, disarm, finished, idle, press } from "./removeConfirm";
 
 describe("removeConfirm", () => {
   it("a first press arms, a second press after the delay removes, once", () => {
@@ -22,5 +22,14 @@ describe("removeConfirm", () => {
     expect(disarm(idle("k"))).toEqual(idle("k"));
     expect(current(armed, "other")).toEqual(idle("other"));
     expect(current(armed, "k")).toBe(armed);
+  });
+
+  it("a finished removal (done or refused) brings the button to rest; finishing touches no other phase", () => {
+    const removing = press(press(idle("k"), 0).state, CONFIRM_DELAY_MS).state;
+    expect(removing.phase).toBe("removing");
+    expect(finished(removing)).toEqual(idle("k"));
+    const armed = press(idle("k"), 0).state;
+    expect(finished(armed)).toBe(armed);
+    expect(finished(idle("k"))).toEqual(idle("k"));
   });
 });

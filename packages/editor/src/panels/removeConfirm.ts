@@ -3,9 +3,11 @@
  * transitions. A first press arms the button (it then reads "Remove?"); a second press at least
  * CONFIRM_DELAY_MS later removes the action; a press sooner (the second click of a double-click, a
  * held key's repeat) leaves it armed. Leaving the button (pointer, focus), Escape, or ARMED_MS
- * without a press disarm it. The state belongs to one action (`key`): once the row shows another
- * action (the log moved up under the pointer after a removal), the button is at rest again, so a
- * press meant for the action removed only arms the next one.
+ * without a press disarm it. A removal that finishes (done or refused) brings the button to rest.
+ * The state belongs to one action (`key`, which must tell every action of the scene apart: it holds
+ * the scene's revision and the action's index): once the row shows another action (the log moved up
+ * under the pointer after a removal), the button is at rest again, so a press meant for the action
+ * removed only arms the next one, and the next action never shows the removed one's "removing".
  */
 
 /** A second press sooner than this after arming does not confirm (ms). */
@@ -17,7 +19,7 @@ export type ConfirmPhase = "idle" | "armed" | "removing";
 
 export interface ConfirmState {
   phase: ConfirmPhase;
-  /** The action the state belongs to (RemoveActionButton's actionKey). */
+  /** The action the state belongs to (RemoveActionButton's key: scene revision and action index). */
   key: string;
   /** When the button was armed (ms, same clock as press's `now`). */
   at: number;
@@ -40,4 +42,9 @@ export function press(s: ConfirmState, now: number): { state: ConfirmState; remo
 /** Leaving the button, Escape or the timeout: an armed button is at rest again. */
 export function disarm(s: ConfirmState): ConfirmState {
   return s.phase === "armed" ? idle(s.key) : s;
+}
+
+/** The removal asked for has finished (done or refused): the button is at rest again. */
+export function finished(s: ConfirmState): ConfirmState {
+  return s.phase === "removing" ? idle(s.key) : s;
 }
