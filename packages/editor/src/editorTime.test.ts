@@ -40,6 +40,32 @@ async function computing(client: ReturnType<typeof testEditor>["client"]): Promi
   }
 }
 
+describe("EditorTime.setTime while the history is computed again", () => {
+  it("a time dragged past the recomputation's progress, inside the history the user had, is held there", async () => {
+    // Audit of session 16: the slider spans the whole history during an undo's recomputation,
+    // but a time dragged past its progress jumped back to it.
+    const h = await loaded(farMeeting);
+    expect(h.client.getSnapshot().horizon).toBe(10);
+    h.editor.setTime(2);
+    const resume = stall(h.host);
+    expect(await h.editor.edit([{ time: 2, type: "giveVelocity", id: "b", v: [0.1, 0] }])).toBeNull();
+    await computing(h.client);
+    expect(h.client.getSnapshot().horizon).toBe(2);
+    h.editor.setTime(8);
+    expect(h.editor.ui.getState().t).toBe(8);
+    // the editor's compute-ahead (10 s from the edit) took the recomputation over: up to t = 12
+    expect(h.client.getSnapshot().computing).toMatchObject({ restore: true, targetTime: 12 });
+    h.editor.setTime(50); // past the end of the computation running: its end
+    expect(h.editor.ui.getState().t).toBe(12);
+    h.editor.setTime(8);
+    resume();
+    (h.host as unknown as { kick(): void }).kick();
+    await settled(h.client);
+    expect(h.client.getSnapshot().horizon).toBeGreaterThanOrEqual(10);
+    expect(h.editor.ui.getState().t).toBe(8);
+  });
+});
+
 describe("EditorTime event steps", () => {
   it("quick presses of → each step one event, from where the previous step landed", async () => {
     // Each step read the current time before the previous step's reply had moved it: five quick

@@ -1,6 +1,6 @@
 /**
  * EditorTime: the time controls of an Editor (editor.ts), over its EditorSession and EditorUndo: the current time
- * (kept within [0, horizon]), going to a typed time (computing up to it first when it lies past the
+ * (kept within [0, horizon], or the end of a history being computed again), going to a typed time (computing up to it first when it lies past the
  * horizon), stepping from event to event (computing ahead to the next event past the horizon), play
  * and pause (saying why playback cannot start) and the playback speed. None of them is an edit:
  * nothing here is recorded in the undo history.
@@ -9,6 +9,7 @@
 import { shown } from "./editorSession";
 import { EditorUndo } from "./editorUndo";
 import { canExtend } from "./playback";
+import { restoreTarget } from "./remote/protocol";
 
 export class EditorTime extends EditorUndo {
   /** The tail of the chain of event steps (see stepEvent). */
@@ -16,9 +17,16 @@ export class EditorTime extends EditorUndo {
   /** How many times the user cancelled a computation (Cancel): tells a cancelled one from one done. */
   private cancels = 0;
 
+  /**
+   * Moves the time to t, kept within [0, end]: the horizon, or while the history the user had is
+   * computed again (an undo, an edit in the past) the end of that history, where the time is then
+   * held until the recomputation reaches it (a slider dragged there once jumped back to the
+   * recomputation's progress).
+   */
   setTime(t: number): void {
-    const h = this.client.getSnapshot().horizon;
-    this.ui.setState({ t: Math.min(Math.max(t, 0), h) });
+    const info = this.client.getSnapshot();
+    const end = Math.max(info.horizon, restoreTarget(info.computing));
+    this.ui.setState({ t: Math.min(Math.max(t, 0), end) });
   }
 
   override cancelCompute(): void {

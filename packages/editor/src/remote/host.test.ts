@@ -131,8 +131,14 @@ describe("TimelineHost on a second edit while the first one's history is recompu
     const { host, infos } = fakeHost();
     host.handle({ id: 1, op: "compute", until: { time: 5 }, restore: true });
     expect(infos().at(-1)!.computing).toMatchObject({ targetTime: 5, restore: true });
+    // a later time asked meanwhile takes it over and brings that history back too: still a restore
     host.handle({ id: 2, op: "compute", until: { time: 50 } });
-    expect(infos().at(-1)!.computing).toMatchObject({ targetTime: 50, restore: false });
+    expect(infos().at(-1)!.computing).toMatchObject({ targetTime: 50, restore: true });
+    // a count of events says nothing of where it ends: not a restore
+    host.handle({ id: 3, op: "compute", until: { events: 10 } });
+    expect(infos().at(-1)!.computing).toMatchObject({ targetEvents: 10, restore: false });
+    host.handle({ id: 4, op: "compute", until: { time: 60 } });
+    expect(infos().at(-1)!.computing).toMatchObject({ targetTime: 60, restore: false });
   });
 });
 

@@ -117,8 +117,17 @@ export class HostCompute {
       this.changed(false);
       return;
     }
+    // A computation to a later time that replaces a running restore brings the user's history back
+    // too (and more): it stays a restore, so the editor keeps that history's end (the slider's range,
+    // a time held in it) and a shorter request does not cut it.
+    const covers =
+      running?.restore === true &&
+      until?.time !== undefined &&
+      until.events === undefined &&
+      running.targetTime !== null &&
+      h + until.time >= running.targetTime;
     this.job = {
-      restore,
+      restore: restore || covers,
       events: 0,
       targetEvents: until?.events ?? null,
       targetTime: until?.time === undefined ? null : h + until.time,
