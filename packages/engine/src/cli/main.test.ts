@@ -168,3 +168,19 @@ it("SIGTERM during state --at T prints the bodies where the computation got to a
   expect(result.events).toBeGreaterThan(0);
   expect(result.time).toBeLessThan(1e12);
 }, 60_000);
+
+it("Ctrl-C while the bin waits for its scene on standard input ends it at once (killed by the signal)", async () => {
+  // Review of session 16: the handlers were installed at start, and a handler cannot run while a
+  // synchronous read waits, so SIGINT was swallowed until the input ended.
+  const child = spawn("node", [bin, "simulate", "-"], { stdio: ["pipe", "pipe", "pipe"] });
+  child.stdin.write('{"format": "chapgame",'); // and the pipe is held open
+  await new Promise((r) => setTimeout(r, 500)); // the bin has started and waits in its read
+  const closed = new Promise<{ code: number | null; killedBy: string | null }>((done) =>
+    child.on("close", (code, killedBy) => done({ code, killedBy })),
+  );
+  child.kill("SIGINT");
+  const timer = setTimeout(() => child.stdin.end(), 10_000); // would end the read, much later
+  const r = await closed;
+  clearTimeout(timer);
+  expect(r).toEqual({ code: null, killedBy: "SIGINT" });
+}, 30_000);

@@ -8,8 +8,10 @@
  * SIGINT (Ctrl-C) and SIGTERM during the computation stop it: the run computes in slices with a
  * setImmediate pause between them (runCliInterruptible), so the handler runs, and the result up to
  * there is printed with "reason": "interrupted"; the exit status is 130 (SIGINT) or 143 (SIGTERM).
- * Once the computation is over the handlers are removed, so a signal while the result is written
- * ends the process at once, as without them.
+ * The handlers are installed only while the computation runs: before it (reading standard input,
+ * parsing) and once it is over (writing the result) a signal ends the process at once, as without
+ * them (a handler cannot run while a synchronous read waits, so one installed then swallowed the
+ * signal).
  * The engine is built without Node's types (it must not depend on Node), so the few Node APIs used
  * here are typed locally and node:fs is loaded by a dynamic import.
  */
@@ -81,9 +83,17 @@ const onSignal = {
   },
 };
 const signals = ["SIGINT", "SIGTERM"] as const;
-for (const s of signals) proc.on(s, onSignal[s]);
+let catching = false;
+/** Catch the signals (the computation starts). */
+function startCatching(): void {
+  if (catching) return;
+  catching = true;
+  for (const s of signals) proc.on(s, onSignal[s]);
+}
 /** Back to the default action of the signals (end the process at once). */
 function stopCatching(): void {
+  if (!catching) return;
+  catching = false;
   for (const s of signals) proc.removeListener(s, onSignal[s]);
 }
 
@@ -96,6 +106,7 @@ try {
       stdout: writeOut,
       stderr: (text) => proc.stderr.write(text),
       progress: proc.stderr.isTTY === true,
+      computing: startCatching,
       computed: stopCatching,
       ...versionField(),
     },

@@ -38,6 +38,9 @@ export interface CliIO {
   progress: boolean;
   /** the package's version, for --version (the bin reads it from package.json) */
   version?: string;
+  /** Called when the computation starts, after the scene is read and checked (the bin catches
+   *  interrupts from then on: while it reads or parses, a Ctrl-C ends the process at once). */
+  computing?: () => void;
   /** Called once the computation is over, before the result is written (the bin stops catching
    *  interrupts then: a Ctrl-C while a long result is written ends the process at once). */
   computed?: () => void;
@@ -176,6 +179,7 @@ function* command(argv: readonly string[], io: CliIO): Generator<void, number, v
     };
     let time: number;
     let end: RunEnd | undefined;
+    io.computing?.();
     try {
       if (cmd.command === "state") {
         // from horizon 0 (nothing computed yet), `time: at` ahead is exactly up to at
