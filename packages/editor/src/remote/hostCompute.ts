@@ -57,7 +57,8 @@ export class HostCompute {
   private lastRecord = Number.NEGATIVE_INFINITY;
   private lastInfo = Number.NEGATIVE_INFINITY;
   /** A computation asked during a check that passed before its restore job had brought the old
-   *  history back: it starts when that job (and no other) ends. */
+   *  history back: it starts when that job ends, or the job that replaced it (not after a Cancel,
+   *  an edit or a load, which drop it). */
   private afterRestore: { job: Job; until: Until | null } | null = null;
 
   constructor(
@@ -126,6 +127,7 @@ export class HostCompute {
       until.events === undefined &&
       running.targetTime !== null &&
       h + until.time >= running.targetTime;
+    const after = this.afterRestore;
     this.job = {
       restore: restore || covers,
       events: 0,
@@ -134,6 +136,8 @@ export class HostCompute {
       startHorizon: h,
       budget: 256,
     };
+    // A computation asked during a check waits for the job that took the restore's place.
+    if (after !== null && after.job === running) after.job = this.job;
     this.idle = false;
     this.stopped = null;
     this.changed(false);

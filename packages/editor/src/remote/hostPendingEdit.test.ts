@@ -135,6 +135,24 @@ describe("TimelineHost: an edit in the past before later actions", () => {
     expect(last.horizon).toBeGreaterThan(400);
   });
 
+  it("a computation asked during the check waits also for a later computation that took the restore over", () => {
+    // Review of session 16: it was dropped without a word when another job replaced the restore.
+    const h = slowHost();
+    h.host.handle({ id: 9, op: "compute", until: { time: 360 } }); // a history to t = 400
+    h.run();
+    h.host.handle({ id: 2, op: "apply", actions: [{ time: 3, type: "giveVelocity", id: "a", v: [1, 1] }] });
+    h.host.handle({ id: 3, op: "compute", until: { events: 5 } });
+    for (let k = 0; k < 100_000 && h.reply(2) === undefined; k++) h.tasks.shift()!();
+    expect(h.reply(2)).toMatchObject({ ok: true });
+    const horizon = h.infos().at(-1)!.horizon;
+    expect(horizon).toBeLessThan(400); // the check passed; the old history is still coming back
+    h.host.handle({ id: 4, op: "compute", until: { time: 500 } }); // e.g. the editor's auto-extend
+    h.run();
+    const counted = h.infos().filter((i) => i.computing?.targetEvents === 5);
+    expect(counted.length).toBeGreaterThan(0);
+    expect(counted[0]!.computing!.startHorizon).toBe(horizon + 500);
+  });
+
   it("Cancel during the check takes the edit back and says so", () => {
     const h = slowHost();
     const before = h.infos().at(-1)!.eventCount;
