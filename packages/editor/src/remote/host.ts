@@ -59,6 +59,7 @@ export class TimelineHost extends HostCompute {
           message: "the scene was replaced before the edit's later actions were checked",
           path: null,
         });
+        this.pending.afterCheck = undefined; // asked for the scene this load replaces
         const previous = this.tl;
         this.job = null;
         this.tl = tl;
