@@ -6,7 +6,7 @@
  * compares them), with its path in the scene's error style (`actions[2].body.r`) and its line and
  * column, or null. Linear in the text; no recursion (jsonPaths.ts walks it).
  */
-import { lineColumn, walkJson } from "./jsonPaths.js";
+import { type JsonToken, lineColumn, walkJson } from "./jsonPaths.js";
 
 export { lineColumn } from "./jsonPaths.js";
 
@@ -21,8 +21,13 @@ export interface DuplicateKey {
 
 /** First key repeated within one object of the (valid) JSON `text`, or null. */
 export function firstDuplicateKey(text: string): DuplicateKey | null {
-  const dup = walkJson(text, (t) =>
-    t.kind === "key" && t.repeated ? { path: t.path, key: t.key, ...lineColumn(text, t.pos) } : undefined,
-  );
-  return dup ?? null;
+  return walkJson(text, (t) => duplicateOf(text, t)) ?? null;
+}
+
+/** One token of walkJson: the key if it repeats one of its object (for a walk that also looks for
+ *  other things: parse.ts). */
+export function duplicateOf(text: string, t: JsonToken): DuplicateKey | undefined {
+  return t.kind === "key" && t.repeated
+    ? { path: t.path, key: t.key, ...lineColumn(text, t.pos) }
+    : undefined;
 }

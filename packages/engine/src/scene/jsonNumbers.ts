@@ -7,7 +7,7 @@
  * column, or null; and every literal with a non-zero digit that reads as 0 or -0, by path (to
  * explain a refusal of that field: `r` must be > 0). Linear; no recursion (jsonPaths.ts walks it).
  */
-import { lineColumn, walkJson } from "./jsonPaths.js";
+import { type JsonToken, lineColumn, walkJson } from "./jsonPaths.js";
 
 export interface NumberLiteral {
   /** Path of the value, e.g. `actions[0].m` or `actions[0].v[1]`. */
@@ -28,15 +28,31 @@ export function unrepresentableNumbers(text: string): {
   underflow: Map<string, string>;
 } {
   const underflow = new Map<string, string>();
-  const overflow = walkJson(text, (t) => {
-    if (t.kind !== "number") return undefined;
-    const lit = t.literal;
-    // only an exponent or a very long literal can leave the range of a double
-    if (lit.length <= SHORT && !lit.includes("e") && !lit.includes("E")) return undefined;
-    const v = Number(lit);
-    if (!Number.isFinite(v)) return { path: t.path, literal: lit, ...lineColumn(text, t.pos) };
-    if (v === 0 && /[1-9]/.test(lit.split(/[eE]/)[0] as string)) underflow.set(t.path, lit);
-    return undefined;
-  });
+  const overflow = walkJson(text, (t) => overflowOf(text, t, underflow));
   return { overflow: overflow ?? null, underflow };
+}
+
+/** One token of walkJson: the literal if it overflows; one that underflows is added to `underflow`
+ *  (path to literal). For a walk that also looks for other things (parse.ts). */
+export function overflowOf(
+  text: string,
+  t: JsonToken,
+  underflow: Map<string, string>,
+): NumberLiteral | undefined {
+  if (t.kind !== "number") return undefined;
+  // only an exponent or a very long literal can leave the range of a double
+  if (t.end - t.pos <= SHORT && !hasExponent(text, t.pos, t.end)) return undefined;
+  const lit = t.literal;
+  const v = Number(lit);
+  if (!Number.isFinite(v)) return { path: t.path, literal: lit, ...lineColumn(text, t.pos) };
+  if (v === 0 && /[1-9]/.test(lit.split(/[eE]/)[0] as string)) underflow.set(t.path, lit);
+  return undefined;
+}
+
+function hasExponent(text: string, from: number, to: number): boolean {
+  for (let i = from; i < to; i++) {
+    const c = text.charCodeAt(i);
+    if (c === 101 || c === 69) return true;
+  }
+  return false;
 }

@@ -4,7 +4,12 @@ import { type JsonToken, walkJson } from "./jsonPaths.js";
 function tokens(text: string): JsonToken[] {
   const out: JsonToken[] = [];
   walkJson(text, (t) => {
-    out.push(t);
+    // path and literal are read during the visit
+    out.push(
+      t.kind === "key"
+        ? { kind: t.kind, path: t.path, key: t.key, pos: t.pos, repeated: t.repeated }
+        : { kind: t.kind, path: t.path, literal: t.literal, pos: t.pos, end: t.end },
+    );
     return undefined;
   });
   return out;
@@ -36,6 +41,6 @@ describe("walkJson", () => {
   });
 
   it("gives a number at the top level the empty path", () => {
-    expect(tokens("42")).toEqual([{ kind: "number", path: "", literal: "42", pos: 0 }]);
+    expect(tokens("42")).toEqual([{ kind: "number", path: "", literal: "42", pos: 0, end: 2 }]);
   });
 });

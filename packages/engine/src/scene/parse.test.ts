@@ -363,4 +363,17 @@ describe("parseScene on number literals a double cannot hold", () => {
       x: 0,
     });
   });
+
+  it("names a literal deep in meta by a shortened path, and a very long literal by its ends", () => {
+    // Review of session 16: a 1e999 a million levels deep in meta gave a 3 MB message.
+    const depth = 5000;
+    const deep = `{"format":"chapgame","version":1,"meta":{"x":${"[".repeat(depth)}1e999${"]".repeat(depth)}},"actions":[]}`;
+    const e = refused(deep);
+    expect(e.message.length).toBeLessThan(600);
+    expect(e.message).toMatch(
+      /^meta\.x\[0\]\[0\].*…\(\d+ characters\)….*\[0\]: the number 1e999 at line 1, column \d+ is beyond/,
+    );
+    const long = `{"format":"chapgame","version":1,"actions":[{"time":0,"type":"addBody","id":"a","x":0,"y":0,"r":1,"m":1${"0".repeat(400)}}]}`;
+    expect(() => parseScene(long)).toThrow(/^actions\[0\]\.m: the number 10{19}…0{12} at line 1/);
+  });
 });

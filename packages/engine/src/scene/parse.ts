@@ -11,8 +11,9 @@
 import { checkAction } from "./action.js";
 import { SceneError } from "./errors.js";
 import { isObject, nonNegative, onlyKeys, vec2 } from "./fields.js";
-import { firstDuplicateKey, lineColumn } from "./jsonDuplicates.js";
-import { type NumberLiteral, unrepresentableNumbers } from "./jsonNumbers.js";
+import { type DuplicateKey, duplicateOf, lineColumn } from "./jsonDuplicates.js";
+import { type NumberLiteral, overflowOf } from "./jsonNumbers.js";
+import { walkJson } from "./jsonPaths.js";
 import { jsonErrorOffset } from "./jsonSyntax.js";
 import { checkFieldMagnitudes } from "./magnitudes.js";
 import { checkMeta } from "./meta.js";
@@ -84,14 +85,15 @@ export function printable(message: string): string {
 /** The refusal of a number literal beyond the largest double (JSON.parse would read it as ±Infinity). */
 function overflowError(o: NumberLiteral): SceneError {
   const at = `line ${o.line}, column ${o.column}`;
+  const shown = o.literal.length > 40 ? `${o.literal.slice(0, 20)}…${o.literal.slice(-12)}` : o.literal;
   const infinity = o.literal.startsWith("-") ? "-Infinity" : "Infinity";
   const fix =
     /(^|\.)m$/.test(o.path) && infinity === "Infinity"
       ? 'for an immovable body (an infinite mass) write the string "Infinity"; otherwise write a finite number'
       : "write a finite number";
   return new SceneError(
-    o.path,
-    `the number ${o.literal} at ${at} is beyond the largest double (about 1.8e308): JSON would read it as ${infinity}; ${fix}`,
+    shortPath(o.path),
+    `the number ${shown} at ${at} is beyond the largest double (about 1.8e308): JSON would read it as ${infinity}; ${fix}`,
   );
 }
 
@@ -110,17 +112,36 @@ function readText(input: string): { raw: unknown; underflow: Map<string, string>
     const message = (e as Error).message;
     throw new SceneError("json", `invalid JSON${where(text)} (${printable(message)})`);
   }
-  // JSON.parse keeps the last of two equal keys silently: the first value would be lost.
-  const dup = firstDuplicateKey(text);
-  if (dup !== null)
+  // One walk over the text (the first problem in text order is reported): JSON.parse keeps the
+  // last of two equal keys silently (the first value would be lost), and reads 1e999 as Infinity
+  // and 1e-999 as 0 without a word.
+  const underflow = new Map<string, string>();
+  const found = walkJson<{ dup: DuplicateKey } | { overflow: NumberLiteral }>(text, (t) => {
+    const dup = duplicateOf(text, t);
+    if (dup !== undefined) return { dup };
+    const overflow = overflowOf(text, t, underflow);
+    // a number alone at the top level is refused as not a scene (checkScene)
+    return overflow !== undefined && overflow.path !== "" ? { overflow } : undefined;
+  });
+  if (found !== undefined && "dup" in found) {
+    const { dup } = found;
     throw new SceneError(
-      dup.path,
+      shortPath(dup.path),
       `duplicate key "${dup.key}" at line ${dup.line}, column ${dup.column}: an object may name a key only once (JSON would keep the last value and drop the first)`,
     );
-  // JSON.parse reads 1e999 as Infinity and 1e-999 as 0 without a word.
-  const numbers = unrepresentableNumbers(text);
-  if (numbers.overflow !== null && numbers.overflow.path !== "") throw overflowError(numbers.overflow);
-  return { raw, underflow: numbers.underflow };
+  }
+  if (found !== undefined) throw overflowError(found.overflow);
+  return { raw, underflow };
+}
+
+/** Paths longer than this are shortened in errors (a key nested a million levels deep in `meta`). */
+const PATH_SHOWN_MAX = 200;
+
+/** `path`, its middle elided when it is longer than PATH_SHOWN_MAX characters. */
+function shortPath(path: string): string {
+  if (path.length <= PATH_SHOWN_MAX) return path;
+  const half = PATH_SHOWN_MAX / 2;
+  return `${path.slice(0, half)}…(${path.length - PATH_SHOWN_MAX} characters)…${path.slice(-half)}`;
 }
 
 /** `e` with the literal that read as 0 named, when its field (or an element of it) wrote one. */
