@@ -3,11 +3,13 @@
  * change the user had asked for when they pressed it, and Redo redoes the last change Undo took
  * (doc/undoIntents.ts): an Undo pressed while that change is still queued or being checked is bound
  * to it. During the check of its later actions the change is taken back at once (as Cancel does)
- * and nothing else is undone; a change the check refuses is not there to undo, so an Undo bound to
- * it undoes nothing (it once undid the edit before it). A change taken back so goes to Redo, which
- * brings it back checked again (a later action may refuse it then); like any change made it
- * cleared Redo first (EditorSession.tookBack), so Redo then holds it alone. Each says what it did
- * ("Undone: giveVelocity of "a" at t = 4 s.").
+ * and nothing else is undone, if it is the last change asked (sceneChanges.ts: an Undo bound to a
+ * change with another queued behind it undoes it at its turn); a change the check refuses is not
+ * there to undo, so an Undo bound to it undoes nothing (it once undid the edit before it). A change
+ * taken back so goes to Redo, which brings it back checked again: a later action may refuse it then
+ * (it leaves Redo), while a check cancelled or cut short by an engine restart leaves it in Redo.
+ * Like any change made it cleared Redo first (EditorSession.tookBack), so Redo then holds it alone.
+ * Each says what it did ("Undone: giveVelocity of "a" at t = 4 s.").
  */
 
 import { summarizeEdit } from "./doc/editSummary";
@@ -24,7 +26,7 @@ export class EditorUndo extends EditorSession {
   async undo(): Promise<void> {
     const { intents, ticket } = undoAsked(this.intents.getState());
     this.intents.setState(intents);
-    // The change is being applied or checked: take it back now rather than wait for the check.
+    // The last change asked is being applied or checked: take it back now rather than wait for the check.
     this.takeBackIfUndone(ticket);
     const loaded = await this.serial(() => this.undoNow(ticket));
     if (loaded) await this.afterReload();
@@ -75,7 +77,9 @@ export class EditorUndo extends EditorSession {
 
   /**
    * The queued part of undo and redo: whether the scene was loaded (then `said` is shown). A scene
-   * never checked is checked as a rewrite is; refused, it leaves Redo (it cannot be brought back).
+   * never checked is checked as a rewrite is; refused by a later action (the refusal names it), it
+   * leaves Redo (it cannot be brought back). A check cancelled, or answered "engine restarted",
+   * decided nothing: the scene stays in Redo.
    */
   private async restore(scene: SceneFile, history: History, said: string): Promise<boolean> {
     const check = this.unchecked.has(scene);
@@ -83,7 +87,7 @@ export class EditorUndo extends EditorSession {
       if (check) this.unconfirmed = this.doc; // what a restart loads meanwhile
       await this.client.load(scene, this.keepTo(), check);
     } catch (e) {
-      if (!check) {
+      if (!check || !namesAction(e)) {
         this.fail(e);
         return false;
       }
@@ -99,4 +103,9 @@ export class EditorUndo extends EditorSession {
     this.info(said);
     return true;
   }
+}
+
+/** Whether a refusal names an action (the engine's path `actions[i]`), as a later action refusing a change does. */
+function namesAction(e: unknown): boolean {
+  return typeof (e as { path?: unknown } | null)?.path === "string";
 }

@@ -1,6 +1,7 @@
 // Random short sequences of edits, Undo, Redo and Cancel over a slow host (an edit in the past is
 // checked over many rounds, so an Undo, a Redo or a Cancel asked after it meets it queued, during
-// its check or after), compared with the Undo/Redo a user expects (testing/undoModel.ts). After
+// its check or after), also two or three edits asked together with Undos and Redos bound to them,
+// compared with the Undo/Redo a user expects (testing/undoModel.ts). After
 // each step: the scene holds exactly the surviving edits, every Redo entry is the scene redoing it
 // must give (no edit made obsolete by a newer edit comes back), and Redo holds no more entries than
 // steps were undone. The seed is printed; UNDO_SEED=<n> replays one.
@@ -10,16 +11,30 @@ import type { Action, SceneFile } from "./engineTypes";
 import { UNDONE_DURING_CHECK } from "./remote/protocol";
 import { settled, testEditor } from "./testing/harness";
 import { boxScene } from "./testing/scenes";
-import { emptyModel, made, redone, takenBack, type UndoModel, undone } from "./testing/undoModel";
+import {
+  askedTogether,
+  emptyModel,
+  made,
+  type Outcome,
+  redone,
+  takenBack,
+  type UndoModel,
+  undone,
+} from "./testing/undoModel";
 
 const addE: Action = { time: 30, type: "addBody", id: "e", x: 50, y: 50, r: 1, m: 1 };
 const base: SceneFile = boxScene([addE]);
 
-/** Edit `k`: a velocity given at its own time before e's addition, or (one in four) a disc on e's place. */
-function editOf(k: number): Action {
-  const time = 2 + k * 0.37;
-  if (k % 4 === 3) return { time, type: "addBody", id: `z${k}`, x: 50, y: 50.5, r: 1, m: 1 };
-  return { time, type: "giveVelocity", id: "abcd"[k % 4] as string, v: [(k % 5) - 2, 1] };
+/**
+ * Edit `4k + j` (the j-th of the edits step k asks, j < 4): a velocity given at its own time before
+ * e's addition, or (one in four) a disc on e's place.
+ */
+function editOf(e: number): Action {
+  const k = Math.floor(e / 4);
+  const j = e % 4;
+  const time = 2 + k * 0.37 + j * 0.09;
+  if ((k + j) % 4 === 3) return { time, type: "addBody", id: `z${k}_${j}`, x: 50, y: 50.5, r: 1, m: 1 };
+  return { time, type: "giveVelocity", id: "abcd"[(k + j) % 4] as string, v: [(k % 5) - 2, 1] };
 }
 
 /** An action as the sequences tell them apart (each edit has its own time). */
@@ -86,8 +101,12 @@ interface Step {
   undone: (n: number) => number;
 }
 
-/** One random step: an edit, alone or with an Undo (and a Redo) or a Cancel at a random moment; Undo; Redo. */
-async function step(h: Harness, m: Model, next: number, rnd: () => number): Promise<Step> {
+/**
+ * One random step (the k-th): an edit, alone or with an Undo (and a Redo) or a Cancel at a random
+ * moment; edits asked together with Undos and Redos; Undo; Redo.
+ */
+async function step(h: Harness, m: Model, k: number, rnd: () => number): Promise<Step> {
+  const next = 4 * k;
   const r = rnd();
   const e = h.editor;
   const same = (n: number) => n;
@@ -109,7 +128,7 @@ async function step(h: Harness, m: Model, next: number, rnd: () => number): Prom
     const plain = (n: number) => (m.past.length > 0 ? n + 1 : n);
     return { what: `${what}${res}, then Undo`, model: undone(m), undone: plain };
   }
-  if (r < 0.6) {
+  if (r < 0.55) {
     const edit = e.edit([editOf(next)]);
     const when = await wait(h, edit, rnd);
     const bound = inFlight(h);
@@ -124,7 +143,8 @@ async function step(h: Harness, m: Model, next: number, rnd: () => number): Prom
     const model = redone(takenBack(m, next), !back);
     return { what: `${what}taken back, ${back ? "redone" : "refused"}`, model, undone: () => 0 };
   }
-  if (r < 0.7) {
+  if (r < 0.68) return together(h, m, next, rnd);
+  if (r < 0.75) {
     const edit = e.edit([editOf(next)]);
     await checkingOr(h, edit);
     e.cancelCompute();
@@ -134,7 +154,7 @@ async function step(h: Harness, m: Model, next: number, rnd: () => number): Prom
     if (res !== null) return { what: `edit ${next}, Cancel: ${res}`, model: m, undone: same };
     return { what: `edit ${next}, Cancel: made`, model: made(m, next), undone: () => 0 };
   }
-  if (r < 0.85) {
+  if (r < 0.87) {
     await e.undo();
     return { what: "Undo", model: undone(m), undone: (n) => (m.past.length > 0 ? n + 1 : n) };
   }
@@ -147,6 +167,41 @@ async function step(h: Harness, m: Model, next: number, rnd: () => number): Prom
     model: redone(m, refused),
     undone: (n) => (first !== undefined ? n - 1 : n),
   };
+}
+
+/**
+ * Two or three edits (`first`, `first + 1`...) asked one after another, then, at a random moment,
+ * Undos (up to one more than the edits) and Redos (up to as many) asked at once: while the edits are
+ * in flight they are bound to them (the last edit first). Taking an edit back with a later one
+ * queued behind it lost it from Redo (review of session 16).
+ */
+async function together(h: Harness, m: Model, first: number, rnd: () => number): Promise<Step> {
+  const e = h.editor;
+  const n = 2 + Math.floor(rnd() * 2);
+  const ids = Array.from({ length: n }, (_, j) => first + j);
+  const asked = ids.map((id) => e.edit([editOf(id)]));
+  const when = await wait(h, asked[0] as Promise<unknown>, rnd);
+  const undos = Math.floor(rnd() * (n + 2));
+  const redos = Math.floor(rnd() * (undos + 1));
+  const bound = inFlight(h); // else all were answered first: the Undos are plain ones
+  const moves = [
+    ...Array.from({ length: undos }, () => e.undo()),
+    ...Array.from({ length: redos }, () => e.redo()),
+  ];
+  const res = await Promise.all(asked);
+  await Promise.all(moves);
+  await settled(h.client);
+  const outcome = (x: string | null): Outcome =>
+    x === null ? "made" : x === UNDONE_DURING_CHECK ? "takenBack" : "refused";
+  const edits = ids.map((id, j) => [id, outcome(res[j] ?? null)] as const);
+  const refused = (edit: number) => !has(h, edit);
+  const model = bound
+    ? askedTogether(m, edits, undos, redos, refused)
+    : askedTogether(askedTogether(m, edits, 0, 0, refused), [], undos, redos, refused);
+  const what = `edits ${ids.join(", ")} (${edits.map(([, o]) => o).join(", ")}), ${undos} Undo, ${redos} Redo ${when}${bound ? "" : " (answered first)"}`;
+  const reset = edits.some(([, o]) => o !== "refused");
+  const grown = model.future.length - m.future.length;
+  return { what, model, undone: (u) => (reset ? model.future.length : u + grown) };
 }
 
 /** The editor's scene and history against the model's. */
@@ -178,15 +233,18 @@ describe("Undo, Redo and Cancel in random sequences around edits' checks", () =>
       let undoneSteps = 0; // steps undone since the last edit made, less those redone
       const steps: string[] = [];
       for (let next = 0; next < 10; next++) {
-        const done = await step(h, m, run * 10 + next, rnd);
-        await settled(h.client);
-        steps.push(done.what);
-        m = done.model;
-        undoneSteps = done.undone(undoneSteps);
         try {
+          // The model throws when the editor did what the contract rules out (told in the message).
+          const done = await step(h, m, run * 10 + next, rnd);
+          await settled(h.client);
+          steps.push(done.what);
+          m = done.model;
+          undoneSteps = done.undone(undoneSteps);
           check(h, m, undoneSteps);
         } catch (err) {
-          throw new Error(`seed ${seed}, run ${run}, after: ${steps.join(" / ")}\n${(err as Error).message}`);
+          throw new Error(
+            `seed ${seed}, run ${run}, after: ${steps.join(" / ") || "(its first step)"}\n${(err as Error).message}`,
+          );
         }
       }
     }

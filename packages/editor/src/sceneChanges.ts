@@ -6,7 +6,10 @@
  * doc/undoIntents.ts), so an Undo asked while it is still queued or checked is bound to it. An Undo
  * bound to a running change whose later actions the host is still checking asks the host to take
  * it back (takeBackIfUndone: client.takeBack, the change goes, nothing else), and the refusal that
- * follows is then known as that take-back (tookBack). Intents are cleared once no change is queued.
+ * follows is then known as that take-back (tookBack). Only the last change asked is taken back so:
+ * a change queued behind a running one was asked on a scene holding it (taken back, the later change
+ * ran without it and its Redo entry lost it), so an Undo bound to the running one waits for its turn
+ * (after the later changes' own Undos) and undoes it then. Intents are cleared once no change is queued.
  */
 
 import { changeAsked, type Intents, isUndone, NO_INTENTS, type Ticket } from "./doc/undoIntents";
@@ -21,6 +24,8 @@ export class SceneChanges {
   private queued = 0;
   /** The take-back asked for a running change an Undo is bound to (client.takeBack). */
   private readonly takeBacks = new WeakMap<Ticket, Promise<SceneFile | null>>();
+  /** The tickets of the undoable changes queued or running, in the order asked. */
+  private readonly asked: Ticket[] = [];
   /** The tail of the queue of scene changes (see serial). */
   private changes: Promise<unknown> = Promise.resolve();
 
@@ -48,6 +53,7 @@ export class SceneChanges {
   ticketed(change: (ticket: Ticket) => Promise<string | null>): Promise<string | null> {
     const ticket: Ticket = { fate: "queued" };
     this.intents.setState(changeAsked(this.intents.getState(), ticket));
+    this.asked.push(ticket);
     return this.serial(async () => {
       ticket.fate = "running";
       try {
@@ -56,17 +62,19 @@ export class SceneChanges {
         return err;
       } finally {
         this.takeBacks.delete(ticket);
+        this.asked.splice(this.asked.indexOf(ticket), 1);
       }
     });
   }
 
   /**
    * Asks the host to take back the running change of `ticket` if an Undo is bound to it and its
-   * later actions are being checked (an Undo during the check: the change goes, nothing else).
+   * later actions are being checked (an Undo during the check: the change goes, nothing else), and
+   * no change was asked after it (see the header: that Undo then undoes it at its turn).
    */
   takeBackIfUndone(ticket: Ticket): void {
     if (ticket.fate !== "running" || this.takeBacks.has(ticket)) return;
-    if (!isUndone(this.intents.getState(), ticket)) return;
+    if (this.asked.at(-1) !== ticket || !isUndone(this.intents.getState(), ticket)) return;
     this.takeBacks.set(
       ticket,
       this.client.takeBack().catch(() => null),

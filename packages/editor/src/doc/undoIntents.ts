@@ -70,7 +70,10 @@ export function redoAsked(s: Intents): { intents: Intents; ticket: Ticket | null
   return { intents: { ...s, past: [...s.past, ticket], future: s.future.slice(1) }, ticket };
 }
 
-/** Whether `ticket` is in the future (an Undo took it): a change that starts so is taken back. */
+/**
+ * Whether `ticket` is in the future (an Undo took it): a change that runs so is taken back, unless a
+ * change asked after it is queued behind it (its Undo then undoes it at its turn: sceneChanges.ts).
+ */
 export function isUndone(s: Intents, ticket: Ticket): boolean {
   return s.future.includes(ticket);
 }

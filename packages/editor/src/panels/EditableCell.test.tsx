@@ -1,6 +1,7 @@
 // @vitest-environment jsdom
 import { act, cleanup, fireEvent, render, screen } from "@testing-library/react";
 import { afterEach, describe, expect, it, vi } from "vitest";
+import { UNDONE_DURING_CHECK } from "../remote/protocol";
 import { EditableCell, SLOW_COMMIT_MS } from "./EditableCell";
 
 afterEach(cleanup);
@@ -76,6 +77,20 @@ describe("EditableCell", () => {
     expect(screen.getByRole("alert").textContent).toBe("actions[4].r: must be a positive finite number");
     expect(input.getAttribute("aria-invalid")).toBe("true");
     expect(input.value).toBe("-1");
+  });
+
+  it("a commit an Undo took back during its check closes the cell on the scene's value (it stayed open, the undone draft shown as an error)", async () => {
+    const onCommit = vi.fn(async () => UNDONE_DURING_CHECK);
+    render(<EditableCell label="a vx" value="1" onCommit={onCommit} />);
+    const input = open("a vx");
+    fireEvent.change(input, { target: { value: "3" } });
+    await act(async () => {
+      fireEvent.keyDown(input, { key: "Enter" });
+    });
+    expect(screen.queryByRole("alert")).toBeNull();
+    expect(screen.queryByRole("textbox", { name: "a vx" })).toBeNull();
+    expect(screen.getByRole("button", { name: "a vx" }).textContent).toBe("1");
+    expect(onCommit).toHaveBeenCalledTimes(1);
   });
 
   it("Escape drops the draft without committing; an unchanged value is not committed", async () => {

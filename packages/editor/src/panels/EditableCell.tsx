@@ -5,13 +5,16 @@
  * the values of the time playback paused at once the table refreshes), and Enter or leaving it
  * commits nothing. Once the user has typed, Enter or leaving the input commits a changed draft through
  * `onCommit`, which resolves to an error message (the value is refused, the message shown in place,
- * the draft kept for correction) or null (accepted). Escape closes without committing.
+ * the draft kept for correction) or null (accepted). A commit an Undo took back during its check
+ * (UNDONE_DURING_CHECK) closes the cell on the scene's value as an accepted one does: the Undo says
+ * what it did, and the draft it undid is not committed again. Escape closes without committing.
  * Both the button and the input carry `label` as their accessible name.
  * Opening a cell pauses playback (inside an editor): the edit applies at the current time, and the
  * values the cell and its row show are those of that time, not of a moment that playback has left.
  */
 import { useContext, useEffect, useId, useRef, useState } from "react";
 import { EditorContext } from "../EditorContext";
+import { UNDONE_DURING_CHECK } from "../remote/protocol";
 
 export interface EditableCellProps {
   label: string;
@@ -73,7 +76,7 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
     const slow = setTimeout(() => setWaiting(true), SLOW_COMMIT_MS);
     try {
       const err = await onCommit(typed.trim());
-      if (err === null) close(byKey);
+      if (err === null || err === UNDONE_DURING_CHECK) close(byKey);
       else setError(err);
     } finally {
       clearTimeout(slow);
