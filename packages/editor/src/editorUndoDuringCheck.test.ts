@@ -8,6 +8,7 @@ import { canRedo } from "./doc/undoIntents";
 import type { Action, SceneFile } from "./engineTypes";
 import { settled, testEditor } from "./testing/harness";
 import { boxScene } from "./testing/scenes";
+import { checking, count } from "./testing/sceneWatch";
 
 const addE: Action = { time: 30, type: "addBody", id: "e", x: 50, y: 50, r: 1, m: 1 };
 const box: SceneFile = boxScene([addE]);
@@ -39,28 +40,6 @@ async function boxWithOneEdit(scene = box) {
   expect(await h.editor.edit([earlier])).toBeNull();
   await settled(h.client);
   return h;
-}
-
-/** How many actions of the current scene are `a` (same time, type and id). */
-function count(h: ReturnType<typeof testEditor>, a: Action): number {
-  const doc = h.client.getSnapshot().doc!;
-  const id = (x: Action) => ("id" in x ? x.id : null);
-  return doc.actions.filter((x) => x.time === a.time && x.type === a.type && id(x) === id(a)).length;
-}
-
-/**
- * Resolves once the host shows a changed scene (the edit's apply was handled and its check runs);
- * call before the edit.
- */
-function checking(h: ReturnType<typeof testEditor>): Promise<void> {
-  const rev = h.client.getSnapshot().docRevision;
-  return new Promise((resolve) => {
-    const stop = h.client.subscribe(() => {
-      if (h.client.getSnapshot().docRevision === rev) return;
-      stop();
-      resolve();
-    });
-  });
 }
 
 describe("Undo while an edit's later actions are being checked", () => {

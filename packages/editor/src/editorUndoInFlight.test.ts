@@ -9,6 +9,7 @@ import { describe, expect, it } from "vitest";
 import type { Action, SceneFile } from "./engineTypes";
 import { settled, testEditor } from "./testing/harness";
 import { boxScene } from "./testing/scenes";
+import { checking, count } from "./testing/sceneWatch";
 
 const addE: Action = { time: 30, type: "addBody", id: "e", x: 50, y: 50, r: 1, m: 1 };
 const box: SceneFile = boxScene([addE]);
@@ -26,25 +27,6 @@ async function boxAt5(): Promise<Harness> {
   await settled(h.client);
   h.editor.ui.setState({ t: 5 });
   return h;
-}
-
-/** How many actions of the current scene are `a` (same time, type and id). */
-function count(h: Harness, a: Action): number {
-  const doc = h.client.getSnapshot().doc!;
-  const id = (x: Action) => ("id" in x ? x.id : null);
-  return doc.actions.filter((x) => x.time === a.time && x.type === a.type && id(x) === id(a)).length;
-}
-
-/** Resolves once the host shows a changed scene (a change's check runs); call before the change. */
-function checking(h: Harness): Promise<void> {
-  const rev = h.client.getSnapshot().docRevision;
-  return new Promise((resolve) => {
-    const stop = h.client.subscribe(() => {
-      if (h.client.getSnapshot().docRevision === rev) return;
-      stop();
-      resolve();
-    });
-  });
 }
 
 describe("two edits in flight, two Undos, two Redos", () => {
