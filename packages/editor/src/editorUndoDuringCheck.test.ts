@@ -6,9 +6,9 @@
 import { describe, expect, it } from "vitest";
 import { canRedo } from "./doc/undoIntents";
 import type { Action, SceneFile } from "./engineTypes";
-import { settled, testEditor } from "./testing/harness";
+import { settled } from "./testing/harness";
 import { boxScene } from "./testing/scenes";
-import { checking, count } from "./testing/sceneWatch";
+import { checking, count, slowEditorAt } from "./testing/sceneWatch";
 
 const addE: Action = { time: 30, type: "addBody", id: "e", x: 50, y: 50, r: 1, m: 1 };
 const box: SceneFile = boxScene([addE]);
@@ -31,12 +31,7 @@ const other: Action = { time: 7, type: "giveVelocity", id: "c", v: [-1, 0.5] };
 
 /** The box with its history to t = 40 and one accepted edit (b's velocity at t = 10). */
 async function boxWithOneEdit(scene = box) {
-  const h = testEditor({ slow: true }); // a check lasts many rounds of the host
-  await h.editor.loadScene(scene, { undoable: false });
-  await settled(h.client);
-  await h.editor.goTo(40);
-  await settled(h.client);
-  h.editor.ui.setState({ t: 10 });
+  const h = await slowEditorAt(scene, 40, 10);
   expect(await h.editor.edit([earlier])).toBeNull();
   await settled(h.client);
   return h;

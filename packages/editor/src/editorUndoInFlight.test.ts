@@ -7,9 +7,9 @@
 // drop the edit from Redo (only a refusal naming a later action should).
 import { describe, expect, it } from "vitest";
 import type { Action, SceneFile } from "./engineTypes";
-import { settled, testEditor } from "./testing/harness";
+import { settled, type testEditor } from "./testing/harness";
 import { boxScene } from "./testing/scenes";
-import { checking, count } from "./testing/sceneWatch";
+import { checking, count, slowEditorAt } from "./testing/sceneWatch";
 
 const addE: Action = { time: 30, type: "addBody", id: "e", x: 50, y: 50, r: 1, m: 1 };
 const box: SceneFile = boxScene([addE]);
@@ -19,14 +19,8 @@ const secondAt = (time: number): Action => ({ time, type: "giveVelocity", id: "c
 type Harness = ReturnType<typeof testEditor>;
 
 /** The box with its history to t = 40, at t = 5. */
-async function boxAt5(): Promise<Harness> {
-  const h = testEditor({ slow: true }); // a check lasts many rounds of the host
-  await h.editor.loadScene(box, { undoable: false });
-  await settled(h.client);
-  await h.editor.goTo(40);
-  await settled(h.client);
-  h.editor.ui.setState({ t: 5 });
-  return h;
+function boxAt5(): Promise<Harness> {
+  return slowEditorAt(box, 40, 5);
 }
 
 describe("two edits in flight, two Undos, two Redos", () => {

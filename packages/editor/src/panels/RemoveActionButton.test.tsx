@@ -8,6 +8,7 @@
 import { act, cleanup, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
 import { afterEach, describe, expect, it, vi } from "vitest";
 import { EditorContext } from "../EditorContext";
+import type { Action } from "../engineTypes";
 import { settled, testEditor } from "../testing/harness";
 import { sceneOf } from "../testing/scenes";
 import { EventLog } from "./EventLog";
@@ -28,18 +29,10 @@ function clock() {
   };
 }
 
-/** Two discs, each given a velocity at t = 0.25 (two action entries at the same time); the log at t = 5. */
-async function twoVelocities() {
+/** The Event log of a scene of `actions` at t = 5, once it shows `buttons` remove buttons. */
+async function logOf(actions: Action[], buttons: number) {
   const h = testEditor();
-  await h.editor.loadScene(
-    sceneOf([
-      { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 },
-      { time: 0, type: "addBody", id: "b", x: 0, y: 10, r: 1, m: 1 },
-      { time: 0.25, type: "giveVelocity", id: "a", v: [4, 0] },
-      { time: 0.25, type: "giveVelocity", id: "b", v: [0, 4] },
-    ]),
-    { undoable: false },
-  );
+  await h.editor.loadScene(sceneOf(actions), { undoable: false });
   await settled(h.client);
   act(() => h.editor.ui.setState({ t: 5 }));
   render(
@@ -48,31 +41,37 @@ async function twoVelocities() {
     </EditorContext.Provider>,
   );
   const log = screen.getByRole("table", { name: "Event log" });
-  await waitFor(() => expect(within(log).getAllByRole("button", { name: /^Remove action/ })).toHaveLength(4));
+  await waitFor(() =>
+    expect(within(log).getAllByRole("button", { name: /^Remove action/ })).toHaveLength(buttons),
+  );
+  return { h, log };
+}
+
+/** Two discs, each given a velocity at t = 0.25 (two action entries at the same time); the log at t = 5. */
+async function twoVelocities() {
+  const { h, log } = await logOf(
+    [
+      { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 },
+      { time: 0, type: "addBody", id: "b", x: 0, y: 10, r: 1, m: 1 },
+      { time: 0.25, type: "giveVelocity", id: "a", v: [4, 0] },
+      { time: 0.25, type: "giveVelocity", id: "b", v: [0, 4] },
+    ],
+    4,
+  );
   const velocities = () => h.editor.doc.actions.filter((a) => a.type === "giveVelocity").map((a) => a.id);
   return { h, log, velocities };
 }
 
 /** Two identical actions (updateBody of a at t = 0.5, as editing a's vx then vy there makes). */
 async function twoUpdates() {
-  const h = testEditor();
-  await h.editor.loadScene(
-    sceneOf([
+  const { h, log } = await logOf(
+    [
       { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 },
       { time: 0.5, type: "updateBody", id: "a", v: [10, 0] },
       { time: 0.5, type: "updateBody", id: "a", v: [10, 20] },
-    ]),
-    { undoable: false },
+    ],
+    3,
   );
-  await settled(h.client);
-  act(() => h.editor.ui.setState({ t: 5 }));
-  render(
-    <EditorContext.Provider value={h.editor}>
-      <EventLog />
-    </EditorContext.Provider>,
-  );
-  const log = screen.getByRole("table", { name: "Event log" });
-  await waitFor(() => expect(within(log).getAllByRole("button", { name: /^Remove action/ })).toHaveLength(3));
   const updates = () => h.editor.doc.actions.filter((a) => a.type === "updateBody").map((a) => a.v);
   return { h, log, updates };
 }
