@@ -47,6 +47,8 @@ export const USAGE = `Usage:
       to where it stopped, with "reason": "error" and "error": why, and exits with status 2.
   chapgame state SCENE --at T [--events] [--compact] [--progress]
       Print the bodies at time T as JSON (the actions are computed, and checked, up to T).
+      If the exact model cannot continue before T (a Zeno state), it prints the bodies where it
+      stopped instead, with "time" there, "reason": "error" and "error": why, and exits with 2.
   chapgame --help
   chapgame --version
 
@@ -56,7 +58,7 @@ Interrupting a run (Ctrl-C: SIGINT, or SIGTERM) while it computes prints the res
 where it got, with "time" there and "reason": "interrupted" (state too), and exits with status
 130 (SIGINT) or 143 (SIGTERM). In a pipeline Ctrl-C reaches the reader as well: to keep the
 result, send the signal to chapgame alone (kill -INT PID) or write to a file.
-The result: "time", "reason" (simulate, and an interrupted state), "events" (collisions and
+The result: "time", "reason" (simulate, and a state that stopped early), "events" (collisions and
 stops), "counts" (bodyBody, bodyLine, bodyPoint, stop), "bodies" (id, x, y, vx, vy, r, m, mu at
 "time", sorted by id) and with --events "log": every entry up to "time" in order, each with
 "time", "type" (bodyBody, bodyLine, bodyPoint, stop, action), "ids" (the participants; the

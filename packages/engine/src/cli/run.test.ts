@@ -123,6 +123,27 @@ describe("runCli in-process", () => {
     expect(hits.map((e: { time: number }) => e.time)).toEqual([1, 3, 5]);
   });
 
+  it("state meeting a Zeno state before --at prints the bodies where it stopped, then exits 2", () => {
+    // Session 16 left it printing nothing: the state at T cannot be computed, the state at the
+    // failure can (the same scene as above: the failure at t = 5)
+    const scene = [
+      { time: 0, type: "addLine", id: "left", p1: [-10, -5], p2: [-10, 5], kind: "line" },
+      { time: 0, type: "addLine", id: "right", p1: [10, -5], p2: [10, 5], kind: "line" },
+      { time: 0, type: "addLine", id: "floor", p1: [-50, -100], p2: [-30, -100], kind: "segment" },
+      { time: 0, type: "addBody", id: "ball", x: 0, y: 0, r: 1, m: 1, v: [9, 0] },
+      { time: 0, type: "addBody", id: "rest", x: -40, y: -99, r: 1, m: 1 },
+      { time: 5, type: "setGlobal", gravity: [0, -1] },
+    ];
+    const { cli, out } = io({ "rest.json": sceneText(scene) });
+    expect(runCli(["state", "rest.json", "--at", "8"], cli)).toBe(2);
+    expect(out.stderr).toMatch(/^chapgame: rest\.json: cannot simulate this scene: body 'rest' rests .*\n$/);
+    const result = JSON.parse(out.stdout);
+    expect(result).toMatchObject({ reason: "error", time: 5, events: 3 });
+    // the ball has just met the right wall (x = 10 - r) and is on its way back
+    const ball = result.bodies.find((b: { id: string }) => b.id === "ball");
+    expect(ball).toMatchObject({ x: 9, y: 0, vx: -9, vy: 0 });
+  });
+
   it("simulate --until-time T stops at T when an action is still scheduled after T (it printed t = 0)", () => {
     const late = sceneText([
       { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [1, 0] },

@@ -201,9 +201,9 @@ function* command(argv: readonly string[], io: CliIO): Generator<void, number, v
         );
         return e.status;
       }
-      // The engine cannot continue (a Zeno state): what simulate computed up to it is a result too.
-      if (e instanceof SimulationError && cmd.command === "simulate")
-        partial({ reason: "error", error: printable(e.message) });
+      // The engine cannot continue (a Zeno state): what was computed up to it is a result too
+      // (simulate and state alike: `state --at T` then prints the bodies where it stopped, before T).
+      if (e instanceof SimulationError) partial({ reason: "error", error: printable(e.message) });
       throw e;
     }
     io.computed?.();
