@@ -9,10 +9,12 @@
  * the host). A load of another scene returns to the whole history with the time (editorSession.ts).
  * The history grows (`historyGrows`) while a computation runs or while playing forward can ask for
  * one (auto-extend, events left, not stopped): a page turned forward then is whole (timeWindow.ts).
+ * When it stops growing (the computation ends, or playback pauses with none running) without being
+ * cut, a window reaching past the history's end settles back inside it (`settle`), the time kept.
  */
 import { canExtend } from "../playback";
 import { type ComputeStatus, restoreTarget } from "../remote/protocol";
-import { follow } from "./timeWindow";
+import { follow, settle } from "./timeWindow";
 import type { UiState, UiStore } from "./uiStore";
 
 /** The part of the TimelineClient's snapshot the guard reads. */
@@ -45,17 +47,46 @@ export function historyEnd(info: { horizon: number; computing: ComputeStatus | n
   return Math.max(info.horizon, restoreTarget(info.computing), t);
 }
 
+/**
+ * Whether the history has just stopped growing (a check that found it growing, then one that does
+ * not) without being cut: its end has not dropped since (an edit in the past or an undo drops the
+ * horizon before the restore starts: the window waits for the history to be computed again) and the
+ * time is not held past the horizon.
+ */
+export function stoppedGrowing(
+  was: { grows: boolean; end: number },
+  now: { grows: boolean; end: number },
+  t: number,
+  horizon: number,
+): boolean {
+  return was.grows && !now.grows && now.end >= was.end && t <= horizon;
+}
+
 /** Keeps the time window of `ui` around the time and inside the history of `source`; returns the unsubscribe. */
 export function keepTimeWindow(ui: UiStore, source: HistorySource): () => void {
+  let last = { grows: false, end: 0 };
   const check = () => {
     const s = ui.getState();
-    if (s.timeWindow === null) return;
     const info = source.getSnapshot();
-    const next = follow(s.timeWindow, s.t, historyEnd(info, s.t), historyGrows(s, info));
+    const now = { grows: historyGrows(s, info), end: historyEnd(info, s.t) };
+    const stopped = stoppedGrowing(last, now, s.t, info.horizon);
+    last = now;
+    if (s.timeWindow === null) return;
+    const turned = follow(s.timeWindow, s.t, now.end, now.grows);
+    // a page turned into the computation settles inside the history once it stops growing
+    const next = stopped ? settle(turned, s.t, now.end) : turned;
     if (next !== s.timeWindow) ui.setState({ timeWindow: next });
   };
   const offUi = ui.subscribe((s, p) => {
-    if (s.t !== p.t || s.timeWindow !== p.timeWindow) check();
+    // playing, speed and auto-extend decide whether the history grows (historyGrows)
+    if (
+      s.t !== p.t ||
+      s.timeWindow !== p.timeWindow ||
+      s.playing !== p.playing ||
+      s.speed !== p.speed ||
+      s.calc !== p.calc
+    )
+      check();
   });
   const offSource = source.subscribe(check);
   return () => {
