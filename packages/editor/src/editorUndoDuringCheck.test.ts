@@ -103,6 +103,35 @@ describe("Undo while an edit's later actions are being checked", () => {
     expect(h.editor.history.getState().past).toHaveLength(1);
   });
 
+  it("an edit the check refuses leaves Redo as it was: off while the edit is shown and checked, the same entry after", async () => {
+    // Redo is off during the check because the edit is made (shown, and Undo takes it back); a
+    // refused edit was never made, so the entry comes back with nothing lost. Kept on through the
+    // check, Redo would either redo the older entry over the edit shown or wait and then do
+    // nothing once the edit passed.
+    const h = await boxWithOneEdit();
+    await h.editor.undo();
+    await settled(h.client);
+    const redoable = () => canRedo(h.editor.intents.getState(), h.editor.history.getState().future.length);
+    expect(redoable()).toBe(true);
+    const seen = checking(h);
+    const edit = h.editor.edit([blocker]);
+    await seen;
+    expect({ blocker: count(h, blocker), redoable: redoable() }).toEqual({ blocker: 1, redoable: false });
+    const redone = h.editor.redo(); // Ctrl+Shift+Z meanwhile: nothing to redo over the edit shown
+    expect(await edit).not.toBeNull();
+    await redone;
+    await settled(h.client);
+    expect({ blocker: count(h, blocker), earlier: count(h, earlier), redoable: redoable() }).toEqual({
+      blocker: 0,
+      earlier: 0,
+      redoable: true,
+    });
+    await h.editor.redo();
+    await settled(h.client);
+    expect({ blocker: count(h, blocker), earlier: count(h, earlier) }).toEqual({ blocker: 0, earlier: 1 });
+    expect(h.editor.history.getState()).toMatchObject({ past: { length: 1 }, future: [] });
+  });
+
   it("Undo asked right after an edit (before the host has it) binds to that edit, not the one before", async () => {
     const h = await boxWithOneEdit();
     const edit = h.editor.edit([blocker]);

@@ -5,7 +5,8 @@
  * that body's events. An action entry's ✕ removes that action from the scene once confirmed by a
  * second press (RemoveActionButton); when the ✕ had the keyboard focus, the focus then goes to the
  * ✕ of the next action entry shown, else the previous one, else the log's table (removeFocus.ts),
- * once the log shows the scene without the action.
+ * once the log shows the scene without the action. An armed ✕ says "Press again to remove …" in the
+ * log's one visually hidden polite live region (useArmedNotice), which is empty otherwise.
  * Only the rows in view are rendered (useRowWindow); the view follows the current time (useFollowTime).
  */
 import { useEffect, useRef, useState } from "react";
@@ -17,6 +18,7 @@ import type { Selection } from "../store/uiStore";
 import { formatNumber } from "./EditableCell";
 import { RemoveActionButton } from "./RemoveActionButton";
 import { focusAfterRemoval } from "./removeFocus";
+import { type ArmedNotice, useArmedNotice } from "./useArmedNotice";
 import { useFollowTime } from "./useFollowTime";
 import { useRefreshed } from "./useRefreshed";
 import { spacerRow, useRowWindow } from "./useRowWindow";
@@ -87,7 +89,7 @@ export function logCount(total: number, shown: number, body: string | null): str
  * An action entry's remove button (null for other entries, and for an action not identified), on a
  * page read at scene revision `revision`; `onRemoved(index)` once it removed its action while focused.
  */
-function removable(e: PageEvent, revision: number, onRemoved: (index: number) => void) {
+function removable(e: PageEvent, revision: number, onRemoved: (index: number) => void, notice: ArmedNotice) {
   if (e.type !== "action" || e.action === undefined || e.actionIndex === undefined) return null;
   const index = e.actionIndex;
   return (
@@ -97,6 +99,7 @@ function removable(e: PageEvent, revision: number, onRemoved: (index: number) =>
       type={e.action}
       id={e.ids[0] ?? null}
       revision={revision}
+      notice={notice}
       onRemoved={(focused) => {
         if (focused) onRemoved(index);
       }}
@@ -155,6 +158,7 @@ export function EventLog() {
     target?.focus();
   }, [refocus, doc]);
   const onRemoved = (index: number) => setRefocus({ index, from: doc });
+  const armed = useArmedNotice();
 
   return (
     <section className="panel" aria-labelledby="log-title">
@@ -169,6 +173,9 @@ export function EventLog() {
           value={filter}
           onChange={(e) => editor.ui.setState({ eventFilter: e.target.value })}
         />
+      </div>
+      <div className="visually-hidden" role="status" aria-live="polite">
+        {armed.text}
       </div>
       <div className="table-scroll log" ref={scrollRef}>
         <table aria-label="Event log" ref={tableRef} tabIndex={-1}>
@@ -209,7 +216,7 @@ export function EventLog() {
                   <td>{formatNumber(e.time)}</td>
                   <td>{kindLabel(e)}</td>
                   <td>{e.ids.join(", ")}</td>
-                  <td className="row-end">{removable(e, doc, onRemoved)}</td>
+                  <td className="row-end">{removable(e, doc, onRemoved, armed.notice)}</td>
                 </tr>
               );
             })}

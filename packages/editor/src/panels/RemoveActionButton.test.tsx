@@ -137,6 +137,43 @@ describe("RemoveActionButton", () => {
     expect(button().getAttribute("aria-label")).toBe(B);
   });
 
+  it("armed, the log's one polite live region says what a second press removes; disarmed, it says nothing", async () => {
+    const tick = clock();
+    const { h, log, velocities } = await twoVelocities();
+    // one region for the log (none per row), visually hidden, empty at rest
+    const regions = screen.getAllByRole("status");
+    expect(regions).toHaveLength(1);
+    const region = regions[0] as HTMLElement;
+    expect(region.getAttribute("aria-live")).toBe("polite");
+    expect(region.className).toBe("visually-hidden");
+    expect(log.contains(region)).toBe(false);
+    expect(region.textContent).toBe("");
+    const button = (name: RegExp) => within(log).getByRole("button", { name });
+    const PROMPT_B = "Press again to remove action giveVelocity of b at t = 0.25";
+    fireEvent.click(button(/giveVelocity of b/));
+    expect(region.textContent).toBe(PROMPT_B);
+    act(() => fireEvent.keyDown(button(/giveVelocity of b/), { key: "Escape" }));
+    expect(region.textContent).toBe("");
+    // another button armed since keeps its prompt when the first disarms
+    fireEvent.click(button(/giveVelocity of b/));
+    fireEvent.click(button(/giveVelocity of a/));
+    expect(region.textContent).toBe("Press again to remove action giveVelocity of a at t = 0.25");
+    act(() => fireEvent.keyDown(button(/giveVelocity of b/), { key: "Escape" }));
+    expect(region.textContent).toBe("Press again to remove action giveVelocity of a at t = 0.25");
+    act(() => fireEvent.mouseLeave(button(/giveVelocity of a/)));
+    expect(region.textContent).toBe("");
+    // the confirming press empties it
+    fireEvent.click(button(/giveVelocity of b/));
+    expect(region.textContent).toBe(PROMPT_B);
+    tick(CONFIRM_DELAY_MS);
+    await act(async () => {
+      fireEvent.click(button(/giveVelocity of b/));
+      await settled(h.client);
+    });
+    expect(velocities()).toEqual(["a"]);
+    expect(region.textContent).toBe("");
+  });
+
   it("a double-click removes nothing, and a press on the row that moved up after a removal only arms it", async () => {
     const tick = clock();
     const { h, log, velocities } = await twoVelocities();

@@ -14,12 +14,14 @@
  * `Removing action updateBody of b1 at t = 4` until the removal is done. The press does not reach
  * the row (which would jump to the entry's time). `onRemoved(focused)` is called once the action is
  * removed, `focused` when the button had the keyboard focus at the confirming press (the Event log
- * then moves the focus on: the button may be gone).
+ * then moves the focus on: the button may be gone). Armed, it tells the log's live region (`notice`,
+ * useArmedNotice.ts) "Press again to remove action updateBody of b1 at t = 4" until it disarms.
  */
 import { useEffect, useState } from "react";
 import { useEditor } from "../EditorContext";
 import { formatNumber } from "./EditableCell";
 import { ARMED_MS, current, disarm, finished, idle, press } from "./removeConfirm";
+import type { ArmedNotice } from "./useArmedNotice";
 
 export function RemoveActionButton(props: {
   index: number;
@@ -29,9 +31,11 @@ export function RemoveActionButton(props: {
   /** The scene revision (docRevision) of the log page that shows the entry. */
   revision: number;
   onRemoved?: (focused: boolean) => void;
+  /** The log's live region, told the prompt while the button is armed. */
+  notice?: ArmedNotice;
 }) {
   const editor = useEditor();
-  const { index, time, type, id, revision, onRemoved } = props;
+  const { index, time, type, id, revision, onRemoved, notice } = props;
   const key = `${revision} ${index} ${time} ${type} ${id}`;
   const [stored, setState] = useState(() => idle(key));
   const state = current(stored, key);
@@ -43,6 +47,12 @@ export function RemoveActionButton(props: {
   }, [armed]);
 
   const what = `action ${id === null ? type : `${type} of ${id}`} at t = ${formatNumber(time)}`;
+  const prompt = armed ? `Press again to remove ${what}` : null;
+  useEffect(() => {
+    if (prompt === null || notice === undefined) return;
+    notice.show(prompt);
+    return () => notice.hide(prompt);
+  }, [prompt, notice]);
   const label = armed
     ? `Confirm: remove ${what} (press again; Escape keeps it)`
     : state.phase === "removing"

@@ -14,7 +14,9 @@ import { useStore } from "../store/createStore";
 export function StatePanel() {
   const editor = useEditor();
   // Undo is offered as soon as an edit is asked (also while its later actions are being checked:
-  // Undo then takes it back), Redo for what Undo took (doc/undoIntents.ts).
+  // Undo then takes it back), Redo for what Undo took (doc/undoIntents.ts). An edit asked clears
+  // Redo at once, also during its check (the edit is shown); one the check refuses was never made,
+  // so Redo comes back with the same entries (editorUndoDuringCheck.test.ts).
   const intents = useStore(editor.intents, (s) => s);
   const canUndo = undoable(
     intents,

@@ -10,12 +10,14 @@
  * about 1 ms per frame in the 2,000-disc profile); a new range is always written. Paused, the slider
  * always shows the exact time. Dragging it sets the time (not an edit), within its range (sliderTime:
  * Chromium's value at an end can read just past it, which turned the page under the pointer);
- * holding it while playing pauses until it is let go.
+ * holding it while playing pauses until it is let go. Zoomed, its arrow and page keys move the time
+ * on past the window's edges, turning the page (sliderKeys.ts); Home and End go to the window's ends.
  */
 import { useEffect, useRef } from "react";
 import { useEditor, useUi } from "../EditorContext";
 import { sliderTime, viewRange } from "../store/timeWindow";
 import { historyEnd } from "../store/timeWindowGuard";
+import { sliderKeyTime } from "./sliderKeys";
 import { useHistoryEnd } from "./useHistoryEnd";
 
 export function TimeSlider() {
@@ -94,6 +96,15 @@ export function TimeSlider() {
       max={range.hi}
       step="any"
       defaultValue={0}
+      onKeyDown={(e) => {
+        // zoomed, the input would stop at the window's edges: the time moves on and the page turns
+        if (e.ctrlKey || e.metaKey || e.altKey) return;
+        const { timeWindow, t } = editor.ui.getState();
+        const next = sliderKeyTime(e.key, t, timeWindow, historyEnd(editor.client.getSnapshot(), t));
+        if (next === null) return;
+        e.preventDefault();
+        editor.setTime(next);
+      }}
       onChange={(e) => {
         // clamped to the range: a value read just past an end turned the page (sliderTime)
         const { timeWindow, t } = editor.ui.getState();

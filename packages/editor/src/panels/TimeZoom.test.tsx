@@ -102,6 +102,49 @@ describe("Time slider zoom", () => {
     expect(document.activeElement).toBe(whole);
   });
 
+  it("zoomed, the slider's arrow and page keys move the time on past the window's edges, turning the page", async () => {
+    const { editor, slider, click, range } = await renderPanel();
+    const key = (k: string) => {
+      let handled = false;
+      act(() => {
+        handled = !fireEvent.keyDown(slider, { key: k });
+      });
+      return handled;
+    };
+    const t = () => editor.ui.getState().t;
+    // the whole history: the input's own keys (its ends are the history's)
+    expect(key("ArrowRight")).toBe(false);
+    act(() => editor.setTime(5));
+    click("Zoom in");
+    click("Zoom in");
+    expect(range()).toEqual(["3.75", "6.25"]);
+    // a hundredth of the window's span
+    expect(key("ArrowRight")).toBe(true);
+    expect(t()).toBeCloseTo(5.025, 12);
+    // on past the right edge: the next page, the time just past its start
+    act(() => editor.setTime(6.25));
+    expect(key("ArrowRight")).toBe(true);
+    expect(range()).toEqual(["6.25", "8.75"]);
+    expect(t()).toBeCloseTo(6.275, 12);
+    expect(slider.value).toBe(String(t()));
+    // back past the left edge, and a page key's tenth
+    expect(key("ArrowLeft")).toBe(true);
+    expect(key("ArrowLeft")).toBe(true);
+    expect(t()).toBeCloseTo(6.225, 12);
+    expect(range()).toEqual(["3.75", "6.25"]);
+    act(() => editor.setTime(3.75));
+    expect(key("PageDown")).toBe(true);
+    expect(t()).toBe(3.5);
+    expect(range()).toEqual(["1.25", "3.75"]);
+    // Home and End stay the input's (the window's ends); the history's end holds the time
+    expect(key("Home")).toBe(false);
+    act(() => editor.setTime(10));
+    expect(key("PageUp")).toBe(true);
+    expect(t()).toBe(10);
+    // not an undo step
+    expect(editor.history.getState().past).toHaveLength(0);
+  });
+
   it("the event ticks are those of the window, placed on it", async () => {
     const { editor, click } = await renderPanel();
     const ticks = () => [...document.querySelectorAll("svg.ticks line")].map((l) => l.getAttribute("x1"));

@@ -4,6 +4,7 @@ import {
   fitInside,
   follow,
   minSpan,
+  settle,
   sliderTime,
   timeInWindow,
   viewRange,
@@ -129,6 +130,20 @@ describe("time window: following the time", () => {
   it("a history cut inside the window (an edit in the past) keeps it while it holds the time", () => {
     expect(follow(w, 12, 15)).toBe(w);
     expect(follow({ lo: 0, hi: 10 }, 0, 0)).toEqual({ lo: 0, hi: 10 });
+  });
+
+  it("once the history stops growing, a page reaching past its end settles back inside it; the time stays in it", () => {
+    // a page turned into the computation, which stopped at 26: [16, 26], t = 23 still on it
+    expect(settle({ lo: 20, hi: 30 }, 23, 26)).toEqual({ lo: 16, hi: 26 });
+    // the whole history when the page is no shorter than it
+    expect(settle({ lo: 10, hi: 40 }, 12, 25)).toBeNull();
+    // a window inside the history, a time off the window or held past the end: the same window
+    const inside = { lo: 10, hi: 20 };
+    expect(settle(inside, 15, 20)).toBe(inside);
+    const past = { lo: 20, hi: 30 };
+    expect(settle(past, 19, 26)).toBe(past);
+    expect(settle(past, 27, 26)).toBe(past);
+    expect(settle(null, 5, 26)).toBeNull();
   });
 
   it("fitInside shifts a window into [0, end], or gives the whole history", () => {

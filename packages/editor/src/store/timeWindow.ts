@@ -16,7 +16,8 @@
  *   Either way the new page is shifted inside [0, end of the history], except a page turned forward
  *   while the history grows (playing into the computation): that page is whole, its part past the
  *   end filled in as it is computed. Shifted back, it crept by the computation's lead (about 2 s)
- *   every couple of seconds, the thumb near its right edge.
+ *   every couple of seconds, the thumb near its right edge. When the history stops growing short of
+ *   such a page's end, the page settles back inside it (`settle`): its right edge at the end.
  */
 
 export interface TimeWindow {
@@ -102,6 +103,19 @@ export function follow(w: TimeWindow | null, t: number, end: number, growing = f
   if (nextPage && growing) return { lo: w.hi, hi: w.hi + span };
   const lo = x > w.hi ? (nextPage ? w.hi : x - span / 2) : x >= w.lo - span ? w.lo - span : x - span / 2;
   return fitInside(lo, span, end);
+}
+
+/**
+ * The window once the history has stopped growing (timeWindowGuard.ts): a page turned forward into
+ * the computation (follow, `growing`) that still reaches past the history's end is shifted back to
+ * end there, [end - span, end], so the slider shows no blank stretch; the time t stays (it lies in
+ * the window and not past the end, so it stays in the shifted window) and only its place on the
+ * slider moves. The whole history (null) when the span does not fit in [0, end]. The same object
+ * when the window does not reach past the end, or t is not in it or is held past the end.
+ */
+export function settle(w: TimeWindow | null, t: number, end: number): TimeWindow | null {
+  if (w === null || !(w.hi > end) || t < w.lo || t > end) return w;
+  return fitInside(w.lo, w.hi - w.lo, end);
 }
 
 /**

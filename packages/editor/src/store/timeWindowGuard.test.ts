@@ -78,6 +78,44 @@ describe("time window guard", () => {
     expect(ui.getState().timeWindow).toEqual({ lo: 20, hi: 30 });
   });
 
+  it("a page turned into the computation settles inside the history once it stops growing, the time kept", () => {
+    const computing = (targetTime: number): ComputeStatus => ({ ...restoring(targetTime), restore: false });
+    // the computation stops short of the page's end
+    const a = guarded(22);
+    a.ui.setState({ playing: true, speed: 1, t: 20.5 });
+    expect(a.ui.getState().timeWindow).toEqual({ lo: 20, hi: 30 });
+    a.info.setState({ horizon: 23, idle: true }); // no event left: playing asks for nothing more
+    expect(a.ui.getState().timeWindow).toEqual({ lo: 13, hi: 23 });
+    expect(a.ui.getState().t).toBe(20.5);
+    // a pause does not settle it (playing on grows the history: pressing the thumb pauses), turning
+    // auto-extend off does
+    const b = guarded(22);
+    b.ui.setState({ playing: true, speed: 1, t: 21 });
+    expect(b.ui.getState().timeWindow).toEqual({ lo: 20, hi: 30 });
+    b.ui.setState({ playing: false });
+    expect(b.ui.getState().timeWindow).toEqual({ lo: 20, hi: 30 });
+    b.ui.setState({ calc: { ...b.ui.getState().calc, autoExtend: false } });
+    expect(b.ui.getState().timeWindow).toEqual({ lo: 12, hi: 22 });
+    // paused while a computation runs: once it ends with nothing left, or the engine stopped
+    const c = guarded(22);
+    c.info.setState({ computing: computing(40) });
+    c.ui.setState({ t: 21 });
+    expect(c.ui.getState().timeWindow).toEqual({ lo: 20, hi: 30 });
+    c.info.setState({ horizon: 25 });
+    expect(c.ui.getState().timeWindow).toEqual({ lo: 20, hi: 30 });
+    c.info.setState({ horizon: 27, computing: null, stopped: "Zeno state" });
+    expect(c.ui.getState().timeWindow).toEqual({ lo: 17, hi: 27 });
+    expect(c.ui.getState().t).toBe(21);
+    // a history cut by an edit in the past while computing ahead: the window waits for it (also
+    // with auto-extend off, the computation's end then being the end of the growth)
+    const d = guarded(22);
+    d.ui.setState({ calc: { ...d.ui.getState().calc, autoExtend: false } });
+    d.info.setState({ computing: computing(40) });
+    d.ui.setState({ t: 21 });
+    d.info.setState({ horizon: 21, computing: null });
+    expect(d.ui.getState().timeWindow).toEqual({ lo: 20, hi: 30 });
+  });
+
   it("an undo keeps the window: the time is held past the horizon, then a restore brings the history back", () => {
     const { info, ui } = guarded(100);
     // the horizon drops to 0 before the restore starts (two messages)
