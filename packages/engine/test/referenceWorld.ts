@@ -9,9 +9,10 @@
  */
 import { motionLaw, positionAt, velocityAt } from "../src/physics/motion.js";
 import { discDiscResponse, reflectResponse } from "../src/physics/response.js";
-import { discDiscTime, discDiscTimeScaled, discLineCrossings } from "../src/physics/timeOfImpact.js";
+import { discDiscTimeScaled, discLineCrossings } from "../src/physics/timeOfImpact.js";
 import { type Line, lineParameter, makeLine, parameterOnLine } from "../src/sim/obstacles.js";
 import type { EventKind, Vec2 } from "../src/sim/types.js";
+import { CONTACT_BAND } from "../src/tolerances.js";
 
 export interface SceneSpec {
   g: number;
@@ -125,14 +126,23 @@ export class ReferenceWorld {
         Math.abs(yo - ys) * (Math.abs(vys) + Math.abs(vyo)),
       Math.abs(xo - xs) * (Math.abs(s.ax) + Math.abs(o.ax)) +
         Math.abs(yo - ys) * (Math.abs(s.ay) + Math.abs(o.ay)),
+      Number.NEGATIVE_INFINITY,
     );
     return tau === INF ? INF : Math.max(this.time, tb + tau);
   }
 
   private pointTime(b: RefBody, px: number, py: number): number {
-    const tau = discDiscTime(
-      b.x0 - px,
-      b.y0 - py,
+    const dx = b.x0 - px;
+    const dy = b.y0 - py;
+    // without friction, a pressed contact within the gap's rounding is resting (CONTACT_BAND)
+    const [x, y] = this.pos(b, this.time);
+    const band =
+      b.mu > 0
+        ? Number.NEGATIVE_INFINITY
+        : 2 * b.r * CONTACT_BAND * (Math.abs(x) + Math.abs(y) + Math.abs(px) + Math.abs(py) + b.r);
+    const tau = discDiscTimeScaled(
+      dx,
+      dy,
       b.vx,
       b.vy,
       b.ax,
@@ -140,6 +150,10 @@ export class ReferenceWorld {
       b.r,
       this.time - b.t0,
       b.tEnd - b.t0,
+      true,
+      Math.abs(dx * b.vx) + Math.abs(dy * b.vy),
+      Math.abs(dx * b.ax) + Math.abs(dy * b.ay),
+      band,
     );
     return tau === INF ? INF : Math.max(this.time, b.t0 + tau);
   }

@@ -29,13 +29,16 @@ import { farWindows } from "./farWindow.js";
 import { firstDownCrossingQuartic } from "./quarticCrossing.js";
 
 const INF = Number.POSITIVE_INFINITY;
+const INF_NEG = Number.NEGATIVE_INFINITY;
 const windows = new Float64Array(4);
 
 /**
  * First contact of the pair in [lo, hi] (see the header); d, u, w relative, R the contact distance.
  * `dvScale` and `dwScale` are the sizes of d.v and d.w from the two bodies' own velocities and
  * accelerations (of d.u and d.w by default; see discDiscTimeScaled): u and w are differences, so
- * their rounding is relative to the bodies' own, not to u and w.
+ * their rounding is relative to the bodies' own, not to u and w. `band`: the rounding of the gap
+ * f = |d|^2 - R^2 within which a pressed pair that cannot leave it is a resting contact (see
+ * firstDownCrossingQuartic; -Infinity: no such test).
  */
 export function quarticContact(
   dx: number,
@@ -49,6 +52,7 @@ export function quarticContact(
   hi: number,
   dvScale = Math.abs(dx * ux) + Math.abs(dy * uy),
   dwScale = Math.abs(dx * wx) + Math.abs(dy * wy),
+  band = INF_NEG,
 ): number {
   const c0 = dx * dx + dy * dy - R * R;
   const c1 = 2 * (dx * ux + dy * uy);
@@ -70,7 +74,7 @@ export function quarticContact(
   // Rounding of f''(lo), the accelerations' directions included: the pair is pressed together only
   // beyond it (friction on two discs sliding past each other along the contact).
   const pressNoise = APPROACH_NOISE * (2 * (uu + dwScale) + l * (6 * uw + l * 12 * c4));
-  if (near >= hi) return firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, hi, noise, pressNoise);
+  if (near >= hi) return firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, hi, noise, pressNoise, band);
   let i = 0;
   while (i < n && (windows[2 * i + 1] as number) < near) i++; // wholly in the near part
   if (i < n && (windows[2 * i] as number) <= near) {
@@ -81,7 +85,7 @@ export function quarticContact(
     i++;
   }
   if (lo <= near) {
-    const t = firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, near, noise, pressNoise);
+    const t = firstDownCrossingQuartic(c0, c1, c2, c3, c4, lo, near, noise, pressNoise, band);
     if (t !== INF) return t;
   }
   // The far windows, in order: the gap re-expanded about the window's start a, where its terms are

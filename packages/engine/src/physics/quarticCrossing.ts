@@ -18,6 +18,12 @@ const roots: number[] = [];
  * A touching pair whose gap shrinks at lo by no more than `noise` (the rounding of the rate, which
  * the caller bounds) is a graze unless an acceleration presses it in by more than `pressNoise` (the
  * rounding of the second derivative, inputs included; as firstDownCrossingQuadratic).
+ * A pair within `band` of touching (the rounding of the gap; CONTACT_BAND) that is pressed together
+ * and would not leave the band before its acceleration turns it back (the quadratic model of the gap
+ * at lo: the motion there is a rounding's worth) never opens the contact: a resting contact,
+ * reported now, at lo, for the response to refuse. The band is -Infinity (no such test) unless the
+ * caller gives it: only a contact the response refuses when pressed may use it (a disc without
+ * friction against a point), else the same contact would be found again at once.
  */
 export function firstDownCrossingQuartic(
   c0: number,
@@ -29,12 +35,16 @@ export function firstDownCrossingQuartic(
   hi: number,
   noise = 0,
   pressNoise = 0,
+  band = Number.NEGATIVE_INFINITY,
 ): number {
   if (!(lo <= hi)) return Number.POSITIVE_INFINITY;
   const fLo = c0 + lo * (c1 + lo * (c2 + lo * (c3 + lo * c4)));
   const dLo = c1 + lo * (2 * c2 + lo * (3 * c3 + lo * 4 * c4));
+  const f2Lo = 2 * c2 + lo * (6 * c3 + lo * 12 * c4);
   // In contact and approaching (or resting under an acceleration into the contact) at lo.
-  const now = fLo <= 0 && (dLo < -noise || (dLo <= 0 && 2 * c2 + lo * (6 * c3 + lo * 12 * c4) < -pressNoise));
+  const now = fLo <= 0 && (dLo < -noise || (dLo <= 0 && f2Lo < -pressNoise));
+  // Within the band, pressed, and turned back before leaving it: the contact never opens (see above).
+  if (!now && fLo <= band && f2Lo < -pressNoise && fLo - (dLo * dLo) / (2 * f2Lo) <= band) return lo;
   // Touching and approaching by no more than the noise, with nothing pressing it in: a graze.
   if (!now && fLo <= 0 && dLo <= 0) return Number.POSITIVE_INFINITY;
   coeffs[0] = c0;

@@ -19,7 +19,7 @@
  *   disc–line:               h(tau) = ±s(tau) - r, s the signed distance to the line (degree <= 2)
  */
 
-import { APPROACH_NOISE, NEGLIGIBLE_DRIFT, RESPONSE_ULP } from "../tolerances.js";
+import { APPROACH_NOISE, CONTACT_BAND, NEGLIGIBLE_DRIFT, RESPONSE_ULP } from "../tolerances.js";
 import { quarticContact } from "./farContact.js";
 import { firstDownCrossingQuartic } from "./quarticCrossing.js";
 
@@ -44,7 +44,21 @@ export function discDiscTime(
   dvScale = Math.abs(dx * ux) + Math.abs(dy * uy),
   dwScale = Math.abs(dx * wx) + Math.abs(dy * wy),
 ): number {
-  return discDiscTimeScaled(dx, dy, ux, uy, wx, wy, R, lo, hi, quadraticFastPath, dvScale, dwScale);
+  return discDiscTimeScaled(
+    dx,
+    dy,
+    ux,
+    uy,
+    wx,
+    wy,
+    R,
+    lo,
+    hi,
+    quadraticFastPath,
+    dvScale,
+    dwScale,
+    Number.NEGATIVE_INFINITY,
+  );
 }
 
 /**
@@ -55,6 +69,8 @@ export function discDiscTime(
  * centres is relative to the velocities' components too (APPROACH_NOISE, RESPONSE_ULP). Hence
  * `dvScale` = |dx| (|vx1| + |vx2|) + |dy| (|vy1| + |vy2|) and `dwScale` the same with the
  * accelerations, each body's part added first so that both orders of a pair give the same bits.
+ * `band`: for a disc against a point, the gap's rounding within which a pressed contact that cannot
+ * leave it is resting (quarticContact); -Infinity for two discs, whose contacts never rest.
  */
 export function discDiscTimeScaled(
   dx: number,
@@ -69,6 +85,7 @@ export function discDiscTimeScaled(
   quadraticFastPath: boolean,
   dvScale: number,
   dwScale: number,
+  band: number,
 ): number {
   // A relative acceleration that cannot move the pair by NEGLIGIBLE_DRIFT of the contact distance
   // before either motion ends is dropped (w tau^2 / 2 bounded in the 1-norm): the straight path
@@ -93,7 +110,7 @@ export function discDiscTimeScaled(
     }
     return firstDownCrossingQuadratic(c0, c1, uu, lo, hi, true, 4 * (uu * R * R - cross * cross), noise, 0);
   }
-  return quarticContact(dx, dy, ux, uy, wx, wy, R, lo, hi, dvScale, dwScale);
+  return quarticContact(dx, dy, ux, uy, wx, wy, R, lo, hi, dvScale, dwScale, band);
 }
 
 /**
@@ -119,6 +136,7 @@ export function firstDownCrossingQuadratic(
   discriminant = Number.NaN,
   noise = 0,
   pressNoise = 0,
+  band = Number.NEGATIVE_INFINITY,
 ): number {
   const a = DOWN_ARGS;
   a[0] = c0;
@@ -129,18 +147,19 @@ export function firstDownCrossingQuadratic(
   a[5] = discriminant;
   a[6] = noise;
   a[7] = pressNoise;
+  a[9] = band;
   downCrossing(immediate);
   return a[8] as number;
 }
 
 /**
  * The doubles of `downCrossing`: c0, c1, c2, lo, hi, discriminant, noise, pressNoise in, the result
- * at [8]. The solver is too large for V8 to inline into its hot callers (pair tests, cell exits),
+ * at [8], band in at [9]. The solver is too large for V8 to inline into its hot callers (pair tests, cell exits),
  * and a double passed to or returned from a call that is not inlined is boxed: a heap allocation
  * each, about 40 per collision in a gas. Through this array they cross the call unboxed, and the
  * small wrapper above, which V8 does inline, keeps the pure signature.
  */
-const DOWN_ARGS = new Float64Array(9);
+const DOWN_ARGS = new Float64Array(10);
 
 /** firstDownCrossingQuadratic on DOWN_ARGS. */
 function downCrossing(immediate: boolean): void {
@@ -162,6 +181,21 @@ function downCrossing(immediate: boolean): void {
   }
   // Touching and approaching by no more than the noise, with nothing pressing it in: a graze.
   if (hLo <= 0 && immediate && dLo <= 0) return;
+  // Touching (within the band: a rounding above, or inside) and at rest or moving away, but turned
+  // back for good (approaching at hi: not a friction stop) before the gap leaves the band: the
+  // contact never opens, a resting contact (CONTACT_BAND). The contact is now (at the motion's
+  // start, where it is first seen), and the response refuses it.
+  const band = a[9] as number;
+  if (
+    immediate &&
+    hLo <= band &&
+    c2 < -(a[7] as number) &&
+    hLo - (dLo * dLo) / (4 * c2) <= band &&
+    c1 + 2 * c2 * hi < -noise
+  ) {
+    a[8] = lo;
+    return;
+  }
   // Convex and not decreasing at lo: it never comes down again (the common, cheap rejection).
   if (c2 >= 0 && dLo >= 0) return;
   if (c2 === 0) {
@@ -254,6 +288,21 @@ export function discLineCrossings(
     APPROACH_NOISE * (Math.abs(nx * vx) + Math.abs(ny * vy) + lo * (Math.abs(nx * ax) + Math.abs(ny * ay)));
   // Rounding of h'' = 2 s2, the acceleration's direction included (friction along the line).
   const pressNoise = APPROACH_NOISE * (Math.abs(ax) + Math.abs(ay));
-  out[0] = firstDownCrossingQuadratic(s0 - r, s1, s2, lo, hi, positive, Number.NaN, noise, pressNoise);
-  out[1] = firstDownCrossingQuadratic(-s0 - r, -s1, -s2, lo, hi, !positive, Number.NaN, noise, pressNoise);
+  // Rounding of the gap h = ±s - r: a contact that stays within it never opens (CONTACT_BAND).
+  const band =
+    CONTACT_BAND *
+    (Math.abs(px) + Math.abs(py) + Math.abs(x1) + Math.abs(y1) + r + lo * (Math.abs(s1) + lo * Math.abs(s2)));
+  out[0] = firstDownCrossingQuadratic(s0 - r, s1, s2, lo, hi, positive, Number.NaN, noise, pressNoise, band);
+  out[1] = firstDownCrossingQuadratic(
+    -s0 - r,
+    -s1,
+    -s2,
+    lo,
+    hi,
+    !positive,
+    Number.NaN,
+    noise,
+    pressNoise,
+    band,
+  );
 }

@@ -6,10 +6,12 @@
  */
 import { positionAt, velocityAt } from "../physics/motion.js";
 import { discDiscTimeScaled, discLineCrossings } from "../physics/timeOfImpact.js";
+import { CONTACT_BAND } from "../tolerances.js";
 import { BroadPhase } from "./broadPhase.js";
 import { type Line, lineParameter, parameterOnLine } from "./obstacles.js";
 
 const INF = Number.POSITIVE_INFINITY;
+const INF_NEG = Number.NEGATIVE_INFINITY;
 const sides = new Float64Array(2);
 
 export class ContactTimes extends BroadPhase {
@@ -108,8 +110,26 @@ export class ContactTimes extends BroadPhase {
       // (review: summed left to right, the two orders differed by an ulp, and so did a verdict).
       Math.abs(dx) * (Math.abs(vxs) + Math.abs(vxo)) + Math.abs(dy) * (Math.abs(vys) + Math.abs(vyo)),
       Math.abs(dx) * (Math.abs(axs) + Math.abs(axo)) + Math.abs(dy) * (Math.abs(ays) + Math.abs(ayo)),
+      INF_NEG, // two discs never rest on each other (a field accelerates both alike)
     );
     this.memoResult = tau === INF ? INF : Math.max(tb + tau, this.now);
+  }
+
+  /**
+   * The rounding of the gap |d|^2 - r^2 of body s (without friction: a friction motion never rests)
+   * and a point at (px, py), now: 2 r times CONTACT_BAND of the magnitudes its centre and the point
+   * carry (timeOfImpact.ts quarticContact: a pressed contact that cannot leave it is resting).
+   */
+  private pointBand(s: number, px: number, py: number): number {
+    const b = this.store;
+    const r = b.r[s] as number;
+    const t = this.now;
+    return (
+      2 *
+      r *
+      CONTACT_BAND *
+      (Math.abs(this.xAt(s, t)) + Math.abs(this.yAt(s, t)) + Math.abs(px) + Math.abs(py) + r)
+    );
   }
 
   /** Earliest contact of body s with a point at (px, py), or +Infinity. */
@@ -135,6 +155,7 @@ export class ContactTimes extends BroadPhase {
       this.opt.quadraticFastPath,
       Math.abs(dx * vx) + Math.abs(dy * vy),
       Math.abs(dx * ax) + Math.abs(dy * ay),
+      (b.mu[s] as number) > 0 ? INF_NEG : this.pointBand(s, px, py),
     );
     if (tau === INF) return INF;
     const t = t0 + tau;
