@@ -21,7 +21,9 @@ export interface CheckedOptions {
 
 export function checkOptions(options: TimelineOptions): CheckedOptions {
   const o = options as Record<string, unknown>;
-  onlyKeys(o, ["g", "gravity", "history", "compute", "untils"], "");
+  // `untils` is internal (the CLI's): accepted, never offered in the list of known fields
+  const { untils: _internal, ...documented } = o;
+  onlyKeys(documented, ["g", "gravity", "history", "compute"], "");
   for (const key of ["history", "compute", "untils"])
     if (o[key] !== undefined && typeof o[key] !== "boolean")
       throw new SceneError(key, "must be true or false");
