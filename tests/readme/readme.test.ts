@@ -31,7 +31,7 @@ it("the README usage example runs and prints the digits of pi it promises", () =
 it("the engine package README's examples run and print what the text describes", () => {
   const readme = readFileSync(join(root, "packages", "engine", "README.md"), "utf8");
   const blocks = [...readme.matchAll(/```js\n([\s\S]*?)```/g)].map((m) => m[1] as string);
-  expect(blocks.length).toBe(2);
+  expect(blocks.length).toBe(3);
   const dir = mkdtempSync(join(root, "tests", "readme", ".tmp-"));
   try {
     const run = (code: string, name: string): string => {
@@ -44,7 +44,9 @@ it("the engine package README's examples run and print what the text describes",
     expect(world).toMatch(/^stop [\d.]+ cue null$/m);
     expect(world).toMatch(/^bodyLine [\d.]+ ball cushion$/m);
     expect(world).toContain("id: 'cue'");
-    const timeline = run(blocks[1] as string, "timeline.mjs");
+    // the game loop: 600 frames of 1/60 s, the player's inputs, collisions of the player seen
+    expect(run(blocks[1] as string, "loop.mjs")).toBe("10 21 true\n");
+    const timeline = run(blocks[2] as string, "timeline.mjs");
     const lines = timeline.trim().split("\n");
     expect(Number(lines[0]?.split(" ")[0])).toBeGreaterThan(0);
     expect(timeline).toContain("id: 'a'");
