@@ -45,8 +45,12 @@ export function firstDownCrossingQuartic(
   const now = fLo <= 0 && (dLo < -noise || (dLo <= 0 && f2Lo < -pressNoise));
   // Within the band, pressed, and turned back before leaving it: the contact never opens (see above).
   if (!now && fLo <= band && f2Lo < -pressNoise && fLo - (dLo * dLo) / (2 * f2Lo) <= band) return lo;
-  // Touching and approaching by no more than the noise, with nothing pressing it in: a graze.
-  if (!now && fLo <= 0 && dLo <= 0) return Number.POSITIVE_INFINITY;
+  // Touching and approaching by no more than the noise, with nothing pressing it in: a graze. With
+  // a band (a disc over a point), the contact can close again later without having opened beyond
+  // rounding (a disc crossing a peg at about the speed that keeps it on the peg): the first
+  // downward crossing after lo is a contact (audit of session 17: it fell through the peg).
+  const graze = !now && fLo <= 0 && dLo <= 0;
+  if (graze && band === Number.NEGATIVE_INFINITY) return Number.POSITIVE_INFINITY;
   coeffs[0] = c0;
   coeffs[1] = c1;
   coeffs[2] = c2;
@@ -57,7 +61,13 @@ export function firstDownCrossingQuartic(
   realRootsInto(coeffs, 0, hi, roots);
   if (now) return crossingUnderWay(lo, c1, c2, c3, c4);
   let first = 0;
-  while (first < roots.length && (roots[first] as number) < lo) first++;
+  // a graze: not the contact at lo itself
+  while (first < roots.length && ((roots[first] as number) < lo || (graze && roots[first] === lo))) first++;
+  // A graze whose gap sinks below -band before it opens (the second derivative within rounding of 0
+  // at lo, the third into the contact: a disc crossing a peg at exactly the speed that keeps it on
+  // the peg) is a contact now, under way at third order: the response refuses it as resting, or
+  // reflects it.
+  if (graze && sinksBelow(lo, first < roots.length ? (roots[first] as number) : hi, -band)) return lo;
   if (first > 0 && dLo < -noise) {
     // Approaching, and the last root before lo comes down: the gap can be > 0 at lo only through
     // rounding (it is < 0 until the next root), so the contact is under way since that root.
@@ -78,6 +88,21 @@ export function firstDownCrossingQuartic(
     }
   }
   return Number.POSITIVE_INFINITY;
+}
+
+const slope = new Float64Array(4);
+/** Roots of the derivative of the last quartic solved (reused: no allocation). */
+const extrema: number[] = [];
+
+/** Whether the quartic in `coeffs` falls below `floor` at one of its minima in (lo, end). */
+function sinksBelow(lo: number, end: number, floor: number): boolean {
+  slope[0] = coeffs[1] as number;
+  slope[1] = 2 * (coeffs[2] as number);
+  slope[2] = 3 * (coeffs[3] as number);
+  slope[3] = 4 * (coeffs[4] as number);
+  realRootsInto(slope, lo, end, extrema);
+  for (let i = 0; i < extrema.length; i++) if (evalPoly(coeffs, extrema[i] as number) < floor) return true;
+  return false;
 }
 
 /**
