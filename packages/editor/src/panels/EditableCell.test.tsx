@@ -6,6 +6,19 @@ import { EditableCell, SLOW_COMMIT_MS } from "./EditableCell";
 
 afterEach(cleanup);
 
+/**
+ * Enter as a browser (and user-event) presses it: keydown on the focused element, then, unless the
+ * keydown's default was prevented, keypress on the element focused by then, whose default action on
+ * a button is a click. fireEvent.keyDown alone never clicks, so it hid the cell reopening.
+ */
+function pressEnter(): void {
+  const go = fireEvent.keyDown(document.activeElement ?? document.body, { key: "Enter", code: "Enter" });
+  if (!go) return;
+  const target = document.activeElement ?? document.body;
+  const pressed = fireEvent.keyPress(target, { key: "Enter", code: "Enter", charCode: 13 });
+  if (pressed && target instanceof HTMLButtonElement) fireEvent.click(target);
+}
+
 function open(label: string): HTMLInputElement {
   fireEvent.click(screen.getByRole("button", { name: label }));
   return screen.getByRole("textbox", { name: label }) as HTMLInputElement;
@@ -122,6 +135,41 @@ describe("EditableCell", () => {
     fireEvent.keyDown(input, { key: "Escape" });
     expect(document.activeElement).toBe(screen.getByRole("button", { name: "a vx" }));
     expect(screen.queryByRole("textbox")).toBeNull();
+  });
+
+  it("Enter on an unchanged value, or the same value retyped, closes the cell with focus on its button, not reopened", async () => {
+    // The unchanged path closed the cell during the keydown; the same Enter then clicked the button
+    // focused in its place and opened the cell again (audit s09c).
+    const onCommit = vi.fn(async () => null);
+    render(<EditableCell label="A y" value="3" onCommit={onCommit} />);
+    let input = open("A y");
+    input.focus();
+    pressEnter(); // not inside an act: React renders a key's updates before the key's next event
+    await act(async () => {});
+    expect(screen.queryByRole("textbox")).toBeNull();
+    expect(document.activeElement).toBe(screen.getByRole("button", { name: "A y" }));
+
+    input = open("A y");
+    input.focus();
+    fireEvent.change(input, { target: { value: "3" } });
+    pressEnter(); // not inside an act: React renders a key's updates before the key's next event
+    await act(async () => {});
+    expect(screen.queryByRole("textbox")).toBeNull();
+    expect(document.activeElement).toBe(screen.getByRole("button", { name: "A y" }));
+    expect(onCommit).not.toHaveBeenCalled();
+  });
+
+  it("Enter committing a changed value closes the cell, not reopened", async () => {
+    const onCommit = vi.fn(async () => null);
+    render(<EditableCell label="A x" value="1" onCommit={onCommit} />);
+    const input = open("A x");
+    input.focus();
+    fireEvent.change(input, { target: { value: "2" } });
+    pressEnter(); // not inside an act: React renders a key's updates before the key's next event
+    await act(async () => {});
+    expect(onCommit).toHaveBeenCalledWith("2");
+    expect(screen.queryByRole("textbox")).toBeNull();
+    expect(document.activeElement).toBe(screen.getByRole("button", { name: "A x" }));
   });
 
   it("opened while the value changes (playing), follows it and commits nothing until typed in", async () => {

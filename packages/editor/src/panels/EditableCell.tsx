@@ -8,7 +8,8 @@
  * the draft kept for correction) or null (accepted). A commit an Undo took back during its check
  * (UNDONE_DURING_CHECK) closes the cell on the scene's value as an accepted one does: the Undo says
  * what it did, and the draft it undid is not committed again. Escape closes without committing.
- * Both the button and the input carry `label` as their accessible name.
+ * Both the button and the input carry `label` as their accessible name. Enter is consumed by the
+ * input (its default prevented), so closing the cell never lets it activate the button refocused.
  * Opening a cell pauses playback (inside an editor): the edit applies at the current time, and the
  * values the cell and its row show are those of that time, not of a moment that playback has left.
  */
@@ -114,7 +115,12 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
           if (error === null) void commit();
         }}
         onKeyDown={(e) => {
-          if (e.key === "Enter") void commit(true);
+          if (e.key === "Enter") {
+            // Closed during this keydown, the cell focuses its button, and the same Enter's keypress
+            // would click it open again (an unchanged value never closed): the key ends here.
+            e.preventDefault();
+            void commit(true);
+          }
           if (e.key === "Escape") close(true);
         }}
       />
