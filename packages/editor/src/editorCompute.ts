@@ -80,12 +80,21 @@ export class EditorCompute {
     });
   }
 
-  /** After an edit: computes ahead unless the horizon is already far enough past the current time. */
+  /**
+   * After an edit: computes ahead of the current time, the Calculation panel's seconds counted from
+   * it, not from the horizon. The horizon is then the later of the old one (the host brings the
+   * history after an edit in the past back) and the current time plus those seconds: counted from
+   * the horizon, by then the old one again, every edit pushed it that much further (audit).
+   */
   protected async ensureAhead(): Promise<void> {
     const c = this.ui.getState().calc;
+    const now = this.now();
     const h = this.client.getSnapshot().horizon;
-    if (c.useTime && !c.useEvents && h >= this.now() + c.seconds) return;
-    await this.computeAhead();
+    if (c.useTime && !c.useEvents && h >= now + c.seconds) return;
+    const until = this.computeUntil();
+    await this.client.compute(until, false, until?.time === undefined ? undefined : now).catch((e) => {
+      this.fail(e);
+    });
   }
 
   /**
