@@ -1,8 +1,11 @@
 // @vitest-environment jsdom
 import { act, cleanup, fireEvent, render, screen } from "@testing-library/react";
 import { afterEach, describe, expect, it, vi } from "vitest";
+import { EditorContext } from "../EditorContext";
 import { UNDONE_DURING_CHECK } from "../remote/protocol";
+import { testEditor } from "../testing/harness";
 import { EditableCell, SLOW_COMMIT_MS } from "./EditableCell";
+import { MessageBar } from "./MessageBar";
 
 afterEach(cleanup);
 
@@ -170,6 +173,46 @@ describe("EditableCell", () => {
     expect(onCommit).toHaveBeenCalledWith("2");
     expect(screen.queryByRole("textbox")).toBeNull();
     expect(document.activeElement).toBe(screen.getByRole("button", { name: "A x" }));
+  });
+
+  it("a refusal shown in the message bar too is announced once: the bar's alert, the cell's text describing the input", async () => {
+    const { editor } = testEditor();
+    const text = "A r: must be a positive finite number";
+    const onCommit = vi.fn(async () => {
+      editor.ui.setState({ message: { text, tone: "error" } }); // as Editor.edit does
+      return text;
+    });
+    render(
+      <EditorContext.Provider value={editor}>
+        <MessageBar />
+        <EditableCell label="A r" value="1" onCommit={onCommit} />
+      </EditorContext.Provider>,
+    );
+    const input = open("A r");
+    fireEvent.change(input, { target: { value: "-5" } });
+    await act(async () => {
+      fireEvent.keyDown(input, { key: "Enter" });
+    });
+    expect(screen.getAllByRole("alert").map((a) => a.textContent)).toEqual([`${text}✕`]);
+    const described = document.getElementById(input.getAttribute("aria-describedby")!);
+    expect(described?.textContent).toBe(text);
+  });
+
+  it("a refusal of the cell's own (not in the bar) is the cell's alert", async () => {
+    const { editor } = testEditor();
+    const onCommit = vi.fn(async () => "vx: must be a number");
+    render(
+      <EditorContext.Provider value={editor}>
+        <MessageBar />
+        <EditableCell label="A vx" value="1" onCommit={onCommit} />
+      </EditorContext.Provider>,
+    );
+    const input = open("A vx");
+    fireEvent.change(input, { target: { value: "x" } });
+    await act(async () => {
+      fireEvent.keyDown(input, { key: "Enter" });
+    });
+    expect(screen.getAllByRole("alert").map((a) => a.textContent)).toEqual(["vx: must be a number"]);
   });
 
   it("opened while the value changes (playing), follows it and commits nothing until typed in", async () => {
