@@ -104,8 +104,13 @@ describe("editor end to end", () => {
     await poll(() => currentTime(page)).toBe(0.5);
     await scrubTo(page, 0);
     await editCell("c3 r", "-1");
-    const alert = bodies().getByRole("alert");
-    await poll(() => alert.textContent()).toMatch(/r: must be/);
+    // announced once, by the message bar; shown in place as the input's description
+    await poll(() => page.getByRole("alert").allTextContents()).toEqual([
+      "c3 r: must be a positive finite number✕",
+    ]);
+    await poll(() => bodies().locator(".cell-error").textContent()).toBe(
+      "c3 r: must be a positive finite number",
+    );
     await screenshot(page, "05-refused-cell");
     await cell("c3 r").press("Escape");
     expect(await cellValue("c3 r")).toBe(1);

@@ -3,13 +3,15 @@
  * in the worker's Timeline) and the UI store, the messages shown in it, and computing ahead. Methods
  * that can fail show the engine's message in the UI (fail; an edit, rewrite or rename refused
  * because a later action would become invalid, the engine's path `actions[i]`, also says which
- * action that is: failNaming, doc/actionRefs.ts). After each change the session computes ahead as
+ * action that is: failNaming, doc/actionRefs.ts; the edited action's own path is named as the
+ * user's cell: doc/refusalTerms.ts). After each change the session computes ahead as
  * the Calculation settings say (computeUntil, ensureAhead), a reload at the current time computes at
  * least up to it (keepTo), and a computation the engine refused to continue (a Zeno state) is said.
  * Edits past the computed history wait for it (notComputedYet).
  */
 
 import { explainRefusal } from "./doc/actionRefs";
+import { refusalInUserTerms } from "./doc/refusalTerms";
 import type { Action, SceneFile, Until } from "./engineTypes";
 import type { TimelineClient } from "./remote/client";
 import type { UiStore } from "./store/uiStore";
@@ -48,12 +50,15 @@ export class EditorCompute {
 
   /**
    * fail, the message saying which action the engine's `actions[i]` is; `actions` is the list its
-   * index refers to (the scene before an edit, the scene given to a load).
+   * index refers to (the scene before an edit, the scene given to a load). `edited`: the one action
+   * of a refused edit, whose engine path (`action.v[0]`) is then named as the user's cell ("A vx").
    */
-  protected failNaming(e: unknown, actions: readonly Action[]): string {
-    const text = e instanceof Error ? e.message : String(e);
-    const path = (e as { path?: unknown } | null)?.path;
-    return this.fail(explainRefusal(text, typeof path === "string" ? path : null, actions));
+  protected failNaming(e: unknown, actions: readonly Action[], edited?: Action): string {
+    const raw = e instanceof Error ? e.message : String(e);
+    const p = (e as { path?: unknown } | null)?.path;
+    const path = typeof p === "string" ? p : null;
+    const text = edited === undefined ? raw : refusalInUserTerms(raw, path, edited);
+    return this.fail(explainRefusal(text, path, actions));
   }
 
   info(text: string): void {
@@ -80,12 +85,21 @@ export class EditorCompute {
     });
   }
 
-  /** After an edit: computes ahead unless the horizon is already far enough past the current time. */
+  /**
+   * After an edit: computes ahead of the current time, the Calculation panel's seconds counted from
+   * it, not from the horizon. The horizon is then the later of the old one (the host brings the
+   * history after an edit in the past back) and the current time plus those seconds: counted from
+   * the horizon, by then the old one again, every edit pushed it that much further (audit).
+   */
   protected async ensureAhead(): Promise<void> {
     const c = this.ui.getState().calc;
+    const now = this.now();
     const h = this.client.getSnapshot().horizon;
-    if (c.useTime && !c.useEvents && h >= this.now() + c.seconds) return;
-    await this.computeAhead();
+    if (c.useTime && !c.useEvents && h >= now + c.seconds) return;
+    const until = this.computeUntil();
+    await this.client.compute(until, false, until?.time === undefined ? undefined : now).catch((e) => {
+      this.fail(e);
+    });
   }
 
   /**

@@ -135,7 +135,7 @@ export class EditorSession extends EditorCompute {
         if (await this.tookBack(ticket)) return UNDONE_DURING_CHECK;
         // The engine names a later action by its index in the list before this edit (Timeline.apply);
         // with several actions, the later ones meet a list holding the earlier ones.
-        return actions.length === 1 ? this.failNaming(e, before.actions) : this.fail(e);
+        return actions.length === 1 ? this.failNaming(e, before.actions, actions[0]) : this.fail(e);
       } finally {
         this.unconfirmed = null;
       }

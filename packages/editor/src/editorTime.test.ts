@@ -207,6 +207,46 @@ describe("EditorTime typed times and Play", () => {
     expect(h.editor.ui.getState().playing).toBe(true);
   });
 
+  it("why playback did not start goes once it starts (1× after Reverse at t = 0) or the speed changes", async () => {
+    const h = await loaded(farMeeting);
+    h.editor.setSpeed(-1);
+    h.editor.play();
+    expect(h.editor.ui.getState().message?.text).toMatch(/^Playing backwards from t = 0/);
+    h.editor.setSpeed(1);
+    expect(h.editor.ui.getState().message).toBeNull(); // its advice was followed
+    h.editor.setSpeed(-1);
+    h.editor.play();
+    h.editor.ui.setState({ speed: 1 }); // the store alone: only the start removes it
+    h.editor.play();
+    expect(h.editor.ui.getState()).toMatchObject({ playing: true, message: null });
+  });
+
+  it("a message of someone else stays when playback starts", async () => {
+    const h = await loaded(farMeeting);
+    h.editor.ui.setState({ message: { text: "Saved.", tone: "info" } });
+    h.editor.play();
+    expect(h.editor.ui.getState().message?.text).toBe("Saved.");
+  });
+
+  it("speed 0: Play says nothing would move and does not start; setting 0 while playing pauses and says so", async () => {
+    const h = await loaded(farMeeting);
+    h.editor.setSpeed(0);
+    h.editor.togglePlay();
+    expect(h.editor.ui.getState().playing).toBe(false);
+    expect(h.editor.ui.getState().message?.text).toBe(
+      "Speed 0: nothing would move. Set a speed (Speed field, 1×) to play.",
+    );
+    h.editor.setSpeed(0.5);
+    expect(h.editor.ui.getState().message).toBeNull();
+    h.editor.togglePlay();
+    expect(h.editor.ui.getState().playing).toBe(true);
+    h.editor.setSpeed(0.0004); // kept to 0.001: 0
+    expect(h.editor.ui.getState()).toMatchObject({ speed: 0, playing: false });
+    expect(h.editor.ui.getState().message?.text).toBe(
+      "Speed 0: paused. Set a speed (Speed field, 1×) to play again.",
+    );
+  });
+
   it("Play forwards at the end of the history with nothing to compute says why; with auto-extend it plays", async () => {
     const h = await loaded(farMeeting);
     const end = h.client.getSnapshot().horizon;

@@ -3,19 +3,25 @@
  * (kept within [0, horizon], or the end of a history being computed again), going to a typed time (computing up to it first when it lies past the
  * horizon), stepping from event to event (computing ahead to the next event past the horizon), play
  * and pause (saying why playback cannot start) and the playback speed. None of them is an edit:
- * nothing here is recorded in the undo history.
+ * nothing here is recorded in the undo history. Why playback cannot start (backwards from 0, at the
+ * end of the history, at speed 0) is said until playback starts or the speed changes; speed 0 is a
+ * speed one can set (the ±0.1 steps pass through it) but not play at: setting it while playing
+ * pauses, and says so (playing at 0 showed Pause with nothing moving).
  */
 
 import { shown } from "./editorSession";
 import { EditorUndo } from "./editorUndo";
 import { canExtend } from "./playback";
 import { restoreTarget } from "./remote/protocol";
+import type { Message } from "./store/uiStore";
 
 export class EditorTime extends EditorUndo {
   /** The tail of the chain of event steps (see stepEvent). */
   private steps: Promise<void> = Promise.resolve();
   /** How many times the user cancelled a computation (Cancel): tells a cancelled one from one done. */
   private cancels = 0;
+  /** The message play() or setSpeed() showed to say why playback does not run (see sayWhyNotPlaying). */
+  private notPlaying: Message | null = null;
 
   /**
    * Moves the time to t, kept within [0, end]: the horizon, or while the history the user had is
@@ -166,12 +172,31 @@ export class EditorTime extends EditorUndo {
     else this.play();
   }
 
-  /** Starts playback at the current speed; says why when it would stop at once. */
+  /** Shows why playback does not run; it goes once playback starts or the speed changes. */
+  private sayWhyNotPlaying(text: string): void {
+    this.notPlaying = { text, tone: "info" };
+    this.ui.setState({ message: this.notPlaying });
+  }
+
+  /** Removes the message saying why playback did not run, if it is still shown. */
+  private forgetWhyNotPlaying(): void {
+    if (this.notPlaying !== null && this.ui.getState().message === this.notPlaying)
+      this.ui.setState({ message: null });
+    this.notPlaying = null;
+  }
+
+  /** Starts playback at the current speed; says why when it would stop at once, or not move. */
   play(): void {
     const s = this.ui.getState();
+    if (s.speed === 0) {
+      this.sayWhyNotPlaying("Speed 0: nothing would move. Set a speed (Speed field, 1×) to play.");
+      return;
+    }
     // Backwards from 0 the playback clock (playback.ts) stops at the first frame: it did nothing.
     if (s.speed < 0 && s.t <= 0) {
-      this.info("Playing backwards from t = 0: nothing before it. Set a positive speed to play forwards.");
+      this.sayWhyNotPlaying(
+        "Playing backwards from t = 0: nothing before it. Set a positive speed to play forwards.",
+      );
       return;
     }
     // Forwards from the end of the history with nothing to compute further, it stopped at once too.
@@ -189,14 +214,24 @@ export class EditorTime extends EditorUndo {
           : info.idle
             ? "no event is left to compute (type a later time to go further)"
             : "auto-extend is off (Calculation panel)";
-      this.info(`At the end of the computed history (t = ${end} s): ${why}.`);
+      this.sayWhyNotPlaying(`At the end of the computed history (t = ${end} s): ${why}.`);
       return;
     }
+    this.forgetWhyNotPlaying();
     this.ui.setState({ playing: true });
   }
 
+  /** Sets the speed (kept to 0.001); 0 while playing pauses, and says so. */
   setSpeed(speed: number): void {
     if (!Number.isFinite(speed)) return;
-    this.ui.setState({ speed: Math.round(speed * 1000) / 1000 });
+    const next = Math.round(speed * 1000) / 1000;
+    const s = this.ui.getState();
+    if (next === s.speed) return;
+    this.forgetWhyNotPlaying();
+    this.ui.setState({ speed: next });
+    if (next === 0 && s.playing) {
+      this.ui.setState({ playing: false });
+      this.sayWhyNotPlaying("Speed 0: paused. Set a speed (Speed field, 1×) to play again.");
+    }
   }
 }

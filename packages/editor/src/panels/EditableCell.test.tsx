@@ -1,10 +1,26 @@
 // @vitest-environment jsdom
 import { act, cleanup, fireEvent, render, screen } from "@testing-library/react";
 import { afterEach, describe, expect, it, vi } from "vitest";
+import { EditorContext } from "../EditorContext";
 import { UNDONE_DURING_CHECK } from "../remote/protocol";
+import { testEditor } from "../testing/harness";
 import { EditableCell, SLOW_COMMIT_MS } from "./EditableCell";
+import { MessageBar } from "./MessageBar";
 
 afterEach(cleanup);
+
+/**
+ * Enter as a browser (and user-event) presses it: keydown on the focused element, then, unless the
+ * keydown's default was prevented, keypress on the element focused by then, whose default action on
+ * a button is a click. fireEvent.keyDown alone never clicks, so it hid the cell reopening.
+ */
+function pressEnter(): void {
+  const go = fireEvent.keyDown(document.activeElement ?? document.body, { key: "Enter", code: "Enter" });
+  if (!go) return;
+  const target = document.activeElement ?? document.body;
+  const pressed = fireEvent.keyPress(target, { key: "Enter", code: "Enter", charCode: 13 });
+  if (pressed && target instanceof HTMLButtonElement) fireEvent.click(target);
+}
 
 function open(label: string): HTMLInputElement {
   fireEvent.click(screen.getByRole("button", { name: label }));
@@ -122,6 +138,81 @@ describe("EditableCell", () => {
     fireEvent.keyDown(input, { key: "Escape" });
     expect(document.activeElement).toBe(screen.getByRole("button", { name: "a vx" }));
     expect(screen.queryByRole("textbox")).toBeNull();
+  });
+
+  it("Enter on an unchanged value, or the same value retyped, closes the cell with focus on its button, not reopened", async () => {
+    // The unchanged path closed the cell during the keydown; the same Enter then clicked the button
+    // focused in its place and opened the cell again (audit s09c).
+    const onCommit = vi.fn(async () => null);
+    render(<EditableCell label="A y" value="3" onCommit={onCommit} />);
+    let input = open("A y");
+    input.focus();
+    pressEnter(); // not inside an act: React renders a key's updates before the key's next event
+    await act(async () => {});
+    expect(screen.queryByRole("textbox")).toBeNull();
+    expect(document.activeElement).toBe(screen.getByRole("button", { name: "A y" }));
+
+    input = open("A y");
+    input.focus();
+    fireEvent.change(input, { target: { value: "3" } });
+    pressEnter(); // not inside an act: React renders a key's updates before the key's next event
+    await act(async () => {});
+    expect(screen.queryByRole("textbox")).toBeNull();
+    expect(document.activeElement).toBe(screen.getByRole("button", { name: "A y" }));
+    expect(onCommit).not.toHaveBeenCalled();
+  });
+
+  it("Enter committing a changed value closes the cell, not reopened", async () => {
+    const onCommit = vi.fn(async () => null);
+    render(<EditableCell label="A x" value="1" onCommit={onCommit} />);
+    const input = open("A x");
+    input.focus();
+    fireEvent.change(input, { target: { value: "2" } });
+    pressEnter(); // not inside an act: React renders a key's updates before the key's next event
+    await act(async () => {});
+    expect(onCommit).toHaveBeenCalledWith("2");
+    expect(screen.queryByRole("textbox")).toBeNull();
+    expect(document.activeElement).toBe(screen.getByRole("button", { name: "A x" }));
+  });
+
+  it("a refusal shown in the message bar too is announced once: the bar's alert, the cell's text describing the input", async () => {
+    const { editor } = testEditor();
+    const text = "A r: must be a positive finite number";
+    const onCommit = vi.fn(async () => {
+      editor.ui.setState({ message: { text, tone: "error" } }); // as Editor.edit does
+      return text;
+    });
+    render(
+      <EditorContext.Provider value={editor}>
+        <MessageBar />
+        <EditableCell label="A r" value="1" onCommit={onCommit} />
+      </EditorContext.Provider>,
+    );
+    const input = open("A r");
+    fireEvent.change(input, { target: { value: "-5" } });
+    await act(async () => {
+      fireEvent.keyDown(input, { key: "Enter" });
+    });
+    expect(screen.getAllByRole("alert").map((a) => a.textContent)).toEqual([`${text}✕`]);
+    const described = document.getElementById(input.getAttribute("aria-describedby")!);
+    expect(described?.textContent).toBe(text);
+  });
+
+  it("a refusal of the cell's own (not in the bar) is the cell's alert", async () => {
+    const { editor } = testEditor();
+    const onCommit = vi.fn(async () => "vx: must be a number");
+    render(
+      <EditorContext.Provider value={editor}>
+        <MessageBar />
+        <EditableCell label="A vx" value="1" onCommit={onCommit} />
+      </EditorContext.Provider>,
+    );
+    const input = open("A vx");
+    fireEvent.change(input, { target: { value: "x" } });
+    await act(async () => {
+      fireEvent.keyDown(input, { key: "Enter" });
+    });
+    expect(screen.getAllByRole("alert").map((a) => a.textContent)).toEqual(["vx: must be a number"]);
   });
 
   it("opened while the value changes (playing), follows it and commits nothing until typed in", async () => {

@@ -8,11 +8,14 @@
  * the draft kept for correction) or null (accepted). A commit an Undo took back during its check
  * (UNDONE_DURING_CHECK) closes the cell on the scene's value as an accepted one does: the Undo says
  * what it did, and the draft it undid is not committed again. Escape closes without committing.
- * Both the button and the input carry `label` as their accessible name.
+ * A refusal is shown under the input and describes it (aria-describedby); it is an alert only when
+ * the message bar does not show the same text already (the editor's refusals go there too: a screen
+ * reader announced each twice). Both the button and the input carry `label` as their accessible name. Enter is consumed by the
+ * input (its default prevented), so closing the cell never lets it activate the button refocused.
  * Opening a cell pauses playback (inside an editor): the edit applies at the current time, and the
  * values the cell and its row show are those of that time, not of a moment that playback has left.
  */
-import { useContext, useEffect, useId, useRef, useState } from "react";
+import { useContext, useEffect, useId, useRef, useState, useSyncExternalStore } from "react";
 import { EditorContext } from "../EditorContext";
 import { UNDONE_DURING_CHECK } from "../remote/protocol";
 
@@ -26,6 +29,8 @@ export interface EditableCellProps {
 /** A commit not answered after this many milliseconds shows that it is being checked. */
 export const SLOW_COMMIT_MS = 300;
 
+const noSubscription = () => () => {};
+
 export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellProps) {
   // null: at rest (a button); open: `typed` is null until the user types (the input then shows the
   // live value), then the text typed.
@@ -34,6 +39,10 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
   const [waiting, setWaiting] = useState(false);
   const errorId = useId();
   const editor = useContext(EditorContext);
+  // The message bar's text: a refusal it shows already (as an alert) is not announced again here.
+  const inBar = useSyncExternalStore(editor?.ui.subscribe ?? noSubscription, () =>
+    error === null ? false : editor?.ui.getState().message?.text === error,
+  );
   // A commit in flight: Enter then a click elsewhere (blur) before the edit was applied committed the
   // same draft twice (two undo steps for one edit).
   const pending = useRef(false);
@@ -114,7 +123,12 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
           if (error === null) void commit();
         }}
         onKeyDown={(e) => {
-          if (e.key === "Enter") void commit(true);
+          if (e.key === "Enter") {
+            // Closed during this keydown, the cell focuses its button, and the same Enter's keypress
+            // would click it open again (an unchanged value never closed): the key ends here.
+            e.preventDefault();
+            void commit(true);
+          }
           if (e.key === "Escape") close(true);
         }}
       />
@@ -124,7 +138,7 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
         </span>
       )}
       {error && (
-        <span id={errorId} role="alert" className="cell-error">
+        <span id={errorId} role={inBar ? undefined : "alert"} className="cell-error">
           {error}
         </span>
       )}

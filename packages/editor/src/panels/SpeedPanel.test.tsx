@@ -41,6 +41,23 @@ describe("SpeedPanel", () => {
     expect(editor.ui.getState().speed).toBe(0);
   });
 
+  it("a valid speed removes the field's earlier refusal, not another message", () => {
+    const { editor } = testEditor();
+    render(
+      <EditorContext.Provider value={editor}>
+        <SpeedPanel />
+      </EditorContext.Provider>,
+    );
+    const field = screen.getByRole("textbox", { name: "Speed" });
+    type(field, "fast");
+    expect(editor.ui.getState().message?.text).toMatch(/^Speed: must be a finite number/);
+    type(field, "2");
+    expect(editor.ui.getState()).toMatchObject({ speed: 2, message: null });
+    editor.ui.setState({ message: { text: 'Time (s): must be 0 or later, got "-3"', tone: "error" } });
+    type(field, "3");
+    expect(editor.ui.getState().message?.text).toBe('Time (s): must be 0 or later, got "-3"');
+  });
+
   it("Reverse (−1×) at t = 0 says why nothing plays instead of doing nothing", () => {
     const { editor } = testEditor();
     render(

@@ -1,10 +1,15 @@
 /**
  * Speed: −0.1, Reverse (−1×), Play/Pause, 1×, +0.1 and a speed field. Negative speeds replay
  * backwards (exactly: every frame is stateAt of its time). Speed is not an edit (no undo step).
+ * The field refuses what it cannot keep with a message starting "Speed:", which goes once it applies
+ * a valid value (fieldMessages.ts); speed 0 pauses (editorTime.ts says so).
  */
 import { useState } from "react";
 import { useEditor, useUi } from "../EditorContext";
 import { formatNumber, parseNumber } from "./EditableCell";
+import { afterFieldApplied } from "./fieldMessages";
+
+const SPEED_LABEL = "Speed";
 
 export function SpeedPanel() {
   const editor = useEditor();
@@ -22,8 +27,13 @@ export function SpeedPanel() {
         : x !== 0 && Math.round(x * 1000) === 0
           ? "must be 0 or at least 0.001 in size (speeds are kept to 0.001)"
           : null;
-    if (why === null) editor.setSpeed(x as number);
-    else editor.ui.setState({ message: { text: `Speed: ${why}, got "${draft.trim()}"`, tone: "error" } });
+    if (why === null) {
+      editor.ui.setState((s) => ({ message: afterFieldApplied(s.message, SPEED_LABEL) }));
+      editor.setSpeed(x as number);
+    } else
+      editor.ui.setState({
+        message: { text: `${SPEED_LABEL}: ${why}, got "${draft.trim()}"`, tone: "error" },
+      });
     setDraft(null);
   };
   const play = (s: number) => {
@@ -52,7 +62,7 @@ export function SpeedPanel() {
         <label>
           ×{" "}
           <input
-            aria-label="Speed"
+            aria-label={SPEED_LABEL}
             size={6}
             value={draft ?? formatNumber(speed)}
             onFocus={() => setDraft(formatNumber(speed))}

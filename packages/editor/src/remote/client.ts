@@ -138,9 +138,13 @@ export class TimelineClient {
   apply(actions: Action[]): Promise<void> {
     return this.request({ op: "apply", actions });
   }
-  /** Computes further from the horizon; `restore`: it brings back history the user had. */
-  compute(until: Until | null, restore = false): Promise<void> {
-    return this.request({ op: "compute", until, restore });
+  /**
+   * Computes further from the horizon; `restore`: it brings back history the user had; `from`: the
+   * time limit counts from that time instead (protocol.ts ComputeAsk).
+   */
+  compute(until: Until | null, restore = false, from?: number): Promise<void> {
+    if (from === undefined) return this.request({ op: "compute", until, restore });
+    return this.request({ op: "compute", until, restore, from });
   }
   cancel(): Promise<void> {
     return this.request({ op: "cancel" });

@@ -86,7 +86,10 @@ export class TimelineHost extends HostCompute {
       case "apply":
         return this.applyAll(r.actions, r.id);
       case "compute":
-        this.startJob(r.until, r.restore === true);
+        this.startJob(
+          r.from === undefined ? { until: r.until } : { until: r.until, from: r.from },
+          r.restore === true,
+        );
         return null;
       case "cancel":
         // Cancelling the check of an edit's later actions takes the edit back (it is not known

@@ -13,7 +13,7 @@ import type { Until } from "../engineTypes";
 import { errorInfo } from "./errors";
 import { lastEventTime } from "./eventQueries";
 import { PendingEdits } from "./pendingEdit";
-import type { ComputeStatus, HostMessage, TimelineInfo } from "./protocol";
+import type { ComputeAsk, ComputeStatus, HostMessage, TimelineInfo } from "./protocol";
 import { SeriesRecorder } from "./series";
 import type { TimelineLike } from "./timelineLike";
 
@@ -59,7 +59,7 @@ export class HostCompute {
   /** A computation asked during a check that passed before its restore job had brought the old
    *  history back: it starts when that job ends, or the job that replaced it (not after a Cancel,
    *  an edit or a load, which drop it). */
-  private afterRestore: { job: Job; until: Until | null } | null = null;
+  private afterRestore: { job: Job; ask: ComputeAsk } | null = null;
 
   constructor(
     protected readonly env: HostEnv,
@@ -92,18 +92,24 @@ export class HostCompute {
 
   /** Starts a restore job up to the absolute time `end`, exactly (h + (end - h) may round below end). */
   protected restoreTo(end: number): void {
-    this.startJob({ time: end - this.tl.horizon }, true);
+    this.startJob({ until: { time: end - this.tl.horizon } }, true);
     if (this.job) this.job.targetTime = end;
   }
 
-  protected startJob(until: Until | null, restore = false): void {
+  protected startJob(ask: ComputeAsk, restore = false): void {
+    const { until } = ask;
     const h = this.tl.horizon;
     const running = this.job;
+    // The absolute time a time limit reaches (from the horizon, or from `ask.from`).
+    const target = until?.time === undefined ? null : (ask.from ?? h) + until.time;
     // While an edit's later actions are being checked, its job runs on (PendingEdits.hold).
-    if (this.pending.hold(running, h, until, restore)) {
+    if (this.pending.hold(running, target, ask, restore)) {
       this.changed(false);
       return;
     }
+    // Asked up to a time reached already (from the current time, after an edit): nothing to do,
+    // and a computation running goes on.
+    if (ask.from !== undefined && target !== null && until?.events === undefined && target <= h) return;
     // A request for less than a running restore covers (the editor's "compute ahead" after an edit)
     // leaves it running: it would otherwise cut the recomputation of the user's history short.
     if (
@@ -112,8 +118,8 @@ export class HostCompute {
       running.targetTime !== null &&
       until !== null &&
       until.events === undefined &&
-      until.time !== undefined &&
-      h + until.time <= running.targetTime
+      target !== null &&
+      target <= running.targetTime
     ) {
       this.changed(false);
       return;
@@ -123,16 +129,16 @@ export class HostCompute {
     // a time held in it) and a shorter request does not cut it.
     const covers =
       running?.restore === true &&
-      until?.time !== undefined &&
-      until.events === undefined &&
+      target !== null &&
+      until?.events === undefined &&
       running.targetTime !== null &&
-      h + until.time >= running.targetTime;
+      target >= running.targetTime;
     const after = this.afterRestore;
     this.job = {
       restore: restore || covers,
       events: 0,
       targetEvents: until?.events ?? null,
-      targetTime: until?.time === undefined ? null : h + until.time,
+      targetTime: target,
       startHorizon: h,
       budget: 256,
     };
@@ -204,7 +210,7 @@ export class HostCompute {
           // The user's history comes back first: a count of events asked meanwhile counts from
           // its end, not from the edit's check (which would leave the rest of it uncomputed).
           if (job.restore && job.targetTime !== null && this.tl.horizon < job.targetTime)
-            this.afterRestore = { job, until: asked };
+            this.afterRestore = { job, ask: asked };
           else {
             this.startJob(asked);
             return;
@@ -226,7 +232,7 @@ export class HostCompute {
     if (next !== null && next.job === job && this.job === null) {
       this.afterRestore = null;
       if (this.stopped === null) {
-        this.startJob(next.until);
+        this.startJob(next.ask);
         return;
       }
     }

@@ -10,9 +10,9 @@
  * meanwhile extends the check's job or waits for the check to pass (`afterCheck`). This module holds
  * that state and answers the reply; the host restores its timeline (HostCompute.takeBack).
  */
-import type { Action, Until } from "../engineTypes";
+import type { Action } from "../engineTypes";
 import { errorInfo } from "./errors";
-import type { ComputeStatus, ErrorInfo, HostMessage } from "./protocol";
+import type { ComputeAsk, ComputeStatus, ErrorInfo, HostMessage } from "./protocol";
 import type { TimelineLike } from "./timelineLike";
 
 /**
@@ -42,7 +42,7 @@ export class PendingEdits {
   edit: PendingEdit | null = null;
   /** A computation asked while an edit was being checked, to start once the check has passed
    *  and the old history is back (hostCompute.ts). */
-  afterCheck: Until | null | undefined = undefined;
+  afterCheck: ComputeAsk | undefined = undefined;
 
   constructor(private readonly post: (message: HostMessage) => void) {}
 
@@ -59,20 +59,20 @@ export class PendingEdits {
    * A computation asked (not a restore) while `running` checks the pending edit's later actions:
    * whether it was held here. The check's job runs on (a compute-ahead request would otherwise
    * replace it and the edit's reply would never come); a request for more time extends it (the
-   * horizon is `h`).
+   * absolute time it asks for is `target`).
    */
-  hold(running: ComputeStatus | null, h: number, until: Until | null, restore: boolean): boolean {
+  hold(running: ComputeStatus | null, target: number | null, ask: ComputeAsk, restore: boolean): boolean {
     if (!this.edit || !running || restore) return false;
-    if (until?.time !== undefined && until.events === undefined && running.targetTime !== null)
-      running.targetTime = Math.max(running.targetTime, h + until.time);
+    if (target !== null && ask.until?.events === undefined && running.targetTime !== null)
+      running.targetTime = Math.max(running.targetTime, target);
     // Another kind (until idle, a count of events) runs once the check has passed: it was
     // dropped without a word (audit of session 15).
-    else this.afterCheck = until;
+    else this.afterCheck = ask;
     return true;
   }
 
   /** The check has passed: answers the edit ok; the computation asked meanwhile (undefined: none). */
-  passed(): Until | null | undefined {
+  passed(): ComputeAsk | undefined {
     this.answer(null);
     const asked = this.afterCheck;
     this.afterCheck = undefined;

@@ -94,6 +94,17 @@ export interface SeriesPoint {
   collisions: number;
 }
 
+/**
+ * A computation asked: up to `until` (null: until idle). Its `time` counts from the horizon, or from
+ * the absolute time `from` when given: "10 s past the current time" asked after an edit in the past
+ * must not count from the old history, which may be back by the time the request is met (every edit
+ * pushed the horizon 10 s further). Reached already (from + time ≤ horizon, no events), it does nothing.
+ */
+export interface ComputeAsk {
+  until: Until | null;
+  from?: number;
+}
+
 export type Request =
   /**
    * Replaces the scene. `keepTo` keeps the history the user had (an undo, a redo, a rename at the
@@ -105,8 +116,11 @@ export type Request =
    */
   | { op: "load"; scene: SceneFile; keepTo?: number; check?: boolean }
   | { op: "apply"; actions: Action[] }
-  /** `restore`: the computation brings back history the user had (see ComputeStatus.restore). */
-  | { op: "compute"; until: Until | null; restore?: boolean }
+  /**
+   * `restore`: the computation brings back history the user had (see ComputeStatus.restore).
+   * `from`: `until.time` counts from this time, not from the horizon (ComputeAsk).
+   */
+  | { op: "compute"; until: Until | null; restore?: boolean; from?: number }
   | { op: "cancel" }
   /**
    * Undo of the change whose later actions are being checked (an `apply` or a checked `load` not

@@ -1,0 +1,73 @@
+import { describe, expect, it } from "vitest";
+import type { Action } from "../engineTypes";
+import { refusalInUserTerms } from "./refusalTerms";
+
+const update: Action = { time: 0, type: "updateBody", id: "A", r: -5 };
+const addDisc: Action = { time: 0, type: "addBody", id: "b1", x: 0, y: 0, r: 1, m: 1 };
+
+describe("refusalInUserTerms", () => {
+  it("names a body's field as its cell: A r, A vx, A vy", () => {
+    expect(refusalInUserTerms("action.r: must be a positive finite number", "action.r", update)).toBe(
+      "A r: must be a positive finite number",
+    );
+    expect(refusalInUserTerms("action.v[0]: must be finite", "action.v[0]", update)).toBe(
+      "A vx: must be finite",
+    );
+    const strike: Action = { time: 0, type: "giveVelocity", id: "A", v: [0, Number.POSITIVE_INFINITY] };
+    expect(refusalInUserTerms("action.v[1]: must be finite", "action.v[1]", strike)).toBe(
+      "A vy: must be finite",
+    );
+  });
+
+  it("a vector refused whole with one component not finite names that component's cell", () => {
+    const v: Action = { time: 0, type: "updateBody", id: "A", v: [3, Number.POSITIVE_INFINITY] };
+    const whole = "must be an array of two finite numbers";
+    expect(refusalInUserTerms(`action.v: ${whole}`, "action.v", v)).toBe("A vy: must be a finite number");
+    const both: Action = { time: 0, type: "updateBody", id: "A", v: [Number.NaN, Number.NaN] };
+    expect(refusalInUserTerms(`action.v: ${whole}`, "action.v", both)).toBe(`A v: ${whole}`);
+    const gravity: Action = { time: 0, type: "setGlobal", gravity: [Number.NaN, 0] };
+    expect(refusalInUserTerms(`action.gravity: ${whole}`, "action.gravity", gravity)).toBe(
+      "gravity x: must be a finite number",
+    );
+  });
+
+  it("names globals, line ends and point coordinates as their cells", () => {
+    const global: Action = { time: 0, type: "setGlobal", g: -1 };
+    expect(refusalInUserTerms("action.g: must be positive", "action.g", global)).toBe("g: must be positive");
+    expect(refusalInUserTerms("action.gravity[1]: must be finite", "action.gravity[1]", global)).toBe(
+      "gravity y: must be finite",
+    );
+    const line: Action = { time: 0, type: "updateLine", id: "L", p1: [0, 0] };
+    expect(refusalInUserTerms("action.p1[0]: must be finite", "action.p1[0]", line)).toBe(
+      "L x1: must be finite",
+    );
+    const point: Action = { time: 0, type: "updatePoint", id: "P", p: [0, 0] };
+    expect(refusalInUserTerms("action.p[1]: must be finite", "action.p[1]", point)).toBe(
+      "P y: must be finite",
+    );
+  });
+
+  it("a refused action as a whole keeps the engine's reason; an added disc is 'a new disc here'", () => {
+    const overlap = 'body "A" would overlap body "B" at time 0';
+    expect(refusalInUserTerms(`action: ${overlap}`, "action", update)).toBe(overlap);
+    expect(refusalInUserTerms('action: body "b1" would overlap body "B" at time 2', "action", addDisc)).toBe(
+      'a new disc here would overlap body "B" at time 2',
+    );
+    const addLine: Action = { time: 0, type: "addLine", id: "l1", p1: [0, 0], p2: [1, 0], kind: "segment" };
+    expect(refusalInUserTerms('action: line "l1" would overlap body "A" at time 0', "action", addLine)).toBe(
+      'a new line here would overlap body "A" at time 0',
+    );
+  });
+
+  it("a field of an added object says it is the new one's", () => {
+    expect(refusalInUserTerms("action.r: must be a positive finite number", "action.r", addDisc)).toBe(
+      "new disc r: must be a positive finite number",
+    );
+  });
+
+  it("leaves other actions' paths and messages without a path alone", () => {
+    const later = 'actions[3]: body "b" would overlap body "a" at time 4';
+    expect(refusalInUserTerms(later, "actions[3]", update)).toBe(later);
+    expect(refusalInUserTerms("engine restarted", null, update)).toBe("engine restarted");
+  });
+});
