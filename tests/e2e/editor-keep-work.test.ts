@@ -1,7 +1,8 @@
 /**
  * End-to-end: keeping a scene author's work in Debian's Chromium. Opening a shared link never
  * loses the scene one was working on (Undo brings it back); an edit is kept by a reload that comes
- * right after it; a broken link or file says what is wrong and keeps the scene.
+ * right after it; a broken link or file says what is wrong and keeps the scene; the scene Clear
+ * replaced is still what Undo brings back after a reload.
  */
 import { writeFileSync } from "node:fs";
 import { join } from "node:path";
@@ -64,6 +65,20 @@ describe("keeping work", () => {
     await page.reload(); // well within the autosave's 300 ms of quiet
     await page.getByRole("slider", { name: "Time" }).waitFor();
     await poll(() => cellText(first)).toBe("7");
+  });
+
+  it("Clear then a reload: Undo still brings the cleared scene back", async () => {
+    const before = await bodies().getByRole("row").count();
+    expect(before).toBeGreaterThan(1);
+    await page.getByRole("button", { name: "Clear" }).click();
+    await poll(message).toMatch(/^Cleared the scene\. Undo brings it back\./);
+    await poll(() => bodies().getByRole("row").count()).toBe(1);
+    await page.reload();
+    await page.getByRole("slider", { name: "Time" }).waitFor();
+    await poll(() => bodies().getByRole("row").count()).toBe(1);
+    await poll(message).toMatch(/^Restored the autosaved scene\. Undo brings back the scene it replaced/);
+    await page.getByRole("button", { name: "Undo" }).click();
+    await poll(() => bodies().getByRole("row").count()).toBe(before);
   });
 
   it("opening a shared link keeps the scene one was working on: Undo brings it back", async () => {

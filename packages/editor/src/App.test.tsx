@@ -23,6 +23,19 @@ async function renderApp() {
 }
 
 describe("App", () => {
+  it("Undo, Redo, Save file and Load file are in the header's Scene toolbar, before every panel", async () => {
+    await renderApp();
+    const bar = screen.getByRole("toolbar", { name: "Scene" });
+    expect(bar.closest("header")).not.toBeNull();
+    for (const name of ["Undo", "Redo", "Save file", "Load file"]) {
+      const button = screen.getByRole("button", { name });
+      expect(bar.contains(button)).toBe(true);
+      // first in the tab order: before the Bodies table's first cell
+      const cell = within(screen.getByRole("table", { name: "Bodies" })).getAllByRole("button")[0]!;
+      expect(button.compareDocumentPosition(cell) & Node.DOCUMENT_POSITION_FOLLOWING).toBeTruthy();
+    }
+  });
+
   it("every control the end-to-end tests rely on has its accessible name", async () => {
     await renderApp();
     for (const name of ["Play", "Reverse", "Next event", "Previous event", "Undo", "Redo", "Paste", "Copy"])

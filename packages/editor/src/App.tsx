@@ -1,5 +1,6 @@
 /**
- * The editor's layout: header (presets, message, newer work in another tab), canvas with its toolbar, side panels, time bar,
+ * The editor's layout: header (scene actions: Undo, Redo, Save file, Load file; presets, message,
+ * newer work in another tab), canvas with its toolbar, side panels, time bar,
  * and the drop indicator (a scene file dropped anywhere opens).
  */
 import { SceneCanvas } from "./canvas/SceneCanvas";
@@ -13,6 +14,7 @@ import { MessageBar } from "./panels/MessageBar";
 import { NewerWorkNotice } from "./panels/NewerWorkNotice";
 import { PointsTable } from "./panels/PointsTable";
 import { PresetsMenu } from "./panels/PresetsMenu";
+import { SceneActions } from "./panels/SceneActions";
 import { SpeedPanel } from "./panels/SpeedPanel";
 import { StatePanel } from "./panels/StatePanel";
 import { StatsPanel } from "./panels/StatsPanel";
@@ -24,6 +26,7 @@ export function App() {
     <div className="app">
       <header className="header">
         <h1>chapgame</h1>
+        <SceneActions />
         <PresetsMenu />
         <MessageBar />
         <NewerWorkNotice />

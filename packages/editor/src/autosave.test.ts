@@ -1,6 +1,7 @@
 import { afterEach, describe, expect, it } from "vitest";
 import { ADOPT_AFTER_MS, openNewerWork, TAB_KEY, TabAutosave } from "./autosave";
-import { LEGACY_KEY, listSlots, MAX_SLOTS, readSlot, slotKey } from "./doc/autosaveSlots";
+import { firstScene, loadFirstScene } from "./boot";
+import { LEGACY_KEY, listSlots, MAX_SLOTS, readReplaced, readSlot, slotKey } from "./doc/autosaveSlots";
 import { sceneText } from "./doc/sceneIo";
 import { EMPTY_SCENE } from "./editor";
 import type { SceneFile } from "./engineTypes";
@@ -51,7 +52,7 @@ function profile(quota = Number.POSITIVE_INFINITY) {
     return local;
   };
   /** Opens a tab (a reload when `session` is a tab's sessionStorage) and starts its autosave. */
-  async function open(session: Storage = memoryStorage(), channel = true) {
+  async function open(session: Storage = memoryStorage(), channel = true, asBoot = false) {
     const win = new EventTarget();
     const local = localFor();
     tabs.push({ win, local });
@@ -64,9 +65,12 @@ function profile(quota = Number.POSITIVE_INFINITY) {
       channel: bc as never,
     });
     const h = testEditor();
-    const restored = autosave.restore();
+    // `asBoot`: as boot.ts starts (the previous scene and the default preset too), else simplified
+    const first = asBoot ? firstScene("", autosave) : null;
+    const restored = asBoot ? null : autosave.restore();
+    if (first) await loadFirstScene(h.editor, first);
     // (boot loads the default preset when there is no autosave)
-    await h.editor.loadScene(restored?.slot.scene ?? EMPTY_SCENE, { undoable: false });
+    else await h.editor.loadScene(restored?.slot.scene ?? EMPTY_SCENE, { undoable: false });
     await settled(h.client);
     const stop = autosave.attach(h.editor, win as Window);
     stops.push(stop);
@@ -292,5 +296,85 @@ describe("autosave per tab", () => {
     const bAgain = await p.open(b.session);
     expect(ids(bAgain.editor.doc)).toEqual(["other"]);
     expect(bAgain.restored?.note).toMatch(/^This tab's last scene could not be autosaved/);
+  });
+});
+
+describe("autosave keeps the scene a load replaced", () => {
+  const reload = (p: ReturnType<typeof profile>, tab: { session: Storage; close(): void }) => {
+    tab.close();
+    return p.open(tab.session, true, true);
+  };
+
+  it("Clear then a reload: the scene is empty, Undo brings the work back (and says so)", async () => {
+    const p = newProfile();
+    const a = await p.open(undefined, true, true);
+    await a.editor.loadScene(scene("work"));
+    a.flush();
+    expect(await a.editor.clear()).toBeNull();
+    expect(a.ui().message).toEqual({ text: "Cleared the scene. Undo brings it back.", tone: "info" });
+    const b = await reload(p, a);
+    expect(b.editor.doc.actions).toEqual([]);
+    expect(b.editor.history.getState().past.length).toBe(1);
+    expect(b.ui().message?.text).toMatch(
+      /^Restored the autosaved scene\. Undo brings back the scene it replaced at /,
+    );
+    await b.editor.undo();
+    expect(ids(b.editor.doc)).toEqual(["work"]);
+    // undone and reloaded: nothing to go back to (the replaced scene is the scene itself)
+    const c = await reload(p, b);
+    expect(ids(c.editor.doc)).toEqual(["work"]);
+    expect(c.editor.history.getState().past.length).toBe(0);
+  });
+
+  it("Clear, then presets: the work is kept, not the empty scene nor the unedited preset between", async () => {
+    const p = newProfile();
+    const a = await p.open(undefined, true, true);
+    await a.editor.loadScene(scene("work"));
+    a.flush();
+    await a.editor.clear();
+    await a.editor.loadScene(scene("preset"), { reproducible: true });
+    await a.editor.loadScene(scene("preset2"), { reproducible: true });
+    a.flush();
+    expect(ids(readReplaced(p.shared, a.autosave.tab)!.scene)).toEqual(["work"]);
+    // an edit makes the preset work of its own: replacing it keeps it
+    await a.editor.edit([{ time: 0, type: "updateBody", id: "preset2", x: 3 }]);
+    await a.editor.clear();
+    a.flush();
+    expect(ids(readReplaced(p.shared, a.autosave.tab)!.scene)).toEqual(["preset2", "preset2"]);
+    // a file (or a paste) loaded and replaced unedited is kept: it may exist nowhere else
+    await a.editor.loadScene(scene("pasted"));
+    await a.editor.clear();
+    a.flush();
+    expect(ids(readReplaced(p.shared, a.autosave.tab)!.scene)).toEqual(["pasted"]);
+    const b = await reload(p, a);
+    await b.editor.undo();
+    expect(ids(b.editor.doc)).toEqual(["pasted"]);
+  });
+
+  it("the scene replaced within the autosave's quiet delay is kept by the save on leaving the page", async () => {
+    const p = newProfile();
+    const a = await p.open(undefined, true, true);
+    await a.editor.loadScene(scene("work"));
+    a.flush();
+    await a.editor.clear(); // reloaded at once: no timer has run
+    const b = await reload(p, a);
+    await b.editor.undo();
+    expect(ids(b.editor.doc)).toEqual(["work"]);
+  });
+
+  it("a pruned slot takes its replaced scene with it", async () => {
+    const p = newProfile();
+    const a = await p.open(undefined, true, true);
+    await a.editor.loadScene(scene("work"));
+    a.flush();
+    await a.editor.clear();
+    a.close();
+    for (let i = 0; i < MAX_SLOTS; i++) {
+      const t = await p.open();
+      await t.editor.loadScene(scene(`s${i}`));
+      t.flush();
+    }
+    expect(readSlot(p.shared, a.autosave.tab)).toBeNull();
+    expect(readReplaced(p.shared, a.autosave.tab)).toBeNull();
   });
 });

@@ -7,20 +7,28 @@
  * Nothing is lost: a slot removed by another tab's pruning is written again at once, and a tab
  * duplicated by the browser (which copies sessionStorage, so the id too) takes a new id on start
  * (tabPresence.ts). A fresh tab that restored the slot of a tab no longer open takes that slot over.
+ * A load that replaces the scene (Clear, a preset, an opened scene: Editor.replaced) keeps the scene
+ * it took away beside the slot (doc/autosaveSlots.ts keepsReplaced, written with the next save): the
+ * autosave of the new scene 300 ms later no longer makes the old one unreachable, since a reload
+ * loads it as the step Undo goes back to (boot.ts firstScene).
  */
 import {
+  keepsReplaced,
   migrateLegacy,
   newestSlot,
   pruneSlots,
+  readReplaced,
   readSlot,
   type Slot,
   slotKey,
   slotSavedAt,
   slotText,
+  writeReplaced,
   writeSlot,
 } from "./doc/autosaveSlots";
 import { sceneText } from "./doc/sceneIo";
 import type { Editor } from "./editor";
+import type { Replacement } from "./editorSession";
 import type { SceneFile } from "./engineTypes";
 import { type TabChannel, TabPresence } from "./tabPresence";
 
@@ -91,6 +99,12 @@ export class TabAutosave {
   private readonly muted = new Set<string>();
   /** The slot of another tab a fresh tab restored (null: none, or its own). */
   private restoredFrom: { tab: string; savedAt: number } | null = null;
+  /** The scene text the last replacing load loaded when it was a preset or Clear's (keepsReplaced). */
+  private reproducibleText: string | null = null;
+  /** The scene text a load replaced, to keep beside the slot (written with the next save). */
+  private replacedText: string | null = null;
+  /** Whether replacedText is still to be written. */
+  private replacedPending = false;
 
   constructor(private readonly env: AutosaveEnv) {
     migrateLegacy(env.local);
@@ -104,7 +118,7 @@ export class TabAutosave {
    * The scene to start with: this tab's own slot on a reload, else the most recently saved slot;
    * `note` says why a reloaded tab did not get its own scene back.
    */
-  restore(): { slot: Slot; note: string | null } | null {
+  restore(): { slot: Slot; note: string | null; replaced: Slot | null } | null {
     const own = this.reloaded ? readSlot(this.env.local, this.tab) : null;
     const slot = own ?? newestSlot(this.env.local);
     if (!slot) return null;
@@ -116,7 +130,23 @@ export class TabAutosave {
       !own && lost
         ? `This tab's last scene could not be autosaved; restored the scene saved most recently (at ${clockTime(slot.savedAt)}).`
         : null;
-    return { slot, note };
+    // The scene a load replaced in the tab that saved this slot (unless that load was undone since).
+    const replaced = readReplaced(this.env.local, slot.tab);
+    return { slot, note, replaced: replaced && replaced.text !== slot.text ? replaced : null };
+  }
+
+  /**
+   * A load replaced `before` with `loaded` (Editor.replaced): `before` is kept beside the slot with
+   * the next save, unless there is nothing in it to lose (keepsReplaced: empty, or a preset's or
+   * Clear's scene unedited).
+   */
+  replacedBy({ before, loaded, reproducible }: Replacement): void {
+    const text = sceneText(before);
+    if (keepsReplaced({ text, empty: before.actions.length === 0 }, this.reproducibleText)) {
+      this.replacedText = text;
+      this.replacedPending = true;
+    }
+    this.reproducibleText = reproducible ? sceneText(loaded) : null;
   }
 
   /** A slot of another tab saved after this tab's own (at start), holding a different scene. */
@@ -133,6 +163,12 @@ export class TabAutosave {
    */
   save(scene: SceneFile, prune = true): string | null {
     const now = this.env.now();
+    // the scene a load replaced first: the new scene's save must not be the only one left
+    let replacedFailed: string | null = null;
+    if (this.replacedText !== null && (this.replacedPending || !prune)) {
+      replacedFailed = writeReplaced(this.env.local, this.tab, this.replacedText, now);
+      this.replacedPending = false;
+    }
     const text = sceneText(scene);
     const failed = writeSlot(this.env.local, this.tab, text, now);
     if (failed !== null) {
@@ -143,7 +179,7 @@ export class TabAutosave {
     this.ownSavedAt = now;
     this.lastText = text;
     if (prune) pruneSlots(this.env.local, this.tab);
-    return null;
+    return replacedFailed;
   }
 
   /**
@@ -160,12 +196,19 @@ export class TabAutosave {
       if (timer !== null) clearTimeout(timer);
       timer = null;
       const now = client.getSnapshot();
-      if (now.docRevision === savedRevision && !force) return;
+      if (now.docRevision === savedRevision && !force && !this.replacedPending) return;
       savedRevision = now.docRevision;
       const failed = now.doc ? this.save(now.doc, !force) : null;
       if (failed !== null && !autosaveFailed) ui.setState({ message: { text: failed, tone: "error" } });
       autosaveFailed = failed !== null; // said once, until autosave works again
     };
+    // A load that replaced the scene before autosave started (a shared link over the autosave, the
+    // restored scene over the one it replaced) counts as well.
+    const replaced = editor.replaced.getState().last;
+    if (replaced) this.replacedBy(replaced);
+    const unsubReplaced = editor.replaced.subscribe((s) => {
+      if (s.last) this.replacedBy(s.last);
+    });
     const unsubClient = client.subscribe(() => {
       if (client.getSnapshot().docRevision === savedRevision || timer !== null) return;
       timer = setTimeout(save, AUTOSAVE_DELAY_MS);
@@ -183,7 +226,7 @@ export class TabAutosave {
       if (e.key === null) return;
       const own = slotKey(this.tab);
       if (e.key === own) {
-        // another tab pruned this tab's slot: write it again (the scene is still here)
+        // another tab pruned this tab's slot (and the replaced scene beside it): write them again
         if (e.newValue === null) save(true);
         return;
       }
@@ -235,6 +278,7 @@ export class TabAutosave {
       if (timer !== null) clearTimeout(timer);
       clearTimeout(adopt);
       unsubClient();
+      unsubReplaced();
       unsubUi();
       win.removeEventListener("pagehide", onHide);
       win.removeEventListener("pagehide", onBye);

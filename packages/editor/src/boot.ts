@@ -1,9 +1,10 @@
 /**
  * Start-up: the worker and its client, the Editor, the first scene (a shared link in the URL, else
  * the autosave of this tab or the newest one, else the default preset; a shared link is one undo
- * step over the autosave), autosave per tab (autosave.ts), playback and keyboard.
+ * step over the autosave; so is the autosave over the scene a load replaced in that tab, kept beside
+ * it), autosave per tab (autosave.ts), playback and keyboard.
  */
-import { browserAutosaveEnv, TabAutosave } from "./autosave";
+import { browserAutosaveEnv, clockTime, TabAutosave } from "./autosave";
 import { drawStats, resetDrawStats } from "./canvas/drawStats";
 import { sceneFromHash } from "./doc/persistence";
 import { Editor } from "./editor";
@@ -18,8 +19,13 @@ import { createUiStore } from "./store/uiStore";
 export interface FirstScene {
   scene: SceneFile;
   from: "url" | "autosave" | "preset";
-  /** The autosaved scene a shared link replaces (loaded first, so Undo brings it back). */
+  /**
+   * Loaded first, so Undo brings it back: the autosaved scene a shared link replaces, or the scene a
+   * load (Clear, a preset, an opened file) replaced before the autosave was written.
+   */
   previous: SceneFile | null;
+  /** What to say once `scene` is loaded over `previous`. */
+  undoNote: string | null;
   error: string | null;
   /** Something to tell about the autosave restored (not this tab's own), or null. */
   note: string | null;
@@ -33,12 +39,55 @@ export function firstScene(hash: string, autosave: TabAutosave): FirstScene {
   const note = restored?.note ?? null;
   try {
     const fromUrl = sceneFromHash(hash);
-    if (fromUrl) return { scene: fromUrl, from: "url", previous: saved, error, note: null };
+    if (fromUrl)
+      return {
+        scene: fromUrl,
+        from: "url",
+        previous: saved,
+        undoNote: "Opened the shared scene. Undo returns to the scene you had before.",
+        error,
+        note: null,
+      };
   } catch (e) {
     error = `Shared link: ${(e as Error).message}`;
   }
-  if (saved) return { scene: saved, from: "autosave", previous: null, error, note };
-  return { scene: buildPreset(DEFAULT_PRESET), from: "preset", previous: null, error, note: null };
+  const replaced = restored?.replaced ?? null;
+  if (saved)
+    return {
+      scene: saved,
+      from: "autosave",
+      previous: replaced?.scene ?? null,
+      undoNote: replaced
+        ? `Restored the autosaved scene. Undo brings back the scene it replaced at ${clockTime(replaced.savedAt)}.`
+        : null,
+      error,
+      note,
+    };
+  return {
+    scene: buildPreset(DEFAULT_PRESET),
+    from: "preset",
+    previous: null,
+    undoNote: null,
+    error,
+    note: null,
+  };
+}
+
+/**
+ * Loads the first scene: over `previous` as one undo step when there is one (`undoNote` said), else
+ * alone; the default preset when the engine refuses a scene that is not it.
+ */
+export async function loadFirstScene(editor: Editor, first: FirstScene): Promise<void> {
+  let err: string | null;
+  if (first.previous && (await editor.loadScene(first.previous, { undoable: false })) === null) {
+    // A shared scene the engine refuses leaves the previous scene loaded (the message says why).
+    if ((await editor.loadScene(first.scene)) === null && first.undoNote) editor.info(first.undoNote);
+    err = null;
+  } else err = await editor.loadScene(first.scene, { undoable: false });
+  if (err !== null && first.from !== "preset")
+    err = await editor.loadScene(buildPreset(DEFAULT_PRESET), { undoable: false });
+  if (first.error) editor.ui.setState({ message: { text: first.error, tone: "error" } });
+  else if (first.note) editor.info(first.note);
 }
 
 export async function boot(): Promise<Editor> {
@@ -54,20 +103,11 @@ export async function boot(): Promise<Editor> {
   const autosave = new TabAutosave(browserAutosaveEnv());
   const first = firstScene(window.location.hash, autosave);
   // A shared link is loaded once (a broken one too); from then on the autosave keeps the user's
-  // edits across reloads. The scene it replaces is loaded first, so Undo brings it back.
+  // edits across reloads. The scene it replaces is loaded first, so Undo brings it back (so is the
+  // scene a load replaced before the reload).
   if (/^#?scene=/.test(window.location.hash))
     history.replaceState(null, "", window.location.pathname + window.location.search);
-  let err: string | null;
-  if (first.previous && (await editor.loadScene(first.previous, { undoable: false })) === null) {
-    // A shared scene the engine refuses leaves the previous scene loaded (the message says why).
-    if ((await editor.loadScene(first.scene)) === null)
-      editor.info("Opened the shared scene. Undo returns to the scene you had before.");
-    err = null;
-  } else err = await editor.loadScene(first.scene, { undoable: false });
-  if (err !== null && first.from !== "preset")
-    err = await editor.loadScene(buildPreset(DEFAULT_PRESET), { undoable: false });
-  if (first.error) editor.ui.setState({ message: { text: first.error, tone: "error" } });
-  else if (first.note) editor.info(first.note);
+  await loadFirstScene(editor, first);
   // A reloaded tab whose scene is older than another tab's: say so (the notice offers it).
   const newer = autosave.newerOther();
   if (newer) editor.ui.setState({ newerWork: { tab: newer.tab, savedAt: newer.savedAt } });

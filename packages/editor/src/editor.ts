@@ -122,7 +122,13 @@ export class Editor extends EditorTime {
     return null;
   }
 
-  clear(): Promise<string | null> {
-    return this.loadScene({ ...EMPTY_SCENE, g: this.doc.g, gravity: this.doc.gravity });
+  /** Empties the scene (its gravity kept) as one undo step, and says that Undo brings it back. */
+  async clear(): Promise<string | null> {
+    const err = await this.loadScene(
+      { ...EMPTY_SCENE, g: this.doc.g, gravity: this.doc.gravity },
+      { reproducible: true },
+    );
+    if (err === null) this.info("Cleared the scene. Undo brings it back.");
+    return err;
   }
 }

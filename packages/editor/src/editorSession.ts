@@ -9,7 +9,9 @@
  * (loads, edits, undo, redo) run strictly one after another; each undoable change gets a ticket when
  * asked (doc/undoIntents.ts), so an Undo asked while it is still queued or checked is bound to it
  * (sceneChanges.ts). An edit, rewrite or rename refused because a later action would become invalid
- * (the engine's path `actions[i]`) also says which action that is (doc/actionRefs.ts).
+ * (the engine's path `actions[i]`) also says which action that is (doc/actionRefs.ts). A load that
+ * replaces the scene (undoable, not keeping the time: Clear, a preset, an opened scene) is published
+ * in `replaced` (the scene before and the one loaded), so autosave can keep the scene taken away.
  */
 
 import { EMPTY_HISTORY, type History, record, takenBack } from "./doc/history";
@@ -23,12 +25,38 @@ import { createStore, type Store } from "./store/createStore";
 
 export { shown } from "./editorCompute";
 
+/**
+ * A load that replaced the scene `before` with `loaded`; `reproducible`: `loaded` can be had again as
+ * it was (a preset, Clear's empty scene), so replacing it unedited loses nothing.
+ */
+export interface Replacement {
+  before: SceneFile;
+  loaded: SceneFile;
+  reproducible: boolean;
+}
+
+/** How a scene is loaded (loadScene). */
+export interface LoadOptions {
+  /** false: not an undo step (start-up). */
+  undoable?: boolean;
+  /** false: the view is not fitted to the scene. */
+  fit?: boolean;
+  /** A rewrite of the current scene: the time, playback, selection and zoom stay. */
+  keepTime?: boolean;
+  /** The scene loaded can be had again as it is (a preset, Clear): see Replacement. */
+  reproducible?: boolean;
+}
+
 export class EditorSession extends EditorCompute {
   readonly history: Store<History> = createStore<History>(EMPTY_HISTORY);
   /** The queue of scene changes and the tickets and take-backs of Undo (sceneChanges.ts). */
   private readonly changes = new SceneChanges(this.client);
   /** Undo and Redo as the user asked them, over `history`, while changes are queued (undoIntents.ts). */
   readonly intents: Store<Intents> = this.changes.intents;
+  /** The last load that replaced the scene: the scene it took away and the one it loaded. */
+  readonly replaced: Store<{ last: Replacement | null }> = createStore<{ last: Replacement | null }>({
+    last: null,
+  });
   /** Makes a fresh host (a new Web Worker) for restartEngine; null where none can be made. */
   portFactory: (() => Port) | null = null;
   /**
@@ -60,10 +88,7 @@ export class EditorSession extends EditorCompute {
   }
 
   /** Loads a scene (preset, paste, file, URL). Invalid scenes are refused and the current one kept. */
-  async loadScene(
-    scene: SceneFile,
-    options: { undoable?: boolean; fit?: boolean; keepTime?: boolean } = {},
-  ): Promise<string | null> {
+  async loadScene(scene: SceneFile, options: LoadOptions = {}): Promise<string | null> {
     const loaded =
       options.undoable === false
         ? await this.serial(() => this.loadNow(scene, options))
@@ -78,7 +103,7 @@ export class EditorSession extends EditorCompute {
    */
   private async loadNow(
     scene: SceneFile,
-    options: { undoable?: boolean; fit?: boolean; keepTime?: boolean },
+    options: LoadOptions,
     naming = false,
     ticket: Ticket | null = null,
   ): Promise<string | null> {
@@ -98,6 +123,10 @@ export class EditorSession extends EditorCompute {
       this.unconfirmed = null;
     }
     if (options.undoable !== false) this.history.setState(record(this.history.getState(), before));
+    if (options.undoable !== false && !options.keepTime)
+      this.replaced.setState({
+        last: { before, loaded: this.doc, reproducible: options.reproducible === true },
+      });
     this.ui.setState((s) => ({
       t: options.keepTime ? s.t : 0,
       playing: options.keepTime ? s.playing : false,

@@ -29,7 +29,7 @@ function control(tag: "input" | "textarea" | "button" | "select", type?: string)
 function press(
   target: EventTarget,
   key: string,
-  mods: { ctrlKey?: boolean; shiftKey?: boolean } = {},
+  mods: { ctrlKey?: boolean; shiftKey?: boolean; metaKey?: boolean } = {},
 ): boolean {
   const e = new KeyboardEvent("keydown", { key, bubbles: true, cancelable: true, ...mods });
   target.dispatchEvent(e);
@@ -41,6 +41,17 @@ afterEach(() => {
 });
 
 describe("keyboard shortcuts", () => {
+  it("Ctrl+S and Cmd+S save the file anywhere, in a text field too (the browser's Save page is kept off)", () => {
+    const { editor, calls } = recorder();
+    const off = bindKeyboard(editor, window, () => calls.push("save"));
+    expect(press(document.body, "s", { ctrlKey: true })).toBe(false);
+    expect(press(control("input", "text"), "s", { ctrlKey: true })).toBe(false);
+    expect(press(control("textarea"), "S", { metaKey: true })).toBe(false);
+    expect(press(document.body, "s")).toBe(true); // plain s is nothing
+    expect(calls).toEqual(["save", "save", "save"]);
+    off();
+  });
+
   it("on the Time slider: Ctrl+Z, Ctrl+Shift+Z and space work; the arrows stay the slider's", () => {
     const { editor, calls } = recorder();
     const off = bindKeyboard(editor);

@@ -1,12 +1,15 @@
 /**
  * Keyboard shortcuts: space play/pause, ←/→ previous/next event, Ctrl+Z undo, Ctrl+Shift+Z (or
- * Ctrl+Y) redo, Delete/Backspace delete the selection. Ignored while typing in a field; on other
+ * Ctrl+Y) redo, Ctrl+S (Cmd+S) save file, Delete/Backspace delete the selection. Ctrl+S works
+ * everywhere, in a field too (no field uses it, and the browser would offer to save the page); it
+ * saves the scene as it is (text typed in a cell and not yet committed is not in it). Ignored while typing in a field; on other
  * controls (the Time slider, a checkbox, a list) only the keys the control uses itself are left to
  * it (the slider's arrows, a checkbox's or a button's space and Enter, a list's keys but Ctrl+Z/Y),
  * so Ctrl+Z and space still work after scrubbing or picking a line kind, and space on a focused
  * button presses it.
  */
 import type { Editor } from "./editor";
+import { saveSceneFile } from "./panels/sceneFile";
 
 /** Input types whose keys are text editing (every shortcut is left to them). */
 const TEXT_INPUTS = new Set(["text", "search", "number", "email", "url", "tel", "password"]);
@@ -31,9 +34,13 @@ function ownsKey(target: EventTarget | null, e: KeyboardEvent): boolean {
   return false;
 }
 
-export function handleKey(editor: Editor, e: KeyboardEvent): boolean {
-  if (ownsKey(e.target, e)) return false;
+export function handleKey(editor: Editor, e: KeyboardEvent, save: () => void = () => {}): boolean {
   const mod = e.ctrlKey || e.metaKey;
+  if (mod && !e.shiftKey && !e.altKey && e.key.toLowerCase() === "s") {
+    save();
+    return true;
+  }
+  if (ownsKey(e.target, e)) return false;
   if (mod && e.key.toLowerCase() === "z") {
     void (e.shiftKey ? editor.redo() : editor.undo());
     return true;
@@ -61,9 +68,14 @@ export function handleKey(editor: Editor, e: KeyboardEvent): boolean {
   return false;
 }
 
-export function bindKeyboard(editor: Editor, target: Window = window): () => void {
+/** `save`: what Ctrl+S does (Save file: panels/sceneFile.ts). */
+export function bindKeyboard(
+  editor: Editor,
+  target: Window = window,
+  save: () => void = () => saveSceneFile(editor.doc),
+): () => void {
   const listener = (e: KeyboardEvent) => {
-    if (handleKey(editor, e)) e.preventDefault();
+    if (handleKey(editor, e, save)) e.preventDefault();
   };
   target.addEventListener("keydown", listener);
   return () => target.removeEventListener("keydown", listener);

@@ -5,9 +5,12 @@
  * playback is smooth even when the worker answers late.
  * Pointer gestures are gestures.ts's; Escape (or a cancelled pointer) drops a drag under way. The
  * wheel zooms the view around the pointer, except a wheel that continues a page scroll (wheelLatch.ts).
+ * It is an image to assistive technology (role="img"), named by what it shows (sceneLabel.ts: counts
+ * and the selection, from a frame refreshed at most once a second: the only re-render).
  */
 import { useEffect, useRef } from "react";
-import { useEditor } from "../EditorContext";
+import { useEditor, useUi } from "../EditorContext";
+import { useLiveFrame } from "../panels/useLiveFrame";
 import { motionWindow } from "../playback";
 import type { Frame } from "../remote/protocol";
 import { addWheelZoom } from "../wheelLatch";
@@ -16,12 +19,19 @@ import { drawStats } from "./drawStats";
 import { fitFrame } from "./fitScene";
 import { emptyFrame, frameAt } from "./frameAt";
 import { CanvasGestures } from "./gestures";
+import { sceneLabel } from "./sceneLabel";
 import { TrailRecorder } from "./trails";
 import { type Size, zoomAt } from "./viewTransform";
 
 export function SceneCanvas() {
   const editor = useEditor();
   const canvasRef = useRef<HTMLCanvasElement>(null);
+  const frame = useLiveFrame(1000);
+  const selection = useUi((s) => s.selection);
+  const label = sceneLabel(
+    frame && { bodies: frame.ids.length, lines: frame.lines.length, points: frame.points.length },
+    selection,
+  );
 
   useEffect(() => {
     const canvas = canvasRef.current!;
@@ -180,5 +190,13 @@ export function SceneCanvas() {
     };
   }, [editor]);
 
-  return <canvas ref={canvasRef} className="scene-canvas" aria-label="Scene" data-testid="scene-canvas" />;
+  return (
+    <canvas
+      ref={canvasRef}
+      className="scene-canvas"
+      role="img"
+      aria-label={label}
+      data-testid="scene-canvas"
+    />
+  );
 }

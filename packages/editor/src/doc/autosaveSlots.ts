@@ -4,6 +4,9 @@
  * then the scene (format v1). The single slot of earlier versions (`...autosave.v1`, the scene alone)
  * is migrated into the slot of tab "v1" with savedAt 0 (its time is unknown: any newer slot wins).
  * At most MAX_SLOTS slots are kept: the oldest are pruned, never the saving tab's own.
+ * Beside each slot, a tab keeps the last scene of its own that a load replaced (Clear, a preset, an
+ * opened file...): `chapgame.editor.replaced.v1.<tab id>`, same format, pruned with its slot, so the
+ * scene a replacement took away survives a reload (boot.ts loads it as the step Undo goes back to).
  * Pure storage access: the caller gives the storage, the tab id and the clock.
  */
 import type { SceneFile } from "../engineTypes";
@@ -31,6 +34,9 @@ export interface Slot extends SlotInfo {
 }
 
 export const slotKey = (tab: string): string => SLOT_PREFIX + tab;
+/** Where a tab keeps the scene a load replaced. */
+export const REPLACED_PREFIX = "chapgame.editor.replaced.v1.";
+export const replacedKey = (tab: string): string => REPLACED_PREFIX + tab;
 
 /** The metadata and the scene text of a stored slot value; null when it is not one. */
 function split(value: string | null): { savedAt: number; text: string } | null {
@@ -76,8 +82,7 @@ function slotKeys(storage: Storage): string[] {
 }
 
 /** The slot of `tab`, or null when there is none or it does not hold a valid scene. */
-export function readSlot(storage: Storage, tab: string): Slot | null {
-  const key = slotKey(tab);
+export function readSlot(storage: Storage, tab: string, key = slotKey(tab)): Slot | null {
   const parts = split(storage.getItem(key));
   if (!parts) return null;
   try {
@@ -112,6 +117,38 @@ export function migrateLegacy(storage: Storage): void {
   storage.removeItem(LEGACY_KEY);
 }
 
+/** The scene `tab` kept as replaced by a load (replacedKey), or null. */
+export const readReplaced = (storage: Storage, tab: string): Slot | null =>
+  readSlot(storage, tab, replacedKey(tab));
+
+/**
+ * Whether a load that replaced the scene `before` (its text) keeps it as the tab's replaced scene: not
+ * an empty scene (nothing to lose), nor `reproducible`, the scene a preset or Clear loaded, unedited
+ * (it can be had again): Clear then a preset keeps the work Clear took away, not the empty scene
+ * between, and a preset over a preset keeps the work before both.
+ */
+export function keepsReplaced(
+  before: { text: string; empty: boolean },
+  reproducible: string | null,
+): boolean {
+  return !before.empty && before.text !== reproducible;
+}
+
+/** Writes the scene a load replaced for `tab` (see writeSlot); null on success, else the failure. */
+export function writeReplaced(storage: Storage, tab: string, text: string, savedAt: number): string | null {
+  try {
+    storage.setItem(replacedKey(tab), `${JSON.stringify({ savedAt })}\n${text}`);
+    return null;
+  } catch {
+    try {
+      storage.removeItem(replacedKey(tab)); // an older one would come back as if it were the latest
+    } catch {
+      // storage disabled altogether
+    }
+    return "Autosave could not keep the scene you replaced (the browser's storage is full): Undo brings it back in this tab, but not after a reload.";
+  }
+}
+
 /**
  * Writes `tab`'s slot (`text`: the scene's text, sceneIo.sceneText); null on success, else a message for the user. When the scene cannot be stored
  * (storage full or disabled), the tab's older slot is removed: a reload must not bring back an older
@@ -133,7 +170,7 @@ export function writeSlot(storage: Storage, tab: string, text: string, savedAt: 
 }
 
 /**
- * Keeps at most `max` slots: removes the oldest, never `keep`'s. Cheap when there are few slots
+ * Keeps at most `max` slots: removes the oldest (with their replaced scenes), never `keep`'s. Cheap when there are few slots
  * (only the keys are read then).
  */
 export function pruneSlots(storage: Storage, keep: string, max = MAX_SLOTS): string[] {
@@ -145,6 +182,9 @@ export function pruneSlots(storage: Storage, keep: string, max = MAX_SLOTS): str
     .map((key) => ({ key, savedAt: slotSavedAt(storage.getItem(key)) ?? Number.NEGATIVE_INFINITY }))
     .sort((a, b) => b.savedAt - a.savedAt);
   const removed = others.slice(max - 1).map((s) => s.key.slice(SLOT_PREFIX.length));
-  for (const tab of removed) storage.removeItem(slotKey(tab));
+  for (const tab of removed) {
+    storage.removeItem(slotKey(tab));
+    storage.removeItem(replacedKey(tab));
+  }
   return removed;
 }

@@ -121,3 +121,67 @@ describe("BodiesTable selection", () => {
     expect(h.editor.ui.getState().selection).toEqual({ kind: "body", id: "a" });
   });
 });
+
+describe("BodiesTable with more bodies than rows", () => {
+  async function manyBodies(n: number) {
+    const h = testEditor();
+    await h.editor.loadScene(
+      {
+        format: "chapgame",
+        version: 1,
+        g: 0,
+        gravity: [0, 0],
+        actions: Array.from({ length: n }, (_, i) => ({
+          time: 0,
+          type: "addBody" as const,
+          id: `ball${i + 1}`,
+          x: 10 * i,
+          y: 0,
+          r: 1,
+          m: 1,
+        })),
+      },
+      { undoable: false },
+    );
+    await settled(h.client);
+    render(
+      <EditorContext.Provider value={h.editor}>
+        <BodiesTable />
+        <button type="button">after</button>
+      </EditorContext.Provider>,
+    );
+    const table = screen.getByRole("table", { name: "Bodies" });
+    await waitFor(() => expect(screen.getByText(/^Showing 60 of 70 bodies/)).toBeTruthy());
+    return { ...h, table };
+  }
+
+  it("the filter finds a body past the first rows, whose cells can then be edited", async () => {
+    const { editor, table } = await manyBodies(70);
+    expect(within(table).queryByRole("button", { name: "ball70 x" })).toBeNull();
+    fireEvent.change(screen.getByRole("searchbox", { name: "Filter bodies by id" }), {
+      target: { value: "ALL70" },
+    });
+    const cell = await within(table).findByRole("button", { name: "ball70 x" });
+    expect(
+      within(table)
+        .getAllByRole("button", { name: / id$/ })
+        .map((b) => b.textContent),
+    ).toEqual(["ball70"]);
+    fireEvent.click(cell);
+    const input = within(table).getByRole("textbox", { name: "ball70 x" });
+    fireEvent.change(input, { target: { value: "1000" } });
+    await act(async () => {
+      fireEvent.keyDown(input, { key: "Enter" });
+    });
+    await waitFor(() =>
+      expect(within(table).getByRole("button", { name: "ball70 x" }).textContent).toBe("1000"),
+    );
+    expect(editor.doc.actions.at(-1)).toMatchObject({ type: "updateBody", id: "ball70", x: 1000 });
+  });
+
+  it("Skip the Bodies table moves the focus to the first control after the table", async () => {
+    await manyBodies(70);
+    fireEvent.click(screen.getByRole("button", { name: "Skip the Bodies table" }));
+    expect(document.activeElement).toBe(screen.getByRole("button", { name: "after" }));
+  });
+});

@@ -2,16 +2,19 @@
  * The Bodies table: id, x, y, vx, vy, |v|, r, m, μ of every body at the current time (live while
  * playing, refreshed a few times a second). Every cell is editable; an edit is an action at the
  * current time; refused values show the engine's message in place. Rows select bodies (clicked, or a
- * cell of theirs focused or opened), listed in natural id order (ball2 before ball10). Only the rows
- * in view are rendered (useRowWindow).
+ * cell of theirs focused or opened), listed in natural id order (ball2 before ball10), at most
+ * MAX_ROWS of them: the filter field (a part of the id) reaches any other body (bodyList.ts). Only the
+ * rows in view are rendered (useRowWindow). A "Skip the Bodies table" button (shown when focused)
+ * passes its cells in one Tab press.
  */
-import { type ReactNode, useRef } from "react";
+import { type ReactNode, useRef, useState } from "react";
 import { freeSpot } from "../canvas/freeSpot";
 import { useEditor, useUi } from "../EditorContext";
 import { F_M, F_MU, F_R, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE } from "../remote/protocol";
+import { listBodies, listNote } from "./bodyList";
 import { DeleteRowButton } from "./DeleteRowButton";
 import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
-import { naturalOrder } from "./naturalOrder";
+import { SkipTable } from "./SkipTable";
 import { useLiveFrame } from "./useLiveFrame";
 import { spacerRow, useRowWindow } from "./useRowWindow";
 
@@ -36,6 +39,7 @@ export function BodiesTable() {
   const scrollRef = useRef<HTMLDivElement>(null);
   const selection = useUi((s) => s.selection);
   const selectedId = selection?.kind === "body" ? selection.id : null;
+  const [filter, setFilter] = useState("");
 
   const commit = (id: string, field: Field, vx: number, vy: number) => async (text: string) => {
     const x = parseNumber(text);
@@ -55,11 +59,12 @@ export function BodiesTable() {
     }
   };
 
-  // The bodies listed (the first MAX_ROWS and the selected one), then the window of them rendered.
-  const listed: number[] = [];
+  // The bodies listed (the first MAX_ROWS matching the filter and the selected one), then the window
+  // of them rendered.
   const n = frame?.ids.length ?? 0;
-  for (const i of frame ? naturalOrder(frame.ids) : [])
-    if (listed.length < MAX_ROWS || frame!.ids[i] === selectedId) listed.push(i);
+  const list = listBodies(frame?.ids ?? [], filter, selectedId, MAX_ROWS);
+  const { listed } = list;
+  const note = listNote(list, n, filter);
   const win = useRowWindow(scrollRef, listed.length);
   const rows: ReactNode[] = [spacerRow("before", win.before, COLUMNS.length + 2)];
   for (const i of frame ? listed.slice(win.start, win.end) : []) {
@@ -118,6 +123,19 @@ export function BodiesTable() {
           Add body
         </button>
       </h2>
+      {n > MAX_ROWS || filter !== "" ? (
+        <div className="row">
+          <input
+            type="search"
+            aria-label="Filter bodies by id"
+            placeholder="filter by id"
+            size={12}
+            value={filter}
+            onChange={(e) => setFilter(e.target.value)}
+          />
+        </div>
+      ) : null}
+      {listed.length > 0 && <SkipTable name="Bodies" region={scrollRef} />}
       <div className="table-scroll" ref={scrollRef}>
         <table aria-label="Bodies">
           <thead>
@@ -132,11 +150,7 @@ export function BodiesTable() {
           <tbody>{rows}</tbody>
         </table>
       </div>
-      {n > listed.length && (
-        <p className="note">
-          Showing {listed.length} of {n} bodies.
-        </p>
-      )}
+      {note !== null && <p className="note">{note}</p>}
     </section>
   );
 }

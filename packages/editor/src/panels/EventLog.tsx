@@ -8,6 +8,7 @@
  * once the log shows the scene without the action. An armed ✕ says "Press again to remove …" in the
  * log's one visually hidden polite live region (useArmedNotice), which is empty otherwise.
  * Only the rows in view are rendered (useRowWindow); the view follows the current time (useFollowTime).
+ * "Skip the Event log table" (SkipTable, shown when focused) passes its entries in one Tab press.
  */
 import { useEffect, useRef, useState } from "react";
 import { kindOfType } from "../doc/rename";
@@ -18,6 +19,7 @@ import type { Selection } from "../store/uiStore";
 import { formatNumber } from "./EditableCell";
 import { RemoveActionButton } from "./RemoveActionButton";
 import { focusAfterRemoval } from "./removeFocus";
+import { SkipTable } from "./SkipTable";
 import { type ArmedNotice, useArmedNotice } from "./useArmedNotice";
 import { useFollowTime } from "./useFollowTime";
 import { useRefreshed } from "./useRefreshed";
@@ -177,6 +179,7 @@ export function EventLog() {
       <div className="visually-hidden" role="status" aria-live="polite">
         {armed.text}
       </div>
+      {events.length > 0 && <SkipTable name="Event log" region={scrollRef} />}
       <div className="table-scroll log" ref={scrollRef}>
         <table aria-label="Event log" ref={tableRef} tabIndex={-1}>
           <thead>

@@ -1,9 +1,14 @@
-/** The Lines table: id, kind, both points of every line, ray and segment; editable; Add and Delete. */
+/**
+ * The Lines table: id, kind, both points of every line, ray and segment; editable; Add and Delete.
+ * "Skip the Lines table" (SkipTable, shown when focused) passes its cells in one Tab press.
+ */
 
+import { useRef } from "react";
 import { freeSpot } from "../canvas/freeSpot";
 import { useEditor } from "../EditorContext";
 import type { LineKind } from "../engineTypes";
 import { CoordinateCell, ObjectRow } from "./ObjectRow";
+import { SkipTable } from "./SkipTable";
 import { useLiveFrame } from "./useLiveFrame";
 
 const KINDS: LineKind[] = ["line", "ray", "segment"];
@@ -18,6 +23,7 @@ export function LinesTable() {
   const editor = useEditor();
   const frame = useLiveFrame();
   const lines = frame?.lines ?? [];
+  const scrollRef = useRef<HTMLDivElement>(null);
 
   // A horizontal segment of 200 px, at the free place nearest the centre of the view.
   const add = () => {
@@ -36,7 +42,8 @@ export function LinesTable() {
           Add line
         </button>
       </h2>
-      <div className="table-scroll">
+      {lines.length > 0 && <SkipTable name="Lines" region={scrollRef} />}
+      <div className="table-scroll" ref={scrollRef}>
         <table aria-label="Lines">
           <thead>
             <tr>

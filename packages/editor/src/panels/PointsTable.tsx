@@ -1,15 +1,21 @@
-/** The Points table: id and position of every fixed point; editable; Add and Delete. */
+/**
+ * The Points table: id and position of every fixed point; editable; Add and Delete. "Skip the Points
+ * table" (SkipTable, shown when focused) passes its cells in one Tab press.
+ */
 
+import { useRef } from "react";
 import { freeSpot } from "../canvas/freeSpot";
 import { useEditor } from "../EditorContext";
 import type { Vec2 } from "../engineTypes";
 import { CoordinateCell, ObjectRow } from "./ObjectRow";
+import { SkipTable } from "./SkipTable";
 import { useLiveFrame } from "./useLiveFrame";
 
 export function PointsTable() {
   const editor = useEditor();
   const frame = useLiveFrame();
   const points = frame?.points ?? [];
+  const scrollRef = useRef<HTMLDivElement>(null);
 
   return (
     <section className="panel" aria-labelledby="points-title">
@@ -28,7 +34,8 @@ export function PointsTable() {
           Add point
         </button>
       </h2>
-      <div className="table-scroll">
+      {points.length > 0 && <SkipTable name="Points" region={scrollRef} />}
+      <div className="table-scroll" ref={scrollRef}>
         <table aria-label="Points">
           <thead>
             <tr>

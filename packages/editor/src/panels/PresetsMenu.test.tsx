@@ -50,3 +50,28 @@ describe("Presets menu: digits of π", () => {
     expect(field.value).toBe("3");
   });
 });
+
+describe("Presets menu: loading", () => {
+  it("a loaded preset is reproducible (autosave keeps the scene it replaced) and says Undo goes back", async () => {
+    const infos: string[] = [];
+    const calls: unknown[] = [];
+    const editor = {
+      loadScene: async (_s: SceneFile, options: unknown) => {
+        calls.push(options);
+        return null;
+      },
+      info: (text: string) => infos.push(text),
+    } as unknown as Editor;
+    render(
+      <EditorContext.Provider value={editor}>
+        <PresetsMenu />
+      </EditorContext.Provider>,
+    );
+    fireEvent.click(screen.getByRole("button", { name: "Load preset" }));
+    await Promise.resolve();
+    await Promise.resolve();
+    expect(calls).toEqual([{ reproducible: true }]);
+    expect(infos).toHaveLength(1);
+    expect(infos[0]).toMatch(/^Loaded the preset .+\. Undo returns to the scene you had\.$/);
+  });
+});

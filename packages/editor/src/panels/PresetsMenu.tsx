@@ -1,7 +1,8 @@
 /**
  * The presets menu: pick a scene to start from (Galperin's billiard takes a number of digits). The
  * digits field keeps what is typed (an emptied field stays empty, so Backspace then 6 gives 6) and
- * is clamped to 1..7 when it loses focus and when the preset is loaded.
+ * is clamped to 1..7 when it loses focus and when the preset is loaded. A loaded preset is one undo
+ * step, and says so (the scene it replaced also survives a reload: autosave.ts).
  */
 import { useState } from "react";
 import { useEditor } from "../EditorContext";
@@ -48,7 +49,10 @@ export function PresetsMenu() {
         onClick={() => {
           const n = clampDigits(digits);
           setDigits(String(n));
-          void editor.loadScene(buildPreset(id, n));
+          void editor.loadScene(buildPreset(id, n), { reproducible: true }).then((err) => {
+            if (err === null)
+              editor.info(`Loaded the preset ${entry?.name ?? id}. Undo returns to the scene you had.`);
+          });
         }}
       >
         Load preset

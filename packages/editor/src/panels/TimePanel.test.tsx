@@ -210,3 +210,26 @@ describe("TimePanel", () => {
     expect(editor.ui.getState().t).toBe(5);
   });
 });
+
+describe("TimePanel for screen readers", () => {
+  it("the slider's aria-valuetext is the current time, also when playback does not move the thumb", async () => {
+    const { editor, slider } = await renderPanel();
+    act(() => editor.setTime(0.5));
+    expect(slider.getAttribute("aria-valuetext")).toBe("t = 0.5 s");
+    // while playing, a change of less than a pixel leaves the value alone (jsdom: a 1 px slider)
+    act(() => editor.ui.setState({ playing: true }));
+    const value = slider.value;
+    act(() => editor.ui.setState({ t: 0.5001 }));
+    expect(slider.value).toBe(value);
+    expect(slider.getAttribute("aria-valuetext")).toBe("t = 0.5001 s");
+  });
+
+  it("the horizon is not in a live region (a computation changes it every 50 ms)", async () => {
+    const { client } = await renderPanel();
+    const horizon = String(client.getSnapshot().horizon);
+    for (const live of document.querySelectorAll("output, [role=status], [role=log], [aria-live]")) {
+      if (live.getAttribute("aria-live") === "off") continue;
+      expect(live.textContent).not.toContain(horizon);
+    }
+  });
+});

@@ -9,7 +9,8 @@
  * types in it; only typed text is gone to (Enter or leaving the field), so clicking into the field
  * while playing and away again leaves the time alone; text that is not a time is refused with a
  * message, which a valid time then clears (fieldMessages.ts). Zoomed, it shows the time to the
- * window's precision (timeInWindow) and widens to fit.
+ * window's precision (timeInWindow) and widens to fit. The horizon is plain text, not an <output>:
+ * that is a live region, and a computation changes the horizon every 50 ms.
  */
 import { useMemo, useRef, useState } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
@@ -122,7 +123,7 @@ export function TimePanel() {
               if (e.key === "Enter") commitDraft();
             }}
           />{" "}
-          s of <output aria-label="Horizon">{formatNumber(horizon)}</output> s
+          s of <span className="horizon">{formatNumber(horizon)}</span> s
         </label>
         <TimeZoom />
         {/* After an undo, a redo or a rename the history is recomputed from the start while the time

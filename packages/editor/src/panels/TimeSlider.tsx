@@ -8,7 +8,9 @@
  * one thumb. While playing, a change that moves the thumb by less than a pixel is not written (each
  * write of a range input's value costs Chromium a relayout, repaint and re-layerization of the page,
  * about 1 ms per frame in the 2,000-disc profile); a new range is always written. Paused, the slider
- * always shows the exact time. Dragging it sets the time (not an edit), within its range (sliderTime:
+ * always shows the exact time. Its aria-valuetext ("t = 8.21 s") is written on every change of the time
+ * (a string attribute, no layout): what a screen reader reports never lags behind the time, although
+ * the value can. Dragging it sets the time (not an edit), within its range (sliderTime:
  * Chromium's value at an end can read just past it, which turned the page under the pointer);
  * holding it while playing pauses until it is let go. Zoomed, its arrow and page keys move the time
  * on past the window's edges, turning the page (sliderKeys.ts); Home and End go to the window's ends.
@@ -17,8 +19,12 @@ import { useEffect, useRef } from "react";
 import { useEditor, useUi } from "../EditorContext";
 import { sliderTime, viewRange } from "../store/timeWindow";
 import { historyEnd } from "../store/timeWindowGuard";
+import { formatNumber } from "./EditableCell";
 import { sliderKeyTime } from "./sliderKeys";
 import { useHistoryEnd } from "./useHistoryEnd";
+
+/** What a screen reader says of the slider: the current time. */
+export const valueText = (t: number): string => `t = ${formatNumber(t)} s`;
 
 export function TimeSlider() {
   const editor = useEditor();
@@ -42,8 +48,14 @@ export function TimeSlider() {
     let shown = Number.NaN;
     let shownLo = Number.NaN;
     let shownHi = Number.NaN;
+    let shownText = "";
     const show = (force: boolean) => {
       const s = ui.getState();
+      const text = valueText(s.t);
+      if (text !== shownText) {
+        shownText = text;
+        input.setAttribute("aria-valuetext", text);
+      }
       const info = client.getSnapshot();
       const { lo, hi } = viewRange(s.timeWindow, historyEnd(info, s.t));
       const t = Math.min(s.t, info.horizon);

@@ -1,0 +1,63 @@
+/**
+ * The header's scene actions, first in the tab order and always in view (they sat at the foot of the
+ * side column, off-screen at 1280×800 and hundreds of tab stops after the tables): Undo / Redo
+ * (editorUndo.ts; Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y), Save file (Ctrl/Cmd+S) and Load file (as a dropped
+ * file, doc/openScene.ts). Clear, Share link and the scene JSON stay in the State panel.
+ */
+import { useRef } from "react";
+import { openSceneFile } from "../doc/openScene";
+import { canRedo as redoable, canUndo as undoable } from "../doc/undoIntents";
+import { useEditor, useHistory } from "../EditorContext";
+import { useStore } from "../store/createStore";
+import { saveSceneFile } from "./sceneFile";
+
+export function SceneActions() {
+  const editor = useEditor();
+  // Undo is offered as soon as an edit is asked (also while its later actions are being checked:
+  // Undo then takes it back), Redo for what Undo took (doc/undoIntents.ts). An edit asked clears
+  // Redo at once, also during its check (the edit is shown); one the check refuses was never made,
+  // so Redo comes back with the same entries (editorUndoDuringCheck.test.ts).
+  const intents = useStore(editor.intents, (s) => s);
+  const canUndo = undoable(
+    intents,
+    useHistory((h) => h.past.length),
+  );
+  const canRedo = redoable(
+    intents,
+    useHistory((h) => h.future.length),
+  );
+  const fileRef = useRef<HTMLInputElement>(null);
+  return (
+    <div className="scene-actions" role="toolbar" aria-label="Scene">
+      <button type="button" title="Ctrl+Z" onClick={() => void editor.undo()} disabled={!canUndo}>
+        Undo
+      </button>
+      <button
+        type="button"
+        title="Ctrl+Shift+Z or Ctrl+Y"
+        onClick={() => void editor.redo()}
+        disabled={!canRedo}
+      >
+        Redo
+      </button>
+      <button type="button" title="Ctrl+S" onClick={() => saveSceneFile(editor.doc)}>
+        Save file
+      </button>
+      <button type="button" onClick={() => fileRef.current?.click()}>
+        Load file
+      </button>
+      <input
+        ref={fileRef}
+        type="file"
+        accept=".json,application/json"
+        aria-label="Scene file"
+        hidden
+        onChange={async (e) => {
+          const f = e.target.files?.[0];
+          if (f) await openSceneFile(editor, f);
+          e.target.value = "";
+        }}
+      />
+    </div>
+  );
+}
