@@ -28,6 +28,16 @@ function sceneText(actions: unknown[], gravity: [number, number] = [0, 0]): stri
   return JSON.stringify({ format: "chapgame", version: 1, g: 0, gravity, actions });
 }
 
+/** A disc bounces between two walls; at t = 5 gravity comes on under a disc resting on a floor. */
+const RESTS_AT_5 = [
+  { time: 0, type: "addLine", id: "left", p1: [-10, -5], p2: [-10, 5], kind: "line" },
+  { time: 0, type: "addLine", id: "right", p1: [10, -5], p2: [10, 5], kind: "line" },
+  { time: 0, type: "addLine", id: "floor", p1: [-50, -100], p2: [-30, -100], kind: "segment" },
+  { time: 0, type: "addBody", id: "ball", x: 0, y: 0, r: 1, m: 1, v: [9, 0] },
+  { time: 0, type: "addBody", id: "rest", x: -40, y: -99, r: 1, m: 1 },
+  { time: 5, type: "setGlobal", gravity: [0, -1] },
+];
+
 describe("runCli in-process", () => {
   it("shows progress on stderr when asked (a terminal), and the same result", () => {
     const files = { "gas.json": serializeScene(dilutedGas({ n: 200, packing: 0.2 })) };
@@ -103,16 +113,7 @@ describe("runCli in-process", () => {
 
   it("a run the engine cannot continue prints the result up to where it stopped, then exits 2", () => {
     // Audit of session 15: exit 2 and nothing on stdout, so the events computed before were lost.
-    // a disc bounces between two walls; at t = 5 gravity comes on under a disc resting on a floor
-    const scene = [
-      { time: 0, type: "addLine", id: "left", p1: [-10, -5], p2: [-10, 5], kind: "line" },
-      { time: 0, type: "addLine", id: "right", p1: [10, -5], p2: [10, 5], kind: "line" },
-      { time: 0, type: "addLine", id: "floor", p1: [-50, -100], p2: [-30, -100], kind: "segment" },
-      { time: 0, type: "addBody", id: "ball", x: 0, y: 0, r: 1, m: 1, v: [9, 0] },
-      { time: 0, type: "addBody", id: "rest", x: -40, y: -99, r: 1, m: 1 },
-      { time: 5, type: "setGlobal", gravity: [0, -1] },
-    ];
-    const { cli, out } = io({ "rest.json": sceneText(scene) });
+    const { cli, out } = io({ "rest.json": sceneText(RESTS_AT_5) });
     expect(runCli(["simulate", "rest.json", "--events"], cli)).toBe(2);
     expect(out.stderr).toMatch(/^chapgame: rest\.json: cannot simulate this scene: body 'rest' rests .*\n$/);
     const result = JSON.parse(out.stdout);
@@ -126,15 +127,7 @@ describe("runCli in-process", () => {
   it("state meeting a Zeno state before --at prints the bodies where it stopped, then exits 2", () => {
     // Session 16 left it printing nothing: the state at T cannot be computed, the state at the
     // failure can (the same scene as above: the failure at t = 5)
-    const scene = [
-      { time: 0, type: "addLine", id: "left", p1: [-10, -5], p2: [-10, 5], kind: "line" },
-      { time: 0, type: "addLine", id: "right", p1: [10, -5], p2: [10, 5], kind: "line" },
-      { time: 0, type: "addLine", id: "floor", p1: [-50, -100], p2: [-30, -100], kind: "segment" },
-      { time: 0, type: "addBody", id: "ball", x: 0, y: 0, r: 1, m: 1, v: [9, 0] },
-      { time: 0, type: "addBody", id: "rest", x: -40, y: -99, r: 1, m: 1 },
-      { time: 5, type: "setGlobal", gravity: [0, -1] },
-    ];
-    const { cli, out } = io({ "rest.json": sceneText(scene) });
+    const { cli, out } = io({ "rest.json": sceneText(RESTS_AT_5) });
     expect(runCli(["state", "rest.json", "--at", "8"], cli)).toBe(2);
     expect(out.stderr).toMatch(/^chapgame: rest\.json: cannot simulate this scene: body 'rest' rests .*\n$/);
     const result = JSON.parse(out.stdout);
