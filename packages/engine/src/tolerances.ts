@@ -294,8 +294,8 @@ export const NEGLIGIBLE_DRIFT = 16 * UNIT_ROUNDOFF;
 /**
  * A disc touching a line (its gap within the rounding of its position, or inside it by the slack
  * OVERLAP_REL allows) that moves away but is turned back by an acceleration before its gap exceeds
- * CONTACT_BAND times the magnitudes that make up the gap (|x| + |y| of the centre and of the line's
- * point, and r) never leaves the contact: a resting contact, refused as such
+ * CONTACT_BAND times the magnitudes that make up the gap (the coordinates of the centre and of the
+ * line's point, each weighted by the normal's component along it, and r) never leaves the contact: a resting contact, refused as such
  * (physics/timeOfImpact.ts). 16 roundings of those magnitudes, above what the position carries.
  * Without it a disc placed on a ramp under gravity took one of three courses by how its slope
  * rounded: refused as resting (as on a flat floor), bouncing ever lower at the rounding level

@@ -289,9 +289,14 @@ export function discLineCrossings(
   // Rounding of h'' = 2 s2, the acceleration's direction included (friction along the line).
   const pressNoise = APPROACH_NOISE * (Math.abs(ax) + Math.abs(ay));
   // Rounding of the gap h = ±s - r: a contact that stays within it never opens (CONTACT_BAND).
+  // (The coordinates weighted by the normal's components: along a horizontal floor x does not enter
+  // the gap, and a floor anchored at x = 1e6 refused a disc bouncing 1e-9 above it: review.)
   const band =
     CONTACT_BAND *
-    (Math.abs(px) + Math.abs(py) + Math.abs(x1) + Math.abs(y1) + r + lo * (Math.abs(s1) + lo * Math.abs(s2)));
+    (Math.abs(nx) * (Math.abs(px) + Math.abs(x1)) +
+      Math.abs(ny) * (Math.abs(py) + Math.abs(y1)) +
+      r +
+      lo * (Math.abs(s1) + lo * Math.abs(s2)));
   out[0] = firstDownCrossingQuadratic(s0 - r, s1, s2, lo, hi, positive, Number.NaN, noise, pressNoise, band);
   out[1] = firstDownCrossingQuadratic(
     -s0 - r,

@@ -267,12 +267,14 @@ export class Simulator extends ZenoGuard {
   /**
    * Reflect body s's velocity now off normal (nx, ny) into `vel`; returns the approach speed.
    * Throws when the body rests against the obstacle under an acceleration pressing it there
-   * (physics/resting.ts). The contact is slot s's pending event: a point or an end of a ray or
+   * (physics/resting.ts), or, not pushed off a round contact, stays on it (staysOnPoint). The contact is slot s's pending event: a point or an end of a ray or
    * segment is round, a line's side flat (read here, so processObstacle's hot path stays exactly as
    * it was; an A/B of the longer call there read 2-4 % slower on the gas, within this host's noise).
    */
   private reflectOff(s: number, otherId: string, nx: number, ny: number): number {
     const t = this.now;
+    const px = contact[2] as number; // a round contact's point (obstacleContact)
+    const py = contact[3] as number;
     const round = (this.store.evKind[s] as number) !== EV_LINE || (this.store.evAux[s] as number) !== 0;
     const vx = this.vxAt(s, t);
     const vy = this.vyAt(s, t);
@@ -281,7 +283,10 @@ export class Simulator extends ZenoGuard {
     const friction = (this.store.mu[s] as number) > 0;
     const ax = mot[s * 8 + 5] as number;
     const ay = mot[s * 8 + 6] as number;
-    if (approach <= 0 && pressedInto(vx, vy, ax, ay, nx, ny, round, friction)) {
+    if (
+      approach <= 0 &&
+      (pressedInto(vx, vy, ax, ay, nx, ny, round, friction) || (round && this.staysOnPoint(s, px, py)))
+    ) {
       throw new SimulationError(
         `body '${this.store.ids[s]}' rests against '${otherId}' under an acceleration at t=${t}: resting contact is not supported (it would take infinitely many bounces)`,
         t,
