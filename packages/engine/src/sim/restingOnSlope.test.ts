@@ -203,4 +203,20 @@ describe("a disc crossing a peg at about the speed that keeps it on the peg (res
     ).toThrow(/'ball' rests against 'peg' .* at t=0:/);
     expect(events).toBe(0);
   });
+
+  it("off the origin (the peg at y = 63): reflected by a rounding's impulse, it stays on, refused (it sank 40 % in)", () => {
+    const a = (39.502 * Math.PI) / 180;
+    const w = new World({ g: 0, gravity: [0, -0.1] });
+    w.addPoint("peg", [0, 63.22839762040087]);
+    const v = Math.sqrt(0.1) * -0.8784090047347738;
+    w.addBody("ball", {
+      x: Math.sin(a),
+      y: 63.22839762040087 + Math.cos(a),
+      r: 1,
+      m: 1,
+      vx: v * Math.cos(a),
+      vy: -v * Math.sin(a),
+    });
+    expect(() => w.advance({ untilTime: 10 })).toThrow(/'ball' rests against 'peg'/);
+  });
 });
