@@ -15,6 +15,11 @@ const scene = (id: string, x = 0): SceneFile => ({
   gravity: [0, 0],
   actions: [{ time: 0, type: "addBody", id, x, y: 0, r: 1, m: 1, mu: 0, v: [0, 0] }],
 });
+/** A scene of `n` discs (ids `<id>0`...), to fill the storage. */
+const discs = (id: string, n: number): SceneFile => ({
+  ...scene(id),
+  actions: Array.from({ length: n }, (_, i) => ({ ...scene(`${id}${i}`, 3 * i).actions[0]! })),
+});
 const ids = (s: SceneFile) => s.actions.map((a) => ("id" in a ? a.id : a.type));
 
 /**
@@ -376,5 +381,50 @@ describe("autosave keeps the scene a load replaced", () => {
     }
     expect(readSlot(p.shared, a.autosave.tab)).toBeNull();
     expect(readReplaced(p.shared, a.autosave.tab)).toBeNull();
+  });
+
+  describe("near the storage quota the current scene comes first", () => {
+    // room for two scenes of 40 discs, not for one of 40 and one of 60
+    const quota = () => 2 * sceneText(discs("work", 40)).length + 500;
+
+    it("a load: the new scene is saved, the scene it replaced is dropped (and said so)", async () => {
+      const p = newProfile(quota());
+      const a = await p.open(undefined, true, true);
+      await a.editor.loadScene(discs("work", 40));
+      a.flush();
+      await a.editor.loadScene(discs("file", 60));
+      a.flush();
+      expect(readSlot(p.shared, a.autosave.tab)?.scene.actions.length).toBe(60);
+      expect(readReplaced(p.shared, a.autosave.tab)).toBeNull();
+      expect(a.ui().message).toEqual({
+        text: "Autosave could not keep the scene you replaced (the browser's storage is full): Undo brings it back in this tab, but not after a reload.",
+        tone: "error",
+      });
+      await a.editor.undo(); // in this tab it is still there
+      expect(a.editor.doc.actions.length).toBe(40);
+      await a.editor.redo();
+      const b = await reload(p, a);
+      expect(b.editor.doc.actions.length).toBe(60);
+      expect(b.editor.history.getState().past.length).toBe(0);
+    });
+
+    it("an edit that no longer fits beside the replaced scene: the replaced scene gives its space up", async () => {
+      const p = newProfile(quota());
+      const a = await p.open(undefined, true, true);
+      await a.editor.loadScene(discs("work", 40));
+      a.flush();
+      await a.editor.loadScene(scene("file", -10));
+      a.flush();
+      expect(readReplaced(p.shared, a.autosave.tab)?.scene.actions.length).toBe(40);
+      expect(await a.editor.edit(discs("more", 60).actions)).toBeNull();
+      a.flush();
+      expect(readSlot(p.shared, a.autosave.tab)?.scene.actions.length).toBe(61);
+      expect(readReplaced(p.shared, a.autosave.tab)).toBeNull();
+      expect(a.ui().message?.text).toMatch(
+        /^Autosave could not keep the scene you replaced .*not after a reload\.$/,
+      );
+      const b = await reload(p, a);
+      expect(b.editor.doc.actions.length).toBe(61);
+    });
   });
 });

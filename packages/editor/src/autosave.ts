@@ -19,6 +19,8 @@ import {
   pruneSlots,
   readReplaced,
   readSlot,
+  removeReplaced,
+  replacedKey,
   type Slot,
   slotKey,
   slotSavedAt,
@@ -163,14 +165,19 @@ export class TabAutosave {
    */
   save(scene: SceneFile, prune = true): string | null {
     const now = this.env.now();
-    // the scene a load replaced first: the new scene's save must not be the only one left
-    let replacedFailed: string | null = null;
-    if (this.replacedText !== null && (this.replacedPending || !prune)) {
-      replacedFailed = writeReplaced(this.env.local, this.tab, this.replacedText, now);
-      this.replacedPending = false;
-    }
     const text = sceneText(scene);
-    const failed = writeSlot(this.env.local, this.tab, text, now);
+    // The current scene first: the replaced scene beside it is written only after, and gives its
+    // space up when the slot does not fit (else near the quota an older scene would stay stored
+    // and the current one be lost).
+    let failed = writeSlot(this.env.local, this.tab, text, now);
+    if (failed !== null) {
+      // tried again after it (written again below, or with the next save that fits, if it fits too)
+      if (this.replacedText !== null) this.replacedPending = true;
+      if (this.env.local.getItem(replacedKey(this.tab)) !== null) {
+        removeReplaced(this.env.local, this.tab);
+        failed = writeSlot(this.env.local, this.tab, text, now);
+      }
+    }
     if (failed !== null) {
       this.env.session.setItem(LOST_KEY, "1");
       return failed;
@@ -178,6 +185,11 @@ export class TabAutosave {
     this.env.session.removeItem(LOST_KEY);
     this.ownSavedAt = now;
     this.lastText = text;
+    let replacedFailed: string | null = null;
+    if (this.replacedText !== null && (this.replacedPending || !prune)) {
+      replacedFailed = writeReplaced(this.env.local, this.tab, this.replacedText, now);
+      this.replacedPending = false;
+    }
     if (prune) pruneSlots(this.env.local, this.tab);
     return replacedFailed;
   }
