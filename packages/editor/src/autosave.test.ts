@@ -356,6 +356,58 @@ describe("autosave keeps the scene a load replaced", () => {
     expect(ids(b.editor.doc)).toEqual(["pasted"]);
   });
 
+  it("a load undone is no longer offered after a reload; redone, it is again", async () => {
+    const p = newProfile();
+    const a = await p.open(undefined, true, true);
+    await a.editor.loadScene(scene("work"), { undoable: false }); // (no load before Clear)
+    a.flush();
+    await a.editor.clear();
+    a.flush();
+    expect(ids(readReplaced(p.shared, a.autosave.tab)!.scene)).toEqual(["work"]);
+    await a.editor.undo();
+    await a.editor.edit([{ time: 0, type: "updateBody", id: "work", x: 5 }]);
+    a.flush();
+    // Clear was undone: nothing replaced the work in the end
+    expect(readReplaced(p.shared, a.autosave.tab)).toBeNull();
+    const b = await reload(p, a);
+    expect(ids(b.editor.doc)).toEqual(["work", "work"]);
+    expect(b.editor.history.getState().past.length).toBe(0);
+    expect(b.ui().message).toBeNull();
+    // undone then redone: kept again
+    await b.editor.clear();
+    await b.editor.undo();
+    b.flush();
+    expect(readReplaced(p.shared, b.autosave.tab)).toBeNull();
+    await b.editor.redo();
+    b.flush();
+    const c = await reload(p, b);
+    expect(c.editor.doc.actions).toEqual([]);
+    await c.editor.undo();
+    expect(ids(c.editor.doc)).toEqual(["work", "work"]);
+    // Undo after the reload undoes that load too: the next reload has nothing to go back to
+    await c.editor.edit([{ time: 0, type: "updateBody", id: "work", x: 7 }]);
+    const d = await reload(p, c);
+    expect(d.editor.history.getState().past.length).toBe(0);
+  });
+
+  it("undoing the latest load keeps the scene an earlier load, still done, replaced", async () => {
+    const p = newProfile();
+    const a = await p.open(undefined, true, true);
+    await a.editor.loadScene(scene("work"));
+    await a.editor.clear();
+    await a.editor.edit(scene("disc").actions);
+    await a.editor.clear();
+    a.flush();
+    expect(ids(readReplaced(p.shared, a.autosave.tab)!.scene)).toEqual(["disc"]);
+    await a.editor.undo();
+    a.flush();
+    expect(ids(readReplaced(p.shared, a.autosave.tab)!.scene)).toEqual(["work"]);
+    const b = await reload(p, a);
+    expect(ids(b.editor.doc)).toEqual(["disc"]);
+    await b.editor.undo();
+    expect(ids(b.editor.doc)).toEqual(["work"]);
+  });
+
   it("the scene replaced within the autosave's quiet delay is kept by the save on leaving the page", async () => {
     const p = newProfile();
     const a = await p.open(undefined, true, true);
