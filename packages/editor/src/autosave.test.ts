@@ -15,6 +15,11 @@ const scene = (id: string, x = 0): SceneFile => ({
   gravity: [0, 0],
   actions: [{ time: 0, type: "addBody", id, x, y: 0, r: 1, m: 1, mu: 0, v: [0, 0] }],
 });
+/** A scene of `n` discs (ids `<id>0`...), to fill the storage. */
+const discs = (id: string, n: number): SceneFile => ({
+  ...scene(id),
+  actions: Array.from({ length: n }, (_, i) => ({ ...scene(`${id}${i}`, 3 * i).actions[0]! })),
+});
 const ids = (s: SceneFile) => s.actions.map((a) => ("id" in a ? a.id : a.type));
 
 /**
@@ -351,6 +356,58 @@ describe("autosave keeps the scene a load replaced", () => {
     expect(ids(b.editor.doc)).toEqual(["pasted"]);
   });
 
+  it("a load undone is no longer offered after a reload; redone, it is again", async () => {
+    const p = newProfile();
+    const a = await p.open(undefined, true, true);
+    await a.editor.loadScene(scene("work"), { undoable: false }); // (no load before Clear)
+    a.flush();
+    await a.editor.clear();
+    a.flush();
+    expect(ids(readReplaced(p.shared, a.autosave.tab)!.scene)).toEqual(["work"]);
+    await a.editor.undo();
+    await a.editor.edit([{ time: 0, type: "updateBody", id: "work", x: 5 }]);
+    a.flush();
+    // Clear was undone: nothing replaced the work in the end
+    expect(readReplaced(p.shared, a.autosave.tab)).toBeNull();
+    const b = await reload(p, a);
+    expect(ids(b.editor.doc)).toEqual(["work", "work"]);
+    expect(b.editor.history.getState().past.length).toBe(0);
+    expect(b.ui().message).toBeNull();
+    // undone then redone: kept again
+    await b.editor.clear();
+    await b.editor.undo();
+    b.flush();
+    expect(readReplaced(p.shared, b.autosave.tab)).toBeNull();
+    await b.editor.redo();
+    b.flush();
+    const c = await reload(p, b);
+    expect(c.editor.doc.actions).toEqual([]);
+    await c.editor.undo();
+    expect(ids(c.editor.doc)).toEqual(["work", "work"]);
+    // Undo after the reload undoes that load too: the next reload has nothing to go back to
+    await c.editor.edit([{ time: 0, type: "updateBody", id: "work", x: 7 }]);
+    const d = await reload(p, c);
+    expect(d.editor.history.getState().past.length).toBe(0);
+  });
+
+  it("undoing the latest load keeps the scene an earlier load, still done, replaced", async () => {
+    const p = newProfile();
+    const a = await p.open(undefined, true, true);
+    await a.editor.loadScene(scene("work"));
+    await a.editor.clear();
+    await a.editor.edit(scene("disc").actions);
+    await a.editor.clear();
+    a.flush();
+    expect(ids(readReplaced(p.shared, a.autosave.tab)!.scene)).toEqual(["disc"]);
+    await a.editor.undo();
+    a.flush();
+    expect(ids(readReplaced(p.shared, a.autosave.tab)!.scene)).toEqual(["work"]);
+    const b = await reload(p, a);
+    expect(ids(b.editor.doc)).toEqual(["disc"]);
+    await b.editor.undo();
+    expect(ids(b.editor.doc)).toEqual(["work"]);
+  });
+
   it("the scene replaced within the autosave's quiet delay is kept by the save on leaving the page", async () => {
     const p = newProfile();
     const a = await p.open(undefined, true, true);
@@ -376,5 +433,50 @@ describe("autosave keeps the scene a load replaced", () => {
     }
     expect(readSlot(p.shared, a.autosave.tab)).toBeNull();
     expect(readReplaced(p.shared, a.autosave.tab)).toBeNull();
+  });
+
+  describe("near the storage quota the current scene comes first", () => {
+    // room for two scenes of 40 discs, not for one of 40 and one of 60
+    const quota = () => 2 * sceneText(discs("work", 40)).length + 500;
+
+    it("a load: the new scene is saved, the scene it replaced is dropped (and said so)", async () => {
+      const p = newProfile(quota());
+      const a = await p.open(undefined, true, true);
+      await a.editor.loadScene(discs("work", 40));
+      a.flush();
+      await a.editor.loadScene(discs("file", 60));
+      a.flush();
+      expect(readSlot(p.shared, a.autosave.tab)?.scene.actions.length).toBe(60);
+      expect(readReplaced(p.shared, a.autosave.tab)).toBeNull();
+      expect(a.ui().message).toEqual({
+        text: "Autosave could not keep the scene you replaced (the browser's storage is full): Undo brings it back in this tab, but not after a reload.",
+        tone: "error",
+      });
+      await a.editor.undo(); // in this tab it is still there
+      expect(a.editor.doc.actions.length).toBe(40);
+      await a.editor.redo();
+      const b = await reload(p, a);
+      expect(b.editor.doc.actions.length).toBe(60);
+      expect(b.editor.history.getState().past.length).toBe(0);
+    });
+
+    it("an edit that no longer fits beside the replaced scene: the replaced scene gives its space up", async () => {
+      const p = newProfile(quota());
+      const a = await p.open(undefined, true, true);
+      await a.editor.loadScene(discs("work", 40));
+      a.flush();
+      await a.editor.loadScene(scene("file", -10));
+      a.flush();
+      expect(readReplaced(p.shared, a.autosave.tab)?.scene.actions.length).toBe(40);
+      expect(await a.editor.edit(discs("more", 60).actions)).toBeNull();
+      a.flush();
+      expect(readSlot(p.shared, a.autosave.tab)?.scene.actions.length).toBe(61);
+      expect(readReplaced(p.shared, a.autosave.tab)).toBeNull();
+      expect(a.ui().message?.text).toMatch(
+        /^Autosave could not keep the scene you replaced .*not after a reload\.$/,
+      );
+      const b = await reload(p, a);
+      expect(b.editor.doc.actions.length).toBe(61);
+    });
   });
 });

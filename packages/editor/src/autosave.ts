@@ -10,7 +10,9 @@
  * A load that replaces the scene (Clear, a preset, an opened scene: Editor.replaced) keeps the scene
  * it took away beside the slot (doc/autosaveSlots.ts keepsReplaced, written with the next save): the
  * autosave of the new scene 300 ms later no longer makes the old one unreachable, since a reload
- * loads it as the step Undo goes back to (boot.ts firstScene).
+ * loads it as the step Undo goes back to (boot.ts firstScene). While Undo has undone that load, the
+ * kept scene is that of the latest earlier load not undone, or none (Redo brings it back): a reload
+ * never offers a scene as replaced when nothing replaced it in the end.
  */
 import {
   keepsReplaced,
@@ -19,6 +21,8 @@ import {
   pruneSlots,
   readReplaced,
   readSlot,
+  removeReplaced,
+  replacedKey,
   type Slot,
   slotKey,
   slotSavedAt,
@@ -42,6 +46,8 @@ export const TAB_KEY = "chapgame.editor.tab";
  * pile up copies of one scene.
  */
 export const ADOPT_AFTER_MS = 500;
+/** Recent loads whose replaced scene a tab remembers (the latest not undone is kept). */
+const KEPT_MAX = 8;
 /** sessionStorage: set while this tab's last scene could not be saved. */
 const LOST_KEY = "chapgame.editor.tab.lost";
 
@@ -101,9 +107,16 @@ export class TabAutosave {
   private restoredFrom: { tab: string; savedAt: number } | null = null;
   /** The scene text the last replacing load loaded when it was a preset or Clear's (keepsReplaced). */
   private reproducibleText: string | null = null;
-  /** The scene text a load replaced, to keep beside the slot (written with the next save). */
+  /** The recent loads whose replaced scene is to be kept (keepsReplaced), with that scene's text. */
+  private kept: { by: Replacement; text: string }[] = [];
+  /** The recent replacements whose undo step is undone now (EditorSession.replaced). */
+  private undone: ReadonlySet<Replacement> = new Set();
+  /**
+   * The scene to keep beside the slot: the one the latest kept load whose step is not undone took
+   * away (Undo after a reload goes back to it as Undo now would), or null.
+   */
   private replacedText: string | null = null;
-  /** Whether replacedText is still to be written. */
+  /** Whether replacedText is still to be written (or, null, the kept scene removed). */
   private replacedPending = false;
 
   constructor(private readonly env: AutosaveEnv) {
@@ -140,13 +153,30 @@ export class TabAutosave {
    * the next save, unless there is nothing in it to lose (keepsReplaced: empty, or a preset's or
    * Clear's scene unedited).
    */
-  replacedBy({ before, loaded, reproducible }: Replacement): void {
+  replacedBy(replacement: Replacement): void {
+    const { before, loaded, reproducible } = replacement;
     const text = sceneText(before);
-    if (keepsReplaced({ text, empty: before.actions.length === 0 }, this.reproducibleText)) {
-      this.replacedText = text;
-      this.replacedPending = true;
-    }
+    if (keepsReplaced({ text, empty: before.actions.length === 0 }, this.reproducibleText))
+      this.kept = [...this.kept, { by: replacement, text }].slice(-KEPT_MAX);
     this.reproducibleText = reproducible ? sceneText(loaded) : null;
+    this.keepLatest();
+  }
+
+  /**
+   * The replacements whose step Undo undid (`undone`, EditorSession.replaced): the scene one of them
+   * took away is kept no longer (a reload would offer it as replaced though nothing replaced it),
+   * and is kept again once Redo brings its step back.
+   */
+  undoneNow(undone: ReadonlySet<Replacement>): void {
+    this.undone = undone;
+    this.keepLatest();
+  }
+
+  private keepLatest(): void {
+    const text = [...this.kept].reverse().find((k) => !this.undone.has(k.by))?.text ?? null;
+    if (text === this.replacedText) return;
+    this.replacedText = text;
+    this.replacedPending = true;
   }
 
   /** A slot of another tab saved after this tab's own (at start), holding a different scene. */
@@ -163,14 +193,19 @@ export class TabAutosave {
    */
   save(scene: SceneFile, prune = true): string | null {
     const now = this.env.now();
-    // the scene a load replaced first: the new scene's save must not be the only one left
-    let replacedFailed: string | null = null;
-    if (this.replacedText !== null && (this.replacedPending || !prune)) {
-      replacedFailed = writeReplaced(this.env.local, this.tab, this.replacedText, now);
-      this.replacedPending = false;
-    }
     const text = sceneText(scene);
-    const failed = writeSlot(this.env.local, this.tab, text, now);
+    // The current scene first: the replaced scene beside it is written only after, and gives its
+    // space up when the slot does not fit (else near the quota an older scene would stay stored
+    // and the current one be lost).
+    let failed = writeSlot(this.env.local, this.tab, text, now);
+    if (failed !== null) {
+      // tried again after it (written again below, or with the next save that fits, if it fits too)
+      if (this.replacedText !== null) this.replacedPending = true;
+      if (this.env.local.getItem(replacedKey(this.tab)) !== null) {
+        removeReplaced(this.env.local, this.tab);
+        failed = writeSlot(this.env.local, this.tab, text, now);
+      }
+    }
     if (failed !== null) {
       this.env.session.setItem(LOST_KEY, "1");
       return failed;
@@ -178,6 +213,12 @@ export class TabAutosave {
     this.env.session.removeItem(LOST_KEY);
     this.ownSavedAt = now;
     this.lastText = text;
+    let replacedFailed: string | null = null;
+    if (this.replacedPending || (!prune && this.replacedText !== null)) {
+      if (this.replacedText === null) removeReplaced(this.env.local, this.tab);
+      else replacedFailed = writeReplaced(this.env.local, this.tab, this.replacedText, now);
+      this.replacedPending = false;
+    }
     if (prune) pruneSlots(this.env.local, this.tab);
     return replacedFailed;
   }
@@ -204,10 +245,12 @@ export class TabAutosave {
     };
     // A load that replaced the scene before autosave started (a shared link over the autosave, the
     // restored scene over the one it replaced) counts as well.
-    const replaced = editor.replaced.getState().last;
-    if (replaced) this.replacedBy(replaced);
-    const unsubReplaced = editor.replaced.subscribe((s) => {
-      if (s.last) this.replacedBy(s.last);
+    const replaced = editor.replaced.getState();
+    if (replaced.last) this.replacedBy(replaced.last);
+    this.undoneNow(replaced.undone);
+    const unsubReplaced = editor.replaced.subscribe((s, p) => {
+      if (s.last && s.last !== p.last) this.replacedBy(s.last);
+      if (s.undone !== p.undone) this.undoneNow(s.undone);
     });
     const unsubClient = client.subscribe(() => {
       if (client.getSnapshot().docRevision === savedRevision || timer !== null) return;

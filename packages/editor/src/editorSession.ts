@@ -11,10 +11,11 @@
  * (sceneChanges.ts). An edit, rewrite or rename refused because a later action would become invalid
  * (the engine's path `actions[i]`) also says which action that is (doc/actionRefs.ts). A load that
  * replaces the scene (undoable, not keeping the time: Clear, a preset, an opened scene) is published
- * in `replaced` (the scene before and the one loaded), so autosave can keep the scene taken away.
+ * in `replaced` (the scene before and the one loaded), so autosave can keep the scene taken away,
+ * and so is an Undo or Redo of its step (autosave then keeps that scene only while it is done).
  */
 
-import { EMPTY_HISTORY, type History, record, takenBack } from "./doc/history";
+import { EMPTY_HISTORY, HISTORY_LIMIT, type History, record, takenBack } from "./doc/history";
 import { type ObjectKind, renameObject } from "./doc/rename";
 import type { Intents, Ticket } from "./doc/undoIntents";
 import { EditorCompute } from "./editorCompute";
@@ -35,6 +36,13 @@ export interface Replacement {
   reproducible: boolean;
 }
 
+/** EditorSession.replaced. */
+export interface Replaced {
+  last: Replacement | null;
+  /** Replacements whose undo step is undone now (the scene they took away is the scene, or after it). */
+  undone: ReadonlySet<Replacement>;
+}
+
 /** How a scene is loaded (loadScene). */
 export interface LoadOptions {
   /** false: not an undo step (start-up). */
@@ -53,10 +61,13 @@ export class EditorSession extends EditorCompute {
   private readonly changes = new SceneChanges(this.client);
   /** Undo and Redo as the user asked them, over `history`, while changes are queued (undoIntents.ts). */
   readonly intents: Store<Intents> = this.changes.intents;
-  /** The last load that replaced the scene: the scene it took away and the one it loaded. */
-  readonly replaced: Store<{ last: Replacement | null }> = createStore<{ last: Replacement | null }>({
-    last: null,
-  });
+  /**
+   * The last load that replaced the scene (the scene it took away and the one it loaded), and the
+   * recent ones whose undo step is undone now (Undo went back past them; Redo may bring them back).
+   */
+  readonly replaced: Store<Replaced> = createStore<Replaced>({ last: null, undone: new Set() });
+  /** Each recent replacement's undo step: its entry in Undo while done, the scene in Redo after it while undone. */
+  private replacementSteps: { replacement: Replacement; entry: SceneFile; done: boolean }[] = [];
   /** Makes a fresh host (a new Web Worker) for restartEngine; null where none can be made. */
   portFactory: (() => Port) | null = null;
   /**
@@ -65,6 +76,24 @@ export class EditorSession extends EditorCompute {
    * since the change is answered "engine restarted" and never recorded.
    */
   protected unconfirmed: SceneFile | null = null;
+
+  /**
+   * After Undo (`undo`) or Redo restored `scene` with the history `h`: a replacement whose step that
+   * was is undone (its scene after goes to Redo) or done again (its entry is the scene before).
+   */
+  protected stepped(undo: boolean, scene: SceneFile, h: History): void {
+    let changed = false;
+    for (const step of this.replacementSteps)
+      if (step.entry === scene && step.done === undo) {
+        step.done = !undo;
+        step.entry = (undo ? h.future[0] : h.past[h.past.length - 1]) ?? scene;
+        changed = true;
+      }
+    if (changed)
+      this.replaced.setState({
+        undone: new Set(this.replacementSteps.filter((s) => !s.done).map((s) => s.replacement)),
+      });
+  }
 
   /** Runs `change` once the scene changes queued before it are done (SceneChanges.serial). */
   protected serial<T>(change: () => Promise<T>): Promise<T> {
@@ -123,10 +152,13 @@ export class EditorSession extends EditorCompute {
       this.unconfirmed = null;
     }
     if (options.undoable !== false) this.history.setState(record(this.history.getState(), before));
-    if (options.undoable !== false && !options.keepTime)
-      this.replaced.setState({
-        last: { before, loaded: this.doc, reproducible: options.reproducible === true },
-      });
+    if (options.undoable !== false && !options.keepTime) {
+      const replacement = { before, loaded: this.doc, reproducible: options.reproducible === true };
+      this.replacementSteps = [...this.replacementSteps, { replacement, entry: before, done: true }].slice(
+        -HISTORY_LIMIT,
+      );
+      this.replaced.setState({ last: replacement });
+    }
     this.ui.setState((s) => ({
       t: options.keepTime ? s.t : 0,
       playing: options.keepTime ? s.playing : false,

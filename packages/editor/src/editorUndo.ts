@@ -60,6 +60,7 @@ export class EditorUndo extends EditorSession {
     const u = undo(h, current);
     const loaded =
       u !== null && (await this.restore(u.scene, u.history, `Undone: ${summarizeEdit(u.scene, current)}.`));
+    if (loaded) this.stepped(true, u.scene, u.history);
     if (!loaded) ticket.fate = "refused"; // nothing undone: a Redo bound to it has nothing to redo
     return loaded;
   }
@@ -71,6 +72,7 @@ export class EditorUndo extends EditorSession {
     const r = redo(this.history.getState(), current);
     const loaded =
       r !== null && (await this.restore(r.scene, r.history, `Redone: ${summarizeEdit(current, r.scene)}.`));
+    if (loaded) this.stepped(false, r.scene, r.history);
     if (!loaded) ticket.fate = "refused"; // nothing redone: an Undo bound to it has nothing to undo
     return loaded;
   }

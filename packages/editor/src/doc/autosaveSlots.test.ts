@@ -9,9 +9,12 @@ import {
   migrateLegacy,
   newestSlot,
   pruneSlots,
+  readReplaced,
   readSlot,
+  replacedKey,
   slotKey,
   slotSavedAt,
+  writeReplaced,
   writeSlot,
 } from "./autosaveSlots";
 import { sceneText } from "./sceneIo";
@@ -86,5 +89,18 @@ describe("autosave slots", () => {
     expect(writeSlot(st, "me", huge, 3)).toMatch(/^Autosave failed: .* use Save file\.$/);
     expect(readSlot(st, "me")).toBeNull(); // a reload must not bring back the older scene as the latest
     expect(readSlot(st, "other")?.scene).toEqual(scene(1));
+  });
+
+  it("a replaced scene whose tab has no slot is pruned (no reload can reach it), with any number of slots", () => {
+    const st = memoryStorage();
+    writeSlot(st, "a", sceneText(scene(1)), 1);
+    writeReplaced(st, "a", sceneText(scene(2)), 1);
+    writeReplaced(st, "gone", sceneText(scene(3)), 1);
+    writeReplaced(st, "lost", sceneText(scene(4)), 1);
+    expect(pruneSlots(st, "a")).toEqual([]);
+    expect(st.getItem(replacedKey("gone"))).toBeNull();
+    expect(st.getItem(replacedKey("lost"))).toBeNull();
+    expect(readReplaced(st, "a")?.scene).toEqual(scene(2));
+    expect(readSlot(st, "a")?.scene).toEqual(scene(1));
   });
 });

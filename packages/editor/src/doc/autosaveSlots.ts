@@ -5,8 +5,10 @@
  * is migrated into the slot of tab "v1" with savedAt 0 (its time is unknown: any newer slot wins).
  * At most MAX_SLOTS slots are kept: the oldest are pruned, never the saving tab's own.
  * Beside each slot, a tab keeps the last scene of its own that a load replaced (Clear, a preset, an
- * opened file...): `chapgame.editor.replaced.v1.<tab id>`, same format, pruned with its slot, so the
- * scene a replacement took away survives a reload (boot.ts loads it as the step Undo goes back to).
+ * opened file...): `chapgame.editor.replaced.v1.<tab id>`, same format, pruned with its slot (and
+ * when its tab has no slot), so the scene a replacement took away survives a reload (boot.ts loads
+ * it as the step Undo goes back to). The slot always comes first: the replaced scene is written
+ * after it, and gives its space up when the slot does not fit (autosave.ts TabAutosave.save).
  * Pure storage access: the caller gives the storage, the tab id and the clock.
  */
 import type { SceneFile } from "../engineTypes";
@@ -140,12 +142,17 @@ export function writeReplaced(storage: Storage, tab: string, text: string, saved
     storage.setItem(replacedKey(tab), `${JSON.stringify({ savedAt })}\n${text}`);
     return null;
   } catch {
-    try {
-      storage.removeItem(replacedKey(tab)); // an older one would come back as if it were the latest
-    } catch {
-      // storage disabled altogether
-    }
+    removeReplaced(storage, tab); // an older one would come back as if it were the latest
     return "Autosave could not keep the scene you replaced (the browser's storage is full): Undo brings it back in this tab, but not after a reload.";
+  }
+}
+
+/** Removes the scene `tab` kept as replaced by a load (nothing when storage is disabled). */
+export function removeReplaced(storage: Storage, tab: string): void {
+  try {
+    storage.removeItem(replacedKey(tab));
+  } catch {
+    // storage disabled altogether
   }
 }
 
@@ -170,11 +177,17 @@ export function writeSlot(storage: Storage, tab: string, text: string, savedAt: 
 }
 
 /**
- * Keeps at most `max` slots: removes the oldest (with their replaced scenes), never `keep`'s. Cheap when there are few slots
- * (only the keys are read then).
+ * Keeps at most `max` slots: removes the oldest (with their replaced scenes), never `keep`'s, and
+ * removes replaced scenes whose tab has no slot (a slot that could not be written, or one removed
+ * by an earlier version): no reload can reach them. Cheap when there are few slots (only the keys
+ * are read then).
  */
 export function pruneSlots(storage: Storage, keep: string, max = MAX_SLOTS): string[] {
   const keys = slotKeys(storage);
+  const orphans = replacedKeys(storage).filter(
+    (key) => !keys.includes(slotKey(key.slice(REPLACED_PREFIX.length))),
+  );
+  for (const key of orphans) storage.removeItem(key);
   if (keys.length <= max) return [];
   const others = keys
     .filter((key) => key !== slotKey(keep))
@@ -187,4 +200,13 @@ export function pruneSlots(storage: Storage, keep: string, max = MAX_SLOTS): str
     storage.removeItem(replacedKey(tab));
   }
   return removed;
+}
+
+function replacedKeys(storage: Storage): string[] {
+  const keys: string[] = [];
+  for (let i = 0; i < storage.length; i++) {
+    const key = storage.key(i);
+    if (key?.startsWith(REPLACED_PREFIX)) keys.push(key);
+  }
+  return keys;
 }
