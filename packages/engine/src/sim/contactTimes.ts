@@ -140,44 +140,33 @@ export class ContactTimes extends BroadPhase {
    * a peg just above the speed that keeps it on, 65 events at one instant, then a Zeno error).
    */
   protected staysOnPoint(s: number, px: number, py: number): boolean {
-    const b = this.store;
-    if ((b.mu[s] as number) > 0) return false;
+    if ((this.store.mu[s] as number) > 0) return false;
     const t = this.now;
-    const dx = this.xAt(s, t) - px;
-    const dy = this.yAt(s, t) - py;
-    const vx = this.vxAt(s, t);
-    const vy = this.vyAt(s, t);
-    const ax = b.mot[s * 8 + 5] as number;
-    const ay = b.mot[s * 8 + 6] as number;
-    const tau = discDiscTimeScaled(
-      dx,
-      dy,
-      vx,
-      vy,
-      ax,
-      ay,
-      b.r[s] as number,
-      0,
-      (b.mot[s * 8 + 7] as number) - t,
-      this.opt.quadraticFastPath,
-      Math.abs(dx * vx) + Math.abs(dy * vy),
-      Math.abs(dx * ax) + Math.abs(dy * ay),
-      this.pointBand(s, px, py),
+    return (
+      this.pointContact(s, px, py, this.xAt(s, t), this.yAt(s, t), this.vxAt(s, t), this.vyAt(s, t), t) === 0
     );
-    return tau === 0;
   }
 
-  /** Earliest contact of body s with a point at (px, py), or +Infinity. */
-  protected pointTime(s: number, px: number, py: number): number {
+  /**
+   * The contact time of body s with the point (px, py), local to `base`, from its position (x, y)
+   * and velocity (vx, vy) at `base` and its motion's acceleration and end (pure query).
+   */
+  private pointContact(
+    s: number,
+    px: number,
+    py: number,
+    x: number,
+    y: number,
+    vx: number,
+    vy: number,
+    base: number,
+  ): number {
     const b = this.store;
-    const t0 = b.mot[s * 8 + 0] as number;
-    const vx = b.mot[s * 8 + 3] as number;
-    const vy = b.mot[s * 8 + 4] as number;
     const ax = b.mot[s * 8 + 5] as number;
     const ay = b.mot[s * 8 + 6] as number;
-    const dx = (b.mot[s * 8 + 1] as number) - px;
-    const dy = (b.mot[s * 8 + 2] as number) - py;
-    const tau = discDiscTimeScaled(
+    const dx = x - px;
+    const dy = y - py;
+    return discDiscTimeScaled(
       dx,
       dy,
       vx,
@@ -185,12 +174,28 @@ export class ContactTimes extends BroadPhase {
       ax,
       ay,
       b.r[s] as number,
-      this.now - t0,
-      (b.mot[s * 8 + 7] as number) - t0,
+      this.now - base,
+      (b.mot[s * 8 + 7] as number) - base,
       this.opt.quadraticFastPath,
       Math.abs(dx * vx) + Math.abs(dy * vy),
       Math.abs(dx * ax) + Math.abs(dy * ay),
       (b.mu[s] as number) > 0 ? INF_NEG : this.pointBand(s, px, py),
+    );
+  }
+
+  /** Earliest contact of body s with a point at (px, py), or +Infinity. */
+  protected pointTime(s: number, px: number, py: number): number {
+    const m = this.store.mot;
+    const t0 = m[s * 8 + 0] as number;
+    const tau = this.pointContact(
+      s,
+      px,
+      py,
+      m[s * 8 + 1] as number,
+      m[s * 8 + 2] as number,
+      m[s * 8 + 3] as number,
+      m[s * 8 + 4] as number,
+      t0,
     );
     if (tau === INF) return INF;
     const t = t0 + tau;
