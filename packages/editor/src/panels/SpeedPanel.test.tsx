@@ -15,15 +15,20 @@ function type(field: HTMLElement, text: string): void {
   fireEvent.keyDown(field, { key: "Enter" });
 }
 
+/** A test editor with its Speed panel rendered, and the panel's Speed field. */
+function renderSpeed() {
+  const { editor } = testEditor();
+  render(
+    <EditorContext.Provider value={editor}>
+      <SpeedPanel />
+    </EditorContext.Provider>,
+  );
+  return { editor, field: screen.getByRole("textbox", { name: "Speed" }) };
+}
+
 describe("SpeedPanel", () => {
   it("takes a typed speed, negative included, and refuses what it cannot keep, saying why", () => {
-    const { editor } = testEditor();
-    render(
-      <EditorContext.Provider value={editor}>
-        <SpeedPanel />
-      </EditorContext.Provider>,
-    );
-    const field = screen.getByRole("textbox", { name: "Speed" });
+    const { editor, field } = renderSpeed();
     type(field, "-0.25");
     expect(editor.ui.getState().speed).toBe(-0.25);
     expect(editor.ui.getState().message).toBeNull();
@@ -42,13 +47,7 @@ describe("SpeedPanel", () => {
   });
 
   it("a valid speed removes the field's earlier refusal, not another message", () => {
-    const { editor } = testEditor();
-    render(
-      <EditorContext.Provider value={editor}>
-        <SpeedPanel />
-      </EditorContext.Provider>,
-    );
-    const field = screen.getByRole("textbox", { name: "Speed" });
+    const { editor, field } = renderSpeed();
     type(field, "fast");
     expect(editor.ui.getState().message?.text).toMatch(/^Speed: must be a finite number/);
     type(field, "2");
