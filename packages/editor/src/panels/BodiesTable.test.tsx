@@ -72,6 +72,30 @@ describe("BodiesTable messages", () => {
     fireEvent.click(within(table).getByLabelText("ball m"));
     expect(h.editor.ui.getState().message).toBeNull();
   });
+
+  it("text that is not a number, or a negative |v|, is refused naming the body and the column", async () => {
+    const h = testEditor();
+    await h.editor.loadScene(sceneOf([{ time: 0, type: "addBody", id: "ball", x: 0, y: 0, r: 1, m: 1 }], 0), {
+      undoable: false,
+    });
+    await settled(h.client);
+    const table = renderTable(h.editor);
+    const refusal = async (name: string, text: string) => {
+      await waitFor(() => expect(within(table).getByLabelText(name)).toBeTruthy());
+      fireEvent.click(within(table).getByLabelText(name));
+      const input = within(table).getByRole("textbox", { name });
+      fireEvent.change(input, { target: { value: text } });
+      await act(async () => {
+        fireEvent.keyDown(input, { key: "Enter" });
+      });
+      const shown = within(table).getByRole("alert").textContent;
+      fireEvent.keyDown(input, { key: "Escape" });
+      return shown;
+    };
+    expect(await refusal("ball vx", "abc")).toBe("ball vx: must be a number");
+    expect(await refusal("ball speed", "-2")).toBe("ball |v|: must be zero or positive");
+    expect(h.editor.doc.actions.length).toBe(1);
+  });
 });
 
 describe("BodiesTable order", () => {

@@ -43,7 +43,9 @@ export function BodiesTable() {
 
   const commit = (id: string, field: Field, vx: number, vy: number) => async (text: string) => {
     const x = parseNumber(text);
-    if (x === null) return `${field}: must be a number`;
+    // Named as the engine's refusals are (doc/refusalTerms.ts): the body, then the column.
+    const cell = `${id} ${COLUMNS.find((c) => c.field === field)?.title ?? field}`;
+    if (x === null) return `${cell}: must be a number`;
     switch (field) {
       case "vx":
         return editor.updateBody(id, { v: [x, vy] });
@@ -51,7 +53,7 @@ export function BodiesTable() {
         return editor.updateBody(id, { v: [vx, x] });
       case "speed": {
         const s = Math.hypot(vx, vy);
-        if (x < 0) return "|v|: must be zero or positive";
+        if (x < 0) return `${cell}: must be zero or positive`;
         return editor.updateBody(id, { v: s > 0 ? [(vx * x) / s, (vy * x) / s] : [x, 0] });
       }
       default:

@@ -60,7 +60,7 @@ export function CoordinateCell(props: {
         size={6}
         onCommit={async (text) => {
           const x = parseNumber(text);
-          if (x === null) return `${name}: must be a number`;
+          if (x === null) return `${id} ${name}: must be a number`;
           return onCommit(axis === 0 ? [x, point[1]] : [point[0], x]);
         }}
       />

@@ -54,11 +54,11 @@ describe("Lines and Points tables", () => {
     });
   });
 
-  it("text that is not a number is refused in place, naming the field; nothing changes", async () => {
+  it("text that is not a number is refused in place, naming the object and the field; nothing changes", async () => {
     const { editor, lineId } = await setup();
     const before = editor.doc.actions.length;
     await commit(`${lineId} x1`, "abc");
-    expect(screen.getByRole("alert").textContent).toBe("x1: must be a number");
+    expect(screen.getByRole("alert").textContent).toBe(`${lineId} x1: must be a number`);
     expect(editor.doc.actions.length).toBe(before);
   });
 
