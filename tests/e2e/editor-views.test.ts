@@ -223,6 +223,43 @@ describe("editor views", () => {
     expect(await range()).toEqual([0, 10]);
   });
 
+  it("a message, however long, never moves the canvas; a long one hangs over the stage and can be dismissed", async () => {
+    await page.setViewportSize({ width: 1280, height: 800 });
+    try {
+      const canvasTop = async () => (await page.getByTestId("scene-canvas").boundingBox())!.y;
+      const setMessage = (text: string | null) =>
+        page.evaluate((t) => {
+          type Ui = { ui: { setState(s: { message: { text: string; tone: "error" } | null }): void } };
+          (window as unknown as { chapgame: Ui }).chapgame.ui.setState({
+            message: t === null ? null : { text: t, tone: "error" },
+          });
+        }, text);
+      await setMessage(null);
+      const before = await canvasTop();
+      await setMessage("short");
+      expect(await canvasTop()).toBe(before);
+      const long = `${"A refused edit whose explanation runs over several lines of the header. ".repeat(8)}end`;
+      await setMessage(long);
+      const alert = page.getByRole("alert");
+      await poll(async () => (await alert.textContent())?.includes("end")).toBe(true);
+      expect(await canvasTop()).toBe(before);
+      // it hangs below the header's row, over the stage, and its ✕ is on top and works
+      expect((await alert.boundingBox())!.height).toBeGreaterThan(40);
+      await screenshot(page, "14-long-message");
+      const dismiss = page.getByRole("button", { name: "Dismiss message" });
+      const onTop = await dismiss.evaluate((el) => {
+        const r = el.getBoundingClientRect();
+        return el.contains(document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2));
+      });
+      expect(onTop).toBe(true);
+      await dismiss.click();
+      await poll(() => alert.count()).toBe(0);
+      expect(await canvasTop()).toBe(before);
+    } finally {
+      await page.setViewportSize({ width: 1400, height: 900 });
+    }
+  });
+
   it("small windows keep the canvas, the Time slider and every time and speed control usable; nothing overflows sideways", async () => {
     await loadPreset("Billiards break", "ball15");
     try {
