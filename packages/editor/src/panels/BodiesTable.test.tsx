@@ -50,6 +50,38 @@ describe("BodiesTable", () => {
     await waitFor(() => expect(h.editor.doc.actions.length).toBe(2));
     expect(h.editor.doc.actions[1]).toMatchObject({ time: 0.5, type: "updateBody", id: "ball", v: [2, -5] });
   });
+
+  it("a vx typed at once, before the row shows the paused time, keeps the vy of that time (audit: an old vy was committed)", async () => {
+    const h = testEditor();
+    await h.editor.loadScene(
+      {
+        format: "chapgame",
+        version: 1,
+        g: 0,
+        gravity: [0, -10],
+        actions: [{ time: 0, type: "addBody", id: "ball", x: 0, y: 100, r: 1, m: 1, v: [1, 0] }],
+      },
+      { undoable: false },
+    );
+    await settled(h.client);
+    const table = renderTable(h.editor);
+    const cell = (name: string) => within(table).getByLabelText(name);
+    await waitFor(() => expect(cell("ball vy").textContent).toBe("0"));
+    act(() => h.editor.ui.setState({ playing: true, t: 0.75 }));
+    fireEvent.click(cell("ball vx"));
+    const input = within(table).getByRole("textbox", { name: "ball vx" });
+    fireEvent.change(input, { target: { value: "2" } });
+    await act(async () => {
+      fireEvent.keyDown(input, { key: "Enter" });
+    });
+    await waitFor(() => expect(h.editor.doc.actions.length).toBe(2));
+    expect(h.editor.doc.actions[1]).toMatchObject({
+      time: 0.75,
+      type: "updateBody",
+      id: "ball",
+      v: [2, -7.5],
+    });
+  });
 });
 
 describe("BodiesTable messages", () => {

@@ -41,11 +41,24 @@ export function BodiesTable() {
   const selectedId = selection?.kind === "body" ? selection.id : null;
   const [filter, setFilter] = useState("");
 
-  const commit = (id: string, field: Field, vx: number, vy: number) => async (text: string) => {
+  // The velocity at the time the edit is stamped with: the row's values may be a refresh old (up to
+  // PLAYING_INTERVAL_MS after a pause), and a vx edit built from them committed an old vy.
+  const velocityNow = async (id: string, shown: [number, number]): Promise<[number, number]> => {
+    const f = await editor.client.frame(editor.ui.getState().t);
+    const i = f.ids.indexOf(id);
+    return i < 0 ? shown : [f.data[i * FRAME_STRIDE + F_VX]!, f.data[i * FRAME_STRIDE + F_VY]!];
+  };
+
+  const commit = (id: string, field: Field, shownVx: number, shownVy: number) => async (text: string) => {
     const x = parseNumber(text);
     // Named as the engine's refusals are (doc/refusalTerms.ts): the body, then the column.
     const cell = `${id} ${COLUMNS.find((c) => c.field === field)?.title ?? field}`;
     if (x === null) return `${cell}: must be a number`;
+    if (field === "speed" && x < 0) return `${cell}: must be zero or positive`;
+    const [vx, vy] =
+      field === "vx" || field === "vy" || field === "speed"
+        ? await velocityNow(id, [shownVx, shownVy])
+        : [shownVx, shownVy];
     switch (field) {
       case "vx":
         return editor.updateBody(id, { v: [x, vy] });
@@ -53,7 +66,6 @@ export function BodiesTable() {
         return editor.updateBody(id, { v: [vx, x] });
       case "speed": {
         const s = Math.hypot(vx, vy);
-        if (x < 0) return `${cell}: must be zero or positive`;
         return editor.updateBody(id, { v: s > 0 ? [(vx * x) / s, (vy * x) / s] : [x, 0] });
       }
       default:

@@ -1,7 +1,8 @@
 /**
  * The latest Frame for panels, re-rendering at most every `intervalMs` (tables show live values
  * during playback without re-rendering per animation frame). Asks for the frame of the current time
- * itself, so panels work without the canvas (and in tests).
+ * itself, so panels work without the canvas (and in tests). Pausing shows the latest frame at once,
+ * and the next one (the paused time's) within `intervalMs`.
  */
 import { useEffect, useState } from "react";
 import { useEditor } from "../EditorContext";
@@ -34,6 +35,13 @@ export function useLiveFrame(intervalMs = 150): Frame | null {
       client.wantFrame(s.t, motionWindow(s));
     };
     const offUi = ui.subscribe((s, p) => {
+      // Paused: the slow playing refresh ends at once (the table showed values up to
+      // PLAYING_INTERVAL_MS older than the paused time).
+      if (p.playing && !s.playing) {
+        if (timer !== null) clearTimeout(timer);
+        lastShown = 0;
+        show();
+      }
       if (s.t !== p.t) want();
     });
     const offInfo = client.subscribe(want);
