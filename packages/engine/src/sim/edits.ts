@@ -100,6 +100,7 @@ export class Edits extends Placement {
     // Where the body is now, evaluated as xAt/yAt will evaluate it.
     const x = requireFinite("x0", positionAt(t0, x0, vx, restoredLaw.ax, this.now));
     const y = requireFinite("y0", positionAt(t0, y0, vy, restoredLaw.ay, this.now));
+    if (checkOverlap) checkDerivedFields(init);
     this.prepareGridFor(x, y, r);
     if (checkOverlap) this.checkOverlap(x, y, r, -1);
     this.insertBody(id, r, m, mu, t0, x0, y0, vx, vy, x, y);
@@ -134,7 +135,9 @@ export class Edits extends Placement {
 
   /**
    * Change a body at the current time: the fields in `patch` are set, the others keep their current
-   * values (position and velocity as they are now), and its motion restarts from there. A moved or
+   * values (position and velocity as they are now), and its motion restarts from there, unless the
+   * patch changes nothing (empty, or every value equal to the current one): then the motion is kept,
+   * so the future is unchanged bit for bit. A moved or
    * grown body must not overlap anything. Throws ChapgameError naming `id` (no such body) or the
    * refused field; nothing changes then. To strike a body: `updateBody(id, { vx, vy })`.
    */
@@ -153,6 +156,18 @@ export class Edits extends Placement {
     const m = requireMass("m", patch.m ?? b.m[s]);
     const mu = requireFieldRate("mu", patch.mu ?? b.mu[s]);
     checkFrictionGravity("mu", mu, this.gravity);
+    // A patch that changes nothing (empty, or a state passed back as it is) keeps the motion: a
+    // restart from now would round the same path differently and change the future in its last bits.
+    if (
+      x === this.xAt(s, now) &&
+      y === this.yAt(s, now) &&
+      vx === this.vxAt(s, now) &&
+      vy === this.vyAt(s, now) &&
+      r === b.r[s] &&
+      m === b.m[s] &&
+      mu === b.mu[s]
+    )
+      return;
     if (patch.x !== undefined || patch.y !== undefined || patch.r !== undefined) {
       this.prepareGridFor(x, y, r);
       // Name the field that changed (a state passed back whole gives every key).
@@ -217,4 +232,24 @@ export class Edits extends Placement {
       this.setMotion(s as number, now, x as number, y as number, vx as number, vy as number);
     this.markDirty();
   }
+}
+
+/**
+ * What a user's addBodyMotion must also hold (a Timeline's own restarts are exempt): the derived
+ * ax, ay, tStop, when given, equal to what the World derives from the motion (restoredLaw), since
+ * they are not settable: a different value was silently ignored. The place now is not held to the
+ * edit bounds, since a state the World reached itself may lie beyond them (magnitude.test.ts).
+ */
+function checkDerivedFields(init: BodyMotionInit): void {
+  const derived = init as BodyMotionInit & { ax?: unknown; ay?: unknown; tStop?: unknown };
+  for (const [path, given, want] of [
+    ["ax", derived.ax, restoredLaw.ax],
+    ["ay", derived.ay, restoredLaw.ay],
+    ["tStop", derived.tStop, restoredLaw.tEnd],
+  ] as const)
+    if (given !== undefined && given !== want)
+      throw new ChapgameError(
+        path,
+        `is derived from vx, vy, mu and the World's g and gravity (here ${want}), not set: leave it out or pass motion(id)'s own value (got ${String(given)})`,
+      );
 }

@@ -39,6 +39,8 @@ export interface BodyInit {
  * A body given by an exact motion that started at t0 (at or before the World's time), as
  * `World.motion(id)` reports it: p(t) = (x0, y0) + (t - t0) (v + (t - t0) a / 2), where a (friction
  * or the gravity field) follows from v, mu and the World's globals exactly as for any motion.
+ * `motion(id)`'s derived `ax`, `ay` and `tStop` may be passed back; given, each must equal what the
+ * World derives (ChapgameError naming it otherwise: they are not settable).
  */
 export interface BodyMotionInit {
   /** When the motion started: finite and at most the World's time (ChapgameError naming `t0`). */
@@ -144,7 +146,8 @@ export interface Optimizations {
   broadPhase?: boolean | undefined;
   /** Reject pairs whose whole remaining paths (friction: finite segments) cannot meet, before solving. */
   pathBounds?: boolean | undefined;
-  /** Closed-form quadratic when the relative acceleration is zero; off = always the quartic solver. */
+  /** Closed-form quadratic when the relative acceleration is zero; off = always the quartic solver
+   *  (whose roots may differ from the closed form's in the last bits). */
   quadraticFastPath?: boolean | undefined;
   /** Skip pairs where both bodies rest; off = test them too. */
   restingSkip?: boolean | undefined;

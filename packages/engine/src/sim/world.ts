@@ -146,6 +146,9 @@ export class World extends Edits {
     );
   }
 
+  /** advance is running (its callback may edit the World, not advance it again). */
+  private advancing = false;
+
   /** The query range's cache: the next event's time, and `changes` when it was found. */
   private nextEvent = Number.NaN;
   private nextEventBlocked = "";
@@ -234,12 +237,25 @@ export class World extends Edits {
       throw new ChapgameError("maxEvents", "must be a whole number >= 0, or Infinity");
     if (onEvent !== undefined && typeof onEvent !== "function")
       throw new ChapgameError("onEvent", `must be a function called with each event, got ${typeof onEvent}`);
+    if (this.advancing)
+      throw new ChapgameError(
+        "advance",
+        "cannot be called from inside advance's onEvent callback: return from it, then advance again",
+      );
     this.prepare();
     let events = 0;
-    while (events < maxEvents) {
-      const r = this.stepOnce(untilTime, onEvent);
-      if (r < 0) break;
-      events += r;
+    this.advancing = true;
+    try {
+      while (events < maxEvents) {
+        const r = this.stepOnce(untilTime, onEvent);
+        if (r < 0) break;
+        events += r;
+        // The callback edited obstacles or globals: predict again from here, as the next advance
+        // would after an edit between two advances (body edits re-predict their own body at once).
+        if (this.dirty) this.prepare();
+      }
+    } finally {
+      this.advancing = false;
     }
     if (events >= maxEvents && maxEvents !== INF) return { events, reason: "events" };
     if (untilTime !== INF) this.now = untilTime;
