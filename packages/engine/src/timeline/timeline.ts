@@ -21,12 +21,13 @@ import { copyAction, freezeAction, restartKeyframe, sameUntil } from "./actionDa
 import { checkActionList, checkApplyOptions, checkBudget, checkUntil } from "./args.js";
 import { restoreKeyframe } from "./checkpoint.js";
 import { TimelineCore } from "./core.js";
+import { forgetBefore, forgetTime } from "./forget.js";
 import { type Goal, goalFrom, reopenGoals } from "./goals.js";
+import { checkKeptActions, checkKeptApply, forgot } from "./kept.js";
 import type { Keyframe } from "./keyframe.js";
 import { notifyAll } from "./listeners.js";
 import { type CheckedOptions, checkOptions, checkSceneOptions } from "./options.js";
 import { TimelineReader } from "./reader.js";
-import { K_ACTION } from "./records.js";
 import type { ApplyOptions, ProlongResult, TimelineOptions } from "./types.js";
 import { saveCore } from "./undo.js";
 
@@ -147,11 +148,8 @@ export class Timeline extends TimelineReader {
     const c = this.core;
     let insertAt = c.acts.length;
     while (insertAt > 0 && (c.acts[insertAt - 1] as Action).time > a.time) insertAt--;
-    const last = c.records.length - 1;
-    const forward =
-      a.time > c.horizon ||
-      (a.time === c.horizon &&
-        (last < 0 || (c.records.time[last] as number) < a.time || c.records.kind[last] === K_ACTION));
+    const forward = c.appendsAt(a.time);
+    checkKeptApply(c, insertAt, a.time);
     if (!forward && !c.history)
       throw new SceneError("action.time", `must be >= the horizon ${c.horizon} (history is off)`);
     let k = 0;
@@ -211,8 +209,10 @@ export class Timeline extends TimelineReader {
     // (with compute: false, as the CLI runs a file): a file's actions[0] is its first action, not
     // the earliest. The next apply() names them by their index in `actions` again.
     const pathOf = (k: number) => `actions[${order[k]}]`;
+    checkKeptActions(c, sorted, order);
+    // after forgetBefore, keyframe 0 is the start of the kept history: a restart point, not scratch
     const k = c.history ? restartKeyframe(c.acts, c.keyframes, sorted) : 0;
-    if (k > 0) {
+    if (k > 0 || forgot(c)) {
       const undo = saveCore(c, (c.keyframes[k] as Keyframe).record);
       try {
         restoreKeyframe(c, k);
@@ -311,6 +311,21 @@ export class Timeline extends TimelineReader {
     }
     this.changed();
     return res;
+  }
+
+  /** Forget the history before t, 0 <= t <= horizon (RangeError otherwise): the log entries and
+   *  keyframes before the last keyframe at or before t are dropped and their memory returned (a game
+   *  that keeps a few seconds to rewind: `tl.forgetBefore(Math.max(0, tl.horizon - 2))` now and
+   *  then). Returns the start of the kept history (`historyStart`, <= t), from which every read
+   *  and edit gives exactly what it gave before; earlier reads throw RangeError, earlier edits
+   *  SceneError (kept.ts). Log entries keep their numbers (`firstEvent` is the first kept one);
+   *  counts, eventCount, actions and toScene are unchanged. A t before historyStart changes nothing.
+   *  Without history nothing is kept: it returns the horizon and changes nothing. The subscribers
+   *  are told when something was dropped. */
+  forgetBefore(t: number): number {
+    const { start, dropped } = forgetBefore(this.core, forgetTime(t, this.core.horizon));
+    if (dropped) this.changed();
+    return start;
   }
 
   // ---- observing --------------------------------------------------------------------------------
