@@ -8,9 +8,9 @@
  */
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
-import { ChapgameError } from "../scene/errors.js";
 import { dilutedGas } from "../scene/presets.js";
 import type { Action, SceneFile, Vec2 } from "../scene/types.js";
+import { ChapgameError } from "../sim/errors.js";
 import { coreOf, disc, expectSameKept, scene } from "./testSupport.js";
 import { Timeline } from "./timeline.js";
 
@@ -39,7 +39,7 @@ const BOX: Action[] = [
 
 /** Discs on a grid 4 apart in a 20 × 20 box (no friction: they keep colliding), kicked at times. */
 function boxScene(vs: Vec2[], kicks: { at: number; who: number; v: Vec2 }[]): SceneFile {
-  const discs = vs.map((v, i) => disc(`d${i}`, 2 + (i % 4) * 4, 2 + Math.floor(i / 4) * 4, v));
+  const discs = vs.map((v, i) => disc(`d${i}`, 2 + (i % 4) * 4, 2 + Math.floor(i / 4) * 4, [v[0], v[1]]));
   const kicked = kicks.map(
     (k): Action => ({ time: k.at * H, type: "giveVelocity", id: `d${k.who % vs.length}`, v: k.v }),
   );
