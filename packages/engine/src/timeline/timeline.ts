@@ -10,6 +10,8 @@
  * - Reading (stateAt, the log, counts): reader.ts, which this class extends.
  * - Storage: see records.ts (49 bytes per event) and keyframe.ts.
  * - history: false keeps no log and no keyframes (headless runs); then only the horizon can be read.
+ * - forgetBefore(t) drops the start of the history (forget.ts; what the kept part still answers and
+ *   accepts: kept.ts), for a game that keeps only its last seconds to rewind.
  */
 import { checkAction } from "../scene/action.js";
 import { SceneError } from "../scene/errors.js";
@@ -48,6 +50,8 @@ const INF = Number.POSITIVE_INFINITY;
  *   index throw RangeError.
  * - `history: false` keeps no log and no keyframes (headless runs): states can be read only from the
  *   last logged event or action up to the horizon.
+ * - `forgetBefore(t)` drops the history before the last keyframe at or before t (memory returned);
+ *   reads and edits from `historyStart` on are unchanged, earlier ones refused.
  *
  * @example
  * const tl = new Timeline({ g: 0 });
@@ -313,15 +317,12 @@ export class Timeline extends TimelineReader {
     return res;
   }
 
-  /** Forget the history before t, 0 <= t <= horizon (RangeError otherwise): the log entries and
-   *  keyframes before the last keyframe at or before t are dropped and their memory returned (a game
-   *  that keeps a few seconds to rewind: `tl.forgetBefore(Math.max(0, tl.horizon - 2))` now and
-   *  then). Returns the start of the kept history (`historyStart`, <= t), from which every read
-   *  and edit gives exactly what it gave before; earlier reads throw RangeError, earlier edits
-   *  SceneError (kept.ts). Log entries keep their numbers (`firstEvent` is the first kept one);
-   *  counts, eventCount, actions and toScene are unchanged. A t before historyStart changes nothing.
-   *  Without history nothing is kept: it returns the horizon and changes nothing. The subscribers
-   *  are told when something was dropped. */
+  /** Forget the history before the last keyframe at or before t, 0 <= t <= horizon (RangeError
+   *  otherwise), returning its memory (a game rewinding 2 s: `forgetBefore(Math.max(0, horizon - 2))`
+   *  now and then). Returns the kept start, `historyStart` (<= t): reads and edits from there on are
+   *  unchanged, earlier ones refused (kept.ts). Entry numbers, counts, actions and toScene stay. A t
+   *  before historyStart, or no history: nothing changes (then the horizon is returned). The
+   *  subscribers are told when something was dropped. */
   forgetBefore(t: number): number {
     const { start, dropped } = forgetBefore(this.core, forgetTime(t, this.core.horizon));
     if (dropped) this.changed();
