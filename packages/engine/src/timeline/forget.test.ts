@@ -271,6 +271,21 @@ describe("Timeline.forgetBefore", () => {
     expectSameKept(tl, twin, [tl.historyStart + 0.5, tl.horizon - 0.01]);
   });
 
+  it("a prolongSlice under way goes on across a forgetBefore, as without it", () => {
+    const gas = dilutedGas({ n: 40, packing: 0.15, seed: 11 });
+    const tl = Timeline.fromScene(gas);
+    const twin = Timeline.fromScene(gas);
+    twin.prolong({ events: 6000 });
+    let slices = 0;
+    while (!tl.prolongSlice({ events: 6000 }, 700).done) {
+      tl.forgetBefore(tl.horizon);
+      slices++;
+    }
+    expect(slices).toBeGreaterThan(5);
+    expect(tl.firstEvent).toBeGreaterThan(4000);
+    expectSameKept(tl, twin);
+  });
+
   it("checks t: a number in [0, horizon]; before the kept start it changes nothing", () => {
     const tl = box();
     for (const bad of [Number.NaN, -1, 12.5, Number.POSITIVE_INFINITY, "3", undefined])
