@@ -1,5 +1,5 @@
 /**
- * Timeline.forgetBefore (forget.ts, kept.ts): the start of a history dropped, its memory returned,
+ * Timeline.forgetBefore (forget.ts, kept.ts): the start of a history dropped (its memory: forgetMemory.test.ts),
  * and everything from the kept start on read and edited exactly as on a twin that never forgot.
  */
 import { describe, expect, it } from "vitest";
