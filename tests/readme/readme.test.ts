@@ -31,7 +31,7 @@ it("the README usage example runs and prints the digits of pi it promises", () =
 it("the engine package README's examples run and print what the text describes", () => {
   const readme = readFileSync(join(root, "packages", "engine", "README.md"), "utf8");
   const blocks = [...readme.matchAll(/```js\n([\s\S]*?)```/g)].map((m) => m[1] as string);
-  expect(blocks.length).toBe(3);
+  expect(blocks.length).toBe(4);
   const dir = mkdtempSync(join(root, "tests", "readme", ".tmp-"));
   try {
     const run = (code: string, name: string): string => {
@@ -46,7 +46,9 @@ it("the engine package README's examples run and print what the text describes",
     expect(world).toContain("id: 'cue'");
     // the game loop: 600 frames of 1/60 s, the player's inputs, collisions of the player seen
     expect(run(blocks[1] as string, "loop.mjs")).toBe("10 21 true\n");
-    const timeline = run(blocks[2] as string, "timeline.mjs");
+    // a Timeline in a game loop that forgets all but its last seconds
+    expect(run(blocks[2] as string, "forget.mjs")).toBe("8 20 true\n");
+    const timeline = run(blocks[3] as string, "timeline.mjs");
     const lines = timeline.trim().split("\n");
     expect(Number(lines[0]?.split(" ")[0])).toBeGreaterThan(0);
     expect(timeline).toContain("id: 'a'");

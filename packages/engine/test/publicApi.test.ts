@@ -67,6 +67,7 @@ const TIMELINE = [
   "eventRange",
   "counts",
   "historyBytes",
+  "forgetBefore",
   "subscribe",
   "getSnapshot",
 ];
@@ -94,5 +95,6 @@ describe("the public API", () => {
     expect(TIMELINE.filter((m) => typeof t[m] !== "function")).toEqual([]);
     expect(typeof api.Timeline.fromScene).toBe("function");
     expect([tl.horizon, tl.eventCount, tl.actions.length]).toEqual([0, 0, 0]);
+    expect([tl.historyStart, tl.firstEvent]).toEqual([0, 0]);
   });
 });

@@ -66,15 +66,18 @@ export function timeArg(method: string, name: string, t: number): number {
   return t;
 }
 
-/** stateAt's time: a number in [0, horizon] (-0 read as 0); else a RangeError. */
-export function stateTime(t: unknown, horizon: number): number {
-  if (typeof t !== "number" || !(t >= 0 && t <= horizon)) {
+/** stateAt's time: a number in [start, horizon] (-0 read as 0; start is the start of the kept
+ *  history, 0 until forgetBefore); else a RangeError. */
+export function stateTime(t: unknown, horizon: number, start = 0): number {
+  if (typeof t !== "number" || !(t >= start && t <= horizon)) {
     // Beyond the horizon is not computed yet, even when nothing more will happen (prolong said idle).
     const hint =
       typeof t === "number" && t > horizon && t < Number.POSITIVE_INFINITY
         ? `: the history is computed up to ${horizon}, call prolongTo(${t}) first`
-        : "";
-    throw new RangeError(`stateAt: t must be a number in [0, ${horizon}], got ${show(t)}${hint}`);
+        : typeof t === "number" && t >= 0 && t < start
+          ? ": the history before it was forgotten (forgetBefore)"
+          : "";
+    throw new RangeError(`stateAt: t must be a number in [${start}, ${horizon}], got ${show(t)}${hint}`);
   }
   return t === 0 ? 0 : t;
 }

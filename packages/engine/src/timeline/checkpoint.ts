@@ -85,5 +85,5 @@ export function restoreKeyframe(c: TimelineCore, k: number): void {
   c.atTimeLimit = kf.atTimeLimit;
   c.groupOpen = kf.afterActions;
   c.idle = false;
-  c.lastLogged = kf.record > 0 ? (c.records.time[kf.record - 1] as number) : 0;
+  c.lastLogged = kf.record > 0 ? (c.records.time[kf.record - 1] as number) : c.forgotten.lastTime;
 }

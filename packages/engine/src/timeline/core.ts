@@ -18,7 +18,7 @@ import { recordsPerKeyframe, takeKeyframe } from "./checkpoint.js";
 import { type Goal, satisfied } from "./goals.js";
 import type { Keyframe } from "./keyframe.js";
 import { MotionTable } from "./motionTable.js";
-import { K_BODY_BODY, K_BODY_LINE, K_BODY_POINT, K_STOP, Records } from "./records.js";
+import { K_ACTION, K_BODY_BODY, K_BODY_LINE, K_BODY_POINT, K_STOP, Records } from "./records.js";
 import type { TimelineCounts } from "./types.js";
 
 const INF = Number.POSITIVE_INFINITY;
@@ -75,6 +75,9 @@ export class TimelineCore {
   /** Counts the changes to records or keyframes other than appends (a cut, a restore, a replaced
    *  keyframe): a reader that keeps a replay position (logCursor.ts) starts again when it moves. */
   rewrites = 0;
+  /** What forgetBefore dropped (forget.ts): how many records (record i of `records` is log entry
+   *  `records + i`), and the time and kind of the last of them (kind -1: none). */
+  forgotten = { records: 0, lastTime: 0, lastKind: -1 };
   /** live body numbers sorted by id (cache; null after an add or remove) */
   sortedLive: Uint32Array | null = null;
   private readonly onEvent: (e: WorldEvent) => void;
@@ -92,6 +95,17 @@ export class TimelineCore {
 
   get horizon(): number {
     return this.world.time;
+  }
+
+  /** Whether an action at time t is applied by computing forward from the horizon (no restore): t
+   *  after the horizon, or at it when the last entry logged is before t or is an action. */
+  appendsAt(t: number): boolean {
+    if (t !== this.horizon) return t > this.horizon;
+    const r = this.records;
+    const last = r.length - 1;
+    const kind = last >= 0 ? (r.kind[last] as number) : this.forgotten.lastKind;
+    const time = last >= 0 ? (r.time[last] as number) : this.forgotten.lastTime;
+    return kind < 0 || time < t || kind === K_ACTION;
   }
 
   // ---- recording ------------------------------------------------------------------------------

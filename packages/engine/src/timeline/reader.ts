@@ -4,10 +4,14 @@
  * KEYFRAME_RECORDS_PER_BODY × bodies) records replayed, one closed-form evaluation per body, so its
  * cost does not grow with the length of the history), the event log by time or by index, counts
  * and storage. Timeline extends it with the changes (apply, setActions, prolong) and observers.
+ * After forgetBefore the kept history starts at `historyStart` (log entry `firstEvent`); entries keep
+ * their global numbers (core.records holds entries firstEvent…): what is refused then is kept.ts.
  */
 import type { Action } from "../scene/types.js";
 import { eventIndex, indexRange, stateTime, timeArg } from "./args.js";
 import type { TimelineCore } from "./core.js";
+import { historyStart } from "./forget.js";
+import { keptIndex, keptTime } from "./kept.js";
 import { keyframeBytes } from "./keyframe.js";
 import { LogCursor } from "./logCursor.js";
 import { MotionTable } from "./motionTable.js";
@@ -43,11 +47,24 @@ export class TimelineReader {
     return this.core.history;
   }
 
-  /** The exact state at the absolute time t, 0 <= t <= horizon (without history: from the last
-   *  logged event or action on). Any other t (NaN, a non-number) throws RangeError. */
+  /** Start of the kept history: 0 until `forgetBefore` drops the start of it, then the time of the
+   *  keyframe it was cut at. Reads before it throw RangeError; edits before it SceneError. */
+  get historyStart(): number {
+    return historyStart(this.core);
+  }
+
+  /** Index of the first log entry still readable: 0 until `forgetBefore`. Entries keep their
+   *  numbers; `event(i)` for i < firstEvent throws RangeError. */
+  get firstEvent(): number {
+    return this.core.forgotten.records;
+  }
+
+  /** The exact state at the absolute time t, historyStart <= t <= horizon (historyStart is 0 until
+   *  forgetBefore; without history: from the last logged event or action on). Any other t (NaN, a
+   *  non-number) throws RangeError. */
   stateAt(t: number): SceneState {
     const c = this.core;
-    const at = stateTime(t, c.horizon);
+    const at = stateTime(t, c.horizon, historyStart(c));
     return c.history ? stateAt(c, at, this.scratch) : headlessStateAt(c, at);
   }
 
@@ -59,63 +76,70 @@ export class TimelineReader {
   /** Time of the first LOGGED entry (collision, stop or action) strictly after t, or null when there
    *  is none (always null without history). A lookup in the computed history, not a prediction:
    *  unlike `World.nextEventTime()`, it takes a time, never looks past the horizon (prolong first)
-   *  and gives null, not +Infinity. t may be ±Infinity; NaN or a non-number throws RangeError. */
+   *  and gives null, not +Infinity. t may be ±Infinity; NaN or a non-number throws RangeError, and
+   *  so does a t before historyStart once the start was forgotten (forgetBefore). */
   nextEventTime(t: number): number | null {
     const r = this.core.records;
-    const i = r.upperBound(timeArg("nextEventTime", "t", t));
+    const i = r.upperBound(keptTime(this.core, "nextEventTime", "t", timeArg("nextEventTime", "t", t)));
     return i < r.length ? (r.time[i] as number) : null;
   }
 
   /** Time of the last LOGGED entry (collision, stop or action) strictly before t, or null when there
-   *  is none. t may be ±Infinity; NaN or a non-number throws RangeError. */
+   *  is none. t may be ±Infinity; NaN or a non-number throws RangeError. After forgetBefore it
+   *  answers from the kept log: null when no entry from `firstEvent` on lies before t. */
   prevEventTime(t: number): number | null {
     const r = this.core.records;
     const i = r.lowerBound(timeArg("prevEventTime", "t", t)) - 1;
     return i >= 0 ? (r.time[i] as number) : null;
   }
 
-  /** Number of logged events (collisions, stops and actions); 0 without history. */
+  /** Number of logged events (collisions, stops and actions) ever, forgotten ones included (the
+   *  kept ones are firstEvent…eventCount - 1); 0 without history. */
   get eventCount(): number {
-    return this.core.records.length;
+    return this.core.forgotten.records + this.core.records.length;
   }
 
-  /** The i-th logged entry in time order, 0 <= i < eventCount (otherwise RangeError). */
+  /** The i-th logged entry in time order, firstEvent <= i < eventCount (otherwise RangeError). */
   event(i: number): LogEvent {
-    eventIndex("event", i, this.eventCount);
-    return this.cursor.read(this.core, i, i + 1)[0] as LogEvent;
+    const k = keptIndex(this.core, "event", eventIndex("event", i, this.eventCount));
+    return this.cursor.read(this.core, k, k + 1)[0] as LogEvent;
   }
 
   /** The action the i-th logged event applied (frozen, the object in `actions`), or null when that
    *  event is a collision or a stop: what a log entry of type "action" did. RangeError for an i
-   *  outside [0, eventCount). */
+   *  outside [firstEvent, eventCount). */
   eventAction(i: number): Action | null {
-    eventIndex("eventAction", i, this.eventCount);
+    const k = keptIndex(this.core, "eventAction", eventIndex("eventAction", i, this.eventCount));
     const r = this.core.records;
-    return r.kind[i] === K_ACTION ? (this.core.acts[r.a[i] as number] as Action) : null;
+    return r.kind[k] === K_ACTION ? (this.core.acts[r.a[k] as number] as Action) : null;
   }
 
   /** Logged entries with t0 <= time <= t1 (absolute times; ±Infinity allowed), in order. NaN or a
-   *  non-number throws RangeError. */
+   *  non-number throws RangeError, and so does a t0 before historyStart once the start was
+   *  forgotten. From t0 = historyStart: the entries from firstEvent on (entries at that instant
+   *  logged before the cut were forgotten). */
   eventsBetween(t0: number, t1: number): LogEvent[] {
     const r = this.core.records;
-    const from = r.lowerBound(timeArg("eventsBetween", "t0", t0));
+    const from = r.lowerBound(keptTime(this.core, "eventsBetween", "t0", timeArg("eventsBetween", "t0", t0)));
     return this.cursor.read(this.core, from, r.upperBound(timeArg("eventsBetween", "t1", t1)));
   }
 
   /** Logged events with index in [start, end) (end clamped to eventCount; Infinity = to the end), in
    *  order: the log in pieces, to write a long one out without holding all of it. Indices must be
-   *  whole numbers >= 0 (RangeError). */
+   *  whole numbers >= 0 (RangeError); a start below firstEvent throws RangeError. */
   eventRange(start: number, end: number): LogEvent[] {
     const [from, to] = indexRange(start, end);
-    return this.cursor.read(this.core, from, Math.min(to, this.eventCount));
+    const k = keptIndex(this.core, "eventRange", from);
+    return this.cursor.read(this.core, k, Math.min(to, this.eventCount) - this.core.forgotten.records);
   }
 
-  /** Collisions and stops by kind, and actions applied, over the computed history. */
+  /** Collisions and stops by kind, and actions applied, over the computed history: totals since
+   *  time 0, what forgetBefore dropped included. */
   counts(): TimelineCounts {
     return { ...this.core.counts };
   }
 
-  /** Bytes of stored history: records and keyframes. */
+  /** Bytes of stored history: records and keyframes (the kept ones, after forgetBefore). */
   historyBytes(): number {
     const c = this.core;
     let bytes = c.records.bytes();

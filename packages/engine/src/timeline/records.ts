@@ -7,6 +7,8 @@
  * stored: they follow from the previous motion (closed form). Contact point, normal and impulse are
  * derived on demand from the motions before and after (see logEvents.ts).
  * Truncation keeps the arrays (it only moves `length`), so recomputing after a cut reuses memory.
+ * dropBefore(n) forgets the first n records (Timeline.forgetBefore, forget.ts): the rest move to the
+ * front, and the arrays shrink when at most a quarter of them would be used.
  *
  * Why this layout (rather than per-body motion segments): a segment per affected body would cost
  * 40 bytes per body per event (t0, x0, y0, vx, vy), 80 for a collision, over the 64-byte budget; and
@@ -28,6 +30,8 @@ export const KIND_NAMES = ["bodyBody", "bodyLine", "bodyPoint", "stop", "action"
 
 /** Bytes of one record. */
 export const RECORD_BYTES = 8 + 1 + 4 + 4 + 4 * 8;
+/** Capacity of a new log, and the least dropBefore shrinks to. */
+const MIN_CAPACITY = 1024;
 
 export class Records {
   length = 0;
@@ -38,7 +42,7 @@ export class Records {
   /** new velocities: [vax, vay, vbx, vby] per record */
   vel: Float64Array;
 
-  constructor(capacity = 1024) {
+  constructor(capacity = MIN_CAPACITY) {
     this.time = new Float64Array(capacity);
     this.kind = new Uint8Array(capacity);
     this.a = new Uint32Array(capacity);
@@ -90,6 +94,35 @@ export class Records {
     this.vel[o + 1] = vay;
     this.vel[o + 2] = vbx;
     this.vel[o + 3] = vby;
+  }
+
+  /** Drop records [0, n): record n becomes record 0. When what is left fills at most a quarter of
+   *  the capacity, the arrays are reallocated at twice its size (at least MIN_CAPACITY), so a long
+   *  run that forgets as it goes does not hold its peak for ever. */
+  dropBefore(n: number): void {
+    const left = this.length - n;
+    const end = this.length;
+    if (this.capacity > MIN_CAPACITY && 4 * left <= this.capacity) {
+      const old = { time: this.time, kind: this.kind, a: this.a, b: this.b, vel: this.vel };
+      const cap = Math.max(MIN_CAPACITY, 2 * left);
+      this.time = new Float64Array(cap);
+      this.kind = new Uint8Array(cap);
+      this.a = new Uint32Array(cap);
+      this.b = new Uint32Array(cap);
+      this.vel = new Float64Array(cap * 4);
+      this.time.set(old.time.subarray(n, end));
+      this.kind.set(old.kind.subarray(n, end));
+      this.a.set(old.a.subarray(n, end));
+      this.b.set(old.b.subarray(n, end));
+      this.vel.set(old.vel.subarray(4 * n, 4 * end));
+    } else {
+      this.time.copyWithin(0, n, end);
+      this.kind.copyWithin(0, n, end);
+      this.a.copyWithin(0, n, end);
+      this.b.copyWithin(0, n, end);
+      this.vel.copyWithin(0, 4 * n, 4 * end);
+    }
+    this.length = left;
   }
 
   /** Bytes of the records held (not of the spare capacity). */

@@ -1,8 +1,11 @@
 /**
- * Helpers of the timeline tests (not built, not published): small scenes and a fingerprint of
- * everything a timeline shows, for "nothing changed" checks.
+ * Helpers of the timeline tests (not built, not published): small scenes, a fingerprint of
+ * everything a timeline shows, for "nothing changed" checks, and the comparison of a timeline whose
+ * start was forgotten with a twin that never forgot.
  */
+import { expect } from "vitest";
 import type { Action, SceneFile } from "../scene/types.js";
+import type { TimelineCore } from "./core.js";
 import { Timeline } from "./timeline.js";
 
 export const scene = (actions: Action[], g = 9.81): SceneFile => ({
@@ -47,4 +50,43 @@ export function wallAndHeavyDisc(): Timeline {
   tl.apply({ time: 0, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 100, v: [-1, 0] });
   tl.prolong({ time: 20 });
   return tl;
+}
+
+/** The core behind a timeline (tests look at its storage). */
+export function coreOf(tl: Timeline): TimelineCore {
+  return (tl as unknown as { core: TimelineCore }).core;
+}
+
+/**
+ * Expect `tl` (whose start may be forgotten) to show what `twin` (the same scene and edits, nothing
+ * forgotten) shows from tl.historyStart on, bit for bit: states at `times` (and at the start and the
+ * horizon), the log from firstEvent on (by index and by time), the event lookups, totals and scene.
+ */
+export function expectSameKept(tl: Timeline, twin: Timeline, times: readonly number[] = []): void {
+  const start = tl.historyStart;
+  const h = tl.horizon;
+  expect([h, tl.eventCount, tl.counts(), tl.toScene(), tl.actions]).toStrictEqual([
+    twin.horizon,
+    twin.eventCount,
+    twin.counts(),
+    twin.toScene(),
+    twin.actions,
+  ]);
+  for (const t of [start, ...times, h]) {
+    expect(tl.stateAt(t)).toStrictEqual(twin.stateAt(t));
+    expect(tl.nextEventTime(t)).toBe(twin.nextEventTime(t));
+    const prev = tl.prevEventTime(t);
+    if (prev === null) expect(twin.prevEventTime(t) ?? start).toBeLessThanOrEqual(start);
+    else expect(prev).toBe(twin.prevEventTime(t));
+  }
+  const first = tl.firstEvent;
+  expect(tl.eventRange(first, Number.POSITIVE_INFINITY)).toStrictEqual(
+    twin.eventRange(first, Number.POSITIVE_INFINITY),
+  );
+  // from the start by time: the twin's entries at the start logged before the cut are not kept
+  const kept = tl.eventsBetween(start, h);
+  const all = twin.eventsBetween(start, h);
+  const skipped = all.slice(0, all.length - kept.length);
+  expect(skipped.every((e) => e.time === start)).toBe(true);
+  expect(kept).toStrictEqual(all.slice(skipped.length));
 }

@@ -10,6 +10,8 @@
  * - Reading (stateAt, the log, counts): reader.ts, which this class extends.
  * - Storage: see records.ts (49 bytes per event) and keyframe.ts.
  * - history: false keeps no log and no keyframes (headless runs); then only the horizon can be read.
+ * - forgetBefore(t) drops the start of the history (forget.ts; what the kept part still answers and
+ *   accepts: kept.ts), for a game that keeps only its last seconds to rewind.
  */
 import { checkAction } from "../scene/action.js";
 import { SceneError } from "../scene/errors.js";
@@ -21,12 +23,13 @@ import { copyAction, freezeAction, restartKeyframe, sameUntil } from "./actionDa
 import { checkActionList, checkApplyOptions, checkBudget, checkUntil } from "./args.js";
 import { restoreKeyframe } from "./checkpoint.js";
 import { TimelineCore } from "./core.js";
+import { forgetBefore, forgetTime } from "./forget.js";
 import { type Goal, goalFrom, reopenGoals } from "./goals.js";
+import { checkKeptActions, checkKeptApply, forgot } from "./kept.js";
 import type { Keyframe } from "./keyframe.js";
 import { notifyAll } from "./listeners.js";
 import { type CheckedOptions, checkOptions, checkSceneOptions } from "./options.js";
 import { TimelineReader } from "./reader.js";
-import { K_ACTION } from "./records.js";
 import type { ApplyOptions, ProlongResult, TimelineOptions } from "./types.js";
 import { saveCore } from "./undo.js";
 
@@ -47,6 +50,8 @@ const INF = Number.POSITIVE_INFINITY;
  *   index throw RangeError.
  * - `history: false` keeps no log and no keyframes (headless runs): states can be read only from the
  *   last logged event or action up to the horizon.
+ * - `forgetBefore(t)` drops the history before the last keyframe at or before t (memory returned);
+ *   reads and edits from `historyStart` on are unchanged, earlier ones refused.
  *
  * @example
  * const tl = new Timeline({ g: 0 });
@@ -147,11 +152,8 @@ export class Timeline extends TimelineReader {
     const c = this.core;
     let insertAt = c.acts.length;
     while (insertAt > 0 && (c.acts[insertAt - 1] as Action).time > a.time) insertAt--;
-    const last = c.records.length - 1;
-    const forward =
-      a.time > c.horizon ||
-      (a.time === c.horizon &&
-        (last < 0 || (c.records.time[last] as number) < a.time || c.records.kind[last] === K_ACTION));
+    const forward = c.appendsAt(a.time);
+    checkKeptApply(c, insertAt, a.time);
     if (!forward && !c.history)
       throw new SceneError("action.time", `must be >= the horizon ${c.horizon} (history is off)`);
     let k = 0;
@@ -211,8 +213,10 @@ export class Timeline extends TimelineReader {
     // (with compute: false, as the CLI runs a file): a file's actions[0] is its first action, not
     // the earliest. The next apply() names them by their index in `actions` again.
     const pathOf = (k: number) => `actions[${order[k]}]`;
+    checkKeptActions(c, sorted, order);
+    // after forgetBefore, keyframe 0 is the start of the kept history: a restart point, not scratch
     const k = c.history ? restartKeyframe(c.acts, c.keyframes, sorted) : 0;
-    if (k > 0) {
+    if (k > 0 || forgot(c)) {
       const undo = saveCore(c, (c.keyframes[k] as Keyframe).record);
       try {
         restoreKeyframe(c, k);
@@ -311,6 +315,18 @@ export class Timeline extends TimelineReader {
     }
     this.changed();
     return res;
+  }
+
+  /** Forget the history before the last keyframe at or before t, 0 <= t <= horizon (RangeError
+   *  otherwise), returning its memory (a game rewinding 2 s: `forgetBefore(Math.max(0, horizon - 2))`
+   *  now and then). Returns the kept start, `historyStart` (<= t): reads and edits from there on are
+   *  unchanged, earlier ones refused (kept.ts). Entry numbers, counts, actions and toScene stay. A t
+   *  before historyStart, or no history: nothing changes (then the horizon is returned). The
+   *  subscribers are told when something was dropped. */
+  forgetBefore(t: number): number {
+    const { start, dropped } = forgetBefore(this.core, forgetTime(t, this.core.horizon));
+    if (dropped) this.changed();
+    return start;
   }
 
   // ---- observing --------------------------------------------------------------------------------

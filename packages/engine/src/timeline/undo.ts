@@ -2,7 +2,9 @@
  * saveCore(core, cutRecord): everything needed to undo the next operation on a TimelineCore, which
  * may cut the records back to `cutRecord` (records.length when it only appends). Returns the undo.
  * Costs O(bodies + records after cutRecord): apply() and setActions() use it to change nothing when
- * they throw.
+ * they throw. It holds records by their index: forgetBefore (which renumbers them) must not run
+ * between saveCore and its undo; it never does (no Timeline method calls it inside an edit), and the
+ * undo refuses to run if it did rather than restore forgotten records inconsistently.
  */
 import type { TimelineCore } from "./core.js";
 import { MotionTable } from "./motionTable.js";
@@ -31,8 +33,11 @@ export function saveCore(c: TimelineCore, cutRecord: number): () => void {
     lastLogged: c.lastLogged,
     sortedLive: c.sortedLive,
     pathOf: c.pathOf,
+    forgotten: c.forgotten.records,
   };
   return () => {
+    if (c.forgotten.records !== saved.forgotten)
+      throw new Error("timeline: the history was forgotten during an edit; its undo cannot restore it");
     c.world = saved.world;
     c.acts = saved.acts;
     c.actEvents = saved.actEvents;
