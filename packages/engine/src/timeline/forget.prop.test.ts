@@ -185,7 +185,9 @@ describe("Timeline.forgetBefore on random scenes", () => {
         fc.integer({ min: 30, max: 80 }),
         fc.integer({ min: 1, max: 1000 }),
         fc.array(kick, { maxLength: 4 }),
-        fc.array(num(0, 1), { minLength: 1, maxLength: 2 }),
+        // past the first keyframe (about a quarter of the 4,000 events) in most runs: fast-check
+        // favours the ends of a range, and cuts at 0 forgot nothing in 4 of 5 runs (seed 18002)
+        fc.array(num(0.35, 1), { minLength: 1, maxLength: 2 }),
         fc.array(num(0, 1), { maxLength: 3 }),
         kick,
         (n, gasSeed, kicks, cuts, reads, edit) => {
