@@ -166,6 +166,19 @@ describe("Timeline.eventDetail", () => {
     expect(at("action").bodies).toEqual([]);
   });
 
+  it("eventIndexAt(t): the index of the first entry at or after t, for an entry found by its time", () => {
+    const tl = Timeline.fromScene(newtonsCradle());
+    tl.prolongTo(2);
+    const t = tl.nextEventTime(0) as number; // the cradle's instant: five collisions
+    const i = tl.eventIndexAt(t);
+    expect(tl.event(i - 1).time).toBeLessThan(t);
+    expect(tl.eventsBetween(t, t)).toEqual([0, 1, 2, 3, 4].map((k) => tl.event(i + k)));
+    expect(tl.eventIndexAt(Number.NEGATIVE_INFINITY)).toBe(0);
+    expect(tl.eventIndexAt(0)).toBe(0);
+    expect(tl.eventIndexAt(Number.POSITIVE_INFINITY)).toBe(tl.eventCount);
+    expect(() => tl.eventIndexAt(Number.NaN)).toThrow(RangeError);
+  });
+
   it("refuses a bad index like event(i), naming eventDetail", () => {
     const tl = Timeline.fromScene(newtonsCradle());
     tl.prolongTo(2);
@@ -185,6 +198,8 @@ describe("Timeline.eventDetail", () => {
     tl.forgetBefore(tl.event(2500).time);
     expect(tl.firstEvent).toBeGreaterThan(0);
     expect(() => tl.eventDetail(tl.firstEvent - 1)).toThrow(/eventDetail: event \d+ was forgotten/);
+    expect(() => tl.eventIndexAt(tl.historyStart - 1e-9)).toThrow(/eventIndexAt: t must be >= /);
+    expect(tl.eventIndexAt(tl.historyStart)).toBe(tl.firstEvent);
     for (const i of [tl.firstEvent, tl.eventCount - 1])
       expect(tl.eventDetail(i)).toEqual(twin.eventDetail(i));
   });

@@ -99,6 +99,16 @@ export class TimelineReader {
     return this.core.forgotten.records + this.core.records.length;
   }
 
+  /** Index of the first logged entry at or after the absolute time t (eventCount when none): the
+   *  number to give event(i) or eventDetail(i) for an entry found by its time (eventsBetween,
+   *  nextEventTime). O(log n). t may be ±Infinity; NaN or a non-number throws RangeError, and so
+   *  does a t before historyStart once the start was forgotten. */
+  eventIndexAt(t: number): number {
+    const c = this.core;
+    const at = keptTime(c, "eventIndexAt", "t", timeArg("eventIndexAt", "t", t));
+    return c.forgotten.records + c.records.lowerBound(at);
+  }
+
   /** The i-th logged entry in time order, firstEvent <= i < eventCount (otherwise RangeError). */
   event(i: number): LogEvent {
     const k = keptIndex(this.core, "event", eventIndex("event", i, this.eventCount));
