@@ -35,10 +35,14 @@ export function refOf(e: LogEvent): EventRef {
 export function findEventDetail(tl: Log, ref: EventRef): EventDetail | null {
   if (!(typeof ref.time === "number" && Number.isFinite(ref.time))) return null;
   const n = tl.eventCount;
+  // A collision or a stop is read with its detail at once (the walk goes on forwards; reading the
+  // entry, then its detail, would replay from a keyframe twice); an action's detail loads a keyframe,
+  // so the actions of a group are only read until the one named.
+  const action = ref.type === "action";
   for (let i = tl.eventIndexAt(ref.time); i < n; i++) {
-    const e = tl.event(i);
+    const e = action ? tl.event(i) : tl.eventDetail(i);
     if (e.time !== ref.time) return null;
-    if (matches(e, ref)) return tl.eventDetail(i);
+    if (matches(e, ref)) return action ? tl.eventDetail(i) : (e as EventDetail);
   }
   return null;
 }
