@@ -1,11 +1,12 @@
 /**
  * The editor's layout: header (scene actions: Undo, Redo, Save file, Load file; presets, message,
- * newer work in another tab), canvas with its toolbar, side panels, time bar,
- * and the drop indicator (a scene file dropped anywhere opens).
+ * newer work in another tab), canvas with its toolbar, side panels (the Event log, then the details
+ * of its selected entry), time bar, and the drop indicator (a scene file dropped anywhere opens).
  */
 import { SceneCanvas } from "./canvas/SceneCanvas";
 import { BodiesTable } from "./panels/BodiesTable";
 import { CalculationPanel } from "./panels/CalculationPanel";
+import { EventDetails } from "./panels/EventDetails";
 import { EventLog } from "./panels/EventLog";
 import { FileDrop } from "./panels/FileDrop";
 import { GlobalsPanel } from "./panels/GlobalsPanel";
@@ -46,6 +47,7 @@ export function App() {
         <PointsTable />
         <GlobalsPanel />
         <EventLog />
+        <EventDetails />
         <StatsPanel />
         <StatePanel />
       </aside>

@@ -5,6 +5,8 @@
 export type {
   Action,
   BodyState,
+  EventBody,
+  EventDetail,
   EventKind,
   LineKind,
   LineState,

@@ -1,7 +1,8 @@
 /**
  * The Event log: the events around the current time (time, kind, participants; an action entry says
  * what the action did). Clicking an entry
- * jumps there, highlights its participants and selects one (selectionOf); a body filter keeps only
+ * jumps there, highlights its participants, selects one (selectionOf) and makes it the selected event
+ * (shown by EventDetails); a body filter keeps only
  * that body's events. An action entry's ✕ removes that action from the scene once confirmed by a
  * second press (RemoveActionButton); when the ✕ had the keyboard focus, the focus then goes to the
  * ✕ of the next action entry shown, else the previous one, else the log's table (removeFocus.ts),
@@ -14,6 +15,7 @@ import { useEffect, useRef, useState } from "react";
 import { kindOfType } from "../doc/rename";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { LogEvent } from "../engineTypes";
+import { refOf } from "../remote/eventDetail";
 import type { EventPage, PageEvent } from "../remote/protocol";
 import type { Selection } from "../store/uiStore";
 import { formatNumber } from "./EditableCell";
@@ -209,6 +211,7 @@ export function EventLog() {
                       playing: false,
                       highlight: highlightOf(e),
                       selection: selectionOf(e),
+                      selectedEvent: refOf(e),
                     })
                   }
                   onKeyDown={(ev) => {

@@ -7,10 +7,11 @@
  *   last wanted time (latest wins), so a 60 Hz canvas never queues work in the worker.
  */
 import { drawStats } from "../canvas/drawStats";
-import type { Action, LogEvent, SceneFile, Until } from "../engineTypes";
+import type { Action, EventDetail, LogEvent, SceneFile, Until } from "../engineTypes";
 import { EditError } from "./errors";
 import type {
   EventPage,
+  EventRef,
   Frame,
   HostMessage,
   Port,
@@ -183,6 +184,11 @@ export class TimelineClient {
       ...(lo === undefined ? {} : { lo }),
       ...(hi === undefined ? {} : { hi }),
     });
+  }
+  /** The detail of the log entry `ref` names (before/after states of its bodies), or null when the
+   *  current history holds no such entry (protocol.ts `eventDetail`). */
+  eventDetail(ref: EventRef): Promise<EventDetail | null> {
+    return this.request({ op: "eventDetail", ref });
   }
   series(n: number): Promise<SeriesPoint[]> {
     return this.request({ op: "series", n });

@@ -9,6 +9,7 @@
  */
 import type { Action, SceneFile } from "../engineTypes";
 import { errorInfo } from "./errors";
+import { findEventDetail } from "./eventDetail";
 import { eventPage, eventTicks } from "./eventQueries";
 import { HostCompute, type HostEnv } from "./hostCompute";
 import { packFrame } from "./packFrame";
@@ -133,6 +134,8 @@ export class TimelineHost extends HostCompute {
         return eventPage(this.tl, r.t, r.before, r.after, r.body);
       case "ticks":
         return eventTicks(this.tl, r.n, r.lo, r.hi);
+      case "eventDetail":
+        return findEventDetail(this.tl, r.ref);
       case "series": {
         const tl = this.tl;
         const small =

@@ -136,7 +136,10 @@ export type Request =
   | { op: "events"; t: number; before: number; after: number; body: string | null }
   /** Event ticks over n bins of [lo, hi] (by default [0, horizon]; eventQueries.ts eventTicks). */
   | { op: "ticks"; n: number; lo?: number; hi?: number }
-  | { op: "series"; n: number };
+  | { op: "series"; n: number }
+  /** The detail of the log entry `ref` names (eventDetail.ts): an EventDetail, or null when the
+   *  current history holds no such entry (an edit recomputed it away). */
+  | { op: "eventDetail"; ref: EventRef };
 
 export type RequestMessage = Request & { id: number };
 
@@ -148,6 +151,21 @@ export const UNDONE_DURING_CHECK = "Undone while the actions after it were being
  * index in the timeline's action list (the scene's `actions`, in time order) when the page was read.
  */
 export type PageEvent = LogEvent & { actionIndex?: number };
+
+/**
+ * A log entry named by what it shows (the Event log's rows carry no index, and an index would name
+ * another entry once an edit recomputes the history): its time, kind, participants and, for an
+ * action entry, the action's type. Entries alike in all of these at one time have the same detail
+ * (an action's before/after spans its instant's whole group of actions), so the first one stands
+ * for them.
+ */
+export interface EventRef {
+  time: number;
+  type: LogEvent["type"];
+  ids: string[];
+  /** An action entry's action type; absent for a collision or a stop. */
+  action?: NonNullable<LogEvent["action"]>;
+}
 
 export interface EventPage {
   /** Index of the first returned event in the log, or -1 when not known (the log is read by time). */

@@ -2,7 +2,7 @@
  * The part of the engine's Timeline the editor's worker uses (docs/architecture.md), so the host can
  * be tested with the real Timeline and typed without depending on its private members.
  */
-import type { Action, Counts, LogEvent, SceneFile, SceneState, Until } from "../engineTypes";
+import type { Action, Counts, EventDetail, LogEvent, SceneFile, SceneState, Until } from "../engineTypes";
 
 export interface TimelineLike {
   readonly actions: readonly Action[];
@@ -15,6 +15,8 @@ export interface TimelineLike {
   nextEventTime(t: number): number | null;
   prevEventTime(t: number): number | null;
   event(i: number): LogEvent;
+  eventDetail(i: number): EventDetail;
+  eventIndexAt(t: number): number;
   eventsBetween(t0: number, t1: number): LogEvent[];
   counts(): Counts;
   historyBytes(): number;

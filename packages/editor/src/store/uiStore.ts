@@ -2,6 +2,7 @@
  * The editor's UI state (never the scene: the Timeline in the worker is the one source of truth for
  * that). Time, speed, selection, tool, view, the Time slider's zoom and settings live here; none of them is an undo step.
  */
+import type { EventRef } from "../remote/protocol";
 import { createStore, type Store } from "./createStore";
 import type { TimeWindow } from "./timeWindow";
 
@@ -50,6 +51,9 @@ export interface UiState {
   message: Message | null;
   newerWork: NewerWork | null;
   eventFilter: string;
+  /** The Event log entry last clicked (or entered), whose detail the Event details panel shows;
+   *  null until one is. Escape or a click elsewhere leave it. */
+  selectedEvent: EventRef | null;
   /** The part of the history the Time slider spans (null: all of it; timeWindow.ts). */
   timeWindow: TimeWindow | null;
 }
@@ -68,6 +72,7 @@ export const initialUiState: UiState = {
   message: null,
   newerWork: null,
   eventFilter: "",
+  selectedEvent: null,
   timeWindow: null,
 };
 

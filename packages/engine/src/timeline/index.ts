@@ -2,6 +2,8 @@
 export { Timeline } from "./timeline.js";
 export type {
   ApplyOptions,
+  EventBody,
+  EventDetail,
   LogEvent,
   LogKind,
   ProlongResult,

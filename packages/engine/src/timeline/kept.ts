@@ -5,7 +5,7 @@
  *
  * - Reads: an index below firstEvent throws a RangeError naming the start of the log; so does a
  *   time before historyStart given to a read whose answer could lie in the forgotten part
- *   (nextEventTime, eventsBetween; stateAt says it through its range). prevEventTime answers from
+ *   (nextEventTime, eventsBetween, eventIndexAt; stateAt says it through its range). prevEventTime answers from
  *   the kept log (null when no kept entry lies before t), as it answers null before the first entry.
  *   Entries logged AT historyStart before the cut (the actions the first kept keyframe follows,
  *   events of that instant before it) are forgotten with the rest: the log starts at firstEvent.

@@ -8,13 +8,16 @@
  * when that position lies in [last keyframe at or before `from`, `from`] of the same core, and no
  * record or keyframe has been rewritten since (`core.rewrites`: cuts, restores and replaced keyframes;
  * appends keep the replayed prefix valid). Otherwise it starts again from the keyframe.
+ * `detail(core, i)` is the same walk for one entry, with its bodies' states just before it (the
+ * motions the replay holds there) and just after it (eventDetail.ts).
  */
 import type { TimelineCore } from "./core.js";
+import { detailOf } from "./eventDetail.js";
 import { type Keyframe, keyframeAtRecord, loadMotions } from "./keyframe.js";
 import { MotionTable } from "./motionTable.js";
 import { K_ACTION } from "./records.js";
 import { applyRecord, describe } from "./replay.js";
-import type { LogEvent } from "./types.js";
+import type { EventDetail, LogEvent } from "./types.js";
 
 export class LogCursor {
   private core: TimelineCore | null = null;
@@ -31,6 +34,23 @@ export class LogCursor {
   read(core: TimelineCore, from: number, to: number): LogEvent[] {
     const out: LogEvent[] = [];
     if (from >= to) return out;
+    this.seek(core, from);
+    while (this.next < to) {
+      out.push(describe(core, this.next, this.table, this.sync(core)));
+      this.step(core);
+    }
+    return out;
+  }
+
+  /** Log event of record i (< records.length) with its bodies' states just before and after it. */
+  detail(core: TimelineCore, i: number): EventDetail {
+    this.seek(core, i);
+    return detailOf(core, i, this.table, this.sync(core), () => this.step(core));
+  }
+
+  /** Make `table` hold the motions just before record `from`: go on from the cursor's position when
+   *  it can serve (canContinue), else start again from the last keyframe at or before it. */
+  private seek(core: TimelineCore, from: number): void {
     const kfs = core.keyframes;
     const start = Math.max(0, keyframeAtRecord(kfs, from));
     if (!this.canContinue(core, from, (kfs[start] as Keyframe).record)) {
@@ -40,23 +60,26 @@ export class LogCursor {
       this.next = (kfs[start] as Keyframe).record;
       loadMotions(kfs[start] as Keyframe, this.table);
     }
-    const rec = core.records;
-    const table = this.table;
-    let k = this.k;
-    let kf = kfs[k] as Keyframe;
-    for (let i = this.next; i < to; i++) {
-      while (k + 1 < kfs.length && (kfs[k + 1] as Keyframe).record === i) {
-        k++;
-        kf = kfs[k] as Keyframe;
-        loadMotions(kf, table);
-      }
-      if (i >= from) out.push(describe(core, i, table, kf));
-      if (rec.kind[i] !== K_ACTION) applyRecord(rec, i, table, kf);
+    while (this.next < from) this.step(core);
+  }
+
+  /** Load the keyframes taken at record `next` (they replace the motions); the one in force there. */
+  private sync(core: TimelineCore): Keyframe {
+    const kfs = core.keyframes;
+    while (this.k + 1 < kfs.length && (kfs[this.k + 1] as Keyframe).record === this.next) {
+      this.k++;
+      loadMotions(kfs[this.k] as Keyframe, this.table);
     }
-    this.replayed += to - this.next;
-    this.k = k;
-    this.next = to;
-    return out;
+    return kfs[this.k] as Keyframe;
+  }
+
+  /** Replay record `next` (an action changes no motion here: the keyframe after its group does). */
+  private step(core: TimelineCore): void {
+    const kf = this.sync(core);
+    const i = this.next;
+    if (core.records.kind[i] !== K_ACTION) applyRecord(core.records, i, this.table, kf);
+    this.next = i + 1;
+    this.replayed++;
   }
 
   /** Whether the remembered position can serve a read from `from`: same core, nothing rewritten,

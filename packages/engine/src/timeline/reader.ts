@@ -17,7 +17,7 @@ import { LogCursor } from "./logCursor.js";
 import { MotionTable } from "./motionTable.js";
 import { K_ACTION } from "./records.js";
 import { headlessStateAt, stateAt } from "./replay.js";
-import type { LogEvent, SceneState, TimelineCounts } from "./types.js";
+import type { EventDetail, LogEvent, SceneState, TimelineCounts } from "./types.js";
 
 /**
  * The reading half of a Timeline (Timeline extends it): exact states, the event log and counts.
@@ -99,10 +99,29 @@ export class TimelineReader {
     return this.core.forgotten.records + this.core.records.length;
   }
 
+  /** Index of the first logged entry at or after the absolute time t (eventCount when none): the
+   *  number to give event(i) or eventDetail(i) for an entry found by its time (eventsBetween,
+   *  nextEventTime). O(log n). t may be ±Infinity; NaN or a non-number throws RangeError, and so
+   *  does a t before historyStart once the start was forgotten. */
+  eventIndexAt(t: number): number {
+    const c = this.core;
+    const at = keptTime(c, "eventIndexAt", "t", timeArg("eventIndexAt", "t", t));
+    return c.forgotten.records + c.records.lowerBound(at);
+  }
+
   /** The i-th logged entry in time order, firstEvent <= i < eventCount (otherwise RangeError). */
   event(i: number): LogEvent {
     const k = keptIndex(this.core, "event", eventIndex("event", i, this.eventCount));
     return this.cursor.read(this.core, k, k + 1)[0] as LogEvent;
+  }
+
+  /** The i-th logged entry with each participating body's exact state just before and just after
+   *  it (velocities as the engine computed them: the motion before the entry evaluated at its time,
+   *  and the new one; see EventDetail for which bodies, and for actions). The same index and
+   *  RangeError as `event(i)`, and the same replay (a forward walk replays each record once). */
+  eventDetail(i: number): EventDetail {
+    const k = keptIndex(this.core, "eventDetail", eventIndex("eventDetail", i, this.eventCount));
+    return this.cursor.detail(this.core, k);
   }
 
   /** The action the i-th logged event applied (frozen, the object in `actions`), or null when that

@@ -26,6 +26,36 @@ export interface LogEvent {
   action?: ActionType;
 }
 
+/** One body taking part in a log entry (`EventDetail.bodies`): its exact state just before and
+ *  just after the entry, as the engine computed them (not sampled at t ± ε). */
+export interface EventBody {
+  /** The body's id. */
+  id: string;
+  /** Its state just before the entry (velocity as it arrived: the motion before the entry evaluated
+   *  at its time); null when the body did not exist yet (an addBody entry, or a body added earlier
+   *  at the same instant). */
+  before: BodyState | null;
+  /** Its state just after the entry (for a collision or a stop: the new velocity; the position is
+   *  unchanged); null when the entry removed it (removeBody). */
+  after: BodyState | null;
+}
+
+/**
+ * A log entry with its participants' states (`Timeline.eventDetail(i)`): the LogEvent's fields plus,
+ * for each participating body, its state just before and just after.
+ * - bodyBody: both bodies, in the order of `ids`; bodyLine, bodyPoint, stop: the body only. Several
+ *   events at one instant (a Newton's cradle) each get their own before/after: an event's "before"
+ *   is after the events logged before it at that instant.
+ * - action: the body an addBody, giveVelocity, updateBody or removeBody names; "before" is before
+ *   that instant's group of actions and "after" after the whole group (several actions at one
+ *   instant on the same body show their combined effect: the engine keeps no state in between).
+ *   Obstacle actions and setGlobal: no bodies ([]).
+ */
+export interface EventDetail extends LogEvent {
+  /** The participating bodies (see above). */
+  bodies: EventBody[];
+}
+
 /** The exact state of the scene at one time; every list sorted by id. */
 export interface SceneState {
   /** The absolute time of this state. */

@@ -1,0 +1,146 @@
+// @vitest-environment jsdom
+// The Event details panel: the hint before any entry is chosen; a click (or Enter) on a row of the
+// Event log shows that entry's exact before/after velocities; participants select their objects;
+// an edit that recomputes the entry away says so, and an undo brings the detail back.
+import { act, cleanup, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
+import { afterEach, describe, expect, it } from "vitest";
+import { EditorContext } from "../EditorContext";
+import type { Editor } from "../editor";
+import { settled, testEditor } from "../testing/harness";
+import { sceneOf } from "../testing/scenes";
+import { EventDetails, participantSelection, refKey } from "./EventDetails";
+import { EventLog } from "./EventLog";
+
+afterEach(cleanup);
+
+/** a (m = 1, v = 4) meets b (m = 3, at rest) head-on at t = 2: after, a at -2 and b at 2. */
+async function headOn() {
+  const h = testEditor();
+  await h.editor.loadScene(
+    sceneOf(
+      [
+        { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [4, 0] },
+        { time: 0, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 3 },
+      ],
+      0,
+    ),
+    { undoable: false },
+  );
+  await settled(h.client);
+  return h;
+}
+
+function renderPanels(editor: Editor) {
+  render(
+    <EditorContext.Provider value={editor}>
+      <EventLog />
+      <EventDetails />
+    </EditorContext.Provider>,
+  );
+  const panel = screen.getByRole("region", { name: "Event details" });
+  return { log: screen.getByRole("table", { name: "Event log" }), panel };
+}
+
+/** The text of each cell of the velocities table, row by row (header first). */
+function velocityRows(panel: HTMLElement): string[][] {
+  const table = within(panel).getByRole("table", { name: "Velocities before and after" });
+  return [...table.querySelectorAll("tr")].map((tr) => [...tr.children].map((c) => c.textContent ?? ""));
+}
+
+/** The dl's fields as { name: value }. */
+function fields(panel: HTMLElement): Record<string, string> {
+  const out: Record<string, string> = {};
+  for (const dt of panel.querySelectorAll("dt"))
+    out[dt.textContent ?? ""] = dt.nextElementSibling?.textContent ?? "";
+  return out;
+}
+
+describe("EventDetails", () => {
+  it("without a selected entry, says how to choose one", async () => {
+    const h = await headOn();
+    const { panel } = renderPanels(h.editor);
+    expect(within(panel).getByText("Select an entry of the Event log to see its details.")).toBeTruthy();
+    expect(within(panel).queryByRole("table")).toBeNull();
+  });
+
+  it("a click on the body–body row shows its time, kind, contact, impulse and exact velocities", async () => {
+    const h = await headOn();
+    const { log, panel } = renderPanels(h.editor);
+    const cell = await within(log).findByText("body–body");
+    fireEvent.click(cell.closest("tr") as HTMLElement);
+    expect(h.editor.ui.getState().selectedEvent).toEqual({ time: 2, type: "bodyBody", ids: ["a", "b"] });
+    await waitFor(() => expect(within(panel).queryByText("Reading…")).toBeNull());
+    expect(fields(panel)).toEqual({
+      time: "2",
+      kind: "body–body",
+      participants: "a, b",
+      "contact point": "(9, 0)",
+      normal: "(1, 0)",
+      impulse: "6",
+    });
+    expect(velocityRows(panel)).toEqual([
+      ["body", "v before", "v after", "|v| before", "|v| after"],
+      ["a", "(4, 0)", "(-2, 0)", "4", "2"],
+      ["b", "(0, 0)", "(2, 0)", "0", "2"],
+    ]);
+    // a participant selects its body
+    fireEvent.click(within(panel).getByRole("button", { name: "b" }));
+    expect(h.editor.ui.getState().selection).toEqual({ kind: "body", id: "b" });
+  });
+
+  it("Enter on an action row shows the action's body before (none) and after its addition", async () => {
+    const h = await headOn();
+    const { log, panel } = renderPanels(h.editor);
+    const rows = await within(log).findAllByText("action: add body");
+    const row = rows[1]?.closest("tr") as HTMLElement; // b's
+    row.focus();
+    fireEvent.keyDown(row, { key: "Enter" });
+    await waitFor(() => expect(fields(panel).kind).toBe("action: add body"));
+    expect(fields(panel)).toMatchObject({ participants: "b", "contact point": "—", impulse: "—" });
+    expect(velocityRows(panel)[1]).toEqual(["b", "—", "(0, 0)", "—", "0"]);
+  });
+
+  it("an edit that removes the entry says it is gone; an undo brings the detail back", async () => {
+    const h = await headOn();
+    const { log, panel } = renderPanels(h.editor);
+    fireEvent.click((await within(log).findByText("body–body")).closest("tr") as HTMLElement);
+    await waitFor(() => expect(velocityRows(panel)[1]).toEqual(["a", "(4, 0)", "(-2, 0)", "4", "2"]));
+    act(() => h.editor.ui.setState({ t: 1 }));
+    await act(async () => {
+      await h.editor.giveVelocity("a", [0, 4]); // a turns away at t = 1: no collision
+      await settled(h.client);
+    });
+    await waitFor(() =>
+      expect(within(panel).getByRole("status").textContent).toMatch(/no longer in the history/),
+    );
+    await act(async () => {
+      await h.editor.undo();
+      await settled(h.client);
+    });
+    await waitFor(() => expect(velocityRows(panel)[2]).toEqual(["b", "(0, 0)", "(2, 0)", "0", "2"]));
+  });
+
+  it("participantSelection: bodies, then the line or point of a collision; an action's object", () => {
+    const base = { time: 1, point: null, normal: null, impulse: null, bodies: [] };
+    expect(participantSelection({ ...base, type: "bodyLine", ids: ["a", "w"] }, 1)).toEqual({
+      kind: "line",
+      id: "w",
+    });
+    expect(participantSelection({ ...base, type: "bodyPoint", ids: ["a", "q"] }, 0)).toEqual({
+      kind: "body",
+      id: "a",
+    });
+    expect(participantSelection({ ...base, type: "bodyBody", ids: ["a", "b"] }, 1)).toEqual({
+      kind: "body",
+      id: "b",
+    });
+    expect(participantSelection({ ...base, type: "action", action: "addPoint", ids: ["q"] }, 0)).toEqual({
+      kind: "point",
+      id: "q",
+    });
+    expect(refKey(null)).toBe("");
+    expect(refKey({ time: 1, type: "stop", ids: ["a"] })).not.toBe(
+      refKey({ time: 1, type: "stop", ids: ["b"] }),
+    );
+  });
+});

@@ -1,0 +1,87 @@
+/**
+ * End-to-end: the Event details panel in Debian's Chromium. On the default scene (the original
+ * demo: B struck towards A, one collision at t = 100 − √9700), a click on the body–body entry of the
+ * Event log shows that collision's exact velocities just before and just after it: the same numbers
+ * the engine gives in Node (each cell's title holds the full value; its text is rounded to 6 digits).
+ */
+import { originalDemo, Timeline } from "@chapgame/engine";
+import type { Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { openEditor, type Session, screenshot } from "./harness.js";
+
+const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
+
+let s: Session;
+let page: Page;
+
+beforeAll(async () => {
+  s = await openEditor();
+  page = s.page;
+});
+
+afterAll(async () => {
+  await s?.close();
+});
+
+/** Each row of the velocities table: its cells' text and title (the full value). */
+function velocityCells(): Promise<{ text: string; title: string }[][]> {
+  return page
+    .getByRole("region", { name: "Event details" })
+    .getByRole("table", { name: "Velocities before and after" })
+    .locator("tbody tr")
+    .evaluateAll((rows) =>
+      rows.map((tr) =>
+        Array.from(tr.children, (td) => ({
+          text: td.textContent ?? "",
+          title: td.getAttribute("title") ?? "",
+        })),
+      ),
+    );
+}
+
+describe("Event details", () => {
+  it("a click on the default scene's body–body entry shows its exact velocities before and after", async () => {
+    // the engine's own numbers, in Node
+    const tl = Timeline.fromScene(originalDemo());
+    tl.prolongTo(10);
+    const i = Array.from({ length: tl.eventCount }, (_, k) => k).find((k) => tl.event(k).type === "bodyBody");
+    const d = tl.eventDetail(i as number);
+    const [a, b] = d.bodies;
+    const v = (st: { vx: number; vy: number } | null | undefined) => `(${st?.vx}, ${st?.vy})`;
+    // closed form: B arrives at −√9700 and stops; A leaves with B's velocity (equal masses)
+    expect(d.time).toBeCloseTo(100 - Math.sqrt(9700), 12);
+    expect(b?.before?.vx).toBeCloseTo(-Math.sqrt(9700), 12);
+
+    const details = page.getByRole("region", { name: "Event details" });
+    await details.getByText("Select an entry of the Event log to see its details.").waitFor();
+    const row = page
+      .getByRole("table", { name: "Event log" })
+      .getByRole("row")
+      .filter({ hasText: "body–body" });
+    await row.first().click();
+    await poll(async () => (await velocityCells()).length).toBe(2);
+    expect(await velocityCells()).toEqual([
+      [
+        { text: "A", title: "" },
+        { text: "(0, 0)", title: v(a?.before) },
+        { text: "(-98.4886, 0)", title: v(a?.after) },
+        { text: "0", title: "0" },
+        { text: "98.4886", title: String(Math.hypot(a?.after?.vx ?? 0, a?.after?.vy ?? 0)) },
+      ],
+      [
+        { text: "B", title: "" },
+        { text: "(-98.4886, 0)", title: v(b?.before) },
+        { text: "(0, 0)", title: v(b?.after) },
+        { text: "98.4886", title: String(Math.hypot(b?.before?.vx ?? 0, b?.before?.vy ?? 0)) },
+        { text: "0", title: "0" },
+      ],
+    ]);
+    expect(await details.locator("dd").first().getAttribute("title")).toBe(String(d.time));
+    await expect.poll(() => details.locator("dd").nth(2).textContent()).toBe("A, B");
+    // a participant selects its body
+    await details.getByRole("button", { name: "B", exact: true }).click();
+    const selected = page.getByRole("table", { name: "Bodies" }).locator("tr.selected");
+    await poll(() => selected.getByLabel("B x", { exact: true }).count()).toBe(1);
+    await screenshot(page, "event-details");
+  });
+});
