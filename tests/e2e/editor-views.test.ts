@@ -109,6 +109,64 @@ describe("editor views", () => {
     await inView(["ball1 mu", "Delete ball1"]);
   });
 
+  it("a body selected from the Event log is scrolled into view in the Bodies table, the focus left on the log", async () => {
+    await loadPreset("Dilute gas", "d0");
+    const bodies = page.getByRole("table", { name: "Bodies" });
+    const box = page.locator(".table-scroll").first();
+    /** Whether the selected body's row is rendered and wholly inside the scroll box, under its head. */
+    const selectedInView = () =>
+      box.evaluate((el) => {
+        const row = el.querySelector("tbody tr[aria-selected='true']");
+        if (!row) return false;
+        const r = row.getBoundingClientRect();
+        const v = el.getBoundingClientRect();
+        const head = el.querySelector("thead")!.getBoundingClientRect().height;
+        return r.top >= v.top + head - 1 && r.bottom <= v.top + el.clientHeight + 1;
+      });
+    // a history long enough for d150 to collide, then back to its start
+    const field = page.getByRole("textbox", { name: "Time (s)" });
+    await field.fill("300");
+    await field.press("Enter");
+    await poll(async () => Number(await page.getByRole("slider", { name: "Time" }).inputValue())).toBe(300);
+    await scrubTo(page, 0);
+    // d150 is past the 60 rows listed: its event's first participant (listed at the end when it is
+    // the selection, or far down the first 60) is out of the table's view
+    await page.getByRole("textbox", { name: "Filter by body" }).fill("d150");
+    const event = page
+      .getByRole("table", { name: "Event log" })
+      .getByRole("row")
+      .filter({ hasText: "body–body" })
+      .first();
+    const participants = event.locator("td").nth(2);
+    await poll(async () =>
+      (await participants.count()) ? (await participants.textContent())!.split(", ") : [],
+    ).toContain("d150");
+    const ids = (await participants.textContent())!.split(", ");
+    await event.click();
+    const chosen = await page.evaluate(() => {
+      const ed = (
+        window as unknown as { chapgame: { ui: { getState(): { selection: { id: string } | null } } } }
+      ).chapgame;
+      return ed.ui.getState().selection?.id;
+    });
+    expect(ids).toContain(chosen);
+    await poll(selectedInView).toBe(true);
+    expect(await bodies.getByRole("row", { selected: true }).count()).toBe(1);
+    // the focus stays on the log's row
+    expect(
+      await page.evaluate(() => document.activeElement?.closest("table")?.getAttribute("aria-label")),
+    ).toBe("Event log");
+    // a refresh of the rows does not scroll back: the reader's scroll is kept
+    await box.evaluate((el) => {
+      el.scrollTop = 0;
+    });
+    await scrubTo(page, 0.5);
+    await poll(() => bodies.getByLabel("d0 x", { exact: true }).count()).toBe(1);
+    await page.waitForTimeout(300);
+    expect(await box.evaluate((el) => el.scrollTop)).toBe(0);
+    await page.getByRole("textbox", { name: "Filter by body" }).fill("");
+  });
+
   it("dragging a moving disc pauses playback and drops the disc where it is let go", async () => {
     await loadPreset("Newton's cradle", "striker");
     await page.getByRole("button", { name: "Play" }).click();
