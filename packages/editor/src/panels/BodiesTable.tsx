@@ -140,12 +140,14 @@ export function BodiesTable() {
 
   return (
     <section className="panel" aria-labelledby="bodies-title">
-      <h2 id="bodies-title">
-        Bodies <small>({n})</small>
+      <div className="panel-head">
+        <h2 id="bodies-title">
+          Bodies <small>({n})</small>
+        </h2>
         <button type="button" onClick={addBody}>
           Add body
         </button>
-      </h2>
+      </div>
       {n > MAX_ROWS || filter !== "" ? (
         <div className="row">
           <input
