@@ -107,6 +107,27 @@ describe("editor views", () => {
     await poll(() => table.getByLabel("ball15 vx", { exact: true }).textContent()).toMatch(/^-\d{3}\./);
     // (columns are as wide as their widest value: any row in view shows whether they fit)
     await inView(["ball1 mu", "Delete ball1"]);
+    // 200 discs of six-digit values in a 1280 × 800 window (the delete column covered m and μ)
+    await page.setViewportSize({ width: 1280, height: 800 });
+    try {
+      await loadPreset("Dilute gas", "d0");
+      await inView(["d0 x", "d0 vx", "d0 vy", "d0 speed", "d0 r", "d0 m", "d0 mu", "Delete d0"]);
+      // narrower than its columns (a 400 px window), the table scrolls sideways to every column
+      await page.setViewportSize({ width: 400, height: 800 });
+      const scroller = page.locator(".table-scroll").first();
+      await poll(() => scroller.evaluate((el) => el.scrollWidth > el.clientWidth)).toBe(true);
+      await scroller.evaluate((el) => {
+        // the panels are below the stage in a narrow window: the page scrolls to the table
+        el.scrollIntoView({ block: "center" });
+        el.scrollLeft = el.scrollWidth;
+      });
+      await inView(["d0 m", "d0 mu", "Delete d0"]);
+      await scroller.evaluate((el) => {
+        el.scrollLeft = 0;
+      });
+    } finally {
+      await page.setViewportSize({ width: 1400, height: 900 });
+    }
   });
 
   it("a body selected from the Event log is scrolled into view in the Bodies table, the focus left on the log", async () => {
