@@ -245,6 +245,41 @@ describe("editor views", () => {
     await page.getByRole("button", { name: "Pause" }).click();
   });
 
+  it("a click on the Time slider past an edit's recomputation holds the time there (it snapped back to the progress)", async () => {
+    await loadPreset("Dilute gas", "d0");
+    const field = page.getByRole("textbox", { name: "Time (s)" });
+    const slider = page.getByRole("slider", { name: "Time" });
+    const state = () =>
+      page.evaluate(() => {
+        type Ed = {
+          ui: { getState(): { t: number } };
+          client: { getSnapshot(): { horizon: number; computing: { restore: boolean } | null } };
+        };
+        const ed = (window as unknown as { chapgame: Ed }).chapgame;
+        const s = ed.client.getSnapshot();
+        return { t: ed.ui.getState().t, horizon: s.horizon, restoring: s.computing?.restore === true };
+      });
+    await field.fill("3000");
+    await field.press("Enter");
+    await expect.poll(async () => (await state()).t, { timeout: 50_000, interval: 100 }).toBe(3000);
+    await field.fill("3");
+    await field.press("Enter");
+    // an edit in the past: the history up to 3000 s is computed again, the time held at 3
+    await page.getByRole("button", { name: "d0 vx", exact: true }).click();
+    await page.getByRole("textbox", { name: "d0 vx", exact: true }).fill("2");
+    await page.keyboard.press("Enter");
+    await poll(async () => (await state()).restoring).toBe(true);
+    const box = (await slider.boundingBox())!;
+    // the thumb is about 16 px wide: values span [x + 8, x + width - 8]
+    await page.mouse.click(box.x + 8 + (box.width - 16) * (2500 / 3000), box.y + box.height / 2);
+    const clicked = await state();
+    expect(clicked.restoring, "the recomputation was still under way").toBe(true);
+    expect(clicked.horizon).toBeLessThan(2400);
+    expect(Math.abs(clicked.t - 2500)).toBeLessThan(30);
+    await expect.poll(async () => (await state()).restoring, { timeout: 50_000, interval: 100 }).toBe(false);
+    expect((await state()).t).toBe(clicked.t);
+  });
+
   it("Time zoom: a zoom button keeps the focus once it cannot act; the wheel and a typed width zoom around the time", async () => {
     await loadPreset("Newton's cradle", "striker");
     await scrubTo(page, 2.5);
