@@ -107,6 +107,85 @@ describe("editor views", () => {
     await poll(() => table.getByLabel("ball15 vx", { exact: true }).textContent()).toMatch(/^-\d{3}\./);
     // (columns are as wide as their widest value: any row in view shows whether they fit)
     await inView(["ball1 mu", "Delete ball1"]);
+    // 200 discs of six-digit values in a 1280 × 800 window (the delete column covered m and μ)
+    await page.setViewportSize({ width: 1280, height: 800 });
+    try {
+      await loadPreset("Dilute gas", "d0");
+      await inView(["d0 x", "d0 vx", "d0 vy", "d0 speed", "d0 r", "d0 m", "d0 mu", "Delete d0"]);
+      // narrower than its columns (a 400 px window), the table scrolls sideways to every column
+      await page.setViewportSize({ width: 400, height: 800 });
+      const scroller = page.locator(".table-scroll").first();
+      await poll(() => scroller.evaluate((el) => el.scrollWidth > el.clientWidth)).toBe(true);
+      await scroller.evaluate((el) => {
+        // the panels are below the stage in a narrow window: the page scrolls to the table
+        el.scrollIntoView({ block: "center" });
+        el.scrollLeft = el.scrollWidth;
+      });
+      await inView(["d0 m", "d0 mu", "Delete d0"]);
+      await scroller.evaluate((el) => {
+        el.scrollLeft = 0;
+      });
+    } finally {
+      await page.setViewportSize({ width: 1400, height: 900 });
+    }
+  });
+
+  it("a body selected from the Event log is scrolled into view in the Bodies table, the focus left on the log", async () => {
+    await loadPreset("Dilute gas", "d0");
+    const bodies = page.getByRole("table", { name: "Bodies" });
+    const box = page.locator(".table-scroll").first();
+    /** Whether the selected body's row is rendered and wholly inside the scroll box, under its head. */
+    const selectedInView = () =>
+      box.evaluate((el) => {
+        const row = el.querySelector("tbody tr[aria-selected='true']");
+        if (!row) return false;
+        const r = row.getBoundingClientRect();
+        const v = el.getBoundingClientRect();
+        const head = el.querySelector("thead")!.getBoundingClientRect().height;
+        return r.top >= v.top + head - 1 && r.bottom <= v.top + el.clientHeight + 1;
+      });
+    // a history long enough for d150 to collide, then back to its start
+    const field = page.getByRole("textbox", { name: "Time (s)" });
+    await field.fill("300");
+    await field.press("Enter");
+    await poll(async () => Number(await page.getByRole("slider", { name: "Time" }).inputValue())).toBe(300);
+    await scrubTo(page, 0);
+    // d150 is past the 60 rows listed: its event's first participant (listed at the end when it is
+    // the selection, or far down the first 60) is out of the table's view
+    await page.getByRole("textbox", { name: "Filter by body" }).fill("d150");
+    const event = page
+      .getByRole("table", { name: "Event log" })
+      .getByRole("row")
+      .filter({ hasText: "body–body" })
+      .first();
+    const participants = event.locator("td").nth(2);
+    await poll(async () =>
+      (await participants.count()) ? (await participants.textContent())!.split(", ") : [],
+    ).toContain("d150");
+    const ids = (await participants.textContent())!.split(", ");
+    await event.click();
+    const chosen = await page.evaluate(() => {
+      const ed = (
+        window as unknown as { chapgame: { ui: { getState(): { selection: { id: string } | null } } } }
+      ).chapgame;
+      return ed.ui.getState().selection?.id;
+    });
+    expect(ids).toContain(chosen);
+    await poll(selectedInView).toBe(true);
+    expect(await bodies.getByRole("row", { selected: true }).count()).toBe(1);
+    // the focus stays on the log's row
+    expect(
+      await page.evaluate(() => document.activeElement?.closest("table")?.getAttribute("aria-label")),
+    ).toBe("Event log");
+    // a refresh of the rows does not scroll back: the reader's scroll is kept
+    await box.evaluate((el) => {
+      el.scrollTop = 0;
+    });
+    await scrubTo(page, 0.5);
+    await poll(() => bodies.getByLabel("d0 x", { exact: true }).count()).toBe(1);
+    await page.waitForTimeout(300);
+    expect(await box.evaluate((el) => el.scrollTop)).toBe(0);
+    await page.getByRole("textbox", { name: "Filter by body" }).fill("");
   });
 
   it("dragging a moving disc pauses playback and drops the disc where it is let go", async () => {
@@ -164,6 +243,41 @@ describe("editor views", () => {
     await page.mouse.up();
     await waitFor(async () => Number(await slider.inputValue()) > held + 0.2);
     await page.getByRole("button", { name: "Pause" }).click();
+  });
+
+  it("a click on the Time slider past an edit's recomputation holds the time there (it snapped back to the progress)", async () => {
+    await loadPreset("Dilute gas", "d0");
+    const field = page.getByRole("textbox", { name: "Time (s)" });
+    const slider = page.getByRole("slider", { name: "Time" });
+    const state = () =>
+      page.evaluate(() => {
+        type Ed = {
+          ui: { getState(): { t: number } };
+          client: { getSnapshot(): { horizon: number; computing: { restore: boolean } | null } };
+        };
+        const ed = (window as unknown as { chapgame: Ed }).chapgame;
+        const s = ed.client.getSnapshot();
+        return { t: ed.ui.getState().t, horizon: s.horizon, restoring: s.computing?.restore === true };
+      });
+    await field.fill("3000");
+    await field.press("Enter");
+    await expect.poll(async () => (await state()).t, { timeout: 50_000, interval: 100 }).toBe(3000);
+    await field.fill("3");
+    await field.press("Enter");
+    // an edit in the past: the history up to 3000 s is computed again, the time held at 3
+    await page.getByRole("button", { name: "d0 vx", exact: true }).click();
+    await page.getByRole("textbox", { name: "d0 vx", exact: true }).fill("2");
+    await page.keyboard.press("Enter");
+    await poll(async () => (await state()).restoring).toBe(true);
+    const box = (await slider.boundingBox())!;
+    // the thumb is about 16 px wide: values span [x + 8, x + width - 8]
+    await page.mouse.click(box.x + 8 + (box.width - 16) * (2500 / 3000), box.y + box.height / 2);
+    const clicked = await state();
+    expect(clicked.restoring, "the recomputation was still under way").toBe(true);
+    expect(clicked.horizon).toBeLessThan(2400);
+    expect(Math.abs(clicked.t - 2500)).toBeLessThan(30);
+    await expect.poll(async () => (await state()).restoring, { timeout: 50_000, interval: 100 }).toBe(false);
+    expect((await state()).t).toBe(clicked.t);
   });
 
   it("Time zoom: a zoom button keeps the focus once it cannot act; the wheel and a typed width zoom around the time", async () => {

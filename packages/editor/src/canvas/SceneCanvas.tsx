@@ -10,6 +10,7 @@
  */
 import { useEffect, useRef } from "react";
 import { useEditor, useUi } from "../EditorContext";
+import type { SceneFile } from "../engineTypes";
 import { useLiveFrame } from "../panels/useLiveFrame";
 import { motionWindow } from "../playback";
 import type { Frame } from "../remote/protocol";
@@ -20,7 +21,7 @@ import { fitFrame } from "./fitScene";
 import { emptyFrame, frameAt } from "./frameAt";
 import { CanvasGestures } from "./gestures";
 import { sceneLabel } from "./sceneLabel";
-import { TrailRecorder } from "./trails";
+import { type BodyActed, bodyActions, TrailRecorder } from "./trails";
 import { type Size, zoomAt } from "./viewTransform";
 
 export function SceneCanvas() {
@@ -56,6 +57,17 @@ export function SceneCanvas() {
     // (window, layout) is fitted again rather than showing a corner of the scene.
     let fitted = fitPending;
     const trails = new TrailRecorder();
+    // the actions that place each body, for the trails (an action's jump is no motion)
+    let actedDoc: SceneFile | null = null;
+    let acted: BodyActed = () => false;
+    const bodyActed = (): BodyActed => {
+      const doc = client.getSnapshot().doc;
+      if (doc && doc !== actedDoc) {
+        actedDoc = doc;
+        acted = bodyActions(doc.actions);
+      }
+      return acted;
+    };
     const gestures = new CanvasGestures(editor, {
       frame: () => drawn ?? client.latestFrame,
       size: () => size,
@@ -113,7 +125,7 @@ export function SceneCanvas() {
       if (moved) {
         drawnBase = base;
         drawnT = s.t;
-        if (s.trails && f) trails.record(f);
+        if (s.trails && f) trails.record(f, bodyActed());
       }
       dirty = false;
       const started = performance.now();

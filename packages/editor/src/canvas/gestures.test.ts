@@ -51,6 +51,29 @@ describe("canvas gestures", () => {
     expect(editor.history.getState().past.length).toBe(1);
   });
 
+  it("a disc dragged (move, then velocity) is selected, as a click selects it (Delete removed the one selected before)", async () => {
+    const { editor, client, g } = await setup();
+    const other = { kind: "line", id: "wall" } as const;
+    editor.ui.setState({ selection: other, highlight: ["line:wall"] });
+    drag(g, CENTRE, [450, 300]);
+    g.up([450, 300]);
+    expect(editor.ui.getState().selection).toEqual({ kind: "body", id: "a" });
+    expect(editor.ui.getState().highlight).toEqual([]);
+    await settled(client);
+    editor.ui.setState({ selection: other, tool: "velocity" });
+    // (the host's frame is the one at t = 0: the disc is still drawn at the centre)
+    drag(g, CENTRE, [400, 250]);
+    g.up([400, 250]);
+    expect(editor.ui.getState().selection).toEqual({ kind: "body", id: "a" });
+    await settled(client);
+    expect(editor.doc.actions.at(-1)).toMatchObject({ type: "giveVelocity", id: "a" });
+    // a drag cancelled selects nothing
+    editor.ui.setState({ selection: other, tool: "move" });
+    drag(g, CENTRE, [500, 300]);
+    g.cancel();
+    expect(editor.ui.getState().selection).toEqual(other);
+  });
+
   it("Escape during a move drag restores the scene: no action, no undo step, the release applies nothing", async () => {
     const { editor, client, g, redraws } = await setup();
     const before = editor.doc;

@@ -3,6 +3,7 @@
  * select/move/pan, velocity drag, cue strike, add disc/line/point. A drag shows a preview (the
  * overlay) and ends in one edit on release; a press that moves less than CLICK_SLOP_PX is a click.
  * Picking up a disc (move, velocity) pauses playback; a cue strike does not (it strikes a moving disc).
+ * A disc dragged and released (move, velocity) is the selection, as a click on it makes it.
  * cancel() (Escape, or the browser cancelling the pointer) drops the gesture: the view, the playback
  * and the scene are as before the press, no action is recorded, and the release applies nothing.
  */
@@ -131,6 +132,9 @@ export class CanvasGestures {
       this.click(w, s.tool);
       return;
     }
+    // a dragged disc is selected, as a click selects it (Delete removed the one selected before)
+    if (g.kind === "move" || g.kind === "velocity")
+      this.editor.ui.setState({ selection: { kind: "body", id: g.id }, highlight: [] });
     if (g.kind === "move") void this.editor.moveBody(g.id, g.at[0], g.at[1]);
     else if (g.kind === "velocity") {
       const v: Vec2 = [(g.to[0] - g.from[0]) / ARROW_SECONDS, (g.to[1] - g.from[1]) / ARROW_SECONDS];

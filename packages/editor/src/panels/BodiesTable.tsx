@@ -4,7 +4,8 @@
  * current time; refused values show the engine's message in place. Rows select bodies (clicked, or a
  * cell of theirs focused or opened), listed in natural id order (ball2 before ball10), at most
  * MAX_ROWS of them: the filter field (a part of the id) reaches any other body (bodyList.ts). Only the
- * rows in view are rendered (useRowWindow). A "Skip the Bodies table" button (shown when focused)
+ * rows in view are rendered (useRowWindow). The selected body's row is scrolled into view when the
+ * selection changes (useRevealRow). A "Skip the Bodies table" button (shown when focused)
  * passes its cells in one Tab press.
  */
 import { type ReactNode, useRef, useState } from "react";
@@ -16,6 +17,7 @@ import { DeleteRowButton } from "./DeleteRowButton";
 import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
 import { SkipTable } from "./SkipTable";
 import { useLiveFrame } from "./useLiveFrame";
+import { useRevealRow } from "./useRevealRow";
 import { spacerRow, useRowWindow } from "./useRowWindow";
 
 /** Rows shown at most (the selected body is always shown); the canvas shows them all. */
@@ -80,6 +82,13 @@ export function BodiesTable() {
   const { listed } = list;
   const note = listNote(list, n, filter);
   const win = useRowWindow(scrollRef, listed.length);
+  // a body selected elsewhere (the canvas, the Event log) is scrolled into view
+  useRevealRow(
+    scrollRef,
+    selectedId,
+    selectedId === null || !frame ? -1 : listed.findIndex((i) => frame.ids[i] === selectedId),
+    win.geometry,
+  );
   const rows: ReactNode[] = [spacerRow("before", win.before, COLUMNS.length + 2)];
   for (const i of frame ? listed.slice(win.start, win.end) : []) {
     const id = frame!.ids[i]!;
@@ -131,12 +140,14 @@ export function BodiesTable() {
 
   return (
     <section className="panel" aria-labelledby="bodies-title">
-      <h2 id="bodies-title">
-        Bodies <small>({n})</small>
+      <div className="panel-head">
+        <h2 id="bodies-title">
+          Bodies <small>({n})</small>
+        </h2>
         <button type="button" onClick={addBody}>
           Add body
         </button>
-      </h2>
+      </div>
       {n > MAX_ROWS || filter !== "" ? (
         <div className="row">
           <input

@@ -8,10 +8,11 @@
  * ✕ of the next action entry shown, else the previous one, else the log's table (removeFocus.ts),
  * once the log shows the scene without the action. An armed ✕ says "Press again to remove …" in the
  * log's one visually hidden polite live region (useArmedNotice), which is empty otherwise.
+ * Each entry is described to assistive technology by what activating it does (ROW_HINT).
  * Only the rows in view are rendered (useRowWindow); the view follows the current time (useFollowTime).
  * "Skip the Event log table" (SkipTable, shown when focused) passes its entries in one Tab press.
  */
-import { useEffect, useRef, useState } from "react";
+import { useEffect, useId, useRef, useState } from "react";
 import { kindOfType } from "../doc/rename";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { LogEvent } from "../engineTypes";
@@ -36,6 +37,8 @@ const AFTER = 30;
  * the main thread per frame while playing 2,000 discs that the worker computes ahead).
  */
 const REFRESH_MS = 250;
+/** Every entry's accessible description: what activating it does. */
+export const ROW_HINT = "Press Enter to go to this event's time and select what it involves.";
 const KIND_NAMES: Record<string, string> = {
   bodyBody: "body–body",
   bodyLine: "body–line",
@@ -163,6 +166,7 @@ export function EventLog() {
   }, [refocus, doc]);
   const onRemoved = (index: number) => setRefocus({ index, from: doc });
   const armed = useArmedNotice();
+  const hintId = useId();
 
   return (
     <section className="panel" aria-labelledby="log-title">
@@ -181,6 +185,9 @@ export function EventLog() {
       <div className="visually-hidden" role="status" aria-live="polite">
         {armed.text}
       </div>
+      <p id={hintId} hidden>
+        {ROW_HINT}
+      </p>
       {events.length > 0 && <SkipTable name="Event log" region={scrollRef} />}
       <div className="table-scroll log" ref={scrollRef}>
         <table aria-label="Event log" ref={tableRef} tabIndex={-1}>
@@ -205,6 +212,7 @@ export function EventLog() {
                   key={k}
                   className={cls}
                   tabIndex={0}
+                  aria-describedby={hintId}
                   onClick={() =>
                     editor.ui.setState({
                       t: e.time,

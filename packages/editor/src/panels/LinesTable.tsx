@@ -36,12 +36,14 @@ export function LinesTable() {
 
   return (
     <section className="panel" aria-labelledby="lines-title">
-      <h2 id="lines-title">
-        Lines <small>({lines.length})</small>
+      <div className="panel-head">
+        <h2 id="lines-title">
+          Lines <small>({lines.length})</small>
+        </h2>
         <button type="button" onClick={add}>
           Add line
         </button>
-      </h2>
+      </div>
       {lines.length > 0 && <SkipTable name="Lines" region={scrollRef} />}
       <div className="table-scroll" ref={scrollRef}>
         <table aria-label="Lines">

@@ -19,8 +19,10 @@ export function PointsTable() {
 
   return (
     <section className="panel" aria-labelledby="points-title">
-      <h2 id="points-title">
-        Points <small>({points.length})</small>
+      <div className="panel-head">
+        <h2 id="points-title">
+          Points <small>({points.length})</small>
+        </h2>
         <button
           type="button"
           onClick={() => {
@@ -33,7 +35,7 @@ export function PointsTable() {
         >
           Add point
         </button>
-      </h2>
+      </div>
       {points.length > 0 && <SkipTable name="Points" region={scrollRef} />}
       <div className="table-scroll" ref={scrollRef}>
         <table aria-label="Points">

@@ -144,7 +144,7 @@ export function TimePanel() {
         >
           −1 s
         </button>
-        <button type="button" aria-label="Go to start" onClick={() => editor.setTime(0)}>
+        <button type="button" aria-label="Go to start" title="Go to start" onClick={() => editor.setTime(0)}>
           0
         </button>
         <button

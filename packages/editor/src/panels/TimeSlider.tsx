@@ -8,7 +8,10 @@
  * one thumb. While playing, a change that moves the thumb by less than a pixel is not written (each
  * write of a range input's value costs Chromium a relayout, repaint and re-layerization of the page,
  * about 1 ms per frame in the 2,000-disc profile); a new range is always written. Paused, the slider
- * always shows the exact time. Its aria-valuetext ("t = 8.21 s") is written on every change of the time
+ * always shows the exact time. While the time is held past the horizon (an undo's or an edit's
+ * recomputation), the thumb shows the recomputation's progress and the time stays held: an input or
+ * change event carrying the value the slider wrote itself is not the user's and is ignored (a click
+ * at 5,000 s snapped the time back to the progress). Its aria-valuetext ("t = 8.21 s") is written on every change of the time
  * (a string attribute, no layout): what a screen reader reports never lags behind the time, although
  * the value can. Dragging it sets the time (not an edit), within its range (sliderTime:
  * Chromium's value at an end can read just past it, which turned the page under the pointer);
@@ -33,6 +36,8 @@ export function TimeSlider() {
     useHistoryEnd(),
   );
   const ref = useRef<HTMLInputElement>(null);
+  /** The value the slider last wrote itself (as the input reads it back); null before the first. */
+  const written = useRef<string | null>(null);
 
   useEffect(() => {
     const input = ref.current!;
@@ -60,7 +65,8 @@ export function TimeSlider() {
       const { lo, hi } = viewRange(s.timeWindow, historyEnd(info, s.t));
       const t = Math.min(s.t, info.horizon);
       const sameRange = lo === shownLo && hi === shownHi;
-      if (t === shown && sameRange) return;
+      // (a value the user moved the thumb to is rewritten: held past the horizon, it is not the time's)
+      if (t === shown && sameRange && input.value === written.current) return;
       if (!force && sameRange && s.playing && Math.abs(t - shown) * Math.max(width, 1) < hi - lo) return;
       shown = t;
       shownLo = lo;
@@ -71,6 +77,8 @@ export function TimeSlider() {
         input.max = String(hi);
       }
       input.value = String(t);
+      // read back: Chromium keeps about 15 significant digits of what is written
+      written.current = input.value;
     };
     show(true);
     const offUi = ui.subscribe((s, p) => {
@@ -118,6 +126,11 @@ export function TimeSlider() {
         editor.setTime(next);
       }}
       onChange={(e) => {
+        // The slider's own value is no change by the user (a user's change moves the value): with the
+        // time held past the horizon the thumb shows the restore's progress, and the change event
+        // Chromium fires on letting go of a click (React sees the value it wrote, reformatted) set
+        // the time to that progress.
+        if (e.target.value === written.current) return;
         // clamped to the range: a value read just past an end turned the page (sliderTime)
         const { timeWindow, t } = editor.ui.getState();
         const end = historyEnd(editor.client.getSnapshot(), t);
