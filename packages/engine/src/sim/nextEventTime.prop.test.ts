@@ -294,5 +294,9 @@ describe("World.nextEventTime properties", () => {
     expect(finite).toBeGreaterThan(RUNS);
     expect(crossings).toBeGreaterThan(RUNS);
     expect(repredictions).toBeGreaterThan(0);
-  });
+    // Some seeds draw a disc crushed under friction (an immovable disc kicked into a wall): the Zeno
+    // watch reports it only after its windows of 200,000 events have shrunk for long enough, 2.4
+    // million events that this property runs twice (peeker and twin), 80 s under load for
+    // FC_SEED=18003. The default seed takes 8 s.
+  }, 300_000);
 });
