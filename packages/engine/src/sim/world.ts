@@ -221,6 +221,9 @@ export class World extends Edits {
    * whole number >= 0 or Infinity; `onEvent` not a function) before anything changes. An event the
    * exact model cannot process throws SimulationError: the events before it stay processed, the
    * World's time is the failing event's (`error.time`) and advancing again throws the same.
+   * `onEvent` may edit the World (bodies, obstacles, globals): the edit acts as if this advance had
+   * stopped after that event and the edit been made before the next, bit for bit. Calling advance
+   * from `onEvent` throws ChapgameError (path `advance`).
    */
   advance(limits: AdvanceLimits = {}, onEvent?: (e: WorldEvent) => void): AdvanceResult {
     requireFields("limits", limits, ["untilTime", "maxEvents"]);

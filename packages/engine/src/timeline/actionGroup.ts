@@ -33,7 +33,7 @@ export function applyGroup(c: TimelineCore): void {
     const path = c.pathOf(k);
     checkAndApply(view, a, path);
     applyToWorld(w, a, path);
-    track(c, a, t);
+    track(c, a);
     c.actEvents[k] = c.eventTotal;
     c.counts.action++;
     c.lastLogged = t;
@@ -56,8 +56,8 @@ export function applyGroup(c: TimelineCore): void {
   takeKeyframe(c, true);
 }
 
-/** Update the registry and the motion table after action `a` at time t. */
-function track(c: TimelineCore, a: Action, t: number): void {
+/** Update the registry and the motion table (from the World's own motions) after action `a`. */
+function track(c: TimelineCore, a: Action): void {
   const w = c.world;
   if (a.type === "removeBody") {
     c.live.delete(a.id);
@@ -78,5 +78,5 @@ function track(c: TimelineCore, a: Action, t: number): void {
   if (!c.history) return;
   const touched = touchedBodies(a);
   const ids = touched === "all" ? [...c.live.keys()] : touched === null ? [] : [touched];
-  for (const id of ids) c.table.setFromState(c.live.get(id) as number, t, w.body(id), w.g, w.gx, w.gy);
+  for (const id of ids) c.table.setFromWorld(c.live.get(id) as number, w.motion(id), w.body(id));
 }

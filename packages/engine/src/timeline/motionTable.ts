@@ -9,6 +9,18 @@
 import { type MotionLaw, motionLaw, positionAt, velocityAt } from "../physics/motion.js";
 import type { BodyState } from "../sim/types.js";
 
+/** A motion as World.motion reports it. */
+export interface WorldMotion {
+  t0: number;
+  x0: number;
+  y0: number;
+  vx: number;
+  vy: number;
+  ax: number;
+  ay: number;
+  tStop: number;
+}
+
 /** Float64 slots per body: t0, x0, y0, vx0, vy0, ax, ay, tEnd, r, m, mu. */
 export const STRIDE = 11;
 const INF = Number.POSITIVE_INFINITY;
@@ -39,10 +51,23 @@ export class MotionTable {
     this.data[o + 10] = mu;
   }
 
-  /** Set body i from a World state taken at t0 (the World rebases edited bodies at the edit time). */
-  setFromState(i: number, t0: number, s: BodyState, g: number, gx: number, gy: number): void {
+  /**
+   * Set body i to the World's own motion of it (World.motion) and its r, m, mu: exactly what the World
+   * computes from, whether an edit restarted the motion or kept it (an updateBody that changes
+   * nothing keeps it; restarting the table's copy there made keyframes and reads drift from the World).
+   */
+  setFromWorld(i: number, m: WorldMotion, s: BodyState): void {
     this.setProps(i, s.r, s.m, s.mu);
-    this.start(i, t0, s.x, s.y, s.vx, s.vy, g, gx, gy);
+    const d = this.data;
+    const o = i * STRIDE;
+    d[o] = m.t0;
+    d[o + 1] = m.x0;
+    d[o + 2] = m.y0;
+    d[o + 3] = m.vx;
+    d[o + 4] = m.vy;
+    d[o + 5] = m.ax;
+    d[o + 6] = m.ay;
+    d[o + 7] = m.tStop;
   }
 
   /** Start a new motion of body i at t from (x, y) with (vx, vy). */

@@ -51,7 +51,8 @@ const INF = Number.POSITIVE_INFINITY;
  * - `history: false` keeps no log and no keyframes (headless runs): states can be read only from the
  *   last logged event or action up to the horizon.
  * - `forgetBefore(t)` drops the history before the last keyframe at or before t (memory returned);
- *   reads and edits from `historyStart` on are unchanged, earlier ones refused.
+ *   states from `historyStart` on, log entries from `firstEvent` on and edits after it are
+ *   unchanged (entries logged at historyStart before the cut are forgotten too), earlier ones refused.
  *
  * @example
  * const tl = new Timeline({ g: 0 });
@@ -319,10 +320,12 @@ export class Timeline extends TimelineReader {
 
   /** Forget the history before the last keyframe at or before t, 0 <= t <= horizon (RangeError
    *  otherwise), returning its memory (a game rewinding 2 s: `forgetBefore(Math.max(0, horizon - 2))`
-   *  now and then). Returns the kept start, `historyStart` (<= t): reads and edits from there on are
-   *  unchanged, earlier ones refused (kept.ts). Entry numbers, counts, actions and toScene stay. A t
-   *  before historyStart, or no history: nothing changes (then the horizon is returned). The
-   *  subscribers are told when something was dropped. */
+   *  now and then). Returns the kept start, `historyStart` (<= t): states from there on, entries
+   *  from `firstEvent` on and edits after it are unchanged, earlier ones refused (kept.ts; entries
+   *  logged at historyStart before the cut are forgotten too). Entry numbers, counts, actions and
+   *  toScene stay. A t before historyStart: nothing changes, historyStart is returned. No history:
+   *  nothing changes, the horizon is returned (historyStart stays 0). The subscribers are told
+   *  when something was dropped. */
   forgetBefore(t: number): number {
     const { start, dropped } = forgetBefore(this.core, forgetTime(t, this.core.horizon));
     if (dropped) this.changed();

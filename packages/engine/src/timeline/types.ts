@@ -33,7 +33,9 @@ export interface EventBody {
   id: string;
   /** Its state just before the entry (velocity as it arrived: the motion before the entry evaluated
    *  at its time); null when the body did not exist yet (an addBody entry, or a body added earlier
-   *  at the same instant). */
+   *  at the same instant). For an action entry, before and after span the whole group of actions at
+   *  that instant: a body removed and added again under the same id there shows the old body before
+   *  and the new one after, on both entries. */
   before: BodyState | null;
   /** Its state just after the entry (for a collision or a stop: the new velocity; the position is
    *  unchanged); null when the entry removed it (removeBody). */
