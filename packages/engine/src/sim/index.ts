@@ -5,6 +5,7 @@ export type {
   AdvanceLimits,
   AdvanceResult,
   BodyInit,
+  BodyMotion,
   BodyMotionInit,
   BodyPatch,
   BodyState,

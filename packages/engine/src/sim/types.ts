@@ -36,6 +36,22 @@ export interface BodyInit {
 }
 
 /**
+ * A body's exact current motion, as `World.motion(id)` reports it (a copy): p(t) = (x0, y0) +
+ * (t - t0) ((vx, vy) + (t - t0) (ax, ay) / 2) for t0 <= t <= tStop, where (ax, ay) and tStop follow
+ * from the velocity, mu and the World's globals.
+ */
+export interface BodyMotion {
+  t0: number;
+  x0: number;
+  y0: number;
+  vx: number;
+  vy: number;
+  ax: number;
+  ay: number;
+  tStop: number;
+}
+
+/**
  * A body given by an exact motion that started at t0 (at or before the World's time), as
  * `World.motion(id)` reports it: p(t) = (x0, y0) + (t - t0) (v + (t - t0) a / 2), where a (friction
  * or the gravity field) follows from v, mu and the World's globals exactly as for any motion.

@@ -10,7 +10,14 @@
 import { positionAt, velocityAt } from "../physics/motion.js";
 import { Edits } from "./edits.js";
 import { ChapgameError, SimulationError } from "./errors.js";
-import type { AdvanceLimits, AdvanceResult, BodyState, WorldEvent, WorldOptions } from "./types.js";
+import type {
+  AdvanceLimits,
+  AdvanceResult,
+  BodyMotion,
+  BodyState,
+  WorldEvent,
+  WorldOptions,
+} from "./types.js";
 import { requireFieldRate, requireFields, requireFinite, requireGravity } from "./validate.js";
 import type { ZenoCounters } from "./zenoWatch.js";
 
@@ -185,16 +192,7 @@ export class World extends Edits {
    * The exact current motion of a body (a copy): p(t) = (x0, y0) + (t - t0) * ((vx, vy) + (t - t0) * (ax, ay) / 2)
    * for t0 <= t <= tStop (positionAt / velocityAt in physics/motion.ts evaluate it bit for bit).
    */
-  motion(id: string): {
-    t0: number;
-    x0: number;
-    y0: number;
-    vx: number;
-    vy: number;
-    ax: number;
-    ay: number;
-    tStop: number;
-  } {
+  motion(id: string): BodyMotion {
     const s = this.slotOf(id);
     const b = this.store;
     return {

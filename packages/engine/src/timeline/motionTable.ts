@@ -7,19 +7,7 @@
  * from motionLaw.
  */
 import { type MotionLaw, motionLaw, positionAt, velocityAt } from "../physics/motion.js";
-import type { BodyState } from "../sim/types.js";
-
-/** A motion as World.motion reports it. */
-export interface WorldMotion {
-  t0: number;
-  x0: number;
-  y0: number;
-  vx: number;
-  vy: number;
-  ax: number;
-  ay: number;
-  tStop: number;
-}
+import type { BodyMotion, BodyState } from "../sim/types.js";
 
 /** Float64 slots per body: t0, x0, y0, vx0, vy0, ax, ay, tEnd, r, m, mu. */
 export const STRIDE = 11;
@@ -56,7 +44,7 @@ export class MotionTable {
    * computes from, whether an edit restarted the motion or kept it (an updateBody that changes
    * nothing keeps it; restarting the table's copy there made keyframes and reads drift from the World).
    */
-  setFromWorld(i: number, m: WorldMotion, s: BodyState): void {
+  setFromWorld(i: number, m: BodyMotion, s: BodyState): void {
     this.setProps(i, s.r, s.m, s.mu);
     const d = this.data;
     const o = i * STRIDE;
