@@ -6,9 +6,10 @@ import { act, cleanup, fireEvent, render, screen, waitFor, within } from "@testi
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
 import type { Editor } from "../editor";
+import { refKey } from "../remote/eventDetail";
 import { settled, testEditor } from "../testing/harness";
 import { sceneOf } from "../testing/scenes";
-import { EventDetails, participantSelection, refKey } from "./EventDetails";
+import { EventDetails, participantSelection } from "./EventDetails";
 import { EventLog } from "./EventLog";
 
 afterEach(cleanup);

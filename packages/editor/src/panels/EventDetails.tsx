@@ -11,7 +11,7 @@
 import type { ReactNode } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { BodyState, EventDetail, Vec2 } from "../engineTypes";
-import type { EventRef } from "../remote/protocol";
+import { refKey } from "../remote/eventDetail";
 import type { Selection } from "../store/uiStore";
 import { formatNumber } from "./EditableCell";
 import { kindLabel, selectionOf } from "./EventLog";
@@ -19,11 +19,6 @@ import { useRefreshed } from "./useRefreshed";
 
 /** Shortest interval between two reads while the timeline keeps changing (a computation). */
 const REFRESH_MS = 250;
-
-/** A key that changes with the entry an EventRef names. */
-export function refKey(ref: EventRef | null): string {
-  return ref === null ? "" : JSON.stringify([ref.time, ref.type, ref.ids, ref.action ?? null]);
-}
 
 /** What clicking participant k of an entry selects: a collision's body or bodies, its line or
  *  point; an action's object (EventLog's selectionOf). */

@@ -182,6 +182,21 @@ describe("EventLog", () => {
     expect(h.editor.ui.getState().highlight).toEqual(["line:w"]);
   });
 
+  it("the clicked entry, the one Event details shows, is marked selected; the others are not", async () => {
+    const { log } = await bodyLinePointLog("w");
+    const row = async (text: string) => (await within(log).findByText(text)).closest("tr")!;
+    const selected = () =>
+      Array.from(log.querySelectorAll("tbody tr[aria-selected='true']")).map((r) => r.textContent);
+    expect(selected()).toEqual([]);
+    fireEvent.click(await row("body–line"));
+    await waitFor(() => expect(selected()).toHaveLength(1));
+    expect(selected()[0]).toMatch(/body–line/);
+    expect((await row("body–line")).className).toMatch(/\bchosen\b/);
+    fireEvent.click(await row("action: add point"));
+    await waitFor(() => expect(selected()[0]).toMatch(/action: add point/));
+    expect(selected()).toHaveLength(1);
+  });
+
   it("the participants of a clicked entry stay lit only while the time stays at it (→ moved on, the canvas kept them)", async () => {
     // a (v = 4) meets the segment w at t = 2.25, then the point q at t = 6.75.
     const { h, log } = await bodyLinePointLog("a");

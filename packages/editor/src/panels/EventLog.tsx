@@ -2,7 +2,7 @@
  * The Event log: the events around the current time (time, kind, participants; an action entry says
  * what the action did). Clicking an entry
  * jumps there, highlights its participants, selects one (selectionOf) and makes it the selected event
- * (shown by EventDetails); a body filter keeps only
+ * (shown by EventDetails, and marked in the log: aria-selected, class "chosen"); a body filter keeps only
  * that body's events. An action entry's ✕ removes that action from the scene once confirmed by a
  * second press (RemoveActionButton); when the ✕ had the keyboard focus, the focus then goes to the
  * ✕ of the next action entry shown, else the previous one, else the log's table (removeFocus.ts),
@@ -16,7 +16,7 @@ import { useEffect, useId, useRef, useState } from "react";
 import { kindOfType } from "../doc/rename";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { LogEvent } from "../engineTypes";
-import { refOf } from "../remote/eventDetail";
+import { refKey, refOf } from "../remote/eventDetail";
 import type { EventPage, PageEvent } from "../remote/protocol";
 import type { Selection } from "../store/uiStore";
 import { formatNumber } from "./EditableCell";
@@ -118,6 +118,7 @@ export function EventLog() {
   const editor = useEditor();
   const t = useSlowTime();
   const filter = useUi((s) => s.eventFilter);
+  const selectedKey = refKey(useUi((s) => s.selectedEvent));
   const revision = useInfoValue((i) => i.revision);
   const body = filter.trim() === "" ? null : filter.trim();
   // Each page keeps the time it was read around: the view follows that time, so a page that
@@ -203,14 +204,18 @@ export function EventLog() {
             {spacerRow("before", win.before, 4)}
             {events.slice(win.start, win.end).map((e, j) => {
               const k = win.start + j;
-              const cls = e.time === t ? "current" : e.time < t ? "past" : undefined;
+              const chosen = selectedKey !== "" && refKey(refOf(e)) === selectedKey;
+              const cls = [e.time === t ? "current" : e.time < t ? "past" : "", chosen ? "chosen" : ""]
+                .filter(Boolean)
+                .join(" ");
               return (
                 <tr
                   // Rows are kept by position: while playing the page slides by dozens of events per
                   // refresh, and updating the text of existing rows costs far less layout and paint
                   // than replacing them (rows hold no state).
                   key={k}
-                  className={cls}
+                  className={cls || undefined}
+                  aria-selected={chosen}
                   tabIndex={0}
                   aria-describedby={hintId}
                   onClick={() =>

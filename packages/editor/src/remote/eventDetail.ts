@@ -31,6 +31,11 @@ export function refOf(e: LogEvent): EventRef {
   return ref;
 }
 
+/** A key that changes with the entry an EventRef names ("" for none). */
+export function refKey(ref: EventRef | null): string {
+  return ref === null ? "" : JSON.stringify([ref.time, ref.type, ref.ids, ref.action ?? null]);
+}
+
 /** The detail of the entry `ref` names, or null (see the header). */
 export function findEventDetail(tl: Log, ref: EventRef): EventDetail | null {
   if (!(typeof ref.time === "number" && Number.isFinite(ref.time))) return null;
