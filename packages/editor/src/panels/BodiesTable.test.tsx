@@ -21,21 +21,26 @@ function renderTable(editor: ReturnType<typeof testEditor>["editor"]): HTMLEleme
   return screen.getByRole("table", { name: "Bodies" });
 }
 
+/** A ball thrown sideways under gravity (vy = -10 t), its table rendered. */
+async function fallingBall() {
+  const h = testEditor();
+  await h.editor.loadScene(
+    {
+      format: "chapgame",
+      version: 1,
+      g: 0,
+      gravity: [0, -10],
+      actions: [{ time: 0, type: "addBody", id: "ball", x: 0, y: 100, r: 1, m: 1, v: [1, 0] }],
+    },
+    { undoable: false },
+  );
+  await settled(h.client);
+  return { h, table: renderTable(h.editor) };
+}
+
 describe("BodiesTable", () => {
   it("opening a cell while playing pauses; the velocity edit keeps vy of the paused time", async () => {
-    const h = testEditor();
-    await h.editor.loadScene(
-      {
-        format: "chapgame",
-        version: 1,
-        g: 0,
-        gravity: [0, -10],
-        actions: [{ time: 0, type: "addBody", id: "ball", x: 0, y: 100, r: 1, m: 1, v: [1, 0] }],
-      },
-      { undoable: false },
-    );
-    await settled(h.client);
-    const table = renderTable(h.editor);
+    const { h, table } = await fallingBall();
     const cell = (name: string) => within(table).getByLabelText(name);
     await waitFor(() => expect(cell("ball vy").textContent).toBe("0"));
     act(() => h.editor.ui.setState({ playing: true, t: 0.5 }));
@@ -52,19 +57,7 @@ describe("BodiesTable", () => {
   });
 
   it("a vx typed at once, before the row shows the paused time, keeps the vy of that time (audit: an old vy was committed)", async () => {
-    const h = testEditor();
-    await h.editor.loadScene(
-      {
-        format: "chapgame",
-        version: 1,
-        g: 0,
-        gravity: [0, -10],
-        actions: [{ time: 0, type: "addBody", id: "ball", x: 0, y: 100, r: 1, m: 1, v: [1, 0] }],
-      },
-      { undoable: false },
-    );
-    await settled(h.client);
-    const table = renderTable(h.editor);
+    const { h, table } = await fallingBall();
     const cell = (name: string) => within(table).getByLabelText(name);
     await waitFor(() => expect(cell("ball vy").textContent).toBe("0"));
     act(() => h.editor.ui.setState({ playing: true, t: 0.75 }));

@@ -11,20 +11,11 @@ import { describe, expect, it } from "vitest";
 import { dilutedGas } from "../scene/presets.js";
 import type { Action, SceneFile, Vec2 } from "../scene/types.js";
 import { ChapgameError } from "../sim/errors.js";
-import { coreOf, disc, expectSameKept, scene } from "./testSupport.js";
+import { coreOf, disc, expectSameKept, num, scene, seedFor, speed } from "./testSupport.js";
 import { Timeline } from "./timeline.js";
 
 const RUNS = Number(process.env.RUNS ?? 25);
-function seedFor(name: string): number {
-  // A fixed default keeps CI reproducible; set FC_SEED to explore others.
-  const seed = Number(process.env.FC_SEED || process.env.SEED || 20261122); // FC_SEED, as every property test (SEED still works)
-  console.log(`${name}: seed ${seed} (set FC_SEED to change)`);
-  return seed;
-}
 
-const num = (min: number, max: number) => fc.double({ min, max, noNaN: true, noDefaultInfinity: true });
-/** A velocity component: 0 or 0.1…5 in size. */
-const speed = fc.oneof(fc.constant(0), num(0.1, 5), num(-5, -0.1));
 const vec: fc.Arbitrary<Vec2> = fc.tuple(speed, speed);
 /** A kick: a fraction of the horizon, which disc (modulo their number), the new velocity. */
 const kick = fc.record({ at: num(0, 1), who: fc.nat(), v: vec });

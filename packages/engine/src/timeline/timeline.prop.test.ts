@@ -9,20 +9,11 @@ import type { Action, SceneFile } from "../scene/types.js";
 import type { BodyState } from "../sim/types.js";
 import { World } from "../sim/world.js";
 import { applyToWorld } from "./applyAction.js";
+import { num, seedFor, speed } from "./testSupport.js";
 import { Timeline } from "./timeline.js";
 
 const RUNS = Number(process.env.RUNS ?? 40);
-function seedFor(name: string): number {
-  // A fixed default keeps CI reproducible; set FC_SEED to explore others.
-  const seed = Number(process.env.FC_SEED || process.env.SEED || 20261122); // FC_SEED, as every property test (SEED still works)
-  console.log(`${name}: seed ${seed} (set FC_SEED to change)`);
-  return seed;
-}
 
-const num = (min: number, max: number) => fc.double({ min, max, noNaN: true, noDefaultInfinity: true });
-/** A velocity component: 0 or 0.1…5 in size (not 1e-134: such a disc reaches a wall at t ~ 1e135, where
- *  time has no resolution left; that is outside what these properties are about). */
-const speed = fc.oneof(fc.constant(0), num(0.1, 5), num(-5, -0.1));
 const bodyArb = fc.record({
   r: num(0.3, 1.4),
   vx: speed,
