@@ -1,11 +1,11 @@
 /**
  * End-to-end: the Time slider in Debian's Chromium: held while playing, clicked past an edit's
  * recomputation (the time stays where it was clicked), and its zoom (keyboard focus, wheel, typed
- * width).
+ * width); the energy plot, pressed and dragged to go to a time.
  */
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { openEditor, type Session, scrubTo, waitFor } from "./harness.js";
+import { currentTime, horizon, openEditor, type Session, scrubTo, waitFor } from "./harness.js";
 import { loadPresetOn } from "./presets.js";
 
 const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
@@ -133,5 +133,26 @@ describe("the Time slider", () => {
     expect(await range()).toEqual([from, to]);
     await page.getByRole("button", { name: "Whole history" }).click();
     expect(await range()).toEqual([0, 10]);
+  });
+});
+
+describe("the energy plot", () => {
+  it("a press pauses and goes to the time under the pointer; a drag follows it", async () => {
+    await loadPreset("Newton's cradle", "striker");
+    const plot = page.locator("svg.plot.clickable");
+    await plot.waitFor({ timeout: 15_000 });
+    await plot.scrollIntoViewIfNeeded();
+    await page.getByRole("button", { name: "Play" }).click();
+    const box = (await plot.boundingBox())!;
+    const end = await horizon(page);
+    await page.mouse.move(box.x + box.width * 0.25, box.y + box.height / 2);
+    await page.mouse.down();
+    const px = end / box.width; // the time one pixel spans
+    expect(Math.abs((await currentTime(page)) - end * 0.25)).toBeLessThan(2 * px);
+    // paused: the time stays under the pointer
+    expect(await page.getByRole("button", { name: "Play" }).count()).toBe(1);
+    await page.mouse.move(box.x + box.width * 0.75, box.y + box.height / 2, { steps: 4 });
+    await page.mouse.up();
+    expect(Math.abs((await currentTime(page)) - end * 0.75)).toBeLessThan(2 * px);
   });
 });

@@ -1,6 +1,7 @@
 /**
  * Stats: events per kind, actions, horizon, last event time, history size; kinetic energy and
- * momentum at the current time; a plot of energy and events over the computed span.
+ * momentum at the current time; a plot of energy and events over the computed span (a press on it
+ * pauses and goes to that time).
  */
 import { useEffect, useState } from "react";
 import { useEditor, useInfo } from "../EditorContext";
@@ -56,7 +57,14 @@ export function StatsPanel() {
           ))}
         </tbody>
       </table>
-      <EnergyPlot series={series} t={t} />
+      <EnergyPlot
+        series={series}
+        t={t}
+        onTime={(time) => {
+          editor.ui.setState({ playing: false });
+          editor.setTime(time);
+        }}
+      />
     </section>
   );
 }
