@@ -2,8 +2,9 @@
  * The Event log: the events around the current time (time, kind, participants; an action entry says
  * what the action did). Clicking an entry
  * jumps there, highlights its participants, selects one (selectionOf) and makes it the selected event
- * (shown by EventDetails, and marked in the log: aria-selected, class "chosen"); a body filter keeps only
- * that body's events. An action entry's ✕ removes that action from the scene once confirmed by a
+ * (shown by EventDetails, and marked in the log: aria-selected, class "chosen"); the filter keeps only
+ * one id's entries, or with ids separated by commas the entries they all take part in (a pair's
+ * collisions; remote/eventFilter.ts). An action entry's ✕ removes that action from the scene once confirmed by a
  * second press (RemoveActionButton); when the ✕ had the keyboard focus, the focus then goes to the
  * ✕ of the next action entry shown, else the previous one, else the log's table (removeFocus.ts),
  * once the log shows the scene without the action. An armed ✕ says "Press again to remove …" in the
@@ -177,8 +178,9 @@ export function EventLog() {
       <div className="row">
         <input
           aria-label="Filter by body"
-          placeholder="filter by body id"
-          size={12}
+          placeholder="id, or ids: a, b"
+          title="Shows only the entries of one body, line or point; with ids separated by commas, the entries they all take part in (a pair's collisions)"
+          size={14}
           value={filter}
           onChange={(e) => editor.ui.setState({ eventFilter: e.target.value })}
         />

@@ -35,6 +35,14 @@ describe("event queries", () => {
     expect(page.events.every((e) => e.ids.includes("c3"))).toBe(true);
   });
 
+  it("a pair filter ('c3, c4') keeps only the entries both take part in", () => {
+    const tl = cradle();
+    const page = eventPage(tl, 0.5, 10, 10, "c4, c3");
+    expect(page.events.map((e) => [e.time, e.type, [...e.ids].sort()])).toEqual([
+      [1, "bodyBody", ["c3", "c4"]],
+    ]);
+  });
+
   it("filtered at t = 0, a page holds the body's events at time 0 (its add body)", () => {
     const tl = cradle();
     const page = eventPage(tl, 0, 10, 10, "c3");

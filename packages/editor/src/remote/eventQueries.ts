@@ -7,6 +7,7 @@
  */
 import type { LogEvent } from "../engineTypes";
 import { withActionIndices } from "./actionIndices";
+import { eventFilter } from "./eventFilter";
 import type { EventPage, PageEvent } from "./protocol";
 import type { TimelineLike } from "./timelineLike";
 
@@ -42,7 +43,8 @@ function walkBack(tl: Log, t: number, steps: number): number {
 
 /**
  * Up to `before` events at or before t and `after` events after t, in time order (events sharing a
- * time count once per time when walking). With `body`, only that body's events, found by scanning
+ * time count once per time when walking). With a filter text `body` (eventFilter.ts: one id, or ids
+ * separated by commas that must all take part), only the entries it keeps, found by scanning
  * windows outward from t (at most FILTER_SCAN_LIMIT events per side). Action entries carry their
  * action's index (PageEvent.actionIndex).
  */
@@ -52,7 +54,8 @@ export function eventPage(tl: Log, t: number, before: number, after: number, bod
   // there, before a page or a filter keeps part of them.
   const actions = () => tl.actions;
   if (total === 0) return { first: -1, total, events: [] };
-  if (body === null) {
+  const test = body === null ? null : eventFilter(body);
+  if (test === null) {
     const t0 = walkBack(tl, t, before);
     const t1 = walkForward(tl, t, after) ?? t;
     const all = tl.eventsBetween(t0, t1);
@@ -62,7 +65,7 @@ export function eventPage(tl: Log, t: number, before: number, after: number, bod
     const events = withActionIndices(all, actions, (_e, i) => i >= from && i < mid + after);
     return { first: -1, total, events };
   }
-  const mine = (e: LogEvent) => e.ids.includes(body);
+  const mine = (e: LogEvent) => test(e.ids);
   const density = Math.max(tl.horizon / total, 1e-12);
   const back: PageEvent[] = [];
   const ahead: PageEvent[] = [];
