@@ -3,11 +3,14 @@
  * demo: B struck towards A, one collision at t = 100 − √9700), a click on the body–body entry of the
  * Event log shows that collision's exact velocities just before and just after it: the same numbers
  * the engine gives in Node (each cell's title holds the full value; its text is rounded to 6 digits).
+ * In a Newton's cradle, Next entry walks through the five collisions of one instant one by one, as
+ * the engine logs them.
  */
-import { originalDemo, Timeline } from "@chapgame/engine";
+import { newtonsCradle, originalDemo, Timeline } from "@chapgame/engine";
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { openEditor, type Session, screenshot } from "./harness.js";
+import { loadPresetOn } from "./presets.js";
 
 const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
 
@@ -83,5 +86,32 @@ describe("Event details", () => {
     const selected = page.getByRole("table", { name: "Bodies" }).locator("tr.selected");
     await poll(() => selected.getByLabel("B x", { exact: true }).count()).toBe(1);
     await screenshot(page, "event-details");
+  });
+
+  it("Next entry steps through a Newton's cradle's simultaneous collisions one by one", async () => {
+    const tl = Timeline.fromScene(newtonsCradle());
+    tl.prolongTo(10);
+    const chain = tl.eventsBetween(1, 1).filter((e) => e.type === "bodyBody");
+    expect(chain.length).toBeGreaterThan(2);
+    await loadPresetOn(page, "Newton's cradle", "striker");
+    const details = page.getByRole("region", { name: "Event details" });
+    await page
+      .getByRole("table", { name: "Event log" })
+      .getByRole("row")
+      .filter({ hasText: "body–body" })
+      .first()
+      .click();
+    const participants = () => details.locator("dd").nth(2).textContent();
+    const shown: (string | null)[] = [];
+    for (let k = 0; k < chain.length; k++) {
+      if (k > 0) await details.getByRole("button", { name: "Next entry ▶" }).click();
+      const want = chain[k]!.ids.join(", ");
+      await poll(participants).toBe(want);
+      shown.push(await participants());
+    }
+    expect(shown).toEqual(chain.map((e) => e.ids.join(", ")));
+    expect(await page.getByRole("slider", { name: "Time" }).inputValue()).toBe("1");
+    await details.getByRole("button", { name: "◀ Previous entry" }).click();
+    await poll(participants).toBe(chain[chain.length - 2]!.ids.join(", "));
   });
 });

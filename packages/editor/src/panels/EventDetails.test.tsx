@@ -1,7 +1,8 @@
 // @vitest-environment jsdom
 // The Event details panel: the hint before any entry is chosen; a click (or Enter) on a row of the
 // Event log shows that entry's exact before/after velocities; participants select their objects;
-// an edit that recomputes the entry away says so, and an undo brings the detail back.
+// an edit that recomputes the entry away says so, and an undo brings the detail back; Previous /
+// Next entry step through the log, and say so at its ends.
 import { act, cleanup, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
@@ -11,6 +12,7 @@ import { settled, testEditor } from "../testing/harness";
 import { sceneOf } from "../testing/scenes";
 import { EventDetails, participantSelection } from "./EventDetails";
 import { EventLog } from "./EventLog";
+import { NO_EARLIER, NO_LATER } from "./entryStep";
 
 afterEach(cleanup);
 
@@ -119,6 +121,36 @@ describe("EventDetails", () => {
       await settled(h.client);
     });
     await waitFor(() => expect(velocityRows(panel)[2]).toEqual(["b", "(0, 0)", "(2, 0)", "0", "2"]));
+  });
+
+  it("Previous / Next entry step through the log from the selected entry, and say so at its ends", async () => {
+    const h = await headOn();
+    const { log, panel } = renderPanels(h.editor);
+    const prev = within(panel).getByRole("button", { name: "◀ Previous entry" }) as HTMLButtonElement;
+    const next = within(panel).getByRole("button", { name: "Next entry ▶" }) as HTMLButtonElement;
+    expect(prev.disabled && next.disabled).toBe(true);
+    fireEvent.click((await within(log).findByText("body–body")).closest("tr") as HTMLElement);
+    await waitFor(() => expect(next.disabled).toBe(false));
+    // the log: add a, add b (t = 0), the collision (t = 2); nothing after it
+    const state = () => h.editor.ui.getState();
+    fireEvent.click(next);
+    await waitFor(() => expect(state().message?.text).toBe(NO_LATER));
+    expect(state().selectedEvent).toMatchObject({ time: 2, type: "bodyBody" });
+    fireEvent.click(prev);
+    await waitFor(() => expect(state().selectedEvent).toMatchObject({ ids: ["b"] }));
+    expect(state()).toMatchObject({
+      t: 0,
+      playing: false,
+      selection: { kind: "body", id: "b" },
+      highlight: ["body:b"],
+      selectedEvent: { time: 0, type: "action", action: "addBody", ids: ["b"] },
+    });
+    await waitFor(() => expect(fields(panel).participants).toBe("b"));
+    fireEvent.click(prev);
+    await waitFor(() => expect(fields(panel).participants).toBe("a"));
+    fireEvent.click(prev);
+    await waitFor(() => expect(state().message?.text).toBe(NO_EARLIER));
+    expect(state().selectedEvent).toMatchObject({ ids: ["a"] });
   });
 
   it("participantSelection: bodies, then the line or point of a collision; an action's object", () => {

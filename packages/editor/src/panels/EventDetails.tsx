@@ -6,7 +6,8 @@
  * Numbers are shown like the other panels' (formatNumber); a cell's title holds the full value.
  * Without a selected entry it says how to get one. The detail is read again whenever the timeline
  * changes (an edit recomputes the history): an entry the new history does not hold (or not yet, while
- * it is being recomputed) is said to be gone.
+ * it is being recomputed) is said to be gone. Previous entry / Next entry select the entry logged just
+ * before or after it (entryStep.ts), one by one also among entries of one instant.
  */
 import type { ReactNode } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
@@ -15,6 +16,7 @@ import { refKey } from "../remote/eventDetail";
 import type { Selection } from "../store/uiStore";
 import { formatNumber } from "./EditableCell";
 import { kindLabel, selectionOf } from "./EventLog";
+import { stepEntry } from "./entryStep";
 import { useRefreshed } from "./useRefreshed";
 
 /** Shortest interval between two reads while the timeline keeps changing (a computation). */
@@ -142,9 +144,30 @@ export function EventDetails() {
       </p>
     );
   else body = <Details d={read.detail} />;
+  const shown = read !== null && read.key === key && read.detail !== null;
   return (
     <section className="panel" aria-labelledby="event-details-title">
-      <h2 id="event-details-title">Event details</h2>
+      <div className="panel-head">
+        <h2 id="event-details-title">Event details</h2>
+        <span className="head-buttons">
+          <button
+            type="button"
+            disabled={!shown}
+            title="Select the entry logged just before this one (at the same time too)"
+            onClick={() => void stepEntry(editor, -1)}
+          >
+            ◀ Previous entry
+          </button>
+          <button
+            type="button"
+            disabled={!shown}
+            title="Select the entry logged just after this one (at the same time too)"
+            onClick={() => void stepEntry(editor, 1)}
+          >
+            Next entry ▶
+          </button>
+        </span>
+      </div>
       {body}
     </section>
   );

@@ -12,6 +12,7 @@ import { EditError } from "./errors";
 import type {
   EventPage,
   EventRef,
+  EventStep,
   Frame,
   HostMessage,
   Port,
@@ -189,6 +190,11 @@ export class TimelineClient {
    *  current history holds no such entry (protocol.ts `eventDetail`). */
   eventDetail(ref: EventRef): Promise<EventDetail | null> {
     return this.request({ op: "eventDetail", ref });
+  }
+  /** The entry logged just before (−1) or after (+1) the one `ref` names, with its detail and a ref
+   *  naming it; null at an end of the log or when no entry is named (protocol.ts `eventStep`). */
+  eventStep(ref: EventRef, step: 1 | -1): Promise<EventStep | null> {
+    return this.request({ op: "eventStep", ref, step });
   }
   series(n: number): Promise<SeriesPoint[]> {
     return this.request({ op: "series", n });

@@ -9,7 +9,7 @@
  */
 import type { Action, SceneFile } from "../engineTypes";
 import { errorInfo } from "./errors";
-import { findEventDetail } from "./eventDetail";
+import { findEventDetail, stepEventDetail } from "./eventDetail";
 import { eventPage, eventTicks } from "./eventQueries";
 import { HostCompute, type HostEnv } from "./hostCompute";
 import { packFrame } from "./packFrame";
@@ -136,6 +136,8 @@ export class TimelineHost extends HostCompute {
         return eventTicks(this.tl, r.n, r.lo, r.hi);
       case "eventDetail":
         return findEventDetail(this.tl, r.ref);
+      case "eventStep":
+        return stepEventDetail(this.tl, r.ref, r.step);
       case "series": {
         const tl = this.tl;
         const small =

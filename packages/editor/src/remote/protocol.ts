@@ -10,7 +10,17 @@
  * (canvas/frameAt.ts), so playback draws the exact time of every animation frame without waiting for
  * a round trip to the worker.
  */
-import type { Action, Counts, LineState, LogEvent, PointState, SceneFile, Until, Vec2 } from "../engineTypes";
+import type {
+  Action,
+  Counts,
+  EventDetail,
+  LineState,
+  LogEvent,
+  PointState,
+  SceneFile,
+  Until,
+  Vec2,
+} from "../engineTypes";
 
 export const FRAME_STRIDE = 11;
 export const F_X = 0;
@@ -139,7 +149,11 @@ export type Request =
   | { op: "series"; n: number }
   /** The detail of the log entry `ref` names (eventDetail.ts): an EventDetail, or null when the
    *  current history holds no such entry (an edit recomputed it away). */
-  | { op: "eventDetail"; ref: EventRef };
+  | { op: "eventDetail"; ref: EventRef }
+  /** The entry logged just before (step −1) or after (+1) the one `ref` names, with its detail
+   *  (eventDetail.ts stepEventDetail): an EventStep, or null at either end of the log or when the
+   *  history holds no entry `ref` names. */
+  | { op: "eventStep"; ref: EventRef; step: 1 | -1 };
 
 export type RequestMessage = Request & { id: number };
 
@@ -156,8 +170,8 @@ export type PageEvent = LogEvent & { actionIndex?: number };
  * A log entry named by what it shows (the Event log's rows carry no index, and an index would name
  * another entry once an edit recomputes the history): its time, kind, participants and, for an
  * action entry, the action's type. Entries alike in all of these at one time have the same detail
- * (an action's before/after spans its instant's whole group of actions), so the first one stands
- * for them.
+ * (an action's before/after spans its instant's whole group of actions); `nth` tells them apart
+ * where it matters (stepping from entry to entry), and a ref without it names the first.
  */
 export interface EventRef {
   time: number;
@@ -165,6 +179,15 @@ export interface EventRef {
   ids: string[];
   /** An action entry's action type; absent for a collision or a stop. */
   action?: NonNullable<LogEvent["action"]>;
+  /** How many entries alike (same time, kind, participants, action) come before it in the log;
+   *  absent for 0. */
+  nth?: number;
+}
+
+/** An entry reached by stepping through the log (op `eventStep`): its ref and its detail. */
+export interface EventStep {
+  ref: EventRef;
+  detail: EventDetail;
 }
 
 export interface EventPage {
