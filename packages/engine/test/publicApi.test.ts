@@ -67,6 +67,7 @@ const TIMELINE = [
   "eventRange",
   "eventDetail",
   "eventIndexAt",
+  "path",
   "eventAction",
   "prolongTo",
   "counts",

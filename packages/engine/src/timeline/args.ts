@@ -66,9 +66,9 @@ export function timeArg(method: string, name: string, t: number): number {
   return t;
 }
 
-/** stateAt's time: a number in [start, horizon] (-0 read as 0; start is the start of the kept
- *  history, 0 until forgetBefore); else a RangeError. */
-export function stateTime(t: unknown, horizon: number, start = 0): number {
+/** stateAt's time (or `method`'s argument `name`): a number in [start, horizon] (-0 read as 0; start
+ *  is the start of the kept history, 0 until forgetBefore); else a RangeError. */
+export function stateTime(t: unknown, horizon: number, start = 0, method = "stateAt", name = "t"): number {
   if (typeof t !== "number" || !(t >= start && t <= horizon)) {
     // Beyond the horizon is not computed yet, even when nothing more will happen (prolong said idle).
     const hint =
@@ -77,7 +77,9 @@ export function stateTime(t: unknown, horizon: number, start = 0): number {
         : typeof t === "number" && t >= 0 && t < start
           ? ": the history before it was forgotten (forgetBefore)"
           : "";
-    throw new RangeError(`stateAt: t must be a number in [${start}, ${horizon}], got ${show(t)}${hint}`);
+    throw new RangeError(
+      `${method}: ${name} must be a number in [${start}, ${horizon}], got ${show(t)}${hint}`,
+    );
   }
   return t === 0 ? 0 : t;
 }

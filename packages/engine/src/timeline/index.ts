@@ -1,4 +1,5 @@
 /** Barrel of src/timeline: the public exports of this folder. */
+export type { PathPiece } from "./path.js";
 export { Timeline } from "./timeline.js";
 export type {
   ApplyOptions,

@@ -15,6 +15,7 @@ import { keptIndex, keptTime } from "./kept.js";
 import { keyframeBytes } from "./keyframe.js";
 import { LogCursor } from "./logCursor.js";
 import { MotionTable } from "./motionTable.js";
+import { bodyPath, headlessBodyPath, type PathPiece } from "./path.js";
 import { K_ACTION } from "./records.js";
 import { headlessStateAt, stateAt } from "./replay.js";
 import type { EventDetail, LogEvent, SceneState, TimelineCounts } from "./types.js";
@@ -66,6 +67,29 @@ export class TimelineReader {
     const c = this.core;
     const at = stateTime(t, c.horizon, historyStart(c));
     return c.history ? stateAt(c, at, this.scratch) : headlessStateAt(c, at);
+  }
+
+  /**
+   * The exact path of body `id` over [from, to] (by default the whole kept history, historyStart to
+   * horizon): the motions it followed, in time order, each with the span it covers (PathPiece: p(t) =
+   * positionAt(t0, x0, vx, ax, min(t, tStop)), the same for y; the same numbers as stateAt). A piece
+   * ends where the body's motion changed (its collisions and stops, actions that restarted it);
+   * spans where the body does not exist give none, and pieces of no length (several events of the
+   * body at one instant) are left out. Without history only the current motion, from the last
+   * logged entry on, can be read. A time outside [historyStart, horizon] (or from > to) throws
+   * RangeError naming it, and so does an id no body of this timeline ever had. One pass over the
+   * records from `from` to `to` that replays only this body's.
+   */
+  path(id: string, from: number = this.historyStart, to: number = this.core.horizon): PathPiece[] {
+    const c = this.core;
+    if (typeof id !== "string" || !c.bodyIds.includes(id))
+      throw new RangeError(
+        `path: id must name a body of this timeline, got ${JSON.stringify(id) ?? String(id)}`,
+      );
+    const start = c.history ? historyStart(c) : c.lastLogged;
+    const t0 = stateTime(from, c.horizon, start, "path", "from");
+    const t1 = stateTime(to, c.horizon, t0, "path", "to");
+    return c.history ? bodyPath(c, id, t0, t1) : headlessBodyPath(c, id, t0, t1);
   }
 
   /** Time of the last event or action computed (where a run that ended idle ends). */

@@ -1,0 +1,131 @@
+/**
+ * bodyPath: a body's whole path over [from, to] as the exact motions it followed (Timeline.path).
+ *
+ * Contract: the pieces are in time order, each a BodyMotion (the motion as the World stores it:
+ * p(t) = positionAt(t0, x0, vx, ax, min(t, tStop)), the same for y) with the span [from, until] over
+ * which the body followed it. Evaluated there, a piece gives the same numbers as stateAt, bit for bit.
+ * A piece ends where the body's motion changed: a collision or stop of that body, an action that
+ * restarted it (an updateBody, giveVelocity, setGlobal, removeBody), or `to`. Pieces of no length
+ * (several events of the body at one instant: a Newton's cradle's chain) are left out; so the next
+ * piece's start can lie elsewhere than the last piece's end only where an action moved the body
+ * (updateBody x, y) or removed and added it again. Spans where the body does not exist give no piece.
+ *
+ * Cost: one pass over the records from the last keyframe at or before `from` to `to`, touching only
+ * the records of that body and the keyframes taken after actions (no other body is replayed).
+ */
+import type { BodyMotion } from "../sim/types.js";
+import type { TimelineCore } from "./core.js";
+import { type Keyframe, keyframeAtOrBefore, loadMotions } from "./keyframe.js";
+import { MotionTable, STRIDE } from "./motionTable.js";
+import { K_ACTION, K_BODY_BODY } from "./records.js";
+import { applyRecord } from "./replay.js";
+
+/**
+ * One piece of a body's path (Timeline.path): over [from, until] the body follows the motion
+ * (t0, x0, y0, vx, vy, ax, ay, tStop) exactly, as `World.motion` reports one: the position at t is
+ * `positionAt(t0, x0, vx, ax, min(t, tStop))` and the same with y0, vy, ay (`positionAt` is exported);
+ * t0 <= from, and the body rests from tStop on.
+ */
+export interface PathPiece extends BodyMotion {
+  /** Start of the span this motion covers (absolute time). */
+  from: number;
+  /** End of that span (absolute time; > from). */
+  until: number;
+}
+
+/** Number of the live body `id` in a keyframe's order, or null. */
+function liveNumber(kf: Keyframe, ids: readonly string[], id: string): number | null {
+  for (const n of kf.order) if (ids[n] === id) return n;
+  return null;
+}
+
+/** Body n's motion in `table` over [from, until]. */
+function pieceOf(table: MotionTable, n: number, from: number, until: number): PathPiece {
+  const d = table.data;
+  const o = n * STRIDE;
+  return {
+    from,
+    until,
+    t0: d[o] as number,
+    x0: d[o + 1] as number,
+    y0: d[o + 2] as number,
+    vx: d[o + 3] as number,
+    vy: d[o + 4] as number,
+    ax: d[o + 5] as number,
+    ay: d[o + 6] as number,
+    tStop: d[o + 7] as number,
+  };
+}
+
+/** Whether body n's motion row equals `row` (8 numbers: t0 … tEnd), bit for bit (NaN never occurs). */
+function sameMotion(table: MotionTable, n: number, row: Float64Array): boolean {
+  const d = table.data;
+  const o = n * STRIDE;
+  for (let k = 0; k < 8; k++) if (!Object.is(d[o + k], row[k])) return false;
+  return true;
+}
+
+/** The pieces of body `id` over [from, to] (historyStart <= from <= to <= horizon), with history. */
+export function bodyPath(core: TimelineCore, id: string, from: number, to: number): PathPiece[] {
+  const kfs = core.keyframes;
+  const rec = core.records;
+  let k = Math.max(0, keyframeAtOrBefore(kfs, from));
+  let kf = kfs[k] as Keyframe;
+  const table = new MotionTable(Math.max(16, kf.bodyCount));
+  loadMotions(kf, table);
+  let n = liveNumber(kf, core.bodyIds, id);
+  let start = from;
+  const saved = new Float64Array(8);
+  const out: PathPiece[] = [];
+  const close = (t: number) => {
+    if (n !== null && t > start) out.push(pieceOf(table, n, start, t));
+  };
+  // The keyframes taken at record i: after a group of actions, the motions the actions left (a
+  // periodic keyframe holds what the replay holds, and this body's records are all replayed).
+  const keyframesAt = (i: number) => {
+    while (
+      k + 1 < kfs.length &&
+      (kfs[k + 1] as Keyframe).record === i &&
+      (kfs[k + 1] as Keyframe).time <= to
+    ) {
+      kf = kfs[++k] as Keyframe;
+      if (!kf.afterActions) continue;
+      if (n !== null) saved.set(table.data.subarray(n * STRIDE, n * STRIDE + 8));
+      const before = n;
+      table.ensure(kf.bodyCount);
+      loadMotions(kf, table);
+      const after = liveNumber(kf, core.bodyIds, id);
+      if (after === before && after !== null && sameMotion(table, after, saved)) continue;
+      if (before !== null) {
+        // close with the motion it had: put it back for a moment
+        table.data.set(saved, before * STRIDE);
+        close(kf.time);
+        if (after !== null) loadMotions(kf, table);
+      }
+      n = after;
+      start = Math.max(kf.time, from);
+    }
+  };
+  for (let i = kf.record; i < rec.length; i++) {
+    // (a group of actions at or before `to` may be followed by a record after it)
+    keyframesAt(i);
+    const t = rec.time[i] as number;
+    if (t > to) break;
+    if (n === null || rec.kind[i] === K_ACTION) continue;
+    if (rec.a[i] !== n && !(rec.kind[i] === K_BODY_BODY && rec.b[i] === n)) continue;
+    close(t);
+    applyRecord(rec, i, table, kf);
+    start = Math.max(t, from);
+  }
+  keyframesAt(rec.length); // (the keyframes after the loop's last record, up to `to`)
+  close(to);
+  return out;
+}
+
+/** The pieces of body `id` over [from, to] of a timeline without history: only its current motion
+ *  (the span since the last logged entry; the caller checked from >= lastLogged). */
+export function headlessBodyPath(core: TimelineCore, id: string, from: number, to: number): PathPiece[] {
+  const w = core.world;
+  if (!w.hasBody(id) || !(to > from)) return [];
+  return [{ from, until: to, ...w.motion(id) }];
+}
