@@ -11,6 +11,7 @@ export type {
   LineKind,
   LineState,
   LogEvent,
+  PathPiece,
   PointState,
   SceneFile,
   SceneState,

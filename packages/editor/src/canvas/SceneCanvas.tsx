@@ -2,7 +2,8 @@
  * The scene view: a high-DPI canvas redrawn on animation frames, outside React (React renders this
  * component once; time, view and selection are read from the store each frame). Each animation frame
  * draws the current time: the latest Frame from the worker evaluated at that time (frameAt.ts), so
- * playback is smooth even when the worker answers late.
+ * playback is smooth even when the worker answers late. With the Path view on, the selected body's
+ * whole computed path is drawn under the discs (pathView.ts).
  * Pointer gestures are gestures.ts's; Escape (or a cancelled pointer) drops a drag under way. The
  * wheel zooms the view around the pointer, except a wheel that continues a page scroll (wheelLatch.ts).
  * It is an image to assistive technology (role="img"), named by what it shows (sceneLabel.ts: counts
@@ -20,6 +21,7 @@ import { drawStats } from "./drawStats";
 import { fitFrame } from "./fitScene";
 import { emptyFrame, frameAt } from "./frameAt";
 import { CanvasGestures } from "./gestures";
+import { PathView } from "./pathView";
 import { sceneLabel } from "./sceneLabel";
 import { type BodyActed, bodyActions, TrailRecorder } from "./trails";
 import { type Size, zoomAt } from "./viewTransform";
@@ -79,6 +81,10 @@ export function SceneCanvas() {
       },
     });
 
+    const pathView = new PathView(editor, () => {
+      dirty = true;
+    });
+
     let dpr = 1;
     const resize = () => {
       dpr = window.devicePixelRatio || 1;
@@ -133,6 +139,7 @@ export function SceneCanvas() {
         selection: s.selection,
         highlight: new Set(s.highlight),
         trails: s.trails ? trails.paths : null,
+        path: pathView.line?.points ?? null,
         overlay: gestures.overlay,
         pixelRatio: dpr,
       });
@@ -191,6 +198,7 @@ export function SceneCanvas() {
     window.addEventListener("keydown", onKey, { capture: true });
     return () => {
       cancelAnimationFrame(raf);
+      pathView.dispose();
       ro?.disconnect();
       unsubUi();
       removeWheelZoom();

@@ -21,6 +21,8 @@ export interface DrawOptions {
   highlight: ReadonlySet<string>;
   /** Recent world positions per body id, oldest first: x0, y0, x1, y1, ... */
   trails: ReadonlyMap<string, number[]> | null;
+  /** The Path view's line in world coordinates (x0, y0, x1, y1, ...; a NaN pair breaks it), or null. */
+  path?: Float64Array | null;
   overlay: Overlay | null;
   /** Device pixels per CSS pixel (the context is scaled by it). */
   pixelRatio: number;
@@ -91,6 +93,7 @@ export function drawFrame(
     }
     ctx.stroke();
   }
+  if (o.path) drawPath(ctx, o.path, view, size);
   // discs: screen coordinates computed once into a reused buffer (no allocation per disc)
   const d = f.data;
   const n = f.ids.length;
@@ -221,4 +224,25 @@ function drawOverlay(
   }
   ctx.stroke();
   ctx.setLineDash([]);
+}
+
+/** The Path view's line (under the discs): one stroke, broken at NaN pairs. */
+function drawPath(ctx: CanvasRenderingContext2D, pts: Float64Array, view: View, size: Size): void {
+  ctx.strokeStyle = "rgba(217,72,15,0.75)";
+  ctx.lineWidth = 1.5;
+  ctx.beginPath();
+  let open = false;
+  for (let k = 0; k + 1 < pts.length; k += 2) {
+    const x = pts[k]!;
+    const y = pts[k + 1]!;
+    if (Number.isNaN(x)) {
+      open = false;
+      continue;
+    }
+    const [sx, sy] = toScreen(view, size, x, y);
+    if (open) ctx.lineTo(sx, sy);
+    else ctx.moveTo(sx, sy);
+    open = true;
+  }
+  ctx.stroke();
 }

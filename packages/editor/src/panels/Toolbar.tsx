@@ -1,6 +1,11 @@
-/** The canvas tools (move/pan, velocity, cue, add disc/line/ray/segment/point), fit, trails, delete. */
+/**
+ * The canvas tools (move/pan, velocity, cue, add disc/line/ray/segment/point), fit, trails, the Path
+ * view (the selected body's whole computed path; a note says when no body is selected, or where a
+ * path too long to draw whole was cut), delete.
+ */
 import { useEditor, useUi } from "../EditorContext";
 import type { Tool } from "../store/uiStore";
+import { formatNumber } from "./EditableCell";
 
 const TOOLS: { tool: Tool; label: string; title: string }[] = [
   {
@@ -21,6 +26,9 @@ export function Toolbar() {
   const editor = useEditor();
   const tool = useUi((s) => s.tool);
   const trails = useUi((s) => s.trails);
+  const path = useUi((s) => s.path);
+  const bodySelected = useUi((s) => s.selection?.kind === "body");
+  const pathShown = useUi((s) => s.pathShown);
   const hasSelection = useUi((s) => s.selection !== null);
   return (
     <div className="toolbar" role="toolbar" aria-label="Tools">
@@ -47,6 +55,20 @@ export function Toolbar() {
         />{" "}
         Trails
       </label>
+      <label title="Draw the selected body's whole computed path, past and future">
+        <input
+          type="checkbox"
+          checked={path}
+          onChange={(e) => editor.ui.setState({ path: e.target.checked })}
+        />{" "}
+        Path
+      </label>
+      {path && !bodySelected && <small className="tool-note">select a body</small>}
+      {path && bodySelected && pathShown?.cutAt != null && (
+        <small className="tool-note">
+          drawn up to t = {formatNumber(pathShown.cutAt)} s (too long to draw whole)
+        </small>
+      )}
       <button type="button" disabled={!hasSelection} onClick={() => void editor.deleteSelection()}>
         Delete
       </button>

@@ -9,6 +9,7 @@
 import { drawStats } from "../canvas/drawStats";
 import type { Action, EventDetail, LogEvent, SceneFile, Until } from "../engineTypes";
 import { EditError } from "./errors";
+import type { PathLine } from "./pathLine";
 import type {
   EventPage,
   EventRef,
@@ -195,6 +196,10 @@ export class TimelineClient {
    *  naming it; null at an end of the log or when no entry is named (protocol.ts `eventStep`). */
   eventStep(ref: EventRef, step: 1 | -1): Promise<EventStep | null> {
     return this.request({ op: "eventStep", ref, step });
+  }
+  /** Body `id`'s whole computed path as a polyline (protocol.ts `path`), or null for no such body. */
+  path(id: string, maxPoints: number): Promise<PathLine | null> {
+    return this.request({ op: "path", body: id, maxPoints });
   }
   series(n: number): Promise<SeriesPoint[]> {
     return this.request({ op: "series", n });

@@ -7,12 +7,13 @@
  * with the engine's message in `info.stopped`, the history computed so far kept. An edit in the past,
  * or a rewrite of the scene, is answered once its later actions are checked (pendingEdit.ts).
  */
-import type { Action, SceneFile } from "../engineTypes";
+import type { Action, PathPiece, SceneFile } from "../engineTypes";
 import { errorInfo } from "./errors";
 import { findEventDetail, stepEventDetail } from "./eventDetail";
 import { eventPage, eventTicks } from "./eventQueries";
 import { HostCompute, type HostEnv } from "./hostCompute";
 import { packFrame } from "./packFrame";
+import { type PathLine, pathLine } from "./pathLine";
 import { DEFERRED } from "./pendingEdit";
 import { type RequestMessage, restoreTarget, UNDONE_DURING_CHECK } from "./protocol";
 import { EXACT_MAX_BODIES, EXACT_MAX_EVENTS, exactSeries } from "./series";
@@ -138,6 +139,8 @@ export class TimelineHost extends HostCompute {
         return findEventDetail(this.tl, r.ref);
       case "eventStep":
         return stepEventDetail(this.tl, r.ref, r.step);
+      case "path":
+        return this.pathOf(r.body, r.maxPoints);
       case "series": {
         const tl = this.tl;
         const small =
@@ -147,6 +150,19 @@ export class TimelineHost extends HostCompute {
         return small ? exactSeries(tl, r.n) : this.series.points(r.n);
       }
     }
+  }
+
+  /** Body id's path (pathLine.ts), or null when the history has no body of that id (the engine's
+   *  RangeError: not added yet, or a selection the worker's scene does not hold). */
+  private pathOf(id: string, maxPoints: number): PathLine | null {
+    let pieces: PathPiece[];
+    try {
+      pieces = this.tl.path(id);
+    } catch (e) {
+      if (e instanceof RangeError) return null;
+      throw e;
+    }
+    return pathLine(pieces, maxPoints);
   }
 
   private indexOf(ids: string[]): Map<string, number> {

@@ -153,7 +153,10 @@ export type Request =
   /** The entry logged just before (step −1) or after (+1) the one `ref` names, with its detail
    *  (eventDetail.ts stepEventDetail): an EventStep, or null at either end of the log or when the
    *  history holds no entry `ref` names. */
-  | { op: "eventStep"; ref: EventRef; step: 1 | -1 };
+  | { op: "eventStep"; ref: EventRef; step: 1 | -1 }
+  /** Body `body`'s whole computed path as a polyline of at most maxPoints points (pathLine.ts): a
+   *  PathLine, or null when no body of the timeline has that id. */
+  | { op: "path"; body: string; maxPoints: number };
 
 export type RequestMessage = Request & { id: number };
 

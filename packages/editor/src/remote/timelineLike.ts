@@ -2,7 +2,16 @@
  * The part of the engine's Timeline the editor's worker uses (docs/architecture.md), so the host can
  * be tested with the real Timeline and typed without depending on its private members.
  */
-import type { Action, Counts, EventDetail, LogEvent, SceneFile, SceneState, Until } from "../engineTypes";
+import type {
+  Action,
+  Counts,
+  EventDetail,
+  LogEvent,
+  PathPiece,
+  SceneFile,
+  SceneState,
+  Until,
+} from "../engineTypes";
 
 export interface TimelineLike {
   readonly actions: readonly Action[];
@@ -18,6 +27,7 @@ export interface TimelineLike {
   eventDetail(i: number): EventDetail;
   eventIndexAt(t: number): number;
   eventsBetween(t0: number, t1: number): LogEvent[];
+  path(id: string, from?: number, to?: number): PathPiece[];
   counts(): Counts;
   historyBytes(): number;
   toScene(): SceneFile;

@@ -47,6 +47,11 @@ export interface UiState {
   /** Bumped to ask the canvas to fit the view to the scene. */
   fitRequest: number;
   trails: boolean;
+  /** The Path view: the selected body's whole computed path drawn on the canvas (canvas/pathView.ts). */
+  path: boolean;
+  /** What the Path view draws: the body, and the time its path was cut at when too long to draw
+   *  whole (null: whole); null when it draws nothing. Written by the canvas, read by the toolbar. */
+  pathShown: { id: string; cutAt: number | null } | null;
   calc: CalcSettings;
   message: Message | null;
   newerWork: NewerWork | null;
@@ -68,6 +73,8 @@ export const initialUiState: UiState = {
   view: { cx: 0, cy: 0, scale: 1 },
   fitRequest: 0,
   trails: false,
+  path: false,
+  pathShown: null,
   calc: { useTime: true, seconds: 10, useEvents: false, events: 1000, autoExtend: true },
   message: null,
   newerWork: null,

@@ -1,0 +1,97 @@
+// PathView: the Path view keeps the selected body's whole path (the worker's pathLine of the engine's
+// Timeline.path), follows the selection and edits, publishes what it shows, and draws nothing when
+// off or when no body is selected.
+import { Timeline } from "@chapgame/engine";
+import { afterEach, describe, expect, it } from "vitest";
+import { PATH_MAX_POINTS, pathLine } from "../remote/pathLine";
+import { settled, testEditor } from "../testing/harness";
+import { sceneOf } from "../testing/scenes";
+import { PathView } from "./pathView";
+
+const scene = sceneOf(
+  [
+    { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [4, 0] },
+    { time: 0, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 3 },
+  ],
+  0,
+);
+
+/** The engine's own line for body id of `sc` computed to `horizon`. */
+function expected(id: string, horizon: number, sc = scene) {
+  const tl = Timeline.fromScene(sc, { compute: false });
+  tl.prolongTo(horizon);
+  return pathLine(tl.path(id), PATH_MAX_POINTS);
+}
+
+const views: PathView[] = [];
+afterEach(() => {
+  for (const v of views.splice(0)) v.dispose();
+});
+
+async function setup() {
+  const h = testEditor();
+  await h.editor.loadScene(scene, { undoable: false });
+  await settled(h.client);
+  let redraws = 0;
+  const view = new PathView(h.editor, () => redraws++);
+  views.push(view);
+  const until = async (check: () => boolean) => {
+    for (let k = 0; k < 200 && !check(); k++) await new Promise((r) => setTimeout(r, 5));
+    expect(check()).toBe(true);
+  };
+  return { ...h, view, until, redraws: () => redraws };
+}
+
+describe("PathView", () => {
+  it("draws nothing until the view is on and a body is selected; then the engine's path of it", async () => {
+    const { editor, client, view, until } = await setup();
+    editor.ui.setState({ selection: { kind: "body", id: "a" } });
+    await settled(client);
+    expect(view.line).toBeNull();
+    editor.ui.setState({ path: true });
+    await until(() => view.line !== null);
+    const horizon = client.getSnapshot().horizon;
+    expect(view.line).toEqual(expected("a", horizon));
+    expect(editor.ui.getState().pathShown).toEqual({ id: "a", cutAt: null });
+    // a line or point selected: nothing
+    editor.ui.setState({ selection: { kind: "line", id: "a" } });
+    expect(view.line).toBeNull();
+    expect(editor.ui.getState().pathShown).toBeNull();
+  });
+
+  it("follows the selection to another body, and an edit to the new history", async () => {
+    const { editor, client, view, until } = await setup();
+    editor.ui.setState({ path: true, selection: { kind: "body", id: "a" } });
+    await until(() => view.line !== null);
+    editor.ui.setState({ selection: { kind: "body", id: "b" } });
+    expect(view.line).toBeNull(); // never the other body's path meanwhile
+    await until(() => editor.ui.getState().pathShown?.id === "b");
+    const horizon = client.getSnapshot().horizon;
+    expect(view.line).toEqual(expected("b", horizon));
+    const before = view.line;
+    await editor.giveVelocity("b", [0, 1]); // at t = 0: b leaves upwards before a arrives
+    await settled(client);
+    await until(() => view.line !== before && view.line !== null);
+    const edited = Timeline.fromScene(client.getSnapshot().doc!, { compute: false });
+    edited.prolongTo(client.getSnapshot().horizon);
+    await until(() => JSON.stringify(view.line) === JSON.stringify(pathLine(edited.path("b"))));
+  });
+
+  it("turned off, it forgets the path and says it shows none", async () => {
+    const { editor, view, until } = await setup();
+    editor.ui.setState({ path: true, selection: { kind: "body", id: "a" } });
+    await until(() => view.line !== null);
+    editor.ui.setState({ path: false });
+    expect(view.line).toBeNull();
+    expect(editor.ui.getState().pathShown).toBeNull();
+  });
+
+  it("a body the history does not hold (yet) gives no path, and no error", async () => {
+    const { editor, client, view } = await setup();
+    editor.ui.setState({ path: true, selection: { kind: "body", id: "ghost" } });
+    await settled(client);
+    await new Promise((r) => setTimeout(r, 20));
+    expect(view.line).toBeNull();
+    expect(editor.ui.getState().message).toBeNull();
+  });
+});
