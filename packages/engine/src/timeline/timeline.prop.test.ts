@@ -1,10 +1,12 @@
 /**
  * Property tests of the Timeline on random scenes (discs with and without friction, finite and
- * infinite masses, in a box of four segments with a point). Each property logs its seed (fixed by
+ * infinite masses, in a box of four segments with a point), with each body's path checked against
+ * stateAt after an edit in the past. Each property logs its seed (fixed by
  * default, so CI is reproducible); explore others with FC_SEED=<n>.
  */
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
+import { positionAt } from "../physics/motion.js";
 import type { Action, SceneFile } from "../scene/types.js";
 import type { BodyState } from "../sim/types.js";
 import { World } from "../sim/world.js";
@@ -71,6 +73,27 @@ function observe(tl: Timeline, t: number, at: number[]): unknown {
     log: tl.eventsBetween(0, t),
     states: at.filter((x) => x <= tl.horizon).map((x) => tl.stateAt(x)),
   };
+}
+
+/**
+ * Every body's path (Timeline.path) gives stateAt's positions bit for bit at the start and middle of
+ * each piece, and no piece starts while the body is absent from stateAt.
+ */
+function expectPathsMatchStateAt(tl: Timeline, ids: string[]): void {
+  for (const id of ids) {
+    for (const p of tl.path(id)) {
+      expect(p.until).toBeGreaterThan(p.from);
+      for (const t of [p.from, (p.from + p.until) / 2]) {
+        const b = tl.stateAt(t).bodies.find((x) => x.id === id);
+        const tt = Math.min(t, p.tStop);
+        expect(b, `${id} at ${t}`).toBeDefined();
+        expect([b?.x, b?.y]).toStrictEqual([
+          positionAt(p.t0, p.x0, p.vx, p.ax, tt),
+          positionAt(p.t0, p.y0, p.vy, p.ay, tt),
+        ]);
+      }
+    }
+  }
 }
 
 describe("Timeline properties", () => {
@@ -151,6 +174,11 @@ describe("Timeline properties", () => {
         const loaded = Timeline.fromScene(tl.toScene());
         loaded.prolongTo(H);
         expect(observe(loaded, H, at)).toStrictEqual(observe(tl, H, at));
+        // each body's path across the edit agrees with stateAt
+        expectPathsMatchStateAt(
+          tl,
+          p.bodies.map((_, i) => `b${i}`),
+        );
       }),
       { seed: seedFor("past"), numRuns: RUNS, verbose: true },
     );
