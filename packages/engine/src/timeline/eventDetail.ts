@@ -11,7 +11,7 @@ import type { Action } from "../scene/types.js";
 import type { BodyState } from "../sim/types.js";
 import { touchedBodies } from "./applyAction.js";
 import type { TimelineCore } from "./core.js";
-import { type Keyframe, keyframeAtRecord, loadMotions } from "./keyframe.js";
+import { type Keyframe, keyframeAtRecord, liveNumber, loadMotions } from "./keyframe.js";
 import { MotionTable } from "./motionTable.js";
 import { K_ACTION, K_BODY_BODY } from "./records.js";
 import { describe } from "./replay.js";
@@ -51,12 +51,6 @@ function actionBody(a: Action): string | null {
   if (a.type === "removeBody") return a.id;
   const touched = touchedBodies(a);
   return touched === "all" ? null : touched;
-}
-
-/** Number of the live body `id` in a keyframe's order, or null. */
-function liveNumber(kf: Keyframe, ids: readonly string[], id: string): number | null {
-  for (const n of kf.order) if (ids[n] === id) return n;
-  return null;
 }
 
 /** Before: the motions before the instant's group of actions (`table`, `kf`); after: the keyframe

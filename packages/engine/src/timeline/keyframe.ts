@@ -82,6 +82,12 @@ export function snapshotProps(table: MotionTable, order: Uint32Array): Float64Ar
   return out;
 }
 
+/** Number of the live body `id` in a keyframe's order (`ids[n]` names body n), or null. */
+export function liveNumber(kf: Keyframe, ids: readonly string[], id: string): number | null {
+  for (const n of kf.order) if (ids[n] === id) return n;
+  return null;
+}
+
 /** Load a keyframe's motions into `table` (made large enough for kf.bodyCount bodies). */
 export function loadMotions(kf: Keyframe, table: MotionTable): void {
   table.ensure(kf.bodyCount);

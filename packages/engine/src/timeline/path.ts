@@ -15,7 +15,7 @@
  */
 import type { BodyMotion } from "../sim/types.js";
 import type { TimelineCore } from "./core.js";
-import { type Keyframe, keyframeAtOrBefore, loadMotions } from "./keyframe.js";
+import { type Keyframe, keyframeAtOrBefore, liveNumber, loadMotions } from "./keyframe.js";
 import { MotionTable, STRIDE } from "./motionTable.js";
 import { K_ACTION, K_BODY_BODY } from "./records.js";
 import { applyRecord } from "./replay.js";
@@ -31,12 +31,6 @@ export interface PathPiece extends BodyMotion {
   from: number;
   /** End of that span (absolute time; > from). */
   until: number;
-}
-
-/** Number of the live body `id` in a keyframe's order, or null. */
-function liveNumber(kf: Keyframe, ids: readonly string[], id: string): number | null {
-  for (const n of kf.order) if (ids[n] === id) return n;
-  return null;
 }
 
 /** Body n's motion in `table` over [from, until]. */
