@@ -1,8 +1,8 @@
 /**
  * End-to-end: keeping a scene author's work in Debian's Chromium. Opening a shared link never
  * loses the scene one was working on (Undo brings it back); an edit is kept by a reload that comes
- * right after it; a broken link or file says what is wrong and keeps the scene; the scene Clear
- * replaced is still what Undo brings back after a reload.
+ * right after it, and so is the time the tab was at; a broken link or file says what is wrong and
+ * keeps the scene; the scene Clear replaced is still what Undo brings back after a reload.
  */
 import { writeFileSync } from "node:fs";
 import { join } from "node:path";
@@ -65,6 +65,21 @@ describe("keeping work", () => {
     await page.reload(); // well within the autosave's 300 ms of quiet
     await page.getByRole("slider", { name: "Time" }).waitFor();
     await poll(() => cellText(first)).toBe("7");
+  });
+
+  it("a reload goes back to the time the tab was at, computed again when past the horizon", async () => {
+    const field = page.getByRole("textbox", { name: "Time (s)" });
+    const slider = page.getByRole("slider", { name: "Time" });
+    const horizon = Number(await slider.getAttribute("max"));
+    const far = horizon + 7.5;
+    await field.fill(String(far));
+    await field.press("Enter");
+    await poll(async () => Number(await slider.inputValue())).toBe(far);
+    await page.reload();
+    await slider.waitFor();
+    await poll(async () => Number(await slider.inputValue())).toBe(far);
+    await field.fill("0");
+    await field.press("Enter");
   });
 
   it("Clear then a reload: Undo still brings the cleared scene back", async () => {

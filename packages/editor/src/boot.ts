@@ -2,7 +2,8 @@
  * Start-up: the worker and its client, the Editor, the first scene (a shared link in the URL, else
  * the autosave of this tab or the newest one, else the default preset; a shared link is one undo
  * step over the autosave; so is the autosave over the scene a load replaced in that tab, kept beside
- * it), autosave per tab (autosave.ts), playback and keyboard.
+ * it), autosave per tab (autosave.ts), the time a reloaded tab was at (timeKeep.ts), playback and
+ * keyboard.
  */
 import { browserAutosaveEnv, clockTime, TabAutosave } from "./autosave";
 import { drawStats, resetDrawStats } from "./canvas/drawStats";
@@ -15,6 +16,7 @@ import { buildPreset, DEFAULT_PRESET } from "./presets";
 import { TimelineClient } from "./remote/client";
 import type { Port } from "./remote/protocol";
 import { createUiStore } from "./store/uiStore";
+import { keepTimeOnLeave, restoreKeptTime } from "./timeKeep";
 
 export interface FirstScene {
   scene: SceneFile;
@@ -108,6 +110,9 @@ export async function boot(): Promise<Editor> {
   if (/^#?scene=/.test(window.location.hash))
     history.replaceState(null, "", window.location.pathname + window.location.search);
   await loadFirstScene(editor, first);
+  // A reload of this tab goes back to the time it was at (timeKeep.ts), for the same scene only.
+  if (first.from === "autosave") void restoreKeptTime(editor, window.sessionStorage);
+  keepTimeOnLeave(editor, window, window.sessionStorage);
   // A reloaded tab whose scene is older than another tab's: say so (the notice offers it).
   const newer = autosave.newerOther();
   if (newer) editor.ui.setState({ newerWork: { tab: newer.tab, savedAt: newer.savedAt } });
