@@ -4,7 +4,7 @@
  * canvas in the path colour; unticking removes it. Pixels are read from the canvas itself.
  */
 import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { afterAll, beforeAll, describe, it } from "vitest";
 import { openEditor, type Session, screenshot, waitFor } from "./harness.js";
 import { loadPresetOn } from "./presets.js";
 

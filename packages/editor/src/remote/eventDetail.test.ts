@@ -71,7 +71,7 @@ describe("stepEventDetail", () => {
     const first = refOf(tl.event(0));
     const forward = walk(tl, first, 1);
     expect(forward).toHaveLength(n - 1);
-    forward.forEach((ref, k) => expect(matches(tl.event(k + 1), ref)).toBe(true));
+    for (const [k, ref] of forward.entries()) expect(matches(tl.event(k + 1), ref)).toBe(true);
     expect(forward.filter((r) => r.time === 1 && r.type === "bodyBody")).toHaveLength(5);
     const last = forward[forward.length - 1]!;
     expect(walk(tl, last, -1).map(refKey)).toEqual([first, ...forward.slice(0, -1)].reverse().map(refKey));
