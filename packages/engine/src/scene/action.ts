@@ -20,8 +20,8 @@ import {
   positive,
   vec2,
 } from "./fields.js";
-import { checkActionMagnitudes } from "./magnitudes.js";
-import { type Action, type ActionType, SCENE_DEFAULTS } from "./types.js";
+import { checkActionMagnitudes, lineDirection } from "./magnitudes.js";
+import { type Action, type ActionType, SCENE_DEFAULTS, type Vec2 } from "./types.js";
 
 type Reader = (o: Obj, key: string, path: string) => unknown;
 /** [key, reader, required] */
@@ -93,7 +93,7 @@ export function checkAction(raw: unknown, path: string): Action {
   if (type === "addLine") {
     const p1 = out.p1 as readonly number[];
     const p2 = out.p2 as readonly number[];
-    if (p1[0] === p2[0] && p1[1] === p2[1]) throw new SceneError(join(path, "p2"), "must differ from p1");
+    lineDirection(join(path, "p2"), p1 as Vec2, p2 as Vec2, "p1");
   }
   if (raw.until !== undefined) out.until = checkUntil(raw.until, join(path, "until"));
   checkActionMagnitudes(out as unknown as Action, path);

@@ -10,6 +10,7 @@ import {
   requireBounded,
   requireFieldRate,
   requireGravity,
+  requireLineDirection,
   requireRadius,
   requireVec,
   requireVelocity,
@@ -69,5 +70,16 @@ export function checkActionMagnitudes(a: Action, path: string): void {
       return;
     default:
       return;
+  }
+}
+
+/** sim/validate.ts requireLineDirection for a scene's line, as a SceneError at `path` (p1 and p2 as
+ *  the line will have them; `what` names the other point in the message). */
+export function lineDirection(path: string, p1: Vec2, p2: Vec2, what: string): void {
+  try {
+    requireLineDirection(path, p1, p2, what);
+  } catch (e) {
+    if (e instanceof ChapgameError && !(e instanceof SceneError)) throw new SceneError(path, e.reason);
+    throw e;
   }
 }

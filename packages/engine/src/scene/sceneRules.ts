@@ -9,6 +9,7 @@
 import { DiscGrid } from "./discGrid.js";
 import { SceneError } from "./errors.js";
 import { join } from "./fields.js";
+import { lineDirection } from "./magnitudes.js";
 import { discOverlapsLine, discOverlapsPoint } from "./overlap.js";
 import type { Action, LineKind, Vec2 } from "./types.js";
 
@@ -156,8 +157,7 @@ export function checkAndApply(view: SceneView, a: Action, path: string): void {
       } else {
         const old = need(view.lines, a.id, "line", view, path);
         line = { p1: a.p1 ?? old.p1, p2: a.p2 ?? old.p2, kind: a.kind ?? old.kind };
-        if (line.p1[0] === line.p2[0] && line.p1[1] === line.p2[1])
-          throw new SceneError(join(path, a.p2 ? "p2" : "p1"), "must differ from p1 and p2 of the line");
+        lineDirection(join(path, a.p2 ? "p2" : "p1"), line.p1, line.p2, "p1 and p2 of the line");
       }
       checkObstacle(view, path, `line ${q(a.id)}`, (b) =>
         discOverlapsLine(b.x, b.y, b.r, line.p1, line.p2, line.kind),

@@ -59,6 +59,60 @@ describe("Zeno watch: legitimate dense runs pass", () => {
   });
 });
 
+describe("Zeno watch: long finite bursts at one instant pass (bodies of very different masses)", () => {
+  /** Galperin's billiard with the discs `gap` apart: the wall, a disc of mass 1 and one of mass M. */
+  function galperinWorld(M: number, gap: number): World {
+    const w = new World({ g: 0 });
+    w.addLine("wall", [0, -10], [0, 10], "line");
+    w.addBody("small", { x: 1 + gap, y: 0, r: 1, m: 1 });
+    w.addBody("big", { x: 3 + 2 * gap, y: 0, r: 1, m: M, vx: -1 });
+    return w;
+  }
+
+  // Regression (review, session 19): started touching, the README's billiard was refused as a Zeno
+  // state from M = 1,700 on: its collisions all happen at t = 0, and the limit was 128 events.
+  it("Galperin's billiard started touching: the digits of pi at one instant, as with a gap", () => {
+    for (const [M, digits] of [
+      [1e4, 314],
+      [1e6, 3141],
+      [1e10, 314159],
+    ] as const) {
+      const touching = galperinWorld(M, 0);
+      const times = new Set<number>();
+      expect(touching.advance({}, (e) => times.add(e.time))).toEqual({ events: digits, reason: "idle" });
+      expect([...times]).toEqual([0]);
+      expect(galperinWorld(M, 1e-3).advance({}).events).toBe(digits);
+    }
+  });
+
+  it("a light disc between two heavy ones, all touching: a finite exchange at one instant", () => {
+    const w = new World({ g: 0 });
+    w.addBody("A", { x: 0, y: 0, r: 1, m: 1e6, vx: 1 });
+    w.addBody("B", { x: 2, y: 0, r: 1, m: 1 });
+    w.addBody("C", { x: 4, y: 0, r: 1, m: 1e6 });
+    const r = w.advance({});
+    expect(r.reason).toBe("idle");
+    expect(r.events).toBeGreaterThan(2000);
+    // momentum and energy kept through the burst
+    const bodies = w.bodies();
+    const p = bodies.reduce((s, b) => s + b.m * b.vx, 0);
+    const e = bodies.reduce((s, b) => s + 0.5 * b.m * b.vx * b.vx, 0);
+    expect(p).toBeCloseTo(1e6, 3);
+    expect(e / 5e5).toBeCloseTo(1, 9);
+  });
+
+  it("a disc jammed between two immovable discs is still reported at once (infinite masses are no spread)", () => {
+    const w = new World({ g: 0 });
+    w.addBody("L", { x: 0, y: 0, r: 1, m: Number.POSITIVE_INFINITY });
+    w.addBody("d", { x: 2, y: 0, r: 1, m: 1, vx: 1 });
+    w.addBody("R", { x: 4, y: 0, r: 1, m: Number.POSITIVE_INFINITY });
+    w.addBody("far", { x: 100, y: 0, r: 1, m: 1e12 });
+    const e = thrown(() => w.advance({}));
+    expect(e).toBeInstanceOf(SimulationError);
+    expect(String(e)).toMatch(/more than 257 events at the same instant t=0/);
+  });
+});
+
 describe("Zeno watch: states the model cannot pass are reported", () => {
   // Regression: the same crush converging on t = 0 instead of t = 7 ran 3e7 events and on (the
   // window was compared with 1e-6 × |t|, and |t| shrinks with the window).

@@ -9,7 +9,7 @@ import { ChapgameError } from "./errors.js";
 import { distanceToLine, type Line, type LineKind, makeLine, type Point } from "./obstacles.js";
 import { Simulator } from "./simulator.js";
 import type { LineState, PointState, Vec2 } from "./types.js";
-import { requireFields, requireId, requireLineKind, requireVec } from "./validate.js";
+import { requireFields, requireId, requireLineDirection, requireLineKind, requireVec } from "./validate.js";
 
 /** Contact distances are shortened by this factor before testing an overlap (OVERLAP_REL's slack). */
 const KEEP = 1 - OVERLAP_REL;
@@ -25,7 +25,7 @@ export class Placement extends Simulator {
     const a = requireVec("p1", p1);
     const c = requireVec("p2", p2);
     requireLineKind("kind", kind);
-    if (a[0] === c[0] && a[1] === c[1]) throw new ChapgameError("p2", "must differ from p1");
+    requireLineDirection("p2", a, c);
     const line = makeLine(id, a, c, kind);
     const hit = this.firstBodyWhere(
       (s) =>

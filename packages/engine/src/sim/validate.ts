@@ -30,6 +30,23 @@ export function requireBounded(path: string, v: unknown): number {
   return x;
 }
 
+/**
+ * A line's second point p2 given its first p1: a different point, at least RADIUS_MIN away along x
+ * or y. The line's direction is p2 - p1, whose square enters every contact test: below RADIUS_MIN
+ * it underflows, and a disc passed through the line or gained energy at it (review: p2 = p1 + 1e-170
+ * gave no collision at all). `path` names p2 (or p1 when p2 was kept); `what` says what the points
+ * are of ("p1", "p1 and p2 of the line").
+ */
+export function requireLineDirection(path: string, p1: Vec2, p2: Vec2, what = "p1"): void {
+  const d = Math.max(Math.abs(p2[0] - p1[0]), Math.abs(p2[1] - p1[1]));
+  if (d === 0) throw new ChapgameError(path, `must differ from ${what}`);
+  if (!(d >= RADIUS_MIN))
+    throw new ChapgameError(
+      path,
+      `must be at least ${RADIUS_MIN} from ${what} in x or y (got ${d}): a shorter direction underflows the contact tests`,
+    );
+}
+
 /** A velocity component given by an edit: 0, or between SPEED_MIN and MAGNITUDE_MAX in size. */
 export function requireVelocity(path: string, v: unknown): number {
   const x = requireBounded(path, v);

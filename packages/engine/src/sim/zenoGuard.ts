@@ -2,8 +2,9 @@
  * The Zeno guard: each collision or stop about to be processed is counted in the Zeno watch
  * (zenoWatch.ts) and, for a stop, in its push watch (pushWatch.ts), which throw a SimulationError
  * on a state the exact model cannot pass. Here the World tells them what they cannot see for
- * themselves: whether an immovable body moves, whether a stopping body moved at all, and which
- * bodies the event is about (for the message).
+ * themselves: whether an immovable body moves, whether a stopping body moved at all, the masses of the
+ * bodies in the event (a long burst at one instant among very different masses is finite), and
+ * which bodies the event is about (for the message).
  */
 import { EV_BODY, EV_STOP } from "./bodyStore.js";
 import { CellCrossings } from "./cellCrossings.js";
@@ -19,7 +20,16 @@ export class ZenoGuard extends CellCrossings {
     // were. The response's own refusal (a disc resting on an obstacle) is tested before this.
     const unmoved = kind === EV_STOP && this.stopsUnmoved(s);
     if (unmoved) this.zeno.push.check(this.store.ids[s] as string, true, this.now);
-    this.zeno.check(this.now, before, Math.max(1, this.store.slotCount), this.pumps, this.describeGuarded);
+    const b = this.store;
+    this.zeno.check(
+      this.now,
+      before,
+      Math.max(1, b.slotCount),
+      this.pumps,
+      this.describeGuarded,
+      kind === EV_STOP ? Number.POSITIVE_INFINITY : (b.m[s] as number),
+      kind === EV_BODY ? (b.m[b.evOther[s] as number] as number) : Number.POSITIVE_INFINITY,
+    );
     if (kind === EV_STOP) this.zeno.push.stop(this.store.ids[s] as string, unmoved, this.now);
   }
 

@@ -1,9 +1,13 @@
 // The Zeno watch alone: runs of simultaneous events, runs of windows that converge on a finite
 // time, and its counters carried through save/load.
 import { describe, expect, it } from "vitest";
-import { SIMULTANEOUS_EVENTS_PER_BODY, SIMULTANEOUS_EVENTS_PER_PAIR } from "../tolerances.js";
+import {
+  SIMULTANEOUS_EVENTS_PER_BODY,
+  SIMULTANEOUS_EVENTS_PER_MASS_SPREAD,
+  SIMULTANEOUS_EVENTS_PER_PAIR,
+} from "../tolerances.js";
 import { SimulationError } from "./errors.js";
-import { simultaneousLimit, ZenoWatch, zenoWindow } from "./zenoWatch.js";
+import { simultaneousLimit, simultaneousLimitWithSpread, ZenoWatch, zenoWindow } from "./zenoWatch.js";
 
 const never = () => false;
 const always = () => true;
@@ -63,6 +67,31 @@ describe("ZenoWatch", () => {
     z.check(5, 4, n, never);
     for (let i = 0; i < limit; i++) z.check(5, 5, n, never);
     expect(() => z.check(5, 5, n, never)).toThrow(/at the same instant t=5/);
+  });
+
+  it("allows SIMULTANEOUS_EVENTS_PER_MASS_SPREAD * n * sqrt(heaviest / lightest mass) of the instant's events", () => {
+    const n = 2;
+    const spread = 1000; // masses 1 and 1e6
+    const limit = SIMULTANEOUS_EVENTS_PER_MASS_SPREAD * spread * n;
+    expect(simultaneousLimitWithSpread(n, spread)).toBe(limit);
+    expect(simultaneousLimitWithSpread(n, 1)).toBe(simultaneousLimit(n)); // never below the plain one
+    expect(simultaneousLimitWithSpread(2, 1e12)).toBe(2 ** 26 - 2); // capped (save() packs the count)
+    const z = new ZenoWatch();
+    z.check(5, 4, n, never, undefined, 1, 1e6);
+    for (let i = 0; i < limit; i++) z.check(5, 5, n, never, undefined, 1, Number.POSITIVE_INFINITY);
+    const message = `more than ${limit + 1} events at the same instant t=5`;
+    expect(() => z.check(5, 5, n, never, undefined, 1, 1e6)).toThrow(message);
+    // saved and loaded mid-instant, the masses seen so far go with the counts
+    const copy = new ZenoWatch();
+    copy.load(z.save());
+    expect(() => copy.check(5, 5, n, never, undefined, 1, Number.POSITIVE_INFINITY)).toThrow(message);
+    // a new instant forgets the masses of the last one: immovable bodies and stops add none
+    const fresh = new ZenoWatch();
+    fresh.check(5, 4, n, never, undefined, 1, 1e6);
+    fresh.check(6, 5, n, never, undefined, 1, Number.POSITIVE_INFINITY);
+    for (let i = 0; i < simultaneousLimit(n); i++)
+      fresh.check(6, 6, n, never, undefined, 1, Number.POSITIVE_INFINITY);
+    expect(() => fresh.check(6, 6, n, never)).toThrow(`more than ${simultaneousLimit(n) + 1} events`);
   });
 
   it("an event that throws counts nothing: tried again, it throws the same message", () => {

@@ -4,8 +4,9 @@
  * throws a SimulationError when
  *
  * - more than SIMULTANEOUS_EVENTS_PER_BODY * n events (or SIMULTANEOUS_EVENTS_PER_PAIR per pair of
- *   bodies, when that is more) happen at one and the same instant (a resting contact, or a
- *   collapse that friction drives to one instant), or
+ *   bodies, or SIMULTANEOUS_EVENTS_PER_MASS_SPREAD * n * sqrt(heaviest / lightest finite mass of
+ *   the bodies in the events at that instant), whichever is most; at most 2^26 - 2) happen at one
+ *   and the same instant (a resting contact, or a collapse that friction drives to one instant), or
  * - while energy can be fed in (an immovable body moves), windows of
  *   W = max(ZENO_WINDOW_EVENTS, ZENO_WINDOW_EVENTS_PER_BODY * n) events keep getting shorter (each
  *   lasts at most ZENO_SHRINK times the one before) until one lasts no more than
@@ -18,13 +19,14 @@
  * disc rattling steadily between two walls at t = 1e5, and missed a crush converging on t = 0.)
  *
  * Its counters are part of the simulation's state: a World copied or rebuilt from a keyframe
- * carries them (`save` / `load`, four numbers and the push watch's streaks: the two event counts share one, exactly while
- * n < 2^20, beyond which the counts are capped), so that it throws at exactly the event the
- * original would. The time of the previous event is the World's time before the event, which a
+ * carries them (`save` / `load`, four numbers, the push watch's streaks and the instant's lightest
+ * and heaviest finite masses: the two event counts share one, exactly while n < 2^20, beyond which
+ * the counts are capped), so that it throws at exactly the event the original would. The time of the previous event is the World's time before the event, which a
  * copy or a rebuilt World has too.
  */
 import {
   SIMULTANEOUS_EVENTS_PER_BODY,
+  SIMULTANEOUS_EVENTS_PER_MASS_SPREAD,
   SIMULTANEOUS_EVENTS_PER_PAIR,
   ZENO_SHRINK,
   ZENO_STREAK_PROGRESS,
@@ -41,14 +43,22 @@ const COUNT_SPLIT = 2 ** 26;
 /**
  * The watch's counters: [start of the current window, duration of the window before, start of
  * the run of shrinking windows, events at the current instant + COUNT_SPLIT * events in the window,
- * the push watch's streaks].
+ * the push watch's streaks, the lightest and the heaviest finite mass in the current instant's
+ * events (Infinity and 0 when none)].
  */
-export type ZenoCounters = [number, number, number, number, PushStreaks];
+export type ZenoCounters = [number, number, number, number, PushStreaks, number, number];
 
 /** Events allowed at one instant in a world of n body slots (capped so that save() is exact). */
 export function simultaneousLimit(n: number): number {
   const perPair = SIMULTANEOUS_EVENTS_PER_PAIR * ((n * (n - 1)) / 2);
   return Math.min(Math.max(SIMULTANEOUS_EVENTS_PER_BODY * n, Math.floor(perPair)), COUNT_SPLIT - 2);
+}
+
+/** Events allowed at one instant with n body slots and a mass spread (sqrt of the ratio of the
+ *  heaviest to the lightest finite mass; see SIMULTANEOUS_EVENTS_PER_MASS_SPREAD). */
+export function simultaneousLimitWithSpread(n: number, spread: number): number {
+  const bySpread = Math.floor(SIMULTANEOUS_EVENTS_PER_MASS_SPREAD * spread * n);
+  return Math.min(Math.max(simultaneousLimit(n), bySpread), COUNT_SPLIT - 2);
 }
 
 /** Events in one window of the convergence test in a world of n body slots. */
@@ -58,6 +68,9 @@ export function zenoWindow(n: number): number {
 
 export class ZenoWatch {
   private sameTimeCount = 0;
+  /** Lightest and heaviest finite mass of the bodies in the events at the current instant. */
+  private massLo = INF;
+  private massHi = 0;
   private windowStart = -INF;
   private windowCount = 0;
   private lastProgress = INF;
@@ -67,19 +80,43 @@ export class ZenoWatch {
 
   /**
    * Count an event at `time`, the World's time before it being `before`, in a world of `n` body
-   * slots; throw if it reveals a Zeno state. `pumpsEnergy` is asked only at the end of a window that
-   * completes a converging run. `what` describes the event, for the message only.
+   * slots, between bodies of masses `ma` and `mb` (Infinity for an obstacle, a stop's second body
+   * or an immovable body); throw if it reveals a Zeno state. `pumpsEnergy` is asked only at the end
+   * of a window that completes a converging run. `what` describes the event, for the message only.
    */
-  check(time: number, before: number, n: number, pumpsEnergy: () => boolean, what?: () => string): void {
+  check(
+    time: number,
+    before: number,
+    n: number,
+    pumpsEnergy: () => boolean,
+    what?: () => string,
+    ma = INF,
+    mb = INF,
+  ): void {
     // Nothing is counted until the event has passed every test, so the same event, tried again
     // after a throw, throws the same message (as a World rebuilt from the saved counters does).
     const sameTime = time !== before ? 0 : this.sameTimeCount + 1;
-    if (sameTime > 0 && sameTime > simultaneousLimit(n)) {
+    let lo = sameTime > 0 ? this.massLo : INF;
+    let hi = sameTime > 0 ? this.massHi : 0;
+    if (ma < INF) {
+      lo = Math.min(lo, ma);
+      hi = Math.max(hi, ma);
+    }
+    if (mb < INF) {
+      lo = Math.min(lo, mb);
+      hi = Math.max(hi, mb);
+    }
+    if (
+      sameTime > simultaneousLimit(n) &&
+      sameTime > simultaneousLimitWithSpread(n, hi > lo ? Math.sqrt(hi / lo) : 1)
+    ) {
       throw new SimulationError(
         `more than ${sameTime} events at the same instant t=${time}${what === undefined ? "" : ` (the last: ${what()})`}: a Zeno state (resting contact, two discs pressed together, or an inelastic collapse) that the exact model cannot resolve`,
         time,
       );
     }
+    this.massLo = lo;
+    this.massHi = hi;
     const w = zenoWindow(n);
     if (this.windowCount + 1 < w) {
       this.sameTimeCount = sameTime;
@@ -110,6 +147,8 @@ export class ZenoWatch {
       this.runStart,
       this.sameTimeCount + COUNT_SPLIT * this.windowCount,
       this.push.save(),
+      this.massLo,
+      this.massHi,
     ];
   }
 
@@ -119,5 +158,7 @@ export class ZenoWatch {
     this.sameTimeCount = c[3] % COUNT_SPLIT;
     this.windowCount = (c[3] - this.sameTimeCount) / COUNT_SPLIT;
     this.push.load(c[4]);
+    this.massLo = c[5];
+    this.massHi = c[6];
   }
 }
