@@ -229,17 +229,19 @@ export class TabAutosave {
    */
   attach(editor: Editor, win: Window): () => void {
     const { client, ui } = editor;
-    let savedRevision = client.getSnapshot().docRevision;
+    // The scene last written: the confirmed one (Editor.confirmedDoc), never a change whose later
+    // actions are still being checked; its answer (confirmed or taken back) is heard below.
+    let savedDoc = editor.confirmedDoc();
     let timer: ReturnType<typeof setTimeout> | null = null;
     let autosaveFailed = false;
     /** `force`: write even when the scene did not change (the slot was pruned, or the id changed). */
     const save = (force = false) => {
       if (timer !== null) clearTimeout(timer);
       timer = null;
-      const now = client.getSnapshot();
-      if (now.docRevision === savedRevision && !force && !this.replacedPending) return;
-      savedRevision = now.docRevision;
-      const failed = now.doc ? this.save(now.doc, !force) : null;
+      const doc = editor.confirmedDoc();
+      if (doc === savedDoc && !force && !this.replacedPending) return;
+      savedDoc = doc;
+      const failed = doc ? this.save(doc, !force) : null;
       if (failed !== null && !autosaveFailed) ui.setState({ message: { text: failed, tone: "error" } });
       autosaveFailed = failed !== null; // said once, until autosave works again
     };
@@ -252,10 +254,12 @@ export class TabAutosave {
       if (s.last && s.last !== p.last) this.replacedBy(s.last);
       if (s.undone !== p.undone) this.undoneNow(s.undone);
     });
-    const unsubClient = client.subscribe(() => {
-      if (client.getSnapshot().docRevision === savedRevision || timer !== null) return;
+    const changed = () => {
+      if (editor.confirmedDoc() === savedDoc || timer !== null) return;
       timer = setTimeout(save, AUTOSAVE_DELAY_MS);
-    });
+    };
+    const unsubClient = client.subscribe(changed);
+    const unsubConfirmed = editor.unconfirmedStore.subscribe(changed);
     // A reload or a closed tab within the quiet delay of an edit keeps that edit.
     const onHide = () => save();
     win.addEventListener("pagehide", onHide);
@@ -321,6 +325,7 @@ export class TabAutosave {
       if (timer !== null) clearTimeout(timer);
       clearTimeout(adopt);
       unsubClient();
+      unsubConfirmed();
       unsubReplaced();
       unsubUi();
       win.removeEventListener("pagehide", onHide);

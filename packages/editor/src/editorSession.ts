@@ -72,10 +72,28 @@ export class EditorSession extends EditorCompute {
   portFactory: (() => Port) | null = null;
   /**
    * The scene before a change the host has not answered yet (an edit or a rewrite whose later
-   * actions it is still checking; its doc already shows the change): what a restarted engine loads,
-   * since the change is answered "engine restarted" and never recorded.
+   * actions it is still checking; its doc already shows the change), null when none is: what a
+   * restarted engine loads, since the change is answered "engine restarted" and never recorded, and
+   * what the autosave keeps meanwhile (confirmedDoc). A store, so the autosave hears the answer.
    */
-  protected unconfirmed: SceneFile | null = null;
+  readonly unconfirmedStore: Store<{ before: SceneFile | null }> = createStore<{ before: SceneFile | null }>({
+    before: null,
+  });
+  protected get unconfirmed(): SceneFile | null {
+    return this.unconfirmedStore.getState().before;
+  }
+  protected set unconfirmed(before: SceneFile | null) {
+    if (before !== this.unconfirmedStore.getState().before) this.unconfirmedStore.setState({ before });
+  }
+
+  /**
+   * The scene as far as it is confirmed: the current one, or while a change is being checked the
+   * scene before it (a reload then must not restore a scene the check may still refuse: review,
+   * session 19, a refused autosave replaced the user's 5,000 discs by the default scene).
+   */
+  confirmedDoc(): SceneFile | null {
+    return this.unconfirmed ?? this.client.getSnapshot().doc;
+  }
 
   /**
    * After Undo (`undo`) or Redo restored `scene` with the history `h`: a replacement whose step that
