@@ -15,6 +15,7 @@ import { MessageBar } from "./panels/MessageBar";
 import { NewerWorkNotice } from "./panels/NewerWorkNotice";
 import { PointsTable } from "./panels/PointsTable";
 import { PresetsMenu } from "./panels/PresetsMenu";
+import { RefusedSceneNotice } from "./panels/RefusedSceneNotice";
 import { SceneActions } from "./panels/SceneActions";
 import { SpeedPanel } from "./panels/SpeedPanel";
 import { StatePanel } from "./panels/StatePanel";
@@ -31,6 +32,7 @@ export function App() {
         <PresetsMenu />
         <MessageBar />
         <NewerWorkNotice />
+        <RefusedSceneNotice />
       </header>
       <main className="stage">
         <Toolbar />

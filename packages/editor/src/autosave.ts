@@ -27,6 +27,7 @@ import {
   slotKey,
   slotSavedAt,
   slotText,
+  unreadableSlot,
   writeReplaced,
   writeSlot,
 } from "./doc/autosaveSlots";
@@ -131,8 +132,13 @@ export class TabAutosave {
    * The scene to start with: this tab's own slot on a reload, else the most recently saved slot;
    * `note` says why a reloaded tab did not get its own scene back.
    */
+  /** Set by restore(): this tab's own slot when it holds a scene that does not parse (its text and why). */
+  unreadable: { text: string; reason: string } | null = null;
+
   restore(): { slot: Slot; note: string | null; replaced: Slot | null } | null {
     const own = this.reloaded ? readSlot(this.env.local, this.tab) : null;
+    // this tab's own slot that no longer parses: kept and announced at start (boot.ts), not dropped
+    this.unreadable = this.reloaded && own === null ? unreadableSlot(this.env.local, this.tab) : null;
     const slot = own ?? newestSlot(this.env.local);
     if (!slot) return null;
     this.lastText = slot.text;

@@ -8,6 +8,8 @@
 import { browserAutosaveEnv, clockTime, TabAutosave } from "./autosave";
 import { drawStats, resetDrawStats } from "./canvas/drawStats";
 import { sceneFromHash } from "./doc/persistence";
+import { keepRefused, readRefused } from "./doc/refusedScene";
+import { sceneText } from "./doc/sceneIo";
 import { Editor } from "./editor";
 import type { SceneFile } from "./engineTypes";
 import { bindKeyboard } from "./keyboard";
@@ -31,10 +33,17 @@ export interface FirstScene {
   error: string | null;
   /** Something to tell about the autosave restored (not this tab's own), or null. */
   note: string | null;
+  /** This tab's own autosave when it no longer parses (its text and why), to keep and announce. */
+  unreadable?: { text: string; reason: string } | null;
 }
 
 /** The scene to start with: a shared link in the URL, else the tab's autosave, else the default preset. */
 export function firstScene(hash: string, autosave: TabAutosave): FirstScene {
+  const first = chooseFirstScene(hash, autosave);
+  return autosave.unreadable ? { ...first, unreadable: autosave.unreadable } : first;
+}
+
+function chooseFirstScene(hash: string, autosave: TabAutosave): FirstScene {
   let error: string | null = null;
   const restored = autosave.restore();
   const saved = restored?.slot.scene ?? null;
@@ -77,19 +86,38 @@ export function firstScene(hash: string, autosave: TabAutosave): FirstScene {
 
 /**
  * Loads the first scene: over `previous` as one undo step when there is one (`undoNote` said), else
- * alone; the default preset when the engine refuses a scene that is not it.
+ * alone; the default preset when the engine refuses a scene that is not it. A refused autosave is
+ * kept in `local` and announced (uiStore refusedScene; RefusedSceneNotice offers it as a file).
  */
-export async function loadFirstScene(editor: Editor, first: FirstScene): Promise<void> {
+export async function loadFirstScene(
+  editor: Editor,
+  first: FirstScene,
+  local: Storage | null = null,
+): Promise<void> {
   let err: string | null;
   if (first.previous && (await editor.loadScene(first.previous, { undoable: false })) === null) {
     // A shared scene the engine refuses leaves the previous scene loaded (the message says why).
     if ((await editor.loadScene(first.scene)) === null && first.undoNote) editor.info(first.undoNote);
     err = null;
   } else err = await editor.loadScene(first.scene, { undoable: false });
+  // This tab's autosave refused (by the engine, or not parsing at all): kept (doc/refusedScene.ts)
+  // and said, not lost.
+  const refused =
+    err !== null && first.from === "autosave"
+      ? { text: sceneText(first.scene), reason: err }
+      : (first.unreadable ?? null);
+  if (refused) {
+    if (local) keepRefused(local, { ...refused, savedAt: Date.now() });
+    editor.ui.setState({ refusedScene: { reason: refused.reason } });
+  }
   if (err !== null && first.from !== "preset")
     err = await editor.loadScene(buildPreset(DEFAULT_PRESET), { undoable: false });
   if (first.error) editor.ui.setState({ message: { text: first.error, tone: "error" } });
   else if (first.note) editor.info(first.note);
+  // a scene refused at an earlier start whose notice was not dismissed
+  const kept = local ? readRefused(local) : null;
+  if (kept && editor.ui.getState().refusedScene === null)
+    editor.ui.setState({ refusedScene: { reason: kept.reason } });
 }
 
 export async function boot(): Promise<Editor> {
@@ -109,7 +137,7 @@ export async function boot(): Promise<Editor> {
   // scene a load replaced before the reload).
   if (/^#?scene=/.test(window.location.hash))
     history.replaceState(null, "", window.location.pathname + window.location.search);
-  await loadFirstScene(editor, first);
+  await loadFirstScene(editor, first, window.localStorage);
   // A reload of this tab goes back to the time it was at (timeKeep.ts), for the same scene only.
   if (first.from === "autosave") void restoreKeptTime(editor, window.sessionStorage);
   keepTimeOnLeave(editor, window, window.sessionStorage);

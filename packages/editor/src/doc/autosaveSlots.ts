@@ -94,6 +94,21 @@ export function readSlot(storage: Storage, tab: string, key = slotKey(tab)): Slo
   }
 }
 
+/**
+ * The slot of `tab` when it holds a scene that does not parse (damaged, or written by another
+ * version): its text and why it is refused; null when there is no slot or it is valid.
+ */
+export function unreadableSlot(storage: Storage, tab: string): { text: string; reason: string } | null {
+  const parts = split(storage.getItem(slotKey(tab)));
+  if (!parts) return null;
+  try {
+    parseSceneText(parts.text);
+    return null;
+  } catch (e) {
+    return { text: parts.text, reason: e instanceof Error ? e.message : String(e) };
+  }
+}
+
 /** The most recently saved slot holding a valid scene (other than `except`), or null. */
 export function newestSlot(storage: Storage, except: string | null = null): Slot | null {
   for (const s of listSlots(storage)) {

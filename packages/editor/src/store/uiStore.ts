@@ -55,6 +55,8 @@ export interface UiState {
   calc: CalcSettings;
   message: Message | null;
   newerWork: NewerWork | null;
+  /** A scene refused at start and kept (doc/refusedScene.ts): the reason, shown with its notice. */
+  refusedScene: { reason: string } | null;
   eventFilter: string;
   /** The Event log entry last clicked (or entered), whose detail the Event details panel shows;
    *  null until one is. Escape or a click elsewhere leave it. */
@@ -78,6 +80,7 @@ export const initialUiState: UiState = {
   calc: { useTime: true, seconds: 10, useEvents: false, events: 1000, autoExtend: true },
   message: null,
   newerWork: null,
+  refusedScene: null,
   eventFilter: "",
   selectedEvent: null,
   timeWindow: null,
