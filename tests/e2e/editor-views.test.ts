@@ -278,7 +278,14 @@ describe("editor views", () => {
         expect(canvas.height).toBeGreaterThanOrEqual(200);
         const slider = (await page.getByRole("slider", { name: "Time" }).boundingBox())!;
         expect(slider.width).toBeGreaterThanOrEqual(250);
-        for (const name of ["Back 1 second", "Previous event", "Next event", "Reverse", "Play", "Faster"]) {
+        for (const name of [
+          "−1 s: back 1 second",
+          "Previous event",
+          "Next event",
+          "−1×: play backwards",
+          "Play",
+          "+0.1: faster",
+        ]) {
           const button = page.getByRole("button", { name, exact: true });
           await button.scrollIntoViewIfNeeded();
           const box = (await button.boundingBox())!;

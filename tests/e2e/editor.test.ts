@@ -86,7 +86,7 @@ describe("editor end to end", () => {
 
   it("replays backwards with the Reverse button", async () => {
     await scrubTo(page, 2);
-    await page.getByRole("button", { name: "Reverse" }).click();
+    await page.getByRole("button", { name: "−1×: play backwards" }).click();
     await waitFor(async () => (await currentTime(page)) < 1.7);
     const t1 = await currentTime(page);
     await page.waitForTimeout(200);
@@ -207,7 +207,7 @@ describe("editor end to end", () => {
   });
 
   it("Galperin's billiard with 3 digits, computed until idle, counts 314 collisions", async () => {
-    await page.getByRole("button", { name: "∞" }).click();
+    await page.getByRole("button", { name: "∞: compute until no event is left" }).click();
     const select = page.getByRole("combobox", { name: "Preset" });
     await select.selectOption("galperin");
     await page.getByRole("spinbutton", { name: "Digits of π" }).fill("3");

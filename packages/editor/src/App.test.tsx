@@ -38,7 +38,16 @@ describe("App", () => {
 
   it("every control the end-to-end tests rely on has its accessible name", async () => {
     await renderApp();
-    for (const name of ["Play", "Reverse", "Next event", "Previous event", "Undo", "Redo", "Paste", "Copy"])
+    for (const name of [
+      "Play",
+      "−1×: play backwards",
+      "Next event",
+      "Previous event",
+      "Undo",
+      "Redo",
+      "Paste",
+      "Copy",
+    ])
       expect(screen.getByRole("button", { name })).toBeTruthy();
     expect(screen.getByRole("slider", { name: "Time" })).toBeTruthy();
     for (const name of ["Bodies", "Lines", "Points", "Event log"])

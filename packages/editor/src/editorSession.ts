@@ -181,6 +181,8 @@ export class EditorSession extends EditorCompute {
       t: options.keepTime ? s.t : 0,
       playing: options.keepTime ? s.playing : false,
       selection: options.keepTime ? s.selection : null,
+      // an entry of the other scene's log (Event details said an edit had removed it: review)
+      selectedEvent: options.keepTime ? s.selectedEvent : null,
       highlight: [],
       message: null,
       fitRequest: options.fit === false ? s.fitRequest : s.fitRequest + 1,

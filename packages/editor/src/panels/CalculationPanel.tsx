@@ -91,6 +91,7 @@ export function CalculationPanel() {
         <button
           type="button"
           aria-pressed={unlimited}
+          aria-label="∞: compute until no event is left"
           title="Compute until no event is left"
           onClick={() => set({ useTime: false, useEvents: false })}
         >

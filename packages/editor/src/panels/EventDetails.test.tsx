@@ -3,6 +3,8 @@
 // Event log shows that entry's exact before/after velocities; participants select their objects;
 // an edit that recomputes the entry away says so, and an undo brings the detail back; Previous /
 // Next entry step through the log, and say so at its ends.
+
+import { newtonsCradle } from "@chapgame/engine";
 import { act, cleanup, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
@@ -151,6 +153,19 @@ describe("EventDetails", () => {
     fireEvent.click(prev);
     await waitFor(() => expect(state().message?.text).toBe(NO_EARLIER));
     expect(state().selectedEvent).toMatchObject({ ids: ["a"] });
+  });
+
+  it("loading another scene forgets the selected entry (it belonged to the other scene's log)", async () => {
+    const h = await headOn();
+    const { log, panel } = renderPanels(h.editor);
+    fireEvent.click((await within(log).findByText("body–body")).closest("tr") as HTMLElement);
+    await waitFor(() => expect(fields(panel).kind).toBe("body–body"));
+    await act(async () => {
+      await h.editor.loadScene(newtonsCradle());
+      await settled(h.client);
+    });
+    expect(h.editor.ui.getState().selectedEvent).toBeNull();
+    expect(within(panel).getByText("Select an entry of the Event log to see its details.")).toBeTruthy();
   });
 
   it("participantSelection: bodies, then the line or point of a collision; an action's object", () => {

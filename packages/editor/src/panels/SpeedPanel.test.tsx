@@ -64,7 +64,7 @@ describe("SpeedPanel", () => {
         <SpeedPanel />
       </EditorContext.Provider>,
     );
-    fireEvent.click(screen.getByRole("button", { name: "Reverse" }));
+    fireEvent.click(screen.getByRole("button", { name: "−1×: play backwards" }));
     expect(editor.ui.getState()).toMatchObject({ speed: -1, playing: false });
     expect(editor.ui.getState().message?.text).toMatch(/^Playing backwards from t = 0: nothing before it/);
   });

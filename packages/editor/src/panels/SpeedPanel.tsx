@@ -1,5 +1,6 @@
 /**
- * Speed: −0.1, Reverse (−1×), Play/Pause, 1×, +0.1 and a speed field. Negative speeds replay
+ * Speed: −0.1, −1× (plays backwards), Play/Pause, 1× (plays forwards), +0.1 and a speed field. Each
+ * button's accessible name starts with its visible text (WCAG 2.5.3: "−1×: play backwards"). Negative speeds replay
  * backwards (exactly: every frame is stateAt of its time). Speed is not an edit (no undo step).
  * The field refuses what it cannot keep with a message starting "Speed:", which goes once it applies
  * a valid value (fieldMessages.ts); speed 0 pauses (editorTime.ts says so).
@@ -44,19 +45,39 @@ export function SpeedPanel() {
     <section className="panel" aria-labelledby="speed-title">
       <h2 id="speed-title">Speed</h2>
       <div className="row">
-        <button type="button" aria-label="Slower" onClick={() => editor.setSpeed(speed - 0.1)}>
+        <button
+          type="button"
+          aria-label="−0.1: slower"
+          title="Slower by 0.1"
+          onClick={() => editor.setSpeed(speed - 0.1)}
+        >
           −0.1
         </button>
-        <button type="button" aria-label="Reverse" onClick={() => play(-1)}>
+        <button
+          type="button"
+          aria-label="−1×: play backwards"
+          title="Play backwards at normal speed"
+          onClick={() => play(-1)}
+        >
           −1×
         </button>
         <button type="button" className="primary" onClick={() => editor.togglePlay()}>
           {playing ? "Pause" : "Play"}
         </button>
-        <button type="button" aria-label="Normal speed" onClick={() => play(1)}>
+        <button
+          type="button"
+          aria-label="1×: play forwards"
+          title="Play forwards at normal speed"
+          onClick={() => play(1)}
+        >
           1×
         </button>
-        <button type="button" aria-label="Faster" onClick={() => editor.setSpeed(speed + 0.1)}>
+        <button
+          type="button"
+          aria-label="+0.1: faster"
+          title="Faster by 0.1"
+          onClick={() => editor.setSpeed(speed + 0.1)}
+        >
           +0.1
         </button>
         <label>

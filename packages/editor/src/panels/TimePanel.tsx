@@ -139,17 +139,22 @@ export function TimePanel() {
       <div className="row">
         <button
           type="button"
-          aria-label="Back 1 second"
+          aria-label="−1 s: back 1 second"
           onClick={() => editor.setTime(editor.ui.getState().t - 1)}
         >
           −1 s
         </button>
-        <button type="button" aria-label="Go to start" title="Go to start" onClick={() => editor.setTime(0)}>
+        <button
+          type="button"
+          aria-label="0: go to start"
+          title="Go to start"
+          onClick={() => editor.setTime(0)}
+        >
           0
         </button>
         <button
           type="button"
-          aria-label="Forward 1 second"
+          aria-label="+1 s: forward 1 second"
           onClick={() => void editor.goTo(editor.ui.getState().t + 1)}
         >
           +1 s

@@ -2,7 +2,7 @@
 /**
  * Accessible names and hints of the panels: the Bodies, Lines and Points headings are their titles
  * alone (their Add button beside them, not inside: the heading read "Bodies (6) Add body"); the
- * "0" button is "Go to start" with that tooltip; each Event log entry is described by what
+ * "0" button is "0: go to start" with the tooltip "Go to start"; each Event log entry is described by what
  * activating it does.
  */
 import { cleanup, render, screen, waitFor, within } from "@testing-library/react";
@@ -48,9 +48,9 @@ describe("panel names", () => {
     }
   });
 
-  it('the "0" button is named "Go to start" and has that tooltip', async () => {
+  it('the "0" button is named "0: go to start" (its visible text first) with the tooltip "Go to start"', async () => {
     await renderPanels();
-    const button = screen.getByRole("button", { name: "Go to start" });
+    const button = screen.getByRole("button", { name: "0: go to start" });
     expect(button.textContent).toBe("0");
     expect(button.title).toBe("Go to start");
   });
