@@ -228,6 +228,16 @@ describe("BodiesTable with more bodies than rows", () => {
     expect(editor.doc.actions.at(-1)).toMatchObject({ type: "updateBody", id: "ball70", x: 1000 });
   });
 
+  it("typing a filter scrolls the list back to its top (the first matches were hidden above)", async () => {
+    const { table } = await manyBodies(70);
+    const box = table.closest(".table-scroll") as HTMLElement;
+    box.scrollTop = 400;
+    fireEvent.change(screen.getByRole("searchbox", { name: "Filter bodies by id" }), {
+      target: { value: "ball7" },
+    });
+    expect(box.scrollTop).toBe(0);
+  });
+
   it("Skip the Bodies table moves the focus to the first control after the table", async () => {
     await manyBodies(70);
     fireEvent.click(screen.getByRole("button", { name: "Skip the Bodies table" }));

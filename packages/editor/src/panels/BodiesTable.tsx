@@ -156,7 +156,11 @@ export function BodiesTable() {
             placeholder="filter by id"
             size={12}
             value={filter}
-            onChange={(e) => setFilter(e.target.value)}
+            onChange={(e) => {
+              setFilter(e.target.value);
+              // the matches start at the top: a scroll kept from the whole list hid the first ones
+              if (scrollRef.current) scrollRef.current.scrollTop = 0;
+            }}
           />
         </div>
       ) : null}
