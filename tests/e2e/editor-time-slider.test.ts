@@ -26,7 +26,7 @@ afterAll(async () => {
 describe("the Time slider", () => {
   it("holding the Time slider while playing holds the time there; letting go plays on", async () => {
     await loadPreset("Newton's cradle", "striker");
-    await page.getByRole("button", { name: "Play" }).click();
+    await page.getByRole("button", { name: "Play", exact: true }).click();
     const slider = page.getByRole("slider", { name: "Time" });
     const box = (await slider.boundingBox())!;
     await page.mouse.move(box.x + box.width * 0.3, box.y + box.height / 2);
@@ -37,7 +37,7 @@ describe("the Time slider", () => {
     expect(Number(await slider.inputValue())).toBe(held);
     await page.mouse.up();
     await waitFor(async () => Number(await slider.inputValue()) > held + 0.2);
-    await page.getByRole("button", { name: "Pause" }).click();
+    await page.getByRole("button", { name: "Pause", exact: true }).click();
   });
 
   it("a click on the Time slider past an edit's recomputation holds the time there (it snapped back to the progress)", async () => {
@@ -142,7 +142,7 @@ describe("the energy plot", () => {
     const plot = page.locator("svg.plot.clickable");
     await plot.waitFor({ timeout: 15_000 });
     await plot.scrollIntoViewIfNeeded();
-    await page.getByRole("button", { name: "Play" }).click();
+    await page.getByRole("button", { name: "Play", exact: true }).click();
     const box = (await plot.boundingBox())!;
     const end = await horizon(page);
     await page.mouse.move(box.x + box.width * 0.25, box.y + box.height / 2);
@@ -150,7 +150,7 @@ describe("the energy plot", () => {
     const px = end / box.width; // the time one pixel spans
     expect(Math.abs((await currentTime(page)) - end * 0.25)).toBeLessThan(2 * px);
     // paused: the time stays under the pointer
-    expect(await page.getByRole("button", { name: "Play" }).count()).toBe(1);
+    expect(await page.getByRole("button", { name: "Play", exact: true }).count()).toBe(1);
     await page.mouse.move(box.x + box.width * 0.75, box.y + box.height / 2, { steps: 4 });
     await page.mouse.up();
     expect(Math.abs((await currentTime(page)) - end * 0.75)).toBeLessThan(2 * px);

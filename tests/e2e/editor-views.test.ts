@@ -184,7 +184,7 @@ describe("editor views", () => {
 
   it("dragging a moving disc pauses playback and drops the disc where it is let go", async () => {
     await loadPreset("Newton's cradle", "striker");
-    await page.getByRole("button", { name: "Play" }).click();
+    await page.getByRole("button", { name: "Play", exact: true }).click();
     await waitFor(async () => Number(await page.getByRole("slider", { name: "Time" }).inputValue()) > 0.3);
     const at = await page.evaluate(() => {
       type Editor = {
@@ -211,7 +211,7 @@ describe("editor views", () => {
     await page.mouse.move(at.sx, at.sy - 80, { steps: 8 });
     await page.waitForTimeout(300);
     await page.mouse.up();
-    expect(await page.getByRole("button", { name: "Play" }).count()).toBe(1);
+    expect(await page.getByRole("button", { name: "Play", exact: true }).count()).toBe(1);
     expect(Number(await page.getByRole("slider", { name: "Time" }).inputValue())).toBe(pressedAt);
     await poll(async () =>
       Number(
@@ -255,6 +255,29 @@ describe("editor views", () => {
       await dismiss.click();
       await poll(() => alert.count()).toBe(0);
       expect(await canvasTop()).toBe(before);
+    } finally {
+      await page.setViewportSize({ width: 1400, height: 900 });
+    }
+  });
+
+  it("in an 800 x 600 window a long message takes its lines in the header: the toolbar stays usable", async () => {
+    await page.setViewportSize({ width: 800, height: 600 });
+    try {
+      const long = `${"A refused edit whose explanation runs over several lines of the header. ".repeat(4)}end`;
+      await page.evaluate((t) => {
+        type Ui = { ui: { setState(s: { message: { text: string; tone: "error" } | null }): void } };
+        (window as unknown as { chapgame: Ui }).chapgame.ui.setState({ message: { text: t, tone: "error" } });
+      }, long);
+      await poll(async () => (await page.getByRole("alert").textContent())?.includes("end")).toBe(true);
+      for (const name of ["Fit", "Delete", "Point"]) {
+        const button = page.getByRole("button", { name, exact: true });
+        const reachable = await button.evaluate((el) => {
+          const r = el.getBoundingClientRect();
+          return el.contains(document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2));
+        });
+        expect(reachable, `${name} is not covered`).toBe(true);
+      }
+      await page.getByRole("button", { name: "Dismiss message" }).click();
     } finally {
       await page.setViewportSize({ width: 1400, height: 900 });
     }

@@ -56,9 +56,9 @@ describe("editor end to end", () => {
   });
 
   it("plays and pauses", async () => {
-    await page.getByRole("button", { name: "Play" }).click();
+    await page.getByRole("button", { name: "Play", exact: true }).click();
     await waitFor(async () => (await currentTime(page)) > 0.3);
-    await page.getByRole("button", { name: "Pause" }).click();
+    await page.getByRole("button", { name: "Pause", exact: true }).click();
     const t = await currentTime(page);
     await page.waitForTimeout(300);
     expect(await currentTime(page)).toBe(t);
@@ -92,7 +92,7 @@ describe("editor end to end", () => {
     await page.waitForTimeout(200);
     const t2 = await currentTime(page);
     expect(t2).toBeLessThan(t1);
-    await page.getByRole("button", { name: "Pause" }).click();
+    await page.getByRole("button", { name: "Pause", exact: true }).click();
     expect(await page.getByRole("textbox", { name: "Speed", exact: true }).inputValue()).toBe("-1");
   });
 
@@ -195,9 +195,9 @@ describe("editor end to end", () => {
     await page.mouse.up();
     await poll(() => cellValue("b1 y")).toBeLessThan(y0);
     await page.getByRole("checkbox", { name: "Trails" }).check();
-    await page.getByRole("button", { name: "Play" }).click();
+    await page.getByRole("button", { name: "Play", exact: true }).click();
     await waitFor(async () => (await currentTime(page)) > 1);
-    await page.getByRole("button", { name: "Pause" }).click();
+    await page.getByRole("button", { name: "Pause", exact: true }).click();
     await screenshot(page, "09-bouncing-balls-trails");
     await scrubTo(page, 0);
     await page.locator("body").click({ position: { x: 5, y: 5 } });
