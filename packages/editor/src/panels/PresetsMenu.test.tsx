@@ -1,12 +1,13 @@
 // @vitest-environment jsdom
 // The digits field of Galperin's billiard keeps what is typed (it once snapped an emptied field to
 // 1 at once, so Backspace then "6" gave "16", clamped to 7) and clamps to 1..7 on blur and on load.
-import { cleanup, fireEvent, render, screen } from "@testing-library/react";
+import { cleanup, fireEvent, render, screen, waitFor } from "@testing-library/react";
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
 import type { Editor } from "../editor";
 import type { SceneFile } from "../engineTypes";
 import { buildPreset } from "../presets";
+import { testEditor } from "../testing/harness";
 import { PresetsMenu } from "./PresetsMenu";
 
 afterEach(cleanup);
@@ -73,5 +74,22 @@ describe("Presets menu: loading", () => {
     expect(calls).toEqual([{ reproducible: true }]);
     expect(infos).toHaveLength(1);
     expect(infos[0]).toMatch(/^Loaded the preset .+\. Undo returns to the scene you had\.$/);
+  });
+
+  it("Galperin's billiard is computed to its last collision: the count shows the digits of pi", async () => {
+    const h = testEditor();
+    render(
+      <EditorContext.Provider value={h.editor}>
+        <PresetsMenu />
+      </EditorContext.Provider>,
+    );
+    fireEvent.change(screen.getByRole("combobox", { name: "Preset" }), { target: { value: "galperin" } });
+    fireEvent.click(screen.getByRole("button", { name: "Load preset" }));
+    await waitFor(() => expect(h.editor.ui.getState().message?.text).toMatch(/3141 collisions, up to t = /), {
+      timeout: 10_000,
+    });
+    const c = h.client.getSnapshot().counts;
+    expect(c.bodyBody + c.bodyLine).toBe(3141);
+    expect(h.client.getSnapshot().computing).toBeNull();
   });
 });
