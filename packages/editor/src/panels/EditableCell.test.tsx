@@ -215,6 +215,27 @@ describe("EditableCell", () => {
     expect(screen.getAllByRole("alert").map((a) => a.textContent)).toEqual(["vx: must be a number"]);
   });
 
+  it("a refused draft closes when the time moves: a retry would apply at the new time (it saved r at t = 3 for t = 1)", async () => {
+    const { editor } = testEditor();
+    editor.ui.setState({ t: 1 });
+    const onCommit = vi.fn(async () => "ball1 r: would overlap ball2 at time 1");
+    render(
+      <EditorContext.Provider value={editor}>
+        <EditableCell label="ball1 r" value="0.3" onCommit={onCommit} />
+      </EditorContext.Provider>,
+    );
+    const input = open("ball1 r");
+    fireEvent.change(input, { target: { value: "100" } });
+    await act(async () => {
+      fireEvent.keyDown(input, { key: "Enter" });
+    });
+    expect(screen.getByRole("textbox", { name: "ball1 r" })).toBeTruthy();
+    act(() => editor.ui.setState({ t: 3 }));
+    expect(screen.queryByRole("textbox", { name: "ball1 r" })).toBeNull();
+    expect(screen.getByRole("button", { name: "ball1 r" }).textContent).toBe("0.3");
+    expect(onCommit).toHaveBeenCalledTimes(1);
+  });
+
   it("opened while the value changes (playing), follows it and commits nothing until typed in", async () => {
     // A cell opened during playback: the table refreshes to the paused time after it opened.
     const onCommit = vi.fn(async () => null);

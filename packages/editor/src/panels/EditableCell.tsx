@@ -5,7 +5,8 @@
  * the values of the time playback paused at once the table refreshes), and Enter or leaving it
  * commits nothing. Once the user has typed, Enter or leaving the input commits a changed draft through
  * `onCommit`, which resolves to an error message (the value is refused, the message shown in place,
- * the draft kept for correction) or null (accepted). A commit an Undo took back during its check
+ * the draft kept for correction, until the time moves: the draft then closes, since its row shows
+ * another time) or null (accepted). A commit an Undo took back during its check
  * (UNDONE_DURING_CHECK) closes the cell on the scene's value as an accepted one does: the Undo says
  * what it did, and the draft it undid is not committed again. Escape closes without committing.
  * A refusal is shown under the input and describes it (aria-describedby); it is an alert only when
@@ -70,6 +71,19 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
     if (refocus.current) refocus.current = false;
     else open();
   };
+  // A refused draft stays open for correction, at the time it was refused: once the time moves (the
+  // ±1 s buttons, the slider) the row shows another time, and a retry applied there (review: r = 0.35
+  // saved at t = 3 for a refusal at t = 1, without a word). The cell closes, dropping the draft.
+  const refused = edit !== null && error !== null;
+  useEffect(() => {
+    if (!refused || !editor) return;
+    return editor.ui.subscribe((s, p) => {
+      if (s.t !== p.t) {
+        setEdit(null);
+        setError(null);
+      }
+    });
+  }, [refused, editor]);
 
   const typed = edit?.typed ?? null;
 
