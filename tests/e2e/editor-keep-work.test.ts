@@ -1,7 +1,8 @@
 /**
  * End-to-end: keeping a scene author's work in Debian's Chromium. Opening a shared link never
  * loses the scene one was working on (Undo brings it back); an edit is kept by a reload that comes
- * right after it, and so is the time the tab was at; a broken link or file says what is wrong and
+ * right after it, and so is the time the tab was at; a link opened in the tab already open loads at
+ * once; a broken link or file says what is wrong and
  * keeps the scene; the scene Clear replaced is still what Undo brings back after a reload.
  */
 import { writeFileSync } from "node:fs";
@@ -106,6 +107,19 @@ describe("keeping work", () => {
     await page.getByRole("button", { name: "Undo" }).click();
     await poll(() => bodies().getByRole("row").count()).toBe(before);
     await poll(() => cell("lonely x").count()).toBe(0);
+  });
+
+  it("a shared link opened in the tab already open (only the hash changes) loads at once; Undo goes back", async () => {
+    const before = await bodies().getByRole("row").count();
+    expect(before).not.toBe(2);
+    await page.evaluate((code) => {
+      window.location.hash = `scene=${code}`;
+    }, shareCode(LONELY));
+    await poll(() => bodies().getByRole("row").count()).toBe(2);
+    await poll(message).toMatch(/^Opened the shared scene/);
+    await poll(() => new URL(page.url()).hash).toBe("");
+    await page.getByRole("button", { name: "Undo" }).click();
+    await poll(() => bodies().getByRole("row").count()).toBe(before);
   });
 
   it("after Share link a reload keeps later edits, with or without a clipboard", async () => {

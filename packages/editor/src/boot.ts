@@ -17,6 +17,7 @@ import { startPlayback } from "./playback";
 import { buildPreset, DEFAULT_PRESET } from "./presets";
 import { TimelineClient } from "./remote/client";
 import type { Port } from "./remote/protocol";
+import { listenForSharedLinks } from "./sharedLink";
 import { createUiStore } from "./store/uiStore";
 import { keepTimeOnLeave, restoreKeptTime } from "./timeKeep";
 
@@ -146,6 +147,7 @@ export async function boot(): Promise<Editor> {
   if (newer) editor.ui.setState({ newerWork: { tab: newer.tab, savedAt: newer.savedAt } });
 
   autosave.attach(editor, window);
+  listenForSharedLinks(editor, window);
   startPlayback(editor);
   bindKeyboard(editor);
   Object.assign(window, { chapgame: editor, chapgameStats: drawStats, chapgameResetStats: resetDrawStats });
