@@ -112,7 +112,13 @@ export function CalculationPanel() {
         </label>
         <span>
           horizon <span className="horizon">{formatNumber(horizon)}</span> s{idle ? " (no more events)" : ""}
-          {stopped !== null && <span title={stopped}> (stopped: the engine cannot go on)</span>}
+          {stopped !== null && (
+            <span title={stopped}>
+              {stopped.startsWith("the history holds")
+                ? " (stopped: history too large)"
+                : " (stopped: the engine cannot go on)"}
+            </span>
+          )}
         </span>
       </div>
       <EngineWatch />

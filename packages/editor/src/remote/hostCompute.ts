@@ -5,7 +5,7 @@
  * change of the timeline posts `info` (at most every INFO_EVERY_MS while computing; the revision
  * moves only then, so frames and info always agree). A computation the engine refuses to continue
  * (a Zeno state) ends with the engine's message in `info.stopped`, the history computed so far
- * kept. While a change's later actions are checked (pendingEdit.ts) its restore job runs on: a
+ * kept; so does one whose history grows past HISTORY_MAX_BYTES. While a change's later actions are checked (pendingEdit.ts) its restore job runs on: a
  * refusal takes the change back (takeBack), and once the history passes the check the change is
  * answered; a computation asked meanwhile starts once the old history is back (afterRestore).
  */
@@ -30,6 +30,14 @@ const ROUND_MS = 8;
 const INFO_EVERY_MS = 50;
 /** Wall-clock milliseconds one prolongSlice call should take (the event budget adapts to it). */
 const SLICE_MS = 3;
+/**
+ * A computation stops once the stored history (Timeline.historyBytes: records and keyframes) passes
+ * this many bytes, saying so in `info.stopped`: a scene that never comes to rest computed with ∞
+ * grew to 1.6 GB and ended in "Array buffer allocation failed" (review, session 19). About 10
+ * million events of a 200-disc gas; a browser tab has a few GB in all. A restore (history the user
+ * had, brought back after an edit) is not stopped: it was under the cap when it was computed.
+ */
+export const HISTORY_MAX_BYTES = 512 * 2 ** 20;
 /** While computing, energy/event samples are recorded at most this often (ms of wall-clock time). */
 const RECORD_EVERY_MS = 100;
 
@@ -164,6 +172,13 @@ export class HostCompute {
     const job = this.job;
     if (!job) return;
     const start = this.env.now();
+    if (!job.restore && this.tl.historyBytes() > HISTORY_MAX_BYTES) {
+      const mib = Math.round(this.tl.historyBytes() / 2 ** 20);
+      this.stopped = `the history holds ${mib} MiB (${this.tl.eventCount} entries), more than the ${HISTORY_MAX_BYTES / 2 ** 20} MiB the editor keeps: computing further could run the browser tab out of memory`;
+      this.job = null;
+      this.changed(false);
+      return;
+    }
     while (this.job === job && this.env.now() - start < ROUND_MS) {
       const until: Until = {};
       if (job.targetTime !== null) until.time = job.targetTime - this.tl.horizon;
