@@ -197,7 +197,8 @@ export interface WorldOptions {
    * located to within ulp(T).
    */
   time?: number | undefined;
-  /** Switches for the optimisations, each on by default (they exist for the benchmarks). */
+  /** Switches for the optimisations, each on by default (they exist for the benchmarks); each
+   *  given switch must be true or false (ChapgameError `optimizations.broadPhase`). */
   optimizations?: Optimizations | undefined;
 }
 

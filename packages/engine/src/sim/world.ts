@@ -44,6 +44,20 @@ const INF = Number.POSITIVE_INFINITY;
  * world.addBody("b", { x: 5, y: 0, r: 1, m: 1 });
  * world.advance({ untilTime: 10 }, (e) => console.log(e.kind, e.time)); // bodyBody 3
  */
+/** The switches of WorldOptions.optimizations. */
+const OPTIMIZATION_KEYS = [
+  "broadPhase",
+  "pathBounds",
+  "quadraticFastPath",
+  "restingSkip",
+  "recedingReject",
+] as const;
+
+/** A value as a message shows it: a string quoted (so "false" does not read as false). */
+function describe(v: unknown): string {
+  return typeof v === "string" ? JSON.stringify(v) : String(v);
+}
+
 export class World extends Edits {
   /**
    * A World with no bodies or obstacles. Options: `g` (friction field, default 9.81), `gravity`
@@ -52,14 +66,15 @@ export class World extends Edits {
    */
   constructor(options: WorldOptions = {}) {
     requireFields("options", options, ["g", "gravity", "time", "optimizations"]);
-    if (options.optimizations !== undefined)
-      requireFields("options.optimizations", options.optimizations, [
-        "broadPhase",
-        "pathBounds",
-        "quadraticFastPath",
-        "restingSkip",
-        "recedingReject",
-      ]);
+    if (options.optimizations !== undefined) {
+      requireFields("options.optimizations", options.optimizations, OPTIMIZATION_KEYS);
+      // Each switch a boolean: "no" or 3 would be taken as on.
+      for (const key of OPTIMIZATION_KEYS) {
+        const v = options.optimizations[key];
+        if (v !== undefined && typeof v !== "boolean")
+          throw new ChapgameError(`optimizations.${key}`, `must be true or false (got ${describe(v)})`);
+      }
+    }
     const g = requireFieldRate("g", options.g ?? 9.81);
     const gravity = requireGravity("gravity", options.gravity ?? [0, 0]);
     const time = requireTime("time", options.time ?? 0);
