@@ -117,6 +117,34 @@ export const SPEED_MIN = 1e-30;
 export const FIELD_MIN = 1e-30;
 
 /**
+ * Largest magnitude of a time given to the engine: an action's time in a scene or a Timeline, and
+ * the World's `time` option. A time enters the state as v·t and a·t²/2 (a body given a velocity at
+ * t = 1e300 was at x = 1e300 a moment later, beyond MAGNITUDE_MAX: audit of session 19); at
+ * MAGNITUDE_MAX, like a length, those products stay far inside the double range. Only given times
+ * are bounded: the simulation itself may run past it (`advance`, `prolong`, an action's
+ * `until.time`, which are limits of the computation), and what it reaches there (a keyframe, a
+ * motion's t0) is restored as it is. Far below this bound a time is already coarse: ulp(1e9) is
+ * 1.2e-7 (README: precision of absolute times).
+ */
+export const TIME_MAX = MAGNITUDE_MAX;
+
+/**
+ * Smallest and largest finite mass an edit may give (Infinity stays allowed: immovable). Masses
+ * enter the response as the shares 2 m2 / (m1 + m2), in (2e-80, 2) for masses within 1e±40, and the
+ * impulse 2 m1 m2 / (m1 + m2) · approach: m1·m2 stays within 1e±80, a normal double, so the plain
+ * formula holds (no rescaling), and an impulse or a momentum m·v at the speeds the contact
+ * polynomials allow (below about 1e70, see MAGNITUDE_MAX) stays within 1e110. A light body struck
+ * by a heavy one gains at most sqrt(M / m) ≤ 1e40 times the heavy one's speed (energy), so input
+ * speeds up to MAGNITUDE_MAX stay below 1e70 there. Outside, two discs of mass 1e308 reported an
+ * impulse of Infinity (2 m v overflows; Infinity means two immovable bodies) and 5e-324 left the
+ * impulses subnormal (audit of session 19). Within it: an electron (9.1e-31 kg) to a star (2e30 kg),
+ * Galperin's billiard to 9 digits (mass ratio 1e16) and beyond.
+ */
+export const MASS_MIN = 1e-40;
+/** Largest finite mass an edit may give (see MASS_MIN). */
+export const MASS_MAX = 1e40;
+
+/**
  * Cell side of the broad-phase grid relative to the largest diameter. Slightly above 1 so that a
  * body whose centre sits a rounding error outside its recorded cell still finds every partner it
  * can touch in the 3x3 neighbourhood.

@@ -252,7 +252,64 @@ describe("realRoots: regressions (fast-check clusters sampled at the cluster's o
   });
 });
 
+/** The roots, each within 4 ulps of an exact root (exact BigInt signs), and no exact zero at a non-root. */
+function expectRootsWithin4Ulps(c: readonly number[], roots: readonly number[]): void {
+  for (const r of roots) expect(ulpsToExactRoot(c, r), `root ${r} of ${c}`).toBeLessThanOrEqual(4);
+}
+
+describe("realRoots: unbounded intervals keep small roots (audit of session 19)", () => {
+  it("x² − c·x + 1 on [0, ∞): the small root ≈ 1/c to 4 ulps for c up to 1e308, never the non-root 0", () => {
+    for (const c of [1e150, 1e155, 1e158, 1e160, 1e165, 1e200, 1e300, 1e308]) {
+      const coeffs = [1, -c, 1];
+      const r = realRoots(coeffs, 0, Number.POSITIVE_INFINITY);
+      expect(r.length, `c = ${c}: ${r}`).toBe(2);
+      expectRootsWithin4Ulps(coeffs, r);
+      expect(r[0]).toBe(realRoots(coeffs, 0, 1)[0]); // the same bits as on [0, 1]
+      expect(realRoots([1, c, 1], Number.NEGATIVE_INFINITY, 0)).toEqual([
+        -(r[1] as number),
+        -(r[0] as number),
+      ]);
+    }
+  });
+  it("1 − 1e140 x² + 1e-140 x⁴ on (−∞, ∞): ±1e-70 and ±1e140, not 0", () => {
+    const c = [1, 0, -1e140, 0, 1e-140];
+    const r = realRoots(c, Number.NEGATIVE_INFINITY, Number.POSITIVE_INFINITY);
+    expect(r.length, `${r}`).toBe(4);
+    expectRootsWithin4Ulps(c, r);
+    expect((r[0] as number) / -1e140).toBeCloseTo(1, 12);
+    expect((r[1] as number) / -1e-70).toBeCloseTo(1, 12);
+    expect((r[2] as number) / 1e-70).toBeCloseTo(1, 12);
+    expect((r[3] as number) / 1e140).toBeCloseTo(1, 12);
+  });
+  it("x⁴ − 2^400 x³ + 1 on [0, ∞): the root near 2^-133 and the one near 2^400 (Cauchy's bound 2^400)", () => {
+    const c = [1, 0, 0, -(2 ** 400), 1];
+    const r = realRoots(c, 0, Number.POSITIVE_INFINITY);
+    expect(r.length, `${r}`).toBe(2);
+    expectRootsWithin4Ulps(c, r);
+    expect((r[1] as number) / 2 ** 400).toBeCloseTo(1, 12);
+  });
+  it("roots from 2^-200 to 2^300: each within 4 ulps, on [0, ∞) and on [2^-300, 2^1000] alike", () => {
+    const ks = [2 ** -200, 2 ** -3, 2 ** 100, 2 ** 300];
+    const c = fromRoots(ks);
+    const r = realRoots(c, 0, Number.POSITIVE_INFINITY);
+    expect(r.length, `${r}`).toBe(4);
+    expectRootsWithin4Ulps(c, r);
+    for (let i = 0; i < 4; i++) expect((r[i] as number) / (ks[i] as number)).toBeCloseTo(1, 12);
+    expect(realRoots(c, 2 ** -300, 2 ** 1000)).toEqual(r);
+  });
+});
+
 describe("realRoots: input validation", () => {
+  it("refuses coeffs that are not array-like, naming them (RangeError, like every bad argument)", () => {
+    for (const bad of [5, null, undefined, {}, true]) {
+      expect(() => realRoots(bad as unknown as number[], 0, 1)).toThrow(RangeError);
+      expect(() => realRoots(bad as unknown as number[], 0, 1)).toThrow(
+        /realRoots: coeffs must be an array-like/,
+      );
+    }
+    expect(() => realRoots({ length: -1 } as unknown as number[], 0, 1)).toThrow(/coeffs must be/);
+  });
+
   it("refuses non-finite coefficients, naming the field", () => {
     expect(() => realRoots([1, Number.NaN, 2], 0, 1)).toThrow(/coeffs\[1\] must be a finite number/);
     expect(() => realRoots([1, 2, Number.POSITIVE_INFINITY], 0, 1)).toThrow(/coeffs\[2\]/);

@@ -3,7 +3,8 @@
  * sorted ascending. Any degree; `coeffs` is any array-like of finite numbers (ascending powers).
  *
  * Method (see README.md): trim zero leading coefficients, scale by powers of two (exact), clamp
- * infinite or huge ends to Cauchy's root bound, drop leading terms negligible over the interval
+ * infinite or huge ends to Cauchy's root bound (an interval reaching from near 0 far beyond 1 is
+ * solved in pieces of one variable scaling each, solvePieces), drop leading terms negligible over the interval
  * (ROOTS_DEGREE_DROP, relative). Quartics first go through the hot path of quartic.ts (exact and
  * Bernstein sign tests, a single critical point, or subdivision into one-root pieces), which
  * settles almost all collision quartics; what it hands back takes the method below. Quick sign checks on p's Bernstein coefficients over [lo, hi]:
@@ -28,9 +29,11 @@
  * polynomial whose coefficients differ from the given ones by at most about 2.5·n·u relatively
  * (it cannot always be within 4 ulps of an exact root: with rounded coefficients the exact
  * polynomial may have no real root there at all). Limits: coefficients spread over more than
- * ~2^1000 (scaling underflows the small ones), and evaluation overflow in the plain phases.
+ * ~2^1000 (scaling underflows the small ones), and evaluation overflow in the plain phases. An
+ * infinite end is no limit: a root 1/c of x² − c·x + 1 on [0, ∞) is found to 1 ulp for any c.
  *
- * Errors: a non-finite coefficient or NaN end throws RangeError naming the field; lo > hi returns [];
+ * Errors: coeffs not array-like, a non-finite coefficient or a NaN end throws RangeError naming the
+ * field; lo > hi returns [];
  * a constant (or identically zero) polynomial has no isolated roots and returns []. Iteration caps
  * throw RootSolverError (never expected). Not re-entrant (module scratch buffers).
  * `realRootsInto(coeffs, lo, hi, out)`: the same into a caller's array (cleared; returns the count).
@@ -123,7 +126,7 @@ function criticalPoints(m: number, lo: number, hi: number): number {
 
 /** The distinct real roots of c0 + c1 t + … in [lo, hi], sorted ascending (see the module header). */
 export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): number[] {
-  if (coeffs.length === 5) {
+  if (coeffs?.length === 5) {
     const k = quarticRoots(coeffs, lo, hi);
     // Exact-size literals: cheaper than growing an empty array.
     if (k === 0) return [];
@@ -146,7 +149,7 @@ export function realRoots(coeffs: ArrayLike<number>, lo: number, hi: number): nu
  * call on the benchmark's quartics, a third of the solve.)
  */
 export function realRootsInto(coeffs: ArrayLike<number>, lo: number, hi: number, out: number[]): number {
-  if (coeffs.length === 5) {
+  if (coeffs?.length === 5) {
     const k = quarticRoots(coeffs, lo, hi);
     if (k >= 0) {
       for (let i = 0; i < k; i++) out[i] = found[i] as number;
@@ -167,11 +170,15 @@ function describe(v: unknown): string {
 
 /** Everything but the quartic hot path (quartic.ts); out is empty. */
 function general(coeffs: ArrayLike<number>, lo: number, hi: number, out: number[]): number[] {
+  const len = coeffs === null || coeffs === undefined ? undefined : coeffs.length;
+  if (typeof len !== "number" || !(len >= 0 && len <= Number.MAX_SAFE_INTEGER && Math.floor(len) === len))
+    throw new RangeError(
+      `realRoots: coeffs must be an array-like of finite numbers, got ${describe(coeffs)}`,
+    );
   if (typeof lo !== "number" || Number.isNaN(lo))
     throw new RangeError(`realRoots: lo must be a number, got ${describe(lo)}`);
   if (typeof hi !== "number" || Number.isNaN(hi))
     throw new RangeError(`realRoots: hi must be a number, got ${describe(hi)}`);
-  const len = coeffs.length;
   let n = -1;
   let maxAbs = 0;
   for (let i = 0; i < len; i++) {
@@ -194,9 +201,89 @@ function general(coeffs: ArrayLike<number>, lo: number, hi: number, out: number[
   if (hi > B) hi = B;
   if (lo > hi) return out;
   const M = Math.max(-lo, hi, lo, -hi);
+  const xs = variableScale(n, M);
+  if (xs > 0) {
+    // The variable scaled by 2^-xs maps |t| down to the interval's least magnitude m; below
+    // 2^-(256/n + 1) of the top the scaled terms and roots would reach the subnormal range (a root
+    // 1/c of x² − c·x + 1 on [0, ∞) came out as 0): such an interval is solved in pieces.
+    const m = lo > 0 ? lo : hi < 0 ? -hi : 0;
+    if (m === 0 || (xs - exponentOf(m) - 1) * n > 256) {
+      solvePieces(coeffs, n, maxAbs, lo, hi, out);
+      return out;
+    }
+  }
+  solveRange(coeffs, n, maxAbs, lo, hi, xs, out);
+  return out;
+}
+
+/** The variable's scale exponent for an interval of magnitude M: 0 when |log2 M|·n ≤ 256, else ⌊log2 M⌋ + 1. */
+function variableScale(n: number, M: number): number {
+  // Fast test first (|log2 M|·n ≤ 256 ⇐ 2^(-256/n) ≤ M ≤ 2^(256/n)); exponents only when it fails.
+  const lim = n < MOD_LIMIT.length ? (MOD_LIMIT[n] as number) : 1;
+  if (M <= lim && (M >= 1 / lim || M === 0)) return 0;
+  const eM = M > 0 && M < Number.POSITIVE_INFINITY ? exponentOf(M) : 0;
+  return n * Math.abs(eM) > 256 ? eM + 1 : 0;
+}
+
+/** Roots of one piece, scaled back (solvePieces). */
+const pieceOut: number[] = [];
+
+/**
+ * An interval reaching far beyond 1 in magnitude from near 0 (an infinite end clamped to a large
+ * Cauchy bound): solved in pieces, each within one variable scaling, ascending: |t| ≤ 2^W (W =
+ * ⌊256/n⌋, no variable scaling, as a moderate interval), then 2^(W + k·w) ≤ |t| ≤ 2^(W + (k+1)·w)
+ * (w = max(W, 1)), where the scaled variable stays within [2^-(w+1), 1] and every term that matters
+ * there stays normal. Adjacent pieces share their end, so that no sign change falls between them;
+ * a root at a shared end is reported once.
+ */
+function solvePieces(
+  coeffs: ArrayLike<number>,
+  n: number,
+  maxAbs: number,
+  lo: number,
+  hi: number,
+  out: number[],
+): void {
+  const W = Math.floor(256 / n);
+  const w = W > 0 ? W : 1;
+  const M = Math.max(-lo, hi);
+  let top = W;
+  while (mulPow2(1, top) < M) top += w;
+  for (let e = top; e > W; e -= w)
+    solvePiece(coeffs, n, maxAbs, Math.max(lo, -mulPow2(1, e)), Math.min(hi, -mulPow2(1, e - w)), out);
+  solvePiece(coeffs, n, maxAbs, Math.max(lo, -mulPow2(1, W)), Math.min(hi, mulPow2(1, W)), out);
+  for (let e = W + w; e <= top; e += w)
+    solvePiece(coeffs, n, maxAbs, Math.max(lo, mulPow2(1, e - w)), Math.min(hi, mulPow2(1, e)), out);
+}
+
+/** One piece of solvePieces: its roots appended to out, above the last one there. */
+function solvePiece(
+  coeffs: ArrayLike<number>,
+  n: number,
+  maxAbs: number,
+  lo: number,
+  hi: number,
+  out: number[],
+): void {
+  if (lo > hi) return;
+  pieceOut.length = 0;
+  solveRange(coeffs, n, maxAbs, lo, hi, variableScale(n, Math.max(-lo, hi, lo, -hi)), pieceOut);
+  for (let i = 0; i < pieceOut.length; i++) push(out, pieceOut[i] as number);
+}
+
+/** [lo, hi] (clamped) with the variable scaled by 2^xs; appends the roots to out, which is empty. */
+function solveRange(
+  coeffs: ArrayLike<number>,
+  n: number,
+  maxAbs: number,
+  lo: number,
+  hi: number,
+  xs: number,
+  out: number[],
+): void {
   // Exact power-of-two scaling: coefficients to about 1 and, for extreme intervals, the variable
   // (t = 2^xs·s) so that |s| ≤ 1; the roots are unchanged (up to that exact factor).
-  const xs = normalise(coeffs, n, maxAbs, M);
+  normalise(coeffs, n, maxAbs, xs);
   if (xs !== 0) {
     lo = mulPow2(lo, -xs);
     hi = mulPow2(hi, -xs);
@@ -217,27 +304,19 @@ function general(coeffs: ArrayLike<number>, lo: number, hi: number, out: number[
     }
     out.length = k;
   }
-  return out;
 }
 
 /**
- * Fill P with the coefficients, scaled by exact powers of two when needed: returns xs, the exponent
- * of the variable scaling (0 when the interval is moderate: |log2 M|·n ≤ 256). Coefficients are then
- * scaled to a largest magnitude near 1, unless it is already within [2^-64, 2^64]. Coefficients more
- * than ~2^1070 below the largest underflow (documented limit).
+ * Fill P with the coefficients, scaled by exact powers of two when needed: xs is the exponent of
+ * the variable scaling (variableScale). Coefficients are then scaled to a largest magnitude near
+ * 1, unless it is already within [2^-64, 2^64]. Coefficients more than ~2^1070 below the largest
+ * underflow (documented limit).
  */
-function normalise(coeffs: ArrayLike<number>, n: number, maxAbs: number, M: number): number {
-  // Fast test first (|log2 M|·n ≤ 256 ⇐ 2^(-256/n) ≤ M ≤ 2^(256/n)); exponents only when it fails.
-  const lim = n < MOD_LIMIT.length ? (MOD_LIMIT[n] as number) : 1;
-  let xs = 0;
-  if (!(M <= lim && (M >= 1 / lim || M === 0))) {
-    const eM = M > 0 && M < Number.POSITIVE_INFINITY ? exponentOf(M) : 0;
-    xs = n * Math.abs(eM) > 256 ? eM + 1 : 0;
-  }
+function normalise(coeffs: ArrayLike<number>, n: number, maxAbs: number, xs: number): void {
   if (xs === 0 && maxAbs >= SMALL && maxAbs <= BIG) {
     const p = P;
     for (let i = 0; i <= n; i++) p[i] = coeffs[i] as number;
-    return 0;
+    return;
   }
   let E = Number.NEGATIVE_INFINITY;
   for (let i = 0; i <= n; i++) {
@@ -245,7 +324,6 @@ function normalise(coeffs: ArrayLike<number>, n: number, maxAbs: number, M: numb
     if (c !== 0) E = Math.max(E, exponentOf(c) + xs * i);
   }
   for (let i = 0; i <= n; i++) P[i] = mulPow2(coeffs[i] as number, xs * i - E);
-  return xs;
 }
 
 /** The solve proper on the normalised polynomial P (degree n) over lo < hi; appends to out. */

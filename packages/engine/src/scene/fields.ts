@@ -54,11 +54,17 @@ export function mass(o: Obj, key: string, path: string): number {
   return v;
 }
 
-/** A non-negative integer (event counts). */
+/** A non-negative integer up to Number.MAX_SAFE_INTEGER (event counts, as the CLI's --max-events:
+ *  beyond it consecutive counts are no longer distinct doubles). */
 export function count(o: Obj, key: string, path: string): number {
   const v = required(o, key, path);
   if (typeof v !== "number" || !Number.isInteger(v) || v < 0)
     throw new SceneError(join(path, key), "must be a non-negative integer");
+  if (v > Number.MAX_SAFE_INTEGER)
+    throw new SceneError(
+      join(path, key),
+      `must be a non-negative integer at most ${Number.MAX_SAFE_INTEGER} (got ${v})`,
+    );
   return v;
 }
 

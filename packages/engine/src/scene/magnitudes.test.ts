@@ -1,6 +1,14 @@
 import { describe, expect, it } from "vitest";
 import { Timeline } from "../timeline/timeline.js";
-import { FIELD_MIN, MAGNITUDE_MAX, RADIUS_MIN, SPEED_MIN } from "../tolerances.js";
+import {
+  FIELD_MIN,
+  MAGNITUDE_MAX,
+  MASS_MAX,
+  MASS_MIN,
+  RADIUS_MIN,
+  SPEED_MIN,
+  TIME_MAX,
+} from "../tolerances.js";
 import { SceneError } from "./errors.js";
 import { parseScene } from "./parse.js";
 import { serializeScene } from "./serialize.js";
@@ -67,6 +75,26 @@ describe("scene magnitudes: parseScene refuses what the Timeline would, naming t
       scene([disc, { time: 1, type: "updateBody", id: "a", v: [0, -1e-31] }]),
       "actions[1].v[1]: must be 0 or at least",
     ],
+    [
+      "an action time beyond TIME_MAX (audit of session 19: x came out 1e300)",
+      scene([disc, { time: 1e300, type: "giveVelocity", id: "a", v: [1, 0] }]),
+      "actions[1].time: must be at most 1e+30 in size",
+    ],
+    [
+      "a mass below MASS_MIN (5e-324 was accepted)",
+      scene([{ ...disc, m: 5e-324 }]),
+      "actions[0].m: must be between",
+    ],
+    [
+      "a mass beyond MASS_MAX in updateBody (1e308 was accepted)",
+      scene([disc, { time: 1, type: "updateBody", id: "a", m: 1e308 }]),
+      "actions[1].m: must be between 1e-40 and 1e+40, or Infinity",
+    ],
+    [
+      "until.events beyond Number.MAX_SAFE_INTEGER (1e20 was accepted; the CLI's --max-events refuses it)",
+      scene([{ ...disc, until: { events: 1e20 } }]),
+      "actions[0].until.events: must be a non-negative integer at most 9007199254740991",
+    ],
   ];
   for (const [name, s, message] of cases)
     it(name, () => {
@@ -79,13 +107,23 @@ describe("scene magnitudes: parseScene refuses what the Timeline would, naming t
   it("accepts the bounds themselves, as the Timeline does", () => {
     const s = scene(
       [
-        { ...disc, x: MAGNITUDE_MAX, r: RADIUS_MIN, mu: FIELD_MIN, v: [SPEED_MIN, -MAGNITUDE_MAX] },
+        {
+          ...disc,
+          x: MAGNITUDE_MAX,
+          r: RADIUS_MIN,
+          mu: FIELD_MIN,
+          v: [SPEED_MIN, -MAGNITUDE_MAX],
+          m: MASS_MIN,
+        },
         { time: 0, type: "addPoint", id: "p", p: [-MAGNITUDE_MAX, 0] },
+        { time: 0, type: "addBody", id: "b", x: 10, y: 10, r: 1, m: MASS_MAX },
+        { time: 0, type: "addBody", id: "c", x: 20, y: 10, r: 1, m: Number.POSITIVE_INFINITY },
+        { time: TIME_MAX, type: "removeBody", id: "c", until: { events: Number.MAX_SAFE_INTEGER } },
       ],
       { g: FIELD_MIN },
     );
-    expect(parseScene(s).actions).toHaveLength(2);
-    expect(Timeline.fromScene(s).actions).toHaveLength(2);
+    expect(parseScene(s).actions).toHaveLength(5);
+    expect(Timeline.fromScene(s, { compute: false }).actions).toHaveLength(5);
   });
 
   it("the Timeline's own g and gravity options are refused as a SceneError too", () => {

@@ -1,6 +1,6 @@
 /**
- * The World's magnitude limits (tolerances.ts: MAGNITUDE_MAX, RADIUS_MIN, SPEED_MIN, FIELD_MIN)
- * applied to scene fields, so that a scene parseScene accepts is not refused by the Timeline later
+ * The World's magnitude limits (tolerances.ts: MAGNITUDE_MAX, RADIUS_MIN, SPEED_MIN, FIELD_MIN,
+ * MASS_MIN, MASS_MAX, TIME_MAX for an action's time) applied to scene fields, so that a scene parseScene accepts is not refused by the Timeline later
  * for a size, and the refusal names the scene's field (`actions[2].v[0]`, not the World's `vx`).
  * The checks are sim/validate.ts's own, so scene and World agree on every bound.
  * checkActionMagnitudes(action, path) and checkFieldMagnitudes(g, gravity, path) throw SceneError.
@@ -11,7 +11,9 @@ import {
   requireFieldRate,
   requireGravity,
   requireLineDirection,
+  requireMass,
   requireRadius,
+  requireTime,
   requireVec,
   requireVelocity,
 } from "../sim/validate.js";
@@ -44,12 +46,14 @@ export function checkFieldMagnitudes(g: number | undefined, gravity: Vec2 | unde
 
 /** One field-checked action (checkAction's output). */
 export function checkActionMagnitudes(a: Action, path: string): void {
+  under(path, () => requireTime("time", a.time));
   switch (a.type) {
     case "addBody":
     case "updateBody":
       if (a.x !== undefined) under(path, () => requireBounded("x", a.x));
       if (a.y !== undefined) under(path, () => requireBounded("y", a.y));
       if (a.r !== undefined) under(path, () => requireRadius("r", a.r));
+      if (a.m !== undefined) under(path, () => requireMass("m", a.m));
       if (a.mu !== undefined) under(path, () => requireFieldRate("mu", a.mu));
       velocity(path, a.v);
       return;

@@ -16,7 +16,8 @@ export interface Until {
   /** Seconds to compute, counted from the action's `time` (an action's until) or from the horizon
    *  (`Timeline.prolong`): a duration, not an absolute time. A finite number >= 0. */
   time?: number;
-  /** Collisions and stops to compute from there (actions not counted): a whole number >= 0. */
+  /** Collisions and stops to compute from there (actions not counted): a whole number >= 0, at
+   *  most Number.MAX_SAFE_INTEGER. */
   events?: number;
 }
 
@@ -28,7 +29,8 @@ export interface Until {
  */
 export type Action = {
   /** When the action applies: an absolute time >= 0 on the timeline's clock (0 = the scene's
-   *  start). Actions at the same time apply in list order, after the events at that time. */
+   *  start), at most TIME_MAX (1e30). Actions at the same time apply in list order, after the
+   *  events at that time. */
   time: number;
   /** How far to compute after this action, counted from its `time`, not absolute. (Under the
    *  Timeline option `compute: false`, only an action given to `apply` has its until honoured.) */
@@ -42,7 +44,7 @@ export type Action = {
       y: number;
       /** Radius, between 1e-30 and 1e30. */
       r: number;
-      /** Mass: > 0, or Infinity (immovable by collisions; written "Infinity" in JSON). */
+      /** Mass: 1e-40 to 1e40, or Infinity (immovable by collisions; written "Infinity" in JSON). */
       m: number;
       /** Friction coefficient (default 0); must be 0 under a non-zero gravity field. */
       mu?: number;

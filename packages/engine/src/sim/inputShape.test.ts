@@ -35,6 +35,21 @@ describe("World input objects", () => {
     expect(w.bodies().map((b) => b.id)).toEqual(["a"]);
   });
 
+  it('refuses an optimization switch that is not a boolean, naming it ("no" and 3 were taken as on: audit of session 19)', () => {
+    for (const v of ["no", 3, 0, null, "false"]) {
+      const e = refusal(
+        () => new World({ optimizations: { broadPhase: v } as unknown as { broadPhase: boolean } }),
+      );
+      expect(e.path).toBe("optimizations.broadPhase");
+      expect(e.reason).toMatch(/^must be true or false/);
+    }
+    expect(
+      refusal(() => new World({ optimizations: { restingSkip: 1 } as unknown as { restingSkip: boolean } }))
+        .path,
+    ).toBe("optimizations.restingSkip");
+    expect(new World({ optimizations: { broadPhase: false, pathBounds: undefined } }).bodyCount).toBe(0);
+  });
+
   it("refuses a misspelt key instead of dropping it", () => {
     const w = oneDisc();
     const e = refusal(() => w.addBody("b", { x: 5, y: 0, r: 1, m: 1, vX: 5 } as unknown as BodyInit));

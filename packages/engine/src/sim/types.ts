@@ -21,7 +21,7 @@ export interface BodyInit {
   y: number;
   /** Radius, between RADIUS_MIN (1e-30) and MAGNITUDE_MAX (1e30). */
   r: number;
-  /** Mass: positive, or Infinity (a body collisions cannot move). */
+  /** Mass: between MASS_MIN (1e-40) and MASS_MAX (1e40), or Infinity (a body collisions cannot move). */
   m: number;
   /**
    * Friction coefficient (default 0): a moving disc decelerates at mu·g, g being the World's
@@ -71,7 +71,7 @@ export interface BodyMotionInit {
   vy: number;
   /** Radius, as in BodyInit. */
   r: number;
-  /** Mass, as in BodyInit (positive, or Infinity). */
+  /** Mass, as in BodyInit (1e-40 to 1e40, or Infinity). */
   m: number;
   /** Friction coefficient (default 0), as in BodyInit. */
   mu?: number | undefined;
@@ -94,7 +94,7 @@ export interface BodyPatch {
   vy?: number | undefined;
   /** New radius (the grown body must not overlap anything). */
   r?: number | undefined;
-  /** New mass (positive, or Infinity). */
+  /** New mass (1e-40 to 1e40, or Infinity). */
   m?: number | undefined;
   /** New friction coefficient (must be 0 while the gravity field is non-zero). */
   mu?: number | undefined;
@@ -191,12 +191,14 @@ export interface WorldOptions {
    */
   gravity?: Vec2 | undefined;
   /**
-   * Starting time of the World's clock (default 0; any finite number). Times are doubles: keep
+   * Starting time of the World's clock (default 0; at most TIME_MAX, 1e30, in size: the world may
+   * then advance past it). Times are doubles: keep
    * them near 0 (seconds since the level started, not since 1970), since an event at time T is only
    * located to within ulp(T).
    */
   time?: number | undefined;
-  /** Switches for the optimisations, each on by default (they exist for the benchmarks). */
+  /** Switches for the optimisations, each on by default (they exist for the benchmarks); each
+   *  given switch must be true or false (ChapgameError `optimizations.broadPhase`). */
   optimizations?: Optimizations | undefined;
 }
 

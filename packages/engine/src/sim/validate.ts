@@ -2,7 +2,15 @@
  * Input checks of the World's edits. Each check throws ChapgameError naming the field and the
  * reason, before anything is changed.
  */
-import { FIELD_MIN, MAGNITUDE_MAX, RADIUS_MIN, SPEED_MIN } from "../tolerances.js";
+import {
+  FIELD_MIN,
+  MAGNITUDE_MAX,
+  MASS_MAX,
+  MASS_MIN,
+  RADIUS_MIN,
+  SPEED_MIN,
+  TIME_MAX,
+} from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
 import type { Vec2 } from "./types.js";
 
@@ -110,11 +118,30 @@ export function requireNonNegativeFinite(path: string, v: unknown): number {
   return v;
 }
 
-/** A mass: positive, finite or +Infinity (immovable by collisions). */
+/** A mass: between MASS_MIN and MASS_MAX, or +Infinity (immovable by collisions; see tolerances.ts). */
 export function requireMass(path: string, v: unknown): number {
   if (typeof v !== "number" || Number.isNaN(v) || v <= 0)
     throw new ChapgameError(path, "must be a positive number (or Infinity)");
+  if (v !== Number.POSITIVE_INFINITY && !(v >= MASS_MIN && v <= MASS_MAX))
+    throw new ChapgameError(
+      path,
+      `must be between ${MASS_MIN} and ${MASS_MAX}, or Infinity (got ${v}): the collision response's products would over- or underflow`,
+    );
   return v;
+}
+
+/**
+ * A time given to the engine (an action's time, the World's time option): finite and at most
+ * TIME_MAX in size (a time multiplies velocities into positions; see tolerances.ts).
+ */
+export function requireTime(path: string, v: unknown): number {
+  const t = requireFinite(path, v);
+  if (Math.abs(t) > TIME_MAX)
+    throw new ChapgameError(
+      path,
+      `must be at most ${TIME_MAX} in size (got ${t}): later positions would leave the range of lengths (${MAGNITUDE_MAX})`,
+    );
+  return t;
 }
 
 /** A pair [x, y] of lengths or rates, each checked by requireBounded. */

@@ -15,10 +15,11 @@ import type {
   AdvanceResult,
   BodyMotion,
   BodyState,
+  Vec2,
   WorldEvent,
   WorldOptions,
 } from "./types.js";
-import { requireFieldRate, requireFields, requireFinite, requireGravity } from "./validate.js";
+import { requireFieldRate, requireFields, requireFinite, requireGravity, requireTime } from "./validate.js";
 import type { ZenoCounters } from "./zenoWatch.js";
 
 const INF = Number.POSITIVE_INFINITY;
@@ -43,36 +44,57 @@ const INF = Number.POSITIVE_INFINITY;
  * world.addBody("b", { x: 5, y: 0, r: 1, m: 1 });
  * world.advance({ untilTime: 10 }, (e) => console.log(e.kind, e.time)); // bodyBody 3
  */
+/** The switches of WorldOptions.optimizations. */
+const OPTIMIZATION_KEYS = [
+  "broadPhase",
+  "pathBounds",
+  "quadraticFastPath",
+  "restingSkip",
+  "recedingReject",
+] as const;
+
+/** A value as a message shows it: a string quoted (so "false" does not read as false). */
+function describe(v: unknown): string {
+  return typeof v === "string" ? JSON.stringify(v) : String(v);
+}
+
 export class World extends Edits {
   /**
    * A World with no bodies or obstacles. Options: `g` (friction field, default 9.81), `gravity`
-   * (default [0, 0]), `time` (default 0), `optimizations` (all on). Throws ChapgameError naming a
-   * bad option (`g`, `gravity[0]`, `time`) or an unknown key (`options.gx`).
+   * (default [0, 0]), `time` (default 0, at most TIME_MAX in size), `optimizations` (all on).
+   * Throws ChapgameError naming a bad option (`g`, `gravity[0]`, `time`) or an unknown key (`options.gx`).
    */
   constructor(options: WorldOptions = {}) {
     requireFields("options", options, ["g", "gravity", "time", "optimizations"]);
-    if (options.optimizations !== undefined)
-      requireFields("options.optimizations", options.optimizations, [
-        "broadPhase",
-        "pathBounds",
-        "quadraticFastPath",
-        "restingSkip",
-        "recedingReject",
-      ]);
+    if (options.optimizations !== undefined) {
+      requireFields("options.optimizations", options.optimizations, OPTIMIZATION_KEYS);
+      // Each switch a boolean: "no" or 3 would be taken as on.
+      for (const key of OPTIMIZATION_KEYS) {
+        const v = options.optimizations[key];
+        if (v !== undefined && typeof v !== "boolean")
+          throw new ChapgameError(`optimizations.${key}`, `must be true or false (got ${describe(v)})`);
+      }
+    }
     const g = requireFieldRate("g", options.g ?? 9.81);
     const gravity = requireGravity("gravity", options.gravity ?? [0, 0]);
-    const time = requireFinite("time", options.time ?? 0);
+    const time = requireTime("time", options.time ?? 0);
     super(time, g, gravity[0], gravity[1], options.optimizations ?? {});
+  }
+
+  /**
+   * @internal A World at a time its own computation reached (a Timeline keyframe), which may lie
+   * beyond TIME_MAX: that bound is for given times only.
+   */
+  static restoredAt(time: number, g: number, gravity: Vec2): World {
+    const w = new World({ g, gravity });
+    w.now = requireFinite("time", time);
+    return w;
   }
 
   /** An independent deep copy (for keyframes). */
   clone(): World {
-    const w = new World({
-      g: this.frictionG,
-      gravity: [this.gravX, this.gravY],
-      time: this.now,
-      optimizations: this.opt,
-    });
+    // Without `time`: copyInto sets it, and simulation may have taken it past TIME_MAX.
+    const w = new World({ g: this.frictionG, gravity: [this.gravX, this.gravY], optimizations: this.opt });
     this.copyInto(w);
     w.index = new Map(this.index);
     return w;

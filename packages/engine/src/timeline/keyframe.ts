@@ -117,7 +117,7 @@ export function loadMotions(kf: Keyframe, table: MotionTable): void {
  * World's bit for bit.
  */
 export function worldAt(kf: Keyframe, ids: readonly string[]): World {
-  const w = new World({ g: kf.g, gravity: kf.gravity, time: kf.time });
+  const w = World.restoredAt(kf.time, kf.g, kf.gravity);
   for (const l of kf.lines) w.addLine(l.id, l.p1, l.p2, l.kind);
   for (const p of kf.points) w.addPoint(p.id, p.p);
   const m = kf.motions;
