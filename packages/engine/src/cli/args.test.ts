@@ -22,6 +22,9 @@ describe("parseArgs", () => {
       events: true,
     });
     expect(parseArgs(["state", "--at", "1", "--", "--"])).toMatchObject({ scene: "--" });
+    // "-" after "--" is a file named "-", not standard input (the help says so)
+    expect(parseArgs(["simulate", "--", "-"])).toMatchObject({ scene: "./-" });
+    expect(parseArgs(["simulate", "-"])).toMatchObject({ scene: "-" });
     expect(() => parseArgs(["simulate", "-odd.json"])).toThrow("unknown option -odd.json");
   });
   it("parses --compact for both commands", () => {

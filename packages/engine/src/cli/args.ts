@@ -126,7 +126,8 @@ export function parseArgs(argv: readonly string[]): Command {
       continue;
     }
     if (optionsEnd || !arg.startsWith("-") || arg === "-") {
-      positional.push(arg);
+      // After "--" every argument is a file name, "-" too (a file named "-", not standard input).
+      positional.push(optionsEnd && arg === "-" ? "./-" : arg);
       continue;
     }
     const eq = arg.indexOf("=");

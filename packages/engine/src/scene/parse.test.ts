@@ -123,9 +123,14 @@ describe("parseScene refuses, naming the path and the reason", () => {
     ["not an object", "[1]", "scene: must be a JSON object"],
     ["wrong format", JSON.stringify({ format: "x", version: 1, actions: [] }), 'format: must be "chapgame"'],
     [
-      "wrong version",
+      "a newer version: said to come from a newer chapgame",
       JSON.stringify({ format: "chapgame", version: 2, actions: [] }),
-      "version: unsupported version 2",
+      "version: unsupported version 2 (this reader knows 1): the file comes from a newer chapgame",
+    ],
+    [
+      "a version that is no newer one (a string): no such claim",
+      JSON.stringify({ format: "chapgame", version: "1", actions: [] }),
+      'version: unsupported version "1" (this reader knows 1)',
     ],
     ["missing actions", JSON.stringify({ format: "chapgame", version: 1 }), "actions: must be an array"],
     ["negative g", base([], { g: -1 }), "g: must be a non-negative finite number"],

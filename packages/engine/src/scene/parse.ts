@@ -61,11 +61,16 @@ function where(text: string): string {
 export function checkHeader(raw: Record<string, unknown>): void {
   onlyKeys(raw, ["format", "version", "g", "gravity", "actions", "meta"], "");
   if (raw.format !== "chapgame") throw new SceneError("format", 'must be "chapgame"');
-  if (raw.version !== 1)
+  if (raw.version !== 1) {
+    // A later whole-number version is a file from a newer chapgame: say so (review: the editor
+    // showed only "unsupported version 2", which read as a damaged file).
+    const v = raw.version;
+    const newer = typeof v === "number" && Number.isInteger(v) && v > 1;
     throw new SceneError(
       "version",
-      `unsupported version ${JSON.stringify(raw.version)} (this reader knows 1)`,
+      `unsupported version ${JSON.stringify(v)} (this reader knows 1)${newer ? ": the file comes from a newer chapgame; open it with that version, or save it there as version 1" : ""}`,
     );
+  }
 }
 
 /**
