@@ -58,6 +58,7 @@ export class EditorUndo extends EditorSession {
       return false;
     }
     const u = undo(h, current);
+    if (u === null) this.info("Nothing to undo.");
     const loaded =
       u !== null && (await this.restore(u.scene, u.history, `Undone: ${summarizeEdit(u.scene, current)}.`));
     if (loaded) this.stepped(true, u.scene, u.history);
@@ -67,9 +68,15 @@ export class EditorUndo extends EditorSession {
 
   /** The queued part of redo: whether a scene was loaded. */
   private async redoNow(ticket: Ticket | null): Promise<boolean> {
-    if (ticket === null || redoTurn(ticket) === "nothing") return false;
+    if (ticket === null) {
+      // (the last message, "Redone: …", stayed up as if the key had done it again: review)
+      this.info("Nothing to redo.");
+      return false;
+    }
+    if (redoTurn(ticket) === "nothing") return false;
     const current = this.doc;
     const r = redo(this.history.getState(), current);
+    if (r === null) this.info("Nothing to redo.");
     const loaded =
       r !== null && (await this.restore(r.scene, r.history, `Redone: ${summarizeEdit(current, r.scene)}.`));
     if (loaded) this.stepped(false, r.scene, r.history);
