@@ -19,7 +19,7 @@ import { TimelineClient } from "./remote/client";
 import type { Port } from "./remote/protocol";
 import { listenForSharedLinks } from "./sharedLink";
 import { createUiStore } from "./store/uiStore";
-import { keepTimeOnLeave, restoreKeptTime } from "./timeKeep";
+import { keepTimeOnLeave, restoreKeptCalc, restoreKeptTime } from "./timeKeep";
 
 export interface FirstScene {
   scene: SceneFile;
@@ -138,6 +138,7 @@ export async function boot(): Promise<Editor> {
   // scene a load replaced before the reload).
   if (/^#?scene=/.test(window.location.hash))
     history.replaceState(null, "", window.location.pathname + window.location.search);
+  restoreKeptCalc(editor, window.sessionStorage);
   await loadFirstScene(editor, first, window.localStorage);
   // A reload of this tab goes back to the time it was at (timeKeep.ts), for the same scene only.
   if (first.from === "autosave") void restoreKeptTime(editor, window.sessionStorage);

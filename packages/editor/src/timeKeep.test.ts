@@ -4,7 +4,15 @@ import { newtonsCradle } from "@chapgame/engine";
 import { describe, expect, it } from "vitest";
 import { settled, testEditor } from "./testing/harness";
 import { memoryStorage } from "./testing/memoryStorage";
-import { keepTimeOnLeave, keptTime, restoreKeptTime, sceneFingerprint, TIME_KEY } from "./timeKeep";
+import {
+  keepTimeOnLeave,
+  keptCalc,
+  keptTime,
+  restoreKeptCalc,
+  restoreKeptTime,
+  sceneFingerprint,
+  TIME_KEY,
+} from "./timeKeep";
 
 async function cradleAt(t: number) {
   const h = testEditor();
@@ -84,5 +92,23 @@ describe("timeKeep", () => {
     keepTimeOnLeave(h.editor, win, throwing);
     expect(() => leave(win)).not.toThrow();
     expect(h.editor.ui.getState().message).toBeNull();
+  });
+
+  it("the Calculation settings come back whatever the scene; broken ones are ignored", async () => {
+    const session = memoryStorage();
+    const win = new EventTarget() as unknown as Window;
+    const before = await cradleAt(1);
+    const calc = { useTime: true, seconds: 300, useEvents: true, events: 5000, autoExtend: false };
+    before.editor.ui.setState({ calc });
+    keepTimeOnLeave(before.editor, win, session);
+    leave(win);
+    const after = testEditor();
+    restoreKeptCalc(after.editor, session);
+    expect(after.editor.ui.getState().calc).toEqual(calc);
+    const raw = JSON.parse(session.getItem(TIME_KEY)!);
+    session.setItem(TIME_KEY, JSON.stringify({ ...raw, calc: { ...calc, seconds: -1 } }));
+    expect(keptCalc(session)).toBeNull();
+    session.setItem(TIME_KEY, "[");
+    expect(keptCalc(session)).toBeNull();
   });
 });

@@ -1,5 +1,7 @@
 /**
- * The time a tab was at, kept across a reload of that tab. When the page goes (pagehide), the
+ * The time a tab was at, and its Calculation settings, kept across a reload of that tab. The
+ * settings come back whatever the scene (they are the tab's, like a preference: "300 s ahead" came
+ * back as 10, review), before the first scene is computed. When the page goes (pagehide), the
  * current time and a fingerprint of the scene are written to sessionStorage (this tab only, like its
  * autosave id). At start, a tab whose first scene is that same scene (its own autosave, restored by
  * the reload) goes back to that time: computed up to it first when it lies past the horizon the
@@ -11,8 +13,10 @@
 import { sceneText } from "./doc/sceneIo";
 import type { Editor } from "./editor";
 import type { SceneFile } from "./engineTypes";
+import type { CalcSettings } from "./store/uiStore";
 
-/** sessionStorage: `{ "t": time, "scene": fingerprint }` of this tab when its page last went. */
+/** sessionStorage: `{ "t": time, "scene": fingerprint, "calc": CalcSettings }` of this tab when its
+ *  page last went. */
 export const TIME_KEY = "chapgame.editor.tab.time";
 
 /** A short fingerprint of a scene's text (FNV-1a, 32 bits, and the length): equal texts, equal prints. */
@@ -50,13 +54,36 @@ export function keepTimeOnLeave(editor: Editor, win: Window, session: Storage): 
     const doc = editor.client.getSnapshot().doc;
     if (doc === null) return;
     try {
-      session.setItem(TIME_KEY, JSON.stringify({ t: editor.ui.getState().t, scene: sceneFingerprint(doc) }));
+      const { t, calc } = editor.ui.getState();
+      session.setItem(TIME_KEY, JSON.stringify({ t, scene: sceneFingerprint(doc), calc }));
     } catch {
       // nothing kept: a reload starts at 0
     }
   };
   win.addEventListener("pagehide", onHide);
   return () => win.removeEventListener("pagehide", onHide);
+}
+
+/** The Calculation settings kept in `session`, or null (none, or not settings the panel could show). */
+export function keptCalc(session: Storage): CalcSettings | null {
+  try {
+    const c = (JSON.parse(session.getItem(TIME_KEY) ?? "null") as { calc?: Partial<CalcSettings> } | null)
+      ?.calc;
+    if (!c) return null;
+    const count = (x: unknown) => typeof x === "number" && Number.isFinite(x) && x > 0;
+    const flag = (x: unknown) => typeof x === "boolean";
+    if (!(flag(c.useTime) && flag(c.useEvents) && flag(c.autoExtend) && count(c.seconds) && count(c.events)))
+      return null;
+    return c as CalcSettings;
+  } catch {
+    return null;
+  }
+}
+
+/** At start, before the first scene is computed: the Calculation settings the tab had, if kept. */
+export function restoreKeptCalc(editor: Editor, session: Storage): void {
+  const calc = keptCalc(session);
+  if (calc) editor.ui.setState({ calc });
 }
 
 /** At start: back to the time kept for the scene now loaded, if any (see the header). */
