@@ -40,6 +40,20 @@ describe("TimePanel time field", () => {
   });
 });
 
+describe("TimePanel time field, Escape", () => {
+  it("Escape drops the typed text and shows the time again; leaving the field then changes nothing", async () => {
+    const { editor, field } = await renderPanel();
+    act(() => editor.setTime(1.25));
+    field.focus();
+    fireEvent.change(field, { target: { value: "garbage" } });
+    fireEvent.keyDown(field, { key: "Escape" });
+    expect(field.value).toBe("1.25");
+    fireEvent.blur(field);
+    expect(editor.ui.getState().message).toBeNull();
+    expect(editor.ui.getState().t).toBe(1.25);
+  });
+});
+
 describe("TimePanel time field, negative times", () => {
   it("a negative time is refused with a message naming the field (it went to 0 without a word)", async () => {
     const { editor, field } = await renderPanel();

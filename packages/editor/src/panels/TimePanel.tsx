@@ -121,6 +121,8 @@ export function TimePanel() {
             onBlur={commitDraft}
             onKeyDown={(e) => {
               if (e.key === "Enter") commitDraft();
+              // Escape drops what was typed and shows the time again, as the table cells do
+              if (e.key === "Escape") setDraft(null);
             }}
           />{" "}
           s of <span className="horizon">{formatNumber(horizon)}</span> s
