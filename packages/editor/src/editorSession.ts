@@ -113,6 +113,21 @@ export class EditorSession extends EditorCompute {
       });
   }
 
+  /**
+   * What Undo (`undo` true) or Redo says when it goes to `scene`: a load that replaced the scene (a
+   * preset, a file, a link, Clear) is named as one ("Undone: a change of 19 actions" read as an
+   * edit: review), else null (the caller describes the edit).
+   */
+  protected loadStepSummary(scene: SceneFile, undo: boolean): string | null {
+    const step = this.replacementSteps.find((s) => s.entry === scene && s.done === undo);
+    if (!step) return null;
+    const n = scene.actions.length;
+    const actions = `${n} action${n === 1 ? "" : "s"}`;
+    return undo
+      ? `Undone: the scene loaded over yours; back to your scene (${actions}).`
+      : `Redone: the scene loaded (${actions}).`;
+  }
+
   /** Runs `change` once the scene changes queued before it are done (SceneChanges.serial). */
   protected serial<T>(change: () => Promise<T>): Promise<T> {
     return this.changes.serial(change);

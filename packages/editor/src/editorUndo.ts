@@ -60,7 +60,12 @@ export class EditorUndo extends EditorSession {
     const u = undo(h, current);
     if (u === null) this.info("Nothing to undo.");
     const loaded =
-      u !== null && (await this.restore(u.scene, u.history, `Undone: ${summarizeEdit(u.scene, current)}.`));
+      u !== null &&
+      (await this.restore(
+        u.scene,
+        u.history,
+        this.loadStepSummary(u.scene, true) ?? `Undone: ${summarizeEdit(u.scene, current)}.`,
+      ));
     if (loaded) this.stepped(true, u.scene, u.history);
     if (!loaded) ticket.fate = "refused"; // nothing undone: a Redo bound to it has nothing to redo
     return loaded;
@@ -78,7 +83,12 @@ export class EditorUndo extends EditorSession {
     const r = redo(this.history.getState(), current);
     if (r === null) this.info("Nothing to redo.");
     const loaded =
-      r !== null && (await this.restore(r.scene, r.history, `Redone: ${summarizeEdit(current, r.scene)}.`));
+      r !== null &&
+      (await this.restore(
+        r.scene,
+        r.history,
+        this.loadStepSummary(r.scene, false) ?? `Redone: ${summarizeEdit(current, r.scene)}.`,
+      ));
     if (loaded) this.stepped(false, r.scene, r.history);
     if (!loaded) ticket.fate = "refused"; // nothing redone: an Undo bound to it has nothing to undo
     return loaded;
