@@ -1,10 +1,11 @@
 // @vitest-environment jsdom
 // The Calculation settings: Enter applies a field (it applied only on leaving it), and a refused
 // value is put back with a message (it was put back without a word).
-import { cleanup, fireEvent, render, screen } from "@testing-library/react";
+import { dilutedGas } from "@chapgame/engine";
+import { act, cleanup, fireEvent, render, screen, waitFor } from "@testing-library/react";
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
-import { testEditor } from "../testing/harness";
+import { settled, testEditor } from "../testing/harness";
 import { CalculationPanel } from "./CalculationPanel";
 
 afterEach(cleanup);
@@ -55,5 +56,22 @@ describe("CalculationPanel", () => {
     expect(editor.ui.getState().message?.text).toMatch(
       /^Events ahead: must be a whole number of at least 1, got "2.5"/,
     );
+  });
+
+  it("Cancel with the keyboard focus hands it to Compute when the computation ends (it fell to the page)", async () => {
+    const h = testEditor();
+    await h.editor.loadScene(dilutedGas({ n: 400, packing: 0.1, seed: 2 }), { undoable: false });
+    await settled(h.client);
+    render(
+      <EditorContext.Provider value={h.editor}>
+        <CalculationPanel />
+      </EditorContext.Provider>,
+    );
+    void h.editor.goTo(5000);
+    const cancel = await screen.findByRole("button", { name: "Cancel" });
+    act(() => cancel.focus());
+    act(() => fireEvent.click(cancel));
+    await waitFor(() => expect(screen.queryByRole("button", { name: "Cancel" })).toBeNull());
+    await waitFor(() => expect(document.activeElement).toBe(screen.getByRole("button", { name: "Compute" })));
   });
 });

@@ -2,7 +2,10 @@
  * Calculation: compute ahead by seconds and/or events, or without limit (∞); the horizon; automatic
  * extension during playback; progress and Cancel while the worker computes. The horizon is plain
  * text, not an <output> (a live region: a screen reader announced it every 50 ms while computing).
+ * Cancel goes with the computation: if it had the keyboard focus, the focus goes to Compute (it
+ * fell to the page: review).
  */
+import { useEffect, useRef } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { CalcSettings } from "../store/uiStore";
 import { formatNumber, parseNumber } from "./EditableCell";
@@ -23,6 +26,16 @@ export function CalculationPanel() {
   const set = (patch: Partial<CalcSettings>) =>
     editor.ui.setState((s) => ({ calc: { ...s.calc, ...patch } }));
   const unlimited = !calc.useTime && !calc.useEvents;
+  const computeRef = useRef<HTMLButtonElement>(null);
+  /** Whether Cancel has the focus (a removed element fires no blur, so this stays true then). */
+  const cancelFocused = useRef(false);
+  const running = computing !== null;
+  useEffect(() => {
+    if (running || !cancelFocused.current) return;
+    cancelFocused.current = false;
+    if (document.activeElement === null || document.activeElement === document.body)
+      computeRef.current?.focus();
+  }, [running]);
   // A refused setting is put back, and the message bar says so (it was restored without a word).
   const refuse = (input: HTMLInputElement, name: string, what: string, kept: number) => {
     const typed = input.value;
@@ -99,7 +112,12 @@ export function CalculationPanel() {
         </button>
       </div>
       <div className="row">
-        <button type="button" onClick={() => editor.computeAhead()} disabled={computing !== null}>
+        <button
+          type="button"
+          ref={computeRef}
+          onClick={() => editor.computeAhead()}
+          disabled={computing !== null}
+        >
           Compute
         </button>
         <label>
@@ -126,7 +144,16 @@ export function CalculationPanel() {
         <div className="row">
           <progress aria-label="Computation progress" max={1} value={progress ?? undefined} />
           <span>{computing.events} events</span>
-          <button type="button" onClick={() => editor.cancelCompute()}>
+          <button
+            type="button"
+            onClick={() => editor.cancelCompute()}
+            onFocus={() => {
+              cancelFocused.current = true;
+            }}
+            onBlur={() => {
+              cancelFocused.current = false;
+            }}
+          >
             Cancel
           </button>
         </div>
