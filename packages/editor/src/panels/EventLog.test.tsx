@@ -197,6 +197,24 @@ describe("EventLog", () => {
     expect(selected()).toHaveLength(1);
   });
 
+  it("↓ and ↑ move the focus between entries, past the spacer rows; at the ends they do nothing", async () => {
+    const { log } = await bodyLinePointLog("w");
+    await within(log).findByText("body–line");
+    const rows = Array.from(log.querySelectorAll<HTMLTableRowElement>("tbody tr[tabindex='0']"));
+    expect(rows.length).toBeGreaterThan(2);
+    rows[0]!.focus();
+    fireEvent.keyDown(rows[0]!, { key: "ArrowDown" });
+    expect(document.activeElement).toBe(rows[1]);
+    fireEvent.keyDown(rows[1]!, { key: "ArrowUp" });
+    expect(document.activeElement).toBe(rows[0]);
+    fireEvent.keyDown(rows[0]!, { key: "ArrowUp" });
+    expect(document.activeElement).toBe(rows[0]);
+    const last = rows[rows.length - 1]!;
+    last.focus();
+    fireEvent.keyDown(last, { key: "ArrowDown" });
+    expect(document.activeElement).toBe(last);
+  });
+
   it("the participants of a clicked entry stay lit only while the time stays at it (→ moved on, the canvas kept them)", async () => {
     // a (v = 4) meets the segment w at t = 2.25, then the point q at t = 6.75.
     const { h, log } = await bodyLinePointLog("a");

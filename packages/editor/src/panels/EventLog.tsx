@@ -9,7 +9,8 @@
  * ✕ of the next action entry shown, else the previous one, else the log's table (removeFocus.ts),
  * once the log shows the scene without the action. An armed ✕ says "Press again to remove …" in the
  * log's one visually hidden polite live region (useArmedNotice), which is empty otherwise.
- * Each entry is described to assistive technology by what activating it does (ROW_HINT).
+ * Each entry is described to assistive technology by what activating it does (ROW_HINT); ↑ and ↓ move
+ * the focus between entries.
  * Only the rows in view are rendered (useRowWindow); the view follows the current time (useFollowTime).
  * "Skip the Event log table" (SkipTable, shown when focused) passes its entries in one Tab press.
  */
@@ -47,6 +48,14 @@ const KIND_NAMES: Record<string, string> = {
   stop: "stop",
   action: "action",
 };
+
+/** The entry row after (or before) `row` in the log's table, skipping the spacer rows; null at an end. */
+export function siblingRow(row: HTMLTableRowElement, down: boolean): HTMLTableRowElement | null {
+  let r = down ? row.nextElementSibling : row.previousElementSibling;
+  while (r !== null && !(r instanceof HTMLTableRowElement && r.tabIndex === 0))
+    r = down ? r.nextElementSibling : r.previousElementSibling;
+  return r;
+}
 
 /** The kind column: the event's kind, and for an action entry what it did ("action: give velocity"). */
 export function kindLabel(e: LogEvent): string {
@@ -230,8 +239,17 @@ export function EventLog() {
                     })
                   }
                   onKeyDown={(ev) => {
+                    if (ev.target !== ev.currentTarget) return; // keys on the row's ✕ are the button's
                     // Enter on the row itself; Enter on its button presses only the button.
-                    if (ev.key === "Enter" && ev.target === ev.currentTarget) ev.currentTarget.click();
+                    if (ev.key === "Enter") ev.currentTarget.click();
+                    // ↑ and ↓ move between entries (Tab passes every row and its ✕)
+                    if (ev.key === "ArrowDown" || ev.key === "ArrowUp") {
+                      const to = siblingRow(ev.currentTarget, ev.key === "ArrowDown");
+                      if (to) {
+                        ev.preventDefault();
+                        to.focus();
+                      }
+                    }
                   }}
                 >
                   <td>{formatNumber(e.time)}</td>
