@@ -205,10 +205,12 @@ export const SIMULTANEOUS_EVENTS_PER_PAIR = 0.5;
  * Galperin's billiard (a light disc between a wall and a heavy one) makes pi sqrt(M / m) collisions
  * (3,141 for M / m = 1e6: 1.6 per body per sqrt), a light disc between two heavy ones 0.74 per
  * body per sqrt, two light ones between two heavy 1.25. Without this term the README's billiard
- * started touching was refused as a Zeno state from M / m = 1,700 (review). The price: a true Zeno
- * state at one instant in a scene of mass ratio R is reported after up to 4 sqrt(R) n events.
- * Infinite masses are left out of the ratio (a disc jammed between two immovable bodies is
- * reported as soon as without them).
+ * started touching was refused as a Zeno state from M / m = 1,700 (review). The allowance lasts
+ * only while collisions of two different finite masses keep coming (the plain limit counts the
+ * events since the last of them: zenoWatch.ts). The price: a true Zeno state at one instant that
+ * keeps colliding masses of ratio R is reported after up to 4 sqrt(R) n events. Infinite masses are
+ * left out of the ratio (a disc jammed between two immovable bodies is reported as soon as without
+ * them).
  */
 export const SIMULTANEOUS_EVENTS_PER_MASS_SPREAD = 4;
 

@@ -111,6 +111,21 @@ describe("Zeno watch: long finite bursts at one instant pass (bodies of very dif
     expect(e).toBeInstanceOf(SimulationError);
     expect(String(e)).toMatch(/more than 257 events at the same instant t=0/);
   });
+
+  // Regression (review, session 19): one collision of masses 1 and 1e20 elsewhere at the same
+  // instant opened the mass-spread allowance to the jam: 67 million events (45 s) before the report.
+  it("a jam is reported as soon when an unrelated pair of very different masses collides at that instant", () => {
+    const w = new World({ g: 0 });
+    w.addBody("zL", { x: 0, y: 0, r: 1, m: Number.POSITIVE_INFINITY });
+    w.addBody("zd", { x: 2, y: 0, r: 1, m: 1, vx: 1 });
+    w.addBody("zR", { x: 4, y: 0, r: 1, m: Number.POSITIVE_INFINITY });
+    w.addBody("a", { x: 100, y: 0, r: 1, m: 1, vx: 1 });
+    w.addBody("b", { x: 102, y: 0, r: 1, m: 1e20 });
+    const e = thrown(() => w.advance({}));
+    expect(e).toBeInstanceOf(SimulationError);
+    expect(String(e)).toMatch(/more than \d+ events at the same instant t=0/);
+    expect(Number(/more than (\d+) events/.exec(String(e))?.[1])).toBeLessThan(1000);
+  });
 });
 
 describe("Zeno watch: states the model cannot pass are reported", () => {

@@ -76,15 +76,18 @@ describe("ZenoWatch", () => {
     expect(simultaneousLimitWithSpread(n, spread)).toBe(limit);
     expect(simultaneousLimitWithSpread(n, 1)).toBe(simultaneousLimit(n)); // never below the plain one
     expect(simultaneousLimitWithSpread(2, 1e12)).toBe(2 ** 26 - 2); // capped (save() packs the count)
+    // a burst like Galperin's: collisions of the two masses alternating with wall hits
+    const at = (z: ZenoWatch, i: number, t = 5) =>
+      z.check(t, t, n, never, undefined, 1, i % 2 === 0 ? 1e6 : Number.POSITIVE_INFINITY);
     const z = new ZenoWatch();
     z.check(5, 4, n, never, undefined, 1, 1e6);
-    for (let i = 0; i < limit; i++) z.check(5, 5, n, never, undefined, 1, Number.POSITIVE_INFINITY);
+    for (let i = 1; i <= limit; i++) at(z, i);
     const message = `more than ${limit + 1} events at the same instant t=5`;
-    expect(() => z.check(5, 5, n, never, undefined, 1, 1e6)).toThrow(message);
+    expect(() => at(z, 1)).toThrow(message);
     // saved and loaded mid-instant, the masses seen so far go with the counts
     const copy = new ZenoWatch();
     copy.load(z.save());
-    expect(() => copy.check(5, 5, n, never, undefined, 1, Number.POSITIVE_INFINITY)).toThrow(message);
+    expect(() => at(copy, 1)).toThrow(message);
     // a new instant forgets the masses of the last one: immovable bodies and stops add none
     const fresh = new ZenoWatch();
     fresh.check(5, 4, n, never, undefined, 1, 1e6);
@@ -92,6 +95,31 @@ describe("ZenoWatch", () => {
     for (let i = 0; i < simultaneousLimit(n); i++)
       fresh.check(6, 6, n, never, undefined, 1, Number.POSITIVE_INFINITY);
     expect(() => fresh.check(6, 6, n, never)).toThrow(`more than ${simultaneousLimit(n) + 1} events`);
+  });
+
+  it("the mass spread's allowance lasts only while collisions of two different finite masses keep coming", () => {
+    // review, session 19: one collision of masses 1 and 1e20 opened 67 million events to a disc
+    // jammed between two immovable ones at the same instant
+    const n = 5;
+    const plain = simultaneousLimit(n);
+    const z = new ZenoWatch();
+    z.check(5, 4, n, never, undefined, 1, 1e20); // the unrelated pair
+    for (let i = 0; i < plain; i++) z.check(5, 5, n, never, undefined, 1, Number.POSITIVE_INFINITY);
+    expect(() => z.check(5, 5, n, never, undefined, 1, Number.POSITIVE_INFINITY)).toThrow(
+      `more than ${plain + 1} events at the same instant t=5`,
+    );
+    // counted since the last such collision, and carried by save/load
+    const w = new ZenoWatch();
+    w.check(5, 4, n, never, undefined, 1, 1e20);
+    for (let i = 0; i < plain - 1; i++) w.check(5, 5, n, never, undefined, 1, Number.POSITIVE_INFINITY);
+    w.check(5, 5, n, never, undefined, 2, 1e20); // another such collision: the count starts again
+    for (let i = 0; i < plain - 1; i++) w.check(5, 5, n, never, undefined, 1, Number.POSITIVE_INFINITY);
+    const copy = new ZenoWatch();
+    copy.load(w.save());
+    copy.check(5, 5, n, never, undefined, 1, Number.POSITIVE_INFINITY); // plain since the last: allowed
+    expect(() => copy.check(5, 5, n, never, undefined, 1, Number.POSITIVE_INFINITY)).toThrow(
+      `more than ${2 * plain + 1} events at the same instant t=5`,
+    );
   });
 
   it("an event that throws counts nothing: tried again, it throws the same message", () => {
