@@ -36,11 +36,13 @@ export interface FirstScene {
   note: string | null;
   /** This tab's own autosave when it no longer parses (its text and why), to keep and announce. */
   unreadable?: { text: string; reason: string } | null;
+  /** This tab's autosave id: where a refused scene of it is kept (doc/refusedScene.ts). */
+  tab?: string;
 }
 
 /** The scene to start with: a shared link in the URL, else the tab's autosave, else the default preset. */
 export function firstScene(hash: string, autosave: TabAutosave): FirstScene {
-  const first = chooseFirstScene(hash, autosave);
+  const first = { ...chooseFirstScene(hash, autosave), tab: autosave.tab };
   return autosave.unreadable ? { ...first, unreadable: autosave.unreadable } : first;
 }
 
@@ -96,29 +98,37 @@ export async function loadFirstScene(
   local: Storage | null = null,
 ): Promise<void> {
   let err: string | null;
-  if (first.previous && (await editor.loadScene(first.previous, { undoable: false })) === null) {
+  // This tab's autosave refused (by the engine, or not parsing at all): kept (doc/refusedScene.ts)
+  // and said, not lost.
+  let refused: { text: string; reason: string } | null = first.unreadable ?? null;
+  const previousErr = first.previous ? await editor.loadScene(first.previous, { undoable: false }) : null;
+  if (first.previous && previousErr === null) {
     // A shared scene the engine refuses leaves the previous scene loaded (the message says why).
     if ((await editor.loadScene(first.scene)) === null && first.undoNote) editor.info(first.undoNote);
     err = null;
-  } else err = await editor.loadScene(first.scene, { undoable: false });
-  // This tab's autosave refused (by the engine, or not parsing at all): kept (doc/refusedScene.ts)
-  // and said, not lost.
-  const refused =
-    err !== null && first.from === "autosave"
-      ? { text: sceneText(first.scene), reason: err }
-      : (first.unreadable ?? null);
+  } else {
+    // the autosave a shared link was to be opened over, refused: kept like one restored alone
+    if (first.previous && previousErr !== null)
+      refused = { text: sceneText(first.previous), reason: previousErr };
+    err = await editor.loadScene(first.scene, { undoable: false });
+  }
+  if (err !== null && first.from === "autosave") refused = { text: sceneText(first.scene), reason: err };
   if (refused) {
-    if (local) keepRefused(local, { ...refused, savedAt: Date.now() });
-    editor.ui.setState({ refusedScene: { reason: refused.reason } });
+    const tab = first.tab ?? null;
+    const kept =
+      local !== null && tab !== null && keepRefused(local, tab, { ...refused, savedAt: Date.now() });
+    editor.ui.setState({ refusedScene: { ...refused, tab: kept ? tab : null } });
   }
   if (err !== null && first.from !== "preset")
     err = await editor.loadScene(buildPreset(DEFAULT_PRESET), { undoable: false });
   if (first.error) editor.ui.setState({ message: { text: first.error, tone: "error" } });
   else if (first.note) editor.info(first.note);
-  // a scene refused at an earlier start whose notice was not dismissed
-  const kept = local ? readRefused(local) : null;
-  if (kept && editor.ui.getState().refusedScene === null)
-    editor.ui.setState({ refusedScene: { reason: kept.reason } });
+  // this tab's scene refused at an earlier start, whose notice was not dismissed
+  const earlier = local !== null && first.tab ? readRefused(local, first.tab) : null;
+  if (earlier && editor.ui.getState().refusedScene === null)
+    editor.ui.setState({
+      refusedScene: { reason: earlier.reason, text: earlier.text, tab: first.tab ?? null },
+    });
 }
 
 export async function boot(): Promise<Editor> {

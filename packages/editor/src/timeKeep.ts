@@ -51,7 +51,8 @@ export function keptTime(session: Storage, scene: SceneFile): number | null {
 /** Writes the editor's time and scene when the page goes; returns a function that stops it. */
 export function keepTimeOnLeave(editor: Editor, win: Window, session: Storage): () => void {
   const onHide = () => {
-    const doc = editor.client.getSnapshot().doc;
+    // the scene the autosave writes (while an edit is checked, the one before it): the reload's
+    const doc = editor.confirmedDoc();
     if (doc === null) return;
     try {
       const { t, calc } = editor.ui.getState();

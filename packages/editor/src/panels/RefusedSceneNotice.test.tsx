@@ -7,7 +7,7 @@ import { afterEach, describe, expect, it, vi } from "vitest";
 import { TabAutosave } from "../autosave";
 import { firstScene, loadFirstScene } from "../boot";
 import { writeSlot } from "../doc/autosaveSlots";
-import { REFUSED_KEY, readRefused } from "../doc/refusedScene";
+import { readRefused, refusedKey } from "../doc/refusedScene";
 import { sceneText } from "../doc/sceneIo";
 import { EditorContext } from "../EditorContext";
 import type { SceneFile } from "../engineTypes";
@@ -49,7 +49,7 @@ describe("a refused autosave at start", () => {
     expect(h.client.getSnapshot().doc?.actions.some((a) => "id" in a && a.id === "d")).toBe(false);
     const reason = h.editor.ui.getState().refusedScene?.reason ?? "";
     expect(reason).toMatch(/no body "d"/);
-    expect(readRefused(local)?.text).toBe(sceneText(refusedScene));
+    expect(readRefused(local, "tab1")?.text).toBe(sceneText(refusedScene));
     // a start after the slot was overwritten (an edit of the default scene): still announced
     writeSlot(local, "tab1", sceneText({ ...refusedScene, actions: [] }), 2);
     const again = await start(local);
@@ -86,7 +86,71 @@ describe("a refused autosave at start", () => {
       fireEvent.click(screen.getByRole("button", { name: "Dismiss" }));
     });
     expect(screen.queryByRole("alert", { name: "Autosaved scene refused" })).toBeNull();
-    expect(local.getItem(REFUSED_KEY)).toBeNull();
+    expect(local.getItem(refusedKey("tab1"))).toBeNull();
     click.mockRestore();
+  });
+
+  it("kept per tab: another tab's refusal neither replaces it nor shows in a fresh tab", async () => {
+    const local = memoryStorage();
+    writeSlot(local, "tab1", sceneText(refusedScene), 1);
+    await start(local);
+    const other = {
+      ...refusedScene,
+      actions: [...refusedScene.actions, { time: 500, type: "removeBody", id: "q" }],
+    };
+    writeSlot(local, "tabB", sceneText(other as SceneFile), 2);
+    const sessionB = memoryStorage();
+    sessionB.setItem("chapgame.editor.tab", "tabB");
+    const autosaveB = new TabAutosave({
+      local,
+      session: sessionB,
+      now: () => 6,
+      newTabId: () => "x",
+      channel: null,
+    });
+    const b = testEditor();
+    await loadFirstScene(b.editor, firstScene("", autosaveB), local);
+    expect(readRefused(local, "tab1")?.text).toBe(sceneText(refusedScene));
+    expect(readRefused(local, "tabB")?.text).toBe(sceneText(other as SceneFile));
+    // a fresh tab (a new id, no slot of its own) is told nothing
+    const fresh = new TabAutosave({
+      local,
+      session: memoryStorage(),
+      now: () => 7,
+      newTabId: () => "tabF",
+      channel: null,
+    });
+    const f = testEditor();
+    await loadFirstScene(f.editor, firstScene("", fresh), local);
+    expect(f.editor.ui.getState().refusedScene).toBeNull();
+  });
+
+  it("when the storage cannot keep it, the notice still offers the scene from memory", async () => {
+    const local = memoryStorage();
+    writeSlot(local, "tab1", sceneText(refusedScene), 1);
+    const full: Storage = {
+      setItem(k: string, v: string) {
+        if (k.startsWith("chapgame.editor.refused")) throw new DOMException("full", "QuotaExceededError");
+        local.setItem(k, v);
+      },
+      getItem: (k: string) => local.getItem(k),
+      removeItem: (k: string) => local.removeItem(k),
+      key: (i: number) => local.key(i),
+      clear: () => local.clear(),
+      get length() {
+        return local.length;
+      },
+    };
+    const h = await start(full);
+    expect(h.editor.ui.getState().refusedScene).toMatchObject({ tab: null, text: sceneText(refusedScene) });
+    render(
+      <EditorContext.Provider value={h.editor}>
+        <RefusedSceneNotice local={full} />
+      </EditorContext.Provider>,
+    );
+    expect(screen.getByRole("alert", { name: "Autosaved scene refused" }).textContent).toMatch(
+      /could not be kept/,
+    );
+    expect(screen.getByRole("button", { name: "Save it as a file" })).toBeTruthy();
   });
 });

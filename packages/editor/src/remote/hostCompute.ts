@@ -38,6 +38,8 @@ const SLICE_MS = 3;
  * had, brought back after an edit) is not stopped: it was under the cap when it was computed.
  */
 export const HISTORY_MAX_BYTES = 512 * 2 ** 20;
+/** How often (ms) a computation compares the history's size with HISTORY_MAX_BYTES. */
+const CAP_CHECK_MS = 100;
 /** While computing, energy/event samples are recorded at most this often (ms of wall-clock time). */
 const RECORD_EVERY_MS = 100;
 
@@ -64,6 +66,14 @@ export class HostCompute {
   protected readonly series = new SeriesRecorder();
   private lastRecord = Number.NEGATIVE_INFINITY;
   private lastInfo = Number.NEGATIVE_INFINITY;
+  /** When the history's size was last compared with HISTORY_MAX_BYTES. */
+  private capChecked = Number.NEGATIVE_INFINITY;
+
+  /** Whether the history is past HISTORY_MAX_BYTES (read at `now`). */
+  private overCap(now: number): boolean {
+    this.capChecked = now;
+    return this.tl.historyBytes() > HISTORY_MAX_BYTES;
+  }
   /** A computation asked during a check that passed before its restore job had brought the old
    *  history back: it starts when that job ends, or the job that replaced it (not after a Cancel,
    *  an edit or a load, which drop it). */
@@ -105,6 +115,7 @@ export class HostCompute {
   }
 
   protected startJob(ask: ComputeAsk, restore = false): void {
+    this.capChecked = Number.NEGATIVE_INFINITY; // a new job compares the history's size at once
     const { until } = ask;
     const h = this.tl.horizon;
     const running = this.job;
@@ -172,7 +183,9 @@ export class HostCompute {
     const job = this.job;
     if (!job) return;
     const start = this.env.now();
-    if (!job.restore && this.tl.historyBytes() > HISTORY_MAX_BYTES) {
+    // historyBytes walks the keyframes (a quarter of a millisecond near the cap): read it at most
+    // every CAP_CHECK_MS, not every round
+    if (!job.restore && start - this.capChecked >= CAP_CHECK_MS && this.overCap(start)) {
       const mib = Math.round(this.tl.historyBytes() / 2 ** 20);
       this.stopped = `the history holds ${mib} MiB (${this.tl.eventCount} entries), more than the ${HISTORY_MAX_BYTES / 2 ** 20} MiB the editor keeps: computing further could run the browser tab out of memory`;
       this.job = null;

@@ -55,8 +55,9 @@ export interface UiState {
   calc: CalcSettings;
   message: Message | null;
   newerWork: NewerWork | null;
-  /** A scene refused at start and kept (doc/refusedScene.ts): the reason, shown with its notice. */
-  refusedScene: { reason: string } | null;
+  /** A scene refused at start (doc/refusedScene.ts): its text, the reason, and the tab whose entry
+   *  keeps it in localStorage (null when not kept), shown with its notice. */
+  refusedScene: { reason: string; text: string; tab: string | null } | null;
   eventFilter: string;
   /** The Event log entry last clicked (or entered), whose detail the Event details panel shows;
    *  null until one is. Escape or a click elsewhere leave it. */
