@@ -88,10 +88,19 @@ describe("PathView", () => {
 
   it("a body the history does not hold (yet) gives no path, and no error", async () => {
     const { editor, client, view } = await setup();
+    expect(await client.path("ghost", PATH_MAX_POINTS)).toBeNull(); // what the view is answered
+    let answered = false;
+    const ask = client.path.bind(client);
+    client.path = (id, max) =>
+      ask(id, max).finally(() => {
+        answered = true;
+      });
     editor.ui.setState({ path: true, selection: { kind: "body", id: "ghost" } });
-    await settled(client);
-    await new Promise((r) => setTimeout(r, 20));
+    for (let k = 0; k < 200 && !answered; k++) await new Promise((r) => setTimeout(r, 5));
+    expect(answered).toBe(true);
+    await new Promise((r) => setTimeout(r, 0));
     expect(view.line).toBeNull();
+    expect(editor.ui.getState().pathShown).toBeNull();
     expect(editor.ui.getState().message).toBeNull();
   });
 });

@@ -2,7 +2,8 @@
  * PathView: the canvas's Path view. While it is on (uiStore `path`) and a body is selected, it keeps
  * that body's whole computed path (worker op `path`, remote/pathLine.ts) for the canvas to draw, and
  * asks again when the history changes (an edit, a computation going on: at most every
- * REFRESH_MS while the revision keeps changing). An answer for an older selection or revision than
+ * REFRESH_MS while the revision keeps changing, and never more than a tenth of the time when the
+ * worker is busy with paths: one of a 10-million-event history takes it about 250 ms, review). An answer for an older selection or revision than
  * the latest asked is still shown until the next arrives (the path of the body a moment ago), but
  * never for another body. What it shows is published as uiStore `pathShown` (the toolbar says where
  * a long path was cut). A failed request clears the path and says why in the message bar.
@@ -12,6 +13,9 @@ import { PATH_MAX_POINTS, type PathLine } from "../remote/pathLine";
 
 /** Shortest interval between two path requests while the history keeps changing (ms). */
 export const REFRESH_MS = 400;
+/** The interval is at least this many times what the last request took, so that paths take at
+ *  most a tenth of the worker while a computation runs. */
+export const COST_FACTOR = 10;
 
 export class PathView {
   /** What to draw (null: nothing). */
@@ -22,6 +26,8 @@ export class PathView {
   private busy = false;
   private timer: ReturnType<typeof setTimeout> | null = null;
   private lastSent = -Infinity;
+  /** How long the last request took to be answered (ms). */
+  private lastCost = 0;
   private readonly offs: (() => void)[] = [];
 
   constructor(
@@ -60,7 +66,7 @@ export class PathView {
       this.timer = null;
     }
     if (key === this.asked || this.busy || this.timer !== null) return;
-    const wait = this.lastSent + REFRESH_MS - performance.now();
+    const wait = this.lastSent + Math.max(REFRESH_MS, COST_FACTOR * this.lastCost) - performance.now();
     if (wait > 0 && this.lineId === id) {
       this.timer = setTimeout(() => {
         this.timer = null;
@@ -75,9 +81,11 @@ export class PathView {
     this.asked = key;
     this.busy = true;
     this.lastSent = performance.now();
+    const sent = performance.now();
     this.editor.client.path(id, PATH_MAX_POINTS).then(
       (line) => {
         this.busy = false;
+        this.lastCost = performance.now() - sent;
         if (this.wanted() === id) this.show(id, line);
         this.update();
       },

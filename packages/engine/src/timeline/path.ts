@@ -9,6 +9,8 @@
  * (several events of the body at one instant: a Newton's cradle's chain) are left out; so the next
  * piece's start can lie elsewhere than the last piece's end only where an action moved the body
  * (updateBody x, y) or removed and added it again. Spans where the body does not exist give no piece.
+ * At `to` itself a piece shows the body just before the actions logged at `to` (stateAt(to) shows it
+ * after them): a move or an addition at `to` begins no piece, having no length yet.
  *
  * Cost: one pass over the records from the last keyframe at or before `from` to `to`, touching only
  * the records of that body and the keyframes taken after actions (no other body is replayed).
