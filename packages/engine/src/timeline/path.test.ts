@@ -100,6 +100,18 @@ describe("Timeline.path", () => {
     expect(at(pieces[3] as PathPiece, 8)).toEqual([0, 11]);
   });
 
+  it("at `to` the last piece shows the body just before the actions logged at `to`", () => {
+    const tl = Timeline.fromScene(
+      scene([disc("b", 0, 0, [1, 0]), { time: 2, type: "updateBody", id: "b", x: 50 }], 0),
+    );
+    tl.prolongTo(4);
+    const upTo2 = tl.path("b", 0, 2);
+    expect(upTo2.map((p) => [p.from, p.until])).toEqual([[0, 2]]);
+    expect(at(upTo2[0] as PathPiece, 2)).toEqual([2, 0]); // before the move
+    expect(tl.stateAt(2).bodies[0]?.x).toBe(50); // stateAt: after it
+    expect(at(tl.path("b", 2, 4)[0] as PathPiece, 2)).toEqual([50, 0]);
+  });
+
   it("a span [from, to] clips the pieces to it; from = to gives none", () => {
     const tl = Timeline.fromScene(dilutedGas({ n: 30, packing: 0.1, seed: 7 }), { compute: false });
     tl.prolongTo(10);
