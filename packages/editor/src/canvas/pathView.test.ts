@@ -3,10 +3,12 @@
 // off or when no body is selected.
 import { Timeline } from "@chapgame/engine";
 import { afterEach, describe, expect, it } from "vitest";
-import { PATH_MAX_POINTS, pathLine } from "../remote/pathLine";
+import type { Editor } from "../editor";
+import { PATH_MAX_POINTS, type PathLine, pathLine } from "../remote/pathLine";
+import { createUiStore } from "../store/uiStore";
 import { settled, testEditor } from "../testing/harness";
 import { sceneOf } from "../testing/scenes";
-import { PathView } from "./pathView";
+import { COST_FACTOR, PathView, REFRESH_MS } from "./pathView";
 
 const scene = sceneOf(
   [
@@ -102,5 +104,42 @@ describe("PathView", () => {
     expect(view.line).toBeNull();
     expect(editor.ui.getState().pathShown).toBeNull();
     expect(editor.ui.getState().message).toBeNull();
+  });
+});
+
+describe("PathView while the history keeps changing", () => {
+  it("spaces requests by at least COST_FACTOR times what the last one took (a slow worker is not flooded)", async () => {
+    // a fake editor: the revision moves every 10 ms (a computation), each path takes 60 ms to come
+    const ui = createUiStore({ path: true, selection: { kind: "body", id: "a" } });
+    let revision = 1;
+    const listeners = new Set<() => void>();
+    const sent: number[] = [];
+    const client = {
+      getSnapshot: () => ({ revision }),
+      subscribe: (l: () => void) => {
+        listeners.add(l);
+        return () => listeners.delete(l);
+      },
+      path: () => {
+        sent.push(performance.now());
+        return new Promise<PathLine>((r) =>
+          setTimeout(() => r({ points: new Float64Array(4), cutAt: null }), 60),
+        );
+      },
+    };
+    const view = new PathView({ ui, client } as unknown as Editor, () => {});
+    views.push(view);
+    const started = performance.now();
+    while (performance.now() - started < 1500) {
+      revision++;
+      for (const l of listeners) l();
+      await new Promise((r) => setTimeout(r, 10));
+    }
+    // REFRESH_MS alone would allow a request every 400 ms; 60 ms each makes it every 600 ms or more
+    expect(COST_FACTOR * 60).toBeGreaterThan(REFRESH_MS);
+    for (let k = 1; k < sent.length; k++)
+      expect(sent[k]! - sent[k - 1]!).toBeGreaterThanOrEqual(COST_FACTOR * 60 - 15);
+    expect(sent.length).toBeGreaterThanOrEqual(2);
+    expect(sent.length).toBeLessThanOrEqual(3);
   });
 });
