@@ -1,43 +1,18 @@
 // A computation stops once the stored history passes HISTORY_MAX_BYTES, saying why (∞ on a scene
 // that never comes to rest grew to 1.6 GB and ended in "Array buffer allocation failed": review,
 // session 19); the history up to there stands, and a computation asked later says the same.
-import { bouncingBalls, Timeline } from "@chapgame/engine";
+import { bouncingBalls } from "@chapgame/engine";
 import { describe, expect, it } from "vitest";
-import type { SceneFile, Until } from "../engineTypes";
-import { TimelineHost } from "./host";
+import type { SceneFile } from "../engineTypes";
+import { fakeClockHost } from "../testing/fakeHost";
 import { HISTORY_MAX_BYTES } from "./hostCompute";
-import type { HostMessage, TimelineInfo } from "./protocol";
-import type { TimelineLike } from "./timelineLike";
 
 /** A host whose timeline counts each logged entry as 1 MiB of history (the cap in 512 entries). */
 function heavyHost(initial: SceneFile = bouncingBalls()) {
-  const tasks: (() => void)[] = [];
-  const sent: HostMessage[] = [];
-  let clock = 0;
-  const factory = (scene: SceneFile): TimelineLike => {
-    const tl = Timeline.fromScene(scene, { compute: false });
-    const slice = tl.prolongSlice.bind(tl);
-    return Object.assign(tl, {
-      historyBytes: () => tl.eventCount * 2 ** 20,
-      // computing takes 0.5 ms of the fake clock per event, so slices stay small
-      prolongSlice: (until: Until, budget: number) => {
-        const r = slice(until, budget);
-        clock += 0.5 * r.events;
-        return r;
-      },
-    });
-  };
-  const host = new TimelineHost(
-    factory,
-    { post: (m) => sent.push(m), schedule: (fn) => tasks.push(fn), now: () => (clock += 0.01) },
-    initial,
-  );
-  const run = () => {
-    for (let k = 0; k < 10_000 && tasks.length > 0; k++) tasks.shift()!();
-  };
-  const info = () =>
-    sent.filter((m): m is { type: "info"; info: TimelineInfo } => m.type === "info").at(-1)!.info;
-  return { host, run, info };
+  const { host, run, infos } = fakeClockHost(initial, (tl) => ({
+    historyBytes: () => tl.eventCount * 2 ** 20,
+  }));
+  return { host, run, info: () => infos().at(-1)! };
 }
 
 describe("the history cap", () => {

@@ -1,46 +1,15 @@
 import { dilutedGas, Timeline } from "@chapgame/engine";
 import { describe, expect, it } from "vitest";
-import type { SceneFile, Until } from "../engineTypes";
+import type { SceneFile } from "../engineTypes";
+import { fakeClockHost } from "../testing/fakeHost";
 import { crushScene } from "../testing/scenes";
 import { TimelineHost } from "./host";
 import { packFrame } from "./packFrame";
 import type { Frame, HostMessage, TimelineInfo } from "./protocol";
-import type { TimelineLike } from "./timelineLike";
 
-/**
- * A host on a fake clock: computing takes 0.5 ms per event, every reading of the clock 0.01 ms;
- * scheduled rounds run when the test says.
- */
+/** A host on a fake clock (testing/fakeHost.ts) over a 60-disc gas by default. */
 function fakeHost(initial: SceneFile = dilutedGas({ n: 60, packing: 0.3, seed: 5 })) {
-  let clock = 0;
-  const tasks: (() => void)[] = [];
-  const sent: HostMessage[] = [];
-  const factory = (scene: SceneFile): TimelineLike => {
-    const tl = Timeline.fromScene(scene, { compute: false });
-    const slice = tl.prolongSlice.bind(tl);
-    return Object.assign(tl, {
-      prolongSlice: (until: Until, budget: number) => {
-        const r = slice(until, budget);
-        clock += 0.5 * r.events;
-        return r;
-      },
-    });
-  };
-  const host = new TimelineHost(
-    factory,
-    {
-      post: (m) => sent.push(m),
-      schedule: (fn) => tasks.push(fn),
-      now: () => {
-        clock += 0.01;
-        return clock;
-      },
-    },
-    initial,
-  );
-  const infos = () =>
-    sent.filter((m): m is { type: "info"; info: TimelineInfo } => m.type === "info").map((m) => m.info);
-  return { host, tasks, sent, infos };
+  return fakeClockHost(initial);
 }
 
 describe("TimelineHost while computing", () => {
