@@ -40,6 +40,27 @@ describe("parseArgs", () => {
       "--compact takes no value",
     );
   });
+  it("parses path with --id, --to and an optional --from (default 0)", () => {
+    expect(parseArgs(["path", "s.json", "--id", "ball", "--to", "5"])).toEqual({
+      command: "path",
+      scene: "s.json",
+      id: "ball",
+      from: 0,
+      to: 5,
+    });
+    expect(
+      parseArgs(["path", "--from=1.5", "s.json", "--to=2", "--id=-odd", "--compact", "--progress"]),
+    ).toEqual({
+      command: "path",
+      scene: "s.json",
+      id: "-odd",
+      from: 1.5,
+      to: 2,
+      compact: true,
+      progress: true,
+    });
+  });
+
   it("parses state --at", () => {
     expect(parseArgs(["state", "-", "--at=1e3"])).toEqual({
       command: "state",
@@ -116,6 +137,12 @@ describe("parseArgs", () => {
     // regression: an option was taken for the value of the one before it
     [["simulate", "a", "--until-time", "--events"], "--until-time needs a value"],
     [["--version", "extra"], '--version takes no arguments, got "extra"'],
+    [["path", "a", "--to", "1"], "path: --id ID is required"],
+    [["path", "a", "--id", "b"], "path: --to T is required"],
+    [["path", "a", "--id=", "--to", "1"], "--id: must be a body's id, got an empty string"],
+    [["path", "a", "--id", "b", "--to", "1", "--from", "2"], "--from (2) must not be after --to (1)"],
+    [["path", "a", "--id", "b", "--to", "1", "--events"], "unknown option --events for path"],
+    [["path", "a", "--id", "b", "--to", "-1"], '--to: must be a non-negative number, got "-1"'],
   ];
   for (const [argv, msg] of bad)
     it(`refuses ${JSON.stringify(argv)}`, () => {

@@ -2,6 +2,7 @@
  * Command-line arguments of the `chapgame` bin, parsed into a Command (pure; no process access).
  *   chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--compact] [--progress]
  *   chapgame state SCENE --at T [--events] [--compact] [--progress]
+ *   chapgame path SCENE --id ID --to T [--from T] [--compact] [--progress]
  * (USAGE, the --help text, describes them, the result, how a run ends and the exit statuses.)
  *   chapgame --help | help
  *   chapgame --version
@@ -29,7 +30,16 @@ export type Command =
       compact?: boolean;
       progress?: boolean;
     }
-  | { command: "state"; scene: string; at: number; events: boolean; compact?: boolean; progress?: boolean };
+  | { command: "state"; scene: string; at: number; events: boolean; compact?: boolean; progress?: boolean }
+  | {
+      command: "path";
+      scene: string;
+      id: string;
+      from: number;
+      to: number;
+      compact?: boolean;
+      progress?: boolean;
+    };
 
 export const USAGE = `Usage:
   chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--compact] [--progress]
@@ -49,6 +59,15 @@ export const USAGE = `Usage:
       Print the bodies at time T as JSON (the actions are computed, and checked, up to T).
       If the exact model cannot continue before T (a Zeno state), it prints the bodies where it
       stopped instead, with "time" there, "reason": "error" and "error": why, and exits with 2.
+  chapgame path SCENE --id ID --to T [--from T] [--compact] [--progress]
+      Print the exact path of body ID from time --from (default 0) to --to as JSON: "id",
+      "from", "to" and "pieces", the motions it followed in time order, each with "from" and
+      "until" (the span it covers) and t0, x0, y0, vx, vy, ax, ay, tStop: over its span the body
+      is at x0 + d (vx + ax d / 2), d = min(t, tStop) - t0 (y likewise), and rests from tStop on.
+      A piece ends at each collision or stop of the body and at each action that restarts it;
+      spans where the body does not exist give no piece. A run the exact model cannot continue
+      before --to prints the pieces up to where it stopped, with "to" there, "reason": "error"
+      and "error": why, and exits with 2.
   chapgame --help
   chapgame --version
 
@@ -58,7 +77,7 @@ Interrupting a run (Ctrl-C: SIGINT, or SIGTERM) while it computes prints the res
 where it got, with "time" there and "reason": "interrupted" (state too), and exits with status
 130 (SIGINT) or 143 (SIGTERM). In a pipeline Ctrl-C reaches the reader as well: to keep the
 result, send the signal to chapgame alone (kill -INT PID) or write to a file.
-The result: "time", "reason" (simulate, and a state that stopped early), "events" (collisions and
+The result of simulate and state: "time", "reason" (simulate, and a state that stopped early), "events" (collisions and
 stops), "counts" (bodyBody, bodyLine, bodyPoint, stop), "bodies" (id, x, y, vx, vy, r, m, mu at
 "time", sorted by id) and with --events "log": every entry up to "time" in order, each with
 "time", "type" (bodyBody, bodyLine, bodyPoint, stop, action), "ids" (the participants; the
@@ -109,15 +128,17 @@ export function parseArgs(argv: readonly string[]): Command {
     return { command: "version" };
   }
   const [cmd, ...rest] = argv;
-  if (cmd !== "simulate" && cmd !== "state")
+  if (cmd !== "simulate" && cmd !== "state" && cmd !== "path")
     throw new UsageError(`unknown command "${cmd}" (try chapgame --help)`);
   const positional: string[] = [];
   const opts = new Map<string, string | true>();
-  const valued = new Set(["--until-time", "--max-events", "--at"]);
+  const valued = new Set(["--until-time", "--max-events", "--at", "--id", "--from", "--to"]);
   const allowed =
     cmd === "simulate"
       ? ["--until-time", "--max-events", "--events", "--compact", "--progress"]
-      : ["--at", "--events", "--compact", "--progress"];
+      : cmd === "state"
+        ? ["--at", "--events", "--compact", "--progress"]
+        : ["--id", "--from", "--to", "--compact", "--progress"];
   let optionsEnd = false;
   for (let i = 0; i < rest.length; i++) {
     const arg = rest[i] as string;
@@ -153,6 +174,25 @@ export function parseArgs(argv: readonly string[]): Command {
   const events = opts.has("--events");
   const progress = opts.has("--progress");
   const compact = opts.has("--compact");
+  if (cmd === "path") {
+    const id = opts.get("--id");
+    if (id === undefined) throw new UsageError("path: --id ID is required");
+    if (id === "") throw new UsageError("--id: must be a body's id, got an empty string");
+    const to = opts.get("--to");
+    if (to === undefined) throw new UsageError("path: --to T is required");
+    const from = opts.get("--from");
+    const c: Command = {
+      command: "path",
+      scene,
+      id: id as string,
+      from: from === undefined ? 0 : time("--from", from as string),
+      to: time("--to", to as string),
+    };
+    if (c.from > c.to) throw new UsageError(`--from (${c.from}) must not be after --to (${c.to})`);
+    if (compact) c.compact = true;
+    if (progress) c.progress = true;
+    return c;
+  }
   if (cmd === "state") {
     const at = opts.get("--at");
     if (at === undefined) throw new UsageError("state: --at T is required");

@@ -8,7 +8,10 @@
  * indentation, the log one event per line (about half the size, and a reader can take it line by
  * line). Infinite numbers are written "Infinity"
  * as in scene files, and "-Infinity" likewise (a position overflows to it after a long fall).
+ * writePath(result, write, compact): the `path` command's JSON, the same way (see there).
  */
+
+import type { PathPiece } from "../timeline/path.js";
 import type { Timeline } from "../timeline/timeline.js";
 import type { LogEvent, ProlongResult } from "../timeline/types.js";
 
@@ -86,4 +89,43 @@ export function writeResult(
   }
   if (compact) write(first ? "]}\n" : "\n]}\n");
   else write(first ? "]\n}\n" : "\n  ]\n}\n");
+}
+
+/** What writePath writes: body `id`'s pieces over [from, to], and why the run stopped early if it did. */
+export interface PathResult {
+  id: string;
+  from: number;
+  to: number;
+  end?: { reason: "interrupted" } | { reason: "error"; error: string } | undefined;
+  pieces: readonly PathPiece[];
+}
+
+/**
+ * The `path` command's JSON: id, from, to (and reason, error after an early stop), then "pieces",
+ * written one piece at a time (a long path is never one string). Pretty-printed as
+ * JSON.stringify(result, …, 2) would; with `compact`, without indentation and one piece per line.
+ * Each piece's keys in a fixed order: from, until, t0, x0, y0, vx, vy, ax, ay, tStop.
+ */
+export function writePath(r: PathResult, write: (text: string) => void, compact = false): void {
+  const text = toJson({ id: r.id, from: r.from, to: r.to, ...r.end }, compact);
+  const pad = compact ? "" : "    ";
+  write(compact ? `${text.slice(0, -1)},"pieces":[` : `${text.slice(0, -2)},\n  "pieces": [`);
+  r.pieces.forEach((p, i) => {
+    const piece = {
+      from: p.from,
+      until: p.until,
+      t0: p.t0,
+      x0: p.x0,
+      y0: p.y0,
+      vx: p.vx,
+      vy: p.vy,
+      ax: p.ax,
+      ay: p.ay,
+      tStop: p.tStop,
+    };
+    write(`${i === 0 ? "\n" : ",\n"}${pad}${indent(toJson(piece, compact), pad)}`);
+  });
+  const empty = r.pieces.length === 0;
+  if (compact) write(empty ? "]}\n" : "\n]}\n");
+  else write(empty ? "]\n}\n" : "\n  ]\n}\n");
 }

@@ -11,14 +11,18 @@
  * Without --until-time and --max-events, simulate computes a scene whose actions carry an `until`
  * as far as they say (every action applied and each until met: what Timeline.fromScene computes),
  * with "reason": "until" (or "idle"); options given on the command line win over the scene's.
+ * `path` computes up to --to and prints body --id's pieces (Timeline.path) over [--from, --to]; an
+ * id no addBody of the scene names is refused (status 2) before anything is computed. After an
+ * error or an interrupt it prints the pieces up to where the run stopped.
  */
 import { parseScene, printable } from "../scene/parse.js";
 import type { SceneFile, Until } from "../scene/types.js";
 import { ChapgameError, SimulationError } from "../sim/errors.js";
+import type { PathPiece } from "../timeline/path.js";
 import { Timeline } from "../timeline/timeline.js";
 import type { ProlongResult } from "../timeline/types.js";
 import { type Command, parseArgs, USAGE, UsageError } from "./args.js";
-import { type RunEnd, writeResult } from "./output.js";
+import { type PathResult, type RunEnd, writePath, writeResult } from "./output.js";
 import {
   computeSlices,
   type InterruptControl,
@@ -125,6 +129,48 @@ function* simulate(
   return { time, reason: "idle" };
 }
 
+/**
+ * The time of the first addBody of `id` in the scene; refuses a `path --id` that no addBody action
+ * names (a typo would else print nothing).
+ */
+function firstAdded(scene: SceneFile, id: string): number {
+  const ids = new Set<string>();
+  let first = Infinity;
+  for (const a of scene.actions) {
+    if (a.type !== "addBody") continue;
+    ids.add(a.id);
+    if (a.id === id && a.time < first) first = a.time;
+  }
+  if (ids.has(id)) return first;
+  const known = [...ids].sort();
+  const list =
+    known.length <= 10 ? known.join(", ") : `${known.slice(0, 10).join(", ")}, … (${known.length} in all)`;
+  throw new UsageError(
+    `--id: no body ${JSON.stringify(id)} in the scene (${known.length === 0 ? "it adds no body" : `bodies: ${list}`})`,
+  );
+}
+
+type PathCommand = Extract<Command, { command: "path" }>;
+
+/**
+ * The pieces of the path command's body over [from, to], or, after a run that stopped early (`end`),
+ * up to where it stopped: none when that is before `from` or before the body was first added (at
+ * `added`; added exactly where the run stopped, it counts when the addition took place).
+ */
+function pathResult(tl: Timeline, cmd: PathCommand, added: number, end?: RunEnd): PathResult {
+  if (end === undefined)
+    return { id: cmd.id, from: cmd.from, to: cmd.to, pieces: tl.path(cmd.id, cmd.from, cmd.to) };
+  const to = tl.horizon;
+  const early =
+    end.reason === "error"
+      ? { reason: "error" as const, error: end.error }
+      : { reason: "interrupted" as const };
+  let pieces: PathPiece[] = [];
+  const exists = added < to || (added === to && tl.stateAt(to).bodies.some((b) => b.id === cmd.id));
+  if (to >= cmd.from && exists) pieces = tl.path(cmd.id, cmd.from, to);
+  return { id: cmd.id, from: cmd.from, to, end: early, pieces };
+}
+
 /** Thrown by a CliIO.stdout that cannot write (a full disk, a closed file): not a bug of the run. */
 export class OutputError extends Error {}
 
@@ -169,18 +215,27 @@ function* command(argv: readonly string[], io: CliIO): Generator<void, number, v
       cmd.command === "simulate" && cmd.untilTime === undefined && cmd.maxEvents === undefined
         ? sceneBound(scene)
         : null;
-    const tl = Timeline.fromScene(scene, { history: cmd.events, compute: false, untils: bound !== null });
+    const added = cmd.command === "path" ? firstAdded(scene, cmd.id) : 0;
+    const history = cmd.command === "path" || cmd.events;
+    const tl = Timeline.fromScene(scene, { history, compute: false, untils: bound !== null });
     const mode: ProgressMode = io.progress ? "terminal" : cmd.progress === true ? "lines" : "off";
     const out = (text: string) => io.stdout(text);
     /** Writes the result up to where the computation stopped, with why. */
     const partial = (end: RunEnd) => {
       io.computed?.();
-      writeResult(tl, tl.horizon, out, { log: cmd.events, end, compact: cmd.compact });
+      if (cmd.command === "path") writePath(pathResult(tl, cmd, added, end), out, cmd.compact);
+      else writeResult(tl, tl.horizon, out, { log: cmd.events, end, compact: cmd.compact });
     };
     let time: number;
     let end: RunEnd | undefined;
     io.computing?.();
     try {
+      if (cmd.command === "path") {
+        yield* compute(tl, { time: cmd.to }, mode, io);
+        io.computed?.();
+        writePath(pathResult(tl, cmd, added), out, cmd.compact);
+        return 0;
+      }
       if (cmd.command === "state") {
         // from horizon 0 (nothing computed yet), `time: at` ahead is exactly up to at
         yield* compute(tl, { time: cmd.at }, mode, io);
@@ -207,7 +262,7 @@ function* command(argv: readonly string[], io: CliIO): Generator<void, number, v
       throw e;
     }
     io.computed?.();
-    writeResult(tl, time, out, { log: cmd.events, end, compact: cmd.compact });
+    writeResult(tl, time, out, { log: cmd.events, compact: cmd.compact, end });
     return 0;
   } catch (e) {
     // Errors about the scene's content name the scene file first (a batch over many files); a
