@@ -37,6 +37,8 @@ export function applyGroup(c: TimelineCore): void {
     c.actEvents[k] = c.eventTotal;
     c.counts.action++;
     c.lastLogged = t;
+    c.lastActionTime = t;
+    c.eventAfterActions = false;
     if (c.history) c.records.push(t, K_ACTION, k, 0, 0, 0, 0, 0);
     if (c.untils && a.until) c.goals.push(goalFrom(c, a.until, t));
     c.applied++;

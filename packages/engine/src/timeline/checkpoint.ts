@@ -86,4 +86,6 @@ export function restoreKeyframe(c: TimelineCore, k: number): void {
   c.groupOpen = kf.afterActions;
   c.idle = false;
   c.lastLogged = kf.record > 0 ? (c.records.time[kf.record - 1] as number) : c.forgotten.lastTime;
+  c.lastActionTime = kf.afterActions ? kf.time : Number.NEGATIVE_INFINITY;
+  c.eventAfterActions = false;
 }

@@ -70,6 +70,11 @@ export class TimelineCore {
   idle = true;
   /** time of the last event or action */
   lastLogged = 0;
+  /** time of the last group of actions applied (-Infinity: none), and whether an event was computed
+   *  after it: without history (no records) this is how appendsAt knows that an action at the
+   *  horizon would come after events that instant's earlier actions caused */
+  lastActionTime = Number.NEGATIVE_INFINITY;
+  eventAfterActions = false;
   /** how to name action k in error messages */
   pathOf: (k: number) => string = (k) => `actions[${k}]`;
   /** Counts the changes to records or keyframes other than appends (a cut, a restore, a replaced
@@ -98,9 +103,12 @@ export class TimelineCore {
   }
 
   /** Whether an action at time t is applied by computing forward from the horizon (no restore): t
-   *  after the horizon, or at it when the last entry logged is before t or is an action. */
+   *  after the horizon, or at it when the last entry logged is before t or is an action. Without
+   *  history (nothing to restore), at the horizon unless actions were applied at t and events were
+   *  computed after them (the new action would come after events its group caused). */
   appendsAt(t: number): boolean {
     if (t !== this.horizon) return t > this.horizon;
+    if (!this.history) return !(this.lastActionTime === t && this.eventAfterActions);
     const r = this.records;
     const last = r.length - 1;
     const kind = last >= 0 ? (r.kind[last] as number) : this.forgotten.lastKind;
@@ -114,6 +122,7 @@ export class TimelineCore {
     this.eventTotal++;
     this.counts[e.kind]++;
     this.lastLogged = e.time;
+    this.eventAfterActions = true;
     if (!this.history) return;
     const w = this.world;
     const ia = this.live.get(e.a) as number;

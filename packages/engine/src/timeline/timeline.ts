@@ -25,6 +25,7 @@ import { restoreKeyframe } from "./checkpoint.js";
 import { TimelineCore } from "./core.js";
 import { forgetBefore, forgetTime } from "./forget.js";
 import { type Goal, goalFrom, reopenGoals } from "./goals.js";
+import { type HeadlessInstant, instantHolds, noteInstant, reapplyInstant } from "./headlessInstant.js";
 import { checkKeptActions, checkKeptApply, forgot } from "./kept.js";
 import type { Keyframe } from "./keyframe.js";
 import { notifyAll } from "./listeners.js";
@@ -66,6 +67,8 @@ export class Timeline extends TimelineReader {
   private revision = 0;
   private readonly listeners = new Set<() => void>();
   private slice: { until: Until; goal: Goal } | null = null;
+  /** without history: the instant at the horizon, so an action there joins its group (headlessInstant.ts) */
+  private instant: HeadlessInstant | null = null;
   private actionsView: readonly Action[] | null = null;
   /** the scene's meta (JSON text, so each toScene gets its own copy), kept for toScene */
   private metaJson: string | null = null;
@@ -155,8 +158,25 @@ export class Timeline extends TimelineReader {
     while (insertAt > 0 && (c.acts[insertAt - 1] as Action).time > a.time) insertAt--;
     const forward = c.appendsAt(a.time);
     checkKeptApply(c, insertAt, a.time);
+    if (!forward && !c.history && instantHolds(this.instant, c, a.time)) {
+      try {
+        reapplyInstant(c, this.instant, a);
+      } catch (e) {
+        if (e instanceof SceneError && e.path.startsWith("actions["))
+          throw new SceneError(e.path, `${e.reason} (once this action is in place)`);
+        throw e;
+      }
+      this.slice = null;
+      this.changed();
+      return;
+    }
     if (!forward && !c.history)
-      throw new SceneError("action.time", `must be >= the horizon ${c.horizon} (history is off)`);
+      throw new SceneError(
+        "action.time",
+        a.time === c.horizon
+          ? `must be after ${a.time}: the events that instant's actions caused are computed, and without history (history: false) the instant cannot be computed again; apply it before computing past the actions at ${a.time}, or keep history`
+          : `must be >= the horizon ${c.horizon} (history is off)`,
+      );
     let k = 0;
     if (!forward) {
       const kfs = c.keyframes;
@@ -194,6 +214,7 @@ export class Timeline extends TimelineReader {
         throw new SceneError(e.path, `${e.reason} (once this action is in place)`);
       throw e;
     }
+    if (!c.history) this.instant = forward ? noteInstant(this.instant, c, a, undo) : null;
     this.slice = null;
     this.changed();
   }
@@ -210,6 +231,7 @@ export class Timeline extends TimelineReader {
     const sorted = order.map((i) => checked[i] as Action);
     const c = this.core;
     const oldHorizon = c.horizon;
+    this.instant = null;
     // Actions are named by their index in the list given, also when a later prolong applies them
     // (with compute: false, as the CLI runs a file): a file's actions[0] is its first action, not
     // the earliest. The next apply() names them by their index in `actions` again.
@@ -314,6 +336,8 @@ export class Timeline extends TimelineReader {
         throw error;
       }
     }
+    // computed past the instant: its record (a World copy) is no longer needed
+    if (this.instant !== null && this.core.horizon > this.instant.time) this.instant = null;
     this.changed();
     return res;
   }

@@ -31,6 +31,8 @@ export function saveCore(c: TimelineCore, cutRecord: number): () => void {
     groupOpen: c.groupOpen,
     idle: c.idle,
     lastLogged: c.lastLogged,
+    lastActionTime: c.lastActionTime,
+    eventAfterActions: c.eventAfterActions,
     sortedLive: c.sortedLive,
     pathOf: c.pathOf,
     forgotten: c.forgotten.records,
@@ -60,6 +62,8 @@ export function saveCore(c: TimelineCore, cutRecord: number): () => void {
     c.groupOpen = saved.groupOpen;
     c.idle = saved.idle;
     c.lastLogged = saved.lastLogged;
+    c.lastActionTime = saved.lastActionTime;
+    c.eventAfterActions = saved.eventAfterActions;
     c.sortedLive = saved.sortedLive;
     c.pathOf = saved.pathOf;
   };
