@@ -347,3 +347,15 @@ export const NEGLIGIBLE_DRIFT = 16 * UNIT_ROUNDOFF;
  * to get out, never meeting it again and falling through (20°, 30°: audit of session 17).
  */
 export const CONTACT_BAND = 16 * UNIT_ROUNDOFF;
+
+/**
+ * At a collision the centres are the contact distance D apart (r1 + r2, or r from a line or point)
+ * up to a few roundings of the coordinates. When, as doubles, they are farther than
+ * CONTACT_UNRESOLVED_FRACTION·D from it, the coordinates are so large against the radii that their
+ * rounding is of the size of the discs (|x| ≳ 2^52 r: a disc of radius 1 at x = 1e16): the contact
+ * normal is then meaningless (0/0 when two centres round to one double, which gave NaN normals and
+ * discs passing through each other; a centre rounded onto a wall's line was taken for a Zeno state:
+ * audit of session 20). Such an event throws a SimulationError that says so (physics/resolution.ts).
+ * At any scale the doubles resolve, the offset is a few ulps of D, so 1/2 never fires there.
+ */
+export const CONTACT_UNRESOLVED_FRACTION = 0.5;

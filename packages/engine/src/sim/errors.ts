@@ -24,9 +24,13 @@ export class ChapgameError extends Error {
  */
 export class SimulationError extends Error {
   readonly time: number;
-  constructor(message: string, time: number) {
+  /** What the failing event involved, when one contact is to blame: the body (or the two bodies, in
+   *  id order), then the line or point; [] for a Zeno state of many events. */
+  readonly ids: readonly string[];
+  constructor(message: string, time: number, ids: readonly string[] = []) {
     super(message);
     this.name = "SimulationError";
     this.time = time;
+    this.ids = Object.freeze([...ids]);
   }
 }

@@ -37,6 +37,7 @@ export class PushWatch {
       throw new SimulationError(
         `body '${id}' stopped ${n} times in a row where it had been set in motion, not moving by one rounding unit (to t=${time}): a disc pushed along against friction by another (a sustained push), which the model of elastic impulses and sliding friction resolves only by ever more collisions`,
         time,
+        [id],
       );
   }
 

@@ -5,6 +5,7 @@
  * peek.ts).
  */
 
+import { contactResolved, unresolvedContact } from "../physics/resolution.js";
 import { discDiscResponse, impulseMagnitude, reflectResponse } from "../physics/response.js";
 import { pressedInto } from "../physics/resting.js";
 import { EV_BODY, EV_LINE, EV_POINT, EV_STOP } from "./bodyStore.js";
@@ -119,6 +120,10 @@ export class Simulator extends ZenoGuard {
           this.yAt(s, t),
         );
         this.reflectOff(s, id, contact[0] as number, contact[1] as number);
+      } else if (kind === EV_BODY) {
+        const o = this.store.evOther[s] as number;
+        const t = this.now;
+        this.requireResolved(s, o, this.xAt(s, t), this.yAt(s, t), this.xAt(o, t), this.yAt(o, t));
       }
       this.guardZeno(before, s, kind);
     } finally {
@@ -148,13 +153,14 @@ export class Simulator extends ZenoGuard {
     const vyq = this.vyAt(q, t);
     const mp = b.m[p] as number;
     const mq = b.m[q] as number;
-    const approach = discDiscResponse(xp, yp, vxp, vyp, mp, xq, yq, vxq, vyq, mq, vel);
-    this.setMotion(p, t, xp, yp, vel[0] as number, vel[1] as number);
-    this.setMotion(q, t, xq, yq, vel[2] as number, vel[3] as number);
     const dx = xq - xp;
     const dy = yq - yp;
     const d = Math.sqrt(dx * dx + dy * dy);
     const rp = b.r[p] as number;
+    if (!contactResolved(d, rp + (b.r[q] as number))) this.requireResolved(p, q, xp, yp, xq, yq);
+    const approach = discDiscResponse(xp, yp, vxp, vyp, mp, xq, yq, vxq, vyq, mq, vel);
+    this.setMotion(p, t, xp, yp, vel[0] as number, vel[1] as number);
+    this.setMotion(q, t, xq, yq, vel[2] as number, vel[3] as number);
     const ev = this.ev;
     ev.time = t;
     ev.kind = "bodyBody";
@@ -224,6 +230,71 @@ export class Simulator extends ZenoGuard {
   }
 
   /**
+   * Throws the SimulationError of a contact the doubles cannot place (physics/resolution.ts) when
+   * bodies s and o, centred at (xs, ys) and (xo, yo), are not within it of touching; else nothing.
+   */
+  private requireResolved(s: number, o: number, xs: number, ys: number, xo: number, yo: number): void {
+    const b = this.store;
+    const dx = xo - xs;
+    const dy = yo - ys;
+    const d = Math.sqrt(dx * dx + dy * dy);
+    const D = (b.r[s] as number) + (b.r[o] as number);
+    if (contactResolved(d, D)) return;
+    // in the canonical order of the log (idOrder.ts)
+    const first = idBefore(
+      b.idKey[s] as number,
+      b.idKey[o] as number,
+      b.ids[s] as string,
+      b.ids[o] as string,
+    );
+    const ids = first ? [b.ids[s] as string, b.ids[o] as string] : [b.ids[o] as string, b.ids[s] as string];
+    const t = this.now;
+    const message = unresolvedContact({
+      what: `body '${ids[0]}' meets body '${ids[1]}'`,
+      between: "the centres",
+      t,
+      d,
+      D,
+      coordinate: Math.max(Math.abs(xs), Math.abs(ys), Math.abs(xo), Math.abs(yo)),
+      speed: Math.max(this.speedAt(s, t), this.speedAt(o, t)),
+    });
+    throw new SimulationError(message, t, ids);
+  }
+
+  /** The same for body s, centred at (x, y), at distance d from obstacle `id` (a line when `line`) whose point (px, py) is nearest it. */
+  private requireResolvedObstacle(
+    s: number,
+    id: string,
+    line: boolean,
+    x: number,
+    y: number,
+    d: number,
+    px: number,
+    py: number,
+  ): void {
+    const r = this.store.r[s] as number;
+    if (contactResolved(d, r)) return;
+    const who = this.store.ids[s] as string;
+    const t = this.now;
+    const message = unresolvedContact({
+      what: `body '${who}' meets '${id}'`,
+      between: line ? "the centre and the line" : "the centre and the point",
+      t,
+      d,
+      D: r,
+      coordinate: Math.max(Math.abs(x), Math.abs(y), Math.abs(px), Math.abs(py)),
+      speed: this.speedAt(s, t),
+    });
+    throw new SimulationError(message, t, [who, id]);
+  }
+
+  private speedAt(s: number, t: number): number {
+    const vx = this.vxAt(s, t);
+    const vy = this.vyAt(s, t);
+    return Math.sqrt(vx * vx + vy * vy);
+  }
+
+  /**
    * Contact of body s, centred at (x, y), with an obstacle (kind, index, aux as in the prediction):
    * writes the normal from the disc towards the obstacle (not normalised) and the contact point to
    * `contact`; returns the obstacle's id.
@@ -237,6 +308,10 @@ export class Simulator extends ZenoGuard {
       const ny = side > 0 ? -line.ex : line.ex;
       const len = Math.sqrt(line.ee);
       const r = this.store.r[s] as number;
+      // side: the signed distance (unit normal); its foot on the line, for the message's scale
+      const dist = side < 0 ? -side : side;
+      if (!contactResolved(dist, r))
+        this.requireResolvedObstacle(s, line.id, true, x, y, dist, line.x1, line.y1);
       contact[0] = nx;
       contact[1] = ny;
       contact[2] = x + (r * nx) / len;
@@ -261,6 +336,9 @@ export class Simulator extends ZenoGuard {
     contact[1] = py - y;
     contact[2] = px;
     contact[3] = py;
+    const dist = Math.sqrt((px - x) * (px - x) + (py - y) * (py - y));
+    if (!contactResolved(dist, this.store.r[s] as number))
+      this.requireResolvedObstacle(s, id, kind === EV_LINE, x, y, dist, px, py);
     return id;
   }
 
@@ -290,6 +368,7 @@ export class Simulator extends ZenoGuard {
       throw new SimulationError(
         `body '${this.store.ids[s]}' rests against '${otherId}' under an acceleration at t=${t}: resting contact is not supported (it would take infinitely many bounces)`,
         t,
+        [this.store.ids[s] as string, otherId],
       );
     }
     return approach;
