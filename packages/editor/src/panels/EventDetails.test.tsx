@@ -170,15 +170,16 @@ describe("EventDetails", () => {
 
   it("participantSelection: bodies, then the line or point of a collision; an action's object", () => {
     const base = { time: 1, point: null, normal: null, impulse: null, bodies: [] };
-    expect(participantSelection({ ...base, type: "bodyLine", ids: ["a", "w"] }, 1)).toEqual({
+    const hit = { time: 1, point: [0, 0] as const, normal: [1, 0] as const, impulse: 1, bodies: [] };
+    expect(participantSelection({ ...hit, type: "bodyLine", ids: ["a", "w"] }, 1)).toEqual({
       kind: "line",
       id: "w",
     });
-    expect(participantSelection({ ...base, type: "bodyPoint", ids: ["a", "q"] }, 0)).toEqual({
+    expect(participantSelection({ ...hit, type: "bodyPoint", ids: ["a", "q"] }, 0)).toEqual({
       kind: "body",
       id: "a",
     });
-    expect(participantSelection({ ...base, type: "bodyBody", ids: ["a", "b"] }, 1)).toEqual({
+    expect(participantSelection({ ...hit, type: "bodyBody", ids: ["a", "b"] }, 1)).toEqual({
       kind: "body",
       id: "b",
     });

@@ -158,7 +158,8 @@ describe("EventLog", () => {
 
   it("labels an entry by its kind, with the action's type in words for an action", () => {
     const base = { time: 1, ids: ["a"], point: null, normal: null, impulse: null };
-    expect(kindLabel({ ...base, type: "bodyLine" })).toBe("body–line");
+    const hit = { time: 1, point: [0, 0] as const, normal: [1, 0] as const, impulse: 1 };
+    expect(kindLabel({ ...hit, ids: ["a", "w"], type: "bodyLine" })).toBe("body–line");
     expect(kindLabel({ ...base, type: "action", action: "setGlobal" })).toBe("action: set global");
     expect(kindLabel({ ...base, type: "action", action: "removePoint" })).toBe("action: remove point");
   });
@@ -231,9 +232,11 @@ describe("EventLog", () => {
 
   it("highlightOf: every participant with its kind; an action's object; nothing for setGlobal", () => {
     const base = { time: 1, point: null, normal: null, impulse: null };
-    expect(highlightOf({ ...base, type: "bodyBody", ids: ["a", "b"] })).toEqual(["body:a", "body:b"]);
-    expect(highlightOf({ ...base, type: "bodyPoint", ids: ["a", "p"] })).toEqual(["body:a", "point:p"]);
-    expect(highlightOf({ ...base, type: "stop", ids: ["a"] })).toEqual(["body:a"]);
+    const hit = { time: 1, point: [0, 0] as const, normal: [1, 0] as const, impulse: 1 };
+    const stop = { time: 1, point: [0, 0] as const, normal: null, impulse: 0 };
+    expect(highlightOf({ ...hit, type: "bodyBody", ids: ["a", "b"] })).toEqual(["body:a", "body:b"]);
+    expect(highlightOf({ ...hit, type: "bodyPoint", ids: ["a", "p"] })).toEqual(["body:a", "point:p"]);
+    expect(highlightOf({ ...stop, type: "stop", ids: ["a"] })).toEqual(["body:a"]);
     expect(highlightOf({ ...base, type: "action", action: "removePoint", ids: ["p"] })).toEqual(["point:p"]);
     expect(highlightOf({ ...base, type: "action", action: "setGlobal", ids: [] })).toEqual([]);
   });
@@ -249,8 +252,10 @@ describe("EventLog", () => {
     expect(action("giveVelocity")).toEqual({ kind: "body", id: "x" });
     expect(action("removeBody")).toEqual({ kind: "body", id: "x" });
     expect(action("setGlobal", [])).toBeNull();
-    expect(selectionOf({ ...base, type: "bodyPoint", ids: ["a", "p"] })).toEqual({ kind: "body", id: "a" });
-    expect(selectionOf({ ...base, type: "stop", ids: ["a"] })).toEqual({ kind: "body", id: "a" });
+    const hit = { time: 1, point: [0, 0] as const, normal: [1, 0] as const, impulse: 1 };
+    const stop = { time: 1, point: [0, 0] as const, normal: null, impulse: 0 };
+    expect(selectionOf({ ...hit, type: "bodyPoint", ids: ["a", "p"] })).toEqual({ kind: "body", id: "a" });
+    expect(selectionOf({ ...stop, type: "stop", ids: ["a"] })).toEqual({ kind: "body", id: "a" });
   });
 
   it("filtered by a body, the header counts the body's entries shown, then the log's total", async () => {

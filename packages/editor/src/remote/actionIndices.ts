@@ -50,15 +50,17 @@ export function withActionIndices(
       if (a !== undefined && a.time === e.time && a.type === e.action && id === e.ids[0]) index = i;
     }
     if (!keep(e, k)) continue;
-    const c: PageEvent = {
+    // a copy of the entry's own fields (its ids too), whatever else the object carries
+    const copy = {
       time: e.time,
       type: e.type,
       ids: [...e.ids],
       point: e.point,
       normal: e.normal,
       impulse: e.impulse,
+      ...(e.action === undefined ? {} : { action: e.action }),
     };
-    if (e.action !== undefined) c.action = e.action;
+    const c = copy as PageEvent; // the same type and fields as e
     if (index !== undefined) c.actionIndex = index;
     out.push(c);
   }

@@ -46,7 +46,14 @@ describe("findEventDetail", () => {
   });
 
   it("matches compares time, kind, ids in order and action type", () => {
-    const e = { time: 1, type: "bodyBody" as const, ids: ["a", "b"], point: null, normal: null, impulse: 0 };
+    const e = {
+      time: 1,
+      type: "bodyBody" as const,
+      ids: ["a", "b"] as [string, string],
+      point: [0, 0] as const,
+      normal: [1, 0] as const,
+      impulse: 0,
+    };
     expect(matches(e, refOf(e))).toBe(true);
     expect(matches(e, { time: 1, type: "bodyBody", ids: ["b", "a"] })).toBe(false);
     expect(matches(e, { time: 1, type: "bodyBody", ids: ["a"] })).toBe(false);

@@ -3,14 +3,13 @@ import type { LogEvent } from "../engineTypes";
 import { F_FROM, F_UNTIL, FRAME_STRIDE } from "./protocol";
 import { markValidity } from "./validity";
 
-const ev = (time: number, type: LogEvent["type"], ids: string[]): LogEvent => ({
-  time,
-  type,
-  ids,
-  point: null,
-  normal: null,
-  impulse: null,
-});
+/** A log entry of this type and these participants (the contact fields do not matter here). */
+const ev = (time: number, type: LogEvent["type"], ids: string[]): LogEvent =>
+  type === "action"
+    ? { time, type, ids, point: null, normal: null, impulse: null, action: "giveVelocity" }
+    : type === "stop"
+      ? { time, type, ids: [ids[0] as string], point: [0, 0], normal: null, impulse: 0 }
+      : { time, type, ids: [ids[0] as string, ids[1] as string], point: [0, 0], normal: [1, 0], impulse: 1 };
 
 function intervals(ids: string[], events: LogEvent[], t: number, window: number, horizon: number) {
   const data = new Float64Array(ids.length * FRAME_STRIDE);

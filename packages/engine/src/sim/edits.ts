@@ -198,7 +198,10 @@ export class Edits extends Placement {
   /** Slot of the body `id`; throws ChapgameError naming `id` when there is none. */
   protected slotOf(id: string): number {
     const s = this.index.get(id);
-    if (s === undefined) throw new ChapgameError("id", `no body with id '${id}'`);
+    if (s === undefined) {
+      requireId("id", id); // a number or an object: say so, not "no body with id '1'"
+      throw new ChapgameError("id", `no body with id '${id}'`);
+    }
     return s;
   }
 

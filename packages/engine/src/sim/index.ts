@@ -15,7 +15,9 @@ export type {
   Optimizations,
   PointState,
   Vec2,
+  WorldCollision,
   WorldEvent,
   WorldOptions,
+  WorldStop,
 } from "./types.js";
 export { World } from "./world.js";

@@ -24,6 +24,31 @@ function oneDisc(): World {
 }
 
 describe("World input objects", () => {
+  it("a lookup given an id that is not a string says so, not 'no body with id 1' (audit of session 20)", () => {
+    const w = oneDisc();
+    w.addBody("1", { x: 5, y: 0, r: 1, m: 1 });
+    w.addLine("1", [0, -5], [1, -5], "line");
+    w.addPoint("1", [0, 5]);
+    const bad = [1, { id: "1" }, null, undefined] as unknown as string[];
+    for (const id of bad) {
+      for (const call of [
+        () => w.body(id),
+        () => w.motion(id),
+        () => w.removeBody(id),
+        () => w.updateBody(id, { vx: 1 }),
+        () => w.updateLine(id, { kind: "ray" }),
+        () => w.removeLine(id),
+        () => w.updatePoint(id, [0, 6]),
+        () => w.removePoint(id),
+      ]) {
+        const e = refusal(call);
+        expect(e.message).toBe("id: must be a non-empty string");
+      }
+    }
+    expect(w.hasBody("1") && w.hasLine("1") && w.hasPoint("1")).toBe(true);
+    expect(w.bodyCount).toBe(2);
+  });
+
   it("refuses a missing or non-object init, patch, options or limits by name", () => {
     const w = oneDisc();
     expect(refusal(() => w.addBody("b", null as unknown as BodyInit)).path).toBe("init");

@@ -139,6 +139,7 @@ export class Placement extends Simulator {
    * such line. Nothing changes on error.
    */
   updateLine(id: string, patch: { p1?: Vec2; p2?: Vec2; kind?: LineKind }): void {
+    requireId("id", id);
     const i = this.lineList.findIndex((l) => l.id === id);
     if (i < 0) throw new ChapgameError("id", `no line with id '${id}'`);
     // (a LineState's id may come back with it; the id argument names the line)
@@ -156,6 +157,7 @@ export class Placement extends Simulator {
 
   /** Remove a line at the current time. Throws ChapgameError naming `id` when there is no such line. */
   removeLine(id: string): void {
+    requireId("id", id);
     if (!this.hasLine(id)) throw new ChapgameError("id", `no line with id '${id}'`);
     this.lineList = this.lineList.filter((l) => l.id !== id);
     this.markDirty();
@@ -175,6 +177,7 @@ export class Placement extends Simulator {
 
   /** Move a point to `p` at the current time. Checked as addPoint; ChapgameError naming `id` when there is no such point. */
   updatePoint(id: string, p: Vec2): void {
+    requireId("id", id);
     if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id '${id}'`);
     const point = this.checkedPoint(id, p);
     this.pointList = this.pointList.map((q) => (q.id === id ? point : q));
@@ -183,6 +186,7 @@ export class Placement extends Simulator {
 
   /** Remove a point at the current time. Throws ChapgameError naming `id` when there is no such point. */
   removePoint(id: string): void {
+    requireId("id", id);
     if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id '${id}'`);
     this.pointList = this.pointList.filter((q) => q.id !== id);
     this.markDirty();

@@ -57,7 +57,7 @@ export class Simulator extends ZenoGuard {
       this.guardZeno(before, s, kind);
       this.processStop(s);
     } else this.processObstacle(s, kind, b.evOther[s] as number, b.evAux[s] as number, before);
-    onEvent?.(this.ev);
+    onEvent?.(this.ev as WorldEvent); // filled in by the process method: its kind and b agree
     return 1;
   }
 
@@ -171,7 +171,7 @@ export class Simulator extends ZenoGuard {
     ev.px = xp + rp * ev.nx;
     ev.py = yp + rp * ev.ny;
     ev.impulse = impulseMagnitude(mp, mq, approach);
-    this.counts.bodyBody++;
+    this.tally.bodyBody++;
     this.predict(p);
     this.predict(q);
   }
@@ -192,7 +192,7 @@ export class Simulator extends ZenoGuard {
     ev.nx = 0;
     ev.ny = 0;
     ev.impulse = 0;
-    this.counts.stop++;
+    this.tally.stop++;
     this.predict(s);
   }
 
@@ -224,8 +224,8 @@ export class Simulator extends ZenoGuard {
     ev.ny = ny / nn;
     const m = b.m[s] as number;
     ev.impulse = m === INF ? (approach > 0 ? INF : 0) : 2 * m * approach;
-    if (kind === EV_LINE) this.counts.bodyLine++;
-    else this.counts.bodyPoint++;
+    if (kind === EV_LINE) this.tally.bodyLine++;
+    else this.tally.bodyPoint++;
     this.predict(s);
   }
 

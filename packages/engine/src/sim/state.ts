@@ -11,7 +11,7 @@ import { BodyStore, EV_BODY, EV_CROSS, EV_LINE, EV_POINT } from "./bodyStore.js"
 import { CalendarQueue } from "./calendarQueue.js";
 import { Grid } from "./grid.js";
 import type { Line, Point } from "./obstacles.js";
-import type { EventCounts, Optimizations, Vec2, WorldEvent } from "./types.js";
+import type { EventCounts, Optimizations, Vec2, WorldEventRecord } from "./types.js";
 import { ZenoWatch } from "./zenoWatch.js";
 
 const INF = Number.POSITIVE_INFINITY;
@@ -56,14 +56,19 @@ export class SimState {
     this.dirty = true;
     this.changes++;
   }
+  /** The counts the World updates (`counts` shows them read-only). */
+  protected readonly tally: EventCounts = { bodyBody: 0, bodyLine: 0, bodyPoint: 0, stop: 0 };
   /**
    * Collisions by kind and friction stops processed by this World so far (a clone starts from a
-   * copy). A live object, updated as events are processed: copy it to keep a snapshot.
+   * copy). A live object, updated as events are processed: copy it to keep a snapshot. Read-only
+   * (a program that wrote into it changed what the World reported: audit of session 20).
    */
-  readonly counts: EventCounts = { bodyBody: 0, bodyLine: 0, bodyPoint: 0, stop: 0 };
+  get counts(): Readonly<EventCounts> {
+    return this.tally;
+  }
   /** Reports runs of events the exact model cannot pass (zenoWatch.ts). */
   protected readonly zeno = new ZenoWatch();
-  protected readonly ev: WorldEvent = {
+  protected readonly ev: WorldEventRecord = {
     time: 0,
     kind: "stop",
     a: "",
@@ -135,7 +140,7 @@ export class SimState {
     target.obstStamp = new Int32Array(this.obstStamp.length);
     target.dirty = this.dirty;
     target.gridBodies = this.gridBodies;
-    Object.assign(target.counts, this.counts);
+    Object.assign(target.tally, this.tally);
     target.zeno.load(this.zeno.save());
   }
 

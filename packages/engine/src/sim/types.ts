@@ -138,14 +138,18 @@ export interface PointState {
 }
 
 /**
- * One processed event. The World reuses a single object for every event: copy what you keep.
- * For bodyBody, `a` < `b` in id order. The normal points from `a` towards `b` (the obstacle).
+ * One processed event: a collision (WorldCollision) or a stop (WorldStop), told apart by `kind`
+ * (`if (e.kind !== "stop") e.b` is a string). The World reuses a single object for every event:
+ * copy what you keep. For bodyBody, `a` < `b` in id order. The normal points from `a` towards `b`
+ * (the obstacle).
  */
-export interface WorldEvent {
+export type WorldEvent = WorldCollision | WorldStop;
+
+/** The fields every WorldEvent has. */
+interface WorldEventFields {
   time: number;
-  kind: EventKind;
+  /** The body (for bodyBody, the one first in id order). */
   a: string;
-  b: string | null;
   /** Contact point; for a stop, where the body stopped. */
   px: number;
   py: number;
@@ -154,6 +158,24 @@ export interface WorldEvent {
   ny: number;
   /** Magnitude of the impulse (Infinity when both masses are infinite); 0 for a stop or a graze. */
   impulse: number;
+}
+
+/** A collision: `b` is the other body (bodyBody), the line (bodyLine) or the point (bodyPoint). */
+export interface WorldCollision extends WorldEventFields {
+  kind: "bodyBody" | "bodyLine" | "bodyPoint";
+  b: string;
+}
+
+/** A friction stop of body `a`: `b` null, the normal (0, 0), the impulse 0. */
+export interface WorldStop extends WorldEventFields {
+  kind: "stop";
+  b: null;
+}
+
+/** @internal The World's one event object, written field by field (a WorldEvent once filled in). */
+export interface WorldEventRecord extends WorldEventFields {
+  kind: EventKind;
+  b: string | null;
 }
 
 /** Switches for the optimisations, so the benchmark can show what each one buys. All default on. */

@@ -2,13 +2,16 @@
 export type { PathPiece } from "./path.js";
 export { Timeline } from "./timeline.js";
 export type {
+  ActionLogEvent,
   ApplyOptions,
+  CollisionLogEvent,
   EventBody,
   EventDetail,
   LogEvent,
   LogKind,
   ProlongResult,
   SceneState,
+  StopLogEvent,
   TimelineCounts,
   TimelineOptions,
 } from "./types.js";

@@ -5,25 +5,58 @@ import type { BodyState, EventKind, LineState, PointState } from "../sim/types.j
 /** Kind of a logged event: a collision, a stop, or an action. */
 export type LogKind = EventKind | "action";
 
-/** One logged event. For an action: ids = [the action's id] ([] for setGlobal), point/normal/impulse
- *  null, and `action` = the action's type (the whole action: Timeline.eventAction(i)). For a stop:
- *  point = where the body stopped, normal null, impulse 0. */
-export interface LogEvent {
+/**
+ * One logged entry: a collision, a friction stop or an action, told apart by `type` (TypeScript
+ * narrows on it: `if (e.type === "bodyBody")` gives `ids: [string, string]`, a `point` and a `normal`).
+ * For an action: ids = [the action's id] ([] for setGlobal), point/normal/impulse null, and `action` =
+ * the action's type (the whole action: Timeline.eventAction(i)). For a stop: point = where the body
+ * stopped, normal null, impulse 0. Every member has every field (null where it does not apply), so
+ * the fields can be read without narrowing too; the JSON is the same.
+ */
+export type LogEvent = CollisionLogEvent | StopLogEvent | ActionLogEvent;
+
+/** A collision entry: [body, body] in id order, [body, line] or [body, point]. */
+export interface CollisionLogEvent {
   /** Absolute time of the entry. */
   time: number;
-  /** What happened: a collision (bodyBody, bodyLine, bodyPoint), a friction stop, or an action. */
-  type: LogKind;
-  /** The participants: [body, body] in id order, [body, line], [body, point], [body] for a stop,
-   *  [the action's id] for an action ([] for setGlobal). */
+  type: "bodyBody" | "bodyLine" | "bodyPoint";
+  /** The participants: [body, body] in id order, [body, line], [body, point]. */
+  ids: [string, string];
+  /** Contact point. */
+  point: Vec2;
+  /** Unit normal at contact from the first id towards the second. */
+  normal: Vec2;
+  /** Magnitude of the impulse (Infinity when both masses are infinite; 0 for a graze). */
+  impulse: number;
+  action?: never;
+}
+
+/** A friction stop of one body. */
+export interface StopLogEvent {
+  time: number;
+  type: "stop";
+  /** [the body] */
+  ids: [string];
+  /** Where the body stopped. */
+  point: Vec2;
+  normal: null;
+  /** 0 */
+  impulse: number;
+  action?: never;
+}
+
+/** An action applied at `time` (Timeline.eventAction(i) gives the whole action). */
+export interface ActionLogEvent {
+  time: number;
+  type: "action";
+  /** [the action's id], [] for setGlobal (an array, not a tuple type, so that `ids.includes(id)`
+   *  type-checks on any entry). */
   ids: string[];
-  /** Contact point; for a stop, where the body stopped; null for an action. */
-  point: Vec2 | null;
-  /** Unit normal at contact from the first id towards the second; null for a stop or an action. */
-  normal: Vec2 | null;
-  /** Magnitude of the impulse (Infinity when both masses are infinite); 0 for a stop; null for an action. */
-  impulse: number | null;
-  /** Only on entries of type "action": what the action did (addBody, giveVelocity, removeLine, …). */
-  action?: ActionType;
+  point: null;
+  normal: null;
+  impulse: null;
+  /** What the action did (addBody, giveVelocity, removeLine, …). */
+  action: ActionType;
 }
 
 /** One body taking part in a log entry (`EventDetail.bodies`): its exact state just before and
@@ -53,10 +86,10 @@ export interface EventBody {
  *   instant on the same body show their combined effect: the engine keeps no state in between).
  *   Obstacle actions and setGlobal: no bodies ([]).
  */
-export interface EventDetail extends LogEvent {
+export type EventDetail = LogEvent & {
   /** The participating bodies (see above). */
   bodies: EventBody[];
-}
+};
 
 /** The exact state of the scene at one time; every list sorted by id. */
 export interface SceneState {
