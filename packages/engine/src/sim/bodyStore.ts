@@ -122,7 +122,10 @@ export class BodyStore {
   }
 
   clone(): BodyStore {
-    const s = new BodyStore(this.capacity);
+    // empty arrays first (not `capacity` of each, thrown away at once: a Timeline clones its World
+    // at every apply, where that was most of the cost for a small scene)
+    const s = new BodyStore(0);
+    s.capacity = this.capacity;
     s.count = this.count;
     s.ids = this.ids.slice();
     s.free = this.free.slice();

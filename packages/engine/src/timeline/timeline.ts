@@ -185,7 +185,16 @@ export class Timeline extends TimelineReader {
         if (kf.time < a.time || (kf.time === a.time && kf.afterActions && kf.actionCount === insertAt)) break;
       }
     }
-    const undo = saveCore(c, forward ? c.records.length : (c.keyframes[k] as Keyframe).record);
+    // With history, only what this edit can change is kept (undo.ts); without, everything (the undo
+    // may serve a later action at the same instant: headlessInstant.ts).
+    const scope = forward
+      ? { fromKeyframe: c.keyframes.length - 1, insertAt, worldReplaced: false }
+      : { fromKeyframe: k, insertAt, worldReplaced: true };
+    const undo = saveCore(
+      c,
+      forward ? c.records.length : (c.keyframes[k] as Keyframe).record,
+      c.history ? scope : undefined,
+    );
     try {
       const oldHorizon = c.horizon;
       if (!forward) restoreKeyframe(c, k);
@@ -240,7 +249,10 @@ export class Timeline extends TimelineReader {
     // after forgetBefore, keyframe 0 is the start of the kept history: a restart point, not scratch
     const k = c.history ? restartKeyframe(c.acts, c.keyframes, sorted) : 0;
     if (k > 0 || forgot(c)) {
-      const undo = saveCore(c, (c.keyframes[k] as Keyframe).record);
+      const undo = saveCore(c, (c.keyframes[k] as Keyframe).record, {
+        fromKeyframe: k,
+        worldReplaced: true,
+      });
       try {
         restoreKeyframe(c, k);
         c.acts = sorted;

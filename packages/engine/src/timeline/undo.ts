@@ -1,29 +1,68 @@
 /**
- * saveCore(core, cutRecord): everything needed to undo the next operation on a TimelineCore, which
- * may cut the records back to `cutRecord` (records.length when it only appends). Returns the undo.
- * Costs O(bodies + records after cutRecord): apply() and setActions() use it to change nothing when
- * they throw. It holds records by their index: forgetBefore (which renumbers them) must not run
- * between saveCore and its undo; it never does (no Timeline method calls it inside an edit), and the
- * undo refuses to run if it did rather than restore forgotten records inconsistently.
+ * saveCore(core, cutRecord, edit?): everything needed to undo the next operation on a TimelineCore,
+ * which may cut the records back to `cutRecord` (records.length when it only appends). Returns the
+ * undo. apply() and setActions() use it to change nothing when they throw. It holds records by their
+ * index: forgetBefore (which renumbers them) must not run between saveCore and its undo; it never
+ * does (no Timeline method calls it inside an edit), and the undo refuses to run if it did rather
+ * than restore forgotten records inconsistently.
+ *
+ * Without `edit` everything is copied: O(bodies + actions + keyframes + records after cutRecord).
+ * With `edit` (an EditScope: what the operation may change, given by the caller), only what it may
+ * change is kept, so that an edit costs O(live bodies + what it recomputes), not O(every action and
+ * keyframe ever) (audit of session 20: a game applying one action a frame slowed down without
+ * bound, forgetBefore or not). The scope's promises, which apply() and setActions() keep:
+ * - nothing before keyframe `fromKeyframe` changes: every keyframe, body id, line id, point id and
+ *   action-event entry before it stays (a restore goes back to that keyframe at most, and computing
+ *   only appends after it; the last keyframe can be replaced);
+ * - the action list is changed only by inserting one action at `insertAt`, or replaced by a new array;
+ * - with `worldReplaced`, the World object is replaced (restoreKeyframe) before anything changes
+ *   it, so the old one needs no copy.
+ * The undo must run before any other operation on the core.
  */
 import type { TimelineCore } from "./core.js";
+import type { Keyframe } from "./keyframe.js";
 import { MotionTable } from "./motionTable.js";
 
-export function saveCore(c: TimelineCore, cutRecord: number): () => void {
+/** What an edit may change (see the header). */
+export interface EditScope {
+  fromKeyframe: number;
+  insertAt?: number;
+  worldReplaced: boolean;
+}
+
+/** An array's elements from `start` on, and how to put them back. */
+interface Tail<T> {
+  start: number;
+  items: T[];
+}
+
+function tailOf<T>(list: T[], start: number): Tail<T> {
+  return { start, items: list.slice(start) };
+}
+
+function putBack<T>(list: T[], tail: Tail<T>): void {
+  list.length = tail.start;
+  for (const x of tail.items) list.push(x);
+}
+
+export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): () => void {
+  const kf = edit === undefined ? null : (c.keyframes[edit.fromKeyframe] as Keyframe);
   const saved = {
-    world: c.world.clone(),
-    acts: c.acts.slice(),
-    actEvents: c.actEvents.slice(),
+    world: edit?.worldReplaced ? c.world : c.world.clone(),
+    acts: kf === null ? c.acts.slice() : c.acts,
+    actsLength: c.acts.length,
+    actEvents: tailOf(c.actEvents, kf === null ? 0 : Math.min(kf.actionCount, c.actEvents.length)),
     applied: c.applied,
     table: c.table.data.slice(),
-    bodyIds: c.bodyIds.slice(),
+    bodyIds: tailOf(c.bodyIds, kf === null ? 0 : Math.min(kf.bodyCount, c.bodyIds.length)),
     live: new Map(c.live),
-    lineIds: c.lineIds.slice(),
+    lineIds: tailOf(c.lineIds, kf === null ? 0 : Math.min(kf.lineCount, c.lineIds.length)),
     lineNums: new Map(c.lineNums),
-    pointIds: c.pointIds.slice(),
+    pointIds: tailOf(c.pointIds, kf === null ? 0 : Math.min(kf.pointCount, c.pointIds.length)),
     pointNums: new Map(c.pointNums),
     tail: c.records.saveTail(cutRecord),
-    keyframes: c.keyframes.slice(),
+    keyframes: tailOf(c.keyframes, edit === undefined ? 0 : edit.fromKeyframe),
+    keyframeList: c.keyframes,
     counts: { ...c.counts },
     eventTotal: c.eventTotal,
     goals: c.goals.slice(),
@@ -37,23 +76,27 @@ export function saveCore(c: TimelineCore, cutRecord: number): () => void {
     pathOf: c.pathOf,
     forgotten: c.forgotten.records,
   };
+  const insertAt = edit?.insertAt;
   return () => {
     if (c.forgotten.records !== saved.forgotten)
       throw new Error("timeline: the history was forgotten during an edit; its undo cannot restore it");
     c.world = saved.world;
     c.acts = saved.acts;
-    c.actEvents = saved.actEvents;
+    // the one action the edit inserted into the same list goes again
+    if (c.acts.length > saved.actsLength && insertAt !== undefined) c.acts.splice(insertAt, 1);
+    putBack(c.actEvents, saved.actEvents);
     c.applied = saved.applied;
     c.table = new MotionTable();
     c.table.data = saved.table;
-    c.bodyIds = saved.bodyIds;
+    putBack(c.bodyIds, saved.bodyIds);
     c.live = saved.live;
-    c.lineIds = saved.lineIds;
+    putBack(c.lineIds, saved.lineIds);
     c.lineNums = saved.lineNums;
-    c.pointIds = saved.pointIds;
+    putBack(c.pointIds, saved.pointIds);
     c.pointNums = saved.pointNums;
     c.records.restoreTail(cutRecord, saved.tail);
-    c.keyframes = saved.keyframes;
+    c.keyframes = saved.keyframeList;
+    putBack(c.keyframes, saved.keyframes);
     c.rewrites++;
     c.counts = saved.counts;
     c.eventTotal = saved.eventTotal;
