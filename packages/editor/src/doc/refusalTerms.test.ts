@@ -17,6 +17,10 @@ describe("refusalInUserTerms", () => {
     expect(refusalInUserTerms("action.v[1]: must be finite", "action.v[1]", strike)).toBe(
       "A vy: must be finite",
     );
+    // the column is headed μ (audit of session 20: "A mu" beside "A μ: must be a number")
+    expect(refusalInUserTerms("action.mu: must be a non-negative finite number", "action.mu", update)).toBe(
+      "A μ: must be a non-negative finite number",
+    );
   });
 
   it("a vector refused whole with one component not finite names that component's cell", () => {

@@ -24,6 +24,7 @@ const FIELD_NAMES: Record<string, string> = {
   "p1[1]": "y1",
   "p2[0]": "x2",
   "p2[1]": "y2",
+  mu: "μ",
 };
 
 /** What an added object is called before it has been seen. */

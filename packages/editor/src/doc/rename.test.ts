@@ -22,7 +22,7 @@ describe("renameObject", () => {
   });
 
   it("refuses an id in use by the same kind, and an empty id", () => {
-    expect(() => renameObject(scene, "body", "a", "b")).toThrow('id: "b" is already used by another body');
-    expect(() => renameObject(scene, "body", "a", "")).toThrow("id: must not be empty");
+    expect(() => renameObject(scene, "body", "a", "b")).toThrow('a id: "b" is already used by another body');
+    expect(() => renameObject(scene, "body", "a", "")).toThrow("a id: must not be empty");
   });
 });

@@ -30,9 +30,10 @@ export function kindOfType(type: string): ObjectKind | null {
 
 /** The scene with `from` renamed to `to` for objects of `kind`; throws a message when refused. */
 export function renameObject(scene: SceneFile, kind: ObjectKind, from: string, to: string): SceneFile {
-  if (to === "") throw new Error("id: must not be empty");
+  // named as the other cells' refusals are: the object, then the column (audit of session 20)
+  if (to === "") throw new Error(`${from} id: must not be empty`);
   if (to !== from && scene.actions.some((a) => kindOf(a) === kind && "id" in a && a.id === to))
-    throw new Error(`id: "${to}" is already used by another ${kind}`);
+    throw new Error(`${from} id: "${to}" is already used by another ${kind}`);
   const actions = scene.actions.map((a) =>
     kindOf(a) === kind && "id" in a && a.id === from ? { ...a, id: to } : a,
   );

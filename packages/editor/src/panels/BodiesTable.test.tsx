@@ -113,12 +113,24 @@ describe("BodiesTable messages", () => {
       await act(async () => {
         fireEvent.keyDown(input, { key: "Enter" });
       });
-      const shown = within(table).getByRole("alert").textContent;
+      // a refusal of the engine shows in the message bar too (the cell's copy is then no alert)
+      const shown = await waitFor(() => {
+        const text = table.querySelector(".cell-error")?.textContent;
+        expect(text).toBeTruthy();
+        return text;
+      });
       fireEvent.keyDown(input, { key: "Escape" });
       return shown;
     };
     expect(await refusal("ball vx", "abc")).toBe("ball vx: must be a number");
     expect(await refusal("ball speed", "-2")).toBe("ball |v|: must be zero or positive");
+    // regression (audit of session 20): "ball v: must be an array of two finite numbers"
+    expect(await refusal("ball speed", "1e999")).toBe("ball |v|: must be a finite number");
+    // the friction column is μ in the engine's refusals too (it said "ball mu")
+    expect(await refusal("ball mu", "-1")).toBe("ball μ: must be a non-negative finite number");
+    expect(await refusal("ball m", "1e999")).toBe(
+      "ball m: 1e999 is too large for a number; type ∞ or Infinity for an immovable body",
+    );
     expect(h.editor.doc.actions.length).toBe(1);
   });
 });

@@ -14,7 +14,7 @@ import { useEditor, useUi } from "../EditorContext";
 import { F_M, F_MU, F_R, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE } from "../remote/protocol";
 import { listBodies, listNote } from "./bodyList";
 import { DeleteRowButton } from "./DeleteRowButton";
-import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
+import { EditableCell, formatNumber, isInfinityWord, parseNumber } from "./EditableCell";
 import { SkipTable } from "./SkipTable";
 import { useLiveFrame } from "./useLiveFrame";
 import { useRevealRow } from "./useRevealRow";
@@ -57,6 +57,12 @@ export function BodiesTable() {
     const cell = `${id} ${COLUMNS.find((c) => c.field === field)?.title ?? field}`;
     if (x === null) return `${cell}: must be a number`;
     if (field === "speed" && x < 0) return `${cell}: must be zero or positive`;
+    // (scaling the velocity by an infinite speed gave NaN components: "v: must be an array of two
+    // finite numbers", a field the table does not have: audit of session 20)
+    if (field === "speed" && !Number.isFinite(x)) return `${cell}: must be a finite number`;
+    // 1e999 overflows to Infinity: an immovable body only when asked for by name (audit)
+    if (field === "m" && !Number.isFinite(x) && !isInfinityWord(text))
+      return `${cell}: ${text.trim()} is too large for a number; type ∞ or Infinity for an immovable body`;
     const [vx, vy] =
       field === "vx" || field === "vy" || field === "speed"
         ? await velocityNow(id, [shownVx, shownVy])

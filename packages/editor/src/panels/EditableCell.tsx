@@ -163,9 +163,15 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
 /** Parses a number typed in a cell ("Infinity" and "∞" allowed); null when it is not a number. */
 export function parseNumber(text: string): number | null {
   const t = text.trim();
-  if (t === "∞" || t === "Infinity" || t === "inf") return Number.POSITIVE_INFINITY;
+  if (isInfinityWord(t)) return Number.POSITIVE_INFINITY;
   if (t === "" || !/^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?$/i.test(t)) return null;
   return Number(t);
+}
+
+/** Whether `text` names infinity (∞, Infinity, inf), rather than a number too large for a double. */
+export function isInfinityWord(text: string): boolean {
+  const t = text.trim();
+  return t === "∞" || t === "Infinity" || t === "inf";
 }
 
 /** From this magnitude on numbers are written with an exponent (they stay narrow in a table). */

@@ -3,31 +3,20 @@
  * momentum at the current time; a plot of energy and events over the computed span (a press on it
  * pauses and goes to that time).
  */
-import { useEffect, useState } from "react";
 import { useEditor, useInfo } from "../EditorContext";
-import type { SeriesPoint } from "../remote/protocol";
 import { formatNumber } from "./EditableCell";
 import { EnergyPlot } from "./EnergyPlot";
 import { kinetics } from "./energy";
 import { useLiveFrame } from "./useLiveFrame";
+import { useSeries } from "./useSeries";
 import { useSlowTime } from "./useThrottledTime";
-
-const SAMPLES = 120;
 
 export function StatsPanel() {
   const editor = useEditor();
   const info = useInfo();
   const t = useSlowTime();
   const frame = useLiveFrame(250);
-  const [series, setSeries] = useState<SeriesPoint[]>([]);
-  const revision = info.revision;
-  const busy = info.computing !== null;
-
-  useEffect(() => {
-    if (revision < 0 || busy) return;
-    const timer = setTimeout(() => editor.client.series(SAMPLES).then(setSeries, () => {}), 300);
-    return () => clearTimeout(timer);
-  }, [editor, revision, busy]);
+  const series = useSeries(editor.client, info.revision, info.computing !== null);
 
   const k = kinetics(frame);
   const c = info.counts;
