@@ -57,3 +57,45 @@ it("the engine package README's examples run and print what the text describes",
     rmSync(dir, { recursive: true, force: true });
   }
 });
+
+it("the engine README's examples type-check as TypeScript against the built types (strict)", () => {
+  // Audit of session 20: copied into a .ts file, its loops over arrays of tuples did not compile.
+  // Checked with every strict option the repository uses. (The root README's example is plain
+  // JavaScript: its `const log = []` has no type to infer.)
+  const readme = readFileSync(join(root, "packages", "engine", "README.md"), "utf8");
+  const blocks = [...readme.matchAll(/```js\n([\s\S]*?)```/g)].map((m) => m[1] as string);
+  const dir = mkdtempSync(join(root, "tests", "readme", ".tmp-"));
+  const tsc = join(root, "node_modules", "typescript", "bin", "tsc");
+  const options = [
+    "--noEmit",
+    "--strict",
+    "--noUncheckedIndexedAccess",
+    "--exactOptionalPropertyTypes",
+    "--module",
+    "nodenext",
+    "--moduleResolution",
+    "nodenext",
+    "--target",
+    "es2022",
+    "--lib",
+    "es2022",
+    "--types",
+    "node",
+  ];
+  try {
+    const files = blocks.map((code, i) => {
+      const f = join(dir, `example${i}.mts`);
+      writeFileSync(f, code);
+      return f;
+    });
+    let errors = "";
+    try {
+      execFileSync(process.execPath, [tsc, ...options, ...files], { encoding: "utf8" });
+    } catch (e) {
+      errors = String((e as { stdout?: string }).stdout ?? e);
+    }
+    expect(errors).toBe("");
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});

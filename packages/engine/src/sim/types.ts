@@ -172,7 +172,7 @@ export interface WorldStop extends WorldEventFields {
   b: null;
 }
 
-/** @internal The World's one event object, written field by field (a WorldEvent once filled in). */
+/** The World's one event object, written field by field (a WorldEvent once filled in). */
 export interface WorldEventRecord extends WorldEventFields {
   kind: EventKind;
   b: string | null;
