@@ -71,15 +71,14 @@ export function count(o: Obj, key: string, path: string): number {
 /** `[x, y]` with both finite. */
 export function vec2(o: Obj, key: string, path: string): Vec2 {
   const v = required(o, key, path);
-  if (
-    !Array.isArray(v) ||
-    v.length !== 2 ||
-    typeof v[0] !== "number" ||
-    typeof v[1] !== "number" ||
-    !Number.isFinite(v[0]) ||
-    !Number.isFinite(v[1])
-  )
+  if (!Array.isArray(v) || v.length !== 2)
     throw new SceneError(join(path, key), "must be an array of two finite numbers");
+  // a pair with one bad component names that component, as the World does (`v[1]`: audit of session 20)
+  for (const k of [0, 1] as const) {
+    const c: unknown = v[k];
+    if (typeof c !== "number" || !Number.isFinite(c))
+      throw new SceneError(`${join(path, key)}[${k}]`, "must be a finite number");
+  }
   return [v[0], v[1]];
 }
 

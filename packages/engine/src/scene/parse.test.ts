@@ -158,7 +158,7 @@ describe("parseScene refuses, naming the path and the reason", () => {
       "actions[0].time: must be a non-negative finite number",
     ],
     ["missing time", base([{ type: "removeBody", id: "a" }]), "actions[0].time: is required"],
-    ["bad v", base([disc("a", 0, { v: [1, "x"] })]), "actions[0].v: must be an array of two finite numbers"],
+    ["bad v", base([disc("a", 0, { v: [1, "x"] })]), "actions[0].v[1]: must be a finite number"],
     [
       "unknown type",
       base([{ time: 0, type: "explode", id: "a" }]),
