@@ -10,6 +10,7 @@ import { describe, expect, it } from "vitest";
 import { SceneError } from "../scene/errors.js";
 import type { Action } from "../scene/types.js";
 import { SimulationError } from "../sim/errors.js";
+import { STRIDE } from "./motionTable.js";
 import { coreOf, disc, fingerprint } from "./testSupport.js";
 import { Timeline } from "./timeline.js";
 
@@ -102,6 +103,30 @@ describe("refused edits change nothing (an edit keeps only what it can change)",
     expect(tl.eventsBetween(20, 40)).toStrictEqual(
       twin.eventsBetween(20, 40).slice(-tl.eventsBetween(20, 40).length),
     );
+  });
+
+  it("forward: refused after computing events on the way, with a body removed before: the motions restored", () => {
+    const tl = busy();
+    tl.apply({ time: 20, type: "removeBody", id: "d" });
+    tl.apply({ time: 25, type: "addBody", id: "d", x: 0, y: 0, r: 0.5, m: 1, v: [1, 2] });
+    tl.prolongTo(40);
+    const before = fingerprint(tl);
+    const table = () => Array.from(coreOf(tl).table.data.subarray(0, coreOf(tl).bodyIds.length * STRIDE));
+    const motions = table();
+    // where a will be at t = 50 (found on a twin): a disc added there at 50 is refused, after the
+    // computation from 40 to 50 rebased every moving body's motion
+    const twin = Timeline.fromScene(tl.toScene());
+    twin.prolongTo(50);
+    const a = twin.stateAt(50).bodies.find((b) => b.id === "a");
+    refused(
+      () => tl.apply({ time: 50, type: "addBody", id: "e", x: a?.x ?? 0, y: a?.y ?? 0, r: 1, m: 1 }),
+      SceneError,
+    );
+    expect(fingerprint(tl)).toStrictEqual(before);
+    expect(table()).toStrictEqual(motions);
+    // keyframes taken from here on come from the motions restored
+    tl.prolongTo(90);
+    expect(fingerprint(tl)).toStrictEqual(fromScratch(tl));
   });
 
   it("an apply keeps the action list and the keyframes in place instead of copying them", () => {

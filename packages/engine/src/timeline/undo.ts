@@ -15,13 +15,14 @@
  *   action-event entry before it stays (a restore goes back to that keyframe at most, and computing
  *   only appends after it; the last keyframe can be replaced);
  * - the action list is changed only by inserting one action at `insertAt`, or replaced by a new array;
- * - with `worldReplaced`, the World object is replaced (restoreKeyframe) before anything changes
- *   it, so the old one needs no copy.
+ * - with `worldReplaced`, the World object and the motion table are replaced (restoreKeyframe)
+ *   before anything changes them, so the old ones need no copy; without it, of the motion table
+ *   only the rows of the live bodies can change.
  * The undo must run before any other operation on the core.
  */
 import type { TimelineCore } from "./core.js";
 import type { Keyframe } from "./keyframe.js";
-import { MotionTable } from "./motionTable.js";
+import { MotionTable, STRIDE } from "./motionTable.js";
 
 /** What an edit may change (see the header). */
 export interface EditScope {
@@ -45,6 +46,19 @@ function putBack<T>(list: T[], tail: Tail<T>): void {
   for (const x of tail.items) list.push(x);
 }
 
+/** Copies of the motion-table rows of the live bodies, with their numbers. */
+function liveRows(c: TimelineCore): { nums: number[]; rows: Float64Array } {
+  const nums = [...c.live.values()];
+  const rows = new Float64Array(nums.length * STRIDE);
+  const d = c.table.data;
+  nums.forEach((n, k) => rows.set(d.subarray(n * STRIDE, (n + 1) * STRIDE), k * STRIDE));
+  return { nums, rows };
+}
+
+function putRows(data: Float64Array, saved: { nums: number[]; rows: Float64Array }): void {
+  saved.nums.forEach((n, k) => data.set(saved.rows.subarray(k * STRIDE, (k + 1) * STRIDE), n * STRIDE));
+}
+
 export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): () => void {
   const kf = edit === undefined ? null : (c.keyframes[edit.fromKeyframe] as Keyframe);
   const saved = {
@@ -53,7 +67,11 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
     actsLength: c.acts.length,
     actEvents: tailOf(c.actEvents, kf === null ? 0 : Math.min(kf.actionCount, c.actEvents.length)),
     applied: c.applied,
-    table: c.table.data.slice(),
+    // the motion table: whole (no scope), untouched (a restore replaces it), or the rows of the live
+    // bodies (the only rows an edit computing forward changes: a body gone keeps its row, and a new
+    // body's row lies past the restored ids and is written whole when a body takes it again)
+    table: edit === undefined ? c.table.data.slice() : c.table.data,
+    rows: edit === undefined || edit.worldReplaced ? null : liveRows(c),
     bodyIds: tailOf(c.bodyIds, kf === null ? 0 : Math.min(kf.bodyCount, c.bodyIds.length)),
     live: new Map(c.live),
     lineIds: tailOf(c.lineIds, kf === null ? 0 : Math.min(kf.lineCount, c.lineIds.length)),
@@ -86,8 +104,9 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
     if (c.acts.length > saved.actsLength && insertAt !== undefined) c.acts.splice(insertAt, 1);
     putBack(c.actEvents, saved.actEvents);
     c.applied = saved.applied;
-    c.table = new MotionTable();
+    c.table = new MotionTable(0);
     c.table.data = saved.table;
+    if (saved.rows !== null) putRows(saved.table, saved.rows);
     putBack(c.bodyIds, saved.bodyIds);
     c.live = saved.live;
     putBack(c.lineIds, saved.lineIds);
