@@ -13,10 +13,11 @@ import type { ReactNode } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { BodyState, EventDetail, Vec2 } from "../engineTypes";
 import { refKey } from "../remote/eventDetail";
+import type { EntryDetail } from "../remote/protocol";
 import type { Selection } from "../store/uiStore";
 import { formatNumber } from "./EditableCell";
 import { kindLabel, selectionOf } from "./EventLog";
-import { stepEntry } from "./entryStep";
+import { NO_EARLIER, NO_LATER, stepEntry } from "./entryStep";
 import { useRefreshed } from "./useRefreshed";
 
 /** Shortest interval between two reads while the timeline keeps changing (a computation). */
@@ -123,7 +124,7 @@ export function EventDetails() {
   const revision = useInfoValue((i) => i.revision);
   const key = refKey(ref);
   // Each reply keeps the key it was asked for: one for an entry selected before is not shown.
-  const read = useRefreshed<{ key: string; detail: EventDetail | null } | null>(
+  const read = useRefreshed<{ key: string; detail: EntryDetail | null } | null>(
     () =>
       ref === null || revision < 0
         ? Promise.resolve(null)
@@ -145,6 +146,9 @@ export function EventDetails() {
     );
   else body = <Details d={read.detail} />;
   const shown = read !== null && read.key === key && read.detail !== null;
+  // greyed out at the ends of the log (the last one computed so far), saying why
+  const first = shown && read.detail?.first === true;
+  const last = shown && read.detail?.last === true;
   return (
     <section className="panel" aria-labelledby="event-details-title">
       <div className="panel-head">
@@ -152,16 +156,16 @@ export function EventDetails() {
         <span className="head-buttons">
           <button
             type="button"
-            disabled={!shown}
-            title="Select the entry logged just before this one (at the same time too)"
+            disabled={!shown || first}
+            title={first ? NO_EARLIER : "Select the entry logged just before this one (at the same time too)"}
             onClick={() => void stepEntry(editor, -1)}
           >
             ◀ Previous entry
           </button>
           <button
             type="button"
-            disabled={!shown}
-            title="Select the entry logged just after this one (at the same time too)"
+            disabled={!shown || last}
+            title={last ? NO_LATER : "Select the entry logged just after this one (at the same time too)"}
             onClick={() => void stepEntry(editor, 1)}
           >
             Next entry ▶

@@ -11,6 +11,7 @@ import type { Action, EventDetail, LogEvent, SceneFile, Until } from "../engineT
 import { EditError } from "./errors";
 import type { PathLine } from "./pathLine";
 import type {
+  EntryDetail,
   EventPage,
   EventRef,
   EventStep,
@@ -189,7 +190,7 @@ export class TimelineClient {
   }
   /** The detail of the log entry `ref` names (before/after states of its bodies), or null when the
    *  current history holds no such entry (protocol.ts `eventDetail`). */
-  eventDetail(ref: EventRef): Promise<EventDetail | null> {
+  eventDetail(ref: EventRef): Promise<EntryDetail | null> {
     return this.request({ op: "eventDetail", ref });
   }
   /** The entry logged just before (−1) or after (+1) the one `ref` names, with its detail and a ref

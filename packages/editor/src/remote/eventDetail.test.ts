@@ -21,7 +21,9 @@ describe("findEventDetail", () => {
     expect(at).toHaveLength(5);
     at.forEach((e, k) => {
       const d = findEventDetail(tl, refOf(e));
-      expect(d).toEqual(tl.eventDetail(tl.eventIndexAt(1) + k));
+      const i = tl.eventIndexAt(1) + k;
+      // with whether it is the log's first or last entry (Event details greys out its steps there)
+      expect(d).toEqual({ ...tl.eventDetail(i), first: false, last: i === tl.eventCount - 1 });
       expect(d?.ids).toEqual(e.ids);
     });
   });

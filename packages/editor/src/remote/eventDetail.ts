@@ -12,7 +12,7 @@
  * cannot.
  */
 import type { EventDetail, LogEvent } from "../engineTypes";
-import type { EventRef, EventStep } from "./protocol";
+import type { EntryDetail, EventRef, EventStep } from "./protocol";
 import type { TimelineLike } from "./timelineLike";
 
 type Log = Pick<TimelineLike, "eventCount" | "event" | "eventDetail" | "eventIndexAt">;
@@ -46,8 +46,14 @@ export function refKey(ref: EventRef | null): string {
 /** Whether a ref's time can name an entry at all (a ref comes from the page, through the worker). */
 const usable = (ref: EventRef): boolean => typeof ref.time === "number" && Number.isFinite(ref.time);
 
+/** Entry i's detail `d` with whether it is the log's first or last entry (Event details greys out
+ *  Previous / Next entry there). */
+function atEnds(tl: Log, i: number, d: EventDetail): EntryDetail {
+  return { ...d, first: i === 0, last: i === tl.eventCount - 1 };
+}
+
 /** The detail of the entry `ref` names, or null (see the header). */
-export function findEventDetail(tl: Log, ref: EventRef): EventDetail | null {
+export function findEventDetail(tl: Log, ref: EventRef): EntryDetail | null {
   if (!usable(ref)) return null;
   const n = tl.eventCount;
   let skip = ref.nth ?? 0;
@@ -58,7 +64,8 @@ export function findEventDetail(tl: Log, ref: EventRef): EventDetail | null {
   for (let i = tl.eventIndexAt(ref.time); i < n; i++) {
     const e = action ? tl.event(i) : tl.eventDetail(i);
     if (e.time !== ref.time) return null;
-    if (matches(e, ref) && skip-- === 0) return action ? tl.eventDetail(i) : (e as EventDetail);
+    if (matches(e, ref) && skip-- === 0)
+      return atEnds(tl, i, action ? tl.eventDetail(i) : (e as EventDetail));
   }
   return null;
 }
@@ -80,7 +87,7 @@ export function stepEventDetail(tl: Log, ref: EventRef, step: 1 | -1): EventStep
   const i = indexOf(tl, ref);
   const j = i + step;
   if (i < 0 || j < 0 || j >= tl.eventCount) return null;
-  const detail = tl.eventDetail(j);
+  const detail = atEnds(tl, j, tl.eventDetail(j));
   const to = refOf(detail);
   let nth = 0;
   for (let k = tl.eventIndexAt(detail.time); k < j; k++) if (matches(tl.event(k), to)) nth++;

@@ -190,8 +190,11 @@ export interface EventRef {
 /** An entry reached by stepping through the log (op `eventStep`): its ref and its detail. */
 export interface EventStep {
   ref: EventRef;
-  detail: EventDetail;
+  detail: EntryDetail;
 }
+
+/** An entry's detail and whether it is the first or the last entry of the log (computed so far). */
+export type EntryDetail = EventDetail & { first: boolean; last: boolean };
 
 export interface EventPage {
   /** Index of the first returned event in the log, or -1 when not known (the log is read by time). */
