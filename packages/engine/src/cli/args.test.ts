@@ -137,6 +137,8 @@ describe("parseArgs", () => {
     // regression: an option was taken for the value of the one before it
     [["simulate", "a", "--until-time", "--events"], "--until-time needs a value"],
     [["--version", "extra"], '--version takes no arguments, got "extra"'],
+    [["check", "a", "--events"], "unknown option --events for check (options: --progress)"],
+    [["check"], "check: missing SCENE file"],
     [["path", "a", "--to", "1"], "path: --id ID is required"],
     [["path", "a", "--id", "b"], "path: --to T is required"],
     [["path", "a", "--id=", "--to", "1"], "--id: must be a body's id, got an empty string"],

@@ -3,6 +3,7 @@
  *   chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--compact] [--progress]
  *   chapgame state SCENE --at T [--events] [--compact] [--progress]
  *   chapgame path SCENE --id ID --to T [--from T] [--compact] [--progress]
+ *   chapgame check SCENE [--progress]
  * (USAGE, the --help text, describes them, the result, how a run ends and the exit statuses.)
  *   chapgame --help | help
  *   chapgame --version
@@ -39,7 +40,8 @@ export type Command =
       to: number;
       compact?: boolean;
       progress?: boolean;
-    };
+    }
+  | { command: "check"; scene: string; progress?: boolean };
 
 export const USAGE = `Usage:
   chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--compact] [--progress]
@@ -68,6 +70,12 @@ export const USAGE = `Usage:
       spans where the body does not exist give no piece. A run the exact model cannot continue
       before --to prints the pieces up to where it stopped, with "to" there, "reason": "error"
       and "error": why, and exits with 2.
+  chapgame check SCENE [--progress]
+      Check a scene file whole: every field, and every action against the simulation (ids that
+      exist, overlaps with bodies that have moved), computing exactly up to its last action, so it
+      ends for any scene. Prints {"valid": true, "actions": N, "checkedTo": T, "events": E} and
+      exits with 0, or {"valid": false, "error": why, "path": the field or null} and exits with 2
+      (the message on stderr too). A Zeno state before the last action makes the scene invalid.
   chapgame --help
   chapgame --version
 
@@ -128,7 +136,7 @@ export function parseArgs(argv: readonly string[]): Command {
     return { command: "version" };
   }
   const [cmd, ...rest] = argv;
-  if (cmd !== "simulate" && cmd !== "state" && cmd !== "path")
+  if (cmd !== "simulate" && cmd !== "state" && cmd !== "path" && cmd !== "check")
     throw new UsageError(`unknown command "${cmd}" (try chapgame --help)`);
   const positional: string[] = [];
   const opts = new Map<string, string | true>();
@@ -138,7 +146,9 @@ export function parseArgs(argv: readonly string[]): Command {
       ? ["--until-time", "--max-events", "--events", "--compact", "--progress"]
       : cmd === "state"
         ? ["--at", "--events", "--compact", "--progress"]
-        : ["--id", "--from", "--to", "--compact", "--progress"];
+        : cmd === "path"
+          ? ["--id", "--from", "--to", "--compact", "--progress"]
+          : ["--progress"];
   let optionsEnd = false;
   for (let i = 0; i < rest.length; i++) {
     const arg = rest[i] as string;
@@ -174,6 +184,11 @@ export function parseArgs(argv: readonly string[]): Command {
   const events = opts.has("--events");
   const progress = opts.has("--progress");
   const compact = opts.has("--compact");
+  if (cmd === "check") {
+    const c: Command = { command: "check", scene };
+    if (progress) c.progress = true;
+    return c;
+  }
   if (cmd === "path") {
     const id = opts.get("--id");
     if (id === undefined) throw new UsageError("path: --id ID is required");
