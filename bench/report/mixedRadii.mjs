@@ -50,7 +50,7 @@ function manyBlock(m, base, out) {
   if (!m.manyRows) return;
   out.push("### Mixed radii: many large discs, and radii over a range\n");
   out.push(
-    `10 % gases of ${int(m.manyRows[0]?.n)} discs, m = r², speed 10, placed at seeded random spots (\`bench/scenes/polydisperse.mjs\`). The grid uses levels only where \`sim/gridCost.ts\` estimates they save more than a third of the pair tests; radii spread evenly on a log scale stay in one level of cells sized for the largest disc. Same timing as above; the last column compares with the gas of radius 1 alone (first table).\n`,
+    `10 % gases of ${int(m.manyRows[0]?.n)} discs, m = r², speed 10, placed at seeded random spots (\`bench/scenes/polydisperse.mjs\`). The grid uses levels only where \`sim/gridCost.ts\` estimates they cut the cost per prediction (pair tests and cell visits) to 65 % or less of one level's (\`GRID_LEVEL_GAIN\`); radii spread evenly on a log scale stay in one level of cells sized for the largest disc. Same timing as above; the last column compares with the gas of radius 1 alone (first table).\n`,
   );
   out.push(
     table(

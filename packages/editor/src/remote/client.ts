@@ -7,7 +7,7 @@
  *   last wanted time (latest wins), so a 60 Hz canvas never queues work in the worker.
  */
 import { drawStats } from "../canvas/drawStats";
-import type { Action, EventDetail, LogEvent, SceneFile, Until } from "../engineTypes";
+import type { Action, LogEvent, SceneFile, Until } from "../engineTypes";
 import { EditError } from "./errors";
 import type { PathLine } from "./pathLine";
 import type {

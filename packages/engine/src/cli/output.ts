@@ -16,7 +16,7 @@ import type { Timeline } from "../timeline/timeline.js";
 import type { LogEvent, ProlongResult } from "../timeline/types.js";
 
 /** Log events per written piece. */
-export const LOG_CHUNK_EVENTS = 4096;
+const LOG_CHUNK_EVENTS = 4096;
 
 /** JSON has no infinities or NaN (JSON.stringify writes null): they are written as strings. */
 function nonFinite(_key: string, v: unknown): unknown {

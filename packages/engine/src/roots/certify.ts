@@ -35,8 +35,6 @@ let orig: ArrayLike<number> = P;
 const last = new Float64Array(1); // |value| at the last certSign point (typed array: no boxing)
 /** Whether the last certSign found |p| within the plain Horner error bound (rounding noise). */
 let lastNoisy = false;
-/** Counts of exact (BigInt) fallbacks, for tests and the benchmark. */
-export const certStats = { exact: 0 };
 
 /** Exponent of the variable scaling: the caller's t is 2^xScale times the solver's s. */
 let xScale = 0;
@@ -73,7 +71,6 @@ export function certSign(x: number): number {
   last[0] = Math.abs(v);
   const bound = ev[1] as number;
   if (Math.abs(v) > bound || bound === 0) return v > 0 ? 1 : v < 0 ? -1 : 0;
-  certStats.exact++;
   return exactPolySign(orig, xScale === 0 ? x : mulPow2(x, xScale));
 }
 
@@ -105,7 +102,6 @@ export function refineRoot(a: number, b: number, sa: number, absA: number, absB:
   let s: number;
   if (at0 > b0 || b0 === 0) s = t0 > 0 ? 1 : t0 < 0 ? -1 : 0;
   else {
-    certStats.exact++;
     s = exactPolySign(orig, xScale === 0 ? x : mulPow2(x, xScale));
   }
   if (s === 0) return x;
@@ -164,7 +160,6 @@ export function closerEnd(a: number, b: number): number {
   const bb = ev[1] as number;
   if (va + ba < vb - bb) return a;
   if (vb + bb < va - ba) return b;
-  certStats.exact++;
   const sa = xScale === 0 ? a : mulPow2(a, xScale);
   const sb = xScale === 0 ? b : mulPow2(b, xScale);
   return exactAbsCompare(orig, sa, sb) <= 0 ? a : b;
@@ -190,7 +185,6 @@ function refineGeneric(a: number, b: number, sa: number, absA: number, absB: num
     let s: number;
     if (av > bound || bound === 0) s = v > 0 ? 1 : v < 0 ? -1 : 0;
     else {
-      certStats.exact++;
       s = exactPolySign(orig, xScale === 0 ? x : mulPow2(x, xScale));
     }
     if (s === 0) return x;
@@ -247,7 +241,6 @@ function certDerivSign(x: number): number {
   compHornerDD(dHi, dLo, deg - 1, x, ev);
   const v = ev[0] as number;
   if (Math.abs(v) > (ev[1] as number)) return v > 0 ? 1 : -1;
-  certStats.exact++;
   return exactDerivativeSign(orig, xScale === 0 ? x : mulPow2(x, xScale));
 }
 

@@ -23,7 +23,7 @@ export function discsOverlap(
 }
 
 /** Squared distance from (x, y) to the line of the given kind through p1, p2 (p1 != p2). */
-export function distance2ToLine(x: number, y: number, p1: Vec2, p2: Vec2, kind: LineKind): number {
+function distance2ToLine(x: number, y: number, p1: Vec2, p2: Vec2, kind: LineKind): number {
   const ux = p2[0] - p1[0];
   const uy = p2[1] - p1[1];
   const wx = x - p1[0];

@@ -27,11 +27,7 @@ export function applyOrder(actions: readonly { time: number }[]): number[] {
 }
 
 /** Checks the scene rules of `actions` (already field-validated) in time order, without simulating. */
-export function checkSceneRules(
-  g: number,
-  gravity: readonly [number, number],
-  actions: readonly Action[],
-): void {
+function checkSceneRules(g: number, gravity: readonly [number, number], actions: readonly Action[]): void {
   const view = new SceneView(0, g, gravity);
   for (const i of applyOrder(actions)) {
     const a = actions[i] as Action;

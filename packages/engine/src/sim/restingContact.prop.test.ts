@@ -92,8 +92,15 @@ function build(c: Case): { w: World; gapOf: () => number } {
   return { w, gapOf };
 }
 
-/** Runs a case: either refused (a SimulationError) or never inside the obstacle, never an endless bounce. */
-function check(c: Case): void {
+/** The refusals a case may end in: a resting contact, or another Zeno state. */
+const REFUSAL = /rests against|Zeno state/;
+
+/**
+ * Runs a case: either refused (a resting contact or another Zeno state; any other error fails) or
+ * never inside the obstacle, never an endless bounce. A case clearly apart (gap >= 1e-3 r) falls
+ * and bounces elastically: it is never refused. Returns whether the case ran (was not refused).
+ */
+function check(c: Case): boolean {
   const { w, gapOf } = build(c);
   // about 40 bounces of the slowest case, and never more than 20,000 events a slice
   const T = 40 * Math.sqrt((8 * c.r) / c.g);
@@ -107,9 +114,13 @@ function check(c: Case): void {
       expect(r.reason, "an endless bounce at the rounding level").not.toBe("events");
     }
   } catch (e) {
-    if (!(e instanceof SimulationError)) throw e;
+    if (!(e instanceof SimulationError) || !REFUSAL.test(e.message)) throw e;
+    expect(c.gap, `a disc clearly apart was refused: ${e.message}`).toBeLessThan(1e-3);
+    expect(deepest).toBeGreaterThanOrEqual(-INSIDE);
+    return false;
   }
   expect(deepest).toBeGreaterThanOrEqual(-INSIDE);
+  return true;
 }
 
 /** A disc touching a point, moving along the contact within k ulps of the speed that keeps it on. */
@@ -134,16 +145,28 @@ const arbCritical: fc.Arbitrary<Case> = fc
 describe("a disc against an obstacle under gravity", () => {
   it("is refused as resting, or moves without ever going inside it", () => {
     console.log(`[resting contact] fast-check seed ${SEED} (set FC_SEED to change)`);
+    // a refusal passes, so count the cases that ran (review of session 20: 169 of 400 were refused,
+    // and a regression refusing them all would have passed); 231 ran with the default seed
+    let ran = 0;
     fc.assert(
       fc.property(arbCase, (c) => {
-        check(c);
+        if (check(c)) ran++;
       }),
       { seed: SEED, numRuns: 400 },
     );
+    expect(ran).toBeGreaterThanOrEqual(100);
   });
 
   it("crossing a peg within a few ulps to 1e-9 of the speed that keeps it on: refused, or never inside it", () => {
     // review of session 17: at about that speed discs sank into the peg or looped at one instant
-    fc.assert(fc.property(arbCritical, check), { seed: SEED, numRuns: 300 });
+    let ran = 0;
+    fc.assert(
+      fc.property(arbCritical, (c) => {
+        if (check(c)) ran++;
+      }),
+      { seed: SEED, numRuns: 300 },
+    );
+    // 96 of 300 ran with the default seed
+    expect(ran).toBeGreaterThanOrEqual(40);
   });
 });

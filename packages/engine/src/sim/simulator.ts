@@ -74,6 +74,9 @@ export class Simulator extends ZenoGuard {
     const now = this.now;
     log.begin(b.capacity);
     try {
+      // Ends at the next collision or stop (or an empty queue): the internal items before it are
+      // finitely many, as in World.advance (a body crosses finitely many cells before its next event;
+      // a prediction goes stale at most once per event of its partner).
       for (;;) {
         const s = this.heap.peek();
         if (s < 0) return INF;

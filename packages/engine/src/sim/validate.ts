@@ -78,7 +78,7 @@ export function requireRadius(path: string, v: unknown): number {
 }
 
 /** A rate that cannot be negative (g, mu): finite, >= 0 and at most MAGNITUDE_MAX. */
-export function requireNonNegativeBounded(path: string, v: unknown): number {
+function requireNonNegativeBounded(path: string, v: unknown): number {
   requireNonNegativeFinite(path, v);
   return requireBounded(path, v);
 }
@@ -106,13 +106,13 @@ function requireFieldMin(path: string, x: number): number {
   return x;
 }
 
-export function requirePositiveFinite(path: string, v: unknown): number {
+function requirePositiveFinite(path: string, v: unknown): number {
   if (typeof v !== "number" || !Number.isFinite(v) || v <= 0)
     throw new ChapgameError(path, "must be a positive finite number");
   return v;
 }
 
-export function requireNonNegativeFinite(path: string, v: unknown): number {
+function requireNonNegativeFinite(path: string, v: unknown): number {
   if (typeof v !== "number" || !Number.isFinite(v) || v < 0)
     throw new ChapgameError(path, "must be a finite number >= 0");
   return v;

@@ -269,6 +269,11 @@ export class World extends Edits {
     let events = 0;
     this.advancing = true;
     try {
+      // Ends: each step processes a collision or stop (counted), or internal work that leads to
+      // one: a stale prediction (at most one per body event, since a prediction goes stale only
+      // when its partner's motion changed) or a cell crossing (a body crosses finitely many cells
+      // before its next event or untilTime: its path to there is bounded, and the edge cells reach
+      // to infinity, so a body flying off for ever crosses none once it is outside the grid).
       while (events < maxEvents) {
         const r = this.stepOnce(untilTime, onEvent);
         if (r < 0) break;

@@ -30,7 +30,7 @@ const KIND_CODE = {
   stop: K_STOP,
 } as const;
 
-export function emptyCounts(): TimelineCounts {
+function emptyCounts(): TimelineCounts {
   return { bodyBody: 0, bodyLine: 0, bodyPoint: 0, stop: 0, action: 0 };
 }
 

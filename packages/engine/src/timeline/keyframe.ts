@@ -52,7 +52,7 @@ export interface Keyframe {
 }
 
 /** Numbers per body in Keyframe.motions. */
-export const KF_MOTION = 5;
+const KF_MOTION = 5;
 
 /** Copy the motion starts (t0, x0, y0, vx0, vy0) of the bodies in `order` out of `table`. */
 export function snapshotMotions(table: MotionTable, order: Uint32Array): Float64Array {

@@ -29,7 +29,7 @@ export const K_ACTION = 4;
 export const KIND_NAMES = ["bodyBody", "bodyLine", "bodyPoint", "stop", "action"] as const;
 
 /** Bytes of one record. */
-export const RECORD_BYTES = 8 + 1 + 4 + 4 + 4 * 8;
+const RECORD_BYTES = 8 + 1 + 4 + 4 + 4 * 8;
 /** Capacity of a new log, and the least dropBefore shrinks to. */
 const MIN_CAPACITY = 1024;
 

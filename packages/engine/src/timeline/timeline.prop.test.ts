@@ -185,6 +185,8 @@ describe("Timeline properties", () => {
   });
 
   it("stateAt agrees with the World's state after every event, and is continuous in between", () => {
+    // a scene without events is skipped: count the ones checked (review of session 20: 38 of 40)
+    let checked = 0;
     fc.assert(
       fc.property(sceneArb, fc.integer({ min: 5, max: 120 }), (p, n) => {
         const s = makeScene(p);
@@ -200,6 +202,7 @@ describe("Timeline properties", () => {
         }
         const last = seen[seen.length - 1];
         if (!last) return;
+        checked++;
         const tl = Timeline.fromScene(s);
         tl.prolongTo(last.time);
         for (const e of seen.slice(0, -1)) expect(tl.stateAt(e.time).bodies).toStrictEqual(e.bodies);
@@ -217,5 +220,6 @@ describe("Timeline properties", () => {
       }),
       { seed: seedFor("stateAt"), numRuns: RUNS, verbose: true },
     );
+    expect(checked).toBeGreaterThanOrEqual(RUNS / 2);
   });
 });

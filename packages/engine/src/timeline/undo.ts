@@ -51,12 +51,16 @@ function liveRows(c: TimelineCore): { nums: number[]; rows: Float64Array } {
   const nums = [...c.live.values()];
   const rows = new Float64Array(nums.length * STRIDE);
   const d = c.table.data;
-  nums.forEach((n, k) => rows.set(d.subarray(n * STRIDE, (n + 1) * STRIDE), k * STRIDE));
+  for (let k = 0; k < nums.length; k++) {
+    const n = nums[k] as number;
+    rows.set(d.subarray(n * STRIDE, (n + 1) * STRIDE), k * STRIDE);
+  }
   return { nums, rows };
 }
 
 function putRows(data: Float64Array, saved: { nums: number[]; rows: Float64Array }): void {
-  saved.nums.forEach((n, k) => data.set(saved.rows.subarray(k * STRIDE, (k + 1) * STRIDE), n * STRIDE));
+  for (let k = 0; k < saved.nums.length; k++)
+    data.set(saved.rows.subarray(k * STRIDE, (k + 1) * STRIDE), (saved.nums[k] as number) * STRIDE);
 }
 
 export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): () => void {
