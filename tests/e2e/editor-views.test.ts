@@ -270,7 +270,11 @@ describe("editor views", () => {
       }, long);
       await poll(async () => (await page.getByRole("alert").textContent())?.includes("end")).toBe(true);
       for (const name of ["Fit", "Delete", "Point"]) {
-        const button = page.getByRole("button", { name, exact: true });
+        // the toolbar's Delete names what it removes ("Delete: body b1") when something is selected
+        const button =
+          name === "Delete"
+            ? page.getByRole("toolbar", { name: "Tools" }).getByRole("button", { name: /^Delete(: |$)/ })
+            : page.getByRole("button", { name, exact: true });
         const reachable = await button.evaluate((el) => {
           const r = el.getBoundingClientRect();
           return el.contains(document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2));
@@ -309,7 +313,11 @@ describe("editor views", () => {
           "Play",
           "+0.1: faster",
         ]) {
-          const button = page.getByRole("button", { name, exact: true });
+          // the toolbar's Delete names what it removes ("Delete: body b1") when something is selected
+          const button =
+            name === "Delete"
+              ? page.getByRole("toolbar", { name: "Tools" }).getByRole("button", { name: /^Delete(: |$)/ })
+              : page.getByRole("button", { name, exact: true });
           await button.scrollIntoViewIfNeeded();
           const box = (await button.boundingBox())!;
           expect(box.x).toBeGreaterThanOrEqual(0);

@@ -216,6 +216,37 @@ describe("EventLog", () => {
     expect(document.activeElement).toBe(last);
   });
 
+  it("Enter on an entry keeps the focus on that entry when the log is read again around its time", async () => {
+    // audit of session 20: rows are kept by position, and the page read around the new time put
+    // another entry in the focused row (a screen reader then read that one)
+    const h = testEditor();
+    await h.editor.loadScene(
+      sceneOf([
+        { time: 0, type: "addLine", id: "L", p1: [-10, -5], p2: [-10, 5], kind: "line" },
+        { time: 0, type: "addLine", id: "R", p1: [10, -5], p2: [10, 5], kind: "line" },
+        { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [9, 0] },
+      ]),
+      { undoable: false },
+    );
+    await settled(h.client);
+    await h.editor.goTo(400); // a bounce every 2 s: far more entries than one page holds
+    await settled(h.client);
+    h.editor.ui.setState({ t: 0 });
+    const log = renderLog(h.editor);
+    await within(log).findAllByText("body–line");
+    const rows = () => Array.from(log.querySelectorAll<HTMLTableRowElement>("tbody tr[tabindex='0']"));
+    const row = rows().at(-1)!;
+    const time = row.cells[0]!.textContent;
+    act(() => row.focus());
+    fireEvent.keyDown(row, { key: "Enter" });
+    await waitFor(() => expect(h.editor.ui.getState().t).toBeGreaterThan(0));
+    // the page is read again around the new time: the entry moves up the table, and the focus with it
+    await waitFor(() => expect(rows().at(-1)!.cells[0]!.textContent).not.toBe(time));
+    await waitFor(() =>
+      expect((document.activeElement as HTMLTableRowElement).cells[0]!.textContent).toBe(time),
+    );
+  });
+
   it("the participants of a clicked entry stay lit only while the time stays at it (→ moved on, the canvas kept them)", async () => {
     // a (v = 4) meets the segment w at t = 2.25, then the point q at t = 6.75.
     const { h, log } = await bodyLinePointLog("a");

@@ -176,6 +176,24 @@ export function EventLog() {
     target?.focus();
   }, [refocus, doc]);
   const onRemoved = (index: number) => setRefocus({ index, from: doc });
+
+  // The entry the focused row shows. Rows are kept by position, so when the page is read again
+  // around another time (Enter on a row goes to its time) the focused row shows another entry: the
+  // focus follows its entry to the row that shows it now (audit of session 20: Enter on one entry
+  // left the focus, and a screen reader, on an entry four rows up).
+  const focusedEntry = useRef<string | null>(null);
+  useEffect(() => {
+    const box = scrollRef.current;
+    const want = focusedEntry.current;
+    const active = document.activeElement;
+    if (box === null || want === null || !(active instanceof HTMLTableRowElement) || !box.contains(active))
+      return;
+    if (active.dataset.entry === want) return;
+    const row = [...box.querySelectorAll<HTMLTableRowElement>("tr[data-entry]")].find(
+      (r) => r.dataset.entry === want,
+    );
+    row?.focus({ preventScroll: true });
+  });
   const armed = useArmedNotice();
   const hintId = useId();
 
@@ -225,6 +243,11 @@ export function EventLog() {
                   // refresh, and updating the text of existing rows costs far less layout and paint
                   // than replacing them (rows hold no state).
                   key={k}
+                  data-entry={refKey(refOf(e))}
+                  onFocus={(ev) => {
+                    if (ev.target === ev.currentTarget)
+                      focusedEntry.current = ev.currentTarget.dataset.entry ?? null;
+                  }}
                   className={cls || undefined}
                   aria-selected={chosen}
                   tabIndex={0}

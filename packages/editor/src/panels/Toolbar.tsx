@@ -29,7 +29,10 @@ export function Toolbar() {
   const path = useUi((s) => s.path);
   const bodySelected = useUi((s) => s.selection?.kind === "body");
   const pathShown = useUi((s) => s.pathShown);
-  const hasSelection = useUi((s) => s.selection !== null);
+  // what Delete removes, in its name: reached by Shift+Tab through a table, whose rows each select
+  // their object on focus, it names the last one passed (audit of session 20: it removed another
+  // body than the one the keyboard user had chosen, without a word)
+  const target = useUi((s) => (s.selection === null ? null : `${s.selection.kind} ${s.selection.id}`));
   return (
     <div className="toolbar" role="toolbar" aria-label="Tools">
       {TOOLS.map((t) => (
@@ -69,7 +72,15 @@ export function Toolbar() {
           drawn up to t = {formatNumber(pathShown.cutAt)} s (too long to draw whole)
         </small>
       )}
-      <button type="button" disabled={!hasSelection} onClick={() => void editor.deleteSelection()}>
+      <button
+        type="button"
+        disabled={target === null}
+        aria-label={target === null ? "Delete" : `Delete: ${target}`}
+        title={
+          target === null ? "Select a body, line or point to delete it" : `Delete ${target} (Delete key)`
+        }
+        onClick={() => void editor.deleteSelection()}
+      >
         Delete
       </button>
     </div>
