@@ -66,6 +66,26 @@ export const ROOTS_HOT_HALLEY_STOP = 2 ** -11;
  */
 export const ROOTS_HOT_MODEL_SPAN = 2 ** -12;
 
+/**
+ * Cauchy's bound on the roots, 1 + max|c_i| / |c_n| (realRoots.ts, quartic.ts), is computed in
+ * doubles: a division and an addition, two roundings of at most 2^-53 each. Widening it by 2^-48
+ * relative (far more than those) makes the computed bound an upper bound of the exact one, so that
+ * clamping an infinite or huge interval to it never cuts off a root.
+ */
+export const ROOTS_CAUCHY_WIDENING = 2 ** -48;
+
+/**
+ * The general certified refinement's local model (roots/certify.ts): around x0, p is modelled by its
+ * Taylor terms with a certified bound on the rest over |h| <= ROOTS_MODEL_SPAN·|x0|, where p̃″ stays
+ * within 1 + n·2^-30 of its value at x0; below |x0| = ROOTS_MODEL_MIN_X the h² terms could reach the
+ * subnormal range, so no model is used; ROOTS_MODEL_SAFETY (1 %) covers the rounding of the error
+ * terms and that growth of p̃″ over the span (and the hot path's, ROOTS_HOT_MODEL_SPAN). They only
+ * decide when the model is used: a root it cannot certify is refined by exact signs instead.
+ */
+export const ROOTS_MODEL_SPAN = 2 ** -30;
+export const ROOTS_MODEL_MIN_X = 2 ** -400;
+export const ROOTS_MODEL_SAFETY = 1.01;
+
 // ---- simulation (owned by src/sim and src/physics) -----------------------------------------
 // (the simulation appends its named tolerances here)
 
@@ -150,6 +170,15 @@ export const MASS_MAX = 1e40;
  * can touch in the 3x3 neighbourhood.
  */
 export const GRID_CELL_MARGIN = 1 + 1e-6;
+
+/**
+ * A segment or ray is registered in every grid cell it passes through (sim/rasterize.ts), each cell
+ * widened by GRID_SEGMENT_PAD of the cell width: a segment along a cell border, or through a corner,
+ * computed to pass a rounding outside a cell, is registered on both sides, so a disc in either cell
+ * finds it. Relative to the cell width, so the same at any scale; far above the rounding of the
+ * clipping (a few ulps of the coordinates), far below anything that costs a scan.
+ */
+export const GRID_SEGMENT_PAD = 1e-9;
 
 /**
  * Below this many bodies the broad phase is a single cell: testing every pair costs less than the

@@ -19,7 +19,14 @@
  * on the hot path; the solver is not re-entrant and needs no re-entrancy).
  */
 
-import { PLAIN_HORNER_BOUND_FACTOR, ROOTS_MAX_ITERATIONS, UNIT_ROUNDOFF } from "../tolerances.js";
+import {
+  PLAIN_HORNER_BOUND_FACTOR,
+  ROOTS_MAX_ITERATIONS,
+  ROOTS_MODEL_MIN_X,
+  ROOTS_MODEL_SAFETY,
+  ROOTS_MODEL_SPAN,
+  UNIT_ROUNDOFF,
+} from "../tolerances.js";
 import { RootSolverError, splitPoint } from "./bracket.js";
 import { compHorner, compHornerDD, hornerBound } from "./compHorner.js";
 import { exactAbsCompare, exactDerivativeSign, exactPolySign, nextDown, nextUp } from "./exactPoly.js";
@@ -165,12 +172,10 @@ export function closerEnd(a: number, b: number): number {
   return exactAbsCompare(orig, sa, sb) <= 0 ? a : b;
 }
 
-/** The model's span: |h| ≤ 2^-30 |x0| keeps p̃'' within 1 + n·2^-30 of its value at |x0|. */
-export const MODEL_SPAN = 2 ** -30;
-/** Below this |x0| the model's h² terms could reach the subnormal range: no model. */
-export const MODEL_MIN_X = 2 ** -400;
-/** Covers the rounding in computing the error terms and the growth of p̃'' over the span. */
-export const MODEL_SAFETY = 1.01;
+/** The local model's span, smallest |x0| and safety factor (tolerances.ts says why). */
+export const MODEL_SPAN = ROOTS_MODEL_SPAN;
+export const MODEL_MIN_X = ROOTS_MODEL_MIN_X;
+export const MODEL_SAFETY = ROOTS_MODEL_SAFETY;
 
 /** Certified refinement by full evaluations (Newton steps, then halving). */
 function refineGeneric(a: number, b: number, sa: number, absA: number, absB: number, x0: number): number {

@@ -22,17 +22,17 @@
 import { COMP_HORNER_BOUND_FACTOR, PLAIN_HORNER_BOUND_FACTOR, UNIT_ROUNDOFF } from "../tolerances.js";
 
 /** Dekker's splitting constant 2^27 + 1. */
-const SPLIT = 134217729;
+export const SPLIT = 134217729;
 const U = UNIT_ROUNDOFF;
 /** Absolute slack per operation for lost exactness under gradual underflow. */
-const TINY = 2 ** -1070;
+export const TINY = 2 ** -1070;
 /**
  * When p̃ ≥ 2^-900·max(1,|x|)ⁿ the margin already built into the bound factors exceeds the underflow
  * slack by far, so the slack is skipped: it is subnormal, and subnormal arithmetic is very slow.
  */
-const SLACK_FREE = 2 ** -900;
+export const SLACK_FREE = 2 ** -900;
 /** Below this magnitude a product's TwoProduct error term may be inexact (gradual underflow). */
-const UNDERFLOW = 2 ** -968;
+export const UNDERFLOW = 2 ** -968;
 
 /** Plain Horner with Higham's a-priori bound (computed a posteriori from p̃(|x|)). */
 export function hornerBound(c: ArrayLike<number>, n: number, x: number, out: Float64Array): void {

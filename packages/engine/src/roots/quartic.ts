@@ -40,12 +40,15 @@
  * variable behind accessor functions (+4%; an object field is level).
  */
 
-import { ROOTS_SUBDIVISION_MARGIN_GROWTH, UNIT_ROUNDOFF } from "../tolerances.js";
+import { ROOTS_CAUCHY_WIDENING, ROOTS_SUBDIVISION_MARGIN_GROWTH, UNIT_ROUNDOFF } from "../tolerances.js";
 import { certSign } from "./certify.js";
 import { isolate } from "./quarticIsolate.js";
 import { solveOnes, unimodal } from "./quarticPieces.js";
 import * as reg from "./quarticRegisters.js";
 import { QS as QS_, quarters } from "./quarticSigns.js";
+
+/** Cauchy's bound widened (tolerances.ts ROOTS_CAUCHY_WIDENING): a module constant on the hot path. */
+const CAUCHY_WIDENED = 1 + ROOTS_CAUCHY_WIDENING;
 
 export { found } from "./quarticRegisters.js";
 
@@ -145,7 +148,7 @@ function settle(coeffs: ArrayLike<number>, lo: number, hi: number): boolean {
   const far = (hi > -lo ? hi : -lo) * a4;
   if (far > a0 && far > a1 && far > a2 && far > a3 && far > a4) {
     const maxAbs = Math.max(a0, a1, a2, a3, a4);
-    const bound = (1 + maxAbs / a4) * (1 + 2 ** -48);
+    const bound = (1 + maxAbs / a4) * CAUCHY_WIDENED;
     if (lo < -bound) lo = -bound;
     if (hi > bound) hi = bound;
     if (lo > hi) return true;

@@ -36,9 +36,10 @@ const absAt = reg.absAt;
 const P1 = reg.P1;
 const pieces = ones;
 /** Plain Horner error bound of p and of p′ (degree 3, with 3·c3 rounded), as quarticSigns.ts. */
-const B4 = PLAIN_HORNER_BOUND_FACTOR * 4 * UNIT_ROUNDOFF;
-/** As quarticSigns.ts: below this Σ|cᵢ||x|ⁱ the plain bound needs underflow slack (not taken). */
-const TINY_SCALE = 2 ** -600;
+export const B4 = PLAIN_HORNER_BOUND_FACTOR * 4 * UNIT_ROUNDOFF;
+/** As quarticSigns.ts: below this Σ|cᵢ||x|ⁱ the plain bound needs underflow slack (not taken).
+ *  (A copy; constantCopies.test.ts checks it and B4 against quarticSigns.ts's.) */
+export const TINY_SCALE = 2 ** -600;
 /** Covers the rounding of the (nonnegative) bound terms of keepsSign, ≤ 10u relative. */
 const SAFE = 1 + 2 ** -20;
 /** After an exact zero at lo, a one-root piece [lo, b] is bracketed from lo + (b − lo)·ZERO_OFFSET. */

@@ -31,11 +31,12 @@ const COMP = COMP_HORNER_BOUND_FACTOR;
 const SPAN = ROOTS_HOT_MODEL_SPAN;
 const MIN_X = MODEL_MIN_X;
 const SAFETY = MODEL_SAFETY;
-/** compHorner.ts's constants: Dekker's split, underflow limits (see there). */
-const SPLIT = 134217729;
-const UNDERFLOW = 2 ** -968;
-const SLACK_FREE = 2 ** -900;
-const TINY = 2 ** -1070;
+/** compHorner.ts's constants: Dekker's split, underflow limits (see there). Copies, written out for
+ *  the hot path; constantCopies.test.ts checks that they equal compHorner.ts's. */
+export const SPLIT = 134217729;
+export const UNDERFLOW = 2 ** -968;
+export const SLACK_FREE = 2 ** -900;
+export const TINY = 2 ** -1070;
 
 export function refined(sa: number): number {
   if (refine(sa)) return H[5] as number;

@@ -19,12 +19,12 @@ import * as reg from "./quarticRegisters.js";
 const Q = reg.Q;
 const absAt = reg.absAt;
 /** Plain Horner error bound for degree 4 (Higham, see compHorner.ts). */
-const B4 = PLAIN_HORNER_BOUND_FACTOR * 4 * UNIT_ROUNDOFF;
+export const B4 = PLAIN_HORNER_BOUND_FACTOR * 4 * UNIT_ROUNDOFF;
 /**
  * Below this p̃(|x|) the plain bound would need compHorner's underflow slack (|x| ≤ 2^64 here, so
  * max(1,|x|)⁴·2^-900 ≤ 2^-600): such points are decided by certSign.
  */
-const TINY_SCALE = 2 ** -600;
+export const TINY_SCALE = 2 ** -600;
 
 const qs = new Float64Array(10);
 /** Scratch of the halvings: two halves at QS[0..8], the margin QS[9]. */

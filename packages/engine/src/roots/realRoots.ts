@@ -39,6 +39,7 @@
  * `realRootsInto(coeffs, lo, hi, out)`: the same into a caller's array (cleared; returns the count).
  */
 
+import { ROOTS_CAUCHY_WIDENING } from "../tolerances.js";
 import { exponentOf } from "./pow2.js";
 import { found, quarticRoots } from "./quartic.js";
 import { ensure, solvePieces, solveRange, variableScale } from "./scaledSolve.js";
@@ -126,7 +127,7 @@ function general(coeffs: ArrayLike<number>, lo: number, hi: number, out: number[
   if (!(lo <= hi) || n < 1) return out;
   ensure(n);
   // Cauchy's bound: every root has |t| < 1 + max_{i<n} |c_i / c_n| ≤ 1 + max_i |c_i| / |c_n|.
-  const bound = (1 + maxAbs / Math.abs(coeffs[n] as number)) * (1 + 2 ** -48);
+  const bound = (1 + maxAbs / Math.abs(coeffs[n] as number)) * (1 + ROOTS_CAUCHY_WIDENING);
   const B = bound < Number.POSITIVE_INFINITY ? bound : Number.MAX_VALUE;
   if (lo < -B) lo = -B;
   if (hi > B) hi = B;

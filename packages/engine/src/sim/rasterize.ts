@@ -3,6 +3,7 @@
  * A disc touching a segment or a point has its centre within maxR of it, so registering each
  * obstacle in every cell it passes through lets the 3x3 neighbourhood scan find it.
  */
+import { GRID_SEGMENT_PAD } from "../tolerances.js";
 import type { Grid } from "./grid.js";
 
 /**
@@ -49,7 +50,7 @@ export function rasterizeSegment(
   const c1 = grid.column(Math.max(x1, x2));
   const r0 = grid.row(Math.min(y1, y2));
   const r1 = grid.row(Math.max(y1, y2));
-  const pad = grid.w * 1e-9;
+  const pad = grid.w * GRID_SEGMENT_PAD;
   for (let cy = r0; cy <= r1; cy++) {
     for (let cx = c0; cx <= c1; cx++) {
       const [rx0, rx1, ry0, ry1] = grid.cellRect(cx, cy);
