@@ -16,9 +16,9 @@ import type { Line, Point } from "./obstacles.js";
 import { ZenoGuard } from "./zenoGuard.js";
 
 /** Velocities out of a response: (vx, vy) of the body, then of its partner. */
-export const vel = new Float64Array(4);
+export const vel: Float64Array = new Float64Array(4);
 /** Obstacle contact scratch: normal (nx, ny, not normalised) and contact point (x, y). */
-export const contact = new Float64Array(4);
+export const contact: Float64Array = new Float64Array(4);
 
 export class ContactGeometry extends ZenoGuard {
   /**
