@@ -14,25 +14,21 @@
  *   accepts: kept.ts), for a game that keeps only its last seconds to rewind.
  */
 import { checkAction } from "../scene/action.js";
-import { SceneError } from "../scene/errors.js";
 import { nonNegative } from "../scene/fields.js";
 import { applyOrder, parseScene } from "../scene/parse.js";
 import type { Action, SceneFile, Until } from "../scene/types.js";
 import { SimulationError } from "../sim/errors.js";
-import { copyAction, freezeAction, restartKeyframe, sameUntil } from "./actionData.js";
+import { copyAction, freezeAction, sameUntil } from "./actionData.js";
 import { checkActionList, checkApplyOptions, checkBudget, checkUntil } from "./args.js";
-import { restoreKeyframe } from "./checkpoint.js";
 import { TimelineCore } from "./core.js";
+import { actionsOnCore, applyToCore } from "./edits.js";
 import { forgetBefore, forgetTime } from "./forget.js";
-import { type Goal, goalFrom, reopenGoals } from "./goals.js";
-import { type HeadlessInstant, instantHolds, noteInstant, reapplyInstant } from "./headlessInstant.js";
-import { checkKeptActions, checkKeptApply, forgot } from "./kept.js";
-import type { Keyframe } from "./keyframe.js";
+import { type Goal, goalFrom } from "./goals.js";
+import type { HeadlessInstant } from "./headlessInstant.js";
 import { notifyAll } from "./listeners.js";
 import { type CheckedOptions, checkOptions, checkSceneOptions } from "./options.js";
 import { TimelineReader } from "./reader.js";
 import type { ApplyOptions, ProlongResult, TimelineOptions } from "./types.js";
-import { saveCore } from "./undo.js";
 
 const INF = Number.POSITIVE_INFINITY;
 
@@ -153,77 +149,7 @@ export class Timeline extends TimelineReader {
   apply(action: Action, options: ApplyOptions = {}): void {
     const a = freezeAction(checkAction(action, "action"));
     const { keepHorizon, checkLater } = checkApplyOptions(options);
-    const c = this.core;
-    let insertAt = c.acts.length;
-    while (insertAt > 0 && (c.acts[insertAt - 1] as Action).time > a.time) insertAt--;
-    const forward = c.appendsAt(a.time);
-    checkKeptApply(c, insertAt, a.time);
-    if (!forward && !c.history && instantHolds(this.instant, c, a.time)) {
-      try {
-        reapplyInstant(c, this.instant, a);
-      } catch (e) {
-        if (e instanceof SceneError && e.path.startsWith("actions["))
-          throw new SceneError(e.path, `${e.reason} (once this action is in place)`);
-        throw e;
-      }
-      this.slice = null;
-      this.changed();
-      return;
-    }
-    if (!forward && !c.history)
-      throw new SceneError(
-        "action.time",
-        a.time === c.horizon
-          ? `must be after ${a.time}: the events that instant's actions caused are computed, and without history (history: false) the instant cannot be computed again; apply it before computing past the actions at ${a.time}, or keep history`
-          : `must be >= the horizon ${c.horizon} (history is off)`,
-      );
-    let k = 0;
-    if (!forward) {
-      const kfs = c.keyframes;
-      for (k = kfs.length - 1; k > 0; k--) {
-        const kf = kfs[k] as Keyframe;
-        if (kf.time < a.time || (kf.time === a.time && kf.afterActions && kf.actionCount === insertAt)) break;
-      }
-    }
-    // With history, only what this edit can change is kept (undo.ts); without, everything (the undo
-    // may serve a later action at the same instant: headlessInstant.ts).
-    const scope = forward
-      ? { fromKeyframe: c.keyframes.length - 1, insertAt, worldReplaced: false }
-      : { fromKeyframe: k, insertAt, worldReplaced: true };
-    const undo = saveCore(
-      c,
-      forward ? c.records.length : (c.keyframes[k] as Keyframe).record,
-      c.history ? scope : undefined,
-    );
-    try {
-      const oldHorizon = c.horizon;
-      if (!forward) restoreKeyframe(c, k);
-      c.acts.splice(insertAt, 0, a);
-      // the others by their index in `actions` as the caller knows it (without this one)
-      c.pathOf = (i) => (i === insertAt ? "action" : `actions[${i > insertAt ? i - 1 : i}]`);
-      if (!forward) {
-        reopenGoals(c);
-        // keepHorizon false: only as far as the last action (each is still validated), not the old
-        // horizon; with checkLater false only as far as this action (later ones checked by prolong).
-        const lastAction = (c.acts[c.acts.length - 1] as Action).time;
-        const tLimit = keepHorizon
-          ? oldHorizon
-          : checkLater
-            ? Math.max(a.time, Math.min(oldHorizon, lastAction))
-            : a.time;
-        c.goals.push({ tLimit, eLimit: INF });
-      }
-      c.drive(INF, { tLimit: a.time, eLimit: INF });
-      if (!c.untils && a.until) c.goals.push(goalFrom(c, a.until, a.time));
-      c.drive(INF, null);
-      c.pathOf = (i) => `actions[${i}]`;
-    } catch (e) {
-      undo();
-      if (e instanceof SceneError && e.path.startsWith("actions["))
-        throw new SceneError(e.path, `${e.reason} (once this action is in place)`);
-      throw e;
-    }
-    if (!c.history) this.instant = forward ? noteInstant(this.instant, c, a, undo) : null;
+    this.instant = applyToCore(this.core, a, keepHorizon, checkLater, this.instant);
     this.slice = null;
     this.changed();
   }
@@ -238,48 +164,10 @@ export class Timeline extends TimelineReader {
     const checked = checkActionList(actions).map((a, i) => freezeAction(checkAction(a, `actions[${i}]`)));
     const order = applyOrder(checked);
     const sorted = order.map((i) => checked[i] as Action);
-    const c = this.core;
-    const oldHorizon = c.horizon;
     this.instant = null;
-    // Actions are named by their index in the list given, also when a later prolong applies them
-    // (with compute: false, as the CLI runs a file): a file's actions[0] is its first action, not
-    // the earliest. The next apply() names them by their index in `actions` again.
-    const pathOf = (k: number) => `actions[${order[k]}]`;
-    checkKeptActions(c, sorted, order);
-    // after forgetBefore, keyframe 0 is the start of the kept history: a restart point, not scratch
-    const k = c.history ? restartKeyframe(c.acts, c.keyframes, sorted) : 0;
-    if (k > 0 || forgot(c)) {
-      const undo = saveCore(c, (c.keyframes[k] as Keyframe).record, {
-        fromKeyframe: k,
-        worldReplaced: true,
-      });
-      try {
-        restoreKeyframe(c, k);
-        c.acts = sorted;
-        c.pathOf = pathOf;
-        reopenGoals(c);
-        // A compute: false timeline stays at the keyframe (as one rebuilt from scratch stays at 0),
-        // its actions due there applied: its caller computes further when it needs to.
-        if (c.eager) {
-          c.goals.push({ tLimit: oldHorizon, eLimit: INF });
-          c.drive(INF, null);
-        } else c.applyDue();
-      } catch (e) {
-        undo();
-        throw e;
-      }
-    } else {
-      const o = this.options;
-      const core = new TimelineCore(o.g, o.gravity, o.history, o.compute, o.untils);
-      core.acts = sorted;
-      core.pathOf = pathOf;
-      if (core.eager && oldHorizon > 0) core.goals.push({ tLimit: oldHorizon, eLimit: INF });
-      // compute: false applies only the actions at time 0 (with the untils option, their untils
-      // wait for a prolong: they are not computed here)
-      if (core.eager) core.drive(INF, null);
-      else core.applyDue();
-      this.core = core;
-    }
+    const o = this.options;
+    const fresh = () => new TimelineCore(o.g, o.gravity, o.history, o.compute, o.untils);
+    this.core = actionsOnCore(this.core, sorted, order, fresh);
     this.slice = null;
     this.changed();
   }

@@ -1,0 +1,153 @@
+/**
+ * The edits of a Timeline on its core (Timeline.apply and Timeline.setActions keep the argument
+ * checks, the listeners and the headless instant record; the contracts are theirs):
+ * - applyToCore(c, a, keepHorizon, checkLater, instant): inserts the checked action `a` at its time.
+ *   At or after the horizon it computes forward to it; before, it restores the last keyframe before
+ *   it, replays and recomputes (up to the old horizon, or less: ApplyOptions). Without history, an
+ *   action at the horizon's instant joins that instant's group (headlessInstant.ts). On any error the
+ *   core is as it was (undo.ts) and an error naming a later action it made invalid says so. Returns
+ *   the headless instant record to keep (null with history).
+ * - actionsOnCore(c, sorted, order, fresh): replaces the action list (sorted in apply order; `order`
+ *   maps each to its index in the caller's list, for messages), recomputing from the keyframe before
+ *   the first change, or from scratch on a fresh core; returns the core to use. Atomic likewise.
+ */
+import { SceneError } from "../scene/errors.js";
+import type { Action } from "../scene/types.js";
+import { restartKeyframe } from "./actionData.js";
+import { restoreKeyframe } from "./checkpoint.js";
+import type { TimelineCore } from "./core.js";
+import { goalFrom, reopenGoals } from "./goals.js";
+import { type HeadlessInstant, instantHolds, noteInstant, reapplyInstant } from "./headlessInstant.js";
+import { checkKeptActions, checkKeptApply, forgot } from "./kept.js";
+import type { Keyframe } from "./keyframe.js";
+import { saveCore } from "./undo.js";
+
+const INF = Number.POSITIVE_INFINITY;
+
+/** An error of the recomputed future that names a later action: said to come from this one. */
+function laterActionRefusal(e: unknown): unknown {
+  if (e instanceof SceneError && e.path.startsWith("actions["))
+    return new SceneError(e.path, `${e.reason} (once this action is in place)`);
+  return e;
+}
+
+export function applyToCore(
+  c: TimelineCore,
+  a: Action,
+  keepHorizon: boolean,
+  checkLater: boolean,
+  instant: HeadlessInstant | null,
+): HeadlessInstant | null {
+  let insertAt = c.acts.length;
+  while (insertAt > 0 && (c.acts[insertAt - 1] as Action).time > a.time) insertAt--;
+  const forward = c.appendsAt(a.time);
+  checkKeptApply(c, insertAt, a.time);
+  if (!forward && !c.history && instantHolds(instant, c, a.time)) {
+    try {
+      reapplyInstant(c, instant, a);
+    } catch (e) {
+      throw laterActionRefusal(e);
+    }
+    return instant;
+  }
+  if (!forward && !c.history)
+    throw new SceneError(
+      "action.time",
+      a.time === c.horizon
+        ? `must be after ${a.time}: the events that instant's actions caused are computed, and without history (history: false) the instant cannot be computed again; apply it before computing past the actions at ${a.time}, or keep history`
+        : `must be >= the horizon ${c.horizon} (history is off)`,
+    );
+  let k = 0;
+  if (!forward) {
+    const kfs = c.keyframes;
+    for (k = kfs.length - 1; k > 0; k--) {
+      const kf = kfs[k] as Keyframe;
+      if (kf.time < a.time || (kf.time === a.time && kf.afterActions && kf.actionCount === insertAt)) break;
+    }
+  }
+  // With history, only what this edit can change is kept (undo.ts); without, everything (the undo
+  // may serve a later action at the same instant: headlessInstant.ts).
+  const scope = forward
+    ? { fromKeyframe: c.keyframes.length - 1, insertAt, worldReplaced: false }
+    : { fromKeyframe: k, insertAt, worldReplaced: true };
+  const undo = saveCore(
+    c,
+    forward ? c.records.length : (c.keyframes[k] as Keyframe).record,
+    c.history ? scope : undefined,
+  );
+  try {
+    const oldHorizon = c.horizon;
+    if (!forward) restoreKeyframe(c, k);
+    c.acts.splice(insertAt, 0, a);
+    // the others by their index in `actions` as the caller knows it (without this one)
+    c.pathOf = (i) => (i === insertAt ? "action" : `actions[${i > insertAt ? i - 1 : i}]`);
+    if (!forward) {
+      reopenGoals(c);
+      // keepHorizon false: only as far as the last action (each is still validated), not the old
+      // horizon; with checkLater false only as far as this action (later ones checked by prolong).
+      const lastAction = (c.acts[c.acts.length - 1] as Action).time;
+      const tLimit = keepHorizon
+        ? oldHorizon
+        : checkLater
+          ? Math.max(a.time, Math.min(oldHorizon, lastAction))
+          : a.time;
+      c.goals.push({ tLimit, eLimit: INF });
+    }
+    c.drive(INF, { tLimit: a.time, eLimit: INF });
+    if (!c.untils && a.until) c.goals.push(goalFrom(c, a.until, a.time));
+    c.drive(INF, null);
+    c.pathOf = (i) => `actions[${i}]`;
+  } catch (e) {
+    undo();
+    throw laterActionRefusal(e);
+  }
+  if (!c.history) return forward ? noteInstant(instant, c, a, undo) : null;
+  return instant;
+}
+
+export function actionsOnCore(
+  c: TimelineCore,
+  sorted: Action[],
+  order: readonly number[],
+  fresh: () => TimelineCore,
+): TimelineCore {
+  const oldHorizon = c.horizon;
+  // Actions are named by their index in the list given, also when a later prolong applies them
+  // (with compute: false, as the CLI runs a file): a file's actions[0] is its first action, not
+  // the earliest. The next apply() names them by their index in `actions` again.
+  const pathOf = (k: number) => `actions[${order[k]}]`;
+  checkKeptActions(c, sorted, order);
+  // after forgetBefore, keyframe 0 is the start of the kept history: a restart point, not scratch
+  const k = c.history ? restartKeyframe(c.acts, c.keyframes, sorted) : 0;
+  if (k > 0 || forgot(c)) {
+    const undo = saveCore(c, (c.keyframes[k] as Keyframe).record, {
+      fromKeyframe: k,
+      worldReplaced: true,
+    });
+    try {
+      restoreKeyframe(c, k);
+      c.acts = sorted;
+      c.pathOf = pathOf;
+      reopenGoals(c);
+      // A compute: false timeline stays at the keyframe (as one rebuilt from scratch stays at 0),
+      // its actions due there applied: its caller computes further when it needs to.
+      if (c.eager) {
+        c.goals.push({ tLimit: oldHorizon, eLimit: INF });
+        c.drive(INF, null);
+      } else c.applyDue();
+    } catch (e) {
+      undo();
+      throw e;
+    }
+    return c;
+  }
+  const core = fresh();
+  core.acts = sorted;
+  core.pathOf = pathOf;
+  if (core.eager && oldHorizon > 0) core.goals.push({ tLimit: oldHorizon, eLimit: INF });
+  // compute: false applies only the actions at time 0 (with the untils option, their untils
+  // wait for a prolong: they are not computed here)
+  if (core.eager) core.drive(INF, null);
+  else core.applyDue();
+  return core;
+}
