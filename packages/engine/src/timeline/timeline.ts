@@ -7,6 +7,7 @@
  *   the horizon it restores the last World keyframe before its time, replays to it, applies it and
  *   recomputes up to the old horizon: the result is identical to building from scratch (the World
  *   is deterministic and splitting a computation changes nothing). On any error nothing changes.
+ * - The work of apply and setActions on the core: edits.ts (and undo.ts, headlessInstant.ts).
  * - Reading (stateAt, the log, counts): reader.ts, which this class extends.
  * - Storage: see records.ts (49 bytes per event) and keyframe.ts.
  * - history: false keeps no log and no keyframes (headless runs); then only the horizon can be read.
