@@ -43,6 +43,18 @@ describe("EditableCell", () => {
     expect(screen.getByRole("button", { name: "a x" }).textContent).toBe("1");
   });
 
+  it("opened, the cell's value is selected, so typing replaces it (it appended to it)", () => {
+    render(<EditableCell label="l1 x1" value="-100" onCommit={async () => null} />);
+    const input = open("l1 x1");
+    expect(document.activeElement).toBe(input);
+    expect([input.selectionStart, input.selectionEnd]).toEqual([0, 4]);
+    // a draft kept for correction is not selected again when the input gets the focus back
+    fireEvent.change(input, { target: { value: "-30" } });
+    input.setSelectionRange(3, 3);
+    fireEvent.focus(input);
+    expect([input.selectionStart, input.selectionEnd]).toEqual([3, 3]);
+  });
+
   it("commits once when Enter is followed by leaving the cell before the edit is applied (it recorded two edits)", async () => {
     let resolve: (v: string | null) => void = () => {};
     const onCommit = vi.fn(() => new Promise<string | null>((r) => (resolve = r)));

@@ -132,6 +132,12 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
         // biome-ignore lint/a11y/noAutofocus: the input replaces the focused cell button
         autoFocus
         value={typed ?? value}
+        // opened, the value is selected, so typing replaces it (audit of session 20: tabbed into,
+        // the caret sat at the end and typing "-300" after "-100" was refused); a draft kept for
+        // correction is not
+        onFocus={(e) => {
+          if (typed === null) e.currentTarget.select();
+        }}
         onChange={(e) => setEdit({ typed: e.target.value })}
         onBlur={() => {
           if (error === null) void commit();

@@ -273,7 +273,17 @@ describe("parseScene refuses, naming the path and the reason", () => {
     [
       "gravity switched on with friction",
       base([disc("a", 0, { mu: 0.1 }), { time: 1, type: "setGlobal", gravity: [0, -1] }]),
-      'actions[1].gravity: a non-zero gravity field cannot be combined with friction (body "a" has mu > 0)',
+      'actions[1].gravity: a non-zero gravity field cannot be combined with friction (body "a" has mu > 0: set its mu to 0 first)',
+    ],
+    [
+      "gravity switched on with friction on several bodies: all of them named (one refusal each before)",
+      base([
+        disc("b", 0, { mu: 0.1 }),
+        disc("a", 10, { mu: 0.2 }),
+        disc("c", 20),
+        { time: 1, type: "setGlobal", gravity: [0, -1] },
+      ]),
+      'actions[3].gravity: a non-zero gravity field cannot be combined with friction (bodies "a", "b" have mu > 0: set their mu to 0 first)',
     ],
   ];
   for (const [name, input, message] of cases)
