@@ -85,6 +85,22 @@ describe("useSeries", () => {
     expect(calls()).toBe(6);
   });
 
+  it("while computing, a refused request does not stop the polling", async () => {
+    let calls = 0;
+    const s: SeriesSource = {
+      series: () => {
+        calls++;
+        return calls === 1 ? Promise.reject(new Error("busy")) : Promise.resolve([]);
+      },
+    };
+    const seen: SeriesPoint[][] = [];
+    render(<Probe client={s} revision={3} busy={true} seen={seen} />);
+    await flush(0);
+    expect(calls).toBe(1);
+    await flush(SERIES_REFRESH_MS * 2);
+    expect(calls).toBe(3);
+  });
+
   it("spaces requests by ten times what the last one took when that is longer", () => {
     expect(seriesDelay(5)).toBe(SERIES_REFRESH_MS);
     expect(seriesDelay(250)).toBe(2500);

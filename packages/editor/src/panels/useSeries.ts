@@ -35,14 +35,16 @@ export function useSeries(client: SeriesSource, revision: number, busy: boolean)
     let timer: ReturnType<typeof setTimeout> | undefined;
     const ask = () => {
       const sent = performance.now();
-      client.series(SERIES_SAMPLES).then(
-        (points) => {
-          if (stopped) return;
-          setSeries(points);
-          if (busy) timer = setTimeout(ask, seriesDelay(performance.now() - sent));
-        },
-        () => {},
-      );
+      // while computing, the next request follows each answer, a refused one too (a failed request
+      // stopped the polling for the rest of the computation: review of session 20)
+      const next = () => {
+        if (!stopped && busy) timer = setTimeout(ask, seriesDelay(performance.now() - sent));
+      };
+      client.series(SERIES_SAMPLES).then((points) => {
+        if (stopped) return;
+        setSeries(points);
+        next();
+      }, next);
     };
     // settled: once after the change; computing: at once, then again and again
     timer = setTimeout(ask, busy ? 0 : 300);

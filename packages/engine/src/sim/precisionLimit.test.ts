@@ -41,8 +41,9 @@ describe("contacts beyond the resolution of doubles", () => {
     // the motions as before the event: b is still right of a when read at 35
     expect(w.body("b", 35).x).toBeGreaterThanOrEqual(w.body("a", 35).x);
     expect(JSON.stringify(w.bodies(0))).toBe(before);
-    // trying again gives the same error, not a Zeno state
-    expect(caught(() => w.advance({ untilTime: 100 })).message).toBe(e.message);
+    // trying again gives the same error, not a Zeno state: the refused event counts nothing (it
+    // was counted before the check, and 128 retries made it a Zeno state of many events at one instant)
+    for (let k = 0; k < 300; k++) expect(caught(() => w.advance({ untilTime: 100 })).message).toBe(e.message);
   });
 
   it("the same pair near the origin collides with a finite normal and exchanges velocities", () => {

@@ -43,12 +43,11 @@ export class Simulator extends ContactGeometry {
         return 0;
       }
     }
-    // An obstacle event guards itself, after the response's own refusal (a resting contact): a
-    // refused event counts nothing, so retrying gives the same message.
-    if (kind === EV_BODY) {
-      this.guardZeno(before, s, kind);
-      this.processBodyBody(s, b.evOther[s] as number);
-    } else if (kind === EV_STOP) {
+    // An obstacle event guards itself, after the response's own refusal (a resting contact), and a
+    // collision after the check that doubles place it: a refused event counts nothing, so retrying
+    // gives the same message.
+    if (kind === EV_BODY) this.processBodyBody(s, b.evOther[s] as number, before);
+    else if (kind === EV_STOP) {
       this.guardZeno(before, s, kind);
       this.processStop(s);
     } else this.processObstacle(s, kind, b.evOther[s] as number, b.evAux[s] as number, before);
@@ -129,7 +128,9 @@ export class Simulator extends ContactGeometry {
     }
   }
 
-  protected processBodyBody(s: number, o: number): void {
+  /** Process slot s's collision with slot o now; `before` is the time before it, for the Zeno guard
+   *  (counted after the resolution check, before anything changes). */
+  protected processBodyBody(s: number, o: number, before: number): void {
     const b = this.store;
     // Canonical order: `a` is the body with the smaller id, so the arithmetic is the same whichever body held the event.
     const sFirst = idBefore(
@@ -156,6 +157,7 @@ export class Simulator extends ContactGeometry {
     const d = Math.sqrt(dx * dx + dy * dy);
     const rp = b.r[p] as number;
     if (!contactResolved(d, rp + (b.r[q] as number))) this.requireResolved(p, q, xp, yp, xq, yq);
+    this.guardZeno(before, s, EV_BODY);
     const approach = discDiscResponse(xp, yp, vxp, vyp, mp, xq, yq, vxq, vyq, mq, vel);
     this.setMotion(p, t, xp, yp, vel[0] as number, vel[1] as number);
     this.setMotion(q, t, xq, yq, vel[2] as number, vel[3] as number);
