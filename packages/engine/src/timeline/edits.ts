@@ -65,16 +65,12 @@ export function applyToCore(
       if (kf.time < a.time || (kf.time === a.time && kf.afterActions && kf.actionCount === insertAt)) break;
     }
   }
-  // With history, only what this edit can change is kept (undo.ts); without, everything (the undo
-  // may serve a later action at the same instant: headlessInstant.ts).
+  // Only what this edit can change is kept (undo.ts); forward, the undo also serves a later action
+  // at the same instant without history (headlessInstant.ts: the lists only grow meanwhile).
   const scope = forward
-    ? { fromKeyframe: c.keyframes.length - 1, insertAt, worldReplaced: false }
+    ? { fromKeyframe: c.keyframes.length - 1, insertAt, worldReplaced: false, forward: true }
     : { fromKeyframe: k, insertAt, worldReplaced: true };
-  const undo = saveCore(
-    c,
-    forward ? c.records.length : (c.keyframes[k] as Keyframe).record,
-    c.history ? scope : undefined,
-  );
+  const undo = saveCore(c, forward ? c.records.length : (c.keyframes[k] as Keyframe).record, scope);
   try {
     const oldHorizon = c.horizon;
     if (!forward) restoreKeyframe(c, k);

@@ -142,4 +142,20 @@ describe("refused edits change nothing (an edit keeps only what it can change)",
     expect(coreOf(tl).bodyIds).toBe(ids);
     expect(fingerprint(tl)).toStrictEqual(fromScratch(tl));
   });
+
+  it("without history too, also when a later action at the instant joins its group (review of session 20)", () => {
+    const tl = new Timeline({ g: 0, history: false });
+    tl.setActions([...BOX, disc("a", -5, 0, [3, 1]), disc("b", -3, 0)]);
+    tl.prolongTo(10);
+    const acts = coreOf(tl).acts;
+    tl.apply({ time: 10, type: "giveVelocity", id: "a", v: [1, 0] });
+    tl.apply({ time: 10, type: "giveVelocity", id: "b", v: [0, 1] });
+    tl.apply({ time: 12, type: "giveVelocity", id: "b", v: [0, -1] });
+    expect(coreOf(tl).acts).toBe(acts);
+    tl.prolongTo(30);
+    const ref = Timeline.fromScene(tl.toScene());
+    ref.prolongTo(30);
+    expect(tl.stateAt(30)).toStrictEqual(ref.stateAt(30));
+    expect(tl.counts()).toStrictEqual(ref.counts());
+  });
 });

@@ -29,6 +29,14 @@ export interface EditScope {
   fromKeyframe: number;
   insertAt?: number;
   worldReplaced: boolean;
+  /**
+   * The edit only computes forward from the current point: the id lists and the action events only
+   * grow (their tails start at today's lengths, not at keyframe `fromKeyframe`'s counts, which
+   * without history is keyframe 0: everything), and the actions inserted since go in one run at
+   * `insertAt` (the end of their instant's block). So the undo still holds after more actions were
+   * applied at that instant and it was computed further (headlessInstant.ts keeps it for that).
+   */
+  forward?: boolean;
 }
 
 /** An array's elements from `start` on, and how to put them back. */
@@ -64,26 +72,38 @@ function putRows(data: Float64Array, saved: { nums: number[]; rows: Float64Array
 }
 
 export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): () => void {
-  const kf = edit === undefined ? null : (c.keyframes[edit.fromKeyframe] as Keyframe);
+  // (a timeline without history may hold no keyframe at all)
+  const kf: Keyframe | null = edit === undefined ? null : (c.keyframes[edit.fromKeyframe] ?? null);
+  // where each list's tail starts: 0 (no scope: all of it), today's length (forward), or the
+  // restart keyframe's count
+  const fwd = edit?.forward === true;
+  const start = (list: readonly unknown[], count: number | undefined): number =>
+    edit === undefined ? 0 : fwd ? list.length : Math.min(count ?? 0, list.length);
   const saved = {
     world: edit?.worldReplaced ? c.world : c.world.clone(),
-    acts: kf === null ? c.acts.slice() : c.acts,
+    acts: edit === undefined ? c.acts.slice() : c.acts,
     actsLength: c.acts.length,
-    actEvents: tailOf(c.actEvents, kf === null ? 0 : Math.min(kf.actionCount, c.actEvents.length)),
+    actEvents: tailOf(
+      c.actEvents,
+      fwd ? Math.min(c.applied, c.actEvents.length) : start(c.actEvents, kf?.actionCount),
+    ),
     applied: c.applied,
     // the motion table: whole (no scope), untouched (a restore replaces it), or the rows of the live
     // bodies (the only rows an edit computing forward changes: a body gone keeps its row, and a new
     // body's row lies past the restored ids and is written whole when a body takes it again)
     table: edit === undefined ? c.table.data.slice() : c.table.data,
     rows: edit === undefined || edit.worldReplaced ? null : liveRows(c),
-    bodyIds: tailOf(c.bodyIds, kf === null ? 0 : Math.min(kf.bodyCount, c.bodyIds.length)),
+    bodyIds: tailOf(c.bodyIds, start(c.bodyIds, kf?.bodyCount)),
     live: new Map(c.live),
-    lineIds: tailOf(c.lineIds, kf === null ? 0 : Math.min(kf.lineCount, c.lineIds.length)),
+    lineIds: tailOf(c.lineIds, start(c.lineIds, kf?.lineCount)),
     lineNums: new Map(c.lineNums),
-    pointIds: tailOf(c.pointIds, kf === null ? 0 : Math.min(kf.pointCount, c.pointIds.length)),
+    pointIds: tailOf(c.pointIds, start(c.pointIds, kf?.pointCount)),
     pointNums: new Map(c.pointNums),
     tail: c.records.saveTail(cutRecord),
-    keyframes: tailOf(c.keyframes, edit === undefined ? 0 : edit.fromKeyframe),
+    keyframes: tailOf(
+      c.keyframes,
+      edit === undefined ? 0 : Math.max(0, Math.min(edit.fromKeyframe, c.keyframes.length)),
+    ),
     keyframeList: c.keyframes,
     counts: { ...c.counts },
     eventTotal: c.eventTotal,
@@ -104,8 +124,9 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
       throw new Error("timeline: the history was forgotten during an edit; its undo cannot restore it");
     c.world = saved.world;
     c.acts = saved.acts;
-    // the one action the edit inserted into the same list goes again
-    if (c.acts.length > saved.actsLength && insertAt !== undefined) c.acts.splice(insertAt, 1);
+    // the actions inserted into the same list since go again (one run at insertAt: see EditScope)
+    if (c.acts.length > saved.actsLength && insertAt !== undefined)
+      c.acts.splice(insertAt, c.acts.length - saved.actsLength);
     putBack(c.actEvents, saved.actEvents);
     c.applied = saved.applied;
     c.table = new MotionTable(0);
