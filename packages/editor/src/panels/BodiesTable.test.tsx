@@ -6,7 +6,7 @@ import { act, cleanup, fireEvent, render, screen, waitFor, within } from "@testi
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
 import { settled, testEditor } from "../testing/harness";
-import { sceneOf } from "../testing/scenes";
+import { discsInRow, sceneOf } from "../testing/scenes";
 import { BodiesTable } from "./BodiesTable";
 
 afterEach(cleanup);
@@ -186,24 +186,8 @@ describe("BodiesTable selection", () => {
 describe("BodiesTable with more bodies than rows", () => {
   async function manyBodies(n: number) {
     const h = testEditor();
-    await h.editor.loadScene(
-      {
-        format: "chapgame",
-        version: 1,
-        g: 0,
-        gravity: [0, 0],
-        actions: Array.from({ length: n }, (_, i) => ({
-          time: 0,
-          type: "addBody" as const,
-          id: `ball${i + 1}`,
-          x: 10 * i,
-          y: 0,
-          r: 1,
-          m: 1,
-        })),
-      },
-      { undoable: false },
-    );
+    const ids = Array.from({ length: n }, (_, i) => `ball${i + 1}`);
+    await h.editor.loadScene(sceneOf(discsInRow(ids), 0), { undoable: false });
     await settled(h.client);
     render(
       <EditorContext.Provider value={h.editor}>

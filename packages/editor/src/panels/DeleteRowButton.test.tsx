@@ -7,7 +7,7 @@ import { act, cleanup, fireEvent, render, screen, waitFor, within } from "@testi
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
 import { settled, testEditor } from "../testing/harness";
-import { sceneOf } from "../testing/scenes";
+import { discsInRow, sceneOf } from "../testing/scenes";
 import { BodiesTable } from "./BodiesTable";
 import { Toolbar } from "./Toolbar";
 
@@ -15,20 +15,7 @@ afterEach(cleanup);
 
 async function threeBodies() {
   const h = testEditor();
-  await h.editor.loadScene(
-    sceneOf(
-      ["b1", "b2", "b3"].map((id, i) => ({
-        time: 0,
-        type: "addBody" as const,
-        id,
-        x: 10 * i,
-        y: 0,
-        r: 1,
-        m: 1,
-      })),
-    ),
-    { undoable: false },
-  );
+  await h.editor.loadScene(sceneOf(discsInRow(["b1", "b2", "b3"])), { undoable: false });
   await settled(h.client);
   render(
     <EditorContext.Provider value={h.editor}>

@@ -8,6 +8,11 @@ export function sceneOf(actions: Action[], g = 9.81, gravity: [number, number] =
   return { format: "chapgame", version: 1, g, gravity, actions };
 }
 
+/** Discs of radius 1 and mass 1 at rest in a row, 10 apart from x = 0, one per id, added at t = 0. */
+export function discsInRow(ids: readonly string[]): Action[] {
+  return ids.map((id, i) => ({ time: 0, type: "addBody" as const, id, x: 10 * i, y: 0, r: 1, m: 1 }));
+}
+
 /**
  * An immovable disc crushes a small one against a wall: collisions pile up before t = 2 and the
  * engine stops with a Zeno state (what the editor must report, not hang on).
