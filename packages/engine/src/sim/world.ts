@@ -234,7 +234,8 @@ export class World extends Edits {
   /**
    * Process collisions and stops in time order, calling `onEvent` with each (one reused object: copy
    * what you keep), until `limits.untilTime` or after `limits.maxEvents` events, whichever comes
-   * first; with neither, until nothing is queued. `untilTime` is an ABSOLUTE time on this World's
+   * first; with neither, until nothing is queued (then `time` is the last event's, or where the
+   * advance started when it processed none). `untilTime` is an ABSOLUTE time on this World's
    * clock (events exactly at it are processed, then `time` becomes untilTime), unlike
    * `Timeline.prolong({ time })`, which counts from the horizon (`Timeline.prolongTo(t)` is
    * absolute). Bad limits throw ChapgameError (`untilTime` NaN or before `time`; `maxEvents` not a
@@ -267,6 +268,8 @@ export class World extends Edits {
       );
     this.prepare();
     let events = 0;
+    // The time of the last collision or stop processed (where this advance started: none yet).
+    let lastEventTime = this.now;
     this.advancing = true;
     try {
       // Ends: each step processes a collision or stop (counted), or internal work that leads to
@@ -278,6 +281,7 @@ export class World extends Edits {
         const r = this.stepOnce(untilTime, onEvent);
         if (r < 0) break;
         events += r;
+        if (r > 0) lastEventTime = this.now;
         // The callback edited obstacles or globals: predict again from here, as the next advance
         // would after an edit between two advances (body edits re-predict their own body at once).
         if (this.dirty) this.prepare();
@@ -287,6 +291,7 @@ export class World extends Edits {
     }
     if (events >= maxEvents && maxEvents !== INF) return { events, reason: "events" };
     if (untilTime !== INF) this.now = untilTime;
+    else if (this.heap.size === 0 && this.now > lastEventTime) this.rewindIdle(lastEventTime);
     return { events, reason: this.heap.size === 0 ? "idle" : "time" };
   }
 
@@ -308,6 +313,19 @@ export class World extends Edits {
       t = e.time;
     });
     return t;
+  }
+
+  /**
+   * The queue ran empty with no time limit, after internal work (cell crossings, stale predictions)
+   * later than the last event: put the clock back to that event, so that where an unbounded advance
+   * ends does not depend on the grid (a Timeline's horizon is this time, and an action between the
+   * two times is valid). Nothing moves between the two times but free flight, and motions start at
+   * events or edits, so every state holds; the grid lists bodies where the internal work left them,
+   * so the next advance rebuilds it and predicts again (markDirty), as after an obstacle edit.
+   */
+  private rewindIdle(t: number): void {
+    this.now = t;
+    this.markDirty();
   }
 
   private prepare(): void {
