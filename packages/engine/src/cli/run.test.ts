@@ -192,6 +192,31 @@ describe("runCli in-process", () => {
     expect(out.stderr).toBe('chapgame: --id: no body "bal" in the scene (bodies: ball, rest)\n');
   });
 
+  it("path of a body the scene adds only after --to prints no piece, exit 0 (it was an internal error, exit 1)", () => {
+    const files = {
+      "late.json": sceneText([
+        { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [0, 1] },
+        { time: 10, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 1 },
+      ]),
+    };
+    const spans: [string, string][] = [
+      ["0", "5"],
+      ["2", "5"],
+      ["0", "10"],
+    ];
+    for (const [from, to] of spans) {
+      const { cli, out } = io(files);
+      expect(runCli(["path", "late.json", "--id", "b", "--from", from, "--to", to], cli)).toBe(0);
+      expect(out.stderr).toBe("");
+      expect(JSON.parse(out.stdout)).toEqual({ id: "b", from: Number(from), to: Number(to), pieces: [] });
+    }
+    const { cli, out } = io(files);
+    expect(runCli(["path", "late.json", "--id", "b", "--to", "12"], cli)).toBe(0);
+    expect(
+      JSON.parse(out.stdout).pieces.map((p: { from: number; until: number }) => [p.from, p.until]),
+    ).toEqual([[10, 12]]);
+  });
+
   it("path meeting a Zeno state before --to prints the pieces up to where it stopped, then exits 2", () => {
     const { cli, out } = io({ "rest.json": sceneText(RESTS_AT_5) });
     expect(runCli(["path", "rest.json", "--id", "ball", "--to", "8"], cli)).toBe(2);

@@ -155,22 +155,29 @@ function firstAdded(scene: SceneFile, id: string): number {
 type PathCommand = Extract<Command, { command: "path" }>;
 
 /**
+ * The body's pieces over [from, to]: none when the body is first added (at `added`) after `to`, or
+ * exactly at `to` without the addition having taken place there (Timeline.path refuses an id the
+ * history has not met yet; for the command, a body that does not exist yet has no piece).
+ */
+function piecesUpTo(tl: Timeline, cmd: PathCommand, added: number, to: number): PathPiece[] {
+  const exists = added < to || (added === to && tl.stateAt(to).bodies.some((b) => b.id === cmd.id));
+  return to >= cmd.from && exists ? tl.path(cmd.id, cmd.from, to) : [];
+}
+
+/**
  * The pieces of the path command's body over [from, to], or, after a run that stopped early (`end`),
  * up to where it stopped: none when that is before `from` or before the body was first added (at
  * `added`; added exactly where the run stopped, it counts when the addition took place).
  */
 function pathResult(tl: Timeline, cmd: PathCommand, added: number, end?: RunEnd): PathResult {
   if (end === undefined)
-    return { id: cmd.id, from: cmd.from, to: cmd.to, pieces: tl.path(cmd.id, cmd.from, cmd.to) };
+    return { id: cmd.id, from: cmd.from, to: cmd.to, pieces: piecesUpTo(tl, cmd, added, cmd.to) };
   const to = tl.horizon;
   const early =
     end.reason === "error"
       ? { reason: "error" as const, error: end.error }
       : { reason: "interrupted" as const };
-  let pieces: PathPiece[] = [];
-  const exists = added < to || (added === to && tl.stateAt(to).bodies.some((b) => b.id === cmd.id));
-  if (to >= cmd.from && exists) pieces = tl.path(cmd.id, cmd.from, to);
-  return { id: cmd.id, from: cmd.from, to, end: early, pieces };
+  return { id: cmd.id, from: cmd.from, to, end: early, pieces: piecesUpTo(tl, cmd, added, to) };
 }
 
 /**
