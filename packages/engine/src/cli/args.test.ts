@@ -103,6 +103,11 @@ describe("parseArgs", () => {
   it("recognizes --help anywhere", () => {
     expect(parseArgs(["--help"])).toEqual({ command: "help" });
     expect(parseArgs(["simulate", "-h"])).toEqual({ command: "help" });
+    expect(parseArgs(["simulate", "-h", "--", "x.json"])).toEqual({ command: "help" });
+  });
+  it('takes "--help" and "-h" after "--" as file names (it printed the help)', () => {
+    expect(parseArgs(["simulate", "--", "--help"])).toMatchObject({ command: "simulate", scene: "--help" });
+    expect(parseArgs(["state", "--at", "1", "--", "-h"])).toMatchObject({ command: "state", scene: "-h" });
   });
   const bad: [string[], string][] = [
     [[], "missing command"],

@@ -130,7 +130,10 @@ function count(name: string, v: string): number {
 
 export function parseArgs(argv: readonly string[]): Command {
   if (argv.length === 0) throw new UsageError("missing command (try chapgame --help)");
-  if (argv.includes("--help") || argv.includes("-h") || argv[0] === "help") return { command: "help" };
+  // --help anywhere before "--" (after it, "--help" is a file name, as the help says)
+  const endOfOptions = argv.indexOf("--");
+  const options = endOfOptions < 0 ? argv : argv.slice(0, endOfOptions);
+  if (options.includes("--help") || options.includes("-h") || argv[0] === "help") return { command: "help" };
   if (argv[0] === "--version" || argv[0] === "-V") {
     if (argv.length > 1) throw new UsageError(`${argv[0]} takes no arguments, got "${argv[1]}"`);
     return { command: "version" };
