@@ -99,3 +99,23 @@ it("the engine README's examples type-check as TypeScript against the built type
     rmSync(dir, { recursive: true, force: true });
   }
 });
+
+it("the engine README's one-liner writes a scene file the CLI takes (the sample scenes are not in the package)", () => {
+  // Audit of session 21: the CLI examples read scene.json, and the samples are only in the repository.
+  const readme = readFileSync(join(root, "packages", "engine", "README.md"), "utf8");
+  const line = /^node --input-type=module -e '(.*)' > scene\.json$/m.exec(readme)?.[1];
+  expect(line, "the README shows how to write scene.json from a preset").toBeDefined();
+  const dir = mkdtempSync(join(root, "tests", "readme", ".tmp-"));
+  try {
+    const text = execFileSync(process.execPath, ["--input-type=module", "-e", line as string], {
+      encoding: "utf8",
+      cwd: dir,
+    });
+    writeFileSync(join(dir, "scene.json"), text);
+    const bin = join(root, "packages", "engine", "src", "cli", "launcher.mjs");
+    const out = execFileSync(process.execPath, [bin, "check", join(dir, "scene.json")], { encoding: "utf8" });
+    expect(JSON.parse(out)).toMatchObject({ valid: true, actions: 6 });
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
