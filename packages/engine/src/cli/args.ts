@@ -82,8 +82,9 @@ export const USAGE = `Usage:
 SCENE is a scene file (format "chapgame", version 1), or - for standard input; after --, a name
 that starts with "-" is a file name.
 Interrupting a run (Ctrl-C: SIGINT, or SIGTERM) while it computes prints the result up to
-where it got, with "time" there and "reason": "interrupted" (state too), and exits with status
-130 (SIGINT) or 143 (SIGTERM). In a pipeline Ctrl-C reaches the reader as well: to keep the
+where it got, with "time" there and "reason": "interrupted" (state too; path: "to" there), and
+exits with status 130 (SIGINT) or 143 (SIGTERM); an interrupted check prints nothing on standard
+output (it did not finish), only a line on stderr. In a pipeline Ctrl-C reaches the reader as well: to keep the
 result, send the signal to chapgame alone (kill -INT PID) or write to a file.
 The result of simulate and state: "time", "reason" (simulate, and a state that stopped early), "events" (collisions and
 stops), "counts" (bodyBody, bodyLine, bodyPoint, stop), "bodies" (id, x, y, vx, vy, r, m, mu at

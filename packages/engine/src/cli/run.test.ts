@@ -1,6 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { dilutedGas, galperin } from "../scene/presets.js";
 import { serializeScene } from "../scene/serialize.js";
+import { USAGE } from "./args.js";
 import { type CliIO, OutputError, runCli, runCliInterruptible } from "./run.js";
 import { type InterruptSignal, SLICE_EVENTS } from "./slices.js";
 
@@ -477,6 +478,19 @@ describe("runCliInterruptible: an interrupt prints the result so far", () => {
     const upTo = io(files);
     expect(runCli(["path", "gas.json", "--id", id, "--to", String(r.to)], upTo.cli)).toBe(0);
     expect(JSON.parse(upTo.out.stdout).pieces).toEqual(r.pieces);
+  });
+
+  it("check interrupted before its last action: nothing on stdout, a line on stderr, exit 130, as the help says", async () => {
+    // Audit of session 21: the help said every interrupted run prints its result; check prints none.
+    const scene = JSON.parse(files["gas.json"]);
+    scene.actions.push({ time: 1e9, type: "removeBody", id: scene.actions.at(-1).id });
+    const cut = io({ "late.json": JSON.stringify(scene) });
+    expect(await runCliInterruptible(["check", "late.json"], cut.cli, interruptAfter(1, "SIGINT"))).toBe(130);
+    expect(cut.out.stdout).toBe("");
+    expect(cut.out.stderr).toMatch(
+      /^chapgame: late\.json: interrupted by SIGINT at t = [\d.e+]+: the check did not finish\n$/,
+    );
+    expect(USAGE).toContain("an interrupted check prints nothing on standard\noutput");
   });
 
   it("a run that ends before any interrupt gives the result runCli gives", async () => {
