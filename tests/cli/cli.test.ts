@@ -177,6 +177,25 @@ describe("chapgame on invalid input: exit 2, one line on stderr, no stack trace"
     expect(r.stderr.startsWith(expected)).toBe(true);
   });
 
+  it("a file that is not UTF-8 (Latin-1): the byte and where it is (its ids were changed to U+FFFD silently)", () => {
+    const file = join(dir, "latin1.json");
+    const text =
+      '{"format":"chapgame","version":1,"actions":[{"time":0,"type":"addBody","id":"caf\u00e9","x":0,"y":0,"r":1,"m":1}]}';
+    writeFileSync(file, Buffer.from(text, "latin1"));
+    for (const command of ["simulate", "check"]) {
+      const r = run([command, file]);
+      expect(r.code).toBe(2);
+      expect(r.stdout).toBe("");
+      expect(r.stderr).toBe(
+        `chapgame: cannot read ${file}: not UTF-8 text: byte 0xE9 at line 1, column 81 (save the file as UTF-8)\n`,
+      );
+    }
+    // from standard input too
+    const r = spawnSync("node", [bin, "simulate", "-"], { cwd: root, input: Buffer.from(text, "latin1") });
+    expect(r.status).toBe(2);
+    expect(r.stderr.toString()).toContain("cannot read -: not UTF-8 text: byte 0xE9 at line 1, column 81");
+  });
+
   for (const [name, args, input, message] of cases)
     it(name, () => {
       const r = run(args, input);

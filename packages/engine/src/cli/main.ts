@@ -17,6 +17,7 @@
  */
 import { OutputError, runCliInterruptible } from "./run.js";
 import type { InterruptSignal } from "./slices.js";
+import { decodeUtf8 } from "./utf8.js";
 
 interface NodeProcess {
   argv: string[];
@@ -27,6 +28,7 @@ interface NodeProcess {
 }
 interface NodeFs {
   readFileSync(path: string | number | object, encoding: "utf8"): string;
+  readFileSync(path: string | number): Uint8Array;
   writeSync(fd: number, data: Uint8Array, offset: number, length: number): number;
 }
 interface NodeError {
@@ -102,7 +104,8 @@ try {
   proc.exitCode = await runCliInterruptible(
     proc.argv.slice(2),
     {
-      readFile: (path) => fs.readFileSync(path === "-" ? 0 : path, "utf8"),
+      // bytes that are not UTF-8 are refused, not replaced by U+FFFD (utf8.ts)
+      readFile: (path) => decodeUtf8(fs.readFileSync(path === "-" ? 0 : path)),
       stdout: writeOut,
       stderr: (text) => proc.stderr.write(text),
       progress: proc.stderr.isTTY === true,
