@@ -2,8 +2,9 @@
  * What a game developer downloads: the real tarball of `npm pack` (scripts off, so it packs the
  * dist/ that `npm test` built), unpacked and read file by file. It holds the entry point, its
  * types, the bin, the README, the LICENSE; only built code, its TypeScript sources (the source maps
- * point there) and docs; every source map resolves inside the tarball; and the manifest is one that
- * `npm publish` sends as it is (npm 11 drops a bin whose path starts with "./").
+ * point there) and docs, whose relative links all resolve inside it; every source map resolves
+ * inside the tarball; and the manifest is one that `npm publish` sends as it is (npm 11 drops a bin
+ * whose path starts with "./").
  */
 import { readFileSync, rmSync } from "node:fs";
 import { dirname, join, normalize } from "node:path";
@@ -61,6 +62,7 @@ describe("the tarball of @chapgame/engine", () => {
   it("holds only built code, its sources and docs: no tests, test helpers, bench, editor or dev scripts", () => {
     const allowed = [
       /^(package\.json|README\.md|LICENSE)$/,
+      /^docs\/[\w-]+\.md$/,
       /^dist\/[\w/]+\.(js|d\.ts|js\.map|d\.ts\.map)$/,
       /^src\/[\w/]+\.ts$/,
       /^src\/[\w/]+\/README\.md$/,
@@ -70,6 +72,22 @@ describe("the tarball of @chapgame/engine", () => {
       /\.test\.|\.prop\.|testSupport|(^|\/)(bench|editor|tests?|e2e|node_modules)\/|timing\.mjs/;
     expect(packed.files.filter((f) => !allowed.some((a) => a.test(f)))).toEqual([]);
     expect(packed.files.filter((f) => forbidden.test(f))).toEqual([]);
+  });
+
+  it("has every relative link of its Markdown resolve inside the tarball (the README's docs ship with it)", () => {
+    const docs = packed.files.filter((f) => f.endsWith(".md"));
+    expect(docs).toEqual(expect.arrayContaining(["README.md", "docs/api.md", "docs/scene-format.md"]));
+    const broken: string[] = [];
+    let links = 0;
+    for (const f of docs)
+      for (const m of readPacked(packed, f).matchAll(/\]\(([^)\s]+)\)/g)) {
+        const target = (m[1] as string).split("#")[0] as string;
+        if (target === "" || /^[a-z]+:/.test(target)) continue; // an anchor in the page, or a URL
+        links++;
+        if (!packed.files.includes(normalize(join(dirname(f), target)))) broken.push(`${f} -> ${target}`);
+      }
+    expect(broken).toEqual([]);
+    expect(links).toBeGreaterThan(2);
   });
 
   it("has a source map for each module whose sources are all in the tarball", () => {
