@@ -6,14 +6,20 @@
 import { discsOverlap } from "./overlap.js";
 
 interface Disc {
+  id: string;
   x: number;
   y: number;
   r: number;
 }
 
+/** Cell numbers below this in size make a numeric key (cx + OFFSET) * SPAN + (cy + OFFSET), exact
+ *  in a double (both factors < 2^26); beyond it the key is a string. */
+const OFFSET = 2 ** 25;
+const SPAN = 2 ** 26;
+
 export class DiscGrid {
   private readonly discs = new Map<string, Disc>();
-  private readonly cells = new Map<string, string[]>();
+  private readonly cells = new Map<number | string, Disc[]>();
   private cell = 0;
   private rMax = 0;
 
@@ -21,19 +27,22 @@ export class DiscGrid {
     return this.discs.size;
   }
 
-  private key(cx: number, cy: number): string {
-    return `${cx}:${cy}`;
+  private key(cx: number, cy: number): number | string {
+    return cx > -OFFSET && cx < OFFSET && cy > -OFFSET && cy < OFFSET
+      ? (cx + OFFSET) * SPAN + (cy + OFFSET)
+      : `${cx}:${cy}`;
   }
 
   insert(id: string, x: number, y: number, r: number): void {
     this.remove(id);
     if (this.cell === 0) this.cell = 4 * r;
     if (r > this.rMax) this.rMax = r;
-    this.discs.set(id, { x, y, r });
+    const d: Disc = { id, x, y, r };
+    this.discs.set(id, d);
     const k = this.key(Math.floor(x / this.cell), Math.floor(y / this.cell));
     const list = this.cells.get(k);
-    if (list) list.push(id);
-    else this.cells.set(k, [id]);
+    if (list) list.push(d);
+    else this.cells.set(k, [d]);
   }
 
   remove(id: string): void {
@@ -43,7 +52,7 @@ export class DiscGrid {
     const k = this.key(Math.floor(d.x / this.cell), Math.floor(d.y / this.cell));
     const list = this.cells.get(k);
     if (!list) return;
-    const i = list.indexOf(id);
+    const i = list.indexOf(d);
     if (i >= 0) list.splice(i, 1);
     if (list.length === 0) this.cells.delete(k);
   }
@@ -57,10 +66,6 @@ export class DiscGrid {
    *  the smallest such id. */
   findOverlap(x: number, y: number, r: number, except: string | null): string | null {
     if (this.discs.size === 0) return null;
-    let best: string | null = null;
-    const test = (id: string, d: Disc) => {
-      if (id !== except && discsOverlap(x, y, r, d.x, d.y, d.r) && (best === null || id < best)) best = id;
-    };
     const reach = r + this.rMax;
     const x0 = Math.floor((x - reach) / this.cell);
     const x1 = Math.floor((x + reach) / this.cell);
@@ -73,15 +78,29 @@ export class DiscGrid {
       Number.isSafeInteger(x1) &&
       Number.isSafeInteger(y0) &&
       Number.isSafeInteger(y1);
-    if (!exact || x1 - x0 + 1 > this.discs.size || (x1 - x0 + 1) * (y1 - y0 + 1) > this.discs.size) {
-      for (const [id, d] of this.discs) test(id, d);
-      return best;
-    }
+    if (!exact || x1 - x0 + 1 > this.discs.size || (x1 - x0 + 1) * (y1 - y0 + 1) > this.discs.size)
+      return smallestOverlap(this.discs.values(), x, y, r, except, null);
+    let best: string | null = null;
     for (let cx = x0; cx <= x1; cx++)
       for (let cy = y0; cy <= y1; cy++) {
         const list = this.cells.get(this.key(cx, cy));
-        if (list) for (const id of list) test(id, this.discs.get(id) as Disc);
+        if (list) best = smallestOverlap(list, x, y, r, except, best);
       }
     return best;
   }
+}
+
+/** The smallest of `best` and the ids of the discs in `list` (but `except`) that (x, y, r) overlaps. */
+function smallestOverlap(
+  list: Iterable<Disc>,
+  x: number,
+  y: number,
+  r: number,
+  except: string | null,
+  best: string | null,
+): string | null {
+  for (const d of list)
+    if (d.id !== except && discsOverlap(x, y, r, d.x, d.y, d.r) && (best === null || d.id < best))
+      best = d.id;
+  return best;
 }
