@@ -46,13 +46,13 @@ describe("Editor over the worker protocol", () => {
     await settled(h.client);
     expect(await h.client.nextEvent(0)).toBe(1);
     expect(h.editor.ui.getState().message).toEqual({
-      text: 'Undone: updateBody of "striker" at t = 0 s.',
+      text: 'Undone: update body "striker" at t = 0 s.',
       tone: "info",
     });
     await h.editor.redo();
     await settled(h.client);
     expect(await h.client.nextEvent(0)).toBe(0.5);
-    expect(h.editor.ui.getState().message?.text).toBe('Redone: updateBody of "striker" at t = 0 s.');
+    expect(h.editor.ui.getState().message?.text).toBe('Redone: update body "striker" at t = 0 s.');
   });
 
   it("an undo asked while an edit is still being applied waits for it and undoes it (redo brings it back)", async () => {

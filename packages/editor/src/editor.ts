@@ -10,6 +10,7 @@
  * message (null on success) and show it in the UI.
  */
 
+import { describeEntry } from "./doc/actionRefs";
 import { nextFreeId } from "./doc/ids";
 import { type ActionEntry, withoutAction } from "./doc/removeAction";
 import { shown } from "./editorSession";
@@ -117,7 +118,7 @@ export class Editor extends EditorTime {
   async removeAction(index: number, entry: ActionEntry): Promise<string | null> {
     const err = await this.rewrite((doc) => withoutAction(doc, index, entry));
     if (err !== null) return err;
-    const what = entry.id === null ? entry.type : `${entry.type} of ${JSON.stringify(entry.id)}`;
+    const what = describeEntry(entry.type, entry.id);
     this.info(`Removed ${what} at t = ${shown(entry.time)} s from the scene (Undo brings it back).`);
     return null;
   }

@@ -53,7 +53,7 @@ describe("Editor.removeAction", () => {
     const before = h.editor.doc;
     const err = await h.editor.removeAction(2, { time: 2, type: "giveVelocity", id: "a" });
     expect(err).toBe(
-      'The scene changed since the Event log listed giveVelocity of "a" at t = 2 s: nothing was removed (try again).',
+      'The scene changed since the Event log listed give velocity to "a" at t = 2 s: nothing was removed (try again).',
     );
     expect(h.editor.ui.getState().message).toEqual({ text: err, tone: "error" });
     expect(h.editor.doc).toBe(before);
@@ -65,7 +65,7 @@ describe("Editor.removeAction", () => {
     const err = await h.editor.removeAction(0, { time: 0, type: "addBody", id: "a" });
     expect(err).toMatch(/^actions\[0\]\.id: /);
     expect(err).toContain(
-      ' — actions[0] is the action at t = 2 s: giveVelocity of "a" (remove it from the Event log)',
+      ' — actions[0] is the action at t = 2 s: give velocity to "a" (remove it from the Event log)',
     );
     expect(h.editor.doc.actions).toHaveLength(3);
     expect(h.editor.history.getState().past).toHaveLength(0);
@@ -87,7 +87,7 @@ describe("Editor.removeAction checks the actions after the removed one", () => {
     const before = h.editor.doc;
     const err = await h.editor.removeAction(1, { time: 1, type: "giveVelocity", id: "a" });
     expect(err).toMatch(
-      /^actions\[1\]: body "b" would overlap body "a" at time 3 — actions\[1\] is the action at t = 3 s: addBody of "b"/,
+      /^actions\[1\]: body "b" would overlap body "a" at time 3 — actions\[1\] is the action at t = 3 s: add body "b"/,
     );
     await settled(h.client);
     expect(h.editor.doc).toEqual(before);
@@ -103,7 +103,7 @@ describe("a refused edit names the later action it would make invalid", () => {
     const err = await h.editor.moveBody("a", 9, 0);
     expect(err).toMatch(/^actions\[2\][^—]*\(once this action is in place\) — /);
     expect(err).toContain(
-      ' — actions[2] is the action at t = 3 s: addBody of "b" (remove it from the Event log)',
+      ' — actions[2] is the action at t = 3 s: add body "b" (remove it from the Event log)',
     );
     expect(h.editor.ui.getState().message?.text).toBe(err);
   });
@@ -116,7 +116,7 @@ describe("a refused edit names the later action it would make invalid", () => {
       actions: [...doc.actions, { time: 5, type: "removeBody", id: "zz" }],
     }));
     expect(err).toContain(
-      ' — actions[3] is the action at t = 5 s: removeBody of "zz" (remove it from the Event log)',
+      ' — actions[3] is the action at t = 5 s: remove body "zz" (remove it from the Event log)',
     );
   });
 });

@@ -9,7 +9,7 @@
  * taken back so goes to Redo, which brings it back checked again: a later action may refuse it then
  * (it leaves Redo), while a check cancelled or cut short by an engine restart leaves it in Redo.
  * Like any change made it cleared Redo first (EditorSession.tookBack), so Redo then holds it alone.
- * Each says what it did ("Undone: giveVelocity of "a" at t = 4 s.").
+ * Each says what it did ("Undone: give velocity to "a" at t = 4 s.").
  */
 
 import { summarizeEdit } from "./doc/editSummary";

@@ -63,7 +63,7 @@ describe("Undo while an edit's later actions are being checked", () => {
     await settled(h.client);
     expect({ valid: count(h, valid), earlier: count(h, earlier) }).toEqual({ valid: 0, earlier: 1 });
     expect(h.editor.ui.getState().message).toEqual({
-      text: 'Undone: giveVelocity of "a" at t = 5 s (taken back while the actions after it were being checked).',
+      text: 'Undone: give velocity to "a" at t = 5 s (taken back while the actions after it were being checked).',
       tone: "info",
     });
     await h.editor.redo();
@@ -163,7 +163,7 @@ describe("Undo while an edit's later actions are being checked", () => {
     const edit = h.editor.edit([blocker]);
     await seen;
     await Promise.all([edit, h.editor.undo()]);
-    expect(h.editor.ui.getState().message?.text).toMatch(/^Undone: addBody of "z" at t = 10 s \(taken back/);
+    expect(h.editor.ui.getState().message?.text).toMatch(/^Undone: add body "z" at t = 10 s \(taken back/);
     expect(h.editor.history.getState().future).toHaveLength(1);
     await h.editor.redo();
     await settled(h.client);
@@ -185,7 +185,7 @@ describe("Undo while an edit's later actions are being checked", () => {
     await settled(h.client);
     expect(count(h, earlier)).toBe(1);
     expect(h.editor.ui.getState().message?.text).toBe(
-      'Undone: the removal of giveVelocity of "b" at t = 10 s (taken back while the actions after it were being checked).',
+      'Undone: the removal of give velocity to "b" at t = 10 s (taken back while the actions after it were being checked).',
     );
   });
 

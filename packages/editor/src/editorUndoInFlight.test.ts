@@ -38,7 +38,7 @@ describe("two edits in flight, two Undos, two Redos", () => {
       await Promise.all([e1, e2, u2, u1]);
       await settled(h.client);
       expect(state()).toEqual({ first: 0, second: 0 });
-      expect(h.editor.ui.getState().message?.text).toMatch(/^Undone: giveVelocity of "a" at t = 5 s/);
+      expect(h.editor.ui.getState().message?.text).toMatch(/^Undone: give velocity to "a" at t = 5 s/);
       expect(h.editor.history.getState()).toMatchObject({ past: [], future: { length: 2 } });
       await h.editor.redo();
       await settled(h.client);
@@ -46,7 +46,7 @@ describe("two edits in flight, two Undos, two Redos", () => {
       await h.editor.redo();
       await settled(h.client);
       expect(state()).toEqual({ first: 1, second: 1 });
-      expect(h.editor.ui.getState().message?.text).toBe(`Redone: giveVelocity of "c" at t = ${t} s.`);
+      expect(h.editor.ui.getState().message?.text).toBe(`Redone: give velocity to "c" at t = ${t} s.`);
       expect(h.editor.history.getState()).toMatchObject({ past: { length: 2 }, future: [] });
     });
   }

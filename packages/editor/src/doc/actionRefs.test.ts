@@ -12,13 +12,13 @@ describe("explainRefusal", () => {
   it("appends which action actions[i] is, keeping the engine's message at the start", () => {
     const message = 'actions[2].x: body "b1" would overlap body "c" at time 4 (once this action is in place)';
     expect(explainRefusal(message, "actions[2].x", actions)).toBe(
-      `${message} — actions[2] is the action at t = 4 s: updateBody of "b1" (remove it from the Event log)`,
+      `${message} — actions[2] is the action at t = 4 s: update body "b1" (remove it from the Event log)`,
     );
   });
 
   it("names an action without an id by its type; a path that is the index alone works too", () => {
     expect(explainRefusal("actions[1]: bad", "actions[1]", actions)).toBe(
-      "actions[1]: bad — actions[1] is the action at t = 2 s: setGlobal (remove it from the Event log)",
+      "actions[1]: bad — actions[1] is the action at t = 2 s: set global (remove it from the Event log)",
     );
   });
 
@@ -31,6 +31,6 @@ describe("explainRefusal", () => {
   it("reads the index of a path and names an action", () => {
     expect(actionIndexOf("actions[11].id")).toBe(11);
     expect(actionIndexOf("myactions[1]")).toBeNull();
-    expect(describeAction({ time: 1, type: "removePoint", id: 'p"q' })).toBe('removePoint of "p\\"q"');
+    expect(describeAction({ time: 1, type: "removePoint", id: 'p"q' })).toBe('remove point "p\\"q"');
   });
 });

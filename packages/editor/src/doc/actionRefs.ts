@@ -2,14 +2,26 @@
  * Naming actions for the user, who sees no action indices: the engine refuses an edit that makes a
  * LATER action invalid with a path `actions[i]` (its index in the action list the engine was given,
  * in time order). explainRefusal keeps the engine's message as it is and appends which action that
- * is ("— actions[11] is the action at t = 4 s: updateBody of "b1" (remove it from the Event log)").
+ * is ("— actions[11] is the action at t = 4 s: update body "b1" (remove it from the Event log)").
  * Pure.
  */
 import type { Action } from "../engineTypes";
 
-/** "updateBody of "b1"", or the type alone for an action without an id (setGlobal). */
+/** An action type in words, as the Event log's kind column shows it ("give velocity", "set global"). */
+export function actionWords(type: string): string {
+  return type.replace(/[A-Z]/g, (c) => ` ${c.toLowerCase()}`);
+}
+
+/** An action named for the user, not by the scene file's type: "update body "b1"", "give velocity
+ *  to "a"", or the words alone for an action without an id ("set global"). */
+export function describeEntry(type: string, id: string | null): string {
+  if (id === null) return actionWords(type);
+  return `${actionWords(type)}${type === "giveVelocity" ? " to" : ""} ${JSON.stringify(id)}`;
+}
+
+/** describeEntry of an action. */
 export function describeAction(a: Action): string {
-  return "id" in a ? `${a.type} of ${JSON.stringify(a.id)}` : a.type;
+  return describeEntry(a.type, "id" in a ? a.id : null);
 }
 
 /** The index `i` of a path that starts with `actions[i]`, or null. */

@@ -14,15 +14,15 @@ const scene = (actions: Action[], g = 9.81): SceneFile => ({
 
 describe("summarizeEdit", () => {
   it("names one added or removed action with its time, comparing actions by content", () => {
-    expect(summarizeEdit(scene([a]), scene([{ ...a }, kick]))).toBe('giveVelocity of "a" at t = 4.25 s');
+    expect(summarizeEdit(scene([a]), scene([{ ...a }, kick]))).toBe('give velocity to "a" at t = 4.25 s');
     expect(summarizeEdit(scene([a, kick]), scene([{ ...a }]))).toBe(
-      'the removal of giveVelocity of "a" at t = 4.25 s',
+      'the removal of give velocity to "a" at t = 4.25 s',
     );
   });
 
   it("counts repeated identical actions, names a rename, and sums up other changes by their earliest time", () => {
     expect(summarizeEdit(scene([a, kick]), scene([a, kick, { ...kick }]))).toBe(
-      'giveVelocity of "a" at t = 4.25 s',
+      'give velocity to "a" at t = 4.25 s',
     );
     const renamed = [
       { ...a, id: "b" },

@@ -17,7 +17,7 @@ describe("withoutAction", () => {
   });
 
   it("refuses when the index no longer holds that action (time, type or id differ, or no action)", () => {
-    const stale = 'The scene changed since the Event log listed giveVelocity of "a" at t = 1 s';
+    const stale = 'The scene changed since the Event log listed give velocity to "a" at t = 1 s';
     expect(() => withoutAction(scene, 2, { time: 1, type: "giveVelocity", id: "a" })).toThrow(stale);
     expect(() => withoutAction(scene, 3, { time: 1, type: "giveVelocity", id: "a" })).toThrow(stale);
     expect(() => withoutAction(scene, 1, { time: 1, type: "giveVelocity", id: "b" })).toThrow(
@@ -31,7 +31,7 @@ describe("withoutAction", () => {
   it("says an action already removed is no longer in the scene (a second click said 'try again')", () => {
     const once = withoutAction(scene, 1, { time: 1, type: "giveVelocity", id: "a" });
     expect(() => withoutAction(once, 1, { time: 1, type: "giveVelocity", id: "a" })).toThrow(
-      'giveVelocity of "a" at t = 1 s is no longer in the scene: nothing was removed.',
+      'give velocity to "a" at t = 1 s is no longer in the scene: nothing was removed.',
     );
   });
 });

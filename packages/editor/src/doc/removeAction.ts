@@ -4,6 +4,7 @@
  * (throws a message) when the list no longer holds that action at that index.
  */
 import type { SceneFile } from "../engineTypes";
+import { describeEntry } from "./actionRefs";
 
 /** What an Event-log entry says of its action: its time, type and id (null for setGlobal). */
 export interface ActionEntry {
@@ -17,7 +18,7 @@ export function withoutAction(scene: SceneFile, index: number, entry: ActionEntr
   const a = scene.actions[index];
   const id = a !== undefined && "id" in a ? a.id : null;
   if (a === undefined || a.time !== entry.time || a.type !== entry.type || id !== entry.id) {
-    const what = entry.id === null ? entry.type : `${entry.type} of ${JSON.stringify(entry.id)}`;
+    const what = describeEntry(entry.type, entry.id);
     const t = Number(entry.time.toPrecision(6));
     // A second click on the ✕ of an entry just removed said "try again" (audit of session 15).
     const same = (b: (typeof scene.actions)[number]) =>

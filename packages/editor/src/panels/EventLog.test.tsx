@@ -127,7 +127,9 @@ describe("EventLog", () => {
       expect(within(log).getAllByRole("button", { name: /^Remove action/ })).toHaveLength(4),
     );
     expect(within(log).getAllByText("stop")).toHaveLength(1);
-    const remove = within(log).getByRole("button", { name: "Remove action giveVelocity of b at t = 0.25" });
+    const remove = within(log).getByRole("button", {
+      name: 'Remove action give velocity to "b" at t = 0.25',
+    });
     // Enter on the button is the button's, not the row's (the row jumps to its time on Enter).
     fireEvent.keyDown(remove, { key: "Enter" });
     expect(h.editor.ui.getState().t).toBe(5);
@@ -152,7 +154,7 @@ describe("EventLog", () => {
       expect(within(log).getAllByRole("button", { name: /^Remove action/ })).toHaveLength(3),
     );
     expect(
-      within(log).getByRole("button", { name: "Remove action giveVelocity of a at t = 0.25" }),
+      within(log).getByRole("button", { name: 'Remove action give velocity to "a" at t = 0.25' }),
     ).toBeTruthy();
   });
 

@@ -15,6 +15,7 @@
  * "Skip the Event log table" (SkipTable, shown when focused) passes its entries in one Tab press.
  */
 import { useEffect, useId, useRef, useState } from "react";
+import { actionWords } from "../doc/actionRefs";
 import { kindOfType } from "../doc/rename";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { LogEvent } from "../engineTypes";
@@ -61,7 +62,7 @@ export function siblingRow(row: HTMLTableRowElement, down: boolean): HTMLTableRo
 export function kindLabel(e: LogEvent): string {
   const kind = KIND_NAMES[e.type] ?? e.type;
   if (e.action === undefined) return kind;
-  return `${kind}: ${e.action.replace(/[A-Z]/g, (c) => ` ${c.toLowerCase()}`)}`;
+  return `${kind}: ${actionWords(e.action)}`;
 }
 
 /**

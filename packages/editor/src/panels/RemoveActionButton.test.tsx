@@ -62,7 +62,7 @@ async function twoVelocities() {
   return { h, log, velocities };
 }
 
-/** Two identical actions (updateBody of a at t = 0.5, as editing a's vx then vy there makes). */
+/** Two identical actions (update body "a" at t = 0.5, as editing a's vx then vy there makes). */
 async function twoUpdates() {
   const { h, log } = await logOf(
     [
@@ -76,8 +76,8 @@ async function twoUpdates() {
   return { h, log, updates };
 }
 
-const B = "Remove action giveVelocity of b at t = 0.25";
-const ARMED_B = "Confirm: remove action giveVelocity of b at t = 0.25 (press again; Escape keeps it)";
+const B = 'Remove action give velocity to "b" at t = 0.25';
+const ARMED_B = 'Confirm: remove action give velocity to "b" at t = 0.25 (press again; Escape keeps it)';
 
 describe("RemoveActionButton", () => {
   it("a single click only arms the button; the confirm removes the action, says so, and Undo brings it back", async () => {
@@ -97,7 +97,7 @@ describe("RemoveActionButton", () => {
     });
     expect(velocities()).toEqual(["a"]);
     expect(h.editor.ui.getState().message).toEqual({
-      text: 'Removed giveVelocity of "b" at t = 0.25 s from the scene (Undo brings it back).',
+      text: 'Removed give velocity to "b" at t = 0.25 s from the scene (Undo brings it back).',
       tone: "info",
     });
     await act(async () => {
@@ -106,14 +106,14 @@ describe("RemoveActionButton", () => {
     });
     expect(velocities()).toEqual(["a", "b"]);
     expect(h.editor.ui.getState().message?.text).toBe(
-      'Undone: the removal of giveVelocity of "b" at t = 0.25 s.',
+      'Undone: the removal of give velocity to "b" at t = 0.25 s.',
     );
   });
 
   it("Escape, leaving the button (pointer or focus) and the timeout disarm it", async () => {
     const tick = clock();
     const { h, log, velocities } = await twoVelocities();
-    const button = () => within(log).getByRole("button", { name: /giveVelocity of b/ });
+    const button = () => within(log).getByRole("button", { name: /give velocity to "b"/ });
     const disarmers: [string, () => void][] = [
       ["Escape", () => fireEvent.keyDown(button(), { key: "Escape" })],
       ["pointer", () => fireEvent.mouseLeave(button())],
@@ -149,25 +149,25 @@ describe("RemoveActionButton", () => {
     expect(log.contains(region)).toBe(false);
     expect(region.textContent).toBe("");
     const button = (name: RegExp) => within(log).getByRole("button", { name });
-    const PROMPT_B = "Press again to remove action giveVelocity of b at t = 0.25";
-    fireEvent.click(button(/giveVelocity of b/));
+    const PROMPT_B = 'Press again to remove action give velocity to "b" at t = 0.25';
+    fireEvent.click(button(/give velocity to "b"/));
     expect(region.textContent).toBe(PROMPT_B);
-    act(() => fireEvent.keyDown(button(/giveVelocity of b/), { key: "Escape" }));
+    act(() => fireEvent.keyDown(button(/give velocity to "b"/), { key: "Escape" }));
     expect(region.textContent).toBe("");
     // another button armed since keeps its prompt when the first disarms
-    fireEvent.click(button(/giveVelocity of b/));
-    fireEvent.click(button(/giveVelocity of a/));
-    expect(region.textContent).toBe("Press again to remove action giveVelocity of a at t = 0.25");
-    act(() => fireEvent.keyDown(button(/giveVelocity of b/), { key: "Escape" }));
-    expect(region.textContent).toBe("Press again to remove action giveVelocity of a at t = 0.25");
-    act(() => fireEvent.mouseLeave(button(/giveVelocity of a/)));
+    fireEvent.click(button(/give velocity to "b"/));
+    fireEvent.click(button(/give velocity to "a"/));
+    expect(region.textContent).toBe('Press again to remove action give velocity to "a" at t = 0.25');
+    act(() => fireEvent.keyDown(button(/give velocity to "b"/), { key: "Escape" }));
+    expect(region.textContent).toBe('Press again to remove action give velocity to "a" at t = 0.25');
+    act(() => fireEvent.mouseLeave(button(/give velocity to "a"/)));
     expect(region.textContent).toBe("");
     // the confirming press empties it
-    fireEvent.click(button(/giveVelocity of b/));
+    fireEvent.click(button(/give velocity to "b"/));
     expect(region.textContent).toBe(PROMPT_B);
     tick(CONFIRM_DELAY_MS);
     await act(async () => {
-      fireEvent.click(button(/giveVelocity of b/));
+      fireEvent.click(button(/give velocity to "b"/));
       await settled(h.client);
     });
     expect(velocities()).toEqual(["a"]);
@@ -189,7 +189,7 @@ describe("RemoveActionButton", () => {
     expect(button.getAttribute("aria-label")).toBe(ARMED_B); // still armed: a later click confirms
     act(() => fireEvent.keyDown(button, { key: "Escape" }));
     // the confirm, then at once more presses where the pointer is: one action removed
-    const a = within(log).getByRole("button", { name: "Remove action giveVelocity of a at t = 0.25" });
+    const a = within(log).getByRole("button", { name: 'Remove action give velocity to "a" at t = 0.25' });
     const row = a.closest("tr")!;
     const index = [...row.parentElement!.children].indexOf(row);
     fireEvent.click(a);
@@ -248,7 +248,7 @@ describe("RemoveActionButton", () => {
     const tick = clock();
     const { h, log, updates } = await twoUpdates();
     const first = within(log).getAllByRole("button", {
-      name: "Remove action updateBody of a at t = 0.5",
+      name: 'Remove action update body "a" at t = 0.5',
     })[0]!;
     fireEvent.click(first);
     tick(CONFIRM_DELAY_MS);
@@ -259,8 +259,8 @@ describe("RemoveActionButton", () => {
     expect(updates()).toEqual([[10, 20]]);
     // the log shows the scene without it: one update entry, in the row the first one had
     await waitFor(() => expect(within(log).getAllByText("action: update body")).toHaveLength(1));
-    const second = within(log).getByRole("button", { name: /updateBody of a/ });
-    expect(second.getAttribute("aria-label")).toBe("Remove action updateBody of a at t = 0.5");
+    const second = within(log).getByRole("button", { name: /update body "a"/ });
+    expect(second.getAttribute("aria-label")).toBe('Remove action update body "a" at t = 0.5');
     expect(second.getAttribute("aria-disabled")).toBe("false");
     expect(second.textContent).toBe("✕");
     fireEvent.click(second);
@@ -301,7 +301,7 @@ describe("RemoveActionButton", () => {
     expect(velocities()).toEqual(["a"]);
     await waitFor(() =>
       expect(document.activeElement?.getAttribute("aria-label")).toBe(
-        "Remove action giveVelocity of a at t = 0.25",
+        'Remove action give velocity to "a" at t = 0.25',
       ),
     );
     // a's, with b's after it: the focus goes to b's ✕ (the next action, at a's index now)
@@ -312,7 +312,7 @@ describe("RemoveActionButton", () => {
     await waitFor(() =>
       expect(within(log).getAllByRole("button", { name: /^Remove action/ })).toHaveLength(4),
     );
-    await removeFocused("Remove action giveVelocity of a at t = 0.25");
+    await removeFocused('Remove action give velocity to "a" at t = 0.25');
     expect(velocities()).toEqual(["b"]);
     await waitFor(() => expect(document.activeElement?.getAttribute("aria-label")).toBe(B));
   });

@@ -9,15 +9,16 @@
  * moved up after a removal, or the scene changed: the state's key holds the scene's revision and
  * the action's index) shows its button at rest, and a finished removal (done or refused) brings it
  * to rest. Its accessible name says which action, and when armed that the next press removes it:
- * `Remove action updateBody of b1 at t = 4`,
- * `Confirm: remove action updateBody of b1 at t = 4 (press again; Escape keeps it)`, then
- * `Removing action updateBody of b1 at t = 4` until the removal is done. The press does not reach
+ * `Remove action update body "b1" at t = 4`,
+ * `Confirm: remove action update body "b1" at t = 4 (press again; Escape keeps it)`, then
+ * `Removing action update body "b1" at t = 4` until the removal is done. The press does not reach
  * the row (which would jump to the entry's time). `onRemoved(focused)` is called once the action is
  * removed, `focused` when the button had the keyboard focus at the confirming press (the Event log
  * then moves the focus on: the button may be gone). Armed, it tells the log's live region (`notice`,
- * useArmedNotice.ts) "Press again to remove action updateBody of b1 at t = 4" until it disarms.
+ * useArmedNotice.ts) "Press again to remove action update body "b1" at t = 4" until it disarms.
  */
 import { useEffect, useState } from "react";
+import { describeEntry } from "../doc/actionRefs";
 import { useEditor } from "../EditorContext";
 import { formatNumber } from "./EditableCell";
 import { ARMED_MS, current, disarm, finished, idle, press } from "./removeConfirm";
@@ -46,7 +47,7 @@ export function RemoveActionButton(props: {
     return () => clearTimeout(timer);
   }, [armed]);
 
-  const what = `action ${id === null ? type : `${type} of ${id}`} at t = ${formatNumber(time)}`;
+  const what = `action ${describeEntry(type, id)} at t = ${formatNumber(time)}`;
   const prompt = armed ? `Press again to remove ${what}` : null;
   useEffect(() => {
     if (prompt === null || notice === undefined) return;

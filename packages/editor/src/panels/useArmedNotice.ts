@@ -1,6 +1,6 @@
 /**
  * The Event log's one polite live region for its armed ✕ buttons (RemoveActionButton): an armed
- * button shows its prompt ("Press again to remove action updateBody of b1 at t = 4") and hides it
+ * button shows its prompt ("Press again to remove action update body "b1" at t = 4") and hides it
  * when it disarms (a press, Escape, leaving it, the timeout, the row showing another action, the
  * button gone); hiding takes away only that button's prompt (another button armed since keeps
  * its own). A screen reader announces the prompt once, on arming; an empty region says nothing.
