@@ -1,5 +1,5 @@
 /**
- * CPU profiles of the built editor in Debian's Chromium while it plays 2,000 moving discs and while
+ * CPU profiles of the built editor in Debian's Chromium while it plays 2,000 and 20,000 moving discs and while
  * it scrubs 10^6 recorded events (not a test: it reports where the time goes, it asserts nothing).
  * Both the page's main thread and the engine's Web Worker are profiled (the worker through a CDP
  * session attached with Target.setAutoAttach). Writes test-artifacts/profile-*.cpuprofile (open in
@@ -302,6 +302,17 @@ it("profiles playing 2,000 moving discs", async () => {
   );
   await profile("play2000", () => sample(5000, "play"));
   await trace("play2000", () => sample(5000, "play"));
+});
+
+it("profiles playing 20,000 moving discs", async () => {
+  await loadScene(
+    page,
+    dilutedGas({ n: 20_000, packing: 0.1, seed: 7 }),
+    { useTime: true, seconds: 20, useEvents: false, autoExtend: true },
+    600_000,
+  );
+  await profile("play20000", () => sample(5000, "play"));
+  await trace("play20000", () => sample(5000, "play"));
 });
 
 it("profiles scrubbing 10^6 recorded events", async () => {
