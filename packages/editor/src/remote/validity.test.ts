@@ -1,3 +1,4 @@
+import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import type { LogEvent } from "../engineTypes";
 import { F_FROM, F_UNTIL, FRAME_STRIDE } from "./protocol";
@@ -41,5 +42,45 @@ describe("markValidity", () => {
 
   it("a zero window leaves every interval empty, at t", () => {
     expect(intervals(["a"], [ev(1, "bodyBody", ["a", "x"])], 1.25, 0, 9)).toEqual([[1.25, 1.25]]);
+  });
+
+  it("matches marking every body for every action, one event at a time (random logs)", () => {
+    // The reference: each event in turn moves the interval ends of the bodies it involves (an
+    // action: all bodies) towards t, as the first version did.
+    const reference = (ids: string[], events: LogEvent[], t: number, w: number, h: number) => {
+      const lo = Math.min(t, Math.max(0, t - w));
+      const hi = Math.max(t, Math.min(h, t + w));
+      return ids.map((id) => {
+        let from = lo;
+        let until = hi;
+        for (const e of events) {
+          if (e.time < lo || e.time > hi || (e.type !== "action" && !e.ids.includes(id))) continue;
+          if (e.time <= t) from = Math.max(from, e.time);
+          else until = Math.min(until, e.time);
+        }
+        return [from, until];
+      });
+    };
+    const ids = ["a", "b", "c", "d"];
+    const event = fc
+      .record({
+        time: fc.integer({ min: 0, max: 16 }).map((k) => k / 4),
+        type: fc.constantFrom<LogEvent["type"]>("action", "bodyBody", "bodyLine", "stop"),
+        a: fc.constantFrom(...ids, "gone"),
+        b: fc.constantFrom(...ids),
+      })
+      .map((e) => ev(e.time, e.type, [e.a, e.b]));
+    fc.assert(
+      fc.property(
+        fc.array(event, { maxLength: 12 }),
+        fc.integer({ min: 0, max: 16 }).map((k) => k / 4),
+        fc.integer({ min: 0, max: 8 }).map((k) => k / 4),
+        fc.integer({ min: 0, max: 16 }).map((k) => k / 4),
+        (events, t, w, h) => {
+          events.sort((x, y) => x.time - y.time);
+          expect(intervals(ids, events, t, w, h)).toEqual(reference(ids, events, t, w, h));
+        },
+      ),
+    );
   });
 });

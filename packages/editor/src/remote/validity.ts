@@ -23,22 +23,28 @@ export function markValidity(
   const n = data.length / FRAME_STRIDE;
   const lo = Math.min(t, Math.max(0, t - window));
   const hi = Math.max(t, Math.min(horizon, t + window));
+  // Actions end every body's interval: only the last one at or before t and the first one after t
+  // count, applied once to all bodies (a scene adds its bodies by actions at t = 0: marking every
+  // body for each of 20,000 adds took 0.4 s per frame while playing the first quarter second).
+  let from = lo;
+  let until = hi;
+  for (const e of events) {
+    if (e.type !== "action" || e.time < lo || e.time > hi) continue;
+    if (e.time <= t) from = Math.max(from, e.time);
+    else until = Math.min(until, e.time);
+  }
   for (let i = 0; i < n; i++) {
-    data[i * FRAME_STRIDE + F_FROM] = lo;
-    data[i * FRAME_STRIDE + F_UNTIL] = hi;
+    data[i * FRAME_STRIDE + F_FROM] = from;
+    data[i * FRAME_STRIDE + F_UNTIL] = until;
   }
   for (const e of events) {
-    if (e.time < lo || e.time > hi) continue;
+    if (e.type === "action" || e.time < lo || e.time > hi) continue;
     const before = e.time <= t;
-    const mark = (i: number) => {
+    for (const id of e.ids) {
+      const i = index.get(id);
+      if (i === undefined) continue;
       const o = i * FRAME_STRIDE + (before ? F_FROM : F_UNTIL);
       if (before ? e.time > data[o]! : e.time < data[o]!) data[o] = e.time;
-    };
-    if (e.type === "action") for (let i = 0; i < n; i++) mark(i);
-    else
-      for (const id of e.ids) {
-        const i = index.get(id);
-        if (i !== undefined) mark(i);
-      }
+    }
   }
 }
