@@ -2,12 +2,14 @@
  * Draws one Frame on a 2D canvas context already scaled to CSS pixels. Batched for thousands of
  * discs: one path for all disc outlines, one for velocity arrows; ids are drawn only when a disc is
  * large enough on screen to hold its label (LABEL_MIN_RADIUS_PX), arrows only when at least 2 px
- * long. Above FILL_MAX_DISCS discs, outlines and arrows are one device pixel wide (see STROKE_PX).
+ * long. Above FILL_MAX_DISCS discs, outlines and arrows are one device pixel wide (see STROKE_PX), and
+ * the outlines are rasterized into one image (discLayer.ts) rather than stroked as arcs.
  */
 import type { Vec2 } from "../engineTypes";
 import { F_R, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE, type Frame } from "../remote/protocol";
 import type { Selection, View } from "../store/uiStore";
 import { clipToRect } from "./clip";
+import { DiscLayer, parseHex } from "./discLayer";
 import { type Size, toScreen, toWorld } from "./viewTransform";
 
 export type Overlay =
@@ -31,6 +33,8 @@ export interface DrawOptions {
 /** Seconds of motion an arrow shows: the arrow ends where the disc would be after ARROW_SECONDS. */
 export const ARROW_SECONDS = 0.5;
 const LABEL_MIN_RADIUS_PX = 9;
+/** Smallest outline radius drawn (CSS px): a disc smaller on screen is drawn this large. */
+const MIN_RADIUS_PX = 0.5;
 /** Above this many discs they are drawn as outlines only (a translucent fill costs a quarter of the frame). */
 const FILL_MAX_DISCS = 500;
 /**
@@ -102,7 +106,8 @@ export function drawFrame(
   const hh = size.height / 2;
   const k = view.scale;
   const margin = 2;
-  ctx.beginPath();
+  const many = n > FILL_MAX_DISCS;
+  if (!many) ctx.beginPath();
   for (let i = 0; i < n; i++) {
     const b = i * FRAME_STRIDE;
     const rs = d[b + F_R]! * k;
@@ -117,19 +122,20 @@ export function drawFrame(
     scr[3 * i] = sx;
     scr[3 * i + 1] = sy;
     scr[3 * i + 2] = visible ? rs : -1;
-    if (!visible) continue;
-    const r = Math.max(rs, 0.5);
+    if (!visible || many) continue;
+    const r = Math.max(rs, MIN_RADIUS_PX);
     ctx.moveTo(sx + r, sy);
     ctx.arc(sx, sy, r, 0, 2 * Math.PI);
   }
-  if (n <= FILL_MAX_DISCS) {
+  const thin = many ? 1 / o.pixelRatio : STROKE_PX;
+  if (many) drawRings(ctx, scr, n, o.pixelRatio);
+  else {
     ctx.fillStyle = COLORS.fill;
     ctx.fill();
+    ctx.strokeStyle = COLORS.disc;
+    ctx.lineWidth = thin;
+    ctx.stroke();
   }
-  const thin = n > FILL_MAX_DISCS ? 1 / o.pixelRatio : STROKE_PX;
-  ctx.strokeStyle = COLORS.disc;
-  ctx.lineWidth = thin;
-  ctx.stroke();
   // velocity arrows
   ctx.beginPath();
   const arrowK = ARROW_SECONDS * k;
@@ -172,6 +178,28 @@ export function drawFrame(
     }
   }
   drawOverlay(ctx, view, size, rect, o.overlay);
+}
+
+const layer = new DiscLayer();
+const DISC_RGB = parseHex(COLORS.disc);
+
+/**
+ * Many discs: hairline outlines rasterized into one image (discLayer.ts), or, where no offscreen
+ * canvas can be made, one path of arcs stroked one device pixel wide.
+ */
+function drawRings(ctx: CanvasRenderingContext2D, scr: Float64Array, n: number, pixelRatio: number): void {
+  if (layer.draw(ctx, scr, n, pixelRatio, MIN_RADIUS_PX, DISC_RGB)) return;
+  ctx.beginPath();
+  for (let i = 0; i < n; i++) {
+    const rs = scr[3 * i + 2]!;
+    if (rs < 0) continue;
+    const r = Math.max(rs, MIN_RADIUS_PX);
+    ctx.moveTo(scr[3 * i]! + r, scr[3 * i + 1]!);
+    ctx.arc(scr[3 * i]!, scr[3 * i + 1]!, r, 0, 2 * Math.PI);
+  }
+  ctx.strokeStyle = COLORS.disc;
+  ctx.lineWidth = 1 / pixelRatio;
+  ctx.stroke();
 }
 
 let buffer = new Float64Array(0);
