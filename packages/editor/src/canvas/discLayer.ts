@@ -41,8 +41,9 @@ export class DiscLayer {
   /**
    * Draws a ring for each disc of `scr` (3 numbers per disc in CSS pixels: x, y, radius or −1 for
    * a disc not drawn) with a radius of at least `minRadius` CSS px, one device pixel wide, in
-   * colour `rgb`, onto `target` (scaled by `pixelRatio`). Returns false, drawing nothing, when no
-   * offscreen canvas can be made (the caller strokes arcs instead).
+   * colour `rgb`, onto `target` (scaled by `pixelRatio`); discs whose ring would be larger than
+   * `maxRadius` device px are left out (the caller strokes them). Returns false, drawing nothing,
+   * when no offscreen canvas can be made (the caller strokes arcs instead).
    */
   draw(
     target: LayerTarget,
@@ -50,6 +51,7 @@ export class DiscLayer {
     n: number,
     pixelRatio: number,
     minRadius: number,
+    maxRadius: number,
     rgb: [number, number, number],
   ): boolean {
     const width = target.canvas.width;
@@ -67,6 +69,7 @@ export class DiscLayer {
       const rs = scr[3 * i + 2]!;
       if (rs < 0) continue;
       const r = Math.max(rs, minRadius) * pixelRatio;
+      if (r > maxRadius) continue;
       strokeRing(px, width, height, scr[3 * i]! * pixelRatio, scr[3 * i + 1]! * pixelRatio, r, touched);
     }
     this.touched = touched;

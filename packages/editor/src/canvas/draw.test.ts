@@ -83,6 +83,16 @@ describe("drawFrame", () => {
     expect(Math.abs(inkAfter - inkBefore) / inkBefore).toBeLessThan(0.02);
   });
 
+  it("many discs: a disc large on screen is stroked as an arc, not put in the image", () => {
+    const f = frame(2000);
+    f.data[5 * FRAME_STRIDE + F_R] = 3; // 3 world units: about 10 device px here
+    f.data[7 * FRAME_STRIDE + F_R] = 4;
+    const { rec } = draw(f);
+    expect(rec.named("arc")).toHaveLength(2);
+    expect(rec.named("drawImage")).toHaveLength(1);
+    expect(rec.named("stroke").length).toBeGreaterThanOrEqual(1);
+  });
+
   it("many discs without an offscreen canvas: one path of arcs, stroked one device pixel wide", () => {
     const { rec } = draw(frame(2000), false, { width: 123, height: 77 });
     expect(rec.named("arc")).toHaveLength(2000);
