@@ -100,6 +100,12 @@ describe("drawFrame", () => {
     expect(rec.named("set lineWidth")[0]!.args).toEqual([0.5]);
   });
 
+  it("velocity arrows shorter than 2 px are not drawn", () => {
+    // scale ≈ 1.63 CSS px per unit: an arrow of 0.5 s at speed 2 is 1.6 px long, at speed 3 2.4 px
+    expect(draw(frame(2000, 2)).rec.named("lineTo")).toHaveLength(0);
+    expect(draw(frame(2000, 3)).rec.named("lineTo")).toHaveLength(3 * 2000);
+  });
+
   it("velocity arrows of many discs are still one stroked path", () => {
     const { rec } = draw(frame(2000, 3));
     expect(rec.named("lineTo").length).toBeGreaterThanOrEqual(3 * 2000);

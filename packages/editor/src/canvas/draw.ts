@@ -145,6 +145,8 @@ export function drawFrame(
     const vx = d[b + F_VX]!;
     const vy = d[b + F_VY]!;
     if (vx === 0 && vy === 0) continue;
+    // shorter than 2 px: not drawn (arrowPath's own test, without a call per disc)
+    if ((vx * vx + vy * vy) * arrowK * arrowK < 4) continue;
     const sx = scr[3 * i]!;
     const sy = scr[3 * i + 1]!;
     arrowPath(ctx, sx, sy, sx + vx * arrowK, sy - vy * arrowK);
@@ -224,7 +226,7 @@ function screenBuffer(n: number): Float64Array {
 function arrowPath(ctx: CanvasRenderingContext2D, sx: number, sy: number, ex: number, ey: number) {
   const dx = ex - sx;
   const dy = ey - sy;
-  const len = Math.hypot(dx, dy);
+  const len = Math.sqrt(dx * dx + dy * dy);
   if (len < 2) return;
   ctx.moveTo(sx, sy);
   ctx.lineTo(ex, ey);
