@@ -67,15 +67,24 @@ export function timeArg(method: string, name: string, t: number): number {
 }
 
 /** stateAt's time (or `method`'s argument `name`): a number in [start, horizon] (-0 read as 0; start
- *  is the start of the kept history, 0 until forgetBefore); else a RangeError. */
-export function stateTime(t: unknown, horizon: number, start = 0, method = "stateAt", name = "t"): number {
+ *  is the start of the kept history, 0 until forgetBefore); else a RangeError. `before` says why a
+ *  time in [0, start) is refused: by default the history there was forgotten; path's `to` gives
+ *  its own reason (start is its `from` then), and so does a timeline without history. */
+export function stateTime(
+  t: unknown,
+  horizon: number,
+  start = 0,
+  method = "stateAt",
+  name = "t",
+  before = "the history before it was forgotten (forgetBefore)",
+): number {
   if (typeof t !== "number" || !(t >= start && t <= horizon)) {
     // Beyond the horizon is not computed yet, even when nothing more will happen (prolong said idle).
     const hint =
       typeof t === "number" && t > horizon && t < Number.POSITIVE_INFINITY
         ? `: the history is computed up to ${horizon}, call prolongTo(${t}) first`
         : typeof t === "number" && t >= 0 && t < start
-          ? ": the history before it was forgotten (forgetBefore)"
+          ? `: ${before}`
           : "";
     throw new RangeError(
       `${method}: ${name} must be a number in [${start}, ${horizon}], got ${show(t)}${hint}`,

@@ -164,4 +164,31 @@ describe("Timeline.path", () => {
     expect(() => tl.path("b", 3, 2)).toThrow("path: to must be a number in [3, 5], got 2");
     expect(() => tl.path("b", Number.NaN)).toThrow(RangeError);
   });
+
+  it("says why a time before `from`, or before a headless timeline's last entry, is refused (nothing was forgotten)", () => {
+    const tl = Timeline.fromScene(scene([disc("b", 0, 0, [1, 0])], 0));
+    tl.prolongTo(5);
+    const reason = (f: () => unknown) => {
+      try {
+        f();
+      } catch (e) {
+        return (e as Error).message;
+      }
+      return "no error";
+    };
+    expect(reason(() => tl.path("b", 3, 2))).toBe(
+      "path: to must be a number in [3, 5], got 2: to must not be before from (3)",
+    );
+    const headless = Timeline.fromScene(scene([disc("b", 0, 0, [1, 0])], 0), { history: false });
+    headless.apply({ time: 2, type: "giveVelocity", id: "b", v: [0, 1] });
+    headless.prolongTo(5);
+    const keepsNone =
+      "this timeline keeps no history: a path starts at its last logged entry at the earliest";
+    expect(reason(() => headless.path("b", 1))).toBe(
+      `path: from must be a number in [2, 5], got 1: ${keepsNone}`,
+    );
+    expect(reason(() => headless.path("b", 3, 2.5))).toBe(
+      `path: to must be a number in [3, 5], got 2.5: ${keepsNone}`,
+    );
+  });
 });

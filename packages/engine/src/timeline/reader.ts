@@ -88,8 +88,11 @@ export class TimelineReader {
         `path: id must name a body of this timeline, got ${JSON.stringify(id) ?? String(id)}`,
       );
     const start = c.history ? historyStart(c) : c.lastLogged;
-    const t0 = stateTime(from, c.horizon, start, "path", "from");
-    const t1 = stateTime(to, c.horizon, t0, "path", "to");
+    const early = c.history
+      ? undefined
+      : "this timeline keeps no history: a path starts at its last logged entry at the earliest";
+    const t0 = stateTime(from, c.horizon, start, "path", "from", early);
+    const t1 = stateTime(to, c.horizon, t0, "path", "to", early ?? `to must not be before from (${t0})`);
     return c.history ? bodyPath(c, id, t0, t1) : headlessBodyPath(c, id, t0, t1);
   }
 
