@@ -19,6 +19,11 @@ export function applyGroup(c: TimelineCore): void {
   const w = c.world;
   const t = w.time;
   const groupStart = c.records.length;
+  // untils met only by idleness count on: building from scratch, these actions were pending then
+  if (c.dormant.length > 0) {
+    for (const g of c.dormant) c.goals.push(g);
+    c.dormant = [];
+  }
   const view = SceneView.of({
     time: t,
     g: w.g,

@@ -60,6 +60,10 @@ export class TimelineCore {
   counts = emptyCounts();
   eventTotal = 0;
   goals: Goal[] = [];
+  /** Goals of actions' untils met only because nothing was left to happen (satisfied's "idle"
+   *  with no time limit, fewer events than asked): with a later action known, building from scratch
+   *  keeps such a goal, so the next group of actions applied revives them (actionGroup.ts). */
+  dormant: Goal[] = [];
   /** every event at world.time is processed (the last advance stopped at its time limit, and no
    *  action was applied since) */
   atTimeLimit = true;
@@ -147,6 +151,14 @@ export class TimelineCore {
 
   // ---- computing --------------------------------------------------------------------------------
 
+  /** Whether goal g is still open; a goal met by idleness alone becomes dormant (untils only). */
+  keep(g: Goal): boolean {
+    const how = satisfied(this, g);
+    if (how === null) return true;
+    if (this.untils && how === "idle" && g.tLimit === INF && this.eventTotal < g.eLimit) this.dormant.push(g);
+    return false;
+  }
+
   /** Whether a scheduled action is due now. */
   private due(): boolean {
     return (
@@ -172,7 +184,7 @@ export class TimelineCore {
         applyGroup(this);
         continue;
       }
-      this.goals = this.goals.filter((g) => satisfied(this, g) === null);
+      this.goals = this.goals.filter((g) => this.keep(g));
       const reason = focus ? satisfied(this, focus) : "idle";
       const actionsPending = this.eager && this.applied < this.acts.length;
       if (reason !== null && this.goals.length === 0 && !actionsPending) return { events, reason };

@@ -39,6 +39,7 @@ export function satisfied(c: TimelineCore, g: Goal): "events" | "idle" | "time" 
 /** Goals of the applied actions' untils, as they stand at the current point (after a restore). */
 export function reopenGoals(c: TimelineCore): void {
   c.goals = [];
+  c.dormant = [];
   if (!c.untils) return;
   for (let k = 0; k < c.applied; k++) {
     const a = c.acts[k] as Action;
@@ -47,6 +48,6 @@ export function reopenGoals(c: TimelineCore): void {
       tLimit: a.until.time === undefined ? INF : a.time + a.until.time,
       eLimit: a.until.events === undefined ? INF : (c.actEvents[k] as number) + a.until.events,
     };
-    if (satisfied(c, g) === null) c.goals.push(g);
+    if (c.keep(g)) c.goals.push(g);
   }
 }

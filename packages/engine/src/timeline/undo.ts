@@ -108,6 +108,7 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
     counts: { ...c.counts },
     eventTotal: c.eventTotal,
     goals: c.goals.slice(),
+    dormant: c.dormant.slice(),
     atTimeLimit: c.atTimeLimit,
     groupOpen: c.groupOpen,
     idle: c.idle,
@@ -145,6 +146,7 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
     c.counts = saved.counts;
     c.eventTotal = saved.eventTotal;
     c.goals = saved.goals;
+    c.dormant = saved.dormant;
     c.atTimeLimit = saved.atTimeLimit;
     c.groupOpen = saved.groupOpen;
     c.idle = saved.idle;
