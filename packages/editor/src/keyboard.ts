@@ -1,15 +1,19 @@
 /**
- * Keyboard shortcuts: space play/pause, ←/→ previous/next event, Ctrl+Z undo, Ctrl+Shift+Z (or
- * Ctrl+Y) redo, Ctrl+S (Cmd+S) save file, Delete/Backspace delete the selection. Ctrl+S works
- * everywhere, in a field too (no field uses it, and the browser would offer to save the page); it
- * saves the scene as it is (text typed in a cell and not yet committed is not in it). Ignored while typing in a field; on other
- * controls (the Time slider, a checkbox, a list) only the keys the control uses itself are left to
- * it (the slider's arrows, a checkbox's or a button's space and Enter, a list's keys but Ctrl+Z/Y),
- * so Ctrl+Z and space still work after scrubbing or picking a line kind, and space on a focused
- * button presses it.
+ * Runs the keyboard shortcuts of shortcuts.ts (one table):
+ * space play/pause, ←/→ previous/next event, Ctrl+Z undo, Ctrl+Shift+Z (or Ctrl+Y) redo, Ctrl+S
+ * (Cmd+S) save file, Delete/Backspace delete the selection, and the view's and tools' keys. Ctrl+S
+ * works everywhere, in a field too (no field uses it, and the browser would offer to save the page);
+ * it saves the scene as it is (text typed in a cell and not yet committed is not in it). Ignored
+ * while typing in a field; on other controls (the Time slider, a checkbox, a list)
+ * only the keys the control uses itself are left to it (the slider's arrows, a checkbox's or a
+ * button's space and Enter, a list's keys but Ctrl+Z/Y), so Ctrl+Z and space still work after
+ * scrubbing or picking a line kind, and space on a focused button presses it. The scene view
+ * (the element marked data-keys="canvas") focused, its own shortcuts come first: there the arrows pan.
  */
+import type { Size } from "./canvas/viewTransform";
 import type { Editor } from "./editor";
 import { saveSceneFile } from "./panels/sceneFile";
+import { type KeyContext, SHORTCUTS } from "./shortcuts";
 
 /** Input types whose keys are text editing (every shortcut is left to them). */
 const TEXT_INPUTS = new Set(["text", "search", "number", "email", "url", "tel", "password"]);
@@ -34,36 +38,37 @@ function ownsKey(target: EventTarget | null, e: KeyboardEvent): boolean {
   return false;
 }
 
+/** The scene view's element in `doc`, marked data-keys="canvas" (SceneCanvas). */
+function sceneView(doc: Document | null): HTMLElement | null {
+  return doc?.querySelector<HTMLElement>('[data-keys="canvas"]') ?? null;
+}
+
+/** The size of the scene view on screen, or null when it is not laid out. */
+function viewSizeOf(el: HTMLElement | null): Size | null {
+  const r = el?.getBoundingClientRect();
+  return r && r.width > 0 && r.height > 0 ? { width: r.width, height: r.height } : null;
+}
+
+/** Runs the shortcut `e` is, if any; true when one ran (the browser's own handling is then kept off). */
 export function handleKey(editor: Editor, e: KeyboardEvent, save: () => void = () => {}): boolean {
-  const mod = e.ctrlKey || e.metaKey;
-  if (mod && !e.shiftKey && !e.altKey && e.key.toLowerCase() === "s") {
-    save();
+  const target = e.target instanceof HTMLElement ? e.target : null;
+  const onCanvas = target?.closest('[data-keys="canvas"]') != null;
+  const owned = ownsKey(e.target, e);
+  const c: KeyContext = {
+    editor,
+    save,
+    viewSize: () => viewSizeOf(sceneView(target?.ownerDocument ?? null)),
+  };
+  // the scene view's own shortcuts first: focused, its arrows pan rather than step through events
+  const order = onCanvas
+    ? [...SHORTCUTS.filter((s) => s.where === "canvas"), ...SHORTCUTS.filter((s) => s.where !== "canvas")]
+    : SHORTCUTS;
+  for (const s of order) {
+    if (s.where === "canvas" && !onCanvas) continue;
+    if (s.where === "page" && owned) continue;
+    if (!s.matches(e)) continue;
+    s.run(c, e);
     return true;
-  }
-  if (ownsKey(e.target, e)) return false;
-  if (mod && e.key.toLowerCase() === "z") {
-    void (e.shiftKey ? editor.redo() : editor.undo());
-    return true;
-  }
-  if (mod && e.key.toLowerCase() === "y") {
-    void editor.redo();
-    return true;
-  }
-  if (mod || e.altKey) return false;
-  switch (e.key) {
-    case " ":
-      editor.togglePlay();
-      return true;
-    case "ArrowLeft":
-      void editor.stepEvent(-1);
-      return true;
-    case "ArrowRight":
-      void editor.stepEvent(1);
-      return true;
-    case "Delete":
-    case "Backspace":
-      void editor.deleteSelection();
-      return true;
   }
   return false;
 }

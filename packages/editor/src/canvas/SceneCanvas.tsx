@@ -6,8 +6,12 @@
  * whole computed path is drawn under the discs (pathView.ts).
  * Pointer gestures are gestures.ts's; Escape (or a cancelled pointer) drops a drag under way. The
  * wheel zooms the view around the pointer, except a wheel that continues a page scroll (wheelLatch.ts).
- * It is an image to assistive technology (role="img"), named by what it shows (sceneLabel.ts: counts
- * and the selection, from a frame refreshed at most once a second: the only re-render).
+ * It is focusable (Tab) with a focus ring, an application to assistive technology (its keys are its
+ * own: shortcuts.ts's "canvas" ones, the arrows pan), named by what it shows (sceneLabel.ts: counts
+ * and the selection, from a frame refreshed at most once a second: the only re-render) and described
+ * by its keys. A mouse press does not focus it (the focus leaves the field it was in, as before it was
+ * focusable), so ←/→ still step through events after a click on a disc.
+ * Any view change but the canvas's own fit (a drag, the wheel, a key) ends the fitted view.
  */
 import { useEffect, useRef } from "react";
 import { useEditor, useUi } from "../EditorContext";
@@ -15,6 +19,8 @@ import type { SceneFile } from "../engineTypes";
 import { useLiveFrame } from "../panels/useLiveFrame";
 import { motionWindow } from "../playback";
 import type { Frame } from "../remote/protocol";
+import { canvasKeys } from "../shortcuts";
+import type { View } from "../store/uiStore";
 import { addWheelZoom } from "../wheelLatch";
 import { drawFrame } from "./draw";
 import { drawStats } from "./drawStats";
@@ -100,8 +106,11 @@ export function SceneCanvas() {
     ro?.observe(canvas);
     resize();
 
+    // the view the canvas last fitted: any other view was set by the reader (drag, wheel, keys)
+    let fittedView: View | null = null;
     const unsubUi = ui.subscribe((s, p) => {
       if (s.fitRequest !== p.fitRequest) fitPending = true;
+      if (s.view !== p.view && s.view !== fittedView) fitted = false;
       if (
         s.view !== p.view ||
         s.selection !== p.selection ||
@@ -121,7 +130,8 @@ export function SceneCanvas() {
       if (fitPending && base && client.hasFrame(s.t)) {
         fitPending = false;
         fitted = true;
-        ui.setState({ view: fitFrame(base, size) });
+        fittedView = fitFrame(base, size);
+        ui.setState({ view: fittedView });
         return;
       }
       const moved = base !== drawnBase || s.t !== drawnT;
@@ -165,6 +175,14 @@ export function SceneCanvas() {
       return true;
     };
 
+    // A mouse press leaves the focus where a click on the page leaves it (nowhere): a focused
+    // canvas owns the arrows (they pan), and a click on a disc then ←/→ stepped through events.
+    const onMouseDown = (e: MouseEvent) => {
+      if (document.activeElement === canvas) return;
+      e.preventDefault();
+      if (document.activeElement instanceof HTMLElement) document.activeElement.blur();
+    };
+
     let pointerId: number | null = null;
     const onDown = (e: PointerEvent) => {
       if (e.button !== 0) return;
@@ -191,6 +209,7 @@ export function SceneCanvas() {
     };
 
     const removeWheelZoom = addWheelZoom(canvas, zoom);
+    canvas.addEventListener("mousedown", onMouseDown);
     canvas.addEventListener("pointerdown", onDown);
     canvas.addEventListener("pointermove", onMove);
     canvas.addEventListener("pointerup", onUp);
@@ -202,6 +221,7 @@ export function SceneCanvas() {
       ro?.disconnect();
       unsubUi();
       removeWheelZoom();
+      canvas.removeEventListener("mousedown", onMouseDown);
       canvas.removeEventListener("pointerdown", onDown);
       canvas.removeEventListener("pointermove", onMove);
       canvas.removeEventListener("pointerup", onUp);
@@ -211,12 +231,21 @@ export function SceneCanvas() {
   }, [editor]);
 
   return (
-    <canvas
-      ref={canvasRef}
-      className="scene-canvas"
-      role="img"
-      aria-label={label}
-      data-testid="scene-canvas"
-    />
+    <>
+      {/* biome-ignore lint/a11y/noInteractiveElementToNoninteractiveRole: an application is an interactive role (the focused canvas takes its own keys: the arrows pan) */}
+      <canvas
+        ref={canvasRef}
+        className="scene-canvas"
+        role="application"
+        tabIndex={0}
+        aria-label={label}
+        aria-describedby="scene-keys"
+        data-keys="canvas"
+        data-testid="scene-canvas"
+      />
+      <p id="scene-keys" hidden>
+        {canvasKeys()}
+      </p>
+    </>
   );
 }

@@ -1,5 +1,5 @@
 /**
- * The canvas's accessible name (it is role="img"): what the scene view shows at the current time, in
+ * The canvas's accessible name (it is role="application"): what the scene view shows at the current time, in
  * words a screen reader can say: how many bodies, lines and points, and which one is selected. Counts
  * only (no time, no positions): the name changes when the scene does, not on every frame.
  */

@@ -1,9 +1,11 @@
 /**
  * The canvas tools (move/pan, velocity, cue, add disc/line/ray/segment/point), fit, trails, the Path
  * view (the selected body's whole computed path; a note says when no body is selected, or where a
- * path too long to draw whole was cut), delete.
+ * path too long to draw whole was cut), delete. Each tool's title names its digit key
+ * (shortcuts.ts).
  */
 import { useEditor, useUi } from "../EditorContext";
+import { toolKey } from "../shortcuts";
 import type { Tool } from "../store/uiStore";
 import { formatNumber } from "./EditableCell";
 
@@ -40,14 +42,18 @@ export function Toolbar() {
           key={t.tool}
           type="button"
           aria-pressed={tool === t.tool}
-          title={t.title}
+          title={`${t.title} (key ${toolKey(t.tool)})`}
           onClick={() => editor.ui.setState({ tool: t.tool })}
         >
           {t.label}
         </button>
       ))}
       <span className="sep" />
-      <button type="button" onClick={() => editor.ui.setState((s) => ({ fitRequest: s.fitRequest + 1 }))}>
+      <button
+        type="button"
+        title="Fit the view to the scene (F)"
+        onClick={() => editor.ui.setState((s) => ({ fitRequest: s.fitRequest + 1 }))}
+      >
         Fit
       </button>
       <label>

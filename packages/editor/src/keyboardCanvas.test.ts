@@ -1,0 +1,139 @@
+// @vitest-environment jsdom
+/**
+ * The scene view's keys and the keys of the view and the tools, run by keyboard.ts from the table of
+ * shortcuts.ts: the focused canvas pans with the arrows (elsewhere they step through events).
+ */
+import { afterEach, describe, expect, it } from "vitest";
+import type { Editor } from "./editor";
+import { bindKeyboard } from "./keyboard";
+import { packFrame } from "./remote/packFrame";
+import { SHORTCUTS } from "./shortcuts";
+import { createUiStore } from "./store/uiStore";
+
+const frame = packFrame(
+  {
+    time: 0,
+    g: 9.81,
+    gravity: [0, 0],
+    bodies: ["b2", "b1", "b10"].map((id, i) => ({
+      id,
+      x: i * 1000,
+      y: 0,
+      vx: 0,
+      vy: 0,
+      ax: 0,
+      ay: 0,
+      r: 1,
+      m: 1,
+      mu: 0,
+    })),
+    lines: [],
+    points: [],
+  },
+  0,
+);
+
+/** An editor over a real UI store that records the edits and steps asked for. */
+function editorWith() {
+  const calls: string[] = [];
+  const ui = createUiStore({ view: { cx: 0, cy: 0, scale: 1 } });
+  const editor = {
+    ui,
+    client: { latestFrame: frame },
+    undo: async () => void calls.push("undo"),
+    redo: async () => void calls.push("redo"),
+    togglePlay: () => void calls.push("play"),
+    stepEvent: async (d: number) => void calls.push(`step ${d}`),
+    deleteSelection: async () => void calls.push("delete"),
+  } as unknown as Editor;
+  return { editor, ui, calls };
+}
+
+/** A focusable scene view in the page, as SceneCanvas renders it. */
+function canvas(): HTMLElement {
+  const el = document.createElement("canvas");
+  el.tabIndex = 0;
+  el.dataset.keys = "canvas";
+  document.body.append(el);
+  el.focus();
+  return el;
+}
+
+function press(target: EventTarget, key: string, mods: KeyboardEventInit = {}): boolean {
+  const e = new KeyboardEvent("keydown", { key, bubbles: true, cancelable: true, ...mods });
+  target.dispatchEvent(e);
+  return !e.defaultPrevented;
+}
+
+afterEach(() => {
+  document.body.replaceChildren();
+});
+
+describe("the scene view's keys", () => {
+  it("the focused canvas pans with the arrows; the page's arrows still step through events", () => {
+    const { editor, ui, calls } = editorWith();
+    const off = bindKeyboard(editor);
+    const c = canvas();
+    expect(press(c, "ArrowRight")).toBe(false);
+    expect(ui.getState().view.cx).toBeGreaterThan(0);
+    press(c, "ArrowUp", { shiftKey: true });
+    expect(ui.getState().view.cy).toBeGreaterThan(0);
+    expect(calls).toEqual([]);
+    press(document.body, "ArrowRight");
+    expect(calls).toEqual(["step 1"]);
+    // the page's other shortcuts work on the canvas
+    press(c, " ");
+    press(c, "z", { ctrlKey: true });
+    expect(calls).toEqual(["step 1", "play", "undo"]);
+    off();
+  });
+
+  it("+ and − zoom, F fits, digits pick a tool, anywhere but in a field", () => {
+    const { editor, ui } = editorWith();
+    const off = bindKeyboard(editor);
+    press(canvas(), "+");
+    expect(ui.getState().view.scale).toBeGreaterThan(1);
+    press(document.body, "-");
+    press(document.body, "-");
+    expect(ui.getState().view.scale).toBeLessThan(1);
+    press(document.body, "f");
+    expect(ui.getState().fitRequest).toBe(1);
+    press(document.body, "4");
+    expect(ui.getState().tool).toBe("disc");
+    const field = document.createElement("input");
+    document.body.append(field);
+    field.focus();
+    for (const key of ["1", "+", "f", "n"]) expect(press(field, key)).toBe(true);
+    expect(ui.getState().tool).toBe("disc");
+    off();
+  });
+
+  it("N and Shift+N select the next and previous body and bring it into view; Escape on the canvas selects nothing", () => {
+    const { editor, ui } = editorWith();
+    const off = bindKeyboard(editor);
+    const c = canvas();
+    press(c, "n");
+    expect(ui.getState().selection).toEqual({ kind: "body", id: "b1" });
+    press(c, "n");
+    expect(ui.getState().selection).toEqual({ kind: "body", id: "b2" }); // at x = 0
+    press(c, "N", { shiftKey: true });
+    press(c, "N", { shiftKey: true });
+    expect(ui.getState().selection).toEqual({ kind: "body", id: "b10" }); // wraps round
+    press(c, "Escape");
+    expect(ui.getState().selection).toBeNull();
+    off();
+  });
+
+  it("every shortcut has keys and words for the list, and no two of one place share a key", () => {
+    const seen = new Set<string>();
+    for (const s of SHORTCUTS) {
+      expect(s.keys.length).toBeGreaterThan(0);
+      expect(s.what.length).toBeGreaterThan(3);
+      for (const k of s.keys) {
+        const key = `${s.where === "canvas" ? "canvas" : "page"} ${k}`;
+        expect(seen.has(key), key).toBe(false);
+        seen.add(key);
+      }
+    }
+  });
+});

@@ -1,0 +1,164 @@
+/**
+ * The keyboard shortcuts, one table: keyboard.ts runs them, and a list of them can be made from it
+ * (the scene view's description: canvasKeys). Each says where it works:
+ * "anywhere" (in a text field too: Ctrl+S only), "page" (unless a focused control uses the key
+ * itself: keyboard.ts's ownsKey) or "canvas" (the scene view focused, where the arrows pan the view
+ * instead of stepping through events).
+ */
+import { bodyIndex } from "./canvas/hitTest";
+import { nextBody, panByKey, revealDisc, zoomByKey } from "./canvas/viewKeys";
+import type { Size } from "./canvas/viewTransform";
+import type { Editor } from "./editor";
+import { F_R, F_X, F_Y, FRAME_STRIDE } from "./remote/protocol";
+import type { Tool } from "./store/uiStore";
+
+export type Where = "anywhere" | "page" | "canvas";
+
+export interface KeyContext {
+  editor: Editor;
+  /** Ctrl+S: save the scene file. */
+  save(): void;
+  /** The scene view's size on screen (null when it is not shown). */
+  viewSize(): Size | null;
+}
+
+export interface Shortcut {
+  /** The keys as the help shows them, alternatives apart ("Ctrl+Y" beside "Ctrl+Shift+Z"). */
+  keys: string[];
+  what: string;
+  where: Where;
+  matches(e: KeyboardEvent): boolean;
+  run(c: KeyContext, e: KeyboardEvent): void;
+}
+
+const ctrl = (e: KeyboardEvent) => (e.ctrlKey || e.metaKey) && !e.altKey;
+/** No Ctrl, Cmd or Alt (Shift allowed: "?" and "+" take it on many layouts). */
+const bare = (e: KeyboardEvent) => !(e.ctrlKey || e.metaKey || e.altKey);
+const oneOf =
+  (...keys: string[]) =>
+  (e: KeyboardEvent) =>
+    bare(e) && keys.includes(e.key);
+
+/** The tools in the toolbar's order: the digit keys 1 to 8 pick them. */
+export const TOOL_KEYS: { tool: Tool; label: string }[] = [
+  { tool: "move", label: "Move" },
+  { tool: "velocity", label: "Velocity" },
+  { tool: "cue", label: "Cue" },
+  { tool: "disc", label: "Disc" },
+  { tool: "line", label: "Line" },
+  { tool: "ray", label: "Ray" },
+  { tool: "segment", label: "Segment" },
+  { tool: "point", label: "Point" },
+];
+
+/** Selects the next (or previous) body and moves the view to show it when it is off screen. */
+function selectBody({ editor, viewSize }: KeyContext, dir: 1 | -1): void {
+  const f = editor.client.latestFrame;
+  if (!f) return;
+  const s = editor.ui.getState();
+  const id = nextBody(f.ids, s.selection, dir);
+  if (id === null) return;
+  const i = bodyIndex(f, id) * FRAME_STRIDE;
+  const size = viewSize();
+  const view = size ? revealDisc(s.view, size, f.data[i + F_X]!, f.data[i + F_Y]!, f.data[i + F_R]!) : s.view;
+  editor.ui.setState({ selection: { kind: "body", id }, highlight: [], view });
+}
+
+export const SHORTCUTS: Shortcut[] = [
+  {
+    keys: ["Ctrl+S"],
+    what: "Save the scene to a file (in a field too)",
+    where: "anywhere",
+    matches: (e) => ctrl(e) && !e.shiftKey && e.key.toLowerCase() === "s",
+    run: (c) => c.save(),
+  },
+  {
+    keys: ["Ctrl+Z"],
+    what: "Undo",
+    where: "page",
+    matches: (e) => ctrl(e) && !e.shiftKey && e.key.toLowerCase() === "z",
+    run: (c) => void c.editor.undo(),
+  },
+  {
+    keys: ["Ctrl+Shift+Z", "Ctrl+Y"],
+    what: "Redo",
+    where: "page",
+    matches: (e) => ctrl(e) && ((e.shiftKey && e.key.toLowerCase() === "z") || e.key.toLowerCase() === "y"),
+    run: (c) => void c.editor.redo(),
+  },
+  {
+    keys: ["Space"],
+    what: "Play / pause",
+    where: "page",
+    matches: oneOf(" "),
+    run: (c) => c.editor.togglePlay(),
+  },
+  {
+    keys: ["←", "→"],
+    what: "Previous / next event",
+    where: "page",
+    matches: oneOf("ArrowLeft", "ArrowRight"),
+    run: (c, e) => void c.editor.stepEvent(e.key === "ArrowLeft" ? -1 : 1),
+  },
+  {
+    keys: ["←", "→", "↑", "↓"],
+    what: "Pan the view (with Shift: five times as far)",
+    where: "canvas",
+    matches: oneOf("ArrowLeft", "ArrowRight", "ArrowUp", "ArrowDown"),
+    run: (c, e) => c.editor.ui.setState((s) => ({ view: panByKey(s.view, e.key, e.shiftKey) })),
+  },
+  {
+    keys: ["+", "−"],
+    what: "Zoom the view in / out",
+    where: "page",
+    matches: oneOf("+", "=", "-", "_"),
+    run: (c, e) =>
+      c.editor.ui.setState((s) => ({ view: zoomByKey(s.view, e.key === "+" || e.key === "=" ? 1 : -1) })),
+  },
+  {
+    keys: ["F"],
+    what: "Fit the view to the scene",
+    where: "page",
+    matches: oneOf("f", "F"),
+    run: (c) => c.editor.ui.setState((s) => ({ fitRequest: s.fitRequest + 1 })),
+  },
+  {
+    keys: ["N", "Shift+N"],
+    what: "Select the next / previous body (the view follows it)",
+    where: "page",
+    matches: oneOf("n", "N"),
+    run: (c, e) => selectBody(c, e.shiftKey ? -1 : 1),
+  },
+  {
+    keys: ["Esc"],
+    what: "Select nothing (during a drag: cancel it)",
+    where: "canvas",
+    matches: oneOf("Escape"),
+    run: (c) => c.editor.ui.setState({ selection: null, highlight: [] }),
+  },
+  {
+    keys: ["Delete", "Backspace"],
+    what: "Delete the selected body, line or point",
+    where: "page",
+    matches: oneOf("Delete", "Backspace"),
+    run: (c) => void c.editor.deleteSelection(),
+  },
+  {
+    keys: ["1 … 8"],
+    what: `Pick a tool: ${TOOL_KEYS.map((t, i) => `${i + 1} ${t.label}`).join(", ")}`,
+    where: "page",
+    matches: (e) => bare(e) && /^[1-8]$/.test(e.key),
+    run: (c, e) => c.editor.ui.setState({ tool: TOOL_KEYS[Number(e.key) - 1]!.tool }),
+  },
+];
+
+/** The tool key of `tool` ("1" for Move), for the toolbar's titles. */
+export function toolKey(tool: Tool): string {
+  return String(TOOL_KEYS.findIndex((t) => t.tool === tool) + 1);
+}
+
+/** The scene view's description: its own keys (from the table) and where the others are listed. */
+export function canvasKeys(): string {
+  const own = SHORTCUTS.filter((s) => s.where === "canvas").map((s) => `${s.keys.join(" ")}: ${s.what}`);
+  return `Keys: ${own.join("; ")}.`;
+}

@@ -1,0 +1,85 @@
+/**
+ * End-to-end, in Debian's Chromium: the scene view from the keyboard (reached by Tab, with a focus
+ * ring and a name; arrows pan, + and − zoom, N selects the next body) while a mouse click on it
+ * keeps ←/→ stepping through events.
+ */
+import type { Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { currentTime, openEditor, type Session, screenshot } from "./harness.js";
+import { loadPresetOn } from "./presets.js";
+
+const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
+
+let s: Session;
+let page: Page;
+
+type Ui = { cx: number; cy: number; scale: number; selection: { kind: string; id: string } | null };
+/** The view and selection in the editor's UI store. */
+function ui(): Promise<Ui> {
+  return page.evaluate(() => {
+    type W = { chapgame: { ui: { getState(): { view: Ui; selection: Ui["selection"] } } } };
+    const st = (window as unknown as W).chapgame.ui.getState();
+    return { ...st.view, selection: st.selection };
+  });
+}
+
+const canvas = () => page.getByRole("application", { name: /^Scene view: / });
+
+beforeAll(async () => {
+  s = await openEditor();
+  page = s.page;
+  await loadPresetOn(page, "Bouncing balls", "ball1");
+});
+
+afterAll(async () => {
+  await s?.close();
+});
+
+describe("the scene view from the keyboard", () => {
+  it("Tab reaches the canvas, which shows a focus ring and is named by what it shows", async () => {
+    // the toolbar's last control, then Tab: the canvas comes next
+    await page.getByRole("toolbar", { name: "Tools" }).locator("button:enabled, input").last().focus();
+    await page.keyboard.press("Tab");
+    expect(await canvas().evaluate((el) => el === document.activeElement)).toBe(true);
+    const ring = await canvas().evaluate((el) => {
+      const st = getComputedStyle(el);
+      return { style: st.outlineStyle, width: Number.parseFloat(st.outlineWidth) };
+    });
+    expect(ring.style).toBe("solid");
+    expect(ring.width).toBeGreaterThanOrEqual(2);
+    expect(await canvas().getAttribute("aria-describedby")).toBeTruthy();
+    await screenshot(page, "keyboard-canvas-focused");
+  });
+
+  it("arrows pan, + and − zoom, N selects the next body; the time does not move", async () => {
+    await canvas().focus();
+    const t = await currentTime(page);
+    const before = await ui();
+    await page.keyboard.press("ArrowRight");
+    await poll(async () => (await ui()).cx).toBeGreaterThan(before.cx);
+    await page.keyboard.press("ArrowUp");
+    await poll(async () => (await ui()).cy).toBeGreaterThan(before.cy);
+    await page.keyboard.press("+");
+    await poll(async () => (await ui()).scale).toBeGreaterThan(before.scale);
+    await page.keyboard.press("-");
+    await page.keyboard.press("-");
+    await poll(async () => (await ui()).scale).toBeLessThan(before.scale);
+    expect(await currentTime(page)).toBe(t);
+    await page.keyboard.press("n");
+    await poll(async () => (await ui()).selection?.kind).toBe("body");
+    const id = (await ui()).selection!.id;
+    await poll(() => canvas().getAttribute("aria-label")).toContain(`selected: body ${id}`);
+    await page.keyboard.press("Escape");
+    await poll(async () => (await ui()).selection).toBeNull();
+  });
+
+  it("a mouse click on the canvas does not take the focus: → then steps to the next event", async () => {
+    await page.getByRole("button", { name: "Fit" }).click();
+    const box = (await canvas().boundingBox())!;
+    await page.mouse.click(box.x + 5, box.y + 5);
+    expect(await canvas().evaluate((el) => el === document.activeElement)).toBe(false);
+    const t = await currentTime(page);
+    await page.keyboard.press("ArrowRight");
+    await poll(() => currentTime(page)).toBeGreaterThan(t);
+  });
+});
