@@ -1,7 +1,7 @@
 /**
  * End-to-end, in Debian's Chromium: the scene view from the keyboard (reached by Tab, with a focus
- * ring and a name; arrows pan, + and − zoom, N selects the next body) while a mouse click on it
- * keeps ←/→ stepping through events.
+ * ring and a name; arrows pan, + and − zoom, N selects the next body, ? lists every shortcut) while a
+ * mouse click on it keeps ←/→ stepping through events.
  */
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -81,5 +81,23 @@ describe("the scene view from the keyboard", () => {
     const t = await currentTime(page);
     await page.keyboard.press("ArrowRight");
     await poll(() => currentTime(page)).toBeGreaterThan(t);
+  });
+
+  it("? opens the list of shortcuts, Escape closes it and the focus goes back to the canvas", async () => {
+    await canvas().focus();
+    await page.keyboard.press("n");
+    await poll(async () => (await ui()).selection?.kind).toBe("body");
+    const selected = (await ui()).selection;
+    await page.keyboard.press("?");
+    const dialog = page.getByRole("dialog", { name: "Keyboard shortcuts" });
+    await dialog.waitFor();
+    expect(await dialog.getByRole("row").count()).toBeGreaterThan(10);
+    await screenshot(page, "keyboard-shortcuts-dialog");
+    await page.keyboard.press("Delete"); // deletes nothing behind the dialog
+    await page.keyboard.press("Escape");
+    await poll(() => dialog.count()).toBe(0);
+    await page.waitForTimeout(300);
+    expect((await ui()).selection).toEqual(selected);
+    expect(await canvas().evaluate((el) => el === document.activeElement)).toBe(true);
   });
 });

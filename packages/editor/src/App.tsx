@@ -1,7 +1,8 @@
 /**
  * The editor's layout: header (scene actions: Undo, Redo, Save file, Load file; presets, message,
  * newer work in another tab), canvas with its toolbar, side panels (the Event log, then the details
- * of its selected entry), time bar, and the drop indicator (a scene file dropped anywhere opens).
+ * of its selected entry), time bar, the drop indicator (a scene file dropped anywhere opens) and
+ * the Keyboard shortcuts dialog.
  */
 import { SceneCanvas } from "./canvas/SceneCanvas";
 import { BodiesTable } from "./panels/BodiesTable";
@@ -17,6 +18,7 @@ import { PointsTable } from "./panels/PointsTable";
 import { PresetsMenu } from "./panels/PresetsMenu";
 import { RefusedSceneNotice } from "./panels/RefusedSceneNotice";
 import { SceneActions } from "./panels/SceneActions";
+import { ShortcutHelp } from "./panels/ShortcutHelp";
 import { SpeedPanel } from "./panels/SpeedPanel";
 import { StatePanel } from "./panels/StatePanel";
 import { StatsPanel } from "./panels/StatsPanel";
@@ -54,6 +56,7 @@ export function App() {
         <StatePanel />
       </aside>
       <FileDrop />
+      <ShortcutHelp />
     </div>
   );
 }

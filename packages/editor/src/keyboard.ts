@@ -1,10 +1,10 @@
 /**
- * Runs the keyboard shortcuts of shortcuts.ts (one table):
+ * Runs the keyboard shortcuts of shortcuts.ts (the one table the Keyboard shortcuts dialog lists):
  * space play/pause, ←/→ previous/next event, Ctrl+Z undo, Ctrl+Shift+Z (or Ctrl+Y) redo, Ctrl+S
  * (Cmd+S) save file, Delete/Backspace delete the selection, and the view's and tools' keys. Ctrl+S
  * works everywhere, in a field too (no field uses it, and the browser would offer to save the page);
  * it saves the scene as it is (text typed in a cell and not yet committed is not in it). Ignored
- * while typing in a field; on other controls (the Time slider, a checkbox, a list)
+ * while typing in a field or inside a dialog; on other controls (the Time slider, a checkbox, a list)
  * only the keys the control uses itself are left to it (the slider's arrows, a checkbox's or a
  * button's space and Enter, a list's keys but Ctrl+Z/Y), so Ctrl+Z and space still work after
  * scrubbing or picking a line kind, and space on a focused button presses it. The scene view
@@ -21,6 +21,8 @@ const TEXT_INPUTS = new Set(["text", "search", "number", "email", "url", "tel", 
 /** Whether the focused element `target` uses `e` itself, so it is no shortcut. */
 function ownsKey(target: EventTarget | null, e: KeyboardEvent): boolean {
   if (!(target instanceof HTMLElement)) return false;
+  // a dialog (the shortcuts list) keeps every key: Delete must not remove a body behind it
+  if (target.closest("[role=dialog]") !== null) return true;
   // A table cell keeps Delete and Backspace (as a spreadsheet's does): they deleted the body whose
   // row a focused cell had selected.
   if ((e.key === "Delete" || e.key === "Backspace") && target.closest("td, th") !== null) return true;

@@ -103,8 +103,9 @@ describe("the scene view's keys", () => {
     const field = document.createElement("input");
     document.body.append(field);
     field.focus();
-    for (const key of ["1", "+", "f", "n"]) expect(press(field, key)).toBe(true);
+    for (const key of ["1", "+", "f", "n", "?"]) expect(press(field, key)).toBe(true);
     expect(ui.getState().tool).toBe("disc");
+    expect(ui.getState().help).toBe(false);
     off();
   });
 
@@ -120,6 +121,23 @@ describe("the scene view's keys", () => {
     press(c, "N", { shiftKey: true });
     expect(ui.getState().selection).toEqual({ kind: "body", id: "b10" }); // wraps round
     press(c, "Escape");
+    expect(ui.getState().selection).toBeNull();
+    off();
+  });
+
+  it("? opens the shortcuts list; inside a dialog no shortcut runs (Delete removed a body behind it)", () => {
+    const { editor, ui, calls } = editorWith();
+    const off = bindKeyboard(editor);
+    press(document.body, "?", { shiftKey: true });
+    expect(ui.getState().help).toBe(true);
+    const dialog = document.createElement("div");
+    dialog.setAttribute("role", "dialog");
+    const close = document.createElement("button");
+    dialog.append(close);
+    document.body.append(dialog);
+    close.focus();
+    for (const key of ["Delete", " ", "ArrowLeft", "n"]) press(close, key);
+    expect(calls).toEqual([]);
     expect(ui.getState().selection).toBeNull();
     off();
   });

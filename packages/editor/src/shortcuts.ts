@@ -1,6 +1,6 @@
 /**
- * The keyboard shortcuts, one table: keyboard.ts runs them, and a list of them can be made from it
- * (the scene view's description: canvasKeys). Each says where it works:
+ * The keyboard shortcuts, one table: keyboard.ts runs them and the Keyboard shortcuts dialog
+ * (panels/ShortcutHelp.tsx) lists them, so the list cannot go stale. Each says where it works:
  * "anywhere" (in a text field too: Ctrl+S only), "page" (unless a focused control uses the key
  * itself: keyboard.ts's ownsKey) or "canvas" (the scene view focused, where the arrows pan the view
  * instead of stepping through events).
@@ -150,6 +150,13 @@ export const SHORTCUTS: Shortcut[] = [
     matches: (e) => bare(e) && /^[1-8]$/.test(e.key),
     run: (c, e) => c.editor.ui.setState({ tool: TOOL_KEYS[Number(e.key) - 1]!.tool }),
   },
+  {
+    keys: ["?"],
+    what: "Show or hide this list of shortcuts",
+    where: "page",
+    matches: oneOf("?"),
+    run: (c) => c.editor.ui.setState((s) => ({ help: !s.help })),
+  },
 ];
 
 /** The tool key of `tool` ("1" for Move), for the toolbar's titles. */
@@ -160,5 +167,5 @@ export function toolKey(tool: Tool): string {
 /** The scene view's description: its own keys (from the table) and where the others are listed. */
 export function canvasKeys(): string {
   const own = SHORTCUTS.filter((s) => s.where === "canvas").map((s) => `${s.keys.join(" ")}: ${s.what}`);
-  return `Keys: ${own.join("; ")}.`;
+  return `Keys: ${own.join("; ")}; ? lists every shortcut.`;
 }

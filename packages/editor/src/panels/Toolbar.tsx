@@ -1,8 +1,8 @@
 /**
  * The canvas tools (move/pan, velocity, cue, add disc/line/ray/segment/point), fit, trails, the Path
  * view (the selected body's whole computed path; a note says when no body is selected, or where a
- * path too long to draw whole was cut), delete. Each tool's title names its digit key
- * (shortcuts.ts).
+ * path too long to draw whole was cut), delete, and ? (the Keyboard shortcuts dialog). Each tool's
+ * title names its digit key (shortcuts.ts).
  */
 import { useEditor, useUi } from "../EditorContext";
 import { toolKey } from "../shortcuts";
@@ -88,6 +88,16 @@ export function Toolbar() {
         onClick={() => void editor.deleteSelection()}
       >
         Delete
+      </button>
+      <button
+        type="button"
+        className="help-button"
+        aria-label="Keyboard shortcuts"
+        aria-haspopup="dialog"
+        title="Keyboard shortcuts (?)"
+        onClick={() => editor.ui.setState({ help: true })}
+      >
+        ?
       </button>
     </div>
   );

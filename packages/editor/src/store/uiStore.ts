@@ -64,6 +64,8 @@ export interface UiState {
   selectedEvent: EventRef | null;
   /** The part of the history the Time slider spans (null: all of it; timeWindow.ts). */
   timeWindow: TimeWindow | null;
+  /** The Keyboard shortcuts dialog is open (the ? key or the toolbar's ? button). */
+  help: boolean;
 }
 
 export const initialUiState: UiState = {
@@ -85,6 +87,7 @@ export const initialUiState: UiState = {
   eventFilter: "",
   selectedEvent: null,
   timeWindow: null,
+  help: false,
 };
 
 export type UiStore = Store<UiState>;

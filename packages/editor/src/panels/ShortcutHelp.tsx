@@ -1,0 +1,94 @@
+/**
+ * The Keyboard shortcuts dialog, opened by ? or the toolbar's ? button: every shortcut of the table
+ * keyboard.ts runs (shortcuts.ts), so the list cannot go stale; those of the focused scene view
+ * apart. Modal: the focus goes to its Close button and comes back where it was; Escape, ?, the Close
+ * button or a click outside it close it, and no other shortcut runs while it is open (keyboard.ts).
+ */
+import { Fragment, useEffect, useRef } from "react";
+import { useEditor, useUi } from "../EditorContext";
+import { SHORTCUTS, type Shortcut, type Where } from "../shortcuts";
+
+const GROUPS: { title: string; where: Where[] }[] = [
+  { title: "Anywhere (not while typing in a field)", where: ["anywhere", "page"] },
+  { title: "In the scene view (focus it with Tab)", where: ["canvas"] },
+];
+
+function Keys({ s }: { s: Shortcut }) {
+  return (
+    <>
+      {s.keys.map((k, i) => (
+        <Fragment key={k}>
+          {i > 0 && " "}
+          <kbd>{k}</kbd>
+        </Fragment>
+      ))}
+    </>
+  );
+}
+
+export function ShortcutHelp() {
+  const editor = useEditor();
+  const open = useUi((s) => s.help);
+  const closeRef = useRef<HTMLButtonElement>(null);
+
+  useEffect(() => {
+    if (!open) return;
+    const before = document.activeElement instanceof HTMLElement ? document.activeElement : null;
+    closeRef.current?.focus();
+    return () => {
+      if (before?.isConnected) before.focus();
+    };
+  }, [open]);
+
+  if (!open) return null;
+  const close = () => editor.ui.setState({ help: false });
+  return (
+    // biome-ignore lint/a11y/noStaticElementInteractions: a click outside the dialog closes it (the keyboard's ways are Escape and Close)
+    <div
+      className="modal-backdrop"
+      onMouseDown={(e) => {
+        if (e.target === e.currentTarget) close();
+      }}
+    >
+      <div
+        className="modal"
+        role="dialog"
+        aria-modal="true"
+        aria-labelledby="shortcuts-title"
+        onKeyDown={(e) => {
+          if (e.key === "Escape" || e.key === "?") {
+            e.preventDefault();
+            close();
+          } else if (e.key === "Tab") {
+            // one control: the focus stays in the dialog
+            e.preventDefault();
+            closeRef.current?.focus();
+          }
+        }}
+      >
+        <div className="panel-head">
+          <h2 id="shortcuts-title">Keyboard shortcuts</h2>
+          <button ref={closeRef} type="button" onClick={close}>
+            Close
+          </button>
+        </div>
+        {GROUPS.map((g) => (
+          <table key={g.title} className="shortcuts">
+            <caption>{g.title}</caption>
+            <tbody>
+              {SHORTCUTS.filter((s) => g.where.includes(s.where)).map((s) => (
+                <tr key={`${s.where} ${s.keys.join()}`}>
+                  <th scope="row">
+                    <Keys s={s} />
+                  </th>
+                  <td>{s.what}</td>
+                </tr>
+              ))}
+            </tbody>
+          </table>
+        ))}
+        <p className="note">Ctrl is Cmd on a Mac. Mouse: drag empty space to pan, the wheel zooms.</p>
+      </div>
+    </div>
+  );
+}
