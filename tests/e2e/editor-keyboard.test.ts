@@ -1,7 +1,8 @@
 /**
  * End-to-end, in Debian's Chromium: the scene view from the keyboard (reached by Tab, with a focus
  * ring and a name; arrows pan, + and − zoom, N selects the next body, ? lists every shortcut) while a
- * mouse click on it keeps ←/→ stepping through events.
+ * mouse click on it keeps ←/→ stepping through events; and at 800 x 600 the time bar (Time slider,
+ * Play) is in view without scrolling, as it stays in larger windows.
  */
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -99,5 +100,36 @@ describe("the scene view from the keyboard", () => {
     await page.waitForTimeout(300);
     expect((await ui()).selection).toEqual(selected);
     expect(await canvas().evaluate((el) => el === document.activeElement)).toBe(true);
+  });
+});
+
+describe("the time bar in view", () => {
+  it("at 800 x 600 the Time slider and Play are in view without scrolling; larger windows keep them", async () => {
+    try {
+      for (const [width, height] of [
+        [800, 600],
+        [1024, 700],
+        [1400, 900],
+        [390, 844],
+      ] as const) {
+        await page.setViewportSize({ width, height });
+        await page.evaluate(() => window.scrollTo(0, 0));
+        for (const target of [
+          page.getByRole("slider", { name: "Time" }),
+          page.getByRole("button", { name: "Play", exact: true }),
+          page.getByRole("button", { name: "Next event", exact: true }),
+        ]) {
+          const box = (await target.boundingBox())!;
+          expect(box.y, `${width} x ${height}`).toBeGreaterThanOrEqual(0);
+          expect(box.y + box.height, `${width} x ${height}`).toBeLessThanOrEqual(height);
+        }
+        const c = (await page.getByTestId("scene-canvas").boundingBox())!;
+        expect(c.height, `${width} x ${height}`).toBeGreaterThanOrEqual(200);
+        expect(await page.evaluate(() => window.scrollY)).toBe(0);
+        if (width === 800) await screenshot(page, "keyboard-800x600");
+      }
+    } finally {
+      await page.setViewportSize({ width: 1400, height: 900 });
+    }
   });
 });

@@ -2,7 +2,8 @@
  * The editor's layout: header (scene actions: Undo, Redo, Save file, Load file; presets, message,
  * newer work in another tab), canvas with its toolbar, side panels (the Event log, then the details
  * of its selected entry), time bar, the drop indicator (a scene file dropped anywhere opens) and
- * the Keyboard shortcuts dialog.
+ * the Keyboard shortcuts dialog. In a narrow window the header and the stage fill the screen, so the
+ * time bar is in view without scrolling (at 800 x 600 too), and the side panels follow.
  */
 import { SceneCanvas } from "./canvas/SceneCanvas";
 import { BodiesTable } from "./panels/BodiesTable";
@@ -28,22 +29,25 @@ import { Toolbar } from "./panels/Toolbar";
 export function App() {
   return (
     <div className="app">
-      <header className="header">
-        <h1>chapgame</h1>
-        <SceneActions />
-        <PresetsMenu />
-        <MessageBar />
-        <NewerWorkNotice />
-        <RefusedSceneNotice />
-      </header>
-      <main className="stage">
-        <Toolbar />
-        <SceneCanvas />
-        <div className="timebar">
-          <TimePanel />
-          <SpeedPanel />
-        </div>
-      </main>
+      {/* header and stage: one screen in a narrow window (styles.css), the side panels under it */}
+      <div className="screen">
+        <header className="header">
+          <h1>chapgame</h1>
+          <SceneActions />
+          <PresetsMenu />
+          <MessageBar />
+          <NewerWorkNotice />
+          <RefusedSceneNotice />
+        </header>
+        <main className="stage">
+          <Toolbar />
+          <SceneCanvas />
+          <div className="timebar">
+            <TimePanel />
+            <SpeedPanel />
+          </div>
+        </main>
+      </div>
       <aside className="side">
         <CalculationPanel />
         <BodiesTable />
