@@ -133,6 +133,23 @@ describe("keyboard shortcuts", () => {
     off();
   });
 
+  it("on a focused table row (an Event log entry): Delete and Backspace delete nothing, the others work", () => {
+    // Enter on an entry selects a participant: Delete then removed that body at the entry's time (audit)
+    const { editor, calls } = recorder();
+    const off = bindKeyboard(editor);
+    const table = document.createElement("table");
+    const row = document.createElement("tr");
+    row.tabIndex = 0;
+    table.append(row);
+    document.body.append(table);
+    row.focus();
+    expect(press(row, "Delete")).toBe(true);
+    expect(press(row, "Backspace")).toBe(true);
+    press(row, "ArrowRight");
+    expect(calls).toEqual(["step 1"]);
+    off();
+  });
+
   it("elsewhere (the page, a button): every shortcut", () => {
     const { editor, calls } = recorder();
     const off = bindKeyboard(editor);

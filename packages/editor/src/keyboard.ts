@@ -23,9 +23,10 @@ function ownsKey(target: EventTarget | null, e: KeyboardEvent): boolean {
   if (!(target instanceof HTMLElement)) return false;
   // a dialog (the shortcuts list) keeps every key: Delete must not remove a body behind it
   if (target.closest("[role=dialog]") !== null) return true;
-  // A table cell keeps Delete and Backspace (as a spreadsheet's does): they deleted the body whose
-  // row a focused cell had selected.
-  if ((e.key === "Delete" || e.key === "Backspace") && target.closest("td, th") !== null) return true;
+  // A table row or cell keeps Delete and Backspace (as a spreadsheet's does): they deleted the body
+  // whose row a focused cell had selected, and on a focused Event log entry (a row) the participant
+  // that Enter on it had selected, at the entry's time, without a word (audit).
+  if ((e.key === "Delete" || e.key === "Backspace") && target.closest("tr, td, th") !== null) return true;
   const tag = target.tagName;
   if (tag === "TEXTAREA" || target.isContentEditable) return true;
   if (tag === "SELECT") return !(e.ctrlKey || e.metaKey); // a list keeps its keys, not Ctrl+Z
