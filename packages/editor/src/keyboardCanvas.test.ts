@@ -88,7 +88,7 @@ describe("the scene view's keys", () => {
     off();
   });
 
-  it("+ and − zoom, F fits, digits pick a tool, anywhere but in a field", () => {
+  it("+ and − zoom, F fits, digits pick a tool, T and P toggle Trails and Path, anywhere but in a field", () => {
     const { editor, ui } = editorWith();
     const off = bindKeyboard(editor);
     press(canvas(), "+");
@@ -100,10 +100,15 @@ describe("the scene view's keys", () => {
     expect(ui.getState().fitRequest).toBe(1);
     press(document.body, "4");
     expect(ui.getState().tool).toBe("disc");
+    press(document.body, "t");
+    press(document.body, "p");
+    expect([ui.getState().trails, ui.getState().path]).toEqual([true, true]);
+    press(document.body, "T", { shiftKey: true });
+    expect(ui.getState().trails).toBe(false);
     const field = document.createElement("input");
     document.body.append(field);
     field.focus();
-    for (const key of ["1", "+", "f", "n", "?"]) expect(press(field, key)).toBe(true);
+    for (const key of ["1", "+", "f", "n", "t", "?"]) expect(press(field, key)).toBe(true);
     expect(ui.getState().tool).toBe("disc");
     expect(ui.getState().help).toBe(false);
     off();

@@ -130,6 +130,20 @@ export const SHORTCUTS: Shortcut[] = [
     run: (c, e) => selectBody(c, e.shiftKey ? -1 : 1),
   },
   {
+    keys: ["T"],
+    what: "Trails on / off",
+    where: "page",
+    matches: oneOf("t", "T"),
+    run: (c) => c.editor.ui.setState((s) => ({ trails: !s.trails })),
+  },
+  {
+    keys: ["P"],
+    what: "Path view on / off (the selected body's whole computed path)",
+    where: "page",
+    matches: oneOf("p", "P"),
+    run: (c) => c.editor.ui.setState((s) => ({ path: !s.path })),
+  },
+  {
     keys: ["Esc"],
     what: "Select nothing (during a drag: cancel it)",
     where: "canvas",

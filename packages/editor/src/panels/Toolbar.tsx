@@ -56,7 +56,7 @@ export function Toolbar() {
       >
         Fit
       </button>
-      <label>
+      <label title="Draw each body's recent motion (T)">
         <input
           type="checkbox"
           checked={trails}
@@ -64,7 +64,7 @@ export function Toolbar() {
         />{" "}
         Trails
       </label>
-      <label title="Draw the selected body's whole computed path, past and future">
+      <label title="Draw the selected body's whole computed path, past and future (P)">
         <input
           type="checkbox"
           checked={path}
