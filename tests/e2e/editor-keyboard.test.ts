@@ -1,8 +1,8 @@
 /**
  * End-to-end, in Debian's Chromium: the scene view from the keyboard (reached by Tab, with a focus
  * ring and a name; arrows pan, + and − zoom, N selects the next body, ? lists every shortcut) while a
- * mouse click on it keeps ←/→ stepping through events; and at 800 x 600 the time bar (Time slider,
- * Play) is in view without scrolling, as it stays in larger windows.
+ * mouse click on it keeps ←/→ stepping through events; buttons that cannot act keep the focus; and
+ * at 800 x 600 the time bar (Time slider, Play) is in view without scrolling, as in larger windows.
  */
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -100,6 +100,28 @@ describe("the scene view from the keyboard", () => {
     await page.waitForTimeout(300);
     expect((await ui()).selection).toEqual(selected);
     expect(await canvas().evaluate((el) => el === document.activeElement)).toBe(true);
+  });
+});
+
+describe("buttons pressed from the keyboard keep the focus", () => {
+  it("the toolbar's Delete and the last Undo stay focused once they cannot act (they dropped it to the page)", async () => {
+    const focused = (name: string) => page.evaluate((n) => document.activeElement?.textContent === n, name);
+    await canvas().focus();
+    await page.keyboard.press("n");
+    await poll(async () => (await ui()).selection?.kind).toBe("body");
+    const del = page.getByRole("toolbar", { name: "Tools" }).getByRole("button", { name: /^Delete: / });
+    await del.focus();
+    await page.keyboard.press("Enter");
+    await poll(async () => (await ui()).selection).toBeNull();
+    expect(await focused("Delete")).toBe(true);
+    const undo = page.getByRole("button", { name: "Undo", exact: true });
+    await undo.focus();
+    for (let i = 0; i < 10 && (await undo.getAttribute("aria-disabled")) !== "true"; i++) {
+      await page.keyboard.press("Enter");
+      await page.waitForTimeout(400);
+    }
+    expect(await undo.getAttribute("aria-disabled")).toBe("true");
+    expect(await focused("Undo")).toBe(true);
   });
 });
 

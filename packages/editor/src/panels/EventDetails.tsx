@@ -18,6 +18,7 @@ import type { Selection } from "../store/uiStore";
 import { formatNumber } from "./EditableCell";
 import { kindLabel, selectionOf } from "./EventLog";
 import { NO_EARLIER, NO_LATER, stepEntry } from "./entryStep";
+import { FocusKeptButton } from "./FocusKeptButton";
 import { useRefreshed } from "./useRefreshed";
 
 /** Shortest interval between two reads while the timeline keeps changing (a computation). */
@@ -154,22 +155,20 @@ export function EventDetails() {
       <div className="panel-head">
         <h2 id="event-details-title">Event details</h2>
         <span className="head-buttons">
-          <button
-            type="button"
-            disabled={!shown || first}
+          <FocusKeptButton
+            enabled={shown && !first}
             title={first ? NO_EARLIER : "Select the entry logged just before this one (at the same time too)"}
-            onClick={() => void stepEntry(editor, -1)}
+            onPress={() => void stepEntry(editor, -1)}
           >
             ◀ Previous entry
-          </button>
-          <button
-            type="button"
-            disabled={!shown || last}
+          </FocusKeptButton>
+          <FocusKeptButton
+            enabled={shown && !last}
             title={last ? NO_LATER : "Select the entry logged just after this one (at the same time too)"}
-            onClick={() => void stepEntry(editor, 1)}
+            onPress={() => void stepEntry(editor, 1)}
           >
             Next entry ▶
-          </button>
+          </FocusKeptButton>
         </span>
       </div>
       {body}

@@ -9,6 +9,7 @@ import { openSceneFile } from "../doc/openScene";
 import { canRedo as redoable, canUndo as undoable } from "../doc/undoIntents";
 import { useEditor, useHistory } from "../EditorContext";
 import { useStore } from "../store/createStore";
+import { FocusKeptButton } from "./FocusKeptButton";
 import { saveSceneFile } from "./sceneFile";
 
 export function SceneActions() {
@@ -29,17 +30,12 @@ export function SceneActions() {
   const fileRef = useRef<HTMLInputElement>(null);
   return (
     <div className="scene-actions" role="toolbar" aria-label="Scene">
-      <button type="button" title="Ctrl+Z" onClick={() => void editor.undo()} disabled={!canUndo}>
+      <FocusKeptButton title="Ctrl+Z" enabled={canUndo} onPress={() => void editor.undo()}>
         Undo
-      </button>
-      <button
-        type="button"
-        title="Ctrl+Shift+Z or Ctrl+Y"
-        onClick={() => void editor.redo()}
-        disabled={!canRedo}
-      >
+      </FocusKeptButton>
+      <FocusKeptButton title="Ctrl+Shift+Z or Ctrl+Y" enabled={canRedo} onPress={() => void editor.redo()}>
         Redo
-      </button>
+      </FocusKeptButton>
       <button type="button" title="Ctrl+S" onClick={() => saveSceneFile(editor.doc)}>
         Save file
       </button>

@@ -6,29 +6,16 @@
  * (useWheelZoom). The whole history is [0, where the history ends] (useHistoryEnd): during an undo's
  * restore, the history being restored, so a zoom step halves that and not the restore's progress.
  * Zooming is not an edit (no undo step) and is not saved.
- * A button that cannot act is aria-disabled (announced and drawn as unavailable, pressing it does
- * nothing) rather than disabled: a disabled button drops the keyboard focus to the page, so pressing
- * Zoom in until the smallest span, or Whole history, lost the user's place in the tab order.
+ * A button that cannot act is aria-disabled (FocusKeptButton) rather than disabled: a disabled
+ * button drops the keyboard focus to the page, so pressing Zoom in until the smallest span, or Whole
+ * history, lost the user's place in the tab order.
  */
-import type { ReactNode } from "react";
 import { useEditor, useUi } from "../EditorContext";
 import { canZoomIn, windowLabel, zoomIn, zoomOut } from "../store/timeWindow";
+import { FocusKeptButton } from "./FocusKeptButton";
 import { useHistoryEnd } from "./useHistoryEnd";
 import { ZoomWidthField } from "./ZoomWidthField";
 import { applyZoom } from "./zoomActions";
-
-/** A button that keeps the focus when it cannot act: aria-disabled, its click a no-op. */
-function ZoomButton(props: { enabled: boolean; onPress: () => void; children: ReactNode }) {
-  return (
-    <button
-      type="button"
-      aria-disabled={props.enabled ? undefined : true}
-      onClick={props.enabled ? props.onPress : undefined}
-    >
-      {props.children}
-    </button>
-  );
-}
 
 export function TimeZoom() {
   const editor = useEditor();
@@ -36,18 +23,21 @@ export function TimeZoom() {
   const end = useHistoryEnd();
   return (
     <span className="zoom">
-      <ZoomButton
+      <FocusKeptButton
         enabled={canZoomIn(w, end)}
         onPress={() => applyZoom(editor, (s) => zoomIn(s.w, s.t, s.end))}
       >
         Zoom in
-      </ZoomButton>
-      <ZoomButton enabled={w !== null} onPress={() => applyZoom(editor, (s) => zoomOut(s.w, s.t, s.end))}>
+      </FocusKeptButton>
+      <FocusKeptButton
+        enabled={w !== null}
+        onPress={() => applyZoom(editor, (s) => zoomOut(s.w, s.t, s.end))}
+      >
         Zoom out
-      </ZoomButton>
-      <ZoomButton enabled={w !== null} onPress={() => applyZoom(editor, () => null)}>
+      </FocusKeptButton>
+      <FocusKeptButton enabled={w !== null} onPress={() => applyZoom(editor, () => null)}>
         Whole history
-      </ZoomButton>
+      </FocusKeptButton>
       <ZoomWidthField />
       {w === null ? null : <output aria-label="Time range shown">showing {windowLabel(w)} s</output>}
     </span>

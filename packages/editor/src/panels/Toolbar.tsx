@@ -1,13 +1,15 @@
 /**
  * The canvas tools (move/pan, velocity, cue, add disc/line/ray/segment/point), fit, trails, the Path
  * view (the selected body's whole computed path; a note says when no body is selected, or where a
- * path too long to draw whole was cut), delete, and ? (the Keyboard shortcuts dialog). Each tool's
+ * path too long to draw whole was cut), delete (greyed out but keeping the focus when nothing is
+ * selected: FocusKeptButton), and ? (the Keyboard shortcuts dialog). Each tool's
  * title names its digit key (shortcuts.ts).
  */
 import { useEditor, useUi } from "../EditorContext";
 import { toolKey } from "../shortcuts";
 import type { Tool } from "../store/uiStore";
 import { formatNumber } from "./EditableCell";
+import { FocusKeptButton } from "./FocusKeptButton";
 
 const TOOLS: { tool: Tool; label: string; title: string }[] = [
   {
@@ -78,17 +80,16 @@ export function Toolbar() {
           drawn up to t = {formatNumber(pathShown.cutAt)} s (too long to draw whole)
         </small>
       )}
-      <button
-        type="button"
-        disabled={target === null}
+      <FocusKeptButton
+        enabled={target !== null}
         aria-label={target === null ? "Delete" : `Delete: ${target}`}
         title={
           target === null ? "Select a body, line or point to delete it" : `Delete ${target} (Delete key)`
         }
-        onClick={() => void editor.deleteSelection()}
+        onPress={() => void editor.deleteSelection()}
       >
         Delete
-      </button>
+      </FocusKeptButton>
       <button
         type="button"
         className="help-button"
