@@ -58,6 +58,27 @@ describe("CalculationPanel", () => {
     );
   });
 
+  it("Compute pressed from the keyboard keeps the focus while it computes (greyed out, not disabled)", async () => {
+    const h = testEditor();
+    await h.editor.loadScene(dilutedGas({ n: 400, packing: 0.1, seed: 2 }), { undoable: false });
+    await settled(h.client);
+    h.editor.ui.setState((s) => ({ calc: { ...s.calc, seconds: 5000 } }));
+    render(
+      <EditorContext.Provider value={h.editor}>
+        <CalculationPanel />
+      </EditorContext.Provider>,
+    );
+    const compute = screen.getByRole("button", { name: "Compute" }) as HTMLButtonElement;
+    act(() => compute.focus());
+    act(() => fireEvent.click(compute));
+    await screen.findByRole("button", { name: "Cancel" });
+    expect(compute.getAttribute("aria-disabled")).toBe("true");
+    expect(compute.disabled).toBe(false);
+    expect(document.activeElement).toBe(compute);
+    await act(async () => h.editor.cancelCompute());
+    await waitFor(() => expect(compute.getAttribute("aria-disabled")).toBeNull());
+  });
+
   it("Cancel with the keyboard focus hands it to Compute when the computation ends (it fell to the page)", async () => {
     const h = testEditor();
     await h.editor.loadScene(dilutedGas({ n: 400, packing: 0.1, seed: 2 }), { undoable: false });

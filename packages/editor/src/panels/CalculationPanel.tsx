@@ -3,13 +3,15 @@
  * extension during playback; progress and Cancel while the worker computes. The horizon is plain
  * text, not an <output> (a live region: a screen reader announced it every 50 ms while computing).
  * Cancel goes with the computation: if it had the keyboard focus, the focus goes to Compute (it
- * fell to the page: review).
+ * fell to the page: review). Compute, greyed out while the worker computes, keeps the focus
+ * (FocusKeptButton: pressed from the keyboard, it dropped the focus to the page).
  */
 import { useEffect, useRef } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import type { CalcSettings } from "../store/uiStore";
 import { formatNumber, parseNumber } from "./EditableCell";
 import { EngineWatch } from "./EngineWatch";
+import { FocusKeptButton } from "./FocusKeptButton";
 
 /** Enter in a settings field applies it (as leaving the field does; it only applied on leaving). */
 function blurOnEnter(e: React.KeyboardEvent<HTMLInputElement>): void {
@@ -112,14 +114,9 @@ export function CalculationPanel() {
         </button>
       </div>
       <div className="row">
-        <button
-          type="button"
-          ref={computeRef}
-          onClick={() => editor.computeAhead()}
-          disabled={computing !== null}
-        >
+        <FocusKeptButton ref={computeRef} enabled={computing === null} onPress={() => editor.computeAhead()}>
           Compute
-        </button>
+        </FocusKeptButton>
         <label>
           <input
             type="checkbox"

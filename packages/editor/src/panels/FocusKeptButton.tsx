@@ -1,12 +1,13 @@
 /**
  * A button that keeps the keyboard focus when it cannot act: aria-disabled (announced and drawn as
  * unavailable; pressing it does nothing) rather than disabled. A disabled button drops the focus to
- * the page, so a keyboard user who pressed Zoom in to its end, the toolbar's Delete, the last Undo
- * or Next entry at the log's end lost their place in the tab order (audit).
+ * the page, so a keyboard user who pressed Zoom in to its end, the toolbar's Delete, the last Undo,
+ * Next entry at the log's end or Compute (busy while it computes) lost their place in the tab order
+ * (audit).
  */
-import type { ButtonHTMLAttributes } from "react";
+import type { ComponentProps } from "react";
 
-type Props = Omit<ButtonHTMLAttributes<HTMLButtonElement>, "disabled" | "onClick" | "type"> & {
+type Props = Omit<ComponentProps<"button">, "disabled" | "onClick" | "type"> & {
   enabled: boolean;
   onPress: () => void;
 };
