@@ -150,6 +150,19 @@ describe("the time bar in view", () => {
         expect(await page.evaluate(() => window.scrollY)).toBe(0);
         if (width === 800) await screenshot(page, "keyboard-800x600");
       }
+      // a message (one after every load and undo) takes lines in a narrow header: the canvas gives
+      // them up, Play stays in view
+      await page.setViewportSize({ width: 800, height: 600 });
+      await page.evaluate(() => {
+        type Ui = { ui: { setState(s: { message: { text: string; tone: "info" } | null }): void } };
+        const text = "Loaded the preset Bouncing balls (gravity). Undo returns to the scene you had.";
+        (window as unknown as { chapgame: Ui }).chapgame.ui.setState({ message: { text, tone: "info" } });
+      });
+      await poll(() => page.locator(".message").count()).toBe(1);
+      for (const name of ["Play", "Next event"]) {
+        const box = (await page.getByRole("button", { name, exact: true }).boundingBox())!;
+        expect(box.y + box.height, name).toBeLessThanOrEqual(600);
+      }
     } finally {
       await page.setViewportSize({ width: 1400, height: 900 });
     }
