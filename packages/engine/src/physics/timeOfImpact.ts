@@ -101,6 +101,11 @@ export function discDiscTimeScaled(
     // c1^2 - 4 uu c0 = 4 (uu R^2 - (d x u)^2) (Lagrange's identity), free of the cancellation of
     // two terms of size |d|^2 |u|^2 that loses every digit once the gap is ~1e8 contact distances.
     const cross = dx * uy - dy * ux;
+    const discriminant = 4 * (uu * R * R - cross * cross);
+    // A pair that misses (no real root) and is apart at lo never touches: the solver's answer
+    // (firstDownCrossingQuadratic), given here without its call, as most approaching pairs of a gas miss.
+    if (quadraticFastPath && discriminant < 0 && c0 + lo * (c1 + lo * uu) > 0)
+      return Number.POSITIVE_INFINITY;
     // An approach within the rounding of c1 = 2 d.u (APPROACH_NOISE), or too slow for the response
     // to change the velocities (RESPONSE_ULP), is a graze.
     const noise = APPROACH_NOISE * 2 * (Math.abs(dx * ux) + Math.abs(dy * uy)) + 2 * RESPONSE_ULP * dvScale;
@@ -108,7 +113,7 @@ export function discDiscTimeScaled(
       // The benchmark's ablation: the same gap solved as a general quartic, as before the fast path.
       return firstDownCrossingQuartic(c0, c1, uu, 0, 0, lo, hi, noise);
     }
-    return firstDownCrossingQuadratic(c0, c1, uu, lo, hi, true, 4 * (uu * R * R - cross * cross), noise, 0);
+    return firstDownCrossingQuadratic(c0, c1, uu, lo, hi, true, discriminant, noise, 0);
   }
   return quarticContact(dx, dy, ux, uy, wx, wy, R, lo, hi, dvScale, dwScale, band);
 }
