@@ -54,13 +54,19 @@ export class ContactTimes extends BroadPhase {
    */
   private solvePair(s: number, o: number): void {
     const b = this.store;
-    const ts = b.mot[s * 8 + 0] as number;
-    const to = b.mot[o * 8 + 0] as number;
-    const ends = b.mot[s * 8 + 7] as number;
-    const endo = b.mot[o * 8 + 7] as number;
+    const m = b.mot;
+    // Record offsets as s << 3 and fields as i | k: integer operations V8 compiles without the
+    // overflow checks of s * 8 + k (a slot is far below 2^28).
+    const i = s << 3;
+    const j = o << 3;
+    const ts = m[i] as number;
+    const to = m[j] as number;
+    const ends = m[i | 7] as number;
+    const endo = m[j | 7] as number;
     // Path boxes are finite only for motions that end (friction) or rest: when s's box is
-    // unbounded the boxes cannot be disjoint, and the partner's box is not even loaded.
-    if (this.opt.pathBounds && (b.boxMaxX[s] as number) < INF) {
+    // unbounded the boxes cannot be disjoint, and the partner's box is not even loaded (nor the
+    // switch, read last).
+    if ((b.boxMaxX[s] as number) < INF && this.opt.pathBounds) {
       if (
         (b.boxMinX[s] as number) > (b.boxMaxX[o] as number) ||
         (b.boxMinX[o] as number) > (b.boxMaxX[s] as number) ||
@@ -73,20 +79,22 @@ export class ContactTimes extends BroadPhase {
     }
     const tb = Math.max(ts, to);
     const hi = Math.min(ends, endo) - tb;
-    const axs = b.mot[s * 8 + 5] as number;
-    const ays = b.mot[s * 8 + 6] as number;
-    const axo = b.mot[o * 8 + 5] as number;
-    const ayo = b.mot[o * 8 + 6] as number;
+    const vxs0 = m[i | 3] as number;
+    const vys0 = m[i | 4] as number;
+    const vxo0 = m[j | 3] as number;
+    const vyo0 = m[j | 4] as number;
+    const axs = m[i | 5] as number;
+    const ays = m[i | 6] as number;
+    const axo = m[j | 5] as number;
+    const ayo = m[j | 6] as number;
     const dx =
-      positionAt(to, b.mot[o * 8 + 1] as number, b.mot[o * 8 + 3] as number, axo, tb) -
-      positionAt(ts, b.mot[s * 8 + 1] as number, b.mot[s * 8 + 3] as number, axs, tb);
+      positionAt(to, m[j | 1] as number, vxo0, axo, tb) - positionAt(ts, m[i | 1] as number, vxs0, axs, tb);
     const dy =
-      positionAt(to, b.mot[o * 8 + 2] as number, b.mot[o * 8 + 4] as number, ayo, tb) -
-      positionAt(ts, b.mot[s * 8 + 2] as number, b.mot[s * 8 + 4] as number, ays, tb);
-    const vxs = velocityAt(ts, b.mot[s * 8 + 3] as number, axs, tb);
-    const vys = velocityAt(ts, b.mot[s * 8 + 4] as number, ays, tb);
-    const vxo = velocityAt(to, b.mot[o * 8 + 3] as number, axo, tb);
-    const vyo = velocityAt(to, b.mot[o * 8 + 4] as number, ayo, tb);
+      positionAt(to, m[j | 2] as number, vyo0, ayo, tb) - positionAt(ts, m[i | 2] as number, vys0, ays, tb);
+    const vxs = velocityAt(ts, vxs0, axs, tb);
+    const vys = velocityAt(ts, vys0, ays, tb);
+    const vxo = velocityAt(to, vxo0, axo, tb);
+    const vyo = velocityAt(to, vyo0, ayo, tb);
     const ux = vxo - vxs;
     const uy = vyo - vys;
     // Cheap rejection before any solve: with no relative acceleration a receding pair never meets.
