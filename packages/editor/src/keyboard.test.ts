@@ -2,6 +2,7 @@
 import { afterEach, describe, expect, it } from "vitest";
 import type { Editor } from "./editor";
 import { bindKeyboard } from "./keyboard";
+import { press } from "./testing/keys";
 
 /** An editor that records which shortcut ran. */
 function recorder() {
@@ -23,17 +24,6 @@ function control(tag: "input" | "textarea" | "button" | "select", type?: string)
   document.body.append(el);
   el.focus();
   return el;
-}
-
-/** Presses `key` on `target`; returns whether the page kept the browser's own handling. */
-function press(
-  target: EventTarget,
-  key: string,
-  mods: { ctrlKey?: boolean; shiftKey?: boolean; metaKey?: boolean } = {},
-): boolean {
-  const e = new KeyboardEvent("keydown", { key, bubbles: true, cancelable: true, ...mods });
-  target.dispatchEvent(e);
-  return !e.defaultPrevented;
 }
 
 afterEach(() => {

@@ -9,6 +9,7 @@ import { bindKeyboard } from "./keyboard";
 import { packFrame } from "./remote/packFrame";
 import { SHORTCUTS } from "./shortcuts";
 import { createUiStore } from "./store/uiStore";
+import { press } from "./testing/keys";
 
 const frame = packFrame(
   {
@@ -57,12 +58,6 @@ function canvas(): HTMLElement {
   document.body.append(el);
   el.focus();
   return el;
-}
-
-function press(target: EventTarget, key: string, mods: KeyboardEventInit = {}): boolean {
-  const e = new KeyboardEvent("keydown", { key, bubbles: true, cancelable: true, ...mods });
-  target.dispatchEvent(e);
-  return !e.defaultPrevented;
 }
 
 afterEach(() => {
