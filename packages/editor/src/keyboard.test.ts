@@ -2,12 +2,14 @@
 import { afterEach, describe, expect, it } from "vitest";
 import type { Editor } from "./editor";
 import { bindKeyboard } from "./keyboard";
+import { createUiStore } from "./store/uiStore";
 import { press } from "./testing/keys";
 
 /** An editor that records which shortcut ran. */
 function recorder() {
   const calls: string[] = [];
   const editor = {
+    ui: createUiStore(),
     undo: async () => void calls.push("undo"),
     redo: async () => void calls.push("redo"),
     togglePlay: () => void calls.push("play"),

@@ -55,6 +55,14 @@ function viewSizeOf(el: HTMLElement | null): Size | null {
 /** Runs the shortcut `e` is, if any; true when one ran (the browser's own handling is then kept off). */
 export function handleKey(editor: Editor, e: KeyboardEvent, save: () => void = () => {}): boolean {
   const target = e.target instanceof HTMLElement ? e.target : null;
+  if (editor.ui.getState().help) {
+    // The shortcuts dialog is open, and modal: nothing runs behind it, also when a click left the
+    // focus outside it (review: Delete then removed the selected body behind the dialog). From
+    // outside, Escape and ? close it, as they do inside (where the dialog handles its own keys).
+    if (target?.closest("[role=dialog]") != null || (e.key !== "Escape" && e.key !== "?")) return false;
+    editor.ui.setState({ help: false });
+    return true;
+  }
   const onCanvas = target?.closest('[data-keys="canvas"]') != null;
   const owned = ownsKey(e.target, e);
   const c: KeyContext = {

@@ -142,6 +142,23 @@ describe("the scene view's keys", () => {
     off();
   });
 
+  it("while the shortcuts list is open nothing runs behind it, also with the focus on the page (a click in it)", () => {
+    const { editor, ui, calls } = editorWith();
+    const off = bindKeyboard(editor);
+    ui.setState({ selection: { kind: "body", id: "b1" }, help: true });
+    const tool = ui.getState().tool;
+    for (const key of ["Delete", " ", "ArrowLeft", "n", "3", "z"])
+      expect(press(document.body, key, { ctrlKey: key === "z" })).toBe(true);
+    expect(calls).toEqual([]);
+    expect(ui.getState()).toMatchObject({ selection: { kind: "body", id: "b1" }, tool, help: true });
+    // Escape (or ?) from the page closes it, and then the keys work again
+    expect(press(document.body, "Escape")).toBe(false);
+    expect(ui.getState().help).toBe(false);
+    press(document.body, "Delete");
+    expect(calls).toEqual(["delete"]);
+    off();
+  });
+
   it("every shortcut has keys and words for the list, and no two of one place share a key", () => {
     const seen = new Set<string>();
     for (const s of SHORTCUTS) {

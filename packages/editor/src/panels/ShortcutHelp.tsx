@@ -54,6 +54,8 @@ export function ShortcutHelp() {
         className="modal"
         role="dialog"
         aria-modal="true"
+        // a click on its text keeps the focus in the dialog (on the page, its keys would be lost)
+        tabIndex={-1}
         aria-labelledby="shortcuts-title"
         onKeyDown={(e) => {
           if (e.key === "Escape" || e.key === "?") {
