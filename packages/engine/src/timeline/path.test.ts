@@ -187,8 +187,15 @@ describe("Timeline.path", () => {
     expect(reason(() => headless.path("b", 1))).toBe(
       `path: from must be a number in [2, 5], got 1: ${keepsNone}`,
     );
+    // review: a to after the last entry but before from is refused as before from
     expect(reason(() => headless.path("b", 3, 2.5))).toBe(
-      `path: to must be a number in [3, 5], got 2.5: ${keepsNone}`,
+      "path: to must be a number in [3, 5], got 2.5: to must not be before from (3)",
+    );
+    expect(reason(() => headless.path("b", 4, 3))).toBe(
+      "path: to must be a number in [4, 5], got 3: to must not be before from (4)",
+    );
+    expect(reason(() => headless.path("b", 2, 1))).toBe(
+      `path: to must be a number in [2, 5], got 1: ${keepsNone}`,
     );
   });
 });

@@ -92,7 +92,9 @@ export class TimelineReader {
       ? undefined
       : "this timeline keeps no history: a path starts at its last logged entry at the earliest";
     const t0 = stateTime(from, c.horizon, start, "path", "from", early);
-    const t1 = stateTime(to, c.horizon, t0, "path", "to", early ?? `to must not be before from (${t0})`);
+    // a to before from is that, with or without history; before the last entry only when from is there
+    const before = early !== undefined && t0 === start ? early : `to must not be before from (${t0})`;
+    const t1 = stateTime(to, c.horizon, t0, "path", "to", before);
     return c.history ? bodyPath(c, id, t0, t1) : headlessBodyPath(c, id, t0, t1);
   }
 
