@@ -106,10 +106,10 @@ describe("editor end to end", () => {
     await editCell("c3 r", "-1");
     // announced once, by the message bar; shown in place as the input's description
     await poll(() => page.getByRole("alert").allTextContents()).toEqual([
-      "c3 r: must be a positive finite number✕",
+      "c3 r: must be a positive finite number (got -1)✕",
     ]);
     await poll(() => bodies().locator(".cell-error").textContent()).toBe(
-      "c3 r: must be a positive finite number",
+      "c3 r: must be a positive finite number (got -1)",
     );
     await screenshot(page, "05-refused-cell");
     await cell("c3 r").press("Escape");

@@ -124,10 +124,10 @@ describe("a refused edit names the later action it would make invalid", () => {
 describe("a refused edit names what the user edited, not the engine's path", () => {
   it("a cell's field (A r, A vx), a global (g) and a disc added where it overlaps", async () => {
     const h = await loaded();
-    expect(await h.editor.updateBody("a", { r: -5 })).toBe("a r: must be a positive finite number");
-    expect(h.editor.ui.getState().message?.text).toBe("a r: must be a positive finite number");
+    expect(await h.editor.updateBody("a", { r: -5 })).toBe("a r: must be a positive finite number (got -5)");
+    expect(h.editor.ui.getState().message?.text).toBe("a r: must be a positive finite number (got -5)");
     expect(await h.editor.updateBody("a", { v: [Number.POSITIVE_INFINITY, 0] })).toBe(
-      "a vx: must be a finite number",
+      "a vx: must be a finite number (got Infinity)",
     );
     expect(await h.editor.updateBody("a", { v: [1e200, 0] })).toMatch(/^a vx: /);
     expect(await h.editor.setGlobal({ g: -1 })).toMatch(/^g: /);

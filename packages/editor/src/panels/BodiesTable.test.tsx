@@ -127,7 +127,7 @@ describe("BodiesTable messages", () => {
     // regression (audit of session 20): "ball v: must be an array of two finite numbers"
     expect(await refusal("ball speed", "1e999")).toBe("ball |v|: must be a finite number");
     // the friction column is μ in the engine's refusals too (it said "ball mu")
-    expect(await refusal("ball mu", "-1")).toBe("ball μ: must be a non-negative finite number");
+    expect(await refusal("ball mu", "-1")).toBe("ball μ: must be a non-negative finite number (got -1)");
     expect(await refusal("ball m", "1e999")).toBe(
       "ball m: 1e999 is too large for a number; type ∞ or Infinity for an immovable body",
     );

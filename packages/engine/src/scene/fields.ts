@@ -15,6 +15,19 @@ export function join(path: string, key: string): string {
   return path === "" ? key : `${path}.${key}`;
 }
 
+/** A value as a refusal names it: "-2", "the string \"1\"", "null", "an array of 3", "an object". */
+export function given(v: unknown): string {
+  if (typeof v === "string") return `the string ${JSON.stringify(v.length > 40 ? `${v.slice(0, 40)}…` : v)}`;
+  if (Array.isArray(v)) return `an array of ${v.length}`;
+  if (typeof v === "object" && v !== null) return "an object";
+  return String(v);
+}
+
+/** A refusal of value v of field `path`: the reason, and what was given. */
+function refuse(path: string, reason: string, v: unknown): SceneError {
+  return new SceneError(path, `${reason} (got ${given(v)})`);
+}
+
 function required(o: Obj, key: string, path: string): unknown {
   const v = o[key];
   if (v === undefined) throw new SceneError(join(path, key), "is required");
@@ -25,7 +38,7 @@ function required(o: Obj, key: string, path: string): unknown {
 export function finite(o: Obj, key: string, path: string): number {
   const v = required(o, key, path);
   if (typeof v !== "number" || !Number.isFinite(v))
-    throw new SceneError(join(path, key), "must be a finite number");
+    throw refuse(join(path, key), "must be a finite number", v);
   return v;
 }
 
@@ -33,7 +46,7 @@ export function finite(o: Obj, key: string, path: string): number {
 export function positive(o: Obj, key: string, path: string): number {
   const v = required(o, key, path);
   if (typeof v !== "number" || !Number.isFinite(v) || !(v > 0))
-    throw new SceneError(join(path, key), "must be a positive finite number");
+    throw refuse(join(path, key), "must be a positive finite number", v);
   return v;
 }
 
@@ -41,7 +54,7 @@ export function positive(o: Obj, key: string, path: string): number {
 export function nonNegative(o: Obj, key: string, path: string): number {
   const v = required(o, key, path);
   if (typeof v !== "number" || !Number.isFinite(v) || !(v >= 0))
-    throw new SceneError(join(path, key), "must be a non-negative finite number");
+    throw refuse(join(path, key), "must be a non-negative finite number", v);
   return v === 0 ? 0 : v; // -0 becomes 0
 }
 
@@ -50,7 +63,7 @@ export function mass(o: Obj, key: string, path: string): number {
   const v = required(o, key, path);
   if (v === "Infinity" || v === Number.POSITIVE_INFINITY) return Number.POSITIVE_INFINITY;
   if (typeof v !== "number" || !Number.isFinite(v) || !(v > 0))
-    throw new SceneError(join(path, key), 'must be a positive finite number or "Infinity"');
+    throw refuse(join(path, key), 'must be a positive finite number or "Infinity"', v);
   return v;
 }
 
@@ -59,7 +72,7 @@ export function mass(o: Obj, key: string, path: string): number {
 export function count(o: Obj, key: string, path: string): number {
   const v = required(o, key, path);
   if (typeof v !== "number" || !Number.isInteger(v) || v < 0)
-    throw new SceneError(join(path, key), "must be a non-negative integer");
+    throw refuse(join(path, key), "must be a non-negative integer", v);
   if (v > Number.MAX_SAFE_INTEGER)
     throw new SceneError(
       join(path, key),
@@ -72,12 +85,12 @@ export function count(o: Obj, key: string, path: string): number {
 export function vec2(o: Obj, key: string, path: string): Vec2 {
   const v = required(o, key, path);
   if (!Array.isArray(v) || v.length !== 2)
-    throw new SceneError(join(path, key), "must be an array of two finite numbers");
+    throw refuse(join(path, key), "must be an array of two finite numbers", v);
   // a pair with one bad component names that component, as the World does (`v[1]`: audit of session 20)
   for (const k of [0, 1] as const) {
     const c: unknown = v[k];
     if (typeof c !== "number" || !Number.isFinite(c))
-      throw new SceneError(`${join(path, key)}[${k}]`, "must be a finite number");
+      throw refuse(`${join(path, key)}[${k}]`, "must be a finite number", c);
   }
   return [v[0], v[1]];
 }
@@ -85,8 +98,7 @@ export function vec2(o: Obj, key: string, path: string): Vec2 {
 /** A non-empty string id. */
 export function id(o: Obj, key: string, path: string): string {
   const v = required(o, key, path);
-  if (typeof v !== "string" || v.length === 0)
-    throw new SceneError(join(path, key), "must be a non-empty string");
+  if (typeof v !== "string" || v.length === 0) throw refuse(join(path, key), "must be a non-empty string", v);
   return v;
 }
 
@@ -95,7 +107,7 @@ const LINE_KINDS: readonly LineKind[] = ["line", "ray", "segment"];
 export function lineKind(o: Obj, key: string, path: string): LineKind {
   const v = required(o, key, path);
   if (typeof v !== "string" || !(LINE_KINDS as readonly string[]).includes(v))
-    throw new SceneError(join(path, key), 'must be one of "line", "ray", "segment"');
+    throw refuse(join(path, key), 'must be one of "line", "ray", "segment"', v);
   return v as LineKind;
 }
 

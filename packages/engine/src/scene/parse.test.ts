@@ -294,13 +294,42 @@ describe("parseScene refuses, naming the path and the reason", () => {
     });
 });
 
+describe("parseScene names the value it refuses", () => {
+  const cases: [string, Record<string, unknown>, string][] = [
+    [
+      "a number written as a string",
+      { x: "1" },
+      'actions[0].x: must be a finite number (got the string "1")',
+    ],
+    ["null", { r: null }, "actions[0].r: must be a positive finite number (got null)"],
+    ["a boolean", { m: true }, 'actions[0].m: must be a positive finite number or "Infinity" (got true)'],
+    ["an array", { y: [1, 2] }, "actions[0].y: must be a finite number (got an array of 2)"],
+    ["an object", { mu: { a: 1 } }, "actions[0].mu: must be a non-negative finite number (got an object)"],
+    ["an empty id", { id: "" }, 'actions[0].id: must be a non-empty string (got the string "")'],
+    [
+      "a long string, cut",
+      { x: "x".repeat(100) },
+      `actions[0].x: must be a finite number (got the string "${"x".repeat(40)}…")`,
+    ],
+    [
+      "one component of a pair",
+      { v: [0, "2"] },
+      'actions[0].v[1]: must be a finite number (got the string "2")',
+    ],
+  ];
+  for (const [name, patch, message] of cases)
+    it(name, () => {
+      expect(refused(base([disc("a", 0, patch)])).message).toBe(message);
+    });
+});
+
 describe("SceneError", () => {
   it("is a ChapgameError, so one catch covers every refused input (World, Timeline, parseScene)", () => {
     const e = refused(base([disc("a", 0, { r: -1 })]));
     expect(e).toBeInstanceOf(ChapgameError);
     expect(e.name).toBe("SceneError");
-    expect([e.path, e.reason]).toEqual(["actions[0].r", "must be a positive finite number"]);
-    expect(e.message).toBe("actions[0].r: must be a positive finite number");
+    expect([e.path, e.reason]).toEqual(["actions[0].r", "must be a positive finite number (got -1)"]);
+    expect(e.message).toBe("actions[0].r: must be a positive finite number (got -1)");
   });
 
   it("has no leading colon when no field is at fault", () => {

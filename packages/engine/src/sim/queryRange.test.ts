@@ -102,7 +102,7 @@ describe("queries ahead change nothing an edit or an advance sees (review)", () 
     const a = run(asked);
     const b = run(plain);
     expect(a.log.length).toBeGreaterThan(50);
-    expect(a.r.reason).toBe("idle"); // the end time of an idle advance is the last item processed
+    expect(a.r.reason).toBe("idle"); // an idle advance ends at its last event (idleClock.test.ts)
     expect(a).toEqual(b);
   });
 });

@@ -252,8 +252,8 @@ export interface AdvanceResult {
    * Why it stopped: "events" = maxEvents reached (the World's time is then the last event's);
    * "time" = untilTime reached with something still queued (with the broad-phase grid possibly only
    * cell crossings that lead to no event: `nextEventTime()` answers exactly); "idle" = nothing is
-   * queued any more (with an untilTime, the World's time is untilTime; without one, the last item
-   * processed).
+   * queued any more (with an untilTime, the World's time is untilTime; without one, the last event's,
+   * or where the advance started when it processed none).
    */
   reason: "time" | "events" | "idle";
 }
