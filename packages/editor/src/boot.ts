@@ -7,6 +7,7 @@
  */
 import { browserAutosaveEnv, clockTime, TabAutosave } from "./autosave";
 import { drawStats, resetDrawStats } from "./canvas/drawStats";
+import { loadCharacterKeys, pageStorage } from "./characterKeys";
 import { sceneFromHash } from "./doc/persistence";
 import { keepRefused, readRefused } from "./doc/refusedScene";
 import { sceneText } from "./doc/sceneIo";
@@ -139,7 +140,7 @@ export async function boot(): Promise<Editor> {
     return worker as unknown as Port;
   };
   const client = new TimelineClient(newPort());
-  const editor = new Editor(client, createUiStore());
+  const editor = new Editor(client, createUiStore({ characterKeys: loadCharacterKeys(pageStorage()) }));
   editor.portFactory = newPort;
   const autosave = new TabAutosave(browserAutosaveEnv());
   const first = firstScene(window.location.hash, autosave);

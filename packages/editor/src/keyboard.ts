@@ -77,6 +77,7 @@ export function handleKey(editor: Editor, e: KeyboardEvent, save: () => void = (
   for (const s of order) {
     if (s.where === "canvas" && !onCanvas) continue;
     if (s.where === "page" && owned) continue;
+    if (s.character && !editor.ui.getState().characterKeys) continue;
     if (!s.matches(e)) continue;
     s.run(c, e);
     return true;

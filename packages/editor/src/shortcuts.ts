@@ -27,6 +27,9 @@ export interface Shortcut {
   keys: string[];
   what: string;
   where: Where;
+  /** One printable character without Ctrl, Cmd or Alt (a letter, a digit, + − ?): what a speech
+   *  input's words can type by accident, so the dialog can turn these off (UiState.characterKeys). */
+  character?: true;
   matches(e: KeyboardEvent): boolean;
   run(c: KeyContext, e: KeyboardEvent): void;
 }
@@ -109,6 +112,7 @@ export const SHORTCUTS: Shortcut[] = [
   },
   {
     keys: ["+", "−"],
+    character: true,
     what: "Zoom the view in / out",
     where: "page",
     matches: oneOf("+", "=", "-", "_"),
@@ -117,6 +121,7 @@ export const SHORTCUTS: Shortcut[] = [
   },
   {
     keys: ["F"],
+    character: true,
     what: "Fit the view to the scene",
     where: "page",
     matches: oneOf("f", "F"),
@@ -124,6 +129,7 @@ export const SHORTCUTS: Shortcut[] = [
   },
   {
     keys: ["N", "Shift+N"],
+    character: true,
     what: "Select the next / previous body (the view follows it)",
     where: "page",
     matches: oneOf("n", "N"),
@@ -131,6 +137,7 @@ export const SHORTCUTS: Shortcut[] = [
   },
   {
     keys: ["T"],
+    character: true,
     what: "Trails on / off",
     where: "page",
     matches: oneOf("t", "T"),
@@ -138,6 +145,7 @@ export const SHORTCUTS: Shortcut[] = [
   },
   {
     keys: ["P"],
+    character: true,
     what: "Path view on / off (the selected body's whole computed path)",
     where: "page",
     matches: oneOf("p", "P"),
@@ -159,6 +167,7 @@ export const SHORTCUTS: Shortcut[] = [
   },
   {
     keys: ["1 … 8"],
+    character: true,
     what: `Pick a tool: ${TOOL_KEYS.map((t, i) => `${i + 1} ${t.label}`).join(", ")}`,
     where: "page",
     matches: (e) => bare(e) && /^[1-8]$/.test(e.key),
@@ -166,6 +175,7 @@ export const SHORTCUTS: Shortcut[] = [
   },
   {
     keys: ["?"],
+    character: true,
     what: "Show or hide this list of shortcuts",
     where: "page",
     matches: oneOf("?"),

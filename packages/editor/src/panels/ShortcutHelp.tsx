@@ -5,6 +5,7 @@
  * button or a click outside it close it, and no other shortcut runs while it is open (keyboard.ts).
  */
 import { Fragment, useEffect, useRef } from "react";
+import { pageStorage, saveCharacterKeys } from "../characterKeys";
 import { useEditor, useUi } from "../EditorContext";
 import { SHORTCUTS, type Shortcut, type Where } from "../shortcuts";
 
@@ -29,6 +30,7 @@ function Keys({ s }: { s: Shortcut }) {
 export function ShortcutHelp() {
   const editor = useEditor();
   const open = useUi((s) => s.help);
+  const characterKeys = useUi((s) => s.characterKeys);
   const closeRef = useRef<HTMLButtonElement>(null);
 
   useEffect(() => {
@@ -62,9 +64,12 @@ export function ShortcutHelp() {
             e.preventDefault();
             close();
           } else if (e.key === "Tab") {
-            // one control: the focus stays in the dialog
+            // the focus goes round the dialog's controls (Close, the switch) and stays in it
             e.preventDefault();
-            closeRef.current?.focus();
+            const controls = [...e.currentTarget.querySelectorAll<HTMLElement>("button, input")];
+            const i = controls.indexOf(document.activeElement as HTMLElement);
+            const n = controls.length;
+            controls[(i < 0 ? 0 : i + (e.shiftKey ? n - 1 : 1)) % n]?.focus();
           }
         }}
       >
@@ -90,6 +95,19 @@ export function ShortcutHelp() {
           </table>
         ))}
         <p className="note">Ctrl is Cmd on a Mac. Mouse: drag empty space to pan, the wheel zooms.</p>
+        <label className="note">
+          <input
+            type="checkbox"
+            checked={characterKeys}
+            onChange={(e) => {
+              const on = e.currentTarget.checked;
+              editor.ui.setState({ characterKeys: on });
+              saveCharacterKeys(pageStorage(), on);
+            }}
+          />{" "}
+          One-character shortcuts (the letters, digits, + − and ? above; off, for speech input: the others
+          stay)
+        </label>
       </div>
     </div>
   );

@@ -66,6 +66,9 @@ export interface UiState {
   timeWindow: TimeWindow | null;
   /** The Keyboard shortcuts dialog is open (the ? key or the toolbar's ? button). */
   help: boolean;
+  /** The shortcuts of one character key (letters, digits, + − ?) run; off, only those with Ctrl,
+   *  the arrows, Space, Delete and Escape do (WCAG 2.1.4; the dialog's switch, characterKeys.ts). */
+  characterKeys: boolean;
 }
 
 export const initialUiState: UiState = {
@@ -88,6 +91,7 @@ export const initialUiState: UiState = {
   selectedEvent: null,
   timeWindow: null,
   help: false,
+  characterKeys: true,
 };
 
 export type UiStore = Store<UiState>;
