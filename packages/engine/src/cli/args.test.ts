@@ -109,6 +109,20 @@ describe("parseArgs", () => {
     expect(parseArgs(["simulate", "--", "--help"])).toMatchObject({ command: "simulate", scene: "--help" });
     expect(parseArgs(["state", "--at", "1", "--", "-h"])).toMatchObject({ command: "state", scene: "-h" });
   });
+
+  it('takes "-h" as the value of an option that needs one (--id -h names a body, as --id=-h does)', () => {
+    expect(parseArgs(["path", "s.json", "--id", "-h", "--to", "1"])).toMatchObject({
+      command: "path",
+      id: "-h",
+    });
+    expect(parseArgs(["path", "s.json", "--id", "b", "-h"])).toEqual({ command: "help" });
+    expect(parseArgs(["path", "s.json", "--id", "--help"])).toEqual({ command: "help" });
+  });
+
+  it("takes a count written with a + sign, as a time may be (--max-events +5)", () => {
+    expect(parseArgs(["simulate", "s.json", "--max-events", "+5"])).toMatchObject({ maxEvents: 5 });
+    expect(() => parseArgs(["simulate", "s.json", "--max-events", "-5"])).toThrow(/non-negative integer/);
+  });
   const bad: [string[], string][] = [
     [[], "missing command"],
     [["run", "x"], 'unknown command "run"'],

@@ -114,9 +114,9 @@ function time(name: string, v: string): number {
   return t;
 }
 
-/** Decimal digits, optionally with a fraction and an exponent (1e6, 2.5e3): the forms a count may
- *  be written in; whether the value is an integer is checked on the number. */
-const DECIMAL = /^\d+(\.\d+)?(e\+?\d+)?$/i;
+/** Decimal digits, optionally with a + sign (as a time may have), a fraction and an exponent (+5,
+ *  1e6, 2.5e3): the forms a count may be written in; whether the value is an integer is checked on the number. */
+const DECIMAL = /^\+?\d+(\.\d+)?(e\+?\d+)?$/i;
 
 function count(name: string, v: string): number {
   const n = Number(v);
@@ -129,12 +129,23 @@ function count(name: string, v: string): number {
   return n;
 }
 
+/** The options that take a value (the next argument, or after "="). */
+const VALUED = new Set(["--until-time", "--max-events", "--at", "--id", "--from", "--to"]);
+
+/** Whether the options (the arguments before "--") ask for the help: --help anywhere, -h unless it
+ *  is an option's value (--id -h names a body "-h", as --id=-h does). */
+function asksHelp(options: readonly string[]): boolean {
+  return options.some(
+    (a, i) => a === "--help" || (a === "-h" && !(i > 0 && VALUED.has(options[i - 1] as string))),
+  );
+}
+
 export function parseArgs(argv: readonly string[]): Command {
   if (argv.length === 0) throw new UsageError("missing command (try chapgame --help)");
   // --help anywhere before "--" (after it, "--help" is a file name, as the help says)
   const endOfOptions = argv.indexOf("--");
   const options = endOfOptions < 0 ? argv : argv.slice(0, endOfOptions);
-  if (options.includes("--help") || options.includes("-h") || argv[0] === "help") return { command: "help" };
+  if (asksHelp(options) || argv[0] === "help") return { command: "help" };
   if (argv[0] === "--version" || argv[0] === "-V") {
     if (argv.length > 1) throw new UsageError(`${argv[0]} takes no arguments, got "${argv[1]}"`);
     return { command: "version" };
@@ -144,7 +155,7 @@ export function parseArgs(argv: readonly string[]): Command {
     throw new UsageError(`unknown command "${cmd}" (try chapgame --help)`);
   const positional: string[] = [];
   const opts = new Map<string, string | true>();
-  const valued = new Set(["--until-time", "--max-events", "--at", "--id", "--from", "--to"]);
+  const valued = VALUED;
   const allowed =
     cmd === "simulate"
       ? ["--until-time", "--max-events", "--events", "--compact", "--progress"]
