@@ -7,7 +7,7 @@
  * nothing. `advance` processes events in time order; events exactly at `untilTime` are
  * processed.
  */
-import { positionAt, velocityAt } from "../physics/motion.js";
+import { motionOf, stateOf } from "./bodyState.js";
 import { Edits } from "./edits.js";
 import { ChapgameError, SimulationError } from "./errors.js";
 import type {
@@ -19,7 +19,8 @@ import type {
   WorldEvent,
   WorldOptions,
 } from "./types.js";
-import { requireFieldRate, requireFields, requireFinite, requireGravity, requireTime } from "./validate.js";
+import { requireFields, requireFinite } from "./validate.js";
+import { checkWorldOptions } from "./worldOptions.js";
 import type { ZenoCounters } from "./zenoWatch.js";
 
 const INF = Number.POSITIVE_INFINITY;
@@ -44,20 +45,6 @@ const INF = Number.POSITIVE_INFINITY;
  * world.addBody("b", { x: 5, y: 0, r: 1, m: 1 });
  * world.advance({ untilTime: 10 }, (e) => console.log(e.kind, e.time)); // bodyBody 3
  */
-/** The switches of WorldOptions.optimizations. */
-const OPTIMIZATION_KEYS = [
-  "broadPhase",
-  "pathBounds",
-  "quadraticFastPath",
-  "restingSkip",
-  "recedingReject",
-] as const;
-
-/** A value as a message shows it: a string quoted (so "false" does not read as false). */
-function describe(v: unknown): string {
-  return typeof v === "string" ? JSON.stringify(v) : String(v);
-}
-
 export class World extends Edits {
   /**
    * A World with no bodies or obstacles. Options: `g` (friction field, default 9.81), `gravity`
@@ -65,20 +52,8 @@ export class World extends Edits {
    * Throws ChapgameError naming a bad option (`g`, `gravity[0]`, `time`) or an unknown key (`options.gx`).
    */
   constructor(options: WorldOptions = {}) {
-    requireFields("options", options, ["g", "gravity", "time", "optimizations"]);
-    if (options.optimizations !== undefined) {
-      requireFields("options.optimizations", options.optimizations, OPTIMIZATION_KEYS);
-      // Each switch a boolean: "no" or 3 would be taken as on.
-      for (const key of OPTIMIZATION_KEYS) {
-        const v = options.optimizations[key];
-        if (v !== undefined && typeof v !== "boolean")
-          throw new ChapgameError(`optimizations.${key}`, `must be true or false (got ${describe(v)})`);
-      }
-    }
-    const g = requireFieldRate("g", options.g ?? 9.81);
-    const gravity = requireGravity("gravity", options.gravity ?? [0, 0]);
-    const time = requireTime("time", options.time ?? 0);
-    super(time, g, gravity[0], gravity[1], options.optimizations ?? {});
+    const { g, gravity, time, optimizations } = checkWorldOptions(options);
+    super(time, g, gravity[0], gravity[1], optimizations);
   }
 
   /**
@@ -132,14 +107,14 @@ export class World extends Edits {
   body(id: string, t: number = this.now): BodyState {
     const s = this.slotOf(id);
     this.requireNoEventBefore(t);
-    return this.stateOf(s, t);
+    return stateOf(this.store, s, t);
   }
 
   /** All bodies at time t (default: now), sorted by id; the same range of t as `body`. */
   bodies(t: number = this.now): BodyState[] {
     this.requireNoEventBefore(t);
     const ids = [...this.index.keys()].sort();
-    return ids.map((id) => this.stateOf(this.index.get(id) as number, t));
+    return ids.map((id) => stateOf(this.store, this.index.get(id) as number, t));
   }
 
   /**
@@ -183,50 +158,12 @@ export class World extends Edits {
   private nextEventBlocked = "";
   private nextEventChanges = -1;
 
-  private stateOf(s: number, t: number): BodyState {
-    const b = this.store;
-    if (!(t >= (b.mot[s * 8 + 0] as number)))
-      throw new ChapgameError(
-        "t",
-        `must be a time at or after ${b.ids[s]}'s last event or edit (t0 = ${b.mot[s * 8 + 0]}; got ${t}): earlier states are not kept by a World (a Timeline keeps them)`,
-      );
-    const tEnd = b.mot[s * 8 + 7] as number;
-    const te = Math.min(t, tEnd);
-    const t0 = b.mot[s * 8 + 0] as number;
-    const ax = b.mot[s * 8 + 5] as number;
-    const ay = b.mot[s * 8 + 6] as number;
-    const moving = t < tEnd;
-    return {
-      id: b.ids[s] as string,
-      x: positionAt(t0, b.mot[s * 8 + 1] as number, b.mot[s * 8 + 3] as number, ax, te),
-      y: positionAt(t0, b.mot[s * 8 + 2] as number, b.mot[s * 8 + 4] as number, ay, te),
-      vx: moving ? velocityAt(t0, b.mot[s * 8 + 3] as number, ax, t) : 0,
-      vy: moving ? velocityAt(t0, b.mot[s * 8 + 4] as number, ay, t) : 0,
-      ax: moving ? ax : 0,
-      ay: moving ? ay : 0,
-      r: b.r[s] as number,
-      m: b.m[s] as number,
-      mu: b.mu[s] as number,
-    };
-  }
-
   /**
    * The exact current motion of a body (a copy): p(t) = (x0, y0) + (t - t0) * ((vx, vy) + (t - t0) * (ax, ay) / 2)
    * for t0 <= t <= tStop (positionAt / velocityAt in physics/motion.ts evaluate it bit for bit).
    */
   motion(id: string): BodyMotion {
-    const s = this.slotOf(id);
-    const b = this.store;
-    return {
-      t0: b.mot[s * 8 + 0] as number,
-      x0: b.mot[s * 8 + 1] as number,
-      y0: b.mot[s * 8 + 2] as number,
-      vx: b.mot[s * 8 + 3] as number,
-      vy: b.mot[s * 8 + 4] as number,
-      ax: b.mot[s * 8 + 5] as number,
-      ay: b.mot[s * 8 + 6] as number,
-      tStop: b.mot[s * 8 + 7] as number,
-    };
+    return motionOf(this.store, this.slotOf(id));
   }
 
   // ---- simulation ---------------------------------------------------------------------------
