@@ -1,4 +1,5 @@
 /** Barrel of src/sim: the public exports of the simulation. */
+export type { BodyArrays } from "./bodyArrays.js";
 export { ChapgameError, SimulationError } from "./errors.js";
 export type { LineKind } from "./obstacles.js";
 export type {

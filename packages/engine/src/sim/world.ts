@@ -7,6 +7,7 @@
  * nothing. `advance` processes events in time order; events exactly at `untilTime` are
  * processed.
  */
+import { type BodyArrays, intoProblem, SortedSlots, writeWorldArrays } from "./bodyArrays.js";
 import { motionOf, stateOf } from "./bodyState.js";
 import { Edits } from "./edits.js";
 import { ChapgameError, SimulationError } from "./errors.js";
@@ -34,7 +35,8 @@ const INF = Number.POSITIVE_INFINITY;
  *   wrong) and changes nothing.
  * - `advance` processes collisions and stops in time order, up to an absolute time and/or a number
  *   of events; `nextEventTime()` says when the next one will happen without moving the World.
- * - `body` and `bodies` give exact states from each body's last event or edit up to the next event.
+ * - `body`, `bodies` and `bodyArrays` give exact states from each body's last event or edit up to
+ *   the next event.
  *   A World keeps no past: a Timeline does (history, time travel, edits in the past).
  * - A state the exact model cannot continue from (a disc resting on a line under gravity, a Zeno
  *   state) throws a SimulationError instead of looping.
@@ -118,6 +120,21 @@ export class World extends Edits {
   }
 
   /**
+   * All bodies at time t (default: now) as arrays, one entry per body (BodyArrays): the same bodies,
+   * order and numbers as `bodies(t)`, bit for bit, and the same range of t, without an object per
+   * body. `into`, a previous result, is reused: the result is `into` itself, updated; its arrays are
+   * kept where their length equals the new count, and its `ids` array is kept (the same object)
+   * when the ids are unchanged, so `ids !== idsBefore` says the set of bodies changed. A bad t or
+   * `into` throws ChapgameError (`t`, `into`) and changes nothing.
+   */
+  bodyArrays(t: number = this.now, into?: BodyArrays): BodyArrays {
+    this.requireNoEventBefore(t);
+    const problem = intoProblem(into);
+    if (problem !== null) throw new ChapgameError("into", problem);
+    return writeWorldArrays(this.store, this.sorted.of(this.store, this.index), t, into);
+  }
+
+  /**
    * Throws ChapgameError naming `t` when an event (collision or stop, of any body) not yet
    * processed lies before t: the current motions hold only up to the next event, and a state beyond
    * it would be one the bodies never reach (discs passing through each other). Free for t <= now;
@@ -152,6 +169,9 @@ export class World extends Edits {
 
   /** advance is running (its callback may edit the World, not advance it again). */
   private advancing = false;
+
+  /** The bodies in id order, kept between bodyArrays reads. */
+  private readonly sorted = new SortedSlots();
 
   /** The query range's cache: the next event's time, and `changes` when it was found. */
   private nextEvent = Number.NaN;

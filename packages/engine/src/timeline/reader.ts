@@ -2,13 +2,16 @@
  * TimelineReader: the reading half of a Timeline (docs/architecture.md), over its TimelineCore:
  * exact states (stateAt: the last keyframe at or before t, at most max(KEYFRAME_MIN_RECORDS,
  * KEYFRAME_RECORDS_PER_BODY × bodies) records replayed, one closed-form evaluation per body, so its
- * cost does not grow with the length of the history), the event log by time or by index, counts
- * and storage. Timeline extends it with the changes (apply, setActions, prolong) and observers.
+ * cost does not grow with the length of the history; bodyArraysAt: the bodies the same way, as
+ * arrays, going on from its last read when it can: bodyArrays.ts), the event log by time or by
+ * index, counts and storage. Timeline extends it with the changes (apply, setActions, prolong) and observers.
  * After forgetBefore the kept history starts at `historyStart` (log entry `firstEvent`); entries keep
  * their global numbers (core.records holds entries firstEvent…): what is refused then is kept.ts.
  */
 import type { Action } from "../scene/types.js";
+import { type BodyArrays, intoProblem } from "../sim/bodyArrays.js";
 import { eventIndex, indexRange, stateTime, timeArg } from "./args.js";
+import { ArraysCursor } from "./bodyArrays.js";
 import type { TimelineCore } from "./core.js";
 import { historyStart } from "./forget.js";
 import { keptIndex, keptTime } from "./kept.js";
@@ -30,6 +33,8 @@ export class TimelineReader {
   protected core: TimelineCore;
   /** @internal */
   protected readonly scratch = new MotionTable();
+  /** Where the last bodyArraysAt replay stopped: reading forwards replays each record once. */
+  private readonly arrays = new ArraysCursor();
   /** Where the last log read stopped: reading the log in order replays each record once. */
   private readonly cursor = new LogCursor();
 
@@ -67,6 +72,25 @@ export class TimelineReader {
     const c = this.core;
     const at = stateTime(t, c.horizon, historyStart(c));
     return c.history ? stateAt(c, at, this.scratch) : headlessStateAt(c, at);
+  }
+
+  /**
+   * Every body at the absolute time t as arrays (BodyArrays: ids, x, y, vx, vy, ax, ay, r, m, mu, one
+   * entry per body): the same bodies, order (by id) and numbers as `stateAt(t).bodies`, bit for
+   * bit, without an object per body; reading forwards (playback) replays only the records since
+   * the last read (timeline/bodyArrays.ts). The same times as stateAt, and a refused one throws
+   * stateAt's RangeError, naming bodyArraysAt. `into`, a previous result, is
+   * reused: the result is `into` itself, updated; its arrays are kept where their length equals the
+   * new count, and its `ids` array is kept (the same object) when the ids are unchanged, so
+   * `ids !== idsBefore` says the set of bodies changed. An `into` that is not a previous result
+   * throws RangeError; nothing is written then.
+   */
+  bodyArraysAt(t: number, into?: BodyArrays): BodyArrays {
+    const c = this.core;
+    const at = stateTime(t, c.horizon, historyStart(c), "bodyArraysAt");
+    const problem = intoProblem(into);
+    if (problem !== null) throw new RangeError(`bodyArraysAt: into ${problem}`);
+    return this.arrays.read(c, at, into);
   }
 
   /**

@@ -56,12 +56,17 @@ export function stateAt(core: TimelineCore, t: number, scratch: MotionTable): Sc
 /** The state at t of a timeline without history: only from its last event or action on (no event or
  *  action lies in (lastLogged, horizon], so every current motion holds over that span). */
 export function headlessStateAt(core: TimelineCore, t: number): SceneState {
-  if (t < core.lastLogged)
-    throw new RangeError(
-      `stateAt: this timeline keeps no history: t must be in [${core.lastLogged}, ${core.horizon}]`,
-    );
+  requireHeadlessTime(core, t, "stateAt");
   const w = core.world;
   return { time: t, g: w.g, gravity: w.gravity, bodies: w.bodies(t), lines: w.lines(), points: w.points() };
+}
+
+/** Throws `method`'s RangeError for a t before the last logged entry of a timeline without history. */
+export function requireHeadlessTime(core: TimelineCore, t: number, method: string): void {
+  if (t < core.lastLogged)
+    throw new RangeError(
+      `${method}: this timeline keeps no history: t must be in [${core.lastLogged}, ${core.horizon}]`,
+    );
 }
 
 /** Log event of record i, given the motions just before it in `table`. */

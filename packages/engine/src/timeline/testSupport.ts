@@ -6,8 +6,11 @@
 import fc from "fast-check";
 import { expect } from "vitest";
 import type { Action, SceneFile } from "../scene/types.js";
+import { ARRAY_FIELDS, type BodyArrays } from "../sim/bodyArrays.js";
+import type { BodyState } from "../sim/types.js";
 import type { TimelineCore } from "./core.js";
 import { Timeline } from "./timeline.js";
+import type { SceneState } from "./types.js";
 
 export const scene = (actions: Action[], g = 9.81): SceneFile => ({
   format: "chapgame",
@@ -51,6 +54,25 @@ export function wallAndHeavyDisc(): Timeline {
   tl.apply({ time: 0, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 100, v: [-1, 0] });
   tl.prolong({ time: 20 });
   return tl;
+}
+
+/** Expect `a` (bodyArraysAt, World.bodyArrays) to hold exactly `time` and `bodies` (stateAt,
+ *  World.bodies): ids, order, every number's bits (Object.is: -0 and 0 differ), and arrays exactly
+ *  `count` long. */
+export function expectSameBodies(a: BodyArrays, time: number, bodies: readonly BodyState[]): void {
+  expect(Object.is(a.time, time)).toBe(true);
+  expect(a.count).toBe(bodies.length);
+  expect([...a.ids]).toStrictEqual(bodies.map((b) => b.id));
+  for (const f of ARRAY_FIELDS) {
+    expect(a[f].length).toBe(a.count);
+    const differing = bodies.findIndex((b, k) => !Object.is(a[f][k], b[f]));
+    expect(differing, `${f}[${differing}] at t = ${time}`).toBe(-1);
+  }
+}
+
+/** expectSameBodies with stateAt's result. */
+export function expectSameAsStateAt(a: BodyArrays, s: SceneState): void {
+  expectSameBodies(a, s.time, s.bodies);
 }
 
 /** The core behind a timeline (tests look at its storage). */
