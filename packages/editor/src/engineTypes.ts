@@ -4,6 +4,7 @@
  */
 export type {
   Action,
+  BodyArrays,
   BodyState,
   EventBody,
   EventDetail,

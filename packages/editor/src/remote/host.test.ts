@@ -79,6 +79,41 @@ describe("TimelineHost on an edit in the past", () => {
   });
 });
 
+describe("TimelineHost frames", () => {
+  it("played forwards and backwards, with an edit between, equal packFrame(stateAt(t)), ids sent only when they change", () => {
+    const { host, tasks, sent } = fakeHost();
+    host.handle({ id: 1, op: "compute", until: { time: 10 } });
+    while (tasks.length > 0) tasks.shift()!();
+    const reference = Timeline.fromScene(dilutedGas({ n: 60, packing: 0.3, seed: 5 }), { compute: false });
+    reference.prolongTo(10);
+    let id = 2;
+    const frameAt = (t: number): Frame & { ids: string[] | null } => {
+      host.handle({ id: id++, op: "frame", t, window: 0 });
+      return (sent.at(-1) as { value: Frame & { ids: string[] | null } }).value;
+    };
+    const check = (times: number[]) => {
+      for (const t of times) {
+        const f = frameAt(t);
+        const expected = packFrame(reference.stateAt(t), f.revision);
+        expect(Array.from(f.data), `t = ${t}`).toStrictEqual(Array.from(expected.data));
+        expect({ ...f, data: null, ids: null }).toStrictEqual({ ...expected, data: null, ids: null });
+      }
+    };
+    const first = frameAt(0);
+    expect(first.ids).toHaveLength(60);
+    check([0.25, 0.5, 1, 2, 4, 8, 10, 9.5, 3, 0]);
+    expect(frameAt(5).ids).toBeNull(); // the same 60 ids: the client keeps its copy
+    const edit = { time: 4, type: "removeBody" as const, id: "d7" };
+    reference.apply(edit);
+    reference.prolongTo(10);
+    host.handle({ id: id++, op: "apply", actions: [edit] });
+    while (tasks.length > 0) tasks.shift()!();
+    expect(frameAt(3.9).ids).toBeNull();
+    expect(frameAt(4.1).ids).toHaveLength(59);
+    check([4.2, 6, 10, 1]);
+  });
+});
+
 describe("TimelineHost on a second edit while the first one's history is recomputed", () => {
   it("recomputes up to the horizon the user had, not to where the first recomputation had got", () => {
     // Audit (session 15): two quick edits at t = 0.5 of a history computed to 40 s left it at 11.66 s.

@@ -11,8 +11,8 @@ import type { Action, PathPiece, SceneFile } from "../engineTypes";
 import { errorInfo } from "./errors";
 import { findEventDetail, stepEventDetail } from "./eventDetail";
 import { eventPage, eventTicks } from "./eventQueries";
+import { FrameReader } from "./frameReader";
 import { HostCompute, type HostEnv } from "./hostCompute";
-import { packFrame } from "./packFrame";
 import { type PathLine, pathLine } from "./pathLine";
 import { DEFERRED } from "./pendingEdit";
 import { type RequestMessage, restoreTarget, UNDONE_DURING_CHECK } from "./protocol";
@@ -23,6 +23,8 @@ import { markValidity } from "./validity";
 export type { HostEnv } from "./hostCompute";
 
 export class TimelineHost extends HostCompute {
+  /** Reads frames: the bodies as arrays, without an object per body (frameReader.ts). */
+  private readonly frames = new FrameReader();
   /** Ids of the last frame sent (frames with the same ids are sent with `ids: null`). */
   private sentIds: string[] | null = null;
   /** Body index by id for `indexIds` (rebuilt when the ids change). */
@@ -117,7 +119,7 @@ export class TimelineHost extends HostCompute {
       case "frame": {
         const h = this.tl.horizon;
         const t = Math.min(Math.max(r.t, 0), h);
-        const f = packFrame(this.tl.stateAt(t), this.revision, this.sentIds);
+        const f = this.frames.frame(this.tl, t, this.revision, this.sentIds);
         const w = r.window ?? 0;
         if (w > 0 && f.ids.length > 0) {
           const events = this.tl.eventsBetween(Math.max(0, t - w), Math.min(h, t + w));

@@ -1,5 +1,8 @@
-/** Packs a SceneState into a Frame (protocol.ts): bodies as FRAME_STRIDE numbers each. */
-import type { SceneState } from "../engineTypes";
+/**
+ * Packs a SceneState, or bodies read as arrays (BodyArrays) with the rest of a frame, into a Frame
+ * (protocol.ts): bodies as FRAME_STRIDE numbers each, the same numbers either way.
+ */
+import type { BodyArrays, SceneState } from "../engineTypes";
 import {
   F_AX,
   F_AY,
@@ -45,4 +48,35 @@ export function packFrame(s: SceneState, revision: number, previousIds: string[]
   }
   if (same) ids = previousIds!;
   return { t: s.time, revision, g: s.g, gravity: s.gravity, ids, data, lines: s.lines, points: s.points };
+}
+
+/** What a frame holds besides its bodies: the scene's fields and obstacles at the frame's time. */
+export type FrameStatics = Pick<SceneState, "g" | "gravity" | "lines" | "points">;
+
+/**
+ * The frame of `a` (bodyArraysAt) and `statics` (the same time's), with `ids` as the frame's ids
+ * (the caller's, holding a.ids: packFrame's reuse of the previous frame's array is FrameReader's).
+ * The same frame as packFrame(stateAt(a.time)) gives. Motion-law intervals are empty ([t, t]).
+ */
+export function packArrays(a: BodyArrays, statics: FrameStatics, revision: number, ids: string[]): Frame {
+  const n = a.count;
+  const data = new Float64Array(n * FRAME_STRIDE);
+  const { x, y, vx, vy, ax, ay, r, m, mu } = a;
+  const t = a.time;
+  for (let i = 0; i < n; i++) {
+    const o = i * FRAME_STRIDE;
+    data[o + F_X] = x[i]!;
+    data[o + F_Y] = y[i]!;
+    data[o + F_VX] = vx[i]!;
+    data[o + F_VY] = vy[i]!;
+    data[o + F_AX] = ax[i]!;
+    data[o + F_AY] = ay[i]!;
+    data[o + F_R] = r[i]!;
+    data[o + F_M] = m[i]!;
+    data[o + F_MU] = mu[i]!;
+    data[o + F_FROM] = t;
+    data[o + F_UNTIL] = t;
+  }
+  const { g, gravity, lines, points } = statics;
+  return { t, revision, g, gravity, ids, data, lines, points };
 }

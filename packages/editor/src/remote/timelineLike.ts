@@ -4,6 +4,7 @@
  */
 import type {
   Action,
+  BodyArrays,
   Counts,
   EventDetail,
   LogEvent,
@@ -21,6 +22,7 @@ export interface TimelineLike {
   setActions(actions: readonly Action[]): void;
   prolongSlice(until: Until, budget: number): { done: boolean; events: number; horizon: number };
   stateAt(t: number): SceneState;
+  bodyArraysAt(t: number, into?: BodyArrays): BodyArrays;
   nextEventTime(t: number): number | null;
   prevEventTime(t: number): number | null;
   event(i: number): LogEvent;
