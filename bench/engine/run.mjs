@@ -9,12 +9,14 @@
  *   off in turn, on the scene where it should matter; same events (checked), time ratio off/on.
  * - mixedRadii (mixedRadii.mjs): a gas of 10,000 discs around one disc of radius 1 to 100.
  * - timeline: stateAt latency and history bytes per event, when the engine exports Timeline.
+ * - bulkReads (bulkReads.mjs): every body of 20,000 read as objects and as arrays (BodyArrays).
  */
 
 import { lcg } from "../lib/lcg.mjs";
 import { nowNs } from "../lib/timing.mjs";
 import { gas } from "../scenes/gas.mjs";
 import { ablations } from "./ablations.mjs";
+import { bulkReads } from "./bulkReads.mjs";
 import { galperinRun } from "./galperin7.mjs";
 import { mixedRadii } from "./mixedRadii.mjs";
 
@@ -109,5 +111,6 @@ export async function runEngine(ctx) {
   out.ablations = ablations(ctx);
   out.mixedRadii = mixedRadii(ctx);
   out.timeline = timeline(ctx);
+  out.bulkReads = await bulkReads(ctx);
   return out;
 }

@@ -5,6 +5,7 @@
  * engineSection(results.engine, out, svgs) appends markdown lines to `out` and SVG texts to `svgs`.
  */
 import { ablationsBlock } from "./ablations.mjs";
+import { bulkReadsBlock } from "./bulkReads.mjs";
 import { galperinTarget, int, ms, numberWord, sig, status, table } from "./format.mjs";
 import { mixedRadiiBlock } from "./mixedRadii.mjs";
 import { plot } from "./svg.mjs";
@@ -166,4 +167,5 @@ export function engineSection(e, out, svgs) {
       )}\n`,
     );
   timelineBlock(e, out);
+  bulkReadsBlock(e, out);
 }
