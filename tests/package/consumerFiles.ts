@@ -65,7 +65,7 @@ export const dynamicImportScript = `import("@chapgame/engine").then(({ World }) 
 
 /** A typed consumer: uses the value and type exports with their declared shapes. */
 export const typedConsumer = `import { ChapgameError, Timeline, World, parseScene, realRoots } from "@chapgame/engine";
-import type { BodyState, SceneFile } from "@chapgame/engine";
+import type { Action, BodyState, SceneFile } from "@chapgame/engine";
 
 const world = new World({ g: 9.81 });
 world.addLine("cushion", [0, 0], [100, 0], "segment");
@@ -85,7 +85,13 @@ const cfg: { until?: number | undefined; mu?: number | undefined; history?: bool
 world.advance({ untilTime: cfg.until, maxEvents: 5 });
 world.addBody("far", { x: -1000, y: -1000, r: 1, m: 1, mu: cfg.mu });
 const headless = new Timeline({ g: 0, history: cfg.history });
-export const out = [cue.x + cue.vx, roots, tl.horizon, kinds, err, headless];
+// ... and so do an action's, an until's and a scene's optional fields (undefined = left out).
+const form: { mu?: number | undefined; x?: number | undefined; seconds?: number | undefined } = {};
+const act: Action = { time: 0, type: "addBody", id: "p", x: 50, y: 50, r: 1, m: 1, mu: form.mu };
+const move: Action = { time: 1, type: "updateBody", id: "p", x: form.x, until: { time: form.seconds } };
+const own: SceneFile = { ...scene, actions: [act, move], meta: undefined };
+headless.prolong({ time: form.seconds, events: 5 });
+export const out = [cue.x + cue.vx, roots, tl.horizon, kinds, err, headless, own];
 `;
 
 /** Misuse: a string radius. Must fail to type-check (TS2322), or the types are not being read. */

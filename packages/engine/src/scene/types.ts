@@ -15,10 +15,10 @@ export type LineKind = "line" | "ray" | "segment";
 export interface Until {
   /** Seconds to compute, counted from the action's `time` (an action's until) or from the horizon
    *  (`Timeline.prolong`): a duration, not an absolute time. A finite number >= 0. */
-  time?: number;
+  time?: number | undefined;
   /** Collisions and stops to compute from there (actions not counted): a whole number >= 0, at
    *  most Number.MAX_SAFE_INTEGER. */
-  events?: number;
+  events?: number | undefined;
 }
 
 /**
@@ -34,7 +34,7 @@ export type Action = {
   time: number;
   /** How far to compute after this action, counted from its `time`, not absolute. (Under the
    *  Timeline option `compute: false`, only an action given to `apply` has its until honoured.) */
-  until?: Until;
+  until?: Until | undefined;
 } & (
   | {
       type: "addBody";
@@ -47,9 +47,9 @@ export type Action = {
       /** Mass: 1e-40 to 1e40, or Infinity (immovable by collisions; written "Infinity" in JSON). */
       m: number;
       /** Friction coefficient (default 0); must be 0 under a non-zero gravity field. */
-      mu?: number;
+      mu?: number | undefined;
       /** Velocity [vx, vy] (default [0, 0]); each component 0 or at least 1e-30 in size. */
-      v?: Vec2;
+      v?: Vec2 | undefined;
     }
   | {
       type: "giveVelocity";
@@ -61,13 +61,13 @@ export type Action = {
       /** Change a body; fields left out keep their values at the action's time. */
       type: "updateBody";
       id: string;
-      x?: number;
-      y?: number;
+      x?: number | undefined;
+      y?: number | undefined;
       /** New velocity [vx, vy]. */
-      v?: Vec2;
-      r?: number;
-      m?: number;
-      mu?: number;
+      v?: Vec2 | undefined;
+      r?: number | undefined;
+      m?: number | undefined;
+      mu?: number | undefined;
     }
   | { type: "removeBody"; id: string }
   | {
@@ -79,7 +79,13 @@ export type Action = {
       /** `line` (infinite, through p1 and p2), `ray` (from p1 through p2) or `segment` (p1 to p2). */
       kind: LineKind;
     }
-  | { type: "updateLine"; id: string; p1?: Vec2; p2?: Vec2; kind?: LineKind }
+  | {
+      type: "updateLine";
+      id: string;
+      p1?: Vec2 | undefined;
+      p2?: Vec2 | undefined;
+      kind?: LineKind | undefined;
+    }
   | { type: "removeLine"; id: string }
   | { type: "addPoint"; id: string; p: Vec2 }
   | { type: "updatePoint"; id: string; p: Vec2 }
@@ -87,8 +93,8 @@ export type Action = {
   | {
       /** Change the friction field and/or the gravity field (left out: kept). */
       type: "setGlobal";
-      g?: number;
-      gravity?: Vec2;
+      g?: number | undefined;
+      gravity?: Vec2 | undefined;
     }
 );
 
@@ -108,7 +114,7 @@ export interface SceneFile {
   /** The actions in file order; they apply in time order, ties in list order. */
   actions: Action[];
   /** Free data for tools (view, title), kept as is; must be an object. */
-  meta?: Record<string, unknown>;
+  meta?: Record<string, unknown> | undefined;
 }
 
 /** Defaults of the format. */
