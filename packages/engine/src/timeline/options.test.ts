@@ -77,3 +77,36 @@ describe("Timeline option untils (compute: false)", () => {
     );
   });
 });
+
+// The README said that with compute: false "nothing is computed until prolong", next to an apply
+// of a future action; apply computes up to the action's time whatever the option (it checks the
+// action there), and only setActions schedules (audit of session 22).
+describe("a future action under compute: false", () => {
+  const moving: Action = { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [1, 0] };
+  const spawn: Action = { time: 10, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 1 };
+
+  it("apply computes up to its time and refuses it there at once", () => {
+    const tl = new Timeline({ g: 0, compute: false });
+    tl.apply(moving);
+    expect(tl.horizon).toBe(0);
+    expect(() => tl.apply(spawn)).toThrow('action: body "b" would overlap body "a" at time 10');
+    expect([tl.horizon, tl.actions.length]).toEqual([0, 1]);
+    tl.apply({ ...spawn, x: 20 });
+    expect(tl.horizon).toBe(10);
+    expect(tl.stateAt(10).bodies.map((b) => [b.id, b.x])).toEqual([
+      ["a", 10],
+      ["b", 20],
+    ]);
+  });
+
+  it("setActions only schedules it: the horizon goes back to the restart keyframe, the prolong checks it", () => {
+    const tl = new Timeline({ g: 0, compute: false });
+    tl.setActions([moving]);
+    tl.prolongTo(5);
+    tl.setActions([moving, spawn]);
+    expect(tl.horizon).toBe(0);
+    expect(tl.actions).toHaveLength(2);
+    expect(() => tl.prolongTo(20)).toThrow('actions[1]: body "b" would overlap body "a" at time 10');
+    expect(tl.horizon).toBe(10);
+  });
+});
