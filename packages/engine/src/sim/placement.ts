@@ -21,7 +21,9 @@ export class Placement extends Simulator {
   /** Slot of each body id. */
   protected index = new Map<string, number>();
 
-  protected checkedLine(id: string, p1: Vec2, p2: Vec2, kind: LineKind): Line {
+  /** A checked line; an overlap with a body is refused naming `field` (addLine: p1; updateLine:
+   *  the first of p1, p2, kind that changed). */
+  protected checkedLine(id: string, p1: Vec2, p2: Vec2, kind: LineKind, field = "p1"): Line {
     const a = requireVec("p1", p1);
     const c = requireVec("p2", p2);
     requireLineKind("kind", kind);
@@ -32,7 +34,7 @@ export class Placement extends Simulator {
         distanceToLine(line, this.xAt(s, this.now), this.yAt(s, this.now)) <
         (this.store.r[s] as number) * KEEP,
     );
-    if (hit !== undefined) throw new ChapgameError("p1", `the line would overlap body '${hit}'`);
+    if (hit !== undefined) throw new ChapgameError(field, `the line would overlap body '${hit}'`);
     return line;
   }
 
@@ -135,7 +137,8 @@ export class Placement extends Simulator {
 
   /**
    * Move a line or change its kind at the current time (fields left out are kept; a LineState's
-   * `id` is accepted and ignored). Checked as addLine; ChapgameError naming `id` when there is no
+   * `id` is accepted and ignored). Checked as addLine, except that an overlap with a body names the
+   * field that changed (`p1`, else `p2`, else `kind`); ChapgameError naming `id` when there is no
    * such line. Nothing changes on error.
    */
   updateLine(id: string, patch: { p1?: Vec2; p2?: Vec2; kind?: LineKind }): void {
@@ -145,12 +148,19 @@ export class Placement extends Simulator {
     // (a LineState's id may come back with it; the id argument names the line)
     requireFields("patch", patch, ["p1", "p2", "kind"], ["id"]);
     const old = this.lineList[i] as Line;
-    const line = this.checkedLine(
-      id,
-      patch.p1 ?? [old.x1, old.y1],
-      patch.p2 ?? [old.x2, old.y2],
-      patch.kind ?? old.kind,
-    );
+    const p1 = patch.p1 ?? [old.x1, old.y1];
+    const p2 = patch.p2 ?? [old.x2, old.y2];
+    const kind = patch.kind ?? old.kind;
+    // Name the field that changed (a LineState passed back whole gives every key).
+    const moved = (p: Vec2, x: number, y: number) => p[0] !== x || p[1] !== y;
+    const field = moved(p1, old.x1, old.y1)
+      ? "p1"
+      : moved(p2, old.x2, old.y2)
+        ? "p2"
+        : kind !== old.kind
+          ? "kind"
+          : "p1";
+    const line = this.checkedLine(id, p1, p2, kind, field);
     this.lineList = this.lineList.map((l, k) => (k === i ? line : l));
     this.markDirty();
   }

@@ -78,3 +78,25 @@ describe("a refused update names the field that made the overlap", () => {
     expect(w.body("a")).toMatchObject({ x: 0, y: 0, r: 1 });
   });
 });
+
+// Audit of session 22: updateLine named p1 whatever changed, so a line turned from a segment into
+// an infinite line through a disc was refused as "p1: …" though p1 was not touched.
+describe("a refused updateLine names the field that made the overlap", () => {
+  it("kind when only the kind changed, p2 when only p2 moved, p1 when p1 moved (as addLine)", () => {
+    const w = new World({ g: 0 });
+    w.addBody("a", { x: 20, y: 0, r: 1, m: 1 });
+    w.addLine("l", [0, 0], [10, 0], "segment");
+    expect(refusal(() => w.updateLine("l", { kind: "line" }))).toBe("kind: the line would overlap body 'a'");
+    expect(refusal(() => w.updateLine("l", { p2: [30, 0] }))).toBe("p2: the line would overlap body 'a'");
+    expect(refusal(() => w.updateLine("l", { p1: [30, 0] }))).toBe("p1: the line would overlap body 'a'");
+    expect(refusal(() => w.updateLine("l", { p1: [0, 0], p2: [30, 0] }))).toBe(
+      "p2: the line would overlap body 'a'",
+    );
+    // a LineState passed back whole names what changed in it
+    const [state] = w.lines();
+    expect(refusal(() => w.updateLine("l", { ...state, kind: "ray" }))).toBe(
+      "kind: the line would overlap body 'a'",
+    );
+    expect(w.lines()).toEqual([{ id: "l", p1: [0, 0], p2: [10, 0], kind: "segment" }]);
+  });
+});
