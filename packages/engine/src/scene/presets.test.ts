@@ -1,6 +1,14 @@
 import { describe, expect, it } from "vitest";
 import { parseScene } from "./parse.js";
-import { billiardsBreak, dilutedGas, galperin, newtonsCradle, originalDemo, presets } from "./presets.js";
+import {
+  billiardsBreak,
+  dilutedGas,
+  type GasOptions,
+  galperin,
+  newtonsCradle,
+  originalDemo,
+  presets,
+} from "./presets.js";
 
 describe("presets", () => {
   it("every preset is a valid scene (no overlaps, ids unique)", () => {
@@ -42,6 +50,25 @@ describe("presets", () => {
     expect(() => dilutedGas({ n: 0, packing: 0.1 })).toThrow(RangeError);
     expect(() => dilutedGas({ n: 10, packing: 0.9 })).toThrow(RangeError);
     expect(() => dilutedGas({ n: 2, packing: 0.5 })).toThrow(RangeError);
+  });
+  // Audit of session 22: the seed went through `>>> 0`, so every fraction (Math.random()), NaN, a
+  // string or Infinity gave the scene of seed 0 (1.5 that of 1, -1 that of 4294967295), and a
+  // misspelt key (`sed`) the default seed, all without a word.
+  it("dilutedGas refuses a seed its generator would change, and an unknown option", () => {
+    const opts = (extra: Record<string, unknown>) => ({ n: 10, packing: 0.1, ...extra }) as GasOptions;
+    for (const seed of [0.37, 1.5, Number.NaN, Number.POSITIVE_INFINITY, -1, 2 ** 32, "3", null])
+      expect(() => dilutedGas(opts({ seed })), String(seed)).toThrow(
+        `dilutedGas: seed must be a whole number from 0 to 4294967295 (got ${typeof seed === "string" ? '"3"' : String(seed)})`,
+      );
+    expect(() => dilutedGas(opts({ sed: 3 }))).toThrow(
+      'dilutedGas: unknown option "sed" (known: n, packing, seed)',
+    );
+    expect(() => dilutedGas(undefined as unknown as GasOptions)).toThrow(
+      new RangeError("dilutedGas: options must be an object { n, packing, seed }"),
+    );
+    // the whole range is still taken, and an undefined seed is the default
+    expect(dilutedGas(opts({ seed: 0 }))).not.toEqual(dilutedGas(opts({ seed: 2 ** 32 - 1 })));
+    expect(dilutedGas(opts({ seed: undefined }))).toEqual(dilutedGas(opts({ seed: 1 })));
   });
   it("parses a 20,000-disc gas quickly enough to be usable (grid overlap check)", () => {
     expect(() => parseScene(dilutedGas({ n: 20_000, packing: 0.3 }))).not.toThrow();

@@ -128,15 +128,31 @@ export interface GasOptions {
   n: number;
   /** fraction of the box's area covered by discs, in (0, 0.5] */
   packing: number;
-  /** seed of the LCG that jitters positions and picks velocities (components in [−1, 1]) */
+  /** seed of the LCG that jitters positions and picks velocities (components in [−1, 1]): a whole
+   *  number from 0 to 2^32 − 1 (default 1) */
   seed?: number;
 }
 
+const GAS_OPTIONS = ["n", "packing", "seed"];
+const SEED_MAX = 2 ** 32 - 1;
+
 /** A dilute gas: n discs without friction on a jittered grid (no overlaps) in a square box of four
- *  segments, sized for the requested packing fraction. Deterministic in the seed. */
-export function dilutedGas({ n, packing, seed = 1 }: GasOptions): SceneFile {
+ *  segments, sized for the requested packing fraction. Deterministic in the seed. RangeError for
+ *  options that are not an object, an unknown option, or a value out of its range (a seed the
+ *  generator would change: a fraction, NaN, a negative number, 2^32 or more). */
+export function dilutedGas(options: GasOptions): SceneFile {
+  if (typeof options !== "object" || options === null)
+    throw new RangeError("dilutedGas: options must be an object { n, packing, seed }");
+  for (const key of Object.keys(options))
+    if (!GAS_OPTIONS.includes(key))
+      throw new RangeError(`dilutedGas: unknown option "${key}" (known: ${GAS_OPTIONS.join(", ")})`);
+  const { n, packing, seed = 1 } = options;
   if (!Number.isInteger(n) || n < 1) throw new RangeError("dilutedGas: n must be a positive integer");
   if (!(packing > 0 && packing <= 0.5)) throw new RangeError("dilutedGas: packing must be in (0, 0.5]");
+  if (!Number.isInteger(seed) || seed < 0 || seed > SEED_MAX)
+    throw new RangeError(
+      `dilutedGas: seed must be a whole number from 0 to ${SEED_MAX} (got ${typeof seed === "string" ? JSON.stringify(seed) : String(seed)})`,
+    );
   const r = 1;
   const side = Math.sqrt((n * Math.PI * r * r) / packing);
   const k = Math.ceil(Math.sqrt(n));
