@@ -3,12 +3,14 @@
  * out, as it does for the World's and the Timeline's options. This file is also a type test: the
  * repository compiles it under exactOptionalPropertyTypes (`npx tsc -p tsconfig.json --noEmit`),
  * where a value read from a config (`number | undefined`) must fit the optional fields of `Action`,
- * `Until` and `SceneFile` (audit of session 22: they did not, while the runtime accepted it).
+ * `Until`, `SceneFile` and `GasOptions` (audit of session 22: they did not, while the runtime
+ * accepted it).
  */
 import { describe, expect, it } from "vitest";
 import { Timeline } from "../timeline/timeline.js";
 import { checkAction } from "./action.js";
 import { parseScene } from "./parse.js";
+import { dilutedGas } from "./presets.js";
 import { serializeScene } from "./serialize.js";
 import type { Action, SceneFile, Until, Vec2 } from "./types.js";
 
@@ -22,6 +24,7 @@ interface Config {
   seconds?: number | undefined;
   events?: number | undefined;
   meta?: Record<string, unknown> | undefined;
+  seed?: number | undefined;
 }
 
 function fromConfig(cfg: Config): { scene: SceneFile; until: Until } {
@@ -74,5 +77,12 @@ describe("optional fields given as undefined", () => {
     expect(withUndefined.horizon).toBe(leftOut.horizon);
     expect(withUndefined.stateAt(withUndefined.horizon)).toEqual(leftOut.stateAt(leftOut.horizon));
     expect(withUndefined.stateAt(withUndefined.horizon).bodies[0]?.x).toBe(2 * withUndefined.horizon);
+  });
+
+  it("dilutedGas takes a seed that may be missing: the default seed, 1", () => {
+    const cfg: Config = {};
+    expect(dilutedGas({ n: 20, packing: 0.1, seed: cfg.seed })).toEqual(
+      dilutedGas({ n: 20, packing: 0.1, seed: 1 }),
+    );
   });
 });

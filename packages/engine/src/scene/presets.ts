@@ -129,8 +129,8 @@ export interface GasOptions {
   /** fraction of the box's area covered by discs, in (0, 0.5] */
   packing: number;
   /** seed of the LCG that jitters positions and picks velocities (components in [−1, 1]): a whole
-   *  number from 0 to 2^32 − 1 (default 1) */
-  seed?: number;
+   *  number from 0 to 2^32 − 1 (default 1, also when undefined) */
+  seed?: number | undefined;
 }
 
 const GAS_OPTIONS = ["n", "packing", "seed"];
