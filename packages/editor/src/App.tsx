@@ -29,7 +29,7 @@ import { Toolbar } from "./panels/Toolbar";
 export function App() {
   return (
     <div className="app">
-      {/* header and stage: one screen in a narrow window (styles.css), the side panels under it */}
+      {/* header and stage: one screen in a narrow window (styles/layout.css), the side panels under it */}
       <div className="screen">
         <header className="header">
           <h1>chapgame</h1>

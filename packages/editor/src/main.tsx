@@ -4,7 +4,7 @@ import { createRoot } from "react-dom/client";
 import { App } from "./App";
 import { boot } from "./boot";
 import { EditorContext } from "./EditorContext";
-import "./styles.css";
+import "./styles/index.css";
 
 boot().then((editor) => {
   createRoot(document.getElementById("root")!).render(
