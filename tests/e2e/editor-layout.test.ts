@@ -2,7 +2,10 @@
  * End-to-end, in Debian's Chromium: the page at the edges of window sizes. On a wide window
  * (1920 x 1080, 2560 x 1440) every panel keeps a panel's width: the Speed panel once stretched
  * 650 px and more across the time bar, its buttons at one end; only the Time panel, whose slider
- * gains from it, takes the rest of the line.
+ * gains from it, takes the rest of the line. On a phone on its side (844 x 390, 740 x 360) the
+ * page fits the window and never scrolls: the canvas shrinks, the time bar stays in view and the
+ * side panels scroll inside their column (the page once scrolled to 1,584 px, the time bar half
+ * below the fold).
  */
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -40,6 +43,28 @@ function panelBox(title: string): Promise<{ width: number; left: number; control
   }, title);
 }
 
+/** Whether the element's centre is in the window and the element itself is there (nothing covers it). */
+function inView(name: string): Promise<boolean> {
+  return page.getByRole("button", { name, exact: true }).evaluate((el) => {
+    const r = el.getBoundingClientRect();
+    const x = r.x + r.width / 2;
+    const y = r.y + r.height / 2;
+    if (x < 0 || y < 0 || x > window.innerWidth || y > window.innerHeight) return false;
+    return el.contains(document.elementFromPoint(x, y));
+  });
+}
+
+/** The page's scroll sizes and client sizes ([scrollWidth, scrollHeight], [clientWidth, clientHeight]). */
+function pageScroll(): Promise<[number[], number[]]> {
+  return page.evaluate(() => {
+    const e = document.scrollingElement!;
+    return [
+      [e.scrollWidth, e.scrollHeight],
+      [e.clientWidth, e.clientHeight],
+    ];
+  });
+}
+
 describe("wide windows", () => {
   it("the Speed panel keeps a panel's width and Time takes the rest of the line; the side panels keep their column's", async () => {
     try {
@@ -67,6 +92,60 @@ describe("wide windows", () => {
         ])
           expect((await panelBox(title)).width, title).toBeLessThanOrEqual(560);
         await screenshot(page, `layout-wide-${width}x${height}`);
+      }
+    } finally {
+      await page.setViewportSize({ width: 1400, height: 900 });
+    }
+  });
+});
+
+describe("a phone on its side", () => {
+  it("the page fits the window: the canvas shrinks, the time bar is in view, the side panels scroll inside their column", async () => {
+    try {
+      for (const [width, height] of [
+        [844, 390],
+        [740, 360],
+      ] as const) {
+        await page.setViewportSize({ width, height });
+        const at = `${width} x ${height}`;
+        await poll(pageScroll).toEqual([
+          [width, height],
+          [width, height],
+        ]);
+        const canvas = (await page.getByTestId("scene-canvas").boundingBox())!;
+        expect(canvas.height, at).toBeGreaterThanOrEqual(120);
+        expect(canvas.width, at).toBeGreaterThanOrEqual(400);
+        const slider = (await page.getByRole("slider", { name: "Time" }).boundingBox())!;
+        expect(slider.y + slider.height, at).toBeLessThanOrEqual(height);
+        for (const name of ["Play", "Next event", "Previous event", "Undo", "Fit"])
+          expect(await inView(name), `${name} at ${at}`).toBe(true);
+        // the last panel is reached by scrolling the side column, not the page
+        const side = page.locator(".side");
+        expect(await side.evaluate((el) => el.scrollHeight > el.clientHeight)).toBe(true);
+        await page.getByRole("button", { name: "Share link" }).scrollIntoViewIfNeeded();
+        expect(await inView("Share link"), at).toBe(true);
+        expect(await side.evaluate((el) => el.scrollTop)).toBeGreaterThan(0);
+        expect(await pageScroll()).toEqual([
+          [width, height],
+          [width, height],
+        ]);
+        // a message takes its lines above the side panels: the page still fits
+        await page.evaluate(() => {
+          type Ui = { ui: { setState(s: { message: { text: string; tone: "info" } | null }): void } };
+          const text = "Loaded the preset Bouncing balls (gravity). Undo returns to the scene you had.";
+          (window as unknown as { chapgame: Ui }).chapgame.ui.setState({ message: { text, tone: "info" } });
+        });
+        await poll(() => page.getByRole("status").filter({ hasText: "Undo returns" }).count()).toBe(1);
+        expect(await pageScroll()).toEqual([
+          [width, height],
+          [width, height],
+        ]);
+        expect(await inView("Play"), at).toBe(true);
+        await screenshot(page, `layout-landscape-${width}x${height}`);
+        await page.getByRole("button", { name: "Dismiss message" }).click();
+        await side.evaluate((el) => {
+          el.scrollTop = 0;
+        });
       }
     } finally {
       await page.setViewportSize({ width: 1400, height: 900 });
