@@ -9,11 +9,13 @@
  * taken back so goes to Redo, which brings it back checked again: a later action may refuse it then
  * (it leaves Redo), while a check cancelled or cut short by an engine restart leaves it in Redo.
  * Like any change made it cleared Redo first (EditorSession.tookBack), so Redo then holds it alone.
- * Each says what it did ("Undone: give velocity to "a" at t = 4 s.").
+ * Each says what it did ("Undone: give velocity to "a" at t = 4 s."). The Undo of a Delete selects
+ * the object again, and its Redo selects nothing (doc/stepSelection.ts).
  */
 
 import { summarizeEdit } from "./doc/editSummary";
 import { type History, redo, undo } from "./doc/history";
+import { selectionAfterStep } from "./doc/stepSelection";
 import { redoAsked, redoTurn, type Ticket, undoAsked, undoTurn } from "./doc/undoIntents";
 import { EditorSession } from "./editorSession";
 import type { SceneFile } from "./engineTypes";
@@ -101,6 +103,7 @@ export class EditorUndo extends EditorSession {
    * decided nothing: the scene stays in Redo.
    */
   private async restore(scene: SceneFile, history: History, said: string): Promise<boolean> {
+    const from = this.doc;
     const check = this.unchecked.has(scene);
     try {
       if (check) this.unconfirmed = this.doc; // what a restart loads meanwhile
@@ -119,6 +122,8 @@ export class EditorUndo extends EditorSession {
     }
     this.unchecked.delete(scene);
     this.history.setState(history);
+    // the Undo of a Delete selects the object again, its Redo selects nothing (doc/stepSelection.ts)
+    this.ui.setState((s) => ({ selection: selectionAfterStep(from, scene, s.selection) }));
     this.info(said);
     return true;
   }

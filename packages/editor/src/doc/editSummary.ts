@@ -1,28 +1,11 @@
 /**
  * summarizeEdit(before, after): one line saying what an edit changed, for the message shown after
  * Undo and Redo (an audit found they said nothing, and undoing an edit at a later time showed no
- * change at all). Actions are compared by content (the scenes come from the worker, so the same
- * action is a different object in each), as multisets. Pure.
+ * change at all). Actions are compared by content, as multisets (actionDiff.ts). Pure.
  */
 import type { Action, SceneFile } from "../engineTypes";
+import { actionKey as key, actionsMinus as minus } from "./actionDiff";
 import { describeAction } from "./actionRefs";
-
-function key(a: Action): string {
-  return JSON.stringify(a);
-}
-
-/** The actions of `a` that `b` lacks (counting repeats). */
-function minus(a: readonly Action[], b: readonly Action[]): Action[] {
-  const left = new Map<string, number>();
-  for (const x of b) left.set(key(x), (left.get(key(x)) ?? 0) + 1);
-  const out: Action[] = [];
-  for (const x of a) {
-    const n = left.get(key(x)) ?? 0;
-    if (n > 0) left.set(key(x), n - 1);
-    else out.push(x);
-  }
-  return out;
-}
 
 function at(a: Action): string {
   return `${describeAction(a)} at t = ${Number(a.time.toPrecision(6))} s`;
