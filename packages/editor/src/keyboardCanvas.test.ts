@@ -28,8 +28,8 @@ const frame = packFrame(
       m: 1,
       mu: 0,
     })),
-    lines: [],
-    points: [],
+    lines: [{ id: "far", p1: [0, 5000], p2: [10, 5000], kind: "segment" }],
+    points: [{ id: "q", p: [0, -3000] }],
   },
   0,
 );
@@ -109,19 +109,34 @@ describe("the scene view's keys", () => {
     off();
   });
 
-  it("N and Shift+N select the next and previous body and bring it into view; Escape on the canvas selects nothing", () => {
+  it("N and Shift+N go through the bodies, the lines and the points and bring each into view; Escape on the canvas selects nothing", () => {
     const { editor, ui } = editorWith();
     const off = bindKeyboard(editor);
     const c = canvas();
+    // jsdom lays nothing out: the view's size on screen
+    c.getBoundingClientRect = () => ({ width: 400, height: 300 }) as DOMRect;
     press(c, "n");
     expect(ui.getState().selection).toEqual({ kind: "body", id: "b1" });
+    expect(ui.getState().view.cx).toBeGreaterThan(1000 - 200); // b1 at x = 1000, shown
     press(c, "n");
     expect(ui.getState().selection).toEqual({ kind: "body", id: "b2" }); // at x = 0
+    press(c, "n");
+    press(c, "n");
+    // after the last body, the line: the view moves up to it (y = 5000)
+    expect(ui.getState().selection).toEqual({ kind: "line", id: "far" });
+    expect(ui.getState().view.cy).toBeGreaterThan(5000 - 150);
+    press(c, "n");
+    expect(ui.getState().selection).toEqual({ kind: "point", id: "q" });
+    expect(ui.getState().view.cy).toBeLessThan(-3000 + 150);
+    press(c, "n");
+    expect(ui.getState().selection).toEqual({ kind: "body", id: "b1" }); // wraps round
     press(c, "N", { shiftKey: true });
     press(c, "N", { shiftKey: true });
-    expect(ui.getState().selection).toEqual({ kind: "body", id: "b10" }); // wraps round
+    expect(ui.getState().selection).toEqual({ kind: "line", id: "far" });
     press(c, "Escape");
     expect(ui.getState().selection).toBeNull();
+    press(c, "N", { shiftKey: true });
+    expect(ui.getState().selection).toEqual({ kind: "point", id: "q" });
     off();
   });
 

@@ -5,11 +5,9 @@
  * itself: keyboard.ts's ownsKey) or "canvas" (the scene view focused, where the arrows pan the view
  * instead of stepping through events).
  */
-import { bodyIndex } from "./canvas/hitTest";
-import { nextBody, panByKey, revealDisc, zoomByKey } from "./canvas/viewKeys";
+import { nextObject, panByKey, placeOf, revealDisc, selectablesOf, zoomByKey } from "./canvas/viewKeys";
 import type { Size } from "./canvas/viewTransform";
 import type { Editor } from "./editor";
-import { F_R, F_X, F_Y, FRAME_STRIDE } from "./remote/protocol";
 import type { Tool } from "./store/uiStore";
 
 export type Where = "anywhere" | "page" | "canvas";
@@ -54,17 +52,20 @@ export const TOOL_KEYS: { tool: Tool; label: string }[] = [
   { tool: "point", label: "Point" },
 ];
 
-/** Selects the next (or previous) body and moves the view to show it when it is off screen. */
-function selectBody({ editor, viewSize }: KeyContext, dir: 1 | -1): void {
+/**
+ * Selects the next (or previous) object, bodies then lines then points (viewKeys.nextObject), and
+ * moves the view to show it when it is off screen.
+ */
+function selectNext({ editor, viewSize }: KeyContext, dir: 1 | -1): void {
   const f = editor.client.latestFrame;
   if (!f) return;
   const s = editor.ui.getState();
-  const id = nextBody(f.ids, s.selection, dir);
-  if (id === null) return;
-  const i = bodyIndex(f, id) * FRAME_STRIDE;
+  const sel = nextObject(selectablesOf(f), s.selection, dir);
+  if (sel === null) return;
   const size = viewSize();
-  const view = size ? revealDisc(s.view, size, f.data[i + F_X]!, f.data[i + F_Y]!, f.data[i + F_R]!) : s.view;
-  editor.ui.setState({ selection: { kind: "body", id }, highlight: [], view });
+  const place = placeOf(f, sel, [s.view.cx, s.view.cy]);
+  const view = size && place ? revealDisc(s.view, size, ...place) : s.view;
+  editor.ui.setState({ selection: sel, highlight: [], view });
 }
 
 export const SHORTCUTS: Shortcut[] = [
@@ -130,10 +131,10 @@ export const SHORTCUTS: Shortcut[] = [
   {
     keys: ["N", "Shift+N"],
     character: true,
-    what: "Select the next / previous body (the view follows it)",
+    what: "Select the next / previous object: the bodies, then the lines, then the points, round and round (the view follows it)",
     where: "page",
     matches: oneOf("n", "N"),
-    run: (c, e) => selectBody(c, e.shiftKey ? -1 : 1),
+    run: (c, e) => selectNext(c, e.shiftKey ? -1 : 1),
   },
   {
     keys: ["T"],

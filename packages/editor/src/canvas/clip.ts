@@ -33,13 +33,19 @@ export function clipToRect(p1: Vec2, p2: Vec2, kind: LineKind, r: Bounds): [Vec2
   ];
 }
 
-/** Distance from q to the line, ray or segment p1→p2. */
-export function distanceToLine(q: Vec2, p1: Vec2, p2: Vec2, kind: LineKind): number {
+/** The point of the line, ray or segment p1→p2 nearest to q. */
+export function nearestOnLine(q: Vec2, p1: Vec2, p2: Vec2, kind: LineKind): Vec2 {
   const dx = p2[0] - p1[0];
   const dy = p2[1] - p1[1];
   const len2 = dx * dx + dy * dy;
   let s = len2 === 0 ? 0 : ((q[0] - p1[0]) * dx + (q[1] - p1[1]) * dy) / len2;
   if (kind !== "line") s = Math.max(s, 0);
   if (kind === "segment") s = Math.min(s, 1);
-  return Math.hypot(q[0] - (p1[0] + s * dx), q[1] - (p1[1] + s * dy));
+  return [p1[0] + s * dx, p1[1] + s * dy];
+}
+
+/** Distance from q to the line, ray or segment p1→p2. */
+export function distanceToLine(q: Vec2, p1: Vec2, p2: Vec2, kind: LineKind): number {
+  const [x, y] = nearestOnLine(q, p1, p2, kind);
+  return Math.hypot(q[0] - x, q[1] - y);
 }

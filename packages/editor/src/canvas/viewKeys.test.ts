@@ -1,5 +1,16 @@
 import { describe, expect, it } from "vitest";
-import { nextBody, PAN_FAST, PAN_STEP_PX, panByKey, revealDisc, ZOOM_STEP, zoomByKey } from "./viewKeys";
+import { packFrame } from "../remote/packFrame";
+import {
+  nextObject,
+  PAN_FAST,
+  PAN_STEP_PX,
+  panByKey,
+  placeOf,
+  revealDisc,
+  selectablesOf,
+  ZOOM_STEP,
+  zoomByKey,
+} from "./viewKeys";
 import { MAX_SCALE, toScreen } from "./viewTransform";
 
 const view = { cx: 0, cy: 0, scale: 2 };
@@ -21,21 +32,67 @@ describe("the scene view's keys", () => {
     expect(zoomByKey({ ...view, scale: MAX_SCALE }, 1).scale).toBe(MAX_SCALE);
   });
 
-  it("N and Shift+N go through the bodies in the Bodies table's order, round and round", () => {
-    const ids = ["b10", "b2", "a"];
-    expect(nextBody(ids, null, 1)).toBe("a");
-    expect(nextBody(ids, null, -1)).toBe("b10");
-    expect(nextBody(ids, { kind: "body", id: "a" }, 1)).toBe("b2");
-    expect(nextBody(ids, { kind: "body", id: "b2" }, 1)).toBe("b10");
-    expect(nextBody(ids, { kind: "body", id: "b10" }, 1)).toBe("a");
-    expect(nextBody(ids, { kind: "body", id: "a" }, -1)).toBe("b10");
-    // a line selected, or a body gone: from the start
-    expect(nextBody(ids, { kind: "line", id: "a" }, 1)).toBe("a");
-    expect(nextBody(ids, { kind: "body", id: "gone" }, 1)).toBe("a");
-    expect(nextBody([], null, 1)).toBeNull();
+  it("N and Shift+N go through the bodies in the Bodies table's order, then the lines, then the points, round and round", () => {
+    const all = { bodies: ["b10", "b2", "a"], lines: ["w2", "w1"], points: ["p"] };
+    const order = [
+      { kind: "body", id: "a" },
+      { kind: "body", id: "b2" },
+      { kind: "body", id: "b10" },
+      { kind: "line", id: "w2" },
+      { kind: "line", id: "w1" },
+      { kind: "point", id: "p" },
+    ] as const;
+    expect(nextObject(all, null, 1)).toEqual(order[0]);
+    expect(nextObject(all, null, -1)).toEqual(order[5]);
+    for (let i = 0; i < order.length; i++) {
+      expect(nextObject(all, order[i]!, 1)).toEqual(order[(i + 1) % order.length]);
+      expect(nextObject(all, order[(i + 1) % order.length]!, -1)).toEqual(order[i]);
+    }
+    // the kind counts: a line "a" is not the body "a"; an object gone: from the start
+    expect(nextObject({ ...all, lines: ["a"] }, { kind: "line", id: "a" }, 1)).toEqual({
+      kind: "point",
+      id: "p",
+    });
+    expect(nextObject(all, { kind: "body", id: "gone" }, 1)).toEqual(order[0]);
+    // bodies alone, lines alone, points alone, nothing
+    expect(nextObject({ bodies: ["a"], lines: [], points: [] }, { kind: "body", id: "a" }, 1)).toEqual(
+      order[0],
+    );
+    expect(nextObject({ bodies: [], lines: ["w"], points: [] }, null, -1)).toEqual({ kind: "line", id: "w" });
+    expect(nextObject({ bodies: [], lines: [], points: ["p"] }, null, 1)).toEqual({ kind: "point", id: "p" });
+    expect(nextObject({ bodies: [], lines: [], points: [] }, null, 1)).toBeNull();
   });
 
-  it("a body selected off screen is brought into view by as little as it takes; one in view moves nothing", () => {
+  it("the place to show: a body's disc, a point, a line's point nearest the view's centre", () => {
+    const f = packFrame(
+      {
+        time: 0,
+        g: 9.81,
+        gravity: [0, 0],
+        bodies: [{ id: "a", x: 3, y: 4, vx: 0, vy: 0, ax: 0, ay: 0, r: 2, m: 1, mu: 0 }],
+        lines: [
+          { id: "wall", p1: [10, -1], p2: [10, 1], kind: "line" },
+          { id: "ray", p1: [0, 50], p2: [1, 50], kind: "ray" },
+          { id: "seg", p1: [20, 0], p2: [30, 0], kind: "segment" },
+        ],
+        points: [{ id: "q", p: [-7, 8] }],
+      },
+      0,
+    );
+    expect(selectablesOf(f)).toEqual({ bodies: ["a"], lines: ["wall", "ray", "seg"], points: ["q"] });
+    expect(placeOf(f, { kind: "body", id: "a" }, [0, 0])).toEqual([3, 4, 2]);
+    expect(placeOf(f, { kind: "point", id: "q" }, [0, 0])).toEqual([-7, 8, 0]);
+    // the infinite line through x = 10, seen from (0, 5): its point at height 5
+    expect(placeOf(f, { kind: "line", id: "wall" }, [0, 5])).toEqual([10, 5, 0]);
+    // a ray from (0, 50) to the right, seen from its left: its start
+    expect(placeOf(f, { kind: "line", id: "ray" }, [-40, 0])).toEqual([0, 50, 0]);
+    // a segment seen from beyond its end: that end
+    expect(placeOf(f, { kind: "line", id: "seg" }, [100, 3])).toEqual([30, 0, 0]);
+    expect(placeOf(f, { kind: "line", id: "gone" }, [0, 0])).toBeNull();
+    expect(placeOf(f, { kind: "body", id: "q" }, [0, 0])).toBeNull();
+  });
+
+  it("an object selected off screen is brought into view by as little as it takes; one in view moves nothing", () => {
     expect(revealDisc(view, size, 10, 10, 1)).toBe(view);
     const moved = revealDisc(view, size, 200, 0, 1);
     const [sx, sy] = toScreen(moved, size, 200, 0);

@@ -1,11 +1,14 @@
 /**
  * What the scene view's keys do to the view and the selection (shortcuts.ts runs them): a pan by a
- * step of screen pixels, a zoom about the canvas centre, the next or previous body in the Bodies
- * table's order (natural id order, wrapping round), and the view moved just enough to show a body
- * the keyboard selected off screen. Pure functions of the view and the frame's ids and places.
+ * step of screen pixels, a zoom about the canvas centre, the next or previous object in the tables'
+ * order (bodies, lines, then points, wrapping round), and the view moved just enough to show an
+ * object the keyboard selected off screen. Pure functions of the view and the frame's ids and places.
  */
+import type { Vec2 } from "../engineTypes";
 import { naturalOrder } from "../panels/naturalOrder";
+import { F_R, F_X, F_Y, FRAME_STRIDE, type Frame } from "../remote/protocol";
 import type { Selection, View } from "../store/uiStore";
+import { nearestOnLine } from "./clip";
 import { MAX_SCALE, MIN_SCALE, type Size, toScreen } from "./viewTransform";
 
 /** Screen pixels an arrow key pans the view by (Shift: PAN_STEP_PX * PAN_FAST). */
@@ -38,16 +41,66 @@ export function zoomByKey(v: View, steps: number): View {
   return { ...v, scale };
 }
 
+/** What N and Shift+N go through: the ids of the bodies, lines and points of the frame shown. */
+export interface Selectables {
+  bodies: readonly string[];
+  lines: readonly string[];
+  points: readonly string[];
+}
+
 /**
- * The body after (dir 1) or before (dir −1) the selected one in natural id order, wrapping round;
- * with no body selected, the first (or the last). Null when there is no body.
+ * The object after (dir 1) or before (dir −1) the selected one in the order of the tables: the
+ * bodies in the Bodies table's order (natural id order), then the lines and the points in their
+ * tables' (as the frame lists them), wrapping round from the last point to the first body. With
+ * nothing selected, or an object not in the frame, the first (or the last). Null when there is
+ * nothing to select.
  */
-export function nextBody(ids: readonly string[], selection: Selection, dir: 1 | -1): string | null {
-  if (ids.length === 0) return null;
-  const order = naturalOrder(ids).map((i) => ids[i]!);
-  const at = selection?.kind === "body" ? order.indexOf(selection.id) : -1;
+export function nextObject(
+  from: Selectables,
+  selection: Selection,
+  dir: 1 | -1,
+): NonNullable<Selection> | null {
+  const order: NonNullable<Selection>[] = [
+    ...naturalOrder(from.bodies).map((i) => ({ kind: "body" as const, id: from.bodies[i]! })),
+    ...from.lines.map((id) => ({ kind: "line" as const, id })),
+    ...from.points.map((id) => ({ kind: "point" as const, id })),
+  ];
+  if (order.length === 0) return null;
+  const at =
+    selection === null ? -1 : order.findIndex((o) => o.kind === selection.kind && o.id === selection.id);
   if (at < 0) return dir === 1 ? order[0]! : order[order.length - 1]!;
   return order[(at + dir + order.length) % order.length]!;
+}
+
+/** The ids N and Shift+N go through in the frame `f`. */
+export function selectablesOf(f: Frame): Selectables {
+  return { bodies: f.ids, lines: f.lines.map((l) => l.id), points: f.points.map((p) => p.id) };
+}
+
+/**
+ * The place to bring into view for the object `sel` of the frame `f`, as a disc (x, y, r): a body's
+ * disc; a point; the point of a line, ray or segment nearest to `centre` (the view's: so a line
+ * that crosses the view moves nothing). Null when the frame has no such object.
+ */
+export function placeOf(
+  f: Frame,
+  sel: NonNullable<Selection>,
+  centre: Vec2,
+): [number, number, number] | null {
+  if (sel.kind === "body") {
+    const i = f.ids.indexOf(sel.id);
+    if (i < 0) return null;
+    const o = i * FRAME_STRIDE;
+    return [f.data[o + F_X]!, f.data[o + F_Y]!, f.data[o + F_R]!];
+  }
+  if (sel.kind === "point") {
+    const p = f.points.find((q) => q.id === sel.id);
+    return p ? [p.p[0], p.p[1], 0] : null;
+  }
+  const l = f.lines.find((q) => q.id === sel.id);
+  if (!l) return null;
+  const [x, y] = nearestOnLine(centre, l.p1, l.p2, l.kind);
+  return [x, y, 0];
 }
 
 /**
