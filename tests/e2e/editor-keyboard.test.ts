@@ -1,6 +1,7 @@
 /**
  * End-to-end, in Debian's Chromium: the scene view from the keyboard (reached by Tab, with a focus
- * ring and a name; arrows pan, + and − zoom, N selects the next body, ? lists every shortcut) while a
+ * ring and a name; arrows pan, + and − zoom, N selects the next object, Enter adds the tool's object
+ * at the centre of the view, ? lists every shortcut) while a
  * mouse click on it keeps ←/→ stepping through events; buttons that cannot act keep the focus; and
  * at 800 x 600 the time bar (Time slider, Play) is in view without scrolling, as in larger windows.
  */
@@ -166,5 +167,39 @@ describe("the time bar in view", () => {
     } finally {
       await page.setViewportSize({ width: 1400, height: 900 });
     }
+  });
+});
+
+describe("adding from the keyboard", () => {
+  it("Enter on the focused canvas adds the tool's object at the centre of the view; a taken centre says so", async () => {
+    await canvas().focus();
+    // far from the balls: a free place
+    for (let i = 0; i < 6; i++) await page.keyboard.press("Shift+ArrowUp");
+    await page.keyboard.press("4");
+    const before = (await ui()).selection;
+    await page.keyboard.press("Enter");
+    await poll(async () => (await ui()).selection?.kind).toBe("body");
+    const added = (await ui()).selection!;
+    expect(added).not.toEqual(before);
+    await poll(() =>
+      page
+        .getByRole("status")
+        .filter({ hasText: `Added disc "${added.id}"` })
+        .count(),
+    ).toBe(1);
+    await poll(() =>
+      page.getByRole("table", { name: "Bodies" }).getByLabel(`${added.id} x`, { exact: true }).count(),
+    ).toBe(1);
+    expect(await canvas().evaluate((el) => el === document.activeElement)).toBe(true);
+    // the same place again: taken by the disc just added
+    await page.keyboard.press("Enter");
+    const alert = page.getByRole("alert");
+    await poll(() => alert.textContent()).toContain(`would overlap body "${added.id}"`);
+    await screenshot(page, "keyboard-add-at-centre");
+    await page.keyboard.press("Control+z");
+    await poll(() =>
+      page.getByRole("table", { name: "Bodies" }).getByLabel(`${added.id} x`, { exact: true }).count(),
+    ).toBe(0);
+    await page.keyboard.press("1");
   });
 });

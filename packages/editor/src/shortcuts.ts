@@ -5,10 +5,11 @@
  * itself: keyboard.ts's ownsKey) or "canvas" (the scene view focused, where the arrows pan the view
  * instead of stepping through events).
  */
+import { addAtCentre, NEW_LINE_PX } from "./canvas/addAtCentre";
 import { nextObject, panByKey, placeOf, revealDisc, selectablesOf, zoomByKey } from "./canvas/viewKeys";
 import type { Size } from "./canvas/viewTransform";
 import type { Editor } from "./editor";
-import type { Tool } from "./store/uiStore";
+import { TOOL_KEYS } from "./tools";
 
 export type Where = "anywhere" | "page" | "canvas";
 
@@ -39,18 +40,6 @@ const oneOf =
   (...keys: string[]) =>
   (e: KeyboardEvent) =>
     bare(e) && keys.includes(e.key);
-
-/** The tools in the toolbar's order: the digit keys 1 to 8 pick them. */
-export const TOOL_KEYS: { tool: Tool; label: string }[] = [
-  { tool: "move", label: "Move" },
-  { tool: "velocity", label: "Velocity" },
-  { tool: "cue", label: "Cue" },
-  { tool: "disc", label: "Disc" },
-  { tool: "line", label: "Line" },
-  { tool: "ray", label: "Ray" },
-  { tool: "segment", label: "Segment" },
-  { tool: "point", label: "Point" },
-];
 
 /**
  * Selects the next (or previous) object, bodies then lines then points (viewKeys.nextObject), and
@@ -153,6 +142,13 @@ export const SHORTCUTS: Shortcut[] = [
     run: (c) => c.editor.ui.setState((s) => ({ path: !s.path })),
   },
   {
+    keys: ["Enter"],
+    what: `Add the current tool's object at the centre of the view: a disc, a point, or a horizontal line, ray or segment ${NEW_LINE_PX} px long across it (it is then selected)`,
+    where: "canvas",
+    matches: oneOf("Enter"),
+    run: (c) => void addAtCentre(c.editor),
+  },
+  {
     keys: ["Esc"],
     what: "Select nothing (during a drag: cancel it)",
     where: "canvas",
@@ -183,11 +179,6 @@ export const SHORTCUTS: Shortcut[] = [
     run: (c) => c.editor.ui.setState((s) => ({ help: !s.help })),
   },
 ];
-
-/** The tool key of `tool` ("1" for Move), for the toolbar's titles. */
-export function toolKey(tool: Tool): string {
-  return String(TOOL_KEYS.findIndex((t) => t.tool === tool) + 1);
-}
 
 /** The scene view's description: its own keys (from the table) and where the others are listed. */
 export function canvasKeys(): string {

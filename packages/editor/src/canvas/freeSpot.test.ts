@@ -2,7 +2,7 @@ import { describe, expect, it } from "vitest";
 import type { LineState, PointState } from "../engineTypes";
 import { F_R, F_X, F_Y, FRAME_STRIDE, type Frame } from "../remote/protocol";
 import { distanceToLine } from "./clip";
-import { FREE_SPOT_RINGS, freeSpot } from "./freeSpot";
+import { blockerAt, FREE_SPOT_RINGS, freeSpot } from "./freeSpot";
 
 function frame(discs: [number, number, number][], lines: LineState[] = [], points: PointState[] = []): Frame {
   const data = new Float64Array(discs.length * FRAME_STRIDE);
@@ -44,5 +44,21 @@ describe("freeSpot", () => {
   it("null when no ring has room", () => {
     const huge = frame([[0, 0, 10 * FREE_SPOT_RINGS]]);
     expect(freeSpot(huge, { kind: "disc", r: 1 }, [0, 0], 2.5)).toBeNull();
+  });
+
+  it("blockerAt names what is in the way of a place: a disc first, then a line or a point (for a new disc)", () => {
+    const wall: LineState = { id: "w", p1: [3, -5], p2: [3, 5], kind: "segment" };
+    const pin: PointState = { id: "p", p: [-3, 0] };
+    const f = frame([[0, 0, 1]], [wall], [pin]);
+    expect(blockerAt(f, { kind: "disc", r: 1 }, [0.5, 0], 0)).toEqual({ kind: "body", id: "d0" });
+    expect(blockerAt(f, { kind: "disc", r: 1 }, [3.5, 0], 0)).toEqual({ kind: "line", id: "w" });
+    expect(blockerAt(f, { kind: "disc", r: 1 }, [-3.5, 0], 0)).toEqual({ kind: "point", id: "p" });
+    // a disc that only touches is free; the gap asks for room
+    expect(blockerAt(f, { kind: "disc", r: 1 }, [0, 2], 0)).toBeNull();
+    expect(blockerAt(f, { kind: "disc", r: 1 }, [0, 2], 0.1)).toEqual({ kind: "body", id: "d0" });
+    // a point or a segment may cross lines and points, not discs
+    expect(blockerAt(f, { kind: "point" }, [3, 0], 0)).toBeNull();
+    expect(blockerAt(f, { kind: "segment", half: 4 }, [0, 0.5], 0)).toEqual({ kind: "body", id: "d0" });
+    expect(blockerAt(f, { kind: "segment", half: 4 }, [0, 3], 0)).toBeNull();
   });
 });

@@ -2,10 +2,12 @@
  * Where a new disc, point or horizontal segment can go near a given place (the centre of the view)
  * without touching anything in the frame: the place itself if it is free, else the nearest free
  * candidate on rings around it (ring k at k steps, 8k candidates). The engine refuses a disc that
- * overlaps a disc, a line or a point, so the Add buttons ask here first. Pure.
+ * overlaps a disc, a line or a point, so the Add buttons ask here first; blockerAt says what is in
+ * the way of a place (the keyboard's add at the centre, canvas/addAtCentre.ts, names it). Pure.
  */
 import type { Vec2 } from "../engineTypes";
 import { F_R, F_X, F_Y, FRAME_STRIDE, type Frame } from "../remote/protocol";
+import type { Selection } from "../store/uiStore";
 import { distanceToLine } from "./clip";
 
 export type NewShape = { kind: "disc"; r: number } | { kind: "point" } | { kind: "segment"; half: number };
@@ -15,8 +17,8 @@ export const FREE_SPOT_RINGS = 40;
 /** Clearance kept between the new object and anything else, as a share of the step. */
 const CLEARANCE = 0.1;
 
-/** True when `shape` at `c` keeps at least `gap` from every disc, line and point of `f`. */
-function fits(f: Frame, shape: NewShape, c: Vec2, gap: number): boolean {
+/** What `shape` at `c` would come within `gap` of in `f` (a disc first, then a line, then a point), or null. */
+export function blockerAt(f: Frame, shape: NewShape, c: Vec2, gap: number): NonNullable<Selection> | null {
   const d = f.data;
   const r = shape.kind === "disc" ? shape.r : 0;
   const p1: Vec2 = shape.kind === "segment" ? [c[0] - shape.half, c[1]] : c;
@@ -24,12 +26,19 @@ function fits(f: Frame, shape: NewShape, c: Vec2, gap: number): boolean {
   for (let i = 0; i < f.ids.length; i++) {
     const o = i * FRAME_STRIDE;
     const q: Vec2 = [d[o + F_X]!, d[o + F_Y]!];
-    if (distanceToLine(q, p1, p2, "segment") < d[o + F_R]! + r + gap) return false;
+    if (distanceToLine(q, p1, p2, "segment") < d[o + F_R]! + r + gap) return { kind: "body", id: f.ids[i]! };
   }
-  if (shape.kind !== "disc") return true; // lines and points may cross or touch each other
-  for (const l of f.lines) if (distanceToLine(c, l.p1, l.p2, l.kind) < r + gap) return false;
-  for (const p of f.points) if (Math.hypot(c[0] - p.p[0], c[1] - p.p[1]) < r + gap) return false;
-  return true;
+  if (shape.kind !== "disc") return null; // lines and points may cross or touch each other
+  for (const l of f.lines)
+    if (distanceToLine(c, l.p1, l.p2, l.kind) < r + gap) return { kind: "line", id: l.id };
+  for (const p of f.points)
+    if (Math.hypot(c[0] - p.p[0], c[1] - p.p[1]) < r + gap) return { kind: "point", id: p.id };
+  return null;
+}
+
+/** True when `shape` at `c` keeps at least `gap` from every disc, line and point of `f`. */
+function fits(f: Frame, shape: NewShape, c: Vec2, gap: number): boolean {
+  return blockerAt(f, shape, c, gap) === null;
 }
 
 /**

@@ -17,7 +17,8 @@ import { pan, type Size, toWorld } from "./viewTransform";
 
 export const CLICK_SLOP_PX = 4;
 const HIT_PX = 5;
-const NEW_DISC_PX = 18;
+/** A disc added by a click (or by Enter, addAtCentre.ts) looks this many pixels in radius. */
+export const NEW_DISC_PX = 18;
 
 type Gesture =
   | { kind: "pan"; last: [number, number]; view: View }

@@ -6,8 +6,8 @@
  * title names its digit key (shortcuts.ts).
  */
 import { useEditor, useUi } from "../EditorContext";
-import { toolKey } from "../shortcuts";
 import type { Tool } from "../store/uiStore";
+import { toolKey } from "../tools";
 import { formatNumber } from "./EditableCell";
 import { FocusKeptButton } from "./FocusKeptButton";
 
