@@ -1,8 +1,9 @@
 /**
  * Plain-data helpers of the Timeline's action list. The actions a Timeline keeps are frozen (deep:
  * the action, its vectors, its until), so the list it hands out cannot be edited behind its back;
- * toScene hands out unfrozen copies for the caller to edit. Also: deep equality of actions, the
- * keyframe setActions restarts from (after the last unchanged action). Argument checks: args.ts.
+ * toScene hands out unfrozen copies for the caller to edit. Also: deep equality of actions, where a
+ * new action list first differs from the old one (firstChange), and the keyframe setActions
+ * restarts from (after the last unchanged action). Argument checks: args.ts.
  */
 import type { Action, Until } from "../scene/types.js";
 import type { Keyframe } from "./keyframe.js";
@@ -37,20 +38,35 @@ export function sameUntil(a: Until, b: Until): boolean {
   return a.time === b.time && a.events === b.events;
 }
 
-/** The keyframe (holding a World) to recompute from when the action list `acts` becomes `sorted`:
- *  the last one before the first changed action, taken when only unchanged actions were applied
- *  (0 = from scratch). */
-export function restartKeyframe(
-  acts: readonly Action[],
-  keyframes: readonly Keyframe[],
-  sorted: readonly Action[],
-): number {
+/**
+ * Where the action list `acts` (in applying order: by time, then as given) and its replacement
+ * `sorted` first differ: the index `d` of the first action that is not the same, and its time `cut`
+ * (the earlier of the two lists' actions at d; Infinity when the lists are the same).
+ *
+ * Actions are compared by value (sameValue), not by identity: setActions checks the list it is
+ * given into fresh objects, and the lists it is given are usually copies (toScene, an undo entry,
+ * a structured clone from a worker), so identity would find every action changed and recompute the
+ * whole history. An action is plain data and the computation reads nothing else of it, so equal
+ * values compute the same history; numbers are compared with Object.is (-0 and 0 differ), so no
+ * difference the computation could see is missed. The lists are compared position by position in
+ * applying order: actions at one instant apply in the order given, so swapping two of them is a
+ * change at that instant, while a reordering the applying order undoes (actions at different times)
+ * is none. An `until` is part of its action's value.
+ */
+export function firstChange(acts: readonly Action[], sorted: readonly Action[]): { d: number; cut: number } {
   let d = 0;
   while (d < sorted.length && d < acts.length && sameValue(sorted[d], acts[d])) d++;
   const cut = Math.min(
     sorted[d]?.time ?? Number.POSITIVE_INFINITY,
     acts[d]?.time ?? Number.POSITIVE_INFINITY,
   );
+  return { d, cut };
+}
+
+/** The keyframe (holding a World) to recompute from when the first change (firstChange) is action
+ *  `d`, at time `cut`: the last one before it, taken when only unchanged actions were applied
+ *  (0 = from scratch). */
+export function restartKeyframe(keyframes: readonly Keyframe[], d: number, cut: number): number {
   for (let k = keyframes.length - 1; k > 0; k--) {
     const kf = keyframes[k] as Keyframe;
     if (kf.actionCount <= d && kf.time < cut) return k;

@@ -8,12 +8,14 @@
  *   core is as it was (undo.ts) and an error naming a later action it made invalid says so. Returns
  *   the headless instant record to keep (null with history).
  * - actionsOnCore(c, sorted, order, fresh): replaces the action list (sorted in apply order; `order`
- *   maps each to its index in the caller's list, for messages), recomputing from the keyframe before
- *   the first change, or from scratch on a fresh core; returns the core to use. Atomic likewise.
+ *   maps each to its index in the caller's list, for messages). The history up to the first change
+ *   is kept: when it lies after the horizon (or at it, where an apply would append) nothing is cut
+ *   and the computation goes on from the horizon; otherwise it recomputes from the keyframe before
+ *   the first change, or from scratch on a fresh core. Returns the core to use. Atomic likewise.
  */
 import { SceneError } from "../scene/errors.js";
 import type { Action } from "../scene/types.js";
-import { restartKeyframe } from "./actionData.js";
+import { firstChange, restartKeyframe } from "./actionData.js";
 import { restoreKeyframe } from "./checkpoint.js";
 import type { TimelineCore } from "./core.js";
 import { goalFrom, reopenGoals } from "./goals.js";
@@ -101,6 +103,21 @@ export function applyToCore(
   return instant;
 }
 
+/**
+ * Whether the history computed so far holds for a new action list whose first change is action `d`
+ * at time `cut` (firstChange): every applied action is unchanged, and the change lies after the
+ * horizon, or at it where an apply would append there (core.appendsAt: the last entry logged is
+ * before it or that instant's action group, which the changed actions then join, as they would
+ * when building from scratch). The computation up to the horizon did not depend on the actions after
+ * it (splitting a computation at an action's time changes nothing), so computing on from there
+ * gives what building from scratch gives. The goals reconcile themselves: an until met only
+ * because no action was left (core.dormant) is revived by the next group applied, and one kept open
+ * by an action since removed is found met by the next drive.
+ */
+function keepsHistory(c: TimelineCore, d: number, cut: number): boolean {
+  return d >= c.applied && (cut > c.horizon || (cut === c.horizon && c.appendsAt(cut)));
+}
+
 export function actionsOnCore(
   c: TimelineCore,
   sorted: Action[],
@@ -113,8 +130,26 @@ export function actionsOnCore(
   // the earliest. The next apply() names them by their index in `actions` again.
   const pathOf = (k: number) => `actions[${order[k]}]`;
   checkKeptActions(c, sorted, order);
+  const { d, cut } = firstChange(c.acts, sorted);
+  if (keepsHistory(c, d, cut)) {
+    // Only computing forward (or nothing): what it may change is what an apply at the horizon may.
+    const undo = saveCore(c, c.records.length, {
+      fromKeyframe: c.keyframes.length - 1,
+      worldReplaced: false,
+      forward: true,
+    });
+    try {
+      c.acts = sorted;
+      c.pathOf = pathOf;
+      driveAfterSet(c, oldHorizon);
+    } catch (e) {
+      undo();
+      throw e;
+    }
+    return c;
+  }
   // after forgetBefore, keyframe 0 is the start of the kept history: a restart point, not scratch
-  const k = c.history ? restartKeyframe(c.acts, c.keyframes, sorted) : 0;
+  const k = c.history ? restartKeyframe(c.keyframes, d, cut) : 0;
   if (k > 0 || forgot(c)) {
     const undo = saveCore(c, (c.keyframes[k] as Keyframe).record, {
       fromKeyframe: k,
@@ -125,12 +160,7 @@ export function actionsOnCore(
       c.acts = sorted;
       c.pathOf = pathOf;
       reopenGoals(c);
-      // A compute: false timeline stays at the keyframe (as one rebuilt from scratch stays at 0),
-      // its actions due there applied: its caller computes further when it needs to.
-      if (c.eager) {
-        c.goals.push({ tLimit: oldHorizon, eLimit: INF });
-        c.drive(INF, null);
-      } else c.applyDue();
+      driveAfterSet(c, oldHorizon);
     } catch (e) {
       undo();
       throw e;
@@ -140,10 +170,19 @@ export function actionsOnCore(
   const core = fresh();
   core.acts = sorted;
   core.pathOf = pathOf;
-  if (core.eager && oldHorizon > 0) core.goals.push({ tLimit: oldHorizon, eLimit: INF });
   // compute: false applies only the actions at time 0 (with the untils option, their untils
   // wait for a prolong: they are not computed here)
-  if (core.eager) core.drive(INF, null);
-  else core.applyDue();
+  driveAfterSet(core, oldHorizon > 0 ? oldHorizon : null);
   return core;
+}
+
+/** After setActions put the new list in place: a compute: true core computes up to `horizon` (the
+ *  old one; null: no goal) and on, until every action is applied and their untils are met; a
+ *  compute: false one stays where it is (the keyframe restored, 0 for a fresh core, or the horizon
+ *  it kept), its actions due there applied: its caller computes further when it needs to. */
+function driveAfterSet(c: TimelineCore, horizon: number | null): void {
+  if (c.eager) {
+    if (horizon !== null) c.goals.push({ tLimit: horizon, eLimit: INF });
+    c.drive(INF, null);
+  } else c.applyDue();
 }

@@ -17,7 +17,7 @@
  */
 import { SceneError } from "../scene/errors.js";
 import type { Action } from "../scene/types.js";
-import { sameValue } from "./actionData.js";
+import { firstChange } from "./actionData.js";
 import { show } from "./args.js";
 import type { TimelineCore } from "./core.js";
 import { historyStart } from "./forget.js";
@@ -86,11 +86,9 @@ export function checkKeptApply(c: TimelineCore, insertAt: number, t: number): vo
 export function checkKeptActions(c: TimelineCore, sorted: readonly Action[], order: readonly number[]): void {
   if (!forgot(c)) return;
   const acts = c.acts;
-  let d = 0;
-  while (d < sorted.length && d < acts.length && sameValue(sorted[d], acts[d])) d++;
+  const { d, cut } = firstChange(acts, sorted);
   if (d === sorted.length && d === acts.length) return;
   const inNew = sorted[d]?.time ?? Number.POSITIVE_INFINITY;
-  const cut = Math.min(inNew, acts[d]?.time ?? Number.POSITIVE_INFINITY);
   if (editable(c, d, cut)) return;
   if (inNew === cut) throw new SceneError(`actions[${order[d]}].time`, refusal(c, cut));
   throw new SceneError(

@@ -99,14 +99,33 @@ describe("a future action under compute: false", () => {
     ]);
   });
 
-  it("setActions only schedules it: the horizon goes back to the restart keyframe, the prolong checks it", () => {
+  it("setActions only schedules it, keeping the history computed before it; the prolong checks it", () => {
+    // Until session 22 the horizon went back to the keyframe setActions restarted from (0 here),
+    // discarding the history computed up to 5 although nothing in it changed.
     const tl = new Timeline({ g: 0, compute: false });
     tl.setActions([moving]);
     tl.prolongTo(5);
+    const before = tl.eventsBetween(0, 5);
+    const at4 = tl.stateAt(4);
     tl.setActions([moving, spawn]);
-    expect(tl.horizon).toBe(0);
+    expect(tl.horizon).toBe(5);
     expect(tl.actions).toHaveLength(2);
+    expect(tl.eventsBetween(0, 5)).toStrictEqual(before);
+    expect(tl.stateAt(4)).toStrictEqual(at4);
     expect(() => tl.prolongTo(20)).toThrow('actions[1]: body "b" would overlap body "a" at time 10');
     expect(tl.horizon).toBe(10);
+  });
+
+  it("setActions with a change before the horizon still goes back to the keyframe before it", () => {
+    const tl = new Timeline({ g: 0, compute: false });
+    tl.setActions([moving]);
+    tl.prolongTo(5);
+    tl.setActions([moving, { ...spawn, time: 3, x: 20 }]);
+    expect(tl.horizon).toBe(0); // the keyframe after the actions at 0
+    tl.prolongTo(5);
+    expect(tl.stateAt(5).bodies.map((b) => [b.id, b.x])).toEqual([
+      ["a", 5],
+      ["b", 20],
+    ]);
   });
 });

@@ -155,10 +155,14 @@ export class Timeline extends TimelineReader {
     this.changed();
   }
 
-  /** Replace the whole action list (undo/redo, paste), atomically, recomputing up to at least the
-   *  current horizon. Only the part after the first changed action is recomputed (from the last World
-   *  keyframe before it). A `compute: false` timeline computes nothing further: its horizon goes
-   *  back to that keyframe (to 0 without history or keyframe), for the caller to prolong. A refused action throws SceneError naming `actions[i]` (its index in the
+  /** Replace the whole action list (undo/redo, paste), atomically, computing up to at least the
+   *  current horizon. The history is kept up to the first action that differs from the current list
+   *  (compared by value, in applying order: time, then as given): when that lies after the horizon
+   *  (or at it, joining that instant's actions, unless events they caused were computed) nothing is
+   *  cut and the computation goes on from the horizon, as apply's would; otherwise it is recomputed
+   *  from the last World keyframe before it. A `compute: false` timeline computes nothing further:
+   *  its horizon stays, or goes back to that keyframe (to 0 without history or keyframe), for the
+   *  caller to prolong. A refused action throws SceneError naming `actions[i]` (its index in the
    *  list given, also when a later prolong applies it), a Zeno state before the horizon
    *  SimulationError; either way nothing changes. */
   setActions(actions: readonly Action[]): void {
