@@ -2,6 +2,7 @@
  * Field readers for scene validation: each reads one field of a plain object, checks it and returns
  * the normalized value, or throws SceneError naming the field's path and the reason.
  */
+import { given } from "../sim/refusalText.js";
 import { SceneError } from "./errors.js";
 import type { LineKind, Vec2 } from "./types.js";
 
@@ -15,15 +16,8 @@ export function join(path: string, key: string): string {
   return path === "" ? key : `${path}.${key}`;
 }
 
-/** A value as a refusal names it: "-2", "the string \"1\"", "null", "an array of 3", "an object". */
-export function given(v: unknown): string {
-  if (typeof v === "string") return `the string ${JSON.stringify(v.length > 40 ? `${v.slice(0, 40)}…` : v)}`;
-  if (Array.isArray(v)) return `an array of ${v.length}`;
-  if (typeof v === "object" && v !== null) return "an object";
-  return String(v);
-}
-
-/** A refusal of value v of field `path`: the reason, and what was given. */
+/** A refusal of value v of field `path`: the reason, and what was given (given: sim/refusalText.ts,
+ *  shared with the World's refusals). */
 function refuse(path: string, reason: string, v: unknown): SceneError {
   return new SceneError(path, `${reason} (got ${given(v)})`);
 }

@@ -14,6 +14,7 @@
 import { positionAt, velocityAt } from "../physics/motion.js";
 import { requireStarted } from "./bodyState.js";
 import type { BodyStore } from "./bodyStore.js";
+import { given } from "./refusalText.js";
 
 /**
  * All bodies at one time, one entry per body in each array, sorted by id: body k is `ids[k]` at
@@ -42,8 +43,8 @@ export const ARRAY_FIELDS = ["x", "y", "vx", "vy", "ax", "ay", "r", "m", "mu"] a
 /** Why `into` cannot be reused (null: it can, or it is undefined), for the caller's own error. */
 export function intoProblem(into: unknown): string | null {
   if (into === undefined) return null;
-  const got = into === null ? "null" : typeof into;
-  if (typeof into !== "object" || into === null) return `must be a previous result or undefined (got ${got})`;
+  if (typeof into !== "object" || into === null)
+    return `must be a previous result or undefined (got ${given(into)})`;
   const o = into as Record<string, unknown>;
   if (!Array.isArray(o.ids)) return "must be a previous result: its ids is not an array";
   for (const f of ARRAY_FIELDS)

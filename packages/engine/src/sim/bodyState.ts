@@ -8,6 +8,7 @@
 import { positionAt, velocityAt } from "../physics/motion.js";
 import type { BodyStore } from "./bodyStore.js";
 import { ChapgameError } from "./errors.js";
+import { given, quoteId } from "./refusalText.js";
 import type { BodyMotion, BodyState } from "./types.js";
 
 /** Throws ChapgameError naming `t` when t is before slot s's current motion started (or NaN). */
@@ -15,7 +16,7 @@ export function requireStarted(b: BodyStore, s: number, t: number): void {
   if (!(t >= (b.mot[s * 8 + 0] as number)))
     throw new ChapgameError(
       "t",
-      `must be a time at or after ${b.ids[s]}'s last event or edit (t0 = ${b.mot[s * 8 + 0]}; got ${t}): earlier states are not kept by a World (a Timeline keeps them)`,
+      `must be a time at or after body ${quoteId(b.ids[s] as string)}'s last event or edit (t0 = ${b.mot[s * 8 + 0]}; got ${given(t)}): earlier states are not kept by a World (a Timeline keeps them)`,
     );
 }
 

@@ -7,6 +7,7 @@
 import { type MotionLaw, motionLaw, positionAt } from "../physics/motion.js";
 import { ChapgameError } from "./errors.js";
 import { Placement } from "./placement.js";
+import { quoteId, refused } from "./refusalText.js";
 import type { BodyInit, BodyMotionInit, BodyPatch, Vec2 } from "./types.js";
 import {
   BODY_FIELDS,
@@ -39,7 +40,7 @@ export class Edits extends Placement {
   addBody(id: string, init: BodyInit): void {
     requireId("id", id);
     requireFields("init", init, BODY_FIELDS, BODY_STATE_EXTRAS);
-    if (this.index.has(id)) throw new ChapgameError("id", `a body with id '${id}' already exists`);
+    if (this.index.has(id)) throw new ChapgameError("id", `a body with id ${quoteId(id)} already exists`);
     const x = requireBounded("x", init.x);
     const y = requireBounded("y", init.y);
     const r = requireRadius("r", init.r);
@@ -78,9 +79,9 @@ export class Edits extends Placement {
   private placeMotion(id: string, init: BodyMotionInit, checkOverlap: boolean): void {
     requireId("id", id);
     requireFields("init", init, MOTION_FIELDS, MOTION_EXTRAS);
-    if (this.index.has(id)) throw new ChapgameError("id", `a body with id '${id}' already exists`);
+    if (this.index.has(id)) throw new ChapgameError("id", `a body with id ${quoteId(id)} already exists`);
     const t0 = requireFinite("t0", init.t0);
-    if (t0 > this.now) throw new ChapgameError("t0", `must be <= the world's time ${this.now}`);
+    if (t0 > this.now) throw refused("t0", `must be <= the world's time ${this.now}`, t0);
     // A motion the World computed (a Timeline restart) may have left the bounds edits keep to
     // (gravity speeds a body up without limit): only finiteness is required of it.
     const x0 = requireFinite("x0", init.x0);
@@ -199,8 +200,8 @@ export class Edits extends Placement {
   protected slotOf(id: string): number {
     const s = this.index.get(id);
     if (s === undefined) {
-      requireId("id", id); // a number or an object: say so, not "no body with id '1'"
-      throw new ChapgameError("id", `no body with id '${id}'`);
+      requireId("id", id); // a number or an object: say so, not 'no body with id "1"'
+      throw new ChapgameError("id", `no body with id ${quoteId(id)}`);
     }
     return s;
   }
@@ -251,8 +252,9 @@ function checkDerivedFields(init: BodyMotionInit): void {
     ["tStop", derived.tStop, restoredLaw.tEnd],
   ] as const)
     if (given !== undefined && given !== want)
-      throw new ChapgameError(
+      throw refused(
         path,
-        `is derived from vx, vy, mu and the World's g and gravity (here ${want}), not set: leave it out or pass motion(id)'s own value (got ${String(given)})`,
+        `is derived from vx, vy, mu and the World's g and gravity (here ${want}), not set: leave it out or pass motion(id)'s own value`,
+        given,
       );
 }

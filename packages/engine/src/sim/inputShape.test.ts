@@ -24,13 +24,19 @@ function oneDisc(): World {
 }
 
 describe("World input objects", () => {
-  it("a lookup given an id that is not a string says so, not 'no body with id 1' (audit of session 20)", () => {
+  it("a lookup given an id that is not a string says so, not 'no body with id \"1\"' (audit of session 20)", () => {
     const w = oneDisc();
     w.addBody("1", { x: 5, y: 0, r: 1, m: 1 });
     w.addLine("1", [0, -5], [1, -5], "line");
     w.addPoint("1", [0, 5]);
-    const bad = [1, { id: "1" }, null, undefined] as unknown as string[];
-    for (const id of bad) {
+    const bad: [unknown, string][] = [
+      [1, "1"],
+      [{ id: "1" }, "an object"],
+      [null, "null"],
+      [undefined, "undefined"],
+    ];
+    for (const [value, shown] of bad) {
+      const id = value as string;
       for (const call of [
         () => w.body(id),
         () => w.motion(id),
@@ -42,7 +48,7 @@ describe("World input objects", () => {
         () => w.removePoint(id),
       ]) {
         const e = refusal(call);
-        expect(e.message).toBe("id: must be a non-empty string");
+        expect(e.message).toBe(`id: must be a non-empty string (got ${shown})`);
       }
     }
     expect(w.hasBody("1") && w.hasLine("1") && w.hasPoint("1")).toBe(true);

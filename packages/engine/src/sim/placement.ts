@@ -7,6 +7,7 @@
 import { OVERLAP_REL } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
 import { distanceToLine, type Line, type LineKind, makeLine, type Point } from "./obstacles.js";
+import { quoteId } from "./refusalText.js";
 import { Simulator } from "./simulator.js";
 import type { LineState, PointState, Vec2 } from "./types.js";
 import { requireFields, requireId, requireLineDirection, requireLineKind, requireVec } from "./validate.js";
@@ -34,7 +35,7 @@ export class Placement extends Simulator {
         distanceToLine(line, this.xAt(s, this.now), this.yAt(s, this.now)) <
         (this.store.r[s] as number) * KEEP,
     );
-    if (hit !== undefined) throw new ChapgameError(field, `the line would overlap body '${hit}'`);
+    if (hit !== undefined) throw new ChapgameError(field, `the line would overlap body ${quoteId(hit)}`);
     return line;
   }
 
@@ -46,7 +47,7 @@ export class Placement extends Simulator {
       const r = (this.store.r[s] as number) * KEEP;
       return dx * dx + dy * dy < r * r;
     });
-    if (hit !== undefined) throw new ChapgameError("p", `the point would lie inside body '${hit}'`);
+    if (hit !== undefined) throw new ChapgameError("p", `the point would lie inside body ${quoteId(hit)}`);
     return { id, x, y };
   }
 
@@ -98,14 +99,14 @@ export class Placement extends Simulator {
     if (this.index.size < LINEAR_SCAN_BODIES) {
       for (const s of this.index.values()) test(s);
     } else this.forEachNear(x, y, r, test);
-    if (body !== undefined) throw new ChapgameError(field, `the body would overlap body '${body}'`);
+    if (body !== undefined) throw new ChapgameError(field, `the body would overlap body ${quoteId(body)}`);
     const rk = r * keep;
     const line = firstById(this.lineList.filter((l) => distanceToLine(l, x, y) < rk));
-    if (line) throw new ChapgameError(field, `the body would overlap line '${line.id}'`);
+    if (line) throw new ChapgameError(field, `the body would overlap line ${quoteId(line.id)}`);
     const point = firstById(
       this.pointList.filter((p) => (p.x - x) * (p.x - x) + (p.y - y) * (p.y - y) < rk * rk),
     );
-    if (point) throw new ChapgameError(field, `the body would overlap point '${point.id}'`);
+    if (point) throw new ChapgameError(field, `the body would overlap point ${quoteId(point.id)}`);
   }
 
   // ---- obstacles ----------------------------------------------------------------------------
@@ -129,7 +130,7 @@ export class Placement extends Simulator {
    */
   addLine(id: string, p1: Vec2, p2: Vec2, kind: LineKind): void {
     requireId("id", id);
-    if (this.hasLine(id)) throw new ChapgameError("id", `a line with id '${id}' already exists`);
+    if (this.hasLine(id)) throw new ChapgameError("id", `a line with id ${quoteId(id)} already exists`);
     const line = this.checkedLine(id, p1, p2, kind);
     this.lineList = [...this.lineList, line];
     this.markDirty();
@@ -144,7 +145,7 @@ export class Placement extends Simulator {
   updateLine(id: string, patch: { p1?: Vec2; p2?: Vec2; kind?: LineKind }): void {
     requireId("id", id);
     const i = this.lineList.findIndex((l) => l.id === id);
-    if (i < 0) throw new ChapgameError("id", `no line with id '${id}'`);
+    if (i < 0) throw new ChapgameError("id", `no line with id ${quoteId(id)}`);
     // (a LineState's id may come back with it; the id argument names the line)
     requireFields("patch", patch, ["p1", "p2", "kind"], ["id"]);
     const old = this.lineList[i] as Line;
@@ -168,7 +169,7 @@ export class Placement extends Simulator {
   /** Remove a line at the current time. Throws ChapgameError naming `id` when there is no such line. */
   removeLine(id: string): void {
     requireId("id", id);
-    if (!this.hasLine(id)) throw new ChapgameError("id", `no line with id '${id}'`);
+    if (!this.hasLine(id)) throw new ChapgameError("id", `no line with id ${quoteId(id)}`);
     this.lineList = this.lineList.filter((l) => l.id !== id);
     this.markDirty();
   }
@@ -180,7 +181,7 @@ export class Placement extends Simulator {
    */
   addPoint(id: string, p: Vec2): void {
     requireId("id", id);
-    if (this.hasPoint(id)) throw new ChapgameError("id", `a point with id '${id}' already exists`);
+    if (this.hasPoint(id)) throw new ChapgameError("id", `a point with id ${quoteId(id)} already exists`);
     this.pointList = [...this.pointList, this.checkedPoint(id, p)];
     this.markDirty();
   }
@@ -188,7 +189,7 @@ export class Placement extends Simulator {
   /** Move a point to `p` at the current time. Checked as addPoint; ChapgameError naming `id` when there is no such point. */
   updatePoint(id: string, p: Vec2): void {
     requireId("id", id);
-    if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id '${id}'`);
+    if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id ${quoteId(id)}`);
     const point = this.checkedPoint(id, p);
     this.pointList = this.pointList.map((q) => (q.id === id ? point : q));
     this.markDirty();
@@ -197,7 +198,7 @@ export class Placement extends Simulator {
   /** Remove a point at the current time. Throws ChapgameError naming `id` when there is no such point. */
   removePoint(id: string): void {
     requireId("id", id);
-    if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id '${id}'`);
+    if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id ${quoteId(id)}`);
     this.pointList = this.pointList.filter((q) => q.id !== id);
     this.markDirty();
   }

@@ -48,13 +48,13 @@ describe("refused placements name the smallest id", () => {
         for (const opt of [{}, { broadPhase: false }]) {
           const w = scene(fillers, reversed, opt);
           expect(refusal(() => w.addBody("new", { x: 0, y: 0, r: 1, m: 1 }))).toBe(
-            "x: the body would overlap body 'c'",
+            'x: the body would overlap body "c"',
           );
           expect(refusal(() => w.addLine("cut", [-5, 0], [5, 0], "segment"))).toBe(
-            "p1: the line would overlap body 'c'",
+            'p1: the line would overlap body "c"',
           );
           expect(refusal(() => w.addBody("wide", { x: -15, y: 0, r: 3.5, m: 1 }))).toBe(
-            "x: the body would overlap line 'a'",
+            'x: the body would overlap line "a"',
           );
         }
     });
@@ -67,13 +67,13 @@ describe("a refused update names the field that made the overlap", () => {
     w.addBody("a", { x: 0, y: 0, r: 1, m: 1 });
     w.addBody("b", { x: 5, y: 0, r: 1, m: 1 });
     w.addLine("wall", [-10, 3], [10, 3], "segment");
-    expect(refusal(() => w.updateBody("a", { r: 4.5 }))).toBe("r: the body would overlap body 'b'");
-    expect(refusal(() => w.updateBody("a", { r: 3.5 }))).toBe("r: the body would overlap line 'wall'");
-    expect(refusal(() => w.updateBody("a", { y: 2.5 }))).toBe("y: the body would overlap line 'wall'");
-    expect(refusal(() => w.updateBody("a", { x: 4, r: 1 }))).toBe("x: the body would overlap body 'b'");
+    expect(refusal(() => w.updateBody("a", { r: 4.5 }))).toBe('r: the body would overlap body "b"');
+    expect(refusal(() => w.updateBody("a", { r: 3.5 }))).toBe('r: the body would overlap line "wall"');
+    expect(refusal(() => w.updateBody("a", { y: 2.5 }))).toBe('y: the body would overlap line "wall"');
+    expect(refusal(() => w.updateBody("a", { x: 4, r: 1 }))).toBe('x: the body would overlap body "b"');
     // a state passed back whole names what changed in it (review)
     expect(refusal(() => w.updateBody("a", { ...w.body("a"), r: 4.5 }))).toBe(
-      "r: the body would overlap body 'b'",
+      'r: the body would overlap body "b"',
     );
     expect(w.body("a")).toMatchObject({ x: 0, y: 0, r: 1 });
   });
@@ -86,16 +86,16 @@ describe("a refused updateLine names the field that made the overlap", () => {
     const w = new World({ g: 0 });
     w.addBody("a", { x: 20, y: 0, r: 1, m: 1 });
     w.addLine("l", [0, 0], [10, 0], "segment");
-    expect(refusal(() => w.updateLine("l", { kind: "line" }))).toBe("kind: the line would overlap body 'a'");
-    expect(refusal(() => w.updateLine("l", { p2: [30, 0] }))).toBe("p2: the line would overlap body 'a'");
-    expect(refusal(() => w.updateLine("l", { p1: [30, 0] }))).toBe("p1: the line would overlap body 'a'");
+    expect(refusal(() => w.updateLine("l", { kind: "line" }))).toBe('kind: the line would overlap body "a"');
+    expect(refusal(() => w.updateLine("l", { p2: [30, 0] }))).toBe('p2: the line would overlap body "a"');
+    expect(refusal(() => w.updateLine("l", { p1: [30, 0] }))).toBe('p1: the line would overlap body "a"');
     expect(refusal(() => w.updateLine("l", { p1: [0, 0], p2: [30, 0] }))).toBe(
-      "p2: the line would overlap body 'a'",
+      'p2: the line would overlap body "a"',
     );
     // a LineState passed back whole names what changed in it
     const [state] = w.lines();
     expect(refusal(() => w.updateLine("l", { ...state, kind: "ray" }))).toBe(
-      "kind: the line would overlap body 'a'",
+      'kind: the line would overlap body "a"',
     );
     expect(w.lines()).toEqual([{ id: "l", p1: [0, 0], p2: [10, 0], kind: "segment" }]);
   });

@@ -38,12 +38,12 @@ describe("touching with round-off is allowed at every edit", () => {
     const w = new World({ g: 0 });
     w.addBody("a", { x: 0, y: 0, r: 1, m: 1 });
     expect(() => w.addBody("b", { x: 2 * (1 - 2 * OVERLAP_REL), y: 0, r: 1, m: 1 })).toThrow(
-      "x: the body would overlap body 'a'",
+      'x: the body would overlap body "a"',
     );
     expect(() => w.addLine("l", [1 - 2 * OVERLAP_REL, -1], [1 - 2 * OVERLAP_REL, 1], "line")).toThrow(
-      "the line would overlap body 'a'",
+      'the line would overlap body "a"',
     );
-    expect(() => w.addPoint("p", [1 - 2 * OVERLAP_REL, 0])).toThrow("the point would lie inside body 'a'");
+    expect(() => w.addPoint("p", [1 - 2 * OVERLAP_REL, 0])).toThrow('the point would lie inside body "a"');
   });
 
   it("a line or a point touching a disc to within round-off is accepted, and the disc bounces at once", () => {

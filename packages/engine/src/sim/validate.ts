@@ -1,6 +1,7 @@
 /**
  * Input checks of the World's edits. Each check throws ChapgameError naming the field and the
- * reason, before anything is changed.
+ * reason, with what was given (" (got …)", refusalText.ts, as the scene's checks say it), before
+ * anything is changed.
  */
 import {
   FIELD_MIN,
@@ -12,15 +13,16 @@ import {
   TIME_MAX,
 } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
+import { given, refused } from "./refusalText.js";
 import type { Vec2 } from "./types.js";
 
 export function requireId(path: string, id: unknown): string {
-  if (typeof id !== "string" || id.length === 0) throw new ChapgameError(path, "must be a non-empty string");
+  if (typeof id !== "string" || id.length === 0) throw refused(path, "must be a non-empty string", id);
   return id;
 }
 
 export function requireFinite(path: string, v: unknown): number {
-  if (typeof v !== "number" || !Number.isFinite(v)) throw new ChapgameError(path, "must be a finite number");
+  if (typeof v !== "number" || !Number.isFinite(v)) throw refused(path, "must be a finite number", v);
   return v;
 }
 
@@ -33,7 +35,7 @@ export function requireBounded(path: string, v: unknown): number {
   if (Math.abs(x) > MAGNITUDE_MAX)
     throw new ChapgameError(
       path,
-      `must be at most ${MAGNITUDE_MAX} in size (got ${x}): larger values overflow the contact polynomials`,
+      `must be at most ${MAGNITUDE_MAX} in size (got ${given(x)}): larger values overflow the contact polynomials`,
     );
   return x;
 }
@@ -61,7 +63,7 @@ export function requireVelocity(path: string, v: unknown): number {
   if (x !== 0 && Math.abs(x) < SPEED_MIN)
     throw new ChapgameError(
       path,
-      `must be 0 or at least ${SPEED_MIN} in size (got ${x}): smaller speeds underflow the contact polynomials`,
+      `must be 0 or at least ${SPEED_MIN} in size (got ${given(x)}): smaller speeds underflow the contact polynomials`,
     );
   return x;
 }
@@ -72,7 +74,7 @@ export function requireRadius(path: string, v: unknown): number {
   if (r < RADIUS_MIN || r > MAGNITUDE_MAX)
     throw new ChapgameError(
       path,
-      `must be between ${RADIUS_MIN} and ${MAGNITUDE_MAX} (got ${r}): the contact polynomials would under- or overflow`,
+      `must be between ${RADIUS_MIN} and ${MAGNITUDE_MAX} (got ${given(r)}): the contact polynomials would under- or overflow`,
     );
   return r;
 }
@@ -101,31 +103,31 @@ function requireFieldMin(path: string, x: number): number {
   if (x !== 0 && Math.abs(x) < FIELD_MIN)
     throw new ChapgameError(
       path,
-      `must be 0 or at least ${FIELD_MIN} in size (got ${x}): smaller fields underflow the contact polynomials`,
+      `must be 0 or at least ${FIELD_MIN} in size (got ${given(x)}): smaller fields underflow the contact polynomials`,
     );
   return x;
 }
 
 function requirePositiveFinite(path: string, v: unknown): number {
   if (typeof v !== "number" || !Number.isFinite(v) || v <= 0)
-    throw new ChapgameError(path, "must be a positive finite number");
+    throw refused(path, "must be a positive finite number", v);
   return v;
 }
 
 function requireNonNegativeFinite(path: string, v: unknown): number {
   if (typeof v !== "number" || !Number.isFinite(v) || v < 0)
-    throw new ChapgameError(path, "must be a finite number >= 0");
+    throw refused(path, "must be a finite number >= 0", v);
   return v;
 }
 
 /** A mass: between MASS_MIN and MASS_MAX, or +Infinity (immovable by collisions; see tolerances.ts). */
 export function requireMass(path: string, v: unknown): number {
   if (typeof v !== "number" || Number.isNaN(v) || v <= 0)
-    throw new ChapgameError(path, "must be a positive number (or Infinity)");
+    throw refused(path, "must be a positive number (or Infinity)", v);
   if (v !== Number.POSITIVE_INFINITY && !(v >= MASS_MIN && v <= MASS_MAX))
     throw new ChapgameError(
       path,
-      `must be between ${MASS_MIN} and ${MASS_MAX}, or Infinity (got ${v}): the collision response's products would over- or underflow`,
+      `must be between ${MASS_MIN} and ${MASS_MAX}, or Infinity (got ${given(v)}): the collision response's products would over- or underflow`,
     );
   return v;
 }
@@ -139,21 +141,20 @@ export function requireTime(path: string, v: unknown): number {
   if (Math.abs(t) > TIME_MAX)
     throw new ChapgameError(
       path,
-      `must be at most ${TIME_MAX} in size (got ${t}): later positions would leave the range of lengths (${MAGNITUDE_MAX})`,
+      `must be at most ${TIME_MAX} in size (got ${given(t)}): later positions would leave the range of lengths (${MAGNITUDE_MAX})`,
     );
   return t;
 }
 
 /** A pair [x, y] of lengths or rates, each checked by requireBounded. */
 export function requireVec(path: string, v: unknown): Vec2 {
-  if (!Array.isArray(v) || v.length !== 2)
-    throw new ChapgameError(path, "must be a pair of finite numbers [x, y]");
+  if (!Array.isArray(v) || v.length !== 2) throw refused(path, "must be a pair of finite numbers [x, y]", v);
   return [requireBounded(`${path}[0]`, v[0]), requireBounded(`${path}[1]`, v[1])];
 }
 
 export function requireLineKind(path: string, v: unknown): "line" | "ray" | "segment" {
   if (v !== "line" && v !== "ray" && v !== "segment")
-    throw new ChapgameError(path, `must be "line", "ray" or "segment" (got ${JSON.stringify(v)})`);
+    throw refused(path, 'must be "line", "ray" or "segment"', v);
   return v;
 }
 
@@ -162,7 +163,7 @@ export function checkFrictionGravity(path: string, mu: number, gravity: Vec2): v
   if (mu > 0 && (gravity[0] !== 0 || gravity[1] !== 0))
     throw new ChapgameError(
       path,
-      "must be 0 while the gravity field is non-zero (friction under gravity is not polynomial motion)",
+      `must be 0 while the gravity field is non-zero (got ${given(mu)}): friction under gravity is not polynomial motion`,
     );
 }
 
@@ -180,7 +181,7 @@ export function requireFields(
   ignored: readonly string[] = [],
 ): void {
   if (typeof v !== "object" || v === null || Array.isArray(v))
-    throw new ChapgameError(path, `must be an object with fields ${known.join(", ")}`);
+    throw refused(path, `must be an object with fields ${known.join(", ")}`, v);
   for (const key of Object.keys(v))
     if (!known.includes(key) && !ignored.includes(key))
       throw new ChapgameError(`${path}.${key}`, `is not a field here (known: ${known.join(", ")})`);

@@ -11,6 +11,7 @@ import { type BodyArrays, intoProblem, SortedSlots, writeWorldArrays } from "./b
 import { motionOf, stateOf } from "./bodyState.js";
 import { Edits } from "./edits.js";
 import { ChapgameError, SimulationError } from "./errors.js";
+import { refused } from "./refusalText.js";
 import type {
   AdvanceLimits,
   AdvanceResult,
@@ -142,8 +143,7 @@ export class World extends Edits {
    * grid an edit sees) and is kept until a change could move it, so a loop of queries pays once.
    */
   private requireNoEventBefore(t: number): void {
-    if (typeof t !== "number" || t === INF || t === -INF)
-      throw new ChapgameError("t", `must be a finite time (got ${String(t)})`);
+    if (typeof t !== "number" || t === INF || t === -INF) throw refused("t", "must be a finite time", t);
     if (!(t > this.now)) return;
     if (this.nextEventChanges !== this.changes) {
       this.nextEventBlocked = "";
@@ -208,16 +208,17 @@ export class World extends Edits {
     const untilTime = limits.untilTime ?? INF;
     const maxEvents = limits.maxEvents ?? INF;
     if (typeof untilTime !== "number" || Number.isNaN(untilTime))
-      throw new ChapgameError("untilTime", `must be a number (a time >= the current time ${this.now})`);
-    if (untilTime < this.now) throw new ChapgameError("untilTime", `must be >= the current time ${this.now}`);
+      throw refused("untilTime", `must be a number (a time >= the current time ${this.now})`, untilTime);
+    if (untilTime < this.now)
+      throw refused("untilTime", `must be >= the current time ${this.now}`, untilTime);
     if (
       typeof maxEvents !== "number" ||
       !(maxEvents >= 0) ||
       !(Number.isInteger(maxEvents) || maxEvents === INF)
     )
-      throw new ChapgameError("maxEvents", "must be a whole number >= 0, or Infinity");
+      throw refused("maxEvents", "must be a whole number >= 0, or Infinity", maxEvents);
     if (onEvent !== undefined && typeof onEvent !== "function")
-      throw new ChapgameError("onEvent", `must be a function called with each event, got ${typeof onEvent}`);
+      throw refused("onEvent", "must be a function called with each event", onEvent);
     if (this.advancing)
       throw new ChapgameError(
         "advance",

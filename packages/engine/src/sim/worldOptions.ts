@@ -4,7 +4,7 @@
  * naming it (`options.gx`, `optimizations.broadPhase`, `g`, `gravity[0]`, `time`). Returns the
  * values to build the World with, the defaults filled in.
  */
-import { ChapgameError } from "./errors.js";
+import { refused } from "./refusalText.js";
 import type { Optimizations, Vec2, WorldOptions } from "./types.js";
 import { requireFieldRate, requireFields, requireGravity, requireTime } from "./validate.js";
 
@@ -16,11 +16,6 @@ const OPTIMIZATION_KEYS = [
   "restingSkip",
   "recedingReject",
 ] as const;
-
-/** A value as a message shows it: a string quoted (so "false" does not read as false). */
-function describe(v: unknown): string {
-  return typeof v === "string" ? JSON.stringify(v) : String(v);
-}
 
 /** `options` checked, with g (default 9.81), gravity ([0, 0]), time (0) and optimizations ({}). */
 export function checkWorldOptions(options: WorldOptions): {
@@ -36,7 +31,7 @@ export function checkWorldOptions(options: WorldOptions): {
     for (const key of OPTIMIZATION_KEYS) {
       const v = options.optimizations[key];
       if (v !== undefined && typeof v !== "boolean")
-        throw new ChapgameError(`optimizations.${key}`, `must be true or false (got ${describe(v)})`);
+        throw refused(`optimizations.${key}`, "must be true or false", v);
     }
   }
   const g = requireFieldRate("g", options.g ?? 9.81);

@@ -1,0 +1,185 @@
+import { describe, expect, it } from "vitest";
+import { parseScene } from "../scene/parse.js";
+import { Timeline } from "../timeline/timeline.js";
+import { ChapgameError } from "./errors.js";
+import type { LineKind } from "./obstacles.js";
+import { given, quoteId } from "./refusalText.js";
+import type { BodyInit, BodyMotionInit, Vec2, WorldOptions } from "./types.js";
+import { World } from "./world.js";
+
+/** The ChapgameError `call` throws, as [path, message]. */
+function refusal(call: () => unknown): [string, string] {
+  try {
+    call();
+  } catch (e) {
+    if (e instanceof ChapgameError) return [e.path, e.message];
+    throw e;
+  }
+  throw new Error("accepted");
+}
+
+/** A World with disc a at the origin, a segment l at x = 10 and a point p at x = -10. */
+function world(): World {
+  const w = new World({ g: 0 });
+  w.addBody("a", { x: 0, y: 0, r: 1, m: 1 });
+  w.addLine("l", [10, -1], [10, 1], "segment");
+  w.addPoint("p", [-10, 0]);
+  return w;
+}
+
+const disc = (fields: Record<string, unknown>): BodyInit =>
+  ({ x: 5, y: 5, r: 1, m: 1, ...fields }) as unknown as BodyInit;
+
+describe("given: how a refusal names the value", () => {
+  it("numbers as written, strings quoted and cut at 40, containers by size, the rest by kind", () => {
+    expect([-2, Number.NaN, Number.POSITIVE_INFINITY, null, undefined, true].map(given)).toEqual([
+      "-2",
+      "NaN",
+      "Infinity",
+      "null",
+      "undefined",
+      "true",
+    ]);
+    expect(given("1")).toBe('the string "1"');
+    expect(given("x".repeat(50))).toBe(`the string "${"x".repeat(40)}…"`);
+    expect([given([1, 2, 3]), given({ a: 1 }), given(() => 1), given(3n)]).toEqual([
+      "an array of 3",
+      "an object",
+      "a function",
+      "3n",
+    ]);
+    expect(quoteId('a "b"')).toBe('"a \\"b\\""');
+  });
+});
+
+describe("the World's refusals say what was given and quote ids as the scene's do (audit)", () => {
+  it("addBody, updateBody, addBodyMotion", () => {
+    const w = world();
+    const cases: [() => unknown, string, string][] = [
+      [() => w.addBody("b", disc({ x: Number.NaN })), "x", "must be a finite number (got NaN)"],
+      [
+        () => w.addBody("b", disc({ m: Number.NaN })),
+        "m",
+        "must be a positive number (or Infinity) (got NaN)",
+      ],
+      [() => w.addBody("b", disc({ r: "1" })), "r", 'must be a positive finite number (got the string "1")'],
+      [() => w.addBody("b", disc({ mu: -1 })), "mu", "must be a finite number >= 0 (got -1)"],
+      [() => w.addBody("", disc({})), "id", 'must be a non-empty string (got the string "")'],
+      [
+        () => w.addBody("b", null as unknown as BodyInit),
+        "init",
+        "must be an object with fields x, y, vx, vy, r, m, mu (got null)",
+      ],
+      [() => w.addBody("a", disc({})), "id", 'a body with id "a" already exists'],
+      [() => w.addBody("b", disc({ x: 1, y: 0 })), "x", 'the body would overlap body "a"'],
+      [() => w.addBody("b", disc({ x: 10, y: 0 })), "x", 'the body would overlap line "l"'],
+      [() => w.addBody("b", disc({ x: -10, y: 0 })), "x", 'the body would overlap point "p"'],
+      [
+        () => w.updateBody("a", { vx: Number.POSITIVE_INFINITY }),
+        "vx",
+        "must be a finite number (got Infinity)",
+      ],
+      [() => w.updateBody("zz", { vx: 1 }), "id", 'no body with id "zz"'],
+      [() => w.updateBody(7 as unknown as string, { vx: 1 }), "id", "must be a non-empty string (got 7)"],
+      [
+        () => w.addBodyMotion("c", { t0: 5, x0: 5, y0: 5, vx: 0, vy: 0, r: 1, m: 1 }),
+        "t0",
+        "must be <= the world's time 0 (got 5)",
+      ],
+      [
+        () =>
+          w.addBodyMotion("c", { t0: 0, x0: 5, y0: 5, vx: 0, vy: 0, r: 1, m: 1, ax: 3 } as BodyMotionInit),
+        "ax",
+        "is derived from vx, vy, mu and the World's g and gravity (here 0), not set: leave it out or pass motion(id)'s own value (got 3)",
+      ],
+      [() => w.body("a", Number.POSITIVE_INFINITY), "t", "must be a finite time (got Infinity)"],
+      [() => w.bodies("1" as unknown as number), "t", 'must be a finite time (got the string "1")'],
+      [
+        () => w.body("a", -1),
+        "t",
+        `must be a time at or after body "a"'s last event or edit (t0 = 0; got -1): earlier states are not kept by a World (a Timeline keeps them)`,
+      ],
+      [() => w.body("zz"), "id", 'no body with id "zz"'],
+      [() => w.bodyArrays(0, 5 as never), "into", "must be a previous result or undefined (got 5)"],
+    ];
+    for (const [call, path, reason] of cases) expect(refusal(call)).toEqual([path, `${path}: ${reason}`]);
+    expect(w.bodies().map((b) => b.id)).toEqual(["a"]);
+  });
+
+  it("lines, points, setGlobal, options and advance", () => {
+    const w = world();
+    const cases: [() => unknown, string, string][] = [
+      [
+        () => w.addLine("m", [0, 5], [1] as unknown as Vec2, "line"),
+        "p2",
+        "must be a pair of finite numbers [x, y] (got an array of 1)",
+      ],
+      [
+        () => w.addLine("m", [0, 5], [1, 5], "curve" as LineKind),
+        "kind",
+        'must be "line", "ray" or "segment" (got the string "curve")',
+      ],
+      [() => w.addLine("m", [0, -5], [0, 5], "segment"), "p1", 'the line would overlap body "a"'],
+      [() => w.addLine("l", [0, 5], [1, 5], "line"), "id", 'a line with id "l" already exists'],
+      [() => w.updateLine("zz", {}), "id", 'no line with id "zz"'],
+      [() => w.addPoint("q", [0.5, 0]), "p", 'the point would lie inside body "a"'],
+      [() => w.addPoint("p", [20, 20]), "id", 'a point with id "p" already exists'],
+      [() => w.removePoint("zz"), "id", 'no point with id "zz"'],
+      [() => w.setGlobal({ g: -1 }), "g", "must be a finite number >= 0 (got -1)"],
+      [
+        () => w.setGlobal({ gravity: [0, "1"] as unknown as Vec2 }),
+        "gravity[1]",
+        'must be a finite number (got the string "1")',
+      ],
+      [
+        () => new World({ optimizations: { broadPhase: "no" } } as unknown as WorldOptions),
+        "optimizations.broadPhase",
+        'must be true or false (got the string "no")',
+      ],
+      [() => new World({ g: Number.NaN }), "g", "must be a finite number >= 0 (got NaN)"],
+      [
+        () => w.advance({ untilTime: "5" as unknown as number }),
+        "untilTime",
+        'must be a number (a time >= the current time 0) (got the string "5")',
+      ],
+      [() => w.advance({ untilTime: -1 }), "untilTime", "must be >= the current time 0 (got -1)"],
+      [
+        () => w.advance({ maxEvents: 1.5 }),
+        "maxEvents",
+        "must be a whole number >= 0, or Infinity (got 1.5)",
+      ],
+      [
+        () => w.advance({}, 5 as unknown as () => void),
+        "onEvent",
+        "must be a function called with each event (got 5)",
+      ],
+    ];
+    for (const [call, path, reason] of cases) expect(refusal(call)).toEqual([path, `${path}: ${reason}`]);
+    const mu = new World({ g: 1, gravity: [0, -1] });
+    expect(refusal(() => mu.addBody("b", disc({ mu: 0.5 })))).toEqual([
+      "mu",
+      "mu: must be 0 while the gravity field is non-zero (got 0.5): friction under gravity is not polynomial motion",
+    ]);
+  });
+
+  it("a World refusal and a scene refusal of the same value say it alike", () => {
+    const reasonOf = (call: () => unknown): string => {
+      const [path, message] = refusal(call);
+      return message.slice(path.length + 2);
+    };
+    for (const x of [Number.NaN, "1", null, [1, 2]]) {
+      const inWorld = reasonOf(() => new World({ g: 0 }).addBody("a", disc({ x })));
+      const action = { time: 0, type: "addBody", id: "a", x, y: 0, r: 1, m: 1 };
+      const inScene = reasonOf(() => parseScene({ format: "chapgame", version: 1, actions: [action] }));
+      expect(inWorld, String(x)).toBe(inScene);
+    }
+    // an id: `body "a"` in both (the World's overlap, the Timeline's scene rule)
+    const w = world();
+    const tl = new Timeline({ g: 0 });
+    tl.apply({ time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 });
+    const inWorld = refusal(() => w.addBody("b", disc({ x: 1, y: 0 })))[1];
+    const inScene = refusal(() => tl.apply({ time: 0, type: "addBody", id: "b", x: 1, y: 0, r: 1, m: 1 }))[1];
+    expect(inWorld).toContain('overlap body "a"');
+    expect(inScene).toContain('overlap body "a"');
+  });
+});

@@ -1,0 +1,28 @@
+/**
+ * How a refusal of input says what it was given, the same in every layer (the World's ChapgameError,
+ * the scene's and the Timeline's SceneError): `given(v)` names the value ("-2", "NaN", "the string
+ * \"1\"", "null", "an array of 3", "an object", "a function", "3n"), appended to the reason as " (got …)" (`refused`);
+ * `quoteId(id)` writes an id as the messages quote it, in double quotes with JSON escapes
+ * (`body "a"`), so that an id with spaces, quotes or nothing printable still reads unambiguously.
+ */
+import { ChapgameError } from "./errors.js";
+
+/** A value as a refusal names it: "-2", "the string \"1\"", "null", "an array of 3", "an object". */
+export function given(v: unknown): string {
+  if (typeof v === "string") return `the string ${JSON.stringify(v.length > 40 ? `${v.slice(0, 40)}…` : v)}`;
+  if (Array.isArray(v)) return `an array of ${v.length}`;
+  if (typeof v === "object" && v !== null) return "an object";
+  if (typeof v === "function") return "a function";
+  if (typeof v === "bigint") return `${v}n`;
+  return String(v);
+}
+
+/** An id as messages quote it: `"a"`. */
+export function quoteId(id: string): string {
+  return JSON.stringify(id);
+}
+
+/** The World's refusal of value v of field `path`: the reason, and what was given. */
+export function refused(path: string, reason: string, v: unknown): ChapgameError {
+  return new ChapgameError(path, `${reason} (got ${given(v)})`);
+}
