@@ -6,6 +6,7 @@
  * caller cannot simulate: then overlaps with such bodies are not checked). `checkAndApply` throws
  * SceneError (path + reason) and changes nothing, or updates the view.
  */
+import { quoteId } from "../sim/refusalText.js";
 import { DiscGrid } from "./discGrid.js";
 import { SceneError } from "./errors.js";
 import { join } from "./fields.js";
@@ -71,7 +72,8 @@ export class SceneView {
   }
 }
 
-const q = JSON.stringify;
+/** An id as every refusal quotes it (sim/refusalText.ts). */
+const q = quoteId;
 
 function gravityOn(g: Vec2): boolean {
   return g[0] !== 0 || g[1] !== 0;
