@@ -209,7 +209,7 @@ function* checkScene(
     const scene = parseScene(text);
     for (const a of scene.actions) if (a.time > last) last = a.time;
     count = scene.actions.length;
-    tl = Timeline.fromScene(scene, { history: false, compute: false });
+    tl = Timeline.fromParsedScene(scene, { history: false, compute: false });
   } catch (e) {
     if (e instanceof ChapgameError) return invalid(e, e.path);
     if (e instanceof SimulationError) return invalid(e, null);
@@ -289,7 +289,7 @@ function* command(argv: readonly string[], io: CliIO): Generator<void, number, v
         : null;
     const added = cmd.command === "path" ? firstAdded(scene, cmd.id) : 0;
     const history = cmd.command === "path" || cmd.events;
-    const tl = Timeline.fromScene(scene, { history, compute: false, untils: bound !== null });
+    const tl = Timeline.fromParsedScene(scene, { history, compute: false, untils: bound !== null });
     const mode: ProgressMode = io.progress ? "terminal" : cmd.progress === true ? "lines" : "off";
     const out = (text: string) => io.stdout(text);
     /** Writes the result up to where the computation stopped, with why. */

@@ -1,6 +1,7 @@
 /**
  * applyGroup(core): applies every scheduled action at the core World's current time, each validated
- * first against the scene at that time (sceneRules.ts), then performed on the World (applyAction.ts),
+ * first against the scene at that time (sceneRules.ts; not the group at time 0 of a scene parseScene
+ * checked already: core.startChecked), then performed on the World (applyAction.ts),
  * tracked in the registry (body, line and point numbers) and the motion table, logged as an action
  * record, and its `until` turned into a goal when the core takes untils (eager, or the untils option). Ends with a keyframe (one per
  * instant: a group applied one call at a time at the same instant replaces its previous keyframe).
@@ -24,19 +25,24 @@ export function applyGroup(c: TimelineCore): void {
     for (const g of c.dormant) c.goals.push(g);
     c.dormant = [];
   }
-  const view = SceneView.of({
-    time: t,
-    g: w.g,
-    gravity: w.gravity,
-    bodies: w.bodies(),
-    lines: w.lines(),
-    points: w.points(),
-  });
+  // the group at time 0 of a scene parseScene checked is not checked again (core.startChecked)
+  const checked = c.startChecked && t === 0 && c.applied === 0;
+  c.startChecked = false;
+  const view = checked
+    ? null
+    : SceneView.of({
+        time: t,
+        g: w.g,
+        gravity: w.gravity,
+        bodies: w.bodies(),
+        lines: w.lines(),
+        points: w.points(),
+      });
   while (c.applied < c.acts.length && (c.acts[c.applied] as Action).time === t) {
     const k = c.applied;
     const a = c.acts[k] as Action;
     const path = c.pathOf(k);
-    checkAndApply(view, a, path);
+    if (view !== null) checkAndApply(view, a, path);
     applyToWorld(w, a, path);
     track(c, a);
     c.actEvents[k] = c.eventTotal;

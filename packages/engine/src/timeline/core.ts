@@ -79,6 +79,11 @@ export class TimelineCore {
    *  horizon would come after events that instant's earlier actions caused */
   lastActionTime = Number.NEGATIVE_INFINITY;
   eventAfterActions = false;
+  /** The actions at time 0 were checked against the scene rules from an empty scene with this
+   *  core's g and gravity, in apply order (parseScene did: Timeline.fromScene): the first group,
+   *  when it is at time 0, is not checked again (the same rules on the same scene; a million bodies
+   *  took seconds). Cleared by the first group applied. */
+  startChecked = false;
   /** how to name action k in error messages */
   pathOf: (k: number) => string = (k) => `actions[${k}]`;
   /** Counts the changes to records or keyframes other than appends (a cut, a restore, a replaced

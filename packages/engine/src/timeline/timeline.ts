@@ -88,9 +88,19 @@ export class Timeline extends TimelineReader {
     options: Omit<TimelineOptions, "g" | "gravity"> = {},
   ): Timeline {
     checkSceneOptions(options);
-    const s = parseScene(scene);
+    return Timeline.fromParsedScene(parseScene(scene), options);
+  }
+
+  /**
+   * @internal A timeline of a scene parseScene returned and nobody changed since (for the CLI, which
+   * reads the scene before it builds the timeline): built as fromScene builds it, without
+   * validating the scene a second time (a million bodies took seconds each time). The scene's
+   * actions are frozen and kept (parseScene made them: no caller holds them to edit).
+   */
+  static fromParsedScene(s: SceneFile, options: Omit<TimelineOptions, "g" | "gravity"> = {}): Timeline {
+    checkSceneOptions(options);
     const tl = new Timeline({ ...options, g: s.g, gravity: s.gravity });
-    tl.setActions(s.actions);
+    tl.replaceActions(s.actions.map(freezeAction), true);
     if (s.meta !== undefined) tl.metaJson = JSON.stringify(s.meta);
     return tl;
   }
@@ -166,12 +176,24 @@ export class Timeline extends TimelineReader {
    *  list given, also when a later prolong applies it), a Zeno state before the horizon
    *  SimulationError; either way nothing changes. */
   setActions(actions: readonly Action[]): void {
-    const checked = checkActionList(actions).map((a, i) => freezeAction(checkAction(a, `actions[${i}]`)));
+    this.replaceActions(
+      checkActionList(actions).map((a, i) => freezeAction(checkAction(a, `actions[${i}]`))),
+    );
+  }
+
+  /** setActions with the actions already checked (checkAction) and frozen; `startChecked`: their
+   *  scene rules at time 0 too (parseScene's, from an empty scene: fromScene), so a timeline built
+   *  from scratch does not check them again (TimelineCore.startChecked). */
+  private replaceActions(checked: readonly Action[], startChecked = false): void {
     const order = applyOrder(checked);
     const sorted = order.map((i) => checked[i] as Action);
     this.instant = null;
     const o = this.options;
-    const fresh = () => new TimelineCore(o.g, o.gravity, o.history, o.compute, o.untils);
+    const fresh = () => {
+      const core = new TimelineCore(o.g, o.gravity, o.history, o.compute, o.untils);
+      core.startChecked = startChecked;
+      return core;
+    };
     this.core = actionsOnCore(this.core, sorted, order, fresh);
     this.slice = null;
     this.changed();
