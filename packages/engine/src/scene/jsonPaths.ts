@@ -27,18 +27,45 @@ export type JsonToken =
       readonly end: number;
     };
 
+/** An open object or array. Frames are reused by depth (the walk allocates none per value). */
 interface Frame {
-  readonly path: string;
-  /** Keys seen so far; null for an array. */
-  readonly keys: Set<string> | null;
+  /** false for an array */
+  isObject: boolean;
+  /** The object's keys seen so far (a Set once there are many, else the array). */
+  keys: string[];
+  keySet: Set<string> | null;
   /** The array's next element index, or the object's last key. */
   index: number;
   key: string;
 }
 
-function childPath(frame: Frame): string {
-  if (frame.keys === null) return `${frame.path}[${frame.index}]`;
-  return frame.path === "" ? frame.key : `${frame.path}.${frame.key}`;
+/** Keys an object may have before its repeats are looked up in a Set instead of its key list. */
+const FEW_KEYS = 16;
+
+/** Whether `key` repeats a key of `frame` seen before; records it. */
+function seen(frame: Frame, key: string): boolean {
+  if (frame.keySet !== null) {
+    if (frame.keySet.has(key)) return true;
+    frame.keySet.add(key);
+    return false;
+  }
+  const keys = frame.keys;
+  for (let k = 0; k < keys.length; k++) if (keys[k] === key) return true;
+  keys.push(key);
+  if (keys.length > FEW_KEYS) frame.keySet = new Set(keys);
+  return false;
+}
+
+/** The path of the current child of `stack[depth]` (the value being read), built from the frames
+ *  from the top level down (valid while the walk stands where it is). */
+function pathAt(stack: readonly Frame[], depth: number): string {
+  let path = "";
+  for (let d = 0; d <= depth; d++) {
+    const f = stack[d] as Frame;
+    if (!f.isObject) path = `${path}[${f.index}]`;
+    else path = path === "" ? f.key : `${path}.${f.key}`;
+  }
+  return path;
 }
 
 /** End index (exclusive) of the string token starting at the quote at `start`. */
@@ -73,17 +100,18 @@ export function lineColumn(text: string, pos: number): { line: number; column: n
   return { line, column: pos - start + 1 };
 }
 
-/** A key token; its path is read from its frame (valid during the visit). */
+/** A key token; its path is read from the frames (valid during the visit). */
 class KeyToken {
   readonly kind = "key";
   constructor(
-    private readonly frame: Frame,
+    private readonly stack: readonly Frame[],
+    private readonly depth: number,
     readonly key: string,
     readonly pos: number,
     readonly repeated: boolean,
   ) {}
   get path(): string {
-    return childPath(this.frame);
+    return pathAt(this.stack, this.depth);
   }
 }
 
@@ -92,12 +120,13 @@ class NumberToken {
   readonly kind = "number";
   constructor(
     private readonly text: string,
-    private readonly frame: Frame | undefined,
+    private readonly stack: readonly Frame[],
+    private readonly depth: number,
     readonly pos: number,
     readonly end: number,
   ) {}
   get path(): string {
-    return this.frame === undefined ? "" : childPath(this.frame);
+    return this.depth < 0 ? "" : pathAt(this.stack, this.depth);
   }
   get literal(): string {
     return this.text.slice(this.pos, this.end);
@@ -107,46 +136,59 @@ class NumberToken {
 /** Visits the keys and number literals of the (valid) JSON `text`; see the header. */
 export function walkJson<T>(text: string, visit: (token: JsonToken) => T | undefined): T | undefined {
   const stack: Frame[] = [];
+  let depth = -1; // stack[depth] is the innermost open value
+  let top: Frame | undefined;
   // Whether the next string in the innermost object is a key (after `{` or `,`).
   let expectKey = false;
   let i = 0;
-  while (i < text.length) {
+  const n = text.length;
+  while (i < n) {
     const c = text.charCodeAt(i);
-    const top = stack[stack.length - 1];
-    if (c === 123 || c === 91) {
-      // `{` or `[`: a value starting; its path is the parent's current child.
-      const path = top === undefined ? "" : childPath(top);
-      stack.push({ path, keys: c === 123 ? new Set() : null, index: 0, key: "" });
-      expectKey = c === 123;
-      i++;
-    } else if (c === 125 || c === 93) {
-      stack.pop();
-      expectKey = false;
-      i++;
-    } else if (c === 44) {
+    if (c === 32 || c === 58 || c === 10 || c === 13 || c === 9) i++;
+    else if (c === 44) {
       // `,`: the next key of an object, or the next element of an array.
-      if (top !== undefined && top.keys === null) top.index++;
-      expectKey = top !== undefined && top.keys !== null;
+      if (top !== undefined && !top.isObject) top.index++;
+      expectKey = top?.isObject === true;
       i++;
     } else if (c === 34) {
       const end = stringEnd(text, i);
-      if (expectKey && top !== undefined && top.keys !== null) {
+      if (expectKey && top !== undefined) {
         const raw = text.slice(i + 1, end - 1);
         const key = raw.includes("\\") ? (JSON.parse(text.slice(i, end)) as string) : raw;
         top.key = key;
-        const repeated = top.keys.has(key);
-        top.keys.add(key);
+        const repeated = seen(top, key);
         expectKey = false;
-        const r = visit(new KeyToken(top, key, i, repeated));
+        const r = visit(new KeyToken(stack, depth, key, i, repeated));
         if (r !== undefined) return r;
       }
       i = end;
     } else if (c === 45 || (c >= 48 && c <= 57)) {
       let end = i + 1;
-      while (end < text.length && inNumber(text.charCodeAt(end))) end++;
-      const r = visit(new NumberToken(text, top, i, end));
+      while (end < n && inNumber(text.charCodeAt(end))) end++;
+      const r = visit(new NumberToken(text, stack, depth, i, end));
       if (r !== undefined) return r;
       i = end;
+    } else if (c === 123 || c === 91) {
+      // `{` or `[`: a value starting (its path is the enclosing frames' current children)
+      depth++;
+      let f = stack[depth];
+      if (f === undefined) {
+        f = { isObject: false, keys: [], keySet: null, index: 0, key: "" };
+        stack.push(f);
+      }
+      f.isObject = c === 123;
+      f.keys.length = 0;
+      f.keySet = null;
+      f.index = 0;
+      f.key = "";
+      top = f;
+      expectKey = f.isObject;
+      i++;
+    } else if (c === 125 || c === 93) {
+      depth--;
+      top = depth < 0 ? undefined : stack[depth];
+      expectKey = false;
+      i++;
     } else i++;
   }
   return undefined;
