@@ -57,7 +57,7 @@ export class SceneView {
     const v = new SceneView(s.time, s.g, s.gravity);
     for (const b of s.bodies) {
       v.bodies.set(b.id, { x: b.x, y: b.y, r: b.r, mu: b.mu, known: true });
-      v.grid.insert(b.id, b.x, b.y, b.r);
+      v.grid.add(b.id, b.x, b.y, b.r); // ids are unique in a state
     }
     for (const l of s.lines) v.lines.set(l.id, { p1: l.p1, p2: l.p2, kind: l.kind });
     for (const p of s.points) v.points.set(p.id, p.p);
@@ -124,7 +124,7 @@ export function checkAndApply(view: SceneView, a: Action, path: string): void {
       if (mu > 0 && gravityOn(view.gravity)) throw frictionWithGravity(join(path, "mu"));
       checkDisc(view, path, a.id, a.x, a.y, a.r);
       view.bodies.set(a.id, { x: a.x, y: a.y, r: a.r, mu, known: true });
-      view.grid.insert(a.id, a.x, a.y, a.r);
+      view.grid.add(a.id, a.x, a.y, a.r); // a new body: the grid holds only the view's bodies
       return;
     }
     case "giveVelocity":
