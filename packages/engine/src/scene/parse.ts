@@ -174,24 +174,32 @@ function explainUnderflow(e: unknown, underflow: Map<string, string>): unknown {
  * simulation: Timeline.fromScene checks those.
  */
 export function parseScene(input: string | unknown): SceneFile {
-  if (typeof input !== "string") return checkScene(input);
+  if (typeof input !== "string") return checkScene(input, false);
   const { raw, underflow } = readText(input);
   try {
-    return checkScene(raw);
+    return checkScene(raw, true);
   } catch (e) {
     throw explainUnderflow(e, underflow);
   }
 }
 
-/** The parsed scene value checked and normalized (parseScene's checks after the JSON text's). */
-function checkScene(raw: unknown): SceneFile {
+/** The parsed scene value checked and normalized (parseScene's checks after the JSON text's).
+ *  `owned`: raw was parsed here from text, so each raw action is let go once its checked copy is
+ *  made (a million raw actions held beside their copies took 200 MB); a caller's object is left as
+ *  it was. */
+function checkScene(raw: unknown, owned: boolean): SceneFile {
   if (!isObject(raw)) throw new SceneError("scene", "must be a JSON object");
   checkHeader(raw);
   const g = raw.g === undefined ? SCENE_DEFAULTS.g : nonNegative(raw, "g", "");
   const gravity = raw.gravity === undefined ? SCENE_DEFAULTS.gravity : vec2(raw, "gravity", "");
   checkFieldMagnitudes(g, gravity, "");
   if (!Array.isArray(raw.actions)) throw new SceneError("actions", "must be an array");
-  const actions = raw.actions.map((a, i) => checkAction(a, `actions[${i}]`));
+  const list: unknown[] = raw.actions;
+  const actions: Action[] = [];
+  for (let i = 0; i < list.length; i++) {
+    actions.push(checkAction(list[i], `actions[${i}]`));
+    if (owned) list[i] = null;
+  }
   checkSceneRules(g, gravity, actions);
   const scene: SceneFile = { format: "chapgame", version: 1, g, gravity, actions };
   if (raw.meta !== undefined) {
