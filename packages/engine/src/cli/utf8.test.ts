@@ -1,4 +1,6 @@
+import fc from "fast-check";
 import { describe, expect, it } from "vitest";
+import { seedFor } from "../timeline/testSupport.js";
 import { decodeUtf8, firstInvalidUtf8 } from "./utf8.js";
 
 const bytes = (...b: number[]) => new Uint8Array(b);
@@ -29,5 +31,39 @@ describe("decodeUtf8: a scene file's bytes, refusing what is not UTF-8", () => {
     expect(firstInvalidUtf8(bytes(0xf4, 0x90, 0x80, 0x80))).toBe(0); // above U+10FFFF
     expect(firstInvalidUtf8(bytes(0x61, 0xe2, 0x98))).toBe(1); // cut short
     expect(firstInvalidUtf8(bytes(0xf5))).toBe(0);
+  });
+
+  it("refuses exactly the byte strings firstInvalidUtf8 finds a bad byte in (the native decoder decides first)", () => {
+    // bytes around the UTF-8 boundaries (lead bytes, continuation ranges, surrogates, > U+10FFFF)
+    const byte = fc.oneof(
+      fc.integer({ min: 0x00, max: 0x7f }),
+      fc.integer({ min: 0x80, max: 0xbf }),
+      fc.constantFrom(
+        0xc0,
+        0xc1,
+        0xc2,
+        0xdf,
+        0xe0,
+        0xed,
+        0xef,
+        0xf0,
+        0xf4,
+        0xf5,
+        0xff,
+        0x9f,
+        0xa0,
+        0x8f,
+        0x90,
+      ),
+    );
+    fc.assert(
+      fc.property(fc.array(byte, { maxLength: 12 }), (list) => {
+        const b = new Uint8Array(list);
+        const bad = firstInvalidUtf8(b);
+        if (bad < 0) expect(decodeUtf8(b)).toBe(new TextDecoder("utf-8", { ignoreBOM: true }).decode(b));
+        else expect(() => decodeUtf8(b)).toThrow(/^not UTF-8 text: byte 0x/);
+      }),
+      { seed: seedFor("decodeUtf8 agrees with firstInvalidUtf8"), numRuns: 2000 },
+    );
   });
 });

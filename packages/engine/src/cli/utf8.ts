@@ -50,14 +50,20 @@ export class NotUtf8Error extends Error {
 interface Decoder {
   decode(bytes: Uint8Array): string;
 }
+type DecoderClass = new (label: string, options: { ignoreBOM: boolean; fatal?: boolean }) => Decoder;
 
 /** The text of `bytes` (UTF-8; a leading byte order mark is kept for parseScene, which skips it), or
  *  a NotUtf8Error naming the first invalid byte, its line and its column (as the scene errors count
  *  them: lineColumn). */
 export function decodeUtf8(bytes: Uint8Array): string {
-  const { TextDecoder } = globalThis as unknown as {
-    TextDecoder: new (label: string, options: { ignoreBOM: boolean }) => Decoder;
-  };
+  const { TextDecoder } = globalThis as unknown as { TextDecoder: DecoderClass };
+  // The native decoder refuses what firstInvalidUtf8 refuses (the same WHATWG rules) but says not
+  // where; the byte loop runs only then (it took 0.4 s on a 150 MB scene that was valid).
+  try {
+    return new TextDecoder("utf-8", { ignoreBOM: true, fatal: true }).decode(bytes);
+  } catch {
+    // not UTF-8: find where below
+  }
   const decoder = new TextDecoder("utf-8", { ignoreBOM: true });
   const bad = firstInvalidUtf8(bytes);
   if (bad < 0) return decoder.decode(bytes);
