@@ -1,0 +1,27 @@
+/**
+ * CliIO: all the input and output of the `chapgame` command (the scene file, stdout, stderr, whether
+ * stderr is a terminal, the version, the interrupt hooks), so runCli can be tested in-process and
+ * main.ts stays a thin wrapper. OutputError: what a CliIO.stdout throws when it cannot write the
+ * result (exit status 1, "cannot write the result"), not a bug of the run.
+ */
+
+export interface CliIO {
+  /** Contents of a file ("-" = standard input); throws when it cannot be read. */
+  readFile(path: string): string;
+  stdout(text: string): void;
+  stderr(text: string): void;
+  /** stderr is a terminal: show progress there on one updating line (without it, only --progress
+   *  shows progress, one line each) */
+  progress: boolean;
+  /** the package's version, for --version (the bin reads it from package.json) */
+  version?: string;
+  /** Called when the computation starts, after the scene is read and checked (the bin catches
+   *  interrupts from then on: while it reads or parses, a Ctrl-C ends the process at once). */
+  computing?: () => void;
+  /** Called once the computation is over, before the result is written (the bin stops catching
+   *  interrupts then: a Ctrl-C while a long result is written ends the process at once). */
+  computed?: () => void;
+}
+
+/** Thrown by a CliIO.stdout that cannot write (a full disk, a closed file): not a bug of the run. */
+export class OutputError extends Error {}
