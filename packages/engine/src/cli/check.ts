@@ -6,24 +6,23 @@
 import { parseScene, printable } from "../scene/parse.js";
 import { ChapgameError, SimulationError } from "../sim/errors.js";
 import { Timeline } from "../timeline/timeline.js";
-import type { Command } from "./args.js";
-import type { CliIO } from "./io.js";
-import { compute, progressMode } from "./progress.js";
+import type { ProgressLine } from "./progress.js";
 import { Interrupted } from "./slices.js";
 
 /**
- * `check`: the scene's fields (parseScene), then every action applied to the simulation computed up
+ * `check`: the scene's fields (parseScene of the text `read` gives; a UsageError when it cannot be
+ * read), then every action applied to the simulation computed up
  * to the last action's time (a headless Timeline: no log kept), which ends for any scene. Prints
  * {"valid": true, "actions", "checkedTo", "events"} and returns 0, or {"valid": false, "error",
  * "path"} (the message on stderr too, after the file's name) and returns 2; a Zeno state before the
  * last action is invalid too (path null). An interrupt prints nothing on stdout and returns 130 / 143.
  */
 export function* checkScene(
-  text: string,
+  read: () => string,
   file: string,
-  cmd: Extract<Command, { command: "check" }>,
-  io: CliIO,
+  line: ProgressLine,
 ): Generator<void, number, void> {
+  const io = line.io;
   const write = (result: object) => io.stdout(`${JSON.stringify(result, null, 2)}\n`);
   const invalid = (e: Error, path: string | null) => {
     const error = printable(e.message);
@@ -37,19 +36,19 @@ export function* checkScene(
   let last = 0;
   let count = 0;
   try {
-    const scene = parseScene(text);
+    const scene = parseScene(read());
     for (const a of scene.actions) if (a.time > last) last = a.time;
     count = scene.actions.length;
+    line.building(scene);
     tl = Timeline.fromParsedScene(scene, { history: false, compute: false });
   } catch (e) {
     if (e instanceof ChapgameError) return invalid(e, e.path);
     if (e instanceof SimulationError) return invalid(e, null);
     throw e;
   }
-  const mode = progressMode(io, cmd);
   io.computing?.();
   try {
-    yield* compute(tl, { time: last }, mode, io);
+    yield* line.compute(tl, { time: last });
   } catch (e) {
     io.computed?.();
     if (e instanceof Interrupted) {

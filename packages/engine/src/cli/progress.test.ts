@@ -3,8 +3,19 @@
 import { describe, expect, it } from "vitest";
 import { dilutedGas } from "../scene/presets.js";
 import { serializeScene } from "../scene/serialize.js";
+import type { CliIO } from "./io.js";
+import { LONG_SCENE_CHARS } from "./progress.js";
 import { runCli } from "./run.js";
 import { io } from "./testSupport.js";
+
+/** The gas's text with `extra` actions. */
+function gasWith(...extra: unknown[]): string {
+  const gas = dilutedGas({ n: 200, packing: 0.2 });
+  return JSON.stringify({ ...gas, actions: [...gas.actions, ...extra] });
+}
+
+/** stderr with each time written as T. */
+const timesAsT = (stderr: string) => stderr.replace(/t = [\d.e+]+/g, "t = T");
 
 describe("progress on stderr", () => {
   it("shows progress on stderr when asked (a terminal), and the same result", () => {
@@ -42,7 +53,7 @@ describe("progress on stderr", () => {
     const lines = io(files);
     expect(runCli(["state", "gas.json", "--at", "6000"], quiet.cli)).toBe(0);
     expect(runCli(["state", "gas.json", "--at", "6000", "--progress"], lines.cli)).toBe(0);
-    expect(lines.out.stderr).toMatch(/^chapgame: t = [\d.e+]+, 200000 events\n/);
+    expect(lines.out.stderr).toMatch(/^chapgame: t = [\d.e+]+ of 6000, 200000 events\n/);
     expect(lines.out.stdout).toBe(quiet.out.stdout);
     expect(JSON.parse(quiet.out.stdout).time).toBe(6000);
   });
@@ -67,5 +78,82 @@ describe("progress on stderr", () => {
       reason: "error",
       error: expect.stringMatching(/^body 'rest'/),
     });
+  });
+});
+
+describe("the progress line names what the run computes toward", () => {
+  it("check: the time it checks to and the actions applied of all, while one is still to come", () => {
+    // the gas (4 walls, 200 discs) and a kick at t = 10000, after both reports (about t = 4600, 9300)
+    const files = { "gas.json": gasWith({ time: 10000, type: "giveVelocity", id: "d0", v: [1, 0] }) };
+    const lines = io(files);
+    expect(runCli(["check", "gas.json", "--progress"], lines.cli)).toBe(0);
+    expect(timesAsT(lines.out.stderr)).toBe(
+      "chapgame: t = T of 10000, 200000 events, 204 of 205 actions applied\n" +
+        "chapgame: t = T of 10000, 400000 events, 204 of 205 actions applied\n",
+    );
+    const quiet = io(files);
+    expect(runCli(["check", "gas.json"], quiet.cli)).toBe(0);
+    expect(lines.out.stdout).toBe(quiet.out.stdout);
+  });
+
+  it("simulate: both bounds of the command line; the scene's own untils name none", () => {
+    const files = { "gas.json": gasWith() };
+    const both = io(files);
+    expect(
+      runCli(
+        ["simulate", "gas.json", "--until-time", "1e9", "--max-events", "250000", "--progress"],
+        both.cli,
+      ),
+    ).toBe(0);
+    expect(timesAsT(both.out.stderr)).toBe("chapgame: t = T of 1000000000, 200000 of 250000 events\n");
+    // an until on a kick at t = 1 (the scene's bound is that action, the until goes on past it)
+    const until = { time: 1, type: "giveVelocity", id: "d0", v: [1, 0], until: { events: 250000 } };
+    const own = io({ "gas.json": gasWith(until) });
+    expect(runCli(["simulate", "gas.json", "--progress"], own.cli)).toBe(0);
+    expect(JSON.parse(own.out.stdout).reason).toBe("until");
+    expect(timesAsT(own.out.stderr)).toBe("chapgame: t = T, 200000 events\n");
+  });
+
+  it("a long scene says what it does before computing, then where the computation starts", () => {
+    // a small scene made long by its meta (LONG_SCENE_CHARS characters and more)
+    const scene = JSON.parse(gasWith({ time: 3, type: "giveVelocity", id: "d0", v: [1, 0] }));
+    scene.meta = { note: "x".repeat(LONG_SCENE_CHARS) };
+    const text = JSON.stringify(scene);
+    const million = (text.length / 1e6).toFixed(1);
+    const lines = io({ "long.json": text });
+    expect(runCli(["check", "long.json", "--progress"], lines.cli)).toBe(0);
+    expect(lines.out.stderr).toBe(
+      `chapgame: reading the scene (${million} million characters)\n` +
+        "chapgame: building the scene at t = 0 (205 actions)\n" +
+        "chapgame: t = 0.00000 of 3, 0 events, 204 of 205 actions applied\n",
+    );
+    expect(JSON.parse(lines.out.stdout)).toMatchObject({ valid: true, checkedTo: 3 });
+    // just below the length: nothing before the computation (and nothing during it: few events)
+    scene.meta.note = "x".repeat(LONG_SCENE_CHARS - (text.length - LONG_SCENE_CHARS) - 1);
+    const short = io({ "short.json": JSON.stringify(scene) });
+    expect(runCli(["check", "short.json", "--progress"], short.cli)).toBe(0);
+    expect(short.out.stderr).toBe("");
+  });
+
+  it("on a terminal a shorter line erases the rest of a longer one, and the line is gone before the result", () => {
+    const scene = JSON.parse(gasWith());
+    scene.meta = { note: "x".repeat(LONG_SCENE_CHARS) };
+    const writes: string[] = [];
+    const cli: CliIO = {
+      readFile: () => JSON.stringify(scene),
+      stdout: (t) => writes.push(`out:${t}`),
+      stderr: (t) => writes.push(`err:${t}`),
+      progress: true,
+    };
+    expect(runCli(["state", "long.json", "--at", "2"], cli)).toBe(0);
+    const million = (JSON.stringify(scene).length / 1e6).toFixed(1);
+    expect(writes.slice(0, 4)).toEqual([
+      `err:\rchapgame: reading the scene (${million} million characters)`,
+      "err:\rchapgame: building the scene at t = 0 (204 actions)\x1b[K",
+      "err:\rchapgame: t = 0.00000 of 2, 0 events\x1b[K",
+      "err:\r\x1b[K",
+    ]);
+    expect(writes.slice(4).every((w) => w.startsWith("out:"))).toBe(true);
+    expect(JSON.parse(writes.slice(4).join("").replaceAll("out:", ""))).toMatchObject({ time: 2 });
   });
 });

@@ -21,7 +21,7 @@ import { checkScene } from "./check.js";
 import { type CliIO, OutputError } from "./io.js";
 import { type RunEnd, writePath, writeResult } from "./output.js";
 import { firstAdded, pathResult } from "./pathCommand.js";
-import { compute, progressMode } from "./progress.js";
+import { ProgressLine, progressMode } from "./progress.js";
 import { sceneBound, simulate } from "./simulate.js";
 import { type InterruptControl, Interrupted, runInterruptible, runToEnd } from "./slices.js";
 
@@ -43,8 +43,10 @@ export function runCliInterruptible(
 }
 
 /** The command as a generator that yields between slices of the computation (slices.ts). */
-function* command(argv: readonly string[], io: CliIO): Generator<void, number, void> {
-  let source: string | null = null; // the scene's name, once it is read
+function* command(argv: readonly string[], given: CliIO): Generator<void, number, void> {
+  const line = new ProgressLine(given);
+  const io = line.io; // erases a progress line before writing
+  let source: string | null = null; // the scene's name, once the command names it
   try {
     const cmd = parseArgs(argv);
     if (cmd.command === "help") {
@@ -55,15 +57,12 @@ function* command(argv: readonly string[], io: CliIO): Generator<void, number, v
       io.stdout(`chapgame ${io.version ?? "(version unknown)"}\n`);
       return 0;
     }
-    let text: string;
-    try {
-      text = io.readFile(cmd.scene);
-    } catch (e) {
-      throw new UsageError(`cannot read ${cmd.scene}: ${(e as Error).message.split("\n")[0]}`);
-    }
+    line.start(progressMode(io, cmd));
     source = cmd.scene === "-" ? "<stdin>" : cmd.scene;
-    if (cmd.command === "check") return yield* checkScene(text, printable(source), cmd, io);
-    const scene = parseScene(text);
+    // the text is read where it is parsed, and not kept (150 MB for a million bodies)
+    const read = () => readText(io, cmd.scene, line);
+    if (cmd.command === "check") return yield* checkScene(read, printable(source), line);
+    const scene = parseScene(read());
     // the scene's own bound only when the command line gives none
     const bound =
       cmd.command === "simulate" && cmd.untilTime === undefined && cmd.maxEvents === undefined
@@ -71,8 +70,8 @@ function* command(argv: readonly string[], io: CliIO): Generator<void, number, v
         : null;
     const added = cmd.command === "path" ? firstAdded(scene, cmd.id) : 0;
     const history = cmd.command === "path" || cmd.events;
+    line.building(scene);
     const tl = Timeline.fromParsedScene(scene, { history, compute: false, untils: bound !== null });
-    const mode = progressMode(io, cmd);
     const out = (text: string) => io.stdout(text);
     /** Writes the result up to where the computation stopped, with why. */
     const partial = (end: RunEnd) => {
@@ -85,17 +84,17 @@ function* command(argv: readonly string[], io: CliIO): Generator<void, number, v
     io.computing?.();
     try {
       if (cmd.command === "path") {
-        yield* compute(tl, { time: cmd.to }, mode, io);
+        yield* line.compute(tl, { time: cmd.to });
         io.computed?.();
         writePath(pathResult(tl, cmd, added), out, cmd.compact);
         return 0;
       }
       if (cmd.command === "state") {
         // from horizon 0 (nothing computed yet), `time: at` ahead is exactly up to at
-        yield* compute(tl, { time: cmd.at }, mode, io);
+        yield* line.compute(tl, { time: cmd.at });
         time = cmd.at;
       } else {
-        const r = yield* simulate(tl, cmd, bound, mode, io);
+        const r = yield* simulate(tl, cmd, bound, line);
         time = r.time;
         end = { reason: r.reason };
       }
@@ -142,4 +141,16 @@ function* command(argv: readonly string[], io: CliIO): Generator<void, number, v
     io.stderr(`chapgame: internal error: ${e instanceof Error ? e.message : String(e)}\n`);
     return 1;
   }
+}
+
+/** The scene file's text (a UsageError when it cannot be read); a long one is announced. */
+function readText(io: CliIO, path: string, line: ProgressLine): string {
+  let text: string;
+  try {
+    text = io.readFile(path);
+  } catch (e) {
+    throw new UsageError(`cannot read ${path}: ${(e as Error).message.split("\n")[0]}`);
+  }
+  line.reading(text);
+  return text;
 }

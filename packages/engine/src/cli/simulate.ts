@@ -2,7 +2,7 @@
  * `simulate`: how far it computes and why it stopped. Without --until-time and --max-events, a scene
  * whose actions carry an `until` is computed as far as they say (sceneBound: every action applied
  * and each until met, what Timeline.fromScene computes), with "reason": "until" (or "idle");
- * options given on the command line win over the scene's. simulate(tl, cmd, bound, mode, io)
+ * options given on the command line win over the scene's. simulate(tl, cmd, bound, line)
  * computes in slices (a generator: an interrupt is thrown in at a yield) and returns the time to
  * print the bodies at and the reason.
  */
@@ -10,8 +10,7 @@ import type { SceneFile, Until } from "../scene/types.js";
 import type { Timeline } from "../timeline/timeline.js";
 import type { ProlongResult } from "../timeline/types.js";
 import type { Command } from "./args.js";
-import type { CliIO } from "./io.js";
-import { compute, type ProgressMode } from "./progress.js";
+import type { ProgressLine } from "./progress.js";
 
 /**
  * The scene's own bound, when one of its actions has an `until`: up to its last action's time,
@@ -44,17 +43,17 @@ export function* simulate(
   tl: Timeline,
   cmd: Extract<Command, { command: "simulate" }>,
   bound: Until | null,
-  mode: ProgressMode,
-  io: CliIO,
+  line: ProgressLine,
 ): Generator<void, SimulateEnd, void> {
   if (bound !== null) {
-    yield* compute(tl, bound, mode, io);
+    // the bound is the last action; the untils may take the run further: no time goal to show
+    yield* line.compute(tl, bound, {});
     return { time: tl.horizon, reason: tl.nothingLeft() ? "idle" : "until" };
   }
   const until: Until = {};
   if (cmd.untilTime !== undefined) until.time = cmd.untilTime;
   if (cmd.maxEvents !== undefined) until.events = cmd.maxEvents;
-  const reason = yield* compute(tl, until, mode, io);
+  const reason = yield* line.compute(tl, until);
   // "idle" exactly: the World's own reason can be "time" while only cell crossings are queued (a
   // glide with no event left), and an event limit can land on the last event.
   if (reason !== "idle" && !tl.nothingLeft()) return { time: tl.horizon, reason };
