@@ -37,14 +37,24 @@ export interface ViewSource {
   points: readonly { id: string; p: Vec2 }[];
 }
 
+/** A state whose bodies are read only when an action needs them all (SceneView.lazy). */
+export interface LazyViewSource extends Omit<ViewSource, "bodies"> {
+  bodies(): ViewSource["bodies"];
+  hasBody(id: string): boolean;
+}
+
 export class SceneView {
   time: number;
   g: number;
   gravity: Vec2;
-  readonly bodies = new Map<string, ViewBody>();
   readonly lines = new Map<string, ViewLine>();
   readonly points = new Map<string, Vec2>();
-  readonly grid = new DiscGrid();
+  private readonly bodyMap = new Map<string, ViewBody>();
+  private readonly discs = new DiscGrid();
+  /** Of a lazy view, the source its bodies are read from (null once they are), and the ids removed
+   *  meanwhile. */
+  private source: LazyViewSource | null = null;
+  private removed: Set<string> | null = null;
 
   constructor(time: number, g: number, gravity: Vec2) {
     this.time = time;
@@ -55,20 +65,73 @@ export class SceneView {
   /** A view of a known state (all positions known). */
   static of(s: ViewSource): SceneView {
     const v = new SceneView(s.time, s.g, s.gravity);
-    for (const b of s.bodies) {
-      v.bodies.set(b.id, { x: b.x, y: b.y, r: b.r, mu: b.mu, known: true });
-      v.grid.add(b.id, b.x, b.y, b.r); // ids are unique in a state
-    }
+    v.addBodies(s.bodies);
     for (const l of s.lines) v.lines.set(l.id, { p1: l.p1, p2: l.p2, kind: l.kind });
     for (const p of s.points) v.points.set(p.id, p.p);
     return v;
+  }
+
+  /**
+   * A view of a known state whose bodies are read from `s` only when an action needs them all (a
+   * body added, moved or checked against a line or point, a change of gravity): a group of actions
+   * that only give velocities to bodies or remove them asks `s.hasBody` alone (reading a million
+   * bodies for each such group made a scene's later actions cost seconds each). Until then `s`
+   * must give the state at the view's time less the bodies this view removed (a World the group's
+   * actions are applied to as they are checked does).
+   */
+  static lazy(s: LazyViewSource): SceneView {
+    const v = SceneView.of({ ...s, bodies: [] });
+    v.source = s;
+    return v;
+  }
+
+  private addBodies(bodies: ViewSource["bodies"]): void {
+    for (const b of bodies) {
+      if (this.removed?.has(b.id)) continue;
+      this.bodyMap.set(b.id, { x: b.x, y: b.y, r: b.r, mu: b.mu, known: true });
+      this.discs.add(b.id, b.x, b.y, b.r); // ids are unique in a state
+    }
+  }
+
+  /** The bodies, read from a lazy view's source first. */
+  get bodies(): Map<string, ViewBody> {
+    if (this.source !== null) {
+      const s = this.source;
+      this.source = null;
+      this.addBodies(s.bodies());
+      this.removed = null;
+    }
+    return this.bodyMap;
+  }
+
+  /** The discs of the bodies whose position is known. */
+  get grid(): DiscGrid {
+    if (this.source !== null) void this.bodies;
+    return this.discs;
+  }
+
+  /** Whether body `id` is in the view (without reading a lazy view's bodies). */
+  hasBody(id: string): boolean {
+    if (this.source === null) return this.bodyMap.has(id);
+    return this.removed?.has(id) !== true && this.source.hasBody(id);
+  }
+
+  /** Removes body `id` (in the view: `hasBody(id)`). */
+  removeBody(id: string): void {
+    if (this.source === null) {
+      this.bodyMap.delete(id);
+      this.discs.remove(id);
+    } else {
+      this.removed ??= new Set();
+      this.removed.add(id);
+    }
   }
 
   /** Time moves on without a simulation: every body's position becomes unknown. */
   forgetPositions(time: number): void {
     this.time = time;
     for (const b of this.bodies.values()) b.known = false;
-    this.grid.clear();
+    this.discs.clear();
   }
 }
 
@@ -104,9 +167,13 @@ function checkObstacle(view: SceneView, path: string, what: string, hits: (b: Vi
   }
 }
 
+function missing(id: string, kind: string, view: SceneView, path: string): SceneError {
+  return new SceneError(join(path, "id"), `no ${kind} ${q(id)} at time ${view.time}`);
+}
+
 function need<T>(map: Map<string, T>, id: string, kind: string, view: SceneView, path: string): T {
   const v = map.get(id);
-  if (v === undefined) throw new SceneError(join(path, "id"), `no ${kind} ${q(id)} at time ${view.time}`);
+  if (v === undefined) throw missing(id, kind, view, path);
   return v;
 }
 
@@ -128,7 +195,7 @@ export function checkAndApply(view: SceneView, a: Action, path: string): void {
       return;
     }
     case "giveVelocity":
-      need(view.bodies, a.id, "body", view, path);
+      if (!view.hasBody(a.id)) throw missing(a.id, "body", view, path);
       return;
     case "updateBody": {
       const b = need(view.bodies, a.id, "body", view, path);
@@ -146,9 +213,8 @@ export function checkAndApply(view: SceneView, a: Action, path: string): void {
       return;
     }
     case "removeBody":
-      need(view.bodies, a.id, "body", view, path);
-      view.bodies.delete(a.id);
-      view.grid.remove(a.id);
+      if (!view.hasBody(a.id)) throw missing(a.id, "body", view, path);
+      view.removeBody(a.id);
       return;
     case "addLine":
     case "updateLine": {

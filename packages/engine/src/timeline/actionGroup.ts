@@ -30,11 +30,13 @@ export function applyGroup(c: TimelineCore): void {
   c.startChecked = false;
   const view = checked
     ? null
-    : SceneView.of({
+    : // the World is the lazy view's source: each action is applied to it once checked
+      SceneView.lazy({
         time: t,
         g: w.g,
         gravity: w.gravity,
-        bodies: w.bodies(),
+        bodies: () => w.bodies(),
+        hasBody: (id) => w.hasBody(id),
         lines: w.lines(),
         points: w.points(),
       });
