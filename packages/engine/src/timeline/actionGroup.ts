@@ -80,7 +80,7 @@ function track(c: TimelineCore, a: Action): void {
   } else if (a.type === "addBody") {
     c.live.set(a.id, c.bodyIds.length);
     c.bodyIds.push(a.id);
-    c.table.ensure(c.bodyIds.length);
+    if (c.history) c.table.ensure(c.bodyIds.length); // without history the table is not used
     c.sortedLive = null;
   } else if (a.type === "addLine") {
     c.lineNums.set(a.id, c.lineIds.length);

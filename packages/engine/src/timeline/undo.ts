@@ -92,7 +92,8 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
     // bodies (the only rows an edit computing forward changes: a body gone keeps its row, and a new
     // body's row lies past the restored ids and is written whole when a body takes it again)
     table: edit === undefined ? c.table.data.slice() : c.table.data,
-    rows: edit === undefined || edit.worldReplaced ? null : liveRows(c),
+    // (without history the table is not kept: it has no rows)
+    rows: edit === undefined || edit.worldReplaced || !c.history ? null : liveRows(c),
     bodyIds: tailOf(c.bodyIds, start(c.bodyIds, kf?.bodyCount)),
     live: new Map(c.live),
     lineIds: tailOf(c.lineIds, start(c.lineIds, kf?.lineCount)),
