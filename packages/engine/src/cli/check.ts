@@ -3,7 +3,7 @@
  * the simulation, computed exactly up to the last action (a headless Timeline), which ends for any
  * scene; it prints {"valid": …} either way (see checkScene).
  */
-import { parseScene, printable } from "../scene/parse.js";
+import { parseSceneFrom, printable } from "../scene/parse.js";
 import { ChapgameError, SimulationError } from "../sim/errors.js";
 import { Timeline } from "../timeline/timeline.js";
 import type { ProgressLine } from "./progress.js";
@@ -36,7 +36,7 @@ export function* checkScene(
   let last = 0;
   let count = 0;
   try {
-    const scene = parseScene(read());
+    const scene = parseSceneFrom(read);
     for (const a of scene.actions) if (a.time > last) last = a.time;
     count = scene.actions.length;
     line.building(scene);

@@ -13,7 +13,7 @@
  * an interrupt it prints the pieces up to where the run stopped) and check (check.ts: prints
  * {"valid": …} either way); progress on stderr: progress.ts.
  */
-import { parseScene, printable } from "../scene/parse.js";
+import { parseSceneFrom, printable } from "../scene/parse.js";
 import { ChapgameError, SimulationError } from "../sim/errors.js";
 import { Timeline } from "../timeline/timeline.js";
 import { parseArgs, USAGE, UsageError } from "./args.js";
@@ -62,7 +62,7 @@ function* command(argv: readonly string[], given: CliIO): Generator<void, number
     // the text is read where it is parsed, and not kept (150 MB for a million bodies)
     const read = () => readText(io, cmd.scene, line);
     if (cmd.command === "check") return yield* checkScene(read, printable(source), line);
-    const scene = parseScene(read());
+    const scene = parseSceneFrom(read);
     // the scene's own bound only when the command line gives none
     const bound =
       cmd.command === "simulate" && cmd.untilTime === undefined && cmd.maxEvents === undefined

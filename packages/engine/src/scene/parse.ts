@@ -183,6 +183,25 @@ export function parseScene(input: string | unknown): SceneFile {
   }
 }
 
+/**
+ * parseScene of the text `read()` gives (for the CLI): the text is let go once it is read as JSON,
+ * before the scene is checked, where parseScene's caller holds it to the end (150 MB for a million
+ * bodies). The same result and errors as parseScene(read()).
+ */
+export function parseSceneFrom(read: () => string): SceneFile {
+  const { raw, underflow } = readFrom(read);
+  try {
+    return checkScene(raw, true);
+  } catch (e) {
+    throw explainUnderflow(e, underflow);
+  }
+}
+
+/** readText of the text `read()` gives, which lives in this call only. */
+function readFrom(read: () => string): ReturnType<typeof readText> {
+  return readText(read());
+}
+
 /** The parsed scene value checked and normalized (parseScene's checks after the JSON text's).
  *  `owned`: raw was parsed here from text, so each raw action is let go once its checked copy is
  *  made (a million raw actions held beside their copies took 200 MB); a caller's object is left as
