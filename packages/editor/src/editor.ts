@@ -59,24 +59,19 @@ export class Editor extends EditorTime {
     return err;
   }
 
-  /** Adds a line, ray or segment; `select`: and selects it (a refused one selects nothing). */
-  async addLine(
-    p1: Vec2,
-    p2: Vec2,
-    kind: "line" | "ray" | "segment",
-    select = false,
-  ): Promise<string | null> {
+  /** Adds a line, ray or segment and selects it (a refused one selects nothing), as addBody. */
+  async addLine(p1: Vec2, p2: Vec2, kind: "line" | "ray" | "segment"): Promise<string | null> {
     const id = nextFreeId("l", this.client.latestFrame?.lines.map((l) => l.id) ?? [], this.doc.actions);
     const err = await this.edit([this.stamp({ time: this.now(), type: "addLine", id, p1, p2, kind })]);
-    if (err === null && select) this.ui.setState({ selection: { kind: "line", id } });
+    if (err === null) this.ui.setState({ selection: { kind: "line", id } });
     return err;
   }
 
-  /** Adds a fixed point; `select`: and selects it (a refused one selects nothing). */
-  async addPoint(p: Vec2, select = false): Promise<string | null> {
+  /** Adds a fixed point and selects it (a refused one selects nothing), as addBody. */
+  async addPoint(p: Vec2): Promise<string | null> {
     const id = nextFreeId("p", this.client.latestFrame?.points.map((q) => q.id) ?? [], this.doc.actions);
     const err = await this.edit([this.stamp({ time: this.now(), type: "addPoint", id, p })]);
-    if (err === null && select) this.ui.setState({ selection: { kind: "point", id } });
+    if (err === null) this.ui.setState({ selection: { kind: "point", id } });
     return err;
   }
 

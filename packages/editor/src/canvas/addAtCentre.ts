@@ -62,13 +62,8 @@ export async function addAtCentre(editor: Editor): Promise<void> {
     tool === "disc"
       ? await editor.addBody(c[0], c[1], r)
       : tool === "point"
-        ? await editor.addPoint(c, true)
-        : await editor.addLine(
-            [c[0] - half, c[1]],
-            [c[0] + half, c[1]],
-            tool as "line" | "ray" | "segment",
-            true,
-          );
+        ? await editor.addPoint(c)
+        : await editor.addLine([c[0] - half, c[1]], [c[0] + half, c[1]], tool as "line" | "ray" | "segment");
   // a refusal is in the message bar already (the engine's, in the user's terms)
   const sel = editor.ui.getState().selection;
   if (err === null && sel !== null)

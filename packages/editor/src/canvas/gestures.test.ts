@@ -74,6 +74,46 @@ describe("canvas gestures", () => {
     expect(editor.ui.getState().selection).toEqual(other);
   });
 
+  it("every object a pointer adds is selected: a clicked disc or point, a dragged line, ray or segment", async () => {
+    const { editor, client, g } = await setup();
+    const other = { kind: "body", id: "a" } as const;
+    const adds = [
+      { tool: "disc", from: [100, 100], to: [100, 100], selection: { kind: "body", id: "b1" } },
+      { tool: "point", from: [700, 100], to: [700, 100], selection: { kind: "point", id: "p1" } },
+      { tool: "line", from: [100, 500], to: [300, 500], selection: { kind: "line", id: "l1" } },
+      { tool: "ray", from: [500, 500], to: [700, 450], selection: { kind: "line", id: "l2" } },
+      { tool: "segment", from: [100, 550], to: [300, 560], selection: { kind: "line", id: "l3" } },
+    ] as const;
+    for (const add of adds) {
+      editor.ui.setState({ tool: add.tool, selection: other });
+      if (add.from === add.to) g.down([...add.from], false);
+      else drag(g, [...add.from], [...add.to]);
+      g.up([...add.to]);
+      await settled(client);
+      expect(editor.ui.getState().message).toBeNull();
+      expect(editor.ui.getState().selection, add.tool).toEqual(add.selection);
+    }
+    expect(editor.doc.actions.map((a) => a.type)).toEqual([
+      "addBody",
+      "addBody",
+      "addPoint",
+      "addLine",
+      "addLine",
+      "addLine",
+    ]);
+  });
+
+  it("a pointer add the engine refuses selects nothing new (a line through the disc)", async () => {
+    const { editor, client, g } = await setup();
+    const other = { kind: "body", id: "a" } as const;
+    editor.ui.setState({ tool: "segment", selection: other });
+    drag(g, [300, 300], [500, 300]);
+    g.up([500, 300]);
+    await settled(client);
+    expect(editor.ui.getState().message?.tone).toBe("error");
+    expect(editor.ui.getState().selection).toEqual(other);
+  });
+
   it("Escape during a move drag restores the scene: no action, no undo step, the release applies nothing", async () => {
     const { editor, client, g, redraws } = await setup();
     const before = editor.doc;

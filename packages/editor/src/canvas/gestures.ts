@@ -3,7 +3,8 @@
  * select/move/pan, velocity drag, cue strike, add disc/line/point. A drag shows a preview (the
  * overlay) and ends in one edit on release; a press that moves less than CLICK_SLOP_PX is a click.
  * Picking up a disc (move, velocity) pauses playback; a cue strike does not (it strikes a moving disc).
- * A disc dragged and released (move, velocity) is the selection, as a click on it makes it.
+ * A disc dragged and released (move, velocity) is the selection, as a click on it makes it; an object
+ * a click or drag adds is selected once the engine accepts it (Editor.addBody, addLine, addPoint).
  * cancel() (Escape, or the browser cancelling the pointer) drops the gesture: the view, the playback
  * and the scene are as before the press, no action is recorded, and the release applies nothing.
  */

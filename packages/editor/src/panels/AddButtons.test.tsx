@@ -1,7 +1,8 @@
 // @vitest-environment jsdom
 // The Add body / Add line / Add point buttons put the new object near the centre of the view where
 // it touches nothing (they once always used the exact centre, so in any scene with something there
-// every Add was refused with an overlap message), and select it only once it exists.
+// every Add was refused with an overlap message), and select it (each of the three) only once it
+// exists.
 import { newtonsCradle } from "@chapgame/engine";
 import { act, cleanup, fireEvent, render, screen, waitFor } from "@testing-library/react";
 import { afterEach, describe, expect, it } from "vitest";
@@ -37,16 +38,20 @@ async function click(name: string) {
 }
 
 describe("Add buttons", () => {
-  it("Add body, Add point and Add line succeed with a disc at the centre of the view", async () => {
+  it("Add body, Add point and Add line succeed with a disc at the centre of the view, each selecting what it added", async () => {
+    // (Add point and Add line once left the selection on the body added before them, while Add
+    // body, a click and Enter selected what they added.)
     const { editor } = await setup();
     await click("Add body");
     await waitFor(() => expect(editor.doc.actions.some((a) => "id" in a && a.id === "b1")).toBe(true));
+    await waitFor(() => expect(editor.ui.getState().selection).toEqual({ kind: "body", id: "b1" }));
     await click("Add point");
     await waitFor(() => expect(editor.doc.actions.some((a) => a.type === "addPoint")).toBe(true));
+    await waitFor(() => expect(editor.ui.getState().selection).toEqual({ kind: "point", id: "p1" }));
     await click("Add line");
     await waitFor(() => expect(editor.doc.actions.some((a) => a.type === "addLine")).toBe(true));
+    await waitFor(() => expect(editor.ui.getState().selection).toEqual({ kind: "line", id: "l1" }));
     expect(editor.ui.getState().message).toBeNull();
-    expect(editor.ui.getState().selection).toEqual({ kind: "body", id: "b1" });
   });
 
   it("a refused Add body selects nothing", async () => {
