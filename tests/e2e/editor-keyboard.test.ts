@@ -1,7 +1,7 @@
 /**
  * End-to-end, in Debian's Chromium: the scene view from the keyboard (reached by Tab, with a focus
  * ring and a name; arrows pan, + and − zoom, N selects the next object, Enter adds the tool's object
- * at the centre of the view, ? lists every shortcut) while a
+ * at the centre of the view, which a crosshair marks, ? lists every shortcut) while a
  * mouse click on it keeps ←/→ stepping through events; buttons that cannot act keep the focus; and
  * at 800 x 600 the time bar (Time slider, Play) is in view without scrolling, as in larger windows.
  */
@@ -170,7 +170,70 @@ describe("the time bar in view", () => {
   });
 });
 
+/**
+ * How blue the centre marker's right arm is on the canvas: the largest excess of blue over red of
+ * the pixels from 4 to 8 CSS px right of the canvas's centre, 2 px above and below (the marker's blue
+ * about 140 there; the background, the discs' outlines and the selection's orange at most 30).
+ */
+function centreInk(): Promise<number> {
+  return canvas().evaluate((el) => {
+    const c = el as HTMLCanvasElement;
+    const k = c.width / c.getBoundingClientRect().width;
+    const x = Math.round(c.width / 2 + 4 * k);
+    const y = Math.round(c.height / 2 - 2 * k);
+    const w = Math.max(1, Math.round(4 * k));
+    const h = Math.max(1, Math.round(4 * k));
+    const px = c.getContext("2d")!.getImageData(x, y, w, h).data;
+    let most = -255;
+    for (let i = 0; i < px.length; i += 4) most = Math.max(most, px[i + 2]! - px[i]!);
+    return most;
+  });
+}
+
 describe("adding from the keyboard", () => {
+  it("focused from the keyboard with a tool that adds, the canvas marks its centre, where Enter adds; not otherwise", async () => {
+    const marked = () => centreInk().then((ink) => ink > 100);
+    await canvas().focus();
+    // far from the balls, and Move: no marker
+    for (let i = 0; i < 6; i++) await page.keyboard.press("Shift+ArrowUp");
+    await page.keyboard.press("1");
+    await page.waitForTimeout(200);
+    expect(await marked()).toBe(false);
+    // Tab away and back: the keyboard's focus; the Disc tool then draws the marker
+    await page.keyboard.press("Shift+Tab");
+    await page.keyboard.press("Tab");
+    expect(
+      await canvas().evaluate((el) => el === document.activeElement && el.matches(":focus-visible")),
+    ).toBe(true);
+    await page.keyboard.press("4");
+    await poll(marked).toBe(true);
+    await screenshot(page, "keyboard-centre-marker");
+    for (const key of ["5", "6", "7", "8"]) {
+      await page.keyboard.press(key);
+      await poll(marked).toBe(true);
+    }
+    await page.keyboard.press("3"); // Cue adds nothing
+    await poll(marked).toBe(false);
+    await page.keyboard.press("4");
+    await poll(marked).toBe(true);
+    // the focus leaves: gone
+    await page.keyboard.press("Shift+Tab");
+    await poll(marked).toBe(false);
+    // a pointer user: the Disc tool pressed with the mouse, then a script focuses the canvas (as the
+    // shortcuts dialog gives it back): no keyboard focus, no marker
+    await page
+      .getByRole("toolbar", { name: "Tools" })
+      .getByRole("button", { name: "Disc", exact: true })
+      .click();
+    await canvas().evaluate((el) => (el as HTMLElement).focus());
+    expect(
+      await canvas().evaluate((el) => el === document.activeElement && !el.matches(":focus-visible")),
+    ).toBe(true);
+    await page.waitForTimeout(200);
+    expect(await marked()).toBe(false);
+    await page.keyboard.press("1");
+  });
+
   it("Enter on the focused canvas adds the tool's object at the centre of the view; a taken centre says so", async () => {
     await canvas().focus();
     // far from the balls: a free place

@@ -143,7 +143,7 @@ export const SHORTCUTS: Shortcut[] = [
   },
   {
     keys: ["Enter"],
-    what: `Add the current tool's object at the centre of the view: a disc, a point, or a horizontal line, ray or segment ${NEW_LINE_PX} px long across it (it is then selected)`,
+    what: `Add the current tool's object at the centre of the view: a disc, a point, or a horizontal line, ray or segment ${NEW_LINE_PX} px long across it (it is then selected); a small cross marks that centre while the canvas has the keyboard focus`,
     where: "canvas",
     matches: oneOf("Enter"),
     run: (c) => void addAtCentre(c.editor),

@@ -10,7 +10,8 @@
  * own: shortcuts.ts's "canvas" ones, the arrows pan), named by what it shows (sceneLabel.ts: counts
  * and the selection, from a frame refreshed at most once a second: the only re-render) and described
  * by its keys. A mouse press does not focus it (the focus leaves the field it was in, as before it was
- * focusable), so ←/→ still step through events after a click on a disc.
+ * focusable), so ←/→ still step through events after a click on a disc. Focused from the keyboard
+ * with a tool that adds, it marks the centre of the view, where Enter adds (centreMarker.ts).
  * Any view change but the canvas's own fit (a drag, the wheel, a key) ends the fitted view.
  */
 import { useEffect, useRef } from "react";
@@ -22,6 +23,7 @@ import type { Frame } from "../remote/protocol";
 import { canvasKeys } from "../shortcuts";
 import type { View } from "../store/uiStore";
 import { addWheelZoom } from "../wheelLatch";
+import { canvasFocus, centreMarkerShown, drawCentreMarker } from "./centreMarker";
 import { drawFrame } from "./draw";
 import { drawStats } from "./drawStats";
 import { fitFrame } from "./fitScene";
@@ -53,6 +55,7 @@ export function SceneCanvas() {
     let dirty = true;
     let drawnBase: Frame | null = null;
     let drawnT = Number.NaN;
+    let drawnMarker = false;
     /**
      * The frame on screen (the worker's frame evaluated at the drawn time): what the pointer hits.
      * While playing, the worker's latest frame is up to a lookahead behind the time drawn.
@@ -135,7 +138,10 @@ export function SceneCanvas() {
         return;
       }
       const moved = base !== drawnBase || s.t !== drawnT;
-      if (!moved && !dirty) return;
+      // the centre marker follows the keyboard focus and the tool (centreMarker.ts)
+      const marker = centreMarkerShown(canvasFocus(canvas), s.tool);
+      if (!moved && !dirty && marker === drawnMarker) return;
+      drawnMarker = marker;
       const f = base && (base.t === s.t ? base : frameAt(base, s.t, shown, held));
       drawn = f;
       if (moved) {
@@ -153,6 +159,7 @@ export function SceneCanvas() {
         overlay: gestures.overlay,
         pixelRatio: dpr,
       });
+      if (marker) drawCentreMarker(ctx, size);
       drawStats.draws++;
       drawStats.drawnBodies += f?.ids.length ?? 0;
       drawStats.heldBodies += held.count;

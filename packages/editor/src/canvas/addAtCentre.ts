@@ -30,12 +30,17 @@ const ADDS: Partial<Record<Tool, { noun: string; button: string }>> = {
   point: { noun: "point", button: "Add point" },
 };
 
+/** Whether Enter adds something with `tool` (the Disc, Line, Ray, Segment and Point tools do). */
+export function addsAtCentre(tool: Tool): boolean {
+  return ADDS[tool] !== undefined;
+}
+
 /** Adds the current tool's object at the centre of the view, or says why nothing was added. */
 export async function addAtCentre(editor: Editor): Promise<void> {
   const { tool, view } = editor.ui.getState();
   const adds = ADDS[tool];
   if (adds === undefined) {
-    const tools = TOOL_KEYS.map((t, i) => ({ ...t, key: i + 1 })).filter((t) => ADDS[t.tool] !== undefined);
+    const tools = TOOL_KEYS.map((t, i) => ({ ...t, key: i + 1 })).filter((t) => addsAtCentre(t.tool));
     const label = TOOL_KEYS.find((t) => t.tool === tool)?.label ?? tool;
     editor.info(
       `Enter adds at the centre of the view with ${tools.map((t) => `${t.label} (${t.key})`).join(", ")}; the ${label} tool adds nothing.`,
