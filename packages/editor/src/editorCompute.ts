@@ -7,9 +7,11 @@
  * user's cell: doc/refusalTerms.ts). After each change the session computes ahead as
  * the Calculation settings say (computeUntil, ensureAhead), a reload at the current time computes at
  * least up to it (keepTo), and a computation the engine refused to continue (a Zeno state) is said.
- * Edits past the computed history wait for it (notComputedYet).
+ * Edits past the computed history are refused until it gets there (notComputedYet), a refusal that
+ * lapses then (behindRefusals.ts: the message bar says so, a cell showing it drops it).
  */
 
+import { BehindRefusals, reachedMessage } from "./behindRefusals";
 import { explainRefusal } from "./doc/actionRefs";
 import { refusalInUserTerms } from "./doc/refusalTerms";
 import type { Action, SceneFile, Until } from "./engineTypes";
@@ -20,10 +22,23 @@ import type { UiStore } from "./store/uiStore";
 export const shown = (t: number): number => Number(t.toPrecision(6));
 
 export class EditorCompute {
+  /** The refusals of edits the history has not reached yet, followed until they lapse. */
+  private readonly behind: BehindRefusals;
+
   constructor(
     readonly client: TimelineClient,
     readonly ui: UiStore,
   ) {
+    // A refusal the message bar still shows is replaced once it lapses or changes: by what the
+    // edit meets now (the history reached its time), or the refusal that holds instead.
+    this.behind = new BehindRefusals(client, (text, next, time) => {
+      if (this.ui.getState().message?.text !== text) return;
+      const message =
+        next === null
+          ? { text: reachedMessage(time), tone: "info" as const }
+          : { text: next, tone: "error" as const };
+      this.ui.setState({ message });
+    });
     // A computation the engine refused to continue (a Zeno state): say why the horizon stops there.
     let stopped: string | null = null;
     client.subscribe(() => {
@@ -127,15 +142,18 @@ export class EditorCompute {
    * recomputed from the start while the current time stays; until the computation reaches it, the
    * canvas and the tables show the state at the horizon, not at the current time, and an edit would
    * be built from those values (a velocity typed in one cell keeps the other component shown).
+   * The refusal is followed until it lapses (behindRefusals.ts; refusalChanged).
    */
   protected notComputedYet(actions: Action[]): string | null {
-    const info = this.client.getSnapshot();
-    const late = Math.max(...actions.map((a) => a.time));
-    if (!(late > info.horizon)) return null;
-    const at = shown(late);
-    const now = shown(info.horizon);
-    if (info.computing === null)
-      return `The history reaches only t = ${now} s (its computation was cancelled): go to a computed time, or type t = ${at} s to compute up to it, then edit.`;
-    return `The history is still being computed up to t = ${at} s (it reaches ${now} s): edit once it gets there.`;
+    return this.behind.refuse(Math.max(...actions.map((a) => a.time)));
+  }
+
+  /**
+   * When the refusal `text` an edit got stops holding: null once the history has reached the edit's
+   * time (the edit can be made again), or the refusal that holds instead (the computation stopped
+   * short of it); null at once for any other refusal. A cell showing `text` follows it.
+   */
+  refusalChanged(text: string): Promise<string | null> | null {
+    return this.behind.whenChanged(text);
   }
 }

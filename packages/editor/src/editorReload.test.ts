@@ -23,11 +23,30 @@ describe("Editor while a reload's history is recomputed", () => {
     expect(h.editor.ui.getState().message?.text).toBe(early);
     await undone;
     await settled(h.client);
+    // the refusal no longer holds: the bar says so rather than keep it
+    expect(h.editor.ui.getState().message).toEqual({
+      text: "The history has reached t = 5 s: edits there are accepted now.",
+      tone: "info",
+    });
     const undoneDoc = h.client.getSnapshot().doc!;
     expect(undoneDoc).not.toEqual(edited);
     expect(h.editor.history.getState()).toMatchObject({ past: [], future: [edited] });
     expect(h.client.getSnapshot().horizon).toBeGreaterThanOrEqual(5);
     expect(await h.editor.updateBody("c3", { v: [0, 1] })).toBeNull();
+  });
+
+  it("a refusal the bar no longer shows is not brought back, nor replaced, when it lapses", async () => {
+    const h = await cradleEditor();
+    h.editor.ui.setState({ t: 0 });
+    expect(await h.editor.updateBody("striker", { v: [8, 0] })).toBeNull();
+    await settled(h.client);
+    h.editor.ui.setState({ t: 5 });
+    const undone = h.editor.undo();
+    expect(await h.editor.updateBody("c3", { v: [0, 1] })).toMatch(/still being computed/);
+    h.editor.info("Saved the file.");
+    await undone;
+    await settled(h.client);
+    expect(h.editor.ui.getState().message).toEqual({ text: "Saved the file.", tone: "info" });
   });
 
   it('says so when the recomputation was cancelled short of the time (it said "still being computed")', async () => {

@@ -13,6 +13,8 @@
  * the message bar does not show the same text already (the editor's refusals go there too: a screen
  * reader announced each twice). Both the button and the input carry `label` as their accessible name. Enter is consumed by the
  * input (its default prevented), so closing the cell never lets it activate the button refocused.
+ * A refusal that only holds until the history reaches the time (Editor.refusalChanged: "still being
+ * computed" after an undo) is dropped once it does, the draft kept for Enter.
  * Opening a cell pauses playback (inside an editor): the edit applies at the current time, and the
  * values the cell and its row show are those of that time, not of a moment that playback has left.
  */
@@ -87,6 +89,20 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
 
   const typed = edit?.typed ?? null;
 
+  // A refusal that lapses (an edit at a time the history has not reached yet, behindRefusals.ts) is
+  // dropped once the history gets there, or replaced by the one that holds then; the draft stays for
+  // Enter. It stayed until Enter, long after the computation had passed the time.
+  const shownError = useRef<string | null>(null);
+  shownError.current = error;
+  const followRefusal = (err: string) => {
+    void editor?.refusalChanged(err)?.then((next) => {
+      if (shownError.current !== err) return; // corrected, closed or refused again meanwhile
+      shownError.current = next;
+      setError(next);
+      if (next !== null) followRefusal(next);
+    });
+  };
+
   const commit = async (byKey = false) => {
     if (pending.current) return;
     if (typed === null || typed === value) {
@@ -100,7 +116,10 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
     try {
       const err = await onCommit(typed.trim());
       if (err === null || err === UNDONE_DURING_CHECK) close(byKey);
-      else setError(err);
+      else {
+        setError(err);
+        followRefusal(err);
+      }
     } finally {
       clearTimeout(slow);
       setWaiting(false);
