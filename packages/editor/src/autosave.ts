@@ -3,19 +3,15 @@
  * a reload of that tab, and only that tab) and saves into its own slot 300 ms after each scene change
  * and when the page goes. A reloaded tab restores its own slot; a fresh tab (or one whose slot is
  * gone) restores the most recently saved slot of any tab. When another tab saves newer work, this tab
- * shows a notice (ui.newerWork) with a way to open it; Dismiss mutes that tab until this one reloads.
- * Nothing is lost: a slot removed by another tab's pruning is written again at once, and a tab
- * duplicated by the browser (which copies sessionStorage, so the id too) takes a new id on start
- * (tabPresence.ts). A fresh tab that restored the slot of a tab no longer open takes that slot over.
- * A load that replaces the scene (Clear, a preset, an opened scene: Editor.replaced) keeps the scene
- * it took away beside the slot (doc/autosaveSlots.ts keepsReplaced, written with the next save): the
- * autosave of the new scene 300 ms later no longer makes the old one unreachable, since a reload
- * loads it as the step Undo goes back to (boot.ts firstScene). While Undo has undone that load, the
- * kept scene is that of the latest earlier load not undone, or none (Redo brings it back): a reload
- * never offers a scene as replaced when nothing replaced it in the end.
- */
+ * shows a notice (ui.newerWork) with a way to open it (newerWork.ts); Dismiss mutes that tab until
+ * this one reloads. Nothing is lost: a slot removed by another tab's pruning is written again at
+ * once, and a tab duplicated by the browser (which copies sessionStorage, so the id too) takes a new
+ * id on start (tabPresence.ts). A fresh tab that restored the slot of a tab no longer open takes that
+ * slot over. The scene a load replaced (Clear, a preset, an opened scene) is written beside the slot
+ * (which one: keptReplacement.ts). The browser is reached through an AutosaveEnv (autosaveEnv.ts). */
+
+import type { AutosaveEnv } from "./autosaveEnv";
 import {
-  keepsReplaced,
   migrateLegacy,
   newestSlot,
   pruneSlots,
@@ -35,7 +31,9 @@ import { sceneText } from "./doc/sceneIo";
 import type { Editor } from "./editor";
 import type { Replacement } from "./editorSession";
 import type { SceneFile } from "./engineTypes";
-import { type TabChannel, TabPresence } from "./tabPresence";
+import { KeptReplacement } from "./keptReplacement";
+import { clockTime } from "./newerWork";
+import { TabPresence } from "./tabPresence";
 
 /** Milliseconds of quiet after a scene change before it is autosaved. */
 export const AUTOSAVE_DELAY_MS = 300;
@@ -47,54 +45,8 @@ export const TAB_KEY = "chapgame.editor.tab";
  * pile up copies of one scene.
  */
 export const ADOPT_AFTER_MS = 500;
-/** Recent loads whose replaced scene a tab remembers (the latest not undone is kept). */
-const KEPT_MAX = 8;
 /** sessionStorage: set while this tab's last scene could not be saved. */
 const LOST_KEY = "chapgame.editor.tab.lost";
-
-export interface AutosaveEnv {
-  local: Storage;
-  session: Storage;
-  now(): number;
-  newTabId(): string;
-  channel: TabChannel | null;
-}
-
-export function browserAutosaveEnv(): AutosaveEnv {
-  return {
-    local: window.localStorage,
-    session: window.sessionStorage,
-    now: () => Date.now(),
-    newTabId: () =>
-      typeof crypto.randomUUID === "function"
-        ? crypto.randomUUID()
-        : `${Date.now().toString(36)}-${Math.random().toString(36).slice(2)}`,
-    channel:
-      typeof BroadcastChannel === "undefined"
-        ? null
-        : (new BroadcastChannel("chapgame.editor.tabs") as unknown as TabChannel),
-  };
-}
-
-/** The clock time of a save, for the user (hh:mm:ss, local time). */
-export const clockTime = (ms: number) => new Date(ms).toLocaleTimeString();
-
-/** Opens the scene another tab saved (one undo step over this tab's scene). */
-export async function openNewerWork(editor: Editor, storage: Storage, tab: string): Promise<string | null> {
-  editor.ui.setState({ newerWork: null });
-  const slot = readSlot(storage, tab);
-  if (!slot) {
-    const text = "That tab's scene is no longer stored (it was closed long ago or pruned).";
-    editor.ui.setState({ message: { text, tone: "error" } });
-    return text;
-  }
-  const err = await editor.loadScene(slot.scene);
-  if (err === null)
-    editor.info(
-      `Opened the scene another tab saved at ${clockTime(slot.savedAt)}. Undo returns to the scene you had.`,
-    );
-  return err;
-}
 
 export class TabAutosave {
   tab: string;
@@ -106,19 +58,8 @@ export class TabAutosave {
   private readonly muted = new Set<string>();
   /** The slot of another tab a fresh tab restored (null: none, or its own). */
   private restoredFrom: { tab: string; savedAt: number } | null = null;
-  /** The scene text the last replacing load loaded when it was a preset or Clear's (keepsReplaced). */
-  private reproducibleText: string | null = null;
-  /** The recent loads whose replaced scene is to be kept (keepsReplaced), with that scene's text. */
-  private kept: { by: Replacement; text: string }[] = [];
-  /** The recent replacements whose undo step is undone now (EditorSession.replaced). */
-  private undone: ReadonlySet<Replacement> = new Set();
-  /**
-   * The scene to keep beside the slot: the one the latest kept load whose step is not undone took
-   * away (Undo after a reload goes back to it as Undo now would), or null.
-   */
-  private replacedText: string | null = null;
-  /** Whether replacedText is still to be written (or, null, the kept scene removed). */
-  private replacedPending = false;
+  /** The scene a load replaced, kept beside the slot (keptReplacement.ts). */
+  private readonly replaced = new KeptReplacement();
 
   constructor(private readonly env: AutosaveEnv) {
     migrateLegacy(env.local);
@@ -154,35 +95,14 @@ export class TabAutosave {
     return { slot, note, replaced: replaced && replaced.text !== slot.text ? replaced : null };
   }
 
-  /**
-   * A load replaced `before` with `loaded` (Editor.replaced): `before` is kept beside the slot with
-   * the next save, unless there is nothing in it to lose (keepsReplaced: empty, or a preset's or
-   * Clear's scene unedited).
-   */
+  /** A load replaced the scene (Editor.replaced): KeptReplacement.replacedBy. */
   replacedBy(replacement: Replacement): void {
-    const { before, loaded, reproducible } = replacement;
-    const text = sceneText(before);
-    if (keepsReplaced({ text, empty: before.actions.length === 0 }, this.reproducibleText))
-      this.kept = [...this.kept, { by: replacement, text }].slice(-KEPT_MAX);
-    this.reproducibleText = reproducible ? sceneText(loaded) : null;
-    this.keepLatest();
+    this.replaced.replacedBy(replacement);
   }
 
-  /**
-   * The replacements whose step Undo undid (`undone`, EditorSession.replaced): the scene one of them
-   * took away is kept no longer (a reload would offer it as replaced though nothing replaced it),
-   * and is kept again once Redo brings its step back.
-   */
+  /** The replacements whose step Undo undid: KeptReplacement.undoneNow. */
   undoneNow(undone: ReadonlySet<Replacement>): void {
-    this.undone = undone;
-    this.keepLatest();
-  }
-
-  private keepLatest(): void {
-    const text = [...this.kept].reverse().find((k) => !this.undone.has(k.by))?.text ?? null;
-    if (text === this.replacedText) return;
-    this.replacedText = text;
-    this.replacedPending = true;
+    this.replaced.undoneNow(undone);
   }
 
   /** A slot of another tab saved after this tab's own (at start), holding a different scene. */
@@ -206,7 +126,7 @@ export class TabAutosave {
     let failed = writeSlot(this.env.local, this.tab, text, now);
     if (failed !== null) {
       // tried again after it (written again below, or with the next save that fits, if it fits too)
-      if (this.replacedText !== null) this.replacedPending = true;
+      if (this.replaced.text !== null) this.replaced.pending = true;
       if (this.env.local.getItem(replacedKey(this.tab)) !== null) {
         removeReplaced(this.env.local, this.tab);
         failed = writeSlot(this.env.local, this.tab, text, now);
@@ -220,10 +140,10 @@ export class TabAutosave {
     this.ownSavedAt = now;
     this.lastText = text;
     let replacedFailed: string | null = null;
-    if (this.replacedPending || (!prune && this.replacedText !== null)) {
-      if (this.replacedText === null) removeReplaced(this.env.local, this.tab);
-      else replacedFailed = writeReplaced(this.env.local, this.tab, this.replacedText, now);
-      this.replacedPending = false;
+    if (this.replaced.pending || (!prune && this.replaced.text !== null)) {
+      if (this.replaced.text === null) removeReplaced(this.env.local, this.tab);
+      else replacedFailed = writeReplaced(this.env.local, this.tab, this.replaced.text, now);
+      this.replaced.pending = false;
     }
     if (prune) pruneSlots(this.env.local, this.tab);
     return replacedFailed;
@@ -245,7 +165,7 @@ export class TabAutosave {
       if (timer !== null) clearTimeout(timer);
       timer = null;
       const doc = editor.confirmedDoc();
-      if (doc === savedDoc && !force && !this.replacedPending) return;
+      if (doc === savedDoc && !force && !this.replaced.pending) return;
       savedDoc = doc;
       const failed = doc ? this.save(doc, !force) : null;
       if (failed !== null && !autosaveFailed) ui.setState({ message: { text: failed, tone: "error" } });

@@ -5,7 +5,8 @@
  * it), autosave per tab (autosave.ts), the time a reloaded tab was at (timeKeep.ts), playback and
  * keyboard.
  */
-import { browserAutosaveEnv, clockTime, TabAutosave } from "./autosave";
+import { TabAutosave } from "./autosave";
+import { browserAutosaveEnv } from "./autosaveEnv";
 import { drawStats, resetDrawStats } from "./canvas/drawStats";
 import { loadCharacterKeys, pageStorage } from "./characterKeys";
 import { sceneFromHash } from "./doc/persistence";
@@ -14,6 +15,7 @@ import { sceneText } from "./doc/sceneIo";
 import { Editor } from "./editor";
 import type { SceneFile } from "./engineTypes";
 import { bindKeyboard } from "./keyboard";
+import { clockTime } from "./newerWork";
 import { startPlayback } from "./playback";
 import { buildPreset, DEFAULT_PRESET } from "./presets";
 import { TimelineClient } from "./remote/client";

@@ -3,8 +3,9 @@
  * under the header until the reader opens that work (one undo step over this tab's scene) or
  * dismisses it (that tab is not announced again until this one reloads).
  */
-import { clockTime, openNewerWork } from "../autosave";
+
 import { useEditor, useUi } from "../EditorContext";
+import { clockTime, openNewerWork } from "../newerWork";
 
 export function NewerWorkNotice() {
   const editor = useEditor();
