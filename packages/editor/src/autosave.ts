@@ -29,10 +29,10 @@ import {
 } from "./doc/autosaveSlots";
 import { sceneText } from "./doc/sceneIo";
 import type { Editor } from "./editor";
-import type { Replacement } from "./editorSession";
 import type { SceneFile } from "./engineTypes";
 import { KeptReplacement } from "./keptReplacement";
 import { clockTime } from "./newerWork";
+import type { Replacement } from "./replacementSteps";
 import { TabPresence } from "./tabPresence";
 
 /** Milliseconds of quiet after a scene change before it is autosaved. */

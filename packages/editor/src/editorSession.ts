@@ -12,36 +12,21 @@
  * (the engine's path `actions[i]`) also says which action that is (doc/actionRefs.ts). A load that
  * replaces the scene (undoable, not keeping the time: Clear, a preset, an opened scene) is published
  * in `replaced` (the scene before and the one loaded), so autosave can keep the scene taken away,
- * and so is an Undo or Redo of its step (autosave then keeps that scene only while it is done).
+ * and so is an Undo or Redo of its step (autosave then keeps that scene only while it is done; the
+ * steps of such loads: replacementSteps.ts).
  */
 
-import { EMPTY_HISTORY, HISTORY_LIMIT, type History, record, takenBack } from "./doc/history";
+import { EMPTY_HISTORY, type History, record, takenBack } from "./doc/history";
 import { type ObjectKind, renameObject } from "./doc/rename";
 import type { Intents, Ticket } from "./doc/undoIntents";
 import { EditorCompute } from "./editorCompute";
 import type { Action, SceneFile } from "./engineTypes";
 import { type Port, UNDONE_DURING_CHECK } from "./remote/protocol";
+import { type Replaced, ReplacementSteps } from "./replacementSteps";
 import { SceneChanges } from "./sceneChanges";
 import { createStore, type Store } from "./store/createStore";
 
 export { shown } from "./editorCompute";
-
-/**
- * A load that replaced the scene `before` with `loaded`; `reproducible`: `loaded` can be had again as
- * it was (a preset, Clear's empty scene), so replacing it unedited loses nothing.
- */
-export interface Replacement {
-  before: SceneFile;
-  loaded: SceneFile;
-  reproducible: boolean;
-}
-
-/** EditorSession.replaced. */
-export interface Replaced {
-  last: Replacement | null;
-  /** Replacements whose undo step is undone now (the scene they took away is the scene, or after it). */
-  undone: ReadonlySet<Replacement>;
-}
 
 /** How a scene is loaded (loadScene). */
 export interface LoadOptions {
@@ -61,13 +46,13 @@ export class EditorSession extends EditorCompute {
   private readonly changes = new SceneChanges(this.client);
   /** Undo and Redo as the user asked them, over `history`, while changes are queued (undoIntents.ts). */
   readonly intents: Store<Intents> = this.changes.intents;
+  /** The undo steps of loads that replaced the scene (replacementSteps.ts). */
+  private readonly replacements = new ReplacementSteps();
   /**
    * The last load that replaced the scene (the scene it took away and the one it loaded), and the
    * recent ones whose undo step is undone now (Undo went back past them; Redo may bring them back).
    */
-  readonly replaced: Store<Replaced> = createStore<Replaced>({ last: null, undone: new Set() });
-  /** Each recent replacement's undo step: its entry in Undo while done, the scene in Redo after it while undone. */
-  private replacementSteps: { replacement: Replacement; entry: SceneFile; done: boolean }[] = [];
+  readonly replaced: Store<Replaced> = this.replacements.replaced;
   /** Makes a fresh host (a new Web Worker) for restartEngine; null where none can be made. */
   portFactory: (() => Port) | null = null;
   /**
@@ -95,37 +80,14 @@ export class EditorSession extends EditorCompute {
     return this.unconfirmed ?? this.client.getSnapshot().doc;
   }
 
-  /**
-   * After Undo (`undo`) or Redo restored `scene` with the history `h`: a replacement whose step that
-   * was is undone (its scene after goes to Redo) or done again (its entry is the scene before).
-   */
+  /** After Undo (`undo`) or Redo restored `scene` with the history `h`: ReplacementSteps.stepped. */
   protected stepped(undo: boolean, scene: SceneFile, h: History): void {
-    let changed = false;
-    for (const step of this.replacementSteps)
-      if (step.entry === scene && step.done === undo) {
-        step.done = !undo;
-        step.entry = (undo ? h.future[0] : h.past[h.past.length - 1]) ?? scene;
-        changed = true;
-      }
-    if (changed)
-      this.replaced.setState({
-        undone: new Set(this.replacementSteps.filter((s) => !s.done).map((s) => s.replacement)),
-      });
+    this.replacements.stepped(undo, scene, h);
   }
 
-  /**
-   * What Undo (`undo` true) or Redo says when it goes to `scene`: a load that replaced the scene (a
-   * preset, a file, a link, Clear) is named as one ("Undone: a change of 19 actions" read as an
-   * edit: review), else null (the caller describes the edit).
-   */
+  /** What Undo or Redo says when it goes to `scene` if a load replaced it (ReplacementSteps.summary), else null. */
   protected loadStepSummary(scene: SceneFile, undo: boolean): string | null {
-    const step = this.replacementSteps.find((s) => s.entry === scene && s.done === undo);
-    if (!step) return null;
-    const n = scene.actions.length;
-    const actions = `${n} action${n === 1 ? "" : "s"}`;
-    return undo
-      ? `Undone: the scene loaded over yours; back to your scene (${actions}).`
-      : `Redone: the scene loaded (${actions}).`;
+    return this.replacements.summary(scene, undo);
   }
 
   /** Runs `change` once the scene changes queued before it are done (SceneChanges.serial). */
@@ -185,13 +147,8 @@ export class EditorSession extends EditorCompute {
       this.unconfirmed = null;
     }
     if (options.undoable !== false) this.history.setState(record(this.history.getState(), before));
-    if (options.undoable !== false && !options.keepTime) {
-      const replacement = { before, loaded: this.doc, reproducible: options.reproducible === true };
-      this.replacementSteps = [...this.replacementSteps, { replacement, entry: before, done: true }].slice(
-        -HISTORY_LIMIT,
-      );
-      this.replaced.setState({ last: replacement });
-    }
+    if (options.undoable !== false && !options.keepTime)
+      this.replacements.recorded({ before, loaded: this.doc, reproducible: options.reproducible === true });
     this.ui.setState((s) => ({
       t: options.keepTime ? s.t : 0,
       playing: options.keepTime ? s.playing : false,

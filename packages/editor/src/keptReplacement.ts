@@ -9,7 +9,7 @@
  */
 import { keepsReplaced } from "./doc/autosaveSlots";
 import { sceneText } from "./doc/sceneIo";
-import type { Replacement } from "./editorSession";
+import type { Replacement } from "./replacementSteps";
 
 /** Recent loads whose replaced scene a tab remembers (the latest not undone is kept). */
 const KEPT_MAX = 8;
