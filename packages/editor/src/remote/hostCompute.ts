@@ -8,12 +8,14 @@
  * kept; so does one whose history grows past HISTORY_MAX_BYTES. While a change's later actions are checked (pendingEdit.ts) its restore job runs on: a
  * refusal takes the change back (takeBack), and once the history passes the check the change is
  * answered; a computation asked meanwhile starts once the old history is back (afterRestore).
+ * How a request becomes a job (or leaves the running one alone) and the slices' budget: computeJob.ts.
  */
 import type { Until } from "../engineTypes";
+import { type Job, nextBudget, planJob, targetOf } from "./computeJob";
 import { errorInfo } from "./errors";
 import { lastEventTime } from "./eventQueries";
 import { PendingEdits } from "./pendingEdit";
-import type { ComputeAsk, ComputeStatus, HostMessage, TimelineInfo } from "./protocol";
+import type { ComputeAsk, HostMessage, TimelineInfo } from "./protocol";
 import { SeriesRecorder } from "./series";
 import type { TimelineLike } from "./timelineLike";
 
@@ -28,8 +30,6 @@ const ROUND_MS = 8;
  * times a second. The revision moves only when info is sent, so frames and info always agree.
  */
 const INFO_EVERY_MS = 50;
-/** Wall-clock milliseconds one prolongSlice call should take (the event budget adapts to it). */
-const SLICE_MS = 3;
 /**
  * A computation stops once the stored history (Timeline.historyBytes: records and keyframes) passes
  * this many bytes, saying so in `info.stopped`: a scene that never comes to rest computed with ∞
@@ -42,10 +42,6 @@ export const HISTORY_MAX_BYTES = 512 * 2 ** 20;
 const CAP_CHECK_MS = 100;
 /** While computing, energy/event samples are recorded at most this often (ms of wall-clock time). */
 const RECORD_EVERY_MS = 100;
-
-interface Job extends ComputeStatus {
-  budget: number;
-}
 
 export interface HostEnv {
   post(message: HostMessage, transfer?: Transferable[]): void;
@@ -116,51 +112,23 @@ export class HostCompute {
 
   protected startJob(ask: ComputeAsk, restore = false): void {
     this.capChecked = Number.NEGATIVE_INFINITY; // a new job compares the history's size at once
-    const { until } = ask;
     const h = this.tl.horizon;
     const running = this.job;
-    // The absolute time a time limit reaches (from the horizon, or from `ask.from`).
-    const target = until?.time === undefined ? null : (ask.from ?? h) + until.time;
     // While an edit's later actions are being checked, its job runs on (PendingEdits.hold).
-    if (this.pending.hold(running, target, ask, restore)) {
+    if (this.pending.hold(running, targetOf(ask, h), ask, restore)) {
       this.changed(false);
       return;
     }
-    // Asked up to a time reached already (from the current time, after an edit): nothing to do,
-    // and a computation running goes on.
-    if (ask.from !== undefined && target !== null && until?.events === undefined && target <= h) return;
-    // A request for less than a running restore covers (the editor's "compute ahead" after an edit)
-    // leaves it running: it would otherwise cut the recomputation of the user's history short.
-    if (
-      !restore &&
-      running?.restore &&
-      running.targetTime !== null &&
-      until !== null &&
-      until.events === undefined &&
-      target !== null &&
-      target <= running.targetTime
-    ) {
+    // A time reached already, or less than a running restore brings back (the editor's "compute
+    // ahead" after an edit): the running computation goes on (computeJob.ts).
+    const plan = planJob(ask, restore, running, h);
+    if (plan === "reached") return;
+    if (plan === "covered") {
       this.changed(false);
       return;
     }
-    // A computation to a later time that replaces a running restore brings the user's history back
-    // too (and more): it stays a restore, so the editor keeps that history's end (the slider's range,
-    // a time held in it) and a shorter request does not cut it.
-    const covers =
-      running?.restore === true &&
-      target !== null &&
-      until?.events === undefined &&
-      running.targetTime !== null &&
-      target >= running.targetTime;
     const after = this.afterRestore;
-    this.job = {
-      restore: restore || covers,
-      events: 0,
-      targetEvents: until?.events ?? null,
-      targetTime: target,
-      startHorizon: h,
-      budget: 256,
-    };
+    this.job = plan;
     // A computation asked during a check waits for the job that took the restore's place.
     if (after !== null && after.job === running) after.job = this.job;
     this.idle = false;
@@ -247,7 +215,7 @@ export class HostCompute {
       }
       const took = this.env.now() - t0;
       job.events += res.events;
-      job.budget = Math.max(16, Math.min(1 << 20, Math.round(job.budget * (took > 0 ? SLICE_MS / took : 2))));
+      job.budget = nextBudget(job.budget, took);
       if (res.done) {
         const timeLeft = job.targetTime !== null && this.tl.horizon < job.targetTime;
         const eventsLeft = job.targetEvents !== null && job.events < job.targetEvents;
