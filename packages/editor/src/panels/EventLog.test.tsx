@@ -1,17 +1,18 @@
 // @vitest-environment jsdom
-// The Event log while the worker computes: progress reports arrive more often than a log page can
-// be read and answered, and the log must still follow the scene (it once showed the previous
-// scene's events for the whole of a long computation: every report discarded the pending page).
+// The Event log: it follows the scene while the worker computes (progress reports arrive more often
+// than a log page can be read and answered: it once showed the previous scene's events for the whole
+// of a long computation, every report discarding the pending page), says what each entry did,
+// removes an action, selects and lights an entry's objects, moves the focus between entries, and
+// counts the entries a filter shows. What an entry says and selects: EventLogEntries.test.ts.
 import { newtonsCradle } from "@chapgame/engine";
 import { act, cleanup, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
 import { afterEach, describe, expect, it, vi } from "vitest";
 import { EditorContext } from "../EditorContext";
 import type { Editor } from "../editor";
-import type { LogEvent } from "../engineTypes";
 import type { RequestMessage } from "../remote/protocol";
 import { settled, testEditor } from "../testing/harness";
 import { sceneOf } from "../testing/scenes";
-import { EventLog, highlightOf, kindLabel, selectionOf } from "./EventLog";
+import { EventLog } from "./EventLog";
 import { CONFIRM_DELAY_MS } from "./removeConfirm";
 
 afterEach(cleanup);
@@ -158,14 +159,6 @@ describe("EventLog", () => {
     ).toBeTruthy();
   });
 
-  it("labels an entry by its kind, with the action's type in words for an action", () => {
-    const base = { time: 1, ids: ["a"], point: null, normal: null, impulse: null };
-    const hit = { time: 1, point: [0, 0] as const, normal: [1, 0] as const, impulse: 1 };
-    expect(kindLabel({ ...hit, ids: ["a", "w"], type: "bodyLine" })).toBe("body–line");
-    expect(kindLabel({ ...base, type: "action", action: "setGlobal" })).toBe("action: set global");
-    expect(kindLabel({ ...base, type: "action", action: "removePoint" })).toBe("action: remove point");
-  });
-
   it("clicking an entry selects the object of its kind: a line's action selects the line", async () => {
     // A body named like the line: selecting "body w" for the line's entry made Delete delete it.
     const { h, log } = await bodyLinePointLog("w");
@@ -261,34 +254,6 @@ describe("EventLog", () => {
     expect(h.editor.ui.getState()).toMatchObject({ t: 6.75, highlight: ["body:a", "point:q"] });
     fireEvent.click((await within(log).findByText("body–line")).closest("tr")!);
     expect(h.editor.ui.getState()).toMatchObject({ t: 2.25, highlight: ["body:a", "line:w"] });
-  });
-
-  it("highlightOf: every participant with its kind; an action's object; nothing for setGlobal", () => {
-    const base = { time: 1, point: null, normal: null, impulse: null };
-    const hit = { time: 1, point: [0, 0] as const, normal: [1, 0] as const, impulse: 1 };
-    const stop = { time: 1, point: [0, 0] as const, normal: null, impulse: 0 };
-    expect(highlightOf({ ...hit, type: "bodyBody", ids: ["a", "b"] })).toEqual(["body:a", "body:b"]);
-    expect(highlightOf({ ...hit, type: "bodyPoint", ids: ["a", "p"] })).toEqual(["body:a", "point:p"]);
-    expect(highlightOf({ ...stop, type: "stop", ids: ["a"] })).toEqual(["body:a"]);
-    expect(highlightOf({ ...base, type: "action", action: "removePoint", ids: ["p"] })).toEqual(["point:p"]);
-    expect(highlightOf({ ...base, type: "action", action: "setGlobal", ids: [] })).toEqual([]);
-  });
-
-  it("selectionOf: an action's object by the action's type, a collision's body, nothing for setGlobal", () => {
-    const base = { time: 1, point: null, normal: null, impulse: null };
-    const action = (action: NonNullable<LogEvent["action"]>, ids = ["x"]) =>
-      selectionOf({ ...base, type: "action", action, ids });
-    expect(action("updateLine")).toEqual({ kind: "line", id: "x" });
-    expect(action("removeLine")).toEqual({ kind: "line", id: "x" });
-    expect(action("updatePoint")).toEqual({ kind: "point", id: "x" });
-    expect(action("removePoint")).toEqual({ kind: "point", id: "x" });
-    expect(action("giveVelocity")).toEqual({ kind: "body", id: "x" });
-    expect(action("removeBody")).toEqual({ kind: "body", id: "x" });
-    expect(action("setGlobal", [])).toBeNull();
-    const hit = { time: 1, point: [0, 0] as const, normal: [1, 0] as const, impulse: 1 };
-    const stop = { time: 1, point: [0, 0] as const, normal: null, impulse: 0 };
-    expect(selectionOf({ ...hit, type: "bodyPoint", ids: ["a", "p"] })).toEqual({ kind: "body", id: "a" });
-    expect(selectionOf({ ...stop, type: "stop", ids: ["a"] })).toEqual({ kind: "body", id: "a" });
   });
 
   it("filtered by a body, the header counts the body's entries shown, then the log's total", async () => {

@@ -5,13 +5,10 @@
 // Chromium): the wider armed button moved out from under the pointer at wide windows, which
 // disarmed it; the ✕ of the next identical action stayed at "…" after a removal; a held Enter
 // removed; and the focus fell to the page after a removal made from the keyboard.
-import { act, cleanup, fireEvent, render, screen, waitFor, within } from "@testing-library/react";
+import { act, cleanup, fireEvent, screen, waitFor, within } from "@testing-library/react";
 import { afterEach, describe, expect, it, vi } from "vitest";
-import { EditorContext } from "../EditorContext";
-import type { Action } from "../engineTypes";
-import { settled, testEditor } from "../testing/harness";
-import { sceneOf } from "../testing/scenes";
-import { EventLog } from "./EventLog";
+import { settled } from "../testing/harness";
+import { ARMED_B, B, clock, twoVelocities } from "../testing/removeActionLog";
 import { ARMED_MS, CONFIRM_DELAY_MS } from "./removeConfirm";
 
 afterEach(() => {
@@ -19,65 +16,6 @@ afterEach(() => {
   vi.restoreAllMocks();
   vi.useRealTimers();
 });
-
-/** The clock the button reads (performance.now), moved by the test. */
-function clock() {
-  let now = 10_000;
-  vi.spyOn(performance, "now").mockImplementation(() => now);
-  return (ms: number) => {
-    now += ms;
-  };
-}
-
-/** The Event log of a scene of `actions` at t = 5, once it shows `buttons` remove buttons. */
-async function logOf(actions: Action[], buttons: number) {
-  const h = testEditor();
-  await h.editor.loadScene(sceneOf(actions), { undoable: false });
-  await settled(h.client);
-  act(() => h.editor.ui.setState({ t: 5 }));
-  render(
-    <EditorContext.Provider value={h.editor}>
-      <EventLog />
-    </EditorContext.Provider>,
-  );
-  const log = screen.getByRole("table", { name: "Event log" });
-  await waitFor(() =>
-    expect(within(log).getAllByRole("button", { name: /^Remove action/ })).toHaveLength(buttons),
-  );
-  return { h, log };
-}
-
-/** Two discs, each given a velocity at t = 0.25 (two action entries at the same time); the log at t = 5. */
-async function twoVelocities() {
-  const { h, log } = await logOf(
-    [
-      { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 },
-      { time: 0, type: "addBody", id: "b", x: 0, y: 10, r: 1, m: 1 },
-      { time: 0.25, type: "giveVelocity", id: "a", v: [4, 0] },
-      { time: 0.25, type: "giveVelocity", id: "b", v: [0, 4] },
-    ],
-    4,
-  );
-  const velocities = () => h.editor.doc.actions.filter((a) => a.type === "giveVelocity").map((a) => a.id);
-  return { h, log, velocities };
-}
-
-/** Two identical actions (update body "a" at t = 0.5, as editing a's vx then vy there makes). */
-async function twoUpdates() {
-  const { h, log } = await logOf(
-    [
-      { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 },
-      { time: 0.5, type: "updateBody", id: "a", v: [10, 0] },
-      { time: 0.5, type: "updateBody", id: "a", v: [10, 20] },
-    ],
-    3,
-  );
-  const updates = () => h.editor.doc.actions.filter((a) => a.type === "updateBody").map((a) => a.v);
-  return { h, log, updates };
-}
-
-const B = 'Remove action give velocity to "b" at t = 0.25';
-const ARMED_B = 'Confirm: remove action give velocity to "b" at t = 0.25 (press again; Escape keeps it)';
 
 describe("RemoveActionButton", () => {
   it("a single click only arms the button; the confirm removes the action, says so, and Undo brings it back", async () => {
@@ -211,109 +149,5 @@ describe("RemoveActionButton", () => {
     });
     expect(velocities()).toEqual(["b"]);
     expect(moved.getAttribute("aria-label")).toBe(ARMED_B);
-  });
-
-  it("keyboard: the button takes the focus, and Enter on it is the button's (the row does not jump)", async () => {
-    const tick = clock();
-    const { h, log, velocities } = await twoVelocities();
-    const button = within(log).getByRole("button", { name: B });
-    button.focus();
-    expect(document.activeElement).toBe(button);
-    fireEvent.keyDown(button, { key: "Enter" }); // a button's Enter is its click (below)
-    expect(h.editor.ui.getState().t).toBe(5);
-    fireEvent.click(button);
-    expect(button.getAttribute("aria-label")).toBe(ARMED_B);
-    tick(CONFIRM_DELAY_MS);
-    await act(async () => {
-      fireEvent.click(button);
-      await settled(h.client);
-    });
-    expect(velocities()).toEqual(["a"]);
-  });
-
-  it("armed, the button keeps what it shows in the layout: 'Remove?' is a part of it drawn outside the flow", async () => {
-    clock();
-    const { log } = await twoVelocities();
-    const button = within(log).getByRole("button", { name: B });
-    const rest = button.textContent;
-    fireEvent.click(button);
-    const prompt = button.querySelector(".log-remove-prompt");
-    expect(prompt?.textContent).toBe("Remove?"); // inside the button: pointing at it is pointing at the button
-    expect(prompt?.getAttribute("aria-hidden")).toBe("true"); // the name says it already
-    expect(button.textContent?.replace("Remove?", "")).toBe(rest); // the rest of the button is unchanged
-    // the stylesheet takes the prompt out of the layout (e2e editor-views checks the box in Chromium)
-  });
-
-  it("removing the first of two identical actions leaves the second's ✕ at rest, and it removes", async () => {
-    const tick = clock();
-    const { h, log, updates } = await twoUpdates();
-    const first = within(log).getAllByRole("button", {
-      name: 'Remove action update body "a" at t = 0.5',
-    })[0]!;
-    fireEvent.click(first);
-    tick(CONFIRM_DELAY_MS);
-    await act(async () => {
-      fireEvent.click(first);
-      await settled(h.client);
-    });
-    expect(updates()).toEqual([[10, 20]]);
-    // the log shows the scene without it: one update entry, in the row the first one had
-    await waitFor(() => expect(within(log).getAllByText("action: update body")).toHaveLength(1));
-    const second = within(log).getByRole("button", { name: /update body "a"/ });
-    expect(second.getAttribute("aria-label")).toBe('Remove action update body "a" at t = 0.5');
-    expect(second.getAttribute("aria-disabled")).toBe("false");
-    expect(second.textContent).toBe("✕");
-    fireEvent.click(second);
-    tick(CONFIRM_DELAY_MS);
-    await act(async () => {
-      fireEvent.click(second);
-      await settled(h.client);
-    });
-    expect(updates()).toEqual([]);
-  });
-
-  it("a held key's repeats never press it (Enter presses on keydown; only the first counts)", async () => {
-    clock();
-    const { log } = await twoVelocities();
-    const button = within(log).getByRole("button", { name: B });
-    // fireEvent returns false when the handler prevented the default action (the press)
-    expect(fireEvent.keyDown(button, { key: "Enter" })).toBe(true);
-    expect(fireEvent.keyDown(button, { key: "Enter", repeat: true })).toBe(false);
-    expect(fireEvent.keyDown(button, { key: " ", repeat: true })).toBe(false);
-    expect(fireEvent.keyDown(button, { key: "Escape", repeat: true })).toBe(true);
-  });
-
-  it("a removal from the keyboard moves the focus to the next action's ✕, else the previous one's", async () => {
-    const tick = clock();
-    const { h, log, velocities } = await twoVelocities();
-    const removeFocused = async (name: string) => {
-      const button = within(log).getByRole("button", { name });
-      button.focus();
-      fireEvent.click(button);
-      tick(CONFIRM_DELAY_MS);
-      await act(async () => {
-        fireEvent.click(button);
-        await settled(h.client);
-      });
-    };
-    // b is the last action: the focus goes to a's ✕ (the previous action)
-    await removeFocused(B);
-    expect(velocities()).toEqual(["a"]);
-    await waitFor(() =>
-      expect(document.activeElement?.getAttribute("aria-label")).toBe(
-        'Remove action give velocity to "a" at t = 0.25',
-      ),
-    );
-    // a's, with b's after it: the focus goes to b's ✕ (the next action, at a's index now)
-    await act(async () => {
-      await h.editor.undo();
-      await settled(h.client);
-    });
-    await waitFor(() =>
-      expect(within(log).getAllByRole("button", { name: /^Remove action/ })).toHaveLength(4),
-    );
-    await removeFocused('Remove action give velocity to "a" at t = 0.25');
-    expect(velocities()).toEqual(["b"]);
-    await waitFor(() => expect(document.activeElement?.getAttribute("aria-label")).toBe(B));
   });
 });
