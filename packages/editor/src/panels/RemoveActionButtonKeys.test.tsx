@@ -43,7 +43,7 @@ describe("RemoveActionButton from the keyboard, and after a removal", () => {
     expect(prompt?.textContent).toBe("Remove?"); // inside the button: pointing at it is pointing at the button
     expect(prompt?.getAttribute("aria-hidden")).toBe("true"); // the name says it already
     expect(button.textContent?.replace("Remove?", "")).toBe(rest); // the rest of the button is unchanged
-    // the stylesheet takes the prompt out of the layout (e2e editor-views checks the box in Chromium)
+    // the stylesheet takes the prompt out of the layout (e2e editor-remove-action checks the box in Chromium)
   });
 
   it("removing the first of two identical actions leaves the second's ✕ at rest, and it removes", async () => {
