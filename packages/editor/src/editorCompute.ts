@@ -151,7 +151,8 @@ export class EditorCompute {
   /**
    * When the refusal `text` an edit got stops holding: null once the history has reached the edit's
    * time (the edit can be made again), or the refusal that holds instead (the computation stopped
-   * short of it); null at once for any other refusal. A cell showing `text` follows it.
+   * short of it). No promise (null) for any other refusal: it holds until the edit changes. A cell
+   * showing `text` follows it (panels/EditableCell.tsx).
    */
   refusalChanged(text: string): Promise<string | null> | null {
     return this.behind.whenChanged(text);
