@@ -147,16 +147,21 @@ describe("editor views", () => {
     // d150 is past the 60 rows listed: its event's first participant (listed at the end when it is
     // the selection, or far down the first 60) is out of the table's view
     await page.getByRole("textbox", { name: "Filter by body" }).fill("d150");
-    const event = page
-      .getByRole("table", { name: "Event log" })
-      .getByRole("row")
-      .filter({ hasText: "body–body" })
-      .first();
-    const participants = event.locator("td").nth(2);
+    const rows = page.getByRole("table", { name: "Event log" }).getByRole("row");
+    const first = rows.filter({ hasText: "body–body" }).first();
+    const participants = first.locator("td").nth(2);
     await poll(async () =>
       (await participants.count()) ? (await participants.textContent())!.split(", ") : [],
     ).toContain("d150");
-    const ids = (await participants.textContent())!.split(", ");
+    // The row is pinned by its own cells (time and participants) before the click: the log's rows
+    // may still change under a locator that says only "the first" (it failed so under load,
+    // clicking another event than the one read).
+    const time = (await first.locator("td").first().textContent())!;
+    const listed = (await participants.textContent())!;
+    const ids = listed.split(", ");
+    const event = rows.filter({ has: page.getByRole("cell", { name: time, exact: true }) }).filter({
+      has: page.getByRole("cell", { name: listed, exact: true }),
+    });
     await event.click();
     const chosen = await page.evaluate(() => {
       const ed = (

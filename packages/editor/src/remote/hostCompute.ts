@@ -84,9 +84,10 @@ export class HostCompute {
 
   /**
    * Takes the pending change back (its later actions were refused, or their check was cancelled):
-   * the old action list (the timeline computes lazily: setActions leaves it at its last keyframe
-   * before the edit, or at 0) or the timeline before the load, then the old history recomputed in
-   * slices.
+   * the old action list (the timeline computes lazily: setActions keeps the history before the
+   * first changed action and goes back to its last keyframe before it, or to 0; a change after the
+   * horizon keeps all of it) or the timeline before the load, then the old history recomputed in
+   * slices up to the horizon it had.
    */
   protected takeBack(message: string, path: string | null): void {
     const p = this.pending.edit!;
