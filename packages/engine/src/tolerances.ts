@@ -296,6 +296,54 @@ export const ZENO_PUSH_BODIES = 4;
 export const ZENO_STREAK_PROGRESS = 0.01;
 
 /**
+ * The trap watch (sim/trapWatch.ts, its proof in sim/pocket.ts): a disc shut in a pocket of two or
+ * three still sides (lines, points, immovable discs at rest) and the one moving immovable disc, which
+ * closes the pocket before anything can change that disc's motion, is crushed: infinitely many
+ * events before the pocket closes. The proof is geometric, so that such a crush is reported after
+ * hundreds or thousands of events instead of the 2.2 to 2.4 million the windows' convergence test
+ * (ZENO_SHRINK) needs: a disc crushed into a corner by an immovable disc falling in under gravity
+ * took 2.4 million events and 6 to 19 s (review, session 22); 256 to 2,560 events now
+ * (sim/trapWatch.test.ts). The proof keeps its sets ZENO_TRAP_SLACK × r inside the disc's true
+ * ones (r its radius), and tests with further margins of that size, so that neither the round-off
+ * overlaps between the disc and what touches it nor the proof's own round-off can decide it; and
+ * it is tried only where that round-off is far smaller: every magnitude in it (coordinates, radii,
+ * the time × the speeds) at most ZENO_TRAP_SCALE × r, whose 16 ulps are 2^-24 r, 1/256 of the
+ * slack. Beyond that the windows still report the crush.
+ */
+export const ZENO_TRAP_SLACK = 2 ** -16;
+/** Largest magnitude, in radii of the trapped disc, that the trap watch's proof accepts (see ZENO_TRAP_SLACK). */
+export const ZENO_TRAP_SCALE = 2 ** 24;
+/**
+ * The trap watch reports a proven crush once the moving immovable disc is within this fraction of
+ * the trapped disc's radius of closing the pocket, not as soon as it is proven (which can be while
+ * the disc still moves freely in a wide pocket): the history then shows the disc rattling ever
+ * faster, and the report comes shortly before the crush (a thousandth of its time or less in the
+ * tests). About 65 times ZENO_TRAP_SLACK, so that the proof's margins (a few slacks) barely delay it.
+ * The price: an action scheduled between the report and the crush is not reached (it was the same
+ * with the windows, over a shorter stretch).
+ */
+export const ZENO_TRAP_GAP = 1e-3;
+/**
+ * The trap watch tries its proof at a collision between a finite disc and a moving immovable one
+ * only while the Zeno watch's count of events in its window, modulo ZENO_TRAP_EVERY (a power of
+ * two), is below ZENO_TRAP_TRIES: the proof scans every obstacle and immovable disc, and a pump
+ * stirring a large gas must not pay that at each of its collisions. 16 consecutive counts of every
+ * 256 hold collisions of the crushed disc with the crusher whatever the period of the pattern of
+ * its collisions (up to 16): a crush is tried every 256 events or so.
+ */
+export const ZENO_TRAP_EVERY = 256;
+/** Consecutive event counts, of every ZENO_TRAP_EVERY, at which the trap watch tries its proof. */
+export const ZENO_TRAP_TRIES = 16;
+/**
+ * The obstacles and immovable discs nearest the disc (by the gap to its surface) that the trap
+ * watch tries, in chains of two and three, as the pocket's still sides: 15 pairs and 60 chains of
+ * three of 6. A pocket closing on the disc has its sides within a small gap of it, so the nearest
+ * are its sides, unless more than 6 crowd there (a corner of many short segments), when the
+ * windows still report the crush.
+ */
+export const ZENO_TRAP_CANDIDATES = 6;
+
+/**
  * Before the grid had levels: the most "big bodies" (discs over GRID_BIG_RATIO times the next
  * largest) kept out of the grid's cells.
  * @deprecated Unused since the grid has levels (sim/grid.ts); kept because they are exported.
