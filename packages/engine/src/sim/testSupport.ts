@@ -1,8 +1,10 @@
 /**
- * Helpers for the World's tests (not built, not packed): the totals a collision must keep, and
- * the break of a rack of touching discs (a scene that found several rounding defects).
+ * Helpers for the World's tests (not built, not packed): the totals a collision must keep, the
+ * break of a rack of touching discs (a scene that found several rounding defects), and a pit an
+ * immovable disc passes over (the trap watch's tests).
  */
 import type { BodyState } from "./types.js";
+import { World } from "./world.js";
 
 /** Kinetic energy and momentum of the bodies: { energy, px, py }. */
 export function totals(bodies: readonly BodyState[]): { energy: number; px: number; py: number } {
@@ -55,4 +57,21 @@ export function minCentreDistance(bodies: readonly BodyState[]): number {
       best = Math.min(best, Math.hypot(p.x - q.x, p.y - q.y));
     }
   return best;
+}
+
+/**
+ * A V pit (sides at 45° up to height 2) holding a disc (r 1) under gravity 0.05, and an immovable
+ * disc (R 1) crossing above it on a parabola whose apex is `gap` above closing the pit on the disc
+ * (negative: it dips into the pocket, a crush).
+ */
+export function pit(gap: number): World {
+  const g = 0.05;
+  const w = new World({ g: 0, gravity: [0, -g] });
+  w.addLine("left", [-2, 2], [0, 0], "segment");
+  w.addLine("right", [0, 0], [2, 2], "segment");
+  w.addBody("d", { x: 0.1, y: 1.6, r: 1, m: 1 });
+  const apex = Math.SQRT2 + 2 + gap; // the disc's lowest spot is (0, sqrt 2)
+  const T = 8;
+  w.addBody("p", { x: T, y: apex - 0.5 * g * T * T, r: 1, m: Number.POSITIVE_INFINITY, vx: -1, vy: g * T });
+  return w;
 }

@@ -1,26 +1,33 @@
 /**
  * The Zeno guard: each collision or stop about to be processed is counted in the Zeno watch
  * (zenoWatch.ts) and, for a stop, in its push watch (pushWatch.ts), which throw a SimulationError
- * on a state the exact model cannot pass. Here the World tells them what they cannot see for
- * themselves: whether an immovable body moves, whether a stopping body moved at all, the masses of the
- * bodies in the event (a long burst at one instant among very different masses is finite), and
- * which bodies the event is about (for the message).
+ * on a state the exact model cannot pass; a collision with a moving immovable disc may first be
+ * tried by the trap watch (trapWatch.ts), which proves a crush geometrically. Here the World tells
+ * them what they cannot see for themselves: whether an immovable body moves, whether a stopping
+ * body moved at all, the masses of the bodies in the event (a long burst at one instant among very
+ * different masses is finite), and which bodies the event is about (for the message).
  */
+import { ZENO_TRAP_EVERY, ZENO_TRAP_TRIES } from "../tolerances.js";
 import { EV_BODY, EV_STOP } from "./bodyStore.js";
-import { CellCrossings } from "./cellCrossings.js";
+import { TrapWatch } from "./trapWatch.js";
 
-export class ZenoGuard extends CellCrossings {
+export class ZenoGuard extends TrapWatch {
   /**
    * Count the event about to be processed now in the Zeno watch (throws on a Zeno state); `before`
    * is the World's time before it (equal to now: at the same instant as the previous item).
    */
   protected guardZeno(before: number, s: number, kind: number): void {
     this.guarded = s;
-    // Both watches test before either counts: an event they refuse leaves the counters as they
-    // were. The response's own refusal (a disc resting on an obstacle) is tested before this.
+    // Every watch tests before any counts (the trap watch counts nothing): an event they refuse
+    // leaves the counters as they were. The response's own refusal (a disc resting on an
+    // obstacle) is tested before this.
     const unmoved = kind === EV_STOP && this.stopsUnmoved(s);
     if (unmoved) this.zeno.push.check(this.store.ids[s] as string, true, this.now);
     const b = this.store;
+    // The trap watch's proof is tried at some collisions only (ZENO_TRAP_EVERY): tested here, so
+    // that the other collisions pay no call.
+    if (kind === EV_BODY && (this.zeno.windowEvents & (ZENO_TRAP_EVERY - 1)) < ZENO_TRAP_TRIES)
+      this.guardTrap(s, b.evOther[s] as number);
     this.zeno.check(
       this.now,
       before,

@@ -85,6 +85,11 @@ export class ZenoWatch {
   /** Sustained pushes (told of every stop by the World; edits end a body's streak). */
   readonly push = new PushWatch();
 
+  /** Events counted in the current window (saved with the counters: the trap watch samples by it). */
+  get windowEvents(): number {
+    return this.windowCount;
+  }
+
   /**
    * Count an event at `time`, the World's time before it being `before`, in a world of `n` body
    * slots, between bodies of masses `ma` and `mb` (Infinity for an obstacle, a stop's second body

@@ -1,0 +1,162 @@
+/**
+ * The trap watch: reports a disc crushed by a moving immovable disc in a pocket of two still
+ * obstacles (a corner of two lines, a wall and a floor, two immovable discs at rest...) after a few
+ * thousand events, by a geometric proof (pocket.ts) instead of the convergence of event times,
+ * which takes the Zeno watch millions of events there.
+ *
+ * At a collision between a finite disc d and a moving immovable disc P (tried at some of them only:
+ * ZENO_TRAP_EVERY, ZENO_TRAP_TRIES), when P is the only immovable body that moves: the
+ * ZENO_TRAP_CANDIDATES obstacles and immovable discs nearest d, in a canonical order (distance, then
+ * kind and id, so that the verdict does not depend on the order they were added in), are tried in
+ * chains of two and three as the pocket's still sides (a corner; a slot or a dead end). A chain is
+ * reported when the pocket is proven to close on d at t* and P's path until t* meets no obstacle
+ * and no immovable disc (nothing else can change P's
+ * motion: finite discs do not, and no other immovable body moves). The report is a SimulationError
+ * at the event's time with ids [] (a Zeno state of many events), thrown before anything is counted
+ * or changed, so the same event throws again.
+ */
+import { ZENO_TRAP_CANDIDATES, ZENO_TRAP_SLACK } from "../tolerances.js";
+import { CellCrossings } from "./cellCrossings.js";
+import { SimulationError } from "./errors.js";
+import { pocketCloses } from "./pocket.js";
+import { type Core, coreDistance, length, triangleCoreDistance } from "./pocketGeometry.js";
+
+const INF = Number.POSITIVE_INFINITY;
+
+/** A side the pocket may have: its core and its order key (which also names it). */
+interface Side {
+  core: Core;
+  /** Distance from d's surface to it. */
+  gap: number;
+  /** 0 line, 1 point, 2 body (ids are unique per kind). */
+  rank: number;
+  id: string;
+}
+
+const hull = new Float64Array(6);
+
+/** How the message names a side. */
+function named(side: Side): string {
+  return `${side.rank === 0 ? "line" : side.rank === 1 ? "point" : "the immovable body"} '${side.id}'`;
+}
+
+/** Canonical order of sides: nearer first, then lines, points, bodies, then by id. */
+function before(u: Side, v: Side): boolean {
+  if (u.gap !== v.gap) return u.gap < v.gap;
+  if (u.rank !== v.rank) return u.rank < v.rank;
+  return u.id < v.id;
+}
+
+/** Insert `side` into `kept` (sorted, at most ZENO_TRAP_CANDIDATES long) if it is among the first. */
+function keep(kept: Side[], side: Side): void {
+  if (kept.length === ZENO_TRAP_CANDIDATES && !before(side, kept[kept.length - 1] as Side)) return;
+  let i = kept.length;
+  while (i > 0 && before(side, kept[i - 1] as Side)) i--;
+  kept.splice(i, 0, side);
+  if (kept.length > ZENO_TRAP_CANDIDATES) kept.pop();
+}
+
+export class TrapWatch extends CellCrossings {
+  /**
+   * Throw a SimulationError if the collision of slot s with slot o (about to be processed now) is
+   * that of a finite disc with the moving immovable disc that is proven to crush it. Changes
+   * nothing. The guard calls it at some collisions only (ZENO_TRAP_EVERY, ZENO_TRAP_TRIES).
+   */
+  protected guardTrap(s: number, o: number): void {
+    const b = this.store;
+    const sInf = b.m[s] === INF;
+    if (sInf === (b.m[o] === INF)) return;
+    const p = sInf ? s : o;
+    const d = sInf ? o : s;
+    if (!this.isMoving(p)) return;
+    const sides = this.sidesNear(d, p);
+    if (sides === null) return;
+    const t = this.now;
+    const cx = this.xAt(d, t);
+    const cy = this.yAt(d, t);
+    const r = b.r[d] as number;
+    const R = b.r[p] as number;
+    const moreSize = Math.abs(t) * length(this.vxAt(d, t), this.vyAt(d, t));
+    // Chains of two sides (each pair), then of three (each side between each pair of the others).
+    const chains: Side[][] = [];
+    for (let i = 0; i < sides.length; i++)
+      for (let j = i + 1; j < sides.length; j++) chains.push([sides[i] as Side, sides[j] as Side]);
+    for (let k = 0; k < sides.length; k++)
+      for (let i = 0; i < sides.length; i++)
+        for (let j = i + 1; j < sides.length; j++)
+          if (i !== k && j !== k) chains.push([sides[i] as Side, sides[k] as Side, sides[j] as Side]);
+    for (const chain of chains) {
+      const cores = chain.map((side) => side.core);
+      const tStar = pocketCloses(t, cx, cy, r, b.mot, p * 8, R, cores, hull, moreSize);
+      if (Number.isNaN(tStar) || !this.pathClear(p, R, ZENO_TRAP_SLACK * r)) continue;
+      const names = chain.map(named);
+      throw new SimulationError(
+        `body '${b.ids[d] as string}' is shut in by the immovable body '${b.ids[p] as string}', ${names.slice(0, -1).join(", ")} and ${names[names.length - 1] as string}, which close on it by t=${tStar}: infinitely many collisions before then (a Zeno state: a disc crushed by an immovable body), which the exact model cannot pass`,
+        t,
+      );
+    }
+  }
+
+  /**
+   * The obstacles and immovable discs (other than p) nearest slot d, in canonical order, at most
+   * ZENO_TRAP_CANDIDATES of them; null when another immovable body than p moves (its motion could
+   * change what p runs into).
+   */
+  private sidesNear(d: number, p: number): Side[] | null {
+    const b = this.store;
+    const t = this.now;
+    const x = this.xAt(d, t);
+    const y = this.yAt(d, t);
+    const r = b.r[d] as number;
+    const kept: Side[] = [];
+    for (const l of this.lineList) {
+      const core: Core = { kind: l.kind, x1: l.x1, y1: l.y1, x2: l.x2, y2: l.y2, rad: 0 };
+      keep(kept, { core, gap: coreDistance(core, x, y) - r, rank: 0, id: l.id });
+    }
+    for (const q of this.pointList) {
+      const core: Core = { kind: "point", x1: q.x, y1: q.y, x2: q.x, y2: q.y, rad: 0 };
+      keep(kept, { core, gap: coreDistance(core, x, y) - r, rank: 1, id: q.id });
+    }
+    for (let s = 0; s < b.slotCount; s++) {
+      const id = b.ids[s];
+      if (id === undefined || s === p || b.m[s] !== INF) continue;
+      if (this.isMoving(s)) return null;
+      const qx = b.mot[s * 8 + 1] as number;
+      const qy = b.mot[s * 8 + 2] as number;
+      const rad = b.r[s] as number;
+      const core: Core = { kind: "point", x1: qx, y1: qy, x2: qx, y2: qy, rad };
+      keep(kept, {
+        core,
+        gap: coreDistance(core, x, y) - rad - r,
+        rank: 2,
+        id,
+      });
+    }
+    return kept;
+  }
+
+  /**
+   * Whether slot p's path (radius R) over the triangle in `hull` stays more than `margin` clear of
+   * every line, point and immovable disc: it meets nothing that would change its motion.
+   */
+  private pathClear(p: number, R: number, margin: number): boolean {
+    const b = this.store;
+    for (const l of this.lineList) {
+      const core: Core = { kind: l.kind, x1: l.x1, y1: l.y1, x2: l.x2, y2: l.y2, rad: 0 };
+      if (!(triangleCoreDistance(hull, core) > R + margin)) return false;
+    }
+    for (const q of this.pointList) {
+      const core: Core = { kind: "point", x1: q.x, y1: q.y, x2: q.x, y2: q.y, rad: 0 };
+      if (!(triangleCoreDistance(hull, core) > R + margin)) return false;
+    }
+    for (let s = 0; s < b.slotCount; s++) {
+      if (b.ids[s] === undefined || s === p || b.m[s] !== INF) continue;
+      const qx = b.mot[s * 8 + 1] as number;
+      const qy = b.mot[s * 8 + 2] as number;
+      const rad = b.r[s] as number;
+      const core: Core = { kind: "point", x1: qx, y1: qy, x2: qx, y2: qy, rad };
+      if (!(triangleCoreDistance(hull, core) > R + rad + margin)) return false;
+    }
+    return true;
+  }
+}
