@@ -146,26 +146,34 @@ export function writeWorldArrays(
     () => ids,
     into,
   );
-  const { x, y, vx, vy, ax, ay, r, m, mu } = out;
+  const { r, m, mu } = out;
   const mot = b.mot;
   for (let k = 0; k < n; k++) {
     const s = slots[k] as number;
-    const o = s * 8;
-    const t0 = mot[o] as number;
-    const a = mot[o + 5] as number;
-    const c = mot[o + 6] as number;
-    const tEnd = mot[o + 7] as number;
-    const te = Math.min(t, tEnd);
-    const moving = t < tEnd;
-    x[k] = positionAt(t0, mot[o + 1] as number, mot[o + 3] as number, a, te);
-    y[k] = positionAt(t0, mot[o + 2] as number, mot[o + 4] as number, c, te);
-    vx[k] = moving ? velocityAt(t0, mot[o + 3] as number, a, t) : 0;
-    vy[k] = moving ? velocityAt(t0, mot[o + 4] as number, c, t) : 0;
-    ax[k] = moving ? a : 0;
-    ay[k] = moving ? c : 0;
+    writeMotionAt(out, k, mot, s * 8, t);
     r[k] = b.r[s] as number;
     m[k] = b.m[s] as number;
     mu[k] = b.mu[s] as number;
   }
   return out;
+}
+
+/**
+ * Writes body k's position, velocity and acceleration at t into `out`, from a motion record at
+ * `d[o..o+7]` laid out as t0, x0, y0, vx, vy, ax, ay, tEnd (the World's body store and the
+ * Timeline's motion table both start their records so): the closed form of bodyState.ts.
+ */
+export function writeMotionAt(out: BodyArrays, k: number, d: Float64Array, o: number, t: number): void {
+  const t0 = d[o] as number;
+  const a = d[o + 5] as number;
+  const c = d[o + 6] as number;
+  const tEnd = d[o + 7] as number;
+  const te = Math.min(t, tEnd);
+  const moving = t < tEnd;
+  out.x[k] = positionAt(t0, d[o + 1] as number, d[o + 3] as number, a, te);
+  out.y[k] = positionAt(t0, d[o + 2] as number, d[o + 4] as number, c, te);
+  out.vx[k] = moving ? velocityAt(t0, d[o + 3] as number, a, t) : 0;
+  out.vy[k] = moving ? velocityAt(t0, d[o + 4] as number, c, t) : 0;
+  out.ax[k] = moving ? a : 0;
+  out.ay[k] = moving ? c : 0;
 }

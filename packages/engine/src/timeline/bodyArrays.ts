@@ -14,8 +14,7 @@
  * record is the same arithmetic whether or not the replay paused before it, so both ways agree bit
  * for bit.
  */
-import { positionAt, velocityAt } from "../physics/motion.js";
-import { arraysFor, type BodyArrays } from "../sim/bodyArrays.js";
+import { arraysFor, type BodyArrays, writeMotionAt } from "../sim/bodyArrays.js";
 import type { TimelineCore } from "./core.js";
 import { type Keyframe, keyframeAtOrBefore, loadMotions } from "./keyframe.js";
 import { MotionTable, STRIDE } from "./motionTable.js";
@@ -41,22 +40,11 @@ export class ArraysCursor {
     const n = order.length;
     const idAt = (k: number) => names[order[k] as number] as string;
     const out = arraysFor(t, n, idAt, () => Array.from(order, (i) => names[i] as string), into);
-    const { x, y, vx, vy, ax, ay, r, m, mu } = out;
+    const { r, m, mu } = out;
     const d = this.table.data;
     for (let k = 0; k < n; k++) {
       const o = (order[k] as number) * STRIDE;
-      const t0 = d[o] as number;
-      const a = d[o + 5] as number;
-      const c = d[o + 6] as number;
-      const tEnd = d[o + 7] as number;
-      const te = Math.min(t, tEnd);
-      const moving = t < tEnd;
-      x[k] = positionAt(t0, d[o + 1] as number, d[o + 3] as number, a, te);
-      y[k] = positionAt(t0, d[o + 2] as number, d[o + 4] as number, c, te);
-      vx[k] = moving ? velocityAt(t0, d[o + 3] as number, a, t) : 0;
-      vy[k] = moving ? velocityAt(t0, d[o + 4] as number, c, t) : 0;
-      ax[k] = moving ? a : 0;
-      ay[k] = moving ? c : 0;
+      writeMotionAt(out, k, d, o, t);
       r[k] = d[o + 8] as number;
       m[k] = d[o + 9] as number;
       mu[k] = d[o + 10] as number;
