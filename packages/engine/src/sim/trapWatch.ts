@@ -19,7 +19,7 @@ import { ZENO_TRAP_CANDIDATES, ZENO_TRAP_SLACK } from "../tolerances.js";
 import { CellCrossings } from "./cellCrossings.js";
 import { SimulationError } from "./errors.js";
 import { pocketCloses } from "./pocket.js";
-import { type Core, coreDistance, length, triangleCoreDistance } from "./pocketGeometry.js";
+import { type Core, type CoreKind, coreDistance, length, triangleCoreDistance } from "./pocketGeometry.js";
 
 const INF = Number.POSITIVE_INFINITY;
 
@@ -41,18 +41,42 @@ function named(side: Side): string {
 }
 
 /** Canonical order of sides: nearer first, then lines, points, bodies, then by id. */
-function before(u: Side, v: Side): boolean {
-  if (u.gap !== v.gap) return u.gap < v.gap;
-  if (u.rank !== v.rank) return u.rank < v.rank;
-  return u.id < v.id;
+function before(gap: number, rank: number, id: string, v: Side): boolean {
+  if (gap !== v.gap) return gap < v.gap;
+  if (rank !== v.rank) return rank < v.rank;
+  return id < v.id;
 }
 
-/** Insert `side` into `kept` (sorted, at most ZENO_TRAP_CANDIDATES long) if it is among the first. */
-function keep(kept: Side[], side: Side): void {
-  if (kept.length === ZENO_TRAP_CANDIDATES && !before(side, kept[kept.length - 1] as Side)) return;
+/** A core to fill in place: the scans measure every obstacle without allocating one each. */
+const scratch: { -readonly [K in keyof Core]: Core[K] } = {
+  kind: "point",
+  x1: 0,
+  y1: 0,
+  x2: 0,
+  y2: 0,
+  rad: 0,
+};
+
+/** The scratch core, filled with a core of this shape. */
+function fill(kind: CoreKind, x1: number, y1: number, x2: number, y2: number, rad: number): Core {
+  scratch.kind = kind;
+  scratch.x1 = x1;
+  scratch.y1 = y1;
+  scratch.x2 = x2;
+  scratch.y2 = y2;
+  scratch.rad = rad;
+  return scratch;
+}
+
+/**
+ * Insert the side in `scratch` (its gap, rank and id given) into `kept` (sorted, at most
+ * ZENO_TRAP_CANDIDATES long) if it is among the first, as a copy.
+ */
+function keep(kept: Side[], gap: number, rank: number, id: string): void {
+  if (kept.length === ZENO_TRAP_CANDIDATES && !before(gap, rank, id, kept[kept.length - 1] as Side)) return;
   let i = kept.length;
-  while (i > 0 && before(side, kept[i - 1] as Side)) i--;
-  kept.splice(i, 0, side);
+  while (i > 0 && before(gap, rank, id, kept[i - 1] as Side)) i--;
+  kept.splice(i, 0, { core: { ...scratch }, gap, rank, id });
   if (kept.length > ZENO_TRAP_CANDIDATES) kept.pop();
 }
 
@@ -110,13 +134,11 @@ export class TrapWatch extends CellCrossings {
     const r = b.r[d] as number;
     const kept: Side[] = [];
     for (const l of this.lineList) {
-      const core: Core = { kind: l.kind, x1: l.x1, y1: l.y1, x2: l.x2, y2: l.y2, rad: 0 };
-      keep(kept, { core, gap: coreDistance(core, x, y) - r, rank: 0, id: l.id });
+      const gap = coreDistance(fill(l.kind, l.x1, l.y1, l.x2, l.y2, 0), x, y) - r;
+      keep(kept, gap, 0, l.id);
     }
-    for (const q of this.pointList) {
-      const core: Core = { kind: "point", x1: q.x, y1: q.y, x2: q.x, y2: q.y, rad: 0 };
-      keep(kept, { core, gap: coreDistance(core, x, y) - r, rank: 1, id: q.id });
-    }
+    for (const q of this.pointList)
+      keep(kept, coreDistance(fill("point", q.x, q.y, q.x, q.y, 0), x, y) - r, 1, q.id);
     for (let s = 0; s < b.slotCount; s++) {
       const id = b.ids[s];
       if (id === undefined || s === p || b.m[s] !== INF) continue;
@@ -124,13 +146,7 @@ export class TrapWatch extends CellCrossings {
       const qx = b.mot[s * 8 + 1] as number;
       const qy = b.mot[s * 8 + 2] as number;
       const rad = b.r[s] as number;
-      const core: Core = { kind: "point", x1: qx, y1: qy, x2: qx, y2: qy, rad };
-      keep(kept, {
-        core,
-        gap: coreDistance(core, x, y) - rad - r,
-        rank: 2,
-        id,
-      });
+      keep(kept, coreDistance(fill("point", qx, qy, qx, qy, rad), x, y) - rad - r, 2, id);
     }
     return kept;
   }
@@ -141,21 +157,16 @@ export class TrapWatch extends CellCrossings {
    */
   private pathClear(p: number, R: number, margin: number): boolean {
     const b = this.store;
-    for (const l of this.lineList) {
-      const core: Core = { kind: l.kind, x1: l.x1, y1: l.y1, x2: l.x2, y2: l.y2, rad: 0 };
-      if (!(triangleCoreDistance(hull, core) > R + margin)) return false;
-    }
-    for (const q of this.pointList) {
-      const core: Core = { kind: "point", x1: q.x, y1: q.y, x2: q.x, y2: q.y, rad: 0 };
-      if (!(triangleCoreDistance(hull, core) > R + margin)) return false;
-    }
+    for (const l of this.lineList)
+      if (!(triangleCoreDistance(hull, fill(l.kind, l.x1, l.y1, l.x2, l.y2, 0)) > R + margin)) return false;
+    for (const q of this.pointList)
+      if (!(triangleCoreDistance(hull, fill("point", q.x, q.y, q.x, q.y, 0)) > R + margin)) return false;
     for (let s = 0; s < b.slotCount; s++) {
       if (b.ids[s] === undefined || s === p || b.m[s] !== INF) continue;
       const qx = b.mot[s * 8 + 1] as number;
       const qy = b.mot[s * 8 + 2] as number;
       const rad = b.r[s] as number;
-      const core: Core = { kind: "point", x1: qx, y1: qy, x2: qx, y2: qy, rad };
-      if (!(triangleCoreDistance(hull, core) > R + rad + margin)) return false;
+      if (!(triangleCoreDistance(hull, fill("point", qx, qy, qx, qy, rad)) > R + rad + margin)) return false;
     }
     return true;
   }
