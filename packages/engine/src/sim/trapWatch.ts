@@ -1,19 +1,18 @@
 /**
- * The trap watch: reports a disc crushed by a moving immovable disc in a pocket of two still
- * obstacles (a corner of two lines, a wall and a floor, two immovable discs at rest...) after a few
- * thousand events, by a geometric proof (pocket.ts) instead of the convergence of event times,
- * which takes the Zeno watch millions of events there.
+ * The trap watch: reports a disc crushed by a moving immovable disc in a pocket of two or three
+ * still obstacles (a corner of two lines, a wall and a floor, two immovable discs at rest, a dead
+ * end...) after a few thousand events, by a geometric proof (pocket.ts) instead of the convergence
+ * of event times, which takes the Zeno watch millions of events there.
  *
  * At a collision between a finite disc d and a moving immovable disc P (tried at some of them only:
  * ZENO_TRAP_EVERY, ZENO_TRAP_TRIES), when P is the only immovable body that moves: the
  * ZENO_TRAP_CANDIDATES obstacles and immovable discs nearest d, in a canonical order (distance, then
  * kind and id, so that the verdict does not depend on the order they were added in), are tried in
- * chains of two and three as the pocket's still sides (a corner; a slot or a dead end). A chain is
- * reported when the pocket is proven to close on d at t* and P's path until t* meets no obstacle
- * and no immovable disc (nothing else can change P's
- * motion: finite discs do not, and no other immovable body moves). The report is a SimulationError
- * at the event's time with ids [] (a Zeno state of many events), thrown before anything is counted
- * or changed, so the same event throws again.
+ * chains of two and three as the pocket's still sides. A chain is reported when the pocket is
+ * proven to close on d at t* and P's path until t* meets no obstacle and no immovable disc: nothing
+ * else can change P's motion (finite discs do not, and no other immovable body moves). The report
+ * is a SimulationError at the event's time with ids [] (a Zeno state of many events), thrown
+ * before anything is counted or changed, so the same event throws again.
  */
 import { ZENO_TRAP_CANDIDATES, ZENO_TRAP_SLACK } from "../tolerances.js";
 import { CellCrossings } from "./cellCrossings.js";
