@@ -68,7 +68,7 @@ function coreSize(k: Core): number {
  * |p(t) - z|² = target² from `now` (target < accept: the iterates cross accept before the root),
  * or NaN when P does not approach z, or not before `tEnd`.
  */
-function closingTime(
+export function closingTime(
   now: number,
   mot: ArrayLike<number>,
   at: number,

@@ -12,11 +12,14 @@
  * proven to close on d at t* and P's path until t* meets no obstacle and no immovable disc: nothing
  * else can change P's motion (finite discs do not, and no other immovable body moves). The report
  * is a SimulationError at the event's time with ids [] (a Zeno state of many events), thrown
- * before anything is counted or changed, so the same event throws again.
+ * before anything is counted or changed, so the same event throws again. When no pocket is proven
+ * and d is the only finite disc in the World, each of those sides is tried as the end of a crush
+ * in line (lineCrush.ts), the stretch of line d keeps to clear of every other obstacle.
  */
 import { ZENO_TRAP_CANDIDATES, ZENO_TRAP_SLACK } from "../tolerances.js";
 import { CellCrossings } from "./cellCrossings.js";
 import { SimulationError } from "./errors.js";
+import { lineCloses } from "./lineCrush.js";
 import { pocketCloses } from "./pocket.js";
 import { type Core, type CoreKind, coreDistance, length, triangleCoreDistance } from "./pocketGeometry.js";
 
@@ -33,6 +36,9 @@ interface Side {
 }
 
 const hull = new Float64Array(6);
+/** The stretch of line a disc crushed in line keeps to, and it as a flat triangle. */
+const corridor = new Float64Array(4);
+const strip = new Float64Array(6);
 
 /** How the message names a side. */
 function named(side: Side): string {
@@ -118,12 +124,76 @@ export class TrapWatch extends CellCrossings {
         t,
       );
     }
+    if (this.alone) this.guardLineCrush(d, p, sides);
   }
+
+  /**
+   * The crush in line (lineCrush.ts), for slot d, the only finite disc, and the moving immovable
+   * slot p: each of the nearest `sides` is tried as the end.
+   */
+  private guardLineCrush(d: number, p: number, sides: readonly Side[]): void {
+    const b = this.store;
+    const m = b.mot;
+    const t = this.now;
+    const disc = {
+      x: this.xAt(d, t),
+      y: this.yAt(d, t),
+      vx: this.vxAt(d, t),
+      vy: this.vyAt(d, t),
+      ax: m[d * 8 + 5] as number,
+      ay: m[d * 8 + 6] as number,
+      r: b.r[d] as number,
+    };
+    const R = b.r[p] as number;
+    const margin = ZENO_TRAP_SLACK * disc.r;
+    for (const end of sides) {
+      const tStar = lineCloses(t, disc, m, p * 8, R, end.core, hull, corridor);
+      if (Number.isNaN(tStar) || !this.pathClear(p, R, margin)) continue;
+      strip[0] = corridor[0] as number;
+      strip[1] = corridor[1] as number;
+      strip[2] = corridor[2] as number;
+      strip[3] = corridor[3] as number;
+      strip[4] = corridor[2] as number;
+      strip[5] = corridor[3] as number;
+      if (!this.stripClear(p, end, disc.r + margin)) continue;
+      throw new SimulationError(
+        `body '${b.ids[d] as string}' is crushed in line between the immovable body '${b.ids[p] as string}' and ${named(end)}, which close on it by t=${tStar}: infinitely many collisions before then (a Zeno state: a disc crushed by an immovable body), which the exact model cannot pass`,
+        t,
+      );
+    }
+  }
+
+  /**
+   * Whether the stretch of line in `strip` keeps more than `reach` (plus their own radius) from
+   * every line, point and immovable disc but slot p and the side `end`: the disc on it touches
+   * nothing else.
+   */
+  private stripClear(p: number, end: Side, reach: number): boolean {
+    const b = this.store;
+    for (const l of this.lineList)
+      if (!(end.rank === 0 && end.id === l.id))
+        if (!(triangleCoreDistance(strip, fill(l.kind, l.x1, l.y1, l.x2, l.y2, 0)) > reach)) return false;
+    for (const q of this.pointList)
+      if (!(end.rank === 1 && end.id === q.id))
+        if (!(triangleCoreDistance(strip, fill("point", q.x, q.y, q.x, q.y, 0)) > reach)) return false;
+    for (let s = 0; s < b.slotCount; s++) {
+      const id = b.ids[s];
+      if (id === undefined || s === p || b.m[s] !== INF || (end.rank === 2 && end.id === id)) continue;
+      const qx = b.mot[s * 8 + 1] as number;
+      const qy = b.mot[s * 8 + 2] as number;
+      const rad = b.r[s] as number;
+      if (!(triangleCoreDistance(strip, fill("point", qx, qy, qx, qy, rad)) > reach + rad)) return false;
+    }
+    return true;
+  }
+
+  /** Whether the last sidesNear found no finite disc but d. */
+  private alone = false;
 
   /**
    * The obstacles and immovable discs (other than p) nearest slot d, in canonical order, at most
    * ZENO_TRAP_CANDIDATES of them; null when another immovable body than p moves (its motion could
-   * change what p runs into).
+   * change what p runs into). Sets `alone`.
    */
   private sidesNear(d: number, p: number): Side[] | null {
     const b = this.store;
@@ -138,9 +208,14 @@ export class TrapWatch extends CellCrossings {
     }
     for (const q of this.pointList)
       keep(kept, coreDistance(fill("point", q.x, q.y, q.x, q.y, 0), x, y) - r, 1, q.id);
+    this.alone = true;
     for (let s = 0; s < b.slotCount; s++) {
       const id = b.ids[s];
-      if (id === undefined || s === p || b.m[s] !== INF) continue;
+      if (id === undefined || s === p || s === d) continue;
+      if (b.m[s] !== INF) {
+        this.alone = false;
+        continue;
+      }
       if (this.isMoving(s)) return null;
       const qx = b.mot[s * 8 + 1] as number;
       const qy = b.mot[s * 8 + 2] as number;

@@ -1,0 +1,132 @@
+/**
+ * The crush in line: a proof that a disc moving along an axis-parallel line L, between a still end
+ * across L and a moving immovable disc P on L, is crushed between them, so that the exact model
+ * has infinitely many events before a time t* (used by the trap watch, trapWatch.ts, when no
+ * pocket encloses the disc: pocket.ts). Pure functions.
+ *
+ * No pocket holds such a disc in the plane: it is held on L by symmetry. When its centre, its
+ * velocity and acceleration, P's, and the end (a line across L whose solid part holds the foot of
+ * L, a point or an immovable disc at rest centred on L) are exactly symmetric about L, to the bit,
+ * every collision of the disc with P or the end has its normal along L: in the exact model the disc
+ * never leaves L. If nothing else can touch it (the caller's part: no other finite disc in the
+ * World, no other obstacle within reach of the stretch of L between the end and P's path, and
+ * nothing changing P's motion before t*, as for a pocket), it is shut in, in one dimension, between
+ * the end and P; when P comes within 2 r' of the end (r' = r (1 - ZENO_TRAP_SLACK), the tests made
+ * with the margins of pocket.ts) before its motion law ends, the disc cannot be there: infinitely
+ * many events happen before t*.
+ *
+ * The report waits until P is within ZENO_TRAP_GAP × r of that, as for a pocket.
+ */
+import { positionAt, velocityAt } from "../physics/motion.js";
+import { ZENO_TRAP_GAP, ZENO_TRAP_SCALE, ZENO_TRAP_SLACK } from "../tolerances.js";
+import { closingTime } from "./pocket.js";
+import type { Core } from "./pocketGeometry.js";
+
+/** The disc: its centre, velocity and acceleration now, and its radius. */
+export interface LineDisc {
+  readonly x: number;
+  readonly y: number;
+  readonly vx: number;
+  readonly vy: number;
+  readonly ax: number;
+  readonly ay: number;
+  readonly r: number;
+}
+
+/**
+ * The time t* by which the disc is crushed in line between the still core `end` and the immovable
+ * disc of radius R whose motion is mot[at .. at + 7] (t0, x0, y0, vx, vy, ax, ay, tEnd), proven at
+ * `now` as above while P is within ZENO_TRAP_GAP × r of it; NaN when there is no such proof.
+ * `hull` receives the triangle holding P's path over [now, t*], and `corridor` the stretch of L
+ * the disc's centre keeps to until then (x0, y0, x1, y1), for the caller's checks.
+ */
+export function lineCloses(
+  now: number,
+  d: LineDisc,
+  mot: ArrayLike<number>,
+  at: number,
+  R: number,
+  end: Core,
+  hull: Float64Array,
+  corridor: Float64Array,
+): number {
+  // Axis k along L (0: x, 1: y), j across it.
+  const k = d.vy === 0 && d.ay === 0 ? 0 : d.vx === 0 && d.ax === 0 ? 1 : -1;
+  if (k < 0) return Number.NaN;
+  const j = 1 - k;
+  const across = j === 1 ? d.y : d.x;
+  const along = k === 0 ? d.x : d.y;
+  // P on L, moving along it: its position across L never changes.
+  if (mot[at + 1 + j] !== across || mot[at + 3 + j] !== 0 || mot[at + 5 + j] !== 0) return Number.NaN;
+  const t0 = mot[at] as number;
+  const pAlong = positionAt(
+    t0,
+    mot[at + 1 + k] as number,
+    mot[at + 3 + k] as number,
+    mot[at + 5 + k] as number,
+    now,
+  );
+  const vAlong = velocityAt(t0, mot[at + 3 + k] as number, mot[at + 5 + k] as number, now);
+  // The end, symmetric about L: where L meets it (its foot).
+  const e1 = k === 0 ? end.x1 : end.y1;
+  const e2 = k === 0 ? end.x2 : end.y2;
+  const c1 = j === 1 ? end.y1 : end.x1;
+  const c2 = j === 1 ? end.y2 : end.x2;
+  let foot: number;
+  if (end.kind === "point") {
+    if (c1 !== across) return Number.NaN;
+    foot = e1;
+  } else {
+    // A line across L: the same coordinate along L at both its points, its solid part over L.
+    if (e1 !== e2 || c1 === c2) return Number.NaN;
+    const lambda = (across - c1) / (c2 - c1);
+    if (end.kind !== "line" && !(lambda >= 0)) return Number.NaN;
+    if (end.kind === "segment" && !(lambda <= 1)) return Number.NaN;
+    foot = e1;
+  }
+  // The disc between the end and P.
+  const side = Math.sign(pAlong - foot);
+  if (side === 0 || Math.sign(along - foot) !== side || Math.sign(pAlong - along) !== side) return Number.NaN;
+  const r = d.r;
+  const size = Math.max(
+    Math.abs(along),
+    Math.abs(across),
+    Math.abs(pAlong),
+    Math.abs(foot),
+    R,
+    end.rad,
+    Math.abs(now) * (Math.abs(vAlong) + Math.abs(k === 0 ? d.vx : d.vy)),
+  );
+  if (!(size <= ZENO_TRAP_SCALE * r)) return Number.NaN;
+  const verify = r * (1 - 1.5 * ZENO_TRAP_SLACK);
+  const aim = r * (1 - 3 * ZENO_TRAP_SLACK);
+  const closed = R + end.rad + 2 * verify;
+  const gap = Math.abs(pAlong - foot) - closed;
+  if (!(gap > 0 && gap <= ZENO_TRAP_GAP * r)) return Number.NaN;
+  const zx = k === 0 ? foot : across;
+  const zy = k === 0 ? across : foot;
+  const tStar = closingTime(now, mot, at, zx, zy, R + end.rad + 2 * aim, closed);
+  if (Number.isNaN(tStar)) return Number.NaN;
+  // P's path over [now, t*] (its Bézier control points; on L, so a flat triangle).
+  const half = 0.5 * (tStar - now);
+  const farAlong = positionAt(
+    t0,
+    mot[at + 1 + k] as number,
+    mot[at + 3 + k] as number,
+    mot[at + 5 + k] as number,
+    tStar,
+  );
+  const mid = pAlong + vAlong * half;
+  const put = (out: Float64Array, i: number, a: number): void => {
+    out[i + k] = a;
+    out[i + j] = across;
+  };
+  put(hull, 0, pAlong);
+  put(hull, 2, mid);
+  put(hull, 4, farAlong);
+  // The stretch of L the disc keeps to: from the end to P's farthest point from it.
+  const far = side > 0 ? Math.max(pAlong, mid, farAlong) : Math.min(pAlong, mid, farAlong);
+  put(corridor, 0, foot);
+  put(corridor, 2, far);
+  return tStar;
+}
