@@ -97,10 +97,11 @@ The log also lists the actions, which "events" does not count. Infinite numbers 
 "Infinity" and "-Infinity", NaN "NaN".
 --events adds the event log (kept in memory: bound long runs).
 --compact writes the JSON without indentation, the log one entry per line (about half the size).
---progress reports progress on stderr, one line per 200,000 events: the time reached (of the time
-the run computes to), the events (of --max-events) and, while some are still to come, the actions
-applied; a scene of 10 million characters or more also says when it is read and built. It is on
-by itself, on one updating line, when stderr is a terminal.
+--progress reports progress on stderr about once a second (the first line half a second into the
+computation; a run that ends sooner shows none): the time reached (of the time the run computes
+to), the events (of --max-events) and, while some are still to come, the actions applied; a scene
+of 10 million characters or more also says when it is read and built. It is on by itself, on one
+updating line, when stderr is a terminal. The result on stdout is the same with or without it.
 Exit status: 0 success, 2 invalid input or a scene that cannot be continued, 1 internal error or
 a result that could not be written, 130 or 143 interrupted (SIGINT, SIGTERM).`;
 

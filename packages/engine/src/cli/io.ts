@@ -1,6 +1,6 @@
 /**
  * CliIO: all the input and output of the `chapgame` command (the scene file, stdout, stderr, whether
- * stderr is a terminal, the version, the interrupt hooks), so runCli can be tested in-process and
+ * stderr is a terminal, the version, the interrupt hooks, the clock that paces progress lines), so runCli can be tested in-process and
  * main.ts stays a thin wrapper. OutputError: what a CliIO.stdout throws when it cannot write the
  * result (exit status 1, "cannot write the result"), not a bug of the run.
  */
@@ -21,6 +21,10 @@ export interface CliIO {
   /** Called once the computation is over, before the result is written (the bin stops catching
    *  interrupts then: a Ctrl-C while a long result is written ends the process at once). */
   computed?: () => void;
+  /** A monotonic clock in milliseconds (the bin: performance.now) that paces the progress lines:
+   *  the first about half a second into the computation, then one a second (cadence.ts). Without
+   *  it, a line every 200,000 events. Only when lines are written depends on it, never a result. */
+  now?: () => number;
 }
 
 /** Thrown by a CliIO.stdout that cannot write (a full disk, a closed file): not a bug of the run. */

@@ -12,6 +12,11 @@
  * parsing) and once it is over (writing the result) a signal ends the process at once, as without
  * them (a handler cannot run while a synchronous read waits, so one installed then swallowed the
  * signal).
+ * Progress lines (progress.ts) are paced by performance.now, a monotonic clock read between two
+ * slices of the computation (cadence.ts): a timer (setInterval) could not fire while a slice runs
+ * synchronously, and would only set a flag read at the same place. The clock is the CLI's: the
+ * engine's own code reads none (test/exactArithmetic.test.ts allows host objects in src/cli alone),
+ * and what is computed does not depend on it, only when a line is written to stderr does.
  * The engine is built without Node's types (it must not depend on Node), so the few Node APIs used
  * here are typed locally and node:fs is loaded by a dynamic import.
  */
@@ -99,7 +104,10 @@ function stopCatching(): void {
   for (const s of signals) proc.removeListener(s, onSignal[s]);
 }
 
-const { setImmediate } = globalThis as unknown as { setImmediate: (callback: () => void) => unknown };
+const { setImmediate, performance } = globalThis as unknown as {
+  setImmediate: (callback: () => void) => unknown;
+  performance: { now(): number };
+};
 try {
   proc.exitCode = await runCliInterruptible(
     proc.argv.slice(2),
@@ -111,6 +119,7 @@ try {
       progress: proc.stderr.isTTY === true,
       computing: startCatching,
       computed: stopCatching,
+      now: () => performance.now(),
       ...versionField(),
     },
     {

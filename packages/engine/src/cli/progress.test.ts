@@ -157,3 +157,65 @@ describe("the progress line names what the run computes toward", () => {
     expect(JSON.parse(writes.slice(4).join("").replaceAll("out:", ""))).toMatchObject({ time: 2 });
   });
 });
+
+describe("progress on the bin's clock (CliIO.now), never on real time", () => {
+  const files = { "gas.json": serializeScene(dilutedGas({ n: 200, packing: 0.2 })) };
+
+  /** A clock that moves `step` ms each time it is read: once when the computation starts, then
+   *  once after each slice of SLICE_EVENTS events that does not end it (as a scene that slow). */
+  function ticking(step: number) {
+    let t = 1_000_000;
+    return () => {
+      const now = t;
+      t += step;
+      return now;
+    };
+  }
+
+  it("a slow run shows a line half a second in, then one a second, whatever the events", () => {
+    // 300 ms a slice: read at 0 (start), then 300, 600 (a line: >= 500), 900 ... 1800 (>= 1600) ...
+    const slow = io(files);
+    slow.cli.now = ticking(300);
+    expect(runCli(["simulate", "gas.json", "--max-events", "130000", "--progress"], slow.cli)).toBe(0);
+    expect(timesAsT(slow.out.stderr)).toBe(
+      "chapgame: t = T, 20000 of 130000 events\n" +
+        "chapgame: t = T, 60000 of 130000 events\n" +
+        "chapgame: t = T, 100000 of 130000 events\n",
+    );
+    // the same result as without a clock or without progress, byte for byte
+    const quiet = io(files);
+    expect(runCli(["simulate", "gas.json", "--max-events", "130000"], quiet.cli)).toBe(0);
+    expect(quiet.out.stderr).toBe("");
+    expect(slow.out.stdout).toBe(quiet.out.stdout);
+  });
+
+  it("a fast run shows no line before half a second, however many events (it showed one per 200,000)", () => {
+    const fast = io(files);
+    fast.cli.now = ticking(1); // 1 ms a slice: 45 slices, 45 ms
+    expect(runCli(["simulate", "gas.json", "--max-events", "450000", "--progress"], fast.cli)).toBe(0);
+    expect(fast.out.stderr).toBe("");
+    const unpaced = io(files); // without a clock: a line every 200,000 events
+    expect(runCli(["simulate", "gas.json", "--max-events", "450000", "--progress"], unpaced.cli)).toBe(0);
+    expect(unpaced.out.stderr.split("\n")).toHaveLength(3);
+    expect(fast.out.stdout).toBe(unpaced.out.stdout);
+  });
+
+  it("on a terminal the clock's lines replace each other and are erased before the result (state, check too)", () => {
+    const terminal = io(files, true);
+    terminal.cli.now = ticking(2_000); // every slice is a second or more after the last line
+    expect(runCli(["state", "gas.json", "--at", "900"], terminal.cli)).toBe(0);
+    const parts = terminal.out.stderr.split("\r");
+    expect(parts[0]).toBe("");
+    const shown = parts.slice(1, -1).map((p) => timesAsT(p.replace("\x1b[K", "")));
+    expect(shown.length).toBeGreaterThan(1);
+    expect(shown).toEqual(shown.map((_, i) => `chapgame: t = T of 900, ${(i + 1) * 10000} events`));
+    expect(parts.at(-1)).toBe("\x1b[K");
+    expect(JSON.parse(terminal.out.stdout)).toMatchObject({ time: 900 });
+    const check = io({ "gas.json": gasWith({ time: 900, type: "giveVelocity", id: "d0", v: [1, 0] }) });
+    check.cli.now = ticking(2_000);
+    expect(runCli(["check", "gas.json", "--progress"], check.cli)).toBe(0);
+    expect(check.out.stderr).toMatch(
+      /^chapgame: t = [\d.e+]+ of 900, 10000 events, 204 of 205 actions applied\n/,
+    );
+  });
+});

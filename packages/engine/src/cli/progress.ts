@@ -3,7 +3,8 @@
  * ("terminal": each line starts with \r, ends with an erase when it is shorter than the one it
  * replaces, and the line is erased before anything else is written), one line each with --progress
  * when stderr is not a terminal ("lines"), or nothing ("off").
- * While computing, every PROGRESS_EVERY_EVENTS events (slices.ts):
+ * While computing, about once a second (cadence.ts: the first line half a second into the
+ * computation, then one a second, on the clock CliIO.now; without a clock every 200,000 events):
  *   chapgame: t = <horizon>[ of <time goal>], <events>[ of <event goal>] events[, <k> of <n> actions applied]
  * the time goal being the absolute time the run computes to (--until-time, --at, --to, check's last
  * action), the event goal --max-events, and the actions part shown while some action of the scene is
@@ -15,6 +16,7 @@
 import type { SceneFile, Until } from "../scene/types.js";
 import type { Timeline } from "../timeline/timeline.js";
 import type { ProlongResult } from "../timeline/types.js";
+import { clockCadence, eventCadence } from "./cadence.js";
 import type { CliIO } from "./io.js";
 import { computeSlices, type Progress } from "./slices.js";
 
@@ -76,6 +78,7 @@ export class ProgressLine {
     if (raw.version !== undefined) io.version = raw.version;
     if (raw.computing !== undefined) io.computing = raw.computing;
     if (raw.computed !== undefined) io.computed = raw.computed;
+    if (raw.now !== undefined) io.now = raw.now;
     this.io = io;
   }
 
@@ -107,7 +110,10 @@ export class ProgressLine {
   ): Generator<void, ProlongResult["reason"], void> {
     if (this.mode === "off") return computeSlices(tl, until, null);
     if (this.long) this.write(this.line(tl.horizon, 0, goal));
+    const now = this.raw.now;
+    const cadence = now === undefined ? eventCadence() : clockCadence(now);
     const progress: Progress = {
+      due: (events) => cadence.due(events),
       report: (horizon, events) => this.write(this.line(horizon, events, goal)),
       // erase the line, also when the run ends in an error or an interrupt (printed after this)
       end: () => this.erase(),

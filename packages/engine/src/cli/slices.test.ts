@@ -2,10 +2,10 @@ import { describe, expect, it } from "vitest";
 import { dilutedGas } from "../scene/presets.js";
 import type { Until } from "../scene/types.js";
 import { Timeline } from "../timeline/timeline.js";
+import { eventCadence, PROGRESS_EVERY_EVENTS } from "./cadence.js";
 import {
   computeSlices,
   Interrupted,
-  PROGRESS_EVERY_EVENTS,
   type Progress,
   runInterruptible,
   runToEnd,
@@ -28,9 +28,13 @@ function fake(slices: number) {
   return { tl, calls };
 }
 
-function recorder() {
+/** Records the reports and the end; lines are due as `due` says (by default every
+ *  PROGRESS_EVERY_EVENTS events). */
+function recorder(due?: (events: number) => boolean) {
   const log: string[] = [];
+  const cadence = eventCadence();
   const progress: Progress = {
+    due: due ?? ((events) => cadence.due(events)),
     report: (h, n) => log.push(`${h}:${n}`),
     end: () => log.push("end"),
   };
@@ -70,6 +74,18 @@ describe("computeSlices", () => {
     for (let i = 0; i < per; i++) steps.next();
     expect(() => steps.throw(new Interrupted("SIGINT"))).toThrow(Interrupted);
     expect(cut.log).toEqual([`${per}:${PROGRESS_EVERY_EVENTS}`, "end"]);
+  });
+
+  it("asks whether a line is due after each slice that does not finish the run, with the events so far", () => {
+    const asked: number[] = [];
+    // due at the second and fifth asks only (as a clock would say)
+    const rec = recorder((n) => {
+      asked.push(n);
+      return asked.length === 2 || asked.length === 5;
+    });
+    expect(runToEnd(computeSlices(fake(6).tl, {}, rec.progress))).toBe("time");
+    expect(asked).toEqual([1, 2, 3, 4, 5].map((k) => k * SLICE_EVENTS));
+    expect(rec.log).toEqual([`2:${2 * SLICE_EVENTS}`, `5:${5 * SLICE_EVENTS}`, "end"]);
   });
 
   it("gives a real Timeline the history one prolong gives, bit for bit", () => {

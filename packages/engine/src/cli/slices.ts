@@ -2,8 +2,9 @@
  * The CLI's computation in slices, and how it is stopped (pure: no process access).
  * computeSlices(tl, until, progress) is a generator: each step computes one slice of at most
  * SLICE_EVENTS collisions and stops (Timeline.prolongSlice toward `until`, counted from the horizon
- * at the first slice), reports progress every PROGRESS_EVERY_EVENTS events, and yields unless the
- * run is done; it returns why the run ended. Slicing changes nothing in the history (the Timeline's
+ * at the first slice), reports progress after it when the progress's cadence says a line is due
+ * (cadence.ts: about once a second on the bin's clock), and yields unless the run is done; it
+ * returns why the run ended. Slicing changes nothing in the history (the Timeline's
  * contract), so the result is the one a single prolong gives.
  * A driver runs such a generator (the whole command is one: run.ts): runToEnd runs it through
  * without pausing; runInterruptible pauses between steps (`pause`, the bin's setImmediate, lets a
@@ -12,11 +13,10 @@
  */
 import type { Until } from "../scene/types.js";
 import type { ProlongResult } from "../timeline/types.js";
+import type { Cadence } from "./cadence.js";
 
 /** Collisions and stops computed between two chances to stop (a few ms to tens of ms). */
 export const SLICE_EVENTS = 10_000;
-/** Events computed between two progress lines (a multiple of SLICE_EVENTS). */
-export const PROGRESS_EVERY_EVENTS = 200_000;
 
 /** The signals that interrupt a run, and the exit status of a run each interrupted (128 + number). */
 export const INTERRUPT_STATUS = { SIGINT: 130, SIGTERM: 143 } as const;
@@ -44,9 +44,9 @@ export interface Sliceable {
   ): { done: boolean; events: number; horizon: number; reason?: ProlongResult["reason"] };
 }
 
-/** Progress reports: after each PROGRESS_EVERY_EVENTS events that do not finish the run, and once
- *  when the run ends (done, failed or interrupted) after a report was made. */
-export interface Progress {
+/** Progress reports: after a slice that does not finish the run when `due` says so (a Cadence), and
+ *  once when the run ends (done, failed or interrupted) after a report was made. */
+export interface Progress extends Cadence {
   report(horizon: number, events: number): void;
   end(): void;
 }
@@ -58,16 +58,13 @@ export function* computeSlices(
   progress: Progress | null,
 ): Generator<void, ProlongResult["reason"], void> {
   let total = 0;
-  let nextReport = PROGRESS_EVERY_EVENTS;
   let reported = false;
   try {
     for (;;) {
       const r = tl.prolongSlice(until, SLICE_EVENTS);
       total += r.events;
       if (r.done) return r.reason ?? "idle";
-      if (progress !== null && total >= nextReport) {
-        // a slice that is not done computes its whole budget, but do not rely on it for progress
-        while (nextReport <= total) nextReport += PROGRESS_EVERY_EVENTS;
+      if (progress?.due(total)) {
         progress.report(r.horizon, total);
         reported = true;
       }
