@@ -58,9 +58,9 @@ describe("check: a scene file validated whole, up to its last action", () => {
     expect(z.result).toMatchObject({
       valid: false,
       path: null,
-      error: expect.stringMatching(/^body 'rest' rests/),
+      error: expect.stringMatching(/^body "rest" rests/),
     });
-    expect(z.stderr).toMatch(/^chapgame: s\.json: cannot simulate this scene: body 'rest' rests/);
+    expect(z.stderr).toMatch(/^chapgame: s\.json: cannot simulate this scene: body "rest" rests/);
     const j = check('{"format": "chapgame", "version": 1,');
     expect(j.status).toBe(2);
     expect(j.result.valid).toBe(false);

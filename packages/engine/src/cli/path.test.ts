@@ -88,7 +88,7 @@ describe("path: a body's exact pieces", () => {
   it("path meeting a Zeno state before --to prints the pieces up to where it stopped, then exits 2", () => {
     const { cli, out } = io({ "rest.json": sceneText(RESTS_AT_5) });
     expect(runCli(["path", "rest.json", "--id", "ball", "--to", "8"], cli)).toBe(2);
-    expect(out.stderr).toMatch(/^chapgame: rest\.json: cannot simulate this scene: body 'rest' rests .*\n$/);
+    expect(out.stderr).toMatch(/^chapgame: rest\.json: cannot simulate this scene: body "rest" rests .*\n$/);
     const result = JSON.parse(out.stdout);
     expect(result).toMatchObject({ id: "ball", from: 0, to: 5, reason: "error" });
     expect(result.pieces.map((p: { until: number }) => p.until)).toEqual([1, 3, 5]);

@@ -71,12 +71,12 @@ describe("progress on stderr", () => {
     const last = out.stderr.split("\r").at(-1) as string;
     expect(
       last.startsWith(
-        `${String.fromCharCode(27)}[Kchapgame: gas.json: cannot simulate this scene: body 'rest'`,
+        `${String.fromCharCode(27)}[Kchapgame: gas.json: cannot simulate this scene: body "rest"`,
       ),
     ).toBe(true);
     expect(JSON.parse(out.stdout)).toMatchObject({
       reason: "error",
-      error: expect.stringMatching(/^body 'rest'/),
+      error: expect.stringMatching(/^body "rest"/),
     });
   });
 });

@@ -21,7 +21,7 @@ describe("runCli in-process", () => {
     // Audit of session 15: exit 2 and nothing on stdout, so the events computed before were lost.
     const { cli, out } = io({ "rest.json": sceneText(RESTS_AT_5) });
     expect(runCli(["simulate", "rest.json", "--events"], cli)).toBe(2);
-    expect(out.stderr).toMatch(/^chapgame: rest\.json: cannot simulate this scene: body 'rest' rests .*\n$/);
+    expect(out.stderr).toMatch(/^chapgame: rest\.json: cannot simulate this scene: body "rest" rests .*\n$/);
     const result = JSON.parse(out.stdout);
     const why = out.stderr.replace("chapgame: rest.json: cannot simulate this scene: ", "").trim();
     expect(result).toMatchObject({ reason: "error", error: why, time: 5, events: 3 });
@@ -35,7 +35,7 @@ describe("runCli in-process", () => {
     // failure can (the same scene as above: the failure at t = 5)
     const { cli, out } = io({ "rest.json": sceneText(RESTS_AT_5) });
     expect(runCli(["state", "rest.json", "--at", "8"], cli)).toBe(2);
-    expect(out.stderr).toMatch(/^chapgame: rest\.json: cannot simulate this scene: body 'rest' rests .*\n$/);
+    expect(out.stderr).toMatch(/^chapgame: rest\.json: cannot simulate this scene: body "rest" rests .*\n$/);
     const result = JSON.parse(out.stdout);
     expect(result).toMatchObject({ reason: "error", time: 5, events: 3 });
     // the ball has just met the right wall (x = 10 - r) and is on its way back

@@ -20,7 +20,7 @@ describe("contactResolved", () => {
 
   it("words the message with who, when, the distances and the magnitudes", () => {
     const c = {
-      what: "body 'a' meets body 'b'",
+      what: 'body "a" meets body "b"',
       between: "the centres",
       t: 35,
       d: 0,
@@ -28,7 +28,7 @@ describe("contactResolved", () => {
       coordinate: 1e16,
     };
     expect(unresolvedContact({ ...c, speed: 1 })).toBe(
-      "body 'a' meets body 'b' at t=35, where doubles cannot place the contact (the centres come out 0 apart for a contact distance of 2): one rounding of coordinates up to 1.00e+16, or of the time 35 times a speed of 1.00, is about as large as the discs. Keep coordinates and distances travelled far below 2^52 (about 4.5e15) times the radii.",
+      'body "a" meets body "b" at t=35, where doubles cannot place the contact (the centres come out 0 apart for a contact distance of 2): one rounding of coordinates up to 1.00e+16, or of the time 35 times a speed of 1.00, is about as large as the discs. Keep coordinates and distances travelled far below 2^52 (about 4.5e15) times the radii.',
     );
     expect(unresolvedContact({ ...c, speed: 0 })).toContain("coordinates up to 1.00e+16 is about as large");
   });

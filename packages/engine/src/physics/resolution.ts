@@ -13,7 +13,7 @@ export function contactResolved(d: number, D: number): boolean {
 
 /** What unresolvedContact says of a contact: who meets what, when, and the magnitudes involved. */
 export interface UnresolvedContact {
-  /** "body 'a' meets body 'b'", "body 'a' meets 'wall'" */
+  /** 'body "a" meets body "b"', 'body "a" meets "wall"' */
   what: string;
   /** "the centres", "the centre and the line" */
   between: string;

@@ -160,7 +160,7 @@ describe("Zeno watch: states the model cannot pass are reported", () => {
     w.addBody("d", { x: 0, y: 1.25, r: 1, m: 1 });
     const e = thrown(() => w.advance({ untilTime: 10 }));
     expect(e).toBeInstanceOf(SimulationError);
-    expect((e as Error).message).toMatch(/body 'd' rests against 'left' under an acceleration at t=0/);
+    expect((e as Error).message).toMatch(/body "d" rests against "left" under an acceleration at t=0/);
   });
 
   // Regression: the Zeno watch counted the refused event before the response refused it, so from
@@ -169,7 +169,7 @@ describe("Zeno watch: states the model cannot pass are reported", () => {
     const w = new World({ g: 0, gravity: [0, -10] });
     w.addLine("floor", [-10, 0], [10, 0], "segment");
     w.addBody("d", { x: 0, y: 1, r: 1, m: 1 });
-    const expected = /^body 'd' rests against 'floor' under an acceleration at t=0/;
+    const expected = /^body "d" rests against "floor" under an acceleration at t=0/;
     for (let i = 0; i < 200; i++) {
       expect((thrown(() => w.nextEventTime()) as Error).message).toMatch(expected);
       expect((thrown(() => w.advance({ untilTime: 1 })) as Error).message).toMatch(expected);
@@ -210,7 +210,7 @@ describe("Zeno watch: states the model cannot pass are reported", () => {
     const e = thrown(() => w.advance({}, () => events++));
     expect(e).toBeInstanceOf(SimulationError);
     expect((e as Error).message).toMatch(/sustained push.*/);
-    expect((e as Error).message).toMatch(/body 'k09_08' stopped/);
+    expect((e as Error).message).toMatch(/body "k09_08" stopped/);
     expect(events).toBeLessThan(1_000_000);
     expect(w.time).toBeGreaterThan(2.98);
     expect(w.time).toBeLessThan(2.99);

@@ -13,6 +13,7 @@ import { EV_LINE } from "./bodyStore.js";
 import { SimulationError } from "./errors.js";
 import { idBefore } from "./idOrder.js";
 import type { Line, Point } from "./obstacles.js";
+import { quoteId } from "./refusalText.js";
 import { ZenoGuard } from "./zenoGuard.js";
 
 /** Velocities out of a response: (vx, vy) of the body, then of its partner. */
@@ -42,7 +43,7 @@ export class ContactGeometry extends ZenoGuard {
     const ids = first ? [b.ids[s] as string, b.ids[o] as string] : [b.ids[o] as string, b.ids[s] as string];
     const t = this.now;
     const message = unresolvedContact({
-      what: `body '${ids[0]}' meets body '${ids[1]}'`,
+      what: `body ${quoteId(ids[0] as string)} meets body ${quoteId(ids[1] as string)}`,
       between: "the centres",
       t,
       d,
@@ -69,7 +70,7 @@ export class ContactGeometry extends ZenoGuard {
     const who = this.store.ids[s] as string;
     const t = this.now;
     const message = unresolvedContact({
-      what: `body '${who}' meets '${id}'`,
+      what: `body ${quoteId(who)} meets ${quoteId(id)}`,
       between: line ? "the centre and the line" : "the centre and the point",
       t,
       d,
@@ -165,7 +166,7 @@ export class ContactGeometry extends ZenoGuard {
       (pressedInto(vx, vy, ax, ay, nx, ny, round, friction) || (round && this.staysOnPoint(s, px, py)))
     ) {
       throw new SimulationError(
-        `body '${this.store.ids[s]}' rests against '${otherId}' under an acceleration at t=${t}: resting contact is not supported (it would take infinitely many bounces)`,
+        `body ${quoteId(this.store.ids[s] as string)} rests against ${quoteId(otherId)} under an acceleration at t=${t}: resting contact is not supported (it would take infinitely many bounces)`,
         t,
         [this.store.ids[s] as string, otherId],
       );

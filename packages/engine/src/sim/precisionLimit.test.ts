@@ -31,7 +31,7 @@ describe("contacts beyond the resolution of doubles", () => {
     const w = pair(1e16);
     const before = JSON.stringify(w.bodies());
     expect(caught(() => w.nextEventTime()).message).toMatch(
-      /^body 'a' meets body 'b' at t=35, where doubles/,
+      /^body "a" meets body "b" at t=35, where doubles/,
     );
     const e = caught(() => w.advance({ untilTime: 100 }));
     expect(e.ids).toEqual(["a", "b"]);
@@ -62,7 +62,7 @@ describe("contacts beyond the resolution of doubles", () => {
     const e = caught(() => w.advance({ untilTime: 100 }));
     expect(e.ids).toEqual(["a", "p"]);
     expect(e.message).toMatch(
-      /^body 'a' meets 'p' at t=\d+, where doubles cannot place the contact \(the centre and the point come out 0 apart/,
+      /^body "a" meets "p" at t=\d+, where doubles cannot place the contact \(the centre and the point come out 0 apart/,
     );
   });
 

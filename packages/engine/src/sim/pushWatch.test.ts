@@ -13,13 +13,13 @@ describe("PushWatch", () => {
     const w = new PushWatch();
     unmoved(w, "pushed", ZENO_PUSH_STREAK);
     expect(() => w.stop("pushed", true, 2.5)).toThrow(SimulationError);
-    expect(() => w.stop("pushed", true, 2.5)).toThrow(/body 'pushed' stopped .* in a row.*sustained push/);
+    expect(() => w.stop("pushed", true, 2.5)).toThrow(/body "pushed" stopped .* in a row.*sustained push/);
   });
 
   it("a stop that throws counts nothing: tried again, it throws the same message", () => {
     const w = new PushWatch();
     unmoved(w, "pushed", ZENO_PUSH_STREAK);
-    const message = `body 'pushed' stopped ${ZENO_PUSH_STREAK + 1} times in a row`;
+    const message = `body "pushed" stopped ${ZENO_PUSH_STREAK + 1} times in a row`;
     expect(() => w.check("pushed", true, 2.5)).toThrow(message);
     expect(() => w.stop("pushed", true, 2.5)).toThrow(message);
     expect(() => w.stop("pushed", true, 2.5)).toThrow(message);
@@ -53,7 +53,7 @@ describe("PushWatch", () => {
         w.stop(`nudged${i % (2 * ZENO_PUSH_BODIES)}`, true, 1);
       }
     };
-    expect(run).toThrow(/body 'pushed'/);
+    expect(run).toThrow(/body "pushed"/);
   });
 
   // Regression: a share of micro-stops per window of events refused a game of repeated breaks

@@ -17,6 +17,7 @@
  */
 import { ZENO_PUSH_BODIES, ZENO_PUSH_STREAK } from "../tolerances.js";
 import { SimulationError } from "./errors.js";
+import { quoteId } from "./refusalText.js";
 
 /** Streaks as saved: [body id, consecutive micro-stops] per watched body. */
 export type PushStreaks = readonly (readonly [string, number])[];
@@ -35,7 +36,7 @@ export class PushWatch {
     const n = k >= 0 ? (this.counts[k] as number) + 1 : 1;
     if (n > ZENO_PUSH_STREAK)
       throw new SimulationError(
-        `body '${id}' stopped ${n} times in a row where it had been set in motion, not moving by one rounding unit (to t=${time}): a disc pushed along against friction by another (a sustained push), which the model of elastic impulses and sliding friction resolves only by ever more collisions`,
+        `body ${quoteId(id)} stopped ${n} times in a row where it had been set in motion, not moving by one rounding unit (to t=${time}): a disc pushed along against friction by another (a sustained push), which the model of elastic impulses and sliding friction resolves only by ever more collisions`,
         time,
         [id],
       );

@@ -1,8 +1,10 @@
 import { describe, expect, it } from "vitest";
 import { parseScene } from "../scene/parse.js";
 import { Timeline } from "../timeline/timeline.js";
-import { ChapgameError } from "./errors.js";
+import { ZENO_PUSH_STREAK } from "../tolerances.js";
+import { ChapgameError, SimulationError } from "./errors.js";
 import type { LineKind } from "./obstacles.js";
+import { PushWatch } from "./pushWatch.js";
 import { given, quoteId } from "./refusalText.js";
 import type { BodyInit, BodyMotionInit, Vec2, WorldOptions } from "./types.js";
 import { World } from "./world.js";
@@ -181,5 +183,51 @@ describe("the World's refusals say what was given and quote ids as the scene's d
     const inScene = refusal(() => tl.apply({ time: 0, type: "addBody", id: "b", x: 1, y: 0, r: 1, m: 1 }))[1];
     expect(inWorld).toContain('overlap body "a"');
     expect(inScene).toContain('overlap body "a"');
+  });
+});
+
+describe("a SimulationError quotes ids as the refusals do (session 23: it wrote 'a')", () => {
+  /** The SimulationError `call` throws. */
+  function failure(call: () => unknown): SimulationError {
+    try {
+      call();
+    } catch (e) {
+      if (e instanceof SimulationError) return e;
+      throw e;
+    }
+    throw new Error("went on");
+  }
+  // ids that single quotes left ambiguous: a quote, a space, an apostrophe
+  const ball = 'the "ball"';
+  const floor = "Ann's floor";
+
+  it("a resting contact names the body and the line as a refusal of them does", () => {
+    const w = new World({ g: 0, gravity: [0, -1] });
+    w.addLine(floor, [-10, 0], [10, 0], "segment");
+    w.addBody(ball, { x: 0, y: 1, r: 1, m: 1 });
+    const e = failure(() => w.advance({ untilTime: 1 }));
+    expect(e.message).toMatch(/^body "the \\"ball\\"" rests against "Ann's floor" under an acceleration/);
+    expect(e.message.startsWith(`body ${quoteId(ball)} rests against ${quoteId(floor)} `)).toBe(true);
+    expect(e.ids).toEqual([ball, floor]);
+    // the World's refusal of the same ids quotes them alike
+    expect(refusal(() => w.addBody(ball, disc({ x: 50 })))[1]).toContain(`body with id ${quoteId(ball)}`);
+    expect(refusal(() => w.addLine(floor, [0, 5], [1, 5], "segment"))[1]).toContain(quoteId(floor));
+  });
+
+  it("a sustained push and a contact doubles cannot place name their bodies the same way", () => {
+    const push = new PushWatch();
+    for (let i = 0; i < ZENO_PUSH_STREAK; i++) push.stop(ball, true, 1);
+    expect(failure(() => push.stop(ball, true, 1)).message).toMatch(/^body "the \\"ball\\"" stopped /);
+    // two discs meeting at 1e16 with radius 1 (precisionLimit.test's case)
+    const w = new World({ g: 0 });
+    w.addBody(ball, { x: 1e16, y: 0, r: 1, m: 1, vx: 1 });
+    w.addBody(floor, { x: 1e16 + 72, y: 0, r: 1, m: 1, vx: -1 });
+    const e = failure(() => w.advance({ untilTime: 100 }));
+    expect(
+      e.message.startsWith(
+        `body ${quoteId(e.ids[0] as string)} meets body ${quoteId(e.ids[1] as string)} at t=35`,
+      ),
+    ).toBe(true);
+    expect([...e.ids].sort()).toEqual([floor, ball].sort());
   });
 });

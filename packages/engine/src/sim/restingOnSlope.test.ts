@@ -103,7 +103,7 @@ describe("a disc placed touching a slope under gravity", () => {
       kind: "segment",
     });
     const ball = { time: 0, type: "addBody", id: "ball", x: s, y: c, r: 1, m: 1 } as const;
-    expect(() => tl.apply(ball)).toThrow(/'ball' rests against 'ramp'/);
+    expect(() => tl.apply(ball)).toThrow(/"ball" rests against "ramp"/);
     expect(tl.actions.map((x) => x.type)).toEqual(["addLine"]);
   });
 });
@@ -168,7 +168,7 @@ describe("a disc crossing a peg at about the speed that keeps it on the peg (res
         min = Math.min(min, gapOf());
       }
     } catch (e) {
-      if (e instanceof SimulationError && /rests against 'peg'/.test(e.message)) return "rest";
+      if (e instanceof SimulationError && /rests against "peg"/.test(e.message)) return "rest";
       throw e;
     }
     return min;
@@ -190,7 +190,7 @@ describe("a disc crossing a peg at about the speed that keeps it on the peg (res
     w.addPoint("peg", [0, 0]);
     const at = { x: -0.008571673007021122, y: 0.005150380749100544, r: 0.01, m: 1 };
     w.addBody("ball", { ...at, vx: 0.009053792108789052, vy: 0.015068040444124641 });
-    expect(() => w.advance({ untilTime: 1 })).toThrow(/'ball' rests against 'peg' .* at t=0:/);
+    expect(() => w.advance({ untilTime: 1 })).toThrow(/"ball" rests against "peg" .* at t=0:/);
     // 4 ulps faster: the contact was found at once for ever, 65 events at t = 0 and a Zeno error
     const faster = new World({ g: 0, gravity: [-0.0224951054343865, -0.09743700647852353] });
     faster.addPoint("peg", [0, 0]);
@@ -200,7 +200,7 @@ describe("a disc crossing a peg at about the speed that keeps it on the peg (res
       faster.advance({ untilTime: 1 }, () => {
         events++;
       }),
-    ).toThrow(/'ball' rests against 'peg' .* at t=0:/);
+    ).toThrow(/"ball" rests against "peg" .* at t=0:/);
     expect(events).toBe(0);
   });
 
@@ -217,6 +217,6 @@ describe("a disc crossing a peg at about the speed that keeps it on the peg (res
       vx: v * Math.cos(a),
       vy: -v * Math.sin(a),
     });
-    expect(() => w.advance({ untilTime: 10 })).toThrow(/'ball' rests against 'peg'/);
+    expect(() => w.advance({ untilTime: 10 })).toThrow(/"ball" rests against "peg"/);
   });
 });

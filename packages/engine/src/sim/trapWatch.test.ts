@@ -126,9 +126,9 @@ describe(`a disc crushed into a corner by an immovable disc is reported within $
     expect(error).toBeInstanceOf(SimulationError);
     const e = error as SimulationError;
     expect(e.message).toMatch(
-      /^body 'd' is shut in by the immovable body 'p', line '(floor|wall)' and line '(floor|wall)', which close on it by t=\S+: infinitely many collisions before then \(a Zeno state: a disc crushed by an immovable body\)/,
+      /^body "d" is shut in by the immovable body "p", line "(floor|wall)" and line "(floor|wall)", which close on it by t=\S+: infinitely many collisions before then \(a Zeno state: a disc crushed by an immovable body\)/,
     );
-    expect(e.message).toMatch(/'floor'.*'wall'|'wall'.*'floor'/);
+    expect(e.message).toMatch(/"floor".*"wall"|"wall".*"floor"/);
     expect(e.ids).toEqual([]);
     expect(events).toBeLessThanOrEqual(BOUND);
     // Met just before the crush (within a thousandth of its time), where the World stopped.
@@ -150,7 +150,7 @@ describe(`other pockets an immovable disc closes on a disc are reported within $
     const { error, events } = runToError(w);
     expect(error).toBeInstanceOf(SimulationError);
     expect((error as Error).message).toMatch(
-      /^body 'd' is shut in by the immovable body 'P', the immovable body '[LR]' and the immovable body '[LR]'/,
+      /^body "d" is shut in by the immovable body "P", the immovable body "[LR]" and the immovable body "[LR]"/,
     );
     expect(events).toBeLessThanOrEqual(BOUND);
     // The pocket closes when P's centre is 1.5 above the wedged spot (0, 0.9): at t = 3.6.
@@ -168,7 +168,7 @@ describe(`other pockets an immovable disc closes on a disc are reported within $
     const { error, events } = runToError(w);
     expect(error).toBeInstanceOf(SimulationError);
     expect((error as Error).message).toMatch(
-      /^body 'd' is shut in by the immovable body 'p', line 'lower', line 'end' and line 'upper'/,
+      /^body "d" is shut in by the immovable body "p", line "lower", line "end" and line "upper"/,
     );
     expect(events).toBeLessThanOrEqual(10_000); // 8,192 (2.2 million before)
     // P reaches 2 from the end's corners (1, 1), (1, 1.001) at t = 9 (less a hair of the room).
@@ -181,7 +181,7 @@ describe(`other pockets an immovable disc closes on a disc are reported within $
     const { error, events } = runToError(w);
     expect(error).toBeInstanceOf(SimulationError);
     expect((error as Error).message).toMatch(
-      /^body 'd' is shut in by the immovable body 'p', line '(left|right)'/,
+      /^body "d" is shut in by the immovable body "p", line "(left|right)"/,
     );
     expect(events).toBeLessThanOrEqual(BOUND);
   });
@@ -194,7 +194,7 @@ describe("a disc crushed in line (the only finite disc, all on one line parallel
     expect(error).toBeInstanceOf(SimulationError);
     expect((error as Error).message).toMatch(
       new RegExp(
-        `^body '\\w+' is crushed in line between the immovable body '\\w+' and ${end}, which close on it by t=`,
+        `^body "\\w+" is crushed in line between the immovable body "\\w+" and ${end}, which close on it by t=`,
       ),
     );
     expect((error as SimulationError).ids).toEqual([]);
@@ -206,7 +206,7 @@ describe("a disc crushed in line (the only finite disc, all on one line parallel
     w.addLine("wall", [0, -5], [0, 5], "line");
     w.addBody("small", { x: 2, y: 0, r: 1, m: 1 });
     w.addBody("crusher", { x: 5, y: 0, r: 1, m: Number.POSITIVE_INFINITY, vx: -1 });
-    expect(inLine(w, "line 'wall'")).toBeLessThanOrEqual(BOUND); // 1,280
+    expect(inLine(w, 'line "wall"')).toBeLessThanOrEqual(BOUND); // 1,280
     expect(w.time).toBeLessThan(2);
     expect(w.time).toBeGreaterThan(1.998);
   });
@@ -216,7 +216,7 @@ describe("a disc crushed in line (the only finite disc, all on one line parallel
     w.addLine("floor", [-10, 0], [10, 0], "segment");
     w.addBody("ball", { x: 0, y: 3, r: 1, m: 1 });
     w.addBody("p", { x: 0, y: 8, r: 1, m: Number.POSITIVE_INFINITY });
-    expect(inLine(w, "line 'floor'")).toBeLessThanOrEqual(BOUND); // 1,793
+    expect(inLine(w, 'line "floor"')).toBeLessThanOrEqual(BOUND); // 1,793
   });
 
   it("a fast disc (10 times the crusher's speed) whatever the time origin", () => {
@@ -226,7 +226,7 @@ describe("a disc crushed in line (the only finite disc, all on one line parallel
       w.addBody("d", { x: 5, y: 0, r: 1, m: 1, vx: -10 });
       w.addBody("p", { x: 10, y: 0, r: 1, m: Number.POSITIVE_INFINITY, vx: -1 });
       // 69,377: the disc gains speed from the crusher's every kick; the windows took 2.4 million.
-      expect(inLine(w, "line 'wall'")).toBeLessThanOrEqual(100_000);
+      expect(inLine(w, 'line "wall"')).toBeLessThanOrEqual(100_000);
       expect(w.time).toBeLessThan(t0 + 7);
       expect(w.time).toBeGreaterThan(t0 + 6.998);
     }

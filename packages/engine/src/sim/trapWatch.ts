@@ -22,6 +22,7 @@ import { SimulationError } from "./errors.js";
 import { lineCloses } from "./lineCrush.js";
 import { pocketCloses } from "./pocket.js";
 import { type Core, type CoreKind, coreDistance, length, triangleCoreDistance } from "./pocketGeometry.js";
+import { quoteId } from "./refusalText.js";
 
 const INF = Number.POSITIVE_INFINITY;
 
@@ -42,7 +43,7 @@ const strip = new Float64Array(6);
 
 /** How the message names a side. */
 function named(side: Side): string {
-  return `${side.rank === 0 ? "line" : side.rank === 1 ? "point" : "the immovable body"} '${side.id}'`;
+  return `${side.rank === 0 ? "line" : side.rank === 1 ? "point" : "the immovable body"} ${quoteId(side.id)}`;
 }
 
 /** Canonical order of sides: nearer first, then lines, points, bodies, then by id. */
@@ -120,7 +121,7 @@ export class TrapWatch extends CellCrossings {
       if (Number.isNaN(tStar) || !this.pathClear(p, R, ZENO_TRAP_SLACK * r)) continue;
       const names = chain.map(named);
       throw new SimulationError(
-        `body '${b.ids[d] as string}' is shut in by the immovable body '${b.ids[p] as string}', ${names.slice(0, -1).join(", ")} and ${names[names.length - 1] as string}, which close on it by t=${tStar}: infinitely many collisions before then (a Zeno state: a disc crushed by an immovable body), which the exact model cannot pass`,
+        `body ${quoteId(b.ids[d] as string)} is shut in by the immovable body ${quoteId(b.ids[p] as string)}, ${names.slice(0, -1).join(", ")} and ${names[names.length - 1] as string}, which close on it by t=${tStar}: infinitely many collisions before then (a Zeno state: a disc crushed by an immovable body), which the exact model cannot pass`,
         t,
       );
     }
@@ -157,7 +158,7 @@ export class TrapWatch extends CellCrossings {
       strip[5] = corridor[3] as number;
       if (!this.stripClear(p, end, disc.r + margin)) continue;
       throw new SimulationError(
-        `body '${b.ids[d] as string}' is crushed in line between the immovable body '${b.ids[p] as string}' and ${named(end)}, which close on it by t=${tStar}: infinitely many collisions before then (a Zeno state: a disc crushed by an immovable body), which the exact model cannot pass`,
+        `body ${quoteId(b.ids[d] as string)} is crushed in line between the immovable body ${quoteId(b.ids[p] as string)} and ${named(end)}, which close on it by t=${tStar}: infinitely many collisions before then (a Zeno state: a disc crushed by an immovable body), which the exact model cannot pass`,
         t,
       );
     }

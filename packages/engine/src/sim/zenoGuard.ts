@@ -9,6 +9,7 @@
  */
 import { ZENO_TRAP_EVERY, ZENO_TRAP_TRIES } from "../tolerances.js";
 import { EV_BODY, EV_STOP } from "./bodyStore.js";
+import { quoteId } from "./refusalText.js";
 import { TrapWatch } from "./trapWatch.js";
 
 export class ZenoGuard extends TrapWatch {
@@ -54,8 +55,8 @@ export class ZenoGuard extends TrapWatch {
     const b = this.store;
     const s = this.guarded;
     const kind = b.evKind[s] as number;
-    const id = `'${b.ids[s] as string}'`;
-    if (kind === EV_BODY) return `${id} and '${b.ids[b.evOther[s] as number] as string}'`;
+    const id = quoteId(b.ids[s] as string);
+    if (kind === EV_BODY) return `${id} and ${quoteId(b.ids[b.evOther[s] as number] as string)}`;
     if (kind === EV_STOP) return `${id} stopping`;
     return `${id} and an obstacle`;
   };
