@@ -1,6 +1,6 @@
 // The README's usage example is real: extract it, run it with plain Node against the built
 // engine (npm test builds first), and check what it says it prints.
-import { execFileSync } from "node:child_process";
+import { execFileSync, spawnSync } from "node:child_process";
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
 import { expect, it } from "vitest";
@@ -115,6 +115,35 @@ it("the engine README's one-liner writes a scene file the CLI takes (the sample 
     const bin = join(root, "packages", "engine", "src", "cli", "launcher.mjs");
     const out = execFileSync(process.execPath, [bin, "check", join(dir, "scene.json")], { encoding: "utf8" });
     expect(JSON.parse(out)).toMatchObject({ valid: true, actions: 6 });
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
+
+it("the engine README's CLI examples, run on the scene its one-liner writes, each exit 0 with one JSON object", () => {
+  // Audit of session 23: `path scene.json --id ball` named no body of that scene (Newton's cradle
+  // has c1 to c5 and the striker) and exited 2.
+  const readme = readFileSync(join(root, "packages", "engine", "README.md"), "utf8");
+  const line = /^node --input-type=module -e '(.*)' > scene\.json$/m.exec(readme)?.[1] as string;
+  const examples = [...readme.matchAll(/^npx chapgame (.+?)\s+#.*$/gm)].map((m) =>
+    (m[1] as string).split(/\s+/),
+  );
+  expect(examples.map((args) => args[0])).toEqual(["simulate", "state", "path", "check", "simulate"]);
+  const dir = mkdtempSync(join(root, "tests", "readme", ".tmp-"));
+  try {
+    const scene = join(dir, "scene.json");
+    writeFileSync(
+      scene,
+      execFileSync(process.execPath, ["--input-type=module", "-e", line], { encoding: "utf8", cwd: dir }),
+    );
+    const bin = join(root, "packages", "engine", "src", "cli", "launcher.mjs");
+    for (const args of examples) {
+      const r = spawnSync(process.execPath, [bin, ...args.map((a) => (a === "scene.json" ? scene : a))], {
+        encoding: "utf8",
+      });
+      expect([r.status, r.stderr], args.join(" ")).toEqual([0, ""]);
+      expect(typeof JSON.parse(r.stdout), args.join(" ")).toBe("object");
+    }
   } finally {
     rmSync(dir, { recursive: true, force: true });
   }
