@@ -18,6 +18,7 @@ import {
   type Obj,
   onlyKeys,
   positive,
+  refuse,
   vec2,
 } from "./fields.js";
 import { checkActionMagnitudes, lineDirection } from "./magnitudes.js";
@@ -67,7 +68,7 @@ export const ACTION_FIELDS: Readonly<Record<ActionType, readonly FieldSpec[]>> =
 export const ACTION_TYPES = Object.keys(ACTION_FIELDS) as ActionType[];
 
 function checkUntil(raw: unknown, path: string): { time?: number; events?: number } {
-  if (!isObject(raw)) throw new SceneError(path, "must be an object with optional time and events");
+  if (!isObject(raw)) throw refuse(path, "must be an object with optional time and events", raw);
   onlyKeys(raw, ["time", "events"], path);
   const u: { time?: number; events?: number } = {};
   if (raw.time !== undefined) u.time = nonNegative(raw, "time", path);
@@ -77,11 +78,14 @@ function checkUntil(raw: unknown, path: string): { time?: number; events?: numbe
 
 /** Validates and normalizes one action (see the header). Throws SceneError naming the field. */
 export function checkAction(raw: unknown, path: string): Action {
-  if (!isObject(raw)) throw new SceneError(path, "must be an object");
+  if (!isObject(raw)) throw refuse(path, "must be an object", raw);
   const type = raw.type;
   if (type === undefined) throw new SceneError(join(path, "type"), "is required");
   if (typeof type !== "string" || !Object.hasOwn(ACTION_FIELDS, type))
-    throw new SceneError(join(path, "type"), `unknown action type ${JSON.stringify(type)}`);
+    throw new SceneError(
+      join(path, "type"),
+      `unknown action type ${JSON.stringify(type)} (known: ${ACTION_TYPES.join(", ")})`,
+    );
   const specs = ACTION_FIELDS[type as ActionType];
   onlyKeys(raw, ["time", "type", "until", ...specs.map((s) => s[0])], path);
   const out: Obj = { time: nonNegative(raw, "time", path), type };

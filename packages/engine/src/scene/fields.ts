@@ -18,7 +18,7 @@ export function join(path: string, key: string): string {
 
 /** A refusal of value v of field `path`: the reason, and what was given (given: sim/refusalText.ts,
  *  shared with the World's refusals). */
-function refuse(path: string, reason: string, v: unknown): SceneError {
+export function refuse(path: string, reason: string, v: unknown): SceneError {
   return new SceneError(path, `${reason} (got ${given(v)})`);
 }
 

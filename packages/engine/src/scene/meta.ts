@@ -15,7 +15,7 @@
  *   a message naming the field. The walk here is iterative.
  */
 import { SceneError } from "./errors.js";
-import { isObject } from "./fields.js";
+import { isObject, refuse } from "./fields.js";
 
 /** Deepest nesting of objects and arrays accepted in `meta` (meta itself is level 1). */
 export const META_MAX_DEPTH = 100;
@@ -23,7 +23,7 @@ export const META_MAX_DEPTH = 100;
 const DATA = "must be JSON data (null, a boolean, a finite number, a string, an array or an object)";
 
 export function checkMeta(value: unknown): asserts value is Record<string, unknown> {
-  if (!isObject(value)) throw new SceneError("meta", "must be an object");
+  if (!isObject(value)) throw refuse("meta", "must be an object", value);
   const stack: [unknown, number, string][] = [[value, 1, "meta"]];
   while (stack.length > 0) {
     const [v, depth, path] = stack.pop() as [unknown, number, string];

@@ -323,6 +323,43 @@ describe("parseScene names the value it refuses", () => {
     });
 });
 
+describe("parseScene names the value it refuses in the scene's frame too (audit of session 23: it did not)", () => {
+  const scene = (fields: Record<string, unknown>) =>
+    JSON.stringify({ format: "chapgame", version: 1, ...fields });
+  const cases: [string, string, string][] = [
+    [
+      "another format",
+      JSON.stringify({ format: "box2d", version: 1, actions: [] }),
+      'format: must be "chapgame" (got the string "box2d")',
+    ],
+    ["no format", JSON.stringify({ version: 1, actions: [] }), 'format: must be "chapgame" (got undefined)'],
+    ["an array for the scene", "[1]", "scene: must be a JSON object (got an array of 1)"],
+    ["null for the scene", "null", "scene: must be a JSON object (got null)"],
+    ["actions as an object", scene({ actions: { 0: {} } }), "actions: must be an array (got an object)"],
+    ["no actions", scene({}), "actions: must be an array (got undefined)"],
+    [
+      "an action that is not an object",
+      scene({ actions: [null] }),
+      "actions[0]: must be an object (got null)",
+    ],
+    ["meta as an array", scene({ actions: [], meta: [1] }), "meta: must be an object (got an array of 1)"],
+    [
+      "an until that is not an object",
+      scene({ actions: [disc("a", 0, { until: 5 })] }),
+      "actions[0].until: must be an object with optional time and events (got 5)",
+    ],
+    [
+      "an unknown action type, with the known ones",
+      scene({ actions: [{ time: 0, type: "addDisc", id: "a" }] }),
+      'actions[0].type: unknown action type "addDisc" (known: addBody, giveVelocity, updateBody, removeBody, addLine, updateLine, removeLine, addPoint, updatePoint, removePoint, setGlobal)',
+    ],
+  ];
+  for (const [name, text, message] of cases)
+    it(name, () => {
+      expect(refused(text).message).toBe(message);
+    });
+});
+
 describe("SceneError", () => {
   it("is a ChapgameError, so one catch covers every refused input (World, Timeline, parseScene)", () => {
     const e = refused(base([disc("a", 0, { r: -1 })]));

@@ -10,7 +10,7 @@
  */
 import { checkAction } from "./action.js";
 import { SceneError } from "./errors.js";
-import { isObject, nonNegative, onlyKeys, vec2 } from "./fields.js";
+import { isObject, nonNegative, onlyKeys, refuse, vec2 } from "./fields.js";
 import { type DuplicateKey, duplicateOf, lineColumn } from "./jsonDuplicates.js";
 import { type NumberLiteral, overflowOf } from "./jsonNumbers.js";
 import { walkJson } from "./jsonPaths.js";
@@ -56,7 +56,7 @@ function where(text: string): string {
 /** The scene object's own keys, format and version, as a reader and a writer of version 1 check them. */
 export function checkHeader(raw: Record<string, unknown>): void {
   onlyKeys(raw, ["format", "version", "g", "gravity", "actions", "meta"], "");
-  if (raw.format !== "chapgame") throw new SceneError("format", 'must be "chapgame"');
+  if (raw.format !== "chapgame") throw refuse("format", 'must be "chapgame"', raw.format);
   if (raw.version !== 1) {
     // A later whole-number version is a file from a newer chapgame: say so (review: the editor
     // showed only "unsupported version 2", which read as a damaged file).
@@ -207,12 +207,12 @@ function readFrom(read: () => string): ReturnType<typeof readText> {
  *  made (a million raw actions held beside their copies took 200 MB); a caller's object is left as
  *  it was. */
 function checkScene(raw: unknown, owned: boolean): SceneFile {
-  if (!isObject(raw)) throw new SceneError("scene", "must be a JSON object");
+  if (!isObject(raw)) throw refuse("scene", "must be a JSON object", raw);
   checkHeader(raw);
   const g = raw.g === undefined ? SCENE_DEFAULTS.g : nonNegative(raw, "g", "");
   const gravity = raw.gravity === undefined ? SCENE_DEFAULTS.gravity : vec2(raw, "gravity", "");
   checkFieldMagnitudes(g, gravity, "");
-  if (!Array.isArray(raw.actions)) throw new SceneError("actions", "must be an array");
+  if (!Array.isArray(raw.actions)) throw refuse("actions", "must be an array", raw.actions);
   const list: unknown[] = raw.actions;
   const actions: Action[] = [];
   for (let i = 0; i < list.length; i++) {

@@ -9,8 +9,7 @@
  */
 
 import { ACTION_FIELDS, checkAction } from "./action.js";
-import { SceneError } from "./errors.js";
-import { isObject, nonNegative, vec2 } from "./fields.js";
+import { isObject, nonNegative, refuse, vec2 } from "./fields.js";
 import { checkFieldMagnitudes } from "./magnitudes.js";
 import { checkMeta } from "./meta.js";
 import { checkHeader } from "./parse.js";
@@ -44,11 +43,11 @@ function actionLine(a: Action): string {
 /** Throws SceneError naming the first field parseScene would refuse on its own. */
 function checkFields(scene: SceneFile): void {
   const raw = scene as unknown as Record<string, unknown>;
-  if (!isObject(raw)) throw new SceneError("scene", "must be an object");
+  if (!isObject(raw)) throw refuse("scene", "must be an object", raw);
   // A scene of another version, or with a key this version does not have, is refused, not rewritten
   // as version 1 without it.
   checkHeader(raw);
-  if (!Array.isArray(raw.actions)) throw new SceneError("actions", "must be an array");
+  if (!Array.isArray(raw.actions)) throw refuse("actions", "must be an array", raw.actions);
   checkFieldMagnitudes(nonNegative(raw, "g", ""), vec2(raw, "gravity", ""), "");
   if (raw.meta !== undefined) checkMeta(raw.meta);
   raw.actions.forEach((a, i) => {
