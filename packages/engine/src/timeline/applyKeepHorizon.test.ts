@@ -83,7 +83,16 @@ describe("Timeline.apply with keepHorizon: false", () => {
       "options.keepHorizn: unknown field (known: keepHorizon, checkLater)",
     );
     expect(() => tl.apply(nudge, { keepHorizon: "no" } as unknown as { keepHorizon: boolean })).toThrow(
-      "options.keepHorizon: must be true or false",
+      'options.keepHorizon: must be true or false (got the string "no")',
+    );
+    expect(() => tl.apply(nudge, { checkLater: 0 } as unknown as { checkLater: boolean })).toThrow(
+      "options.checkLater: must be true or false (got 0)",
+    );
+    expect(() => tl.apply(nudge, 5 as unknown as { keepHorizon: boolean })).toThrow(
+      "options: must be an object with optional keepHorizon and checkLater (got 5)",
+    );
+    expect(() => tl.prolong(5 as unknown as { time: number })).toThrow(
+      "until: must be an object with optional time and events (got 5)",
     );
     expect(() => tl.apply(nudge, { checkLater: false })).toThrow(
       "options.checkLater: can be false only with keepHorizon: false",

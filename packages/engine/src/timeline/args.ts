@@ -6,7 +6,7 @@
  * Each returns the value to use (a time of -0 becomes 0, as in scene files).
  */
 import { SceneError } from "../scene/errors.js";
-import { count, isObject, nonNegative, onlyKeys } from "../scene/fields.js";
+import { count, isObject, nonNegative, onlyKeys, refuse } from "../scene/fields.js";
 import type { Until } from "../scene/types.js";
 
 /** A value as an error message shows it: a string quoted (so "3" is not read as the number 3). */
@@ -18,14 +18,14 @@ export function show(v: unknown): string {
  *  with keepHorizon false). SceneError naming `options.<field>`. */
 export function checkApplyOptions(raw: unknown): { keepHorizon: boolean; checkLater: boolean } {
   if (!isObject(raw))
-    throw new SceneError("options", "must be an object with optional keepHorizon and checkLater");
+    throw refuse("options", "must be an object with optional keepHorizon and checkLater", raw);
   onlyKeys(raw, ["keepHorizon", "checkLater"], "options");
   const k = raw.keepHorizon;
   if (k !== undefined && typeof k !== "boolean")
-    throw new SceneError("options.keepHorizon", "must be true or false");
+    throw refuse("options.keepHorizon", "must be true or false", k);
   const c = raw.checkLater;
   if (c !== undefined && typeof c !== "boolean")
-    throw new SceneError("options.checkLater", "must be true or false");
+    throw refuse("options.checkLater", "must be true or false", c);
   if (c === false && k !== false)
     throw new SceneError("options.checkLater", "can be false only with keepHorizon: false");
   return { keepHorizon: k !== false, checkLater: c !== false };
@@ -33,7 +33,7 @@ export function checkApplyOptions(raw: unknown): { keepHorizon: boolean; checkLa
 
 /** Validates an until (a prolong's argument): SceneError naming `path`'s field. */
 export function checkUntil(raw: unknown, path: string): Until {
-  if (!isObject(raw)) throw new SceneError(path, "must be an object with optional time and events");
+  if (!isObject(raw)) throw refuse(path, "must be an object with optional time and events", raw);
   onlyKeys(raw, ["time", "events"], path);
   const u: Until = {};
   if (raw.time !== undefined) u.time = nonNegative(raw, "time", path);
@@ -48,13 +48,13 @@ export function checkBudget(budget: unknown): number {
     !(budget >= 1) ||
     !(Number.isInteger(budget) || budget === Number.POSITIVE_INFINITY)
   )
-    throw new SceneError("budget", `must be a whole number >= 1, or Infinity, got ${show(budget)}`);
+    throw refuse("budget", "must be a whole number >= 1, or Infinity", budget);
   return budget;
 }
 
 /** setActions' argument: an array (its items are checked as actions[i] by the caller). */
 export function checkActionList(actions: unknown): readonly unknown[] {
-  if (!Array.isArray(actions)) throw new SceneError("actions", "must be an array of actions");
+  if (!Array.isArray(actions)) throw refuse("actions", "must be an array of actions", actions);
   return actions;
 }
 

@@ -30,22 +30,31 @@ describe("Timeline as a debugger's back end", () => {
   it("setActions refuses a list that is not an array, naming actions (null threw a raw TypeError)", () => {
     const tl = wallAndHeavyDisc();
     const before = tl.getSnapshot();
-    for (const bad of [null, undefined, new Set(tl.actions), { 0: tl.actions[0], length: 1 }]) {
+    for (const [bad, got] of [
+      [null, "null"],
+      [undefined, "undefined"],
+      [new Set(tl.actions), "an object"],
+      [{ 0: tl.actions[0], length: 1 }, "an object"],
+    ]) {
       const call = () => tl.setActions(bad as unknown as Action[]);
       expect(call).toThrow(SceneError);
-      expect(call).toThrow("actions: must be an array of actions");
+      expect(call).toThrow(`actions: must be an array of actions (got ${got})`);
     }
     expect(tl.getSnapshot()).toBe(before);
   });
 
   it("prolongSlice refuses a budget that is not a whole number >= 1 by name (1.5 was named the World's maxEvents)", () => {
     const tl = wallAndHeavyDisc();
-    for (const budget of [1.5, 0, -1, Number.NaN, "5"]) {
+    for (const [budget, got] of [
+      [1.5, "1.5"],
+      [0, "0"],
+      [-1, "-1"],
+      [Number.NaN, "NaN"],
+      ["5", 'the string "5"'],
+    ]) {
       const call = () => tl.prolongSlice({ time: 1 }, budget as number);
       expect(call).toThrow(SceneError);
-      expect(call).toThrow(
-        `budget: must be a whole number >= 1, or Infinity, got ${typeof budget === "string" ? `"${budget}"` : budget}`,
-      );
+      expect(call).toThrow(`budget: must be a whole number >= 1, or Infinity (got ${got})`);
     }
     expect(tl.horizon).toBe(20);
     expect(tl.prolongSlice({ time: 1 }, Number.POSITIVE_INFINITY)).toMatchObject({ done: true, horizon: 21 });

@@ -9,8 +9,8 @@ describe("Timeline options", () => {
     const bad: [unknown, string][] = [
       // the internal `untils` (the CLI's) is not offered (audit of session 17: it was)
       [{ histroy: false }, "histroy: unknown field (known: g, gravity, history, compute)"],
-      [{ history: "no" }, "history: must be true or false"],
-      [{ compute: 0 }, "compute: must be true or false"],
+      [{ history: "no" }, 'history: must be true or false (got the string "no")'],
+      [{ compute: 0 }, "compute: must be true or false (got 0)"],
     ];
     for (const [options, message] of bad) {
       expect(() => new Timeline(options as TimelineOptions)).toThrow(message);

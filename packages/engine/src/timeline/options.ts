@@ -5,7 +5,7 @@
  * options, which must not carry g or gravity (they come from the scene).
  */
 import { SceneError } from "../scene/errors.js";
-import { nonNegative, onlyKeys, vec2 } from "../scene/fields.js";
+import { nonNegative, onlyKeys, refuse, vec2 } from "../scene/fields.js";
 import { checkFieldMagnitudes } from "../scene/magnitudes.js";
 import { SCENE_DEFAULTS, type Vec2 } from "../scene/types.js";
 import type { TimelineOptions } from "./types.js";
@@ -26,7 +26,7 @@ export function checkOptions(options: TimelineOptions): CheckedOptions {
   onlyKeys(documented, ["g", "gravity", "history", "compute"], "");
   for (const key of ["history", "compute", "untils"])
     if (o[key] !== undefined && typeof o[key] !== "boolean")
-      throw new SceneError(key, "must be true or false");
+      throw refuse(key, "must be true or false", o[key]);
   const checked: CheckedOptions = {
     g: o.g === undefined ? SCENE_DEFAULTS.g : nonNegative(o, "g", ""),
     gravity:
