@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { parseArgs, UsageError } from "./args.js";
+import { parseArgs, USAGE, UsageError } from "./args.js";
 
 describe("parseArgs", () => {
   it("parses simulate with its options, in any order, with or without =", () => {
@@ -170,4 +170,12 @@ describe("parseArgs", () => {
       expect(() => parseArgs(argv)).toThrow(UsageError);
       expect(() => parseArgs(argv)).toThrow(msg);
     });
+});
+
+describe("the help (USAGE)", () => {
+  it("keeps every line within 100 columns (audit of session 23: two ran to 111 and 119)", () => {
+    const long = USAGE.split("\n").filter((line) => line.length > 100);
+    expect(long).toEqual([]);
+    expect(USAGE.split("\n").length).toBeGreaterThan(50);
+  });
 });

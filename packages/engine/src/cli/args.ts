@@ -84,15 +84,15 @@ that starts with "-" is a file name.
 Interrupting a run (Ctrl-C: SIGINT, or SIGTERM) while it computes prints the result up to
 where it got, with "time" there and "reason": "interrupted" (state too; path: "to" there), and
 exits with status 130 (SIGINT) or 143 (SIGTERM); an interrupted check prints nothing on standard
-output (it did not finish), only a line on stderr. In a pipeline Ctrl-C reaches the reader as well: to keep the
-result, send the signal to chapgame alone (kill -INT PID) or write to a file.
-The result of simulate and state: "time", "reason" (simulate, and a state that stopped early), "events" (collisions and
-stops), "counts" (bodyBody, bodyLine, bodyPoint, stop), "bodies" (id, x, y, vx, vy, r, m, mu at
-"time", sorted by id) and with --events "log": every entry up to "time" in order, each with
-"time", "type" (bodyBody, bodyLine, bodyPoint, stop, action), "ids" (the participants; the
-action's id), "point" (contact, or where a body stopped), "normal" (unit, from the first id to
-the second), "impulse" (0 for a stop) and, for an action, "action" (its type); null where it
-does not apply.
+output (it did not finish), only a line on stderr. In a pipeline Ctrl-C reaches the reader as
+well: to keep the result, send the signal to chapgame alone (kill -INT PID) or write to a file.
+The result of simulate and state: "time", "reason" (simulate, and a state that stopped early),
+"events" (collisions and stops), "counts" (bodyBody, bodyLine, bodyPoint, stop), "bodies" (id, x,
+y, vx, vy, r, m, mu at "time", sorted by id) and with --events "log": every entry up to "time"
+in order, each with "time", "type" (bodyBody, bodyLine, bodyPoint, stop, action), "ids" (the
+participants; the action's id), "point" (contact, or where a body stopped), "normal" (unit, from
+the first id to the second), "impulse" (0 for a stop) and, for an action, "action" (its type);
+null where it does not apply.
 The log also lists the actions, which "events" does not count. Infinite numbers are written
 "Infinity" and "-Infinity", NaN "NaN".
 --events adds the event log (kept in memory: bound long runs).
