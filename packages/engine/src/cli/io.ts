@@ -21,9 +21,11 @@ export interface CliIO {
   /** Called once the computation is over, before the result is written (the bin stops catching
    *  interrupts then: a Ctrl-C while a long result is written ends the process at once). */
   computed?: () => void;
-  /** A monotonic clock in milliseconds (the bin: performance.now) that paces the progress lines:
-   *  the first about half a second into the computation, then one a second (cadence.ts). Without
-   *  it, a line every 200,000 events. Only when lines are written depends on it, never a result. */
+  /** A monotonic clock in milliseconds (the bin: performance.now) that paces the computation
+   *  (cadence.ts): progress lines half a second into it, then one a second, and slices of about a
+   *  tenth of a second (at most 10,000 events). Without it, a line every 200,000 events and slices
+   *  of 10,000. Only when lines are written and where the run can be interrupted depend on it,
+   *  never a result. */
   now?: () => number;
 }
 

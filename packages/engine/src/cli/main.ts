@@ -12,9 +12,9 @@
  * parsing) and once it is over (writing the result) a signal ends the process at once, as without
  * them (a handler cannot run while a synchronous read waits, so one installed then swallowed the
  * signal).
- * Progress lines (progress.ts) are paced by performance.now, a monotonic clock read between two
- * slices of the computation (cadence.ts): a timer (setInterval) could not fire while a slice runs
- * synchronously, and would only set a flag read at the same place. The clock is the CLI's: the
+ * The computation is paced by performance.now, a monotonic clock read between two slices of it
+ * (cadence.ts: a progress line about once a second, slices of about 0.1 s): a timer (setInterval)
+ * could not fire while a slice runs synchronously, and would only set a flag read at the same place. The clock is the CLI's: the
  * engine's own code reads none (test/exactArithmetic.test.ts allows host objects in src/cli alone),
  * and what is computed does not depend on it, only when a line is written to stderr does.
  * The engine is built without Node's types (it must not depend on Node), so the few Node APIs used

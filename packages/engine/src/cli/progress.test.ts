@@ -3,6 +3,7 @@
 import { describe, expect, it } from "vitest";
 import { dilutedGas } from "../scene/presets.js";
 import { serializeScene } from "../scene/serialize.js";
+import { FIRST_SLICE_EVENTS, SLICE_TARGET_MS } from "./cadence.js";
 import type { CliIO } from "./io.js";
 import { LONG_SCENE_CHARS } from "./progress.js";
 import { runCli } from "./run.js";
@@ -162,7 +163,7 @@ describe("progress on the bin's clock (CliIO.now), never on real time", () => {
   const files = { "gas.json": serializeScene(dilutedGas({ n: 200, packing: 0.2 })) };
 
   /** A clock that moves `step` ms each time it is read: once when the computation starts, then
-   *  once after each slice of SLICE_EVENTS events that does not end it (as a scene that slow). */
+   *  once after each slice that does not end it (as a scene that slow would). */
   function ticking(step: number) {
     let t = 1_000_000;
     return () => {
@@ -171,51 +172,73 @@ describe("progress on the bin's clock (CliIO.now), never on real time", () => {
       return now;
     };
   }
+  /** Each event count of the lines of `stderr` (one line each, or a terminal's \r-separated). */
+  const counts = (stderr: string) =>
+    [...stderr.matchAll(/, (\d+)( of \d+)? events/g)].map((m) => Number(m[1]));
 
-  it("a slow run shows a line half a second in, then one a second, whatever the events", () => {
-    // 300 ms a slice: read at 0 (start), then 300, 600 (a line: >= 500), 900 ... 1800 (>= 1600) ...
-    const slow = io(files);
-    slow.cli.now = ticking(300);
-    expect(runCli(["simulate", "gas.json", "--max-events", "130000", "--progress"], slow.cli)).toBe(0);
-    expect(timesAsT(slow.out.stderr)).toBe(
-      "chapgame: t = T, 20000 of 130000 events\n" +
-        "chapgame: t = T, 60000 of 130000 events\n" +
-        "chapgame: t = T, 100000 of 130000 events\n",
+  it("shows a line half a second into the computation, then one a second, whatever the events", () => {
+    // 60 ms a slice, between half the target and the target: every slice is FIRST_SLICE_EVENTS.
+    // The clock reads 60, 120, ... after slices 1, 2, ...: lines after slice 9 (540 ms >= 500),
+    // 26 (1560 >= 540 + 1000) and 43 (2580 >= 2560).
+    expect([FIRST_SLICE_EVENTS, SLICE_TARGET_MS]).toEqual([1_000, 100]);
+    const paced = io(files);
+    paced.cli.now = ticking(60);
+    expect(runCli(["simulate", "gas.json", "--max-events", "50000", "--progress"], paced.cli)).toBe(0);
+    expect(timesAsT(paced.out.stderr)).toBe(
+      "chapgame: t = T, 9000 of 50000 events\n" +
+        "chapgame: t = T, 26000 of 50000 events\n" +
+        "chapgame: t = T, 43000 of 50000 events\n",
     );
     // the same result as without a clock or without progress, byte for byte
     const quiet = io(files);
-    expect(runCli(["simulate", "gas.json", "--max-events", "130000"], quiet.cli)).toBe(0);
+    expect(runCli(["simulate", "gas.json", "--max-events", "50000"], quiet.cli)).toBe(0);
     expect(quiet.out.stderr).toBe("");
-    expect(slow.out.stdout).toBe(quiet.out.stdout);
+    expect(paced.out.stdout).toBe(quiet.out.stdout);
   });
 
   it("a fast run shows no line before half a second, however many events (it showed one per 200,000)", () => {
     const fast = io(files);
-    fast.cli.now = ticking(1); // 1 ms a slice: 45 slices, 45 ms
+    fast.cli.now = ticking(1); // 1 ms a slice: slices grow to SLICE_EVENTS, about 50 of them
     expect(runCli(["simulate", "gas.json", "--max-events", "450000", "--progress"], fast.cli)).toBe(0);
     expect(fast.out.stderr).toBe("");
     const unpaced = io(files); // without a clock: a line every 200,000 events
     expect(runCli(["simulate", "gas.json", "--max-events", "450000", "--progress"], unpaced.cli)).toBe(0);
-    expect(unpaced.out.stderr.split("\n")).toHaveLength(3);
+    expect(counts(unpaced.out.stderr)).toEqual([200_000, 400_000]);
     expect(fast.out.stdout).toBe(unpaced.out.stdout);
+  });
+
+  it("a slow scene's slices shrink to the clock (down to one event) and lines keep coming; the result is the same", () => {
+    // 300 ms a slice whatever its size: slices of 1000, 333, 111, 37, 12, 4, then 1 event
+    const slow = io(files);
+    slow.cli.now = ticking(300);
+    expect(runCli(["simulate", "gas.json", "--max-events", "3000", "--progress"], slow.cli)).toBe(0);
+    const shown = counts(slow.out.stderr);
+    // lines at 600 ms (after slices of 1000 and 333 events), 1800 (after 111, 37, 12 and 4), then
+    // every fourth slice of 1 event (1200 ms)
+    expect(shown.slice(0, 2)).toEqual([1_000 + 333, 1_000 + 333 + 111 + 37 + 12 + 4]);
+    expect(shown.slice(2).every((n, i) => n === (shown[i + 1] as number) + 4)).toBe(true);
+    expect(shown.length).toBeGreaterThan(300);
+    const quiet = io(files);
+    expect(runCli(["simulate", "gas.json", "--max-events", "3000"], quiet.cli)).toBe(0);
+    expect(slow.out.stdout).toBe(quiet.out.stdout);
   });
 
   it("on a terminal the clock's lines replace each other and are erased before the result (state, check too)", () => {
     const terminal = io(files, true);
-    terminal.cli.now = ticking(2_000); // every slice is a second or more after the last line
+    terminal.cli.now = ticking(60);
     expect(runCli(["state", "gas.json", "--at", "900"], terminal.cli)).toBe(0);
     const parts = terminal.out.stderr.split("\r");
     expect(parts[0]).toBe("");
-    const shown = parts.slice(1, -1).map((p) => timesAsT(p.replace("\x1b[K", "")));
-    expect(shown.length).toBeGreaterThan(1);
-    expect(shown).toEqual(shown.map((_, i) => `chapgame: t = T of 900, ${(i + 1) * 10000} events`));
     expect(parts.at(-1)).toBe("\x1b[K");
+    const shown = parts.slice(1, -1).map((p) => timesAsT(p.replace("\x1b[K", "")));
+    expect(shown).toEqual(["chapgame: t = T of 900, 9000 events", "chapgame: t = T of 900, 26000 events"]);
     expect(JSON.parse(terminal.out.stdout)).toMatchObject({ time: 900 });
     const check = io({ "gas.json": gasWith({ time: 900, type: "giveVelocity", id: "d0", v: [1, 0] }) });
-    check.cli.now = ticking(2_000);
+    check.cli.now = ticking(60);
     expect(runCli(["check", "gas.json", "--progress"], check.cli)).toBe(0);
-    expect(check.out.stderr).toMatch(
-      /^chapgame: t = [\d.e+]+ of 900, 10000 events, 204 of 205 actions applied\n/,
+    expect(timesAsT(check.out.stderr)).toBe(
+      "chapgame: t = T of 900, 9000 events, 204 of 205 actions applied\n" +
+        "chapgame: t = T of 900, 26000 events, 204 of 205 actions applied\n",
     );
   });
 });

@@ -108,17 +108,17 @@ export class ProgressLine {
     until: Until,
     goal: ShownGoal = until,
   ): Generator<void, ProlongResult["reason"], void> {
-    if (this.mode === "off") return computeSlices(tl, until, null);
+    const clock = this.raw.now;
+    if (this.mode === "off") return computeSlices(tl, until, null, clock);
     if (this.long) this.write(this.line(tl.horizon, 0, goal));
-    const now = this.raw.now;
-    const cadence = now === undefined ? eventCadence() : clockCadence(now);
+    const cadence = clock === undefined ? eventCadence() : clockCadence();
     const progress: Progress = {
-      due: (events) => cadence.due(events),
+      due: (events, elapsed) => cadence.due(events, elapsed),
       report: (horizon, events) => this.write(this.line(horizon, events, goal)),
       // erase the line, also when the run ends in an error or an interrupt (printed after this)
       end: () => this.erase(),
     };
-    return computeSlices(tl, until, progress);
+    return computeSlices(tl, until, progress, clock);
   }
 
   /** The line at `horizon` after `events` events (see the header). */

@@ -2,7 +2,13 @@ import { describe, expect, it } from "vitest";
 import { dilutedGas } from "../scene/presets.js";
 import type { Until } from "../scene/types.js";
 import { Timeline } from "../timeline/timeline.js";
-import { eventCadence, PROGRESS_EVERY_EVENTS } from "./cadence.js";
+import {
+  eventCadence,
+  FIRST_SLICE_EVENTS,
+  nextSliceBudget,
+  PROGRESS_EVERY_EVENTS,
+  SLICE_TARGET_MS,
+} from "./cadence.js";
 import {
   computeSlices,
   Interrupted,
@@ -30,11 +36,11 @@ function fake(slices: number) {
 
 /** Records the reports and the end; lines are due as `due` says (by default every
  *  PROGRESS_EVERY_EVENTS events). */
-function recorder(due?: (events: number) => boolean) {
+function recorder(due?: (events: number, elapsed: number) => boolean) {
   const log: string[] = [];
   const cadence = eventCadence();
   const progress: Progress = {
-    due: due ?? ((events) => cadence.due(events)),
+    due: due ?? ((events, elapsed) => cadence.due(events, elapsed)),
     report: (h, n) => log.push(`${h}:${n}`),
     end: () => log.push("end"),
   };
@@ -97,6 +103,83 @@ describe("computeSlices", () => {
     const steps = computeSlices(sliced, { events: 3 * SLICE_EVENTS + 17 }, null);
     while (!steps.next().done) yields++;
     expect(yields).toBe(3);
+    expect(sliced.horizon).toBe(whole.horizon);
+    expect(sliced.stateAt(sliced.horizon)).toEqual(whole.stateAt(whole.horizon));
+    expect(sliced.eventRange(0, Infinity)).toEqual(whole.eventRange(0, Infinity));
+  });
+});
+
+describe("computeSlices on a clock", () => {
+  /** A stand-in whose slices take `msPerEvent` ms an event on `clock` (read by computeSlices). */
+  function timed(slices: number, msPerEvent: number) {
+    const budgets: number[] = [];
+    const clock = { t: 5_000, now: () => clock.t };
+    const tl: Sliceable = {
+      prolongSlice(_until, budget) {
+        budgets.push(budget);
+        clock.t += budget * msPerEvent;
+        if (budgets.length < slices) return { done: false, events: budget, horizon: budgets.length };
+        return { done: true, events: 1, horizon: budgets.length, reason: "time" };
+      },
+    };
+    return { tl, budgets, clock };
+  }
+
+  it("starts with FIRST_SLICE_EVENTS and sizes each next slice by how long the last one took", () => {
+    for (const msPerEvent of [0.001, 0.6, 40]) {
+      const { tl, budgets, clock } = timed(12, msPerEvent);
+      runToEnd(computeSlices(tl, {}, null, clock.now));
+      expect(budgets[0]).toBe(FIRST_SLICE_EVENTS);
+      for (let i = 1; i < budgets.length; i++)
+        expect(budgets[i]).toBe(
+          nextSliceBudget(budgets[i - 1] as number, (budgets[i - 1] as number) * msPerEvent),
+        );
+      // a slow scene's slices come down to about the target (6 s for 10,000 events before)
+      if (msPerEvent >= 0.6)
+        expect((budgets.at(-1) as number) * msPerEvent).toBeLessThanOrEqual(SLICE_TARGET_MS);
+    }
+  });
+
+  it("tells the cadence the time since the computation started, after each slice that does not end it", () => {
+    const { tl, budgets, clock } = timed(5, 0.01);
+    const told: [number, number][] = [];
+    const rec = recorder((events, elapsed) => {
+      told.push([events, elapsed]);
+      return false;
+    });
+    runToEnd(computeSlices(tl, {}, rec.progress, clock.now));
+    let events = 0;
+    const expected = budgets.slice(0, -1).map((b) => {
+      events += b;
+      return [events, events * 0.01];
+    });
+    expect(told.map(([n, ms]) => [n, Math.round(ms * 1e6) / 1e6])).toEqual(expected);
+    expect(rec.log).toEqual([]);
+  });
+
+  it("gives a real Timeline the history one prolong gives, bit for bit, however the clock sizes the slices", () => {
+    const scene = dilutedGas({ n: 100, packing: 0.2 });
+    const whole = Timeline.fromScene(scene, { compute: false });
+    whole.prolong({ events: 25_017 });
+    // an erratic clock: slices of many sizes
+    const sliced = Timeline.fromScene(scene, { compute: false });
+    const budgets: number[] = [];
+    const recording: Sliceable = {
+      prolongSlice: (until, budget) => {
+        budgets.push(budget);
+        return sliced.prolongSlice(until, budget);
+      },
+    };
+    let t = 0;
+    let k = 0;
+    const erratic = () => {
+      k = (k * 7 + 3) % 11;
+      t += k * k * 40;
+      return t;
+    };
+    runToEnd(computeSlices(recording, { events: 25_017 }, null, erratic));
+    expect(new Set(budgets).size).toBeGreaterThan(5);
+    expect(Math.min(...budgets)).toBeLessThan(100);
     expect(sliced.horizon).toBe(whole.horizon);
     expect(sliced.stateAt(sliced.horizon)).toEqual(whole.stateAt(whole.horizon));
     expect(sliced.eventRange(0, Infinity)).toEqual(whole.eventRange(0, Infinity));

@@ -1,11 +1,13 @@
 /**
  * The CLI's computation in slices, and how it is stopped (pure: no process access).
- * computeSlices(tl, until, progress) is a generator: each step computes one slice of at most
- * SLICE_EVENTS collisions and stops (Timeline.prolongSlice toward `until`, counted from the horizon
- * at the first slice), reports progress after it when the progress's cadence says a line is due
- * (cadence.ts: about once a second on the bin's clock), and yields unless the run is done; it
- * returns why the run ended. Slicing changes nothing in the history (the Timeline's
- * contract), so the result is the one a single prolong gives.
+ * computeSlices(tl, until, progress, clock) is a generator: each step computes one slice
+ * (Timeline.prolongSlice toward `until`, counted from the horizon at the first slice), reports
+ * progress after it when the progress's cadence says a line is due, and yields unless the run is
+ * done; it returns why the run ended. A slice is SLICE_EVENTS collisions and stops; given a clock
+ * (the bin's performance.now, read once at the start and once after each slice), the first is
+ * FIRST_SLICE_EVENTS and each next one sized to last about SLICE_TARGET_MS (cadence.ts), and the
+ * cadence is told the time elapsed. Slicing changes nothing in the history (the Timeline's
+ * contract), so the result is the one a single prolong gives, whatever the clock says.
  * A driver runs such a generator (the whole command is one: run.ts): runToEnd runs it through
  * without pausing; runInterruptible pauses between steps (`pause`, the bin's setImmediate, lets a
  * signal handler run) and, once `interrupted()` names a signal, throws an Interrupted into the
@@ -13,10 +15,9 @@
  */
 import type { Until } from "../scene/types.js";
 import type { ProlongResult } from "../timeline/types.js";
-import type { Cadence } from "./cadence.js";
+import { type Cadence, FIRST_SLICE_EVENTS, nextSliceBudget, SLICE_EVENTS } from "./cadence.js";
 
-/** Collisions and stops computed between two chances to stop (a few ms to tens of ms). */
-export const SLICE_EVENTS = 10_000;
+export { SLICE_EVENTS };
 
 /** The signals that interrupt a run, and the exit status of a run each interrupted (128 + number). */
 export const INTERRUPT_STATUS = { SIGINT: 130, SIGTERM: 143 } as const;
@@ -56,15 +57,25 @@ export function* computeSlices(
   tl: Sliceable,
   until: Until,
   progress: Progress | null,
+  clock?: () => number,
 ): Generator<void, ProlongResult["reason"], void> {
   let total = 0;
   let reported = false;
+  const start = clock === undefined ? Number.NaN : clock();
+  let budget = clock === undefined ? SLICE_EVENTS : FIRST_SLICE_EVENTS;
+  let last = start;
   try {
     for (;;) {
-      const r = tl.prolongSlice(until, SLICE_EVENTS);
+      const r = tl.prolongSlice(until, budget);
       total += r.events;
       if (r.done) return r.reason ?? "idle";
-      if (progress?.due(total)) {
+      let now = Number.NaN;
+      if (clock !== undefined) {
+        now = clock();
+        budget = nextSliceBudget(budget, now - last);
+        last = now;
+      }
+      if (progress?.due(total, now - start)) {
         progress.report(r.horizon, total);
         reported = true;
       }
