@@ -1,7 +1,8 @@
 /**
  * End-to-end: what a demanding scene author meets on the canvas and around it, in Debian's
- * Chromium: Fit with a lone disc, Escape cancelling a drag, a scene file dropped on the page, two
- * tabs autosaving side by side (and an autosave of the earlier single-slot version).
+ * Chromium: Fit with a lone disc, Escape cancelling a drag, what the pointer puts in the scene (at
+ * its precision, not the digits of its position), a scene file dropped on the page, two tabs
+ * autosaving side by side (and an autosave of the earlier single-slot version).
  */
 import type { JSHandle, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -22,7 +23,10 @@ const LONELY = {
 
 type PageEditor = {
   doc: { actions: unknown[] };
-  ui: { getState(): { view: { cx: number; cy: number; scale: number }; playing: boolean } };
+  ui: {
+    getState(): { view: { cx: number; cy: number; scale: number }; playing: boolean };
+    setState(patch: object): void;
+  };
   history: { getState(): { past: unknown[] } };
   loadScene(scene: unknown, options?: object): Promise<string | null>;
 };
@@ -34,6 +38,9 @@ async function load(scene: unknown, id: string) {
   }, scene);
   await page.getByRole("table", { name: "Bodies" }).getByLabel(`${id} x`, { exact: true }).waitFor();
 }
+
+const actionCount = () =>
+  page.evaluate(() => (window as unknown as { chapgame: PageEditor }).chapgame.doc.actions.length);
 
 const editorState = () =>
   page.evaluate(() => {
@@ -110,6 +117,60 @@ describe("scene author", () => {
     await poll(async () =>
       Number(await bodies.getByLabel("lonely x", { exact: true }).textContent()),
     ).toBeCloseTo(60 / c.scale, 1);
+  });
+
+  it("the pointer puts places at its precision: a clicked disc, a dragged one and a drawn segment, at 37 px per unit to 0.01", async () => {
+    await load(LONELY, "lonely");
+    // a pixel is 0.027 units: the coarsest power of ten under it is 0.01
+    await page.evaluate(() => {
+      (window as unknown as { chapgame: PageEditor }).chapgame.ui.setState({
+        view: { cx: 0, cy: 0, scale: 37 },
+      });
+    });
+    const c = await onPage(0, 0);
+    await page.getByRole("button", { name: "Disc", exact: true }).click();
+    await page.mouse.click(c.x + 123.4567, c.y - 45.678); // (3.3367…, 1.2345…)
+    const bodies = page.getByRole("table", { name: "Bodies" });
+    await bodies.getByLabel("b1 x", { exact: true }).waitFor();
+    await page.getByRole("button", { name: "Move", exact: true }).click();
+    await page.mouse.move(c.x, c.y);
+    await page.mouse.down();
+    await page.mouse.move(c.x - 200.3, c.y + 10.7, { steps: 5 }); // (−5.4135…, −0.2891…)
+    await page.mouse.up();
+    await page.getByRole("button", { name: "Segment", exact: true }).click();
+    await page.mouse.move(c.x - 100.25, c.y + 150.55); // (−2.7094…, −4.0689…)
+    await page.mouse.down();
+    await page.mouse.move(c.x + 180.77, c.y + 150.55, { steps: 5 }); // (4.8856…, −4.0689…)
+    await page.mouse.up();
+    await page.getByRole("table", { name: "Lines" }).getByLabel("l1 x1", { exact: true }).waitFor();
+    await poll(() => actionCount()).toBe(4);
+    const actions = (await page.evaluate(
+      () => (window as unknown as { chapgame: PageEditor }).chapgame.doc.actions,
+    )) as Record<string, unknown>[];
+    expect(actions.slice(1).map((a) => a.type)).toEqual(["addBody", "updateBody", "addLine"]);
+    const [disc, moved, line] = actions.slice(1) as [
+      { x: number; y: number },
+      { x: number; y: number },
+      { p1: [number, number]; p2: [number, number] },
+    ];
+    // each within a pixel (0.027) of where the pointer was, with at most two decimals
+    const aimed: [number, number][] = [
+      [disc.x, 3.3367],
+      [disc.y, 1.2345],
+      [moved.x, -5.4135],
+      [moved.y, -0.2891],
+      [line.p1[0], -2.7094],
+      [line.p2[0], 4.8856],
+      [line.p1[1], -4.0689],
+    ];
+    for (const [got, aim] of aimed) {
+      expect(Math.abs(got - aim)).toBeLessThan(0.03);
+      expect(String(got)).toMatch(/^-?\d+(\.\d{1,2})?$/);
+    }
+    expect(line.p2[1]).toBe(line.p1[1]); // drawn level, it stays level
+    // the tables show the same short numbers
+    expect(await bodies.getByLabel("b1 x", { exact: true }).textContent()).toBe(String(disc.x));
+    await poll(() => bodies.getByLabel("lonely x", { exact: true }).textContent()).toBe(String(moved.x));
   });
 
   it("a scene file dropped on the page opens like Load file: indicator while dragging, Undo, refusals", async () => {

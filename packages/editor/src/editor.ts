@@ -10,6 +10,7 @@
  * message (null on success) and show it in the UI.
  */
 
+import { pointerVelocity } from "./canvas/pointerPlace";
 import { describeEntry } from "./doc/actionRefs";
 import { nextFreeId } from "./doc/ids";
 import { type ActionEntry, withoutAction } from "./doc/removeAction";
@@ -83,9 +84,18 @@ export class Editor extends EditorTime {
     return this.edit([this.stamp({ time: this.now(), type: "giveVelocity", id, v })]);
   }
 
-  /** A cue strike: velocity away from the click point, STRIKE_RATE per unit of offset. */
-  strike(id: string, centre: Vec2, click: Vec2): Promise<string | null> {
-    const v: Vec2 = [(centre[0] - click[0]) * STRIKE_RATE, (centre[1] - click[1]) * STRIKE_RATE];
+  /**
+   * A cue strike: velocity away from the click point, STRIKE_RATE per unit of offset. With the
+   * view's `scale` (a click of the pointer) it is rounded to what one pixel of the offset changes in
+   * it (canvas/pointerPlace.ts), not given the digits of the pointer's position.
+   */
+  strike(id: string, centre: Vec2, click: Vec2, scale?: number): Promise<string | null> {
+    const dx = centre[0] - click[0];
+    const dy = centre[1] - click[1];
+    const v: Vec2 =
+      scale === undefined
+        ? [dx * STRIKE_RATE, dy * STRIKE_RATE]
+        : pointerVelocity(dx, dy, STRIKE_RATE, scale);
     return this.giveVelocity(id, v);
   }
 

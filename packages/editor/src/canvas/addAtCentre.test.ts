@@ -85,6 +85,35 @@ describe("Enter: the tool's object at the centre of the view", () => {
     expect(editor.ui.getState().message?.text).toBe('Added point "p1" at the centre of the view (-4, 7).');
   });
 
+  it("a centre panned to by the keys is rounded as a click there is: to the coarsest power of ten under a pixel", async () => {
+    // at 20 px per unit a pixel is 0.05: positions to 0.01, as a click at the centre would give
+    const { editor, client } = await setup({ cx: 10.123456789, cy: 3.98765, scale: 20 });
+    editor.ui.setState({ tool: "disc" });
+    await addAtCentre(editor);
+    await settled(client);
+    expect(added(editor.doc).at(-1)).toMatchObject({ type: "addBody", x: 10.12, y: 3.99 });
+    expect(editor.ui.getState().message?.text).toBe(
+      'Added disc "b1" at the centre of the view (10.12, 3.99).',
+    );
+    editor.ui.setState({ tool: "segment", view: { cx: 10.123456789, cy: -3.98765, scale: 20 } });
+    await addAtCentre(editor);
+    await settled(client);
+    const half = niceRadius(NEW_LINE_PX / 2, 20);
+    expect(half).toBe(5);
+    expect(added(editor.doc).at(-1)).toMatchObject({
+      type: "addLine",
+      p1: [5.12, -3.99],
+      p2: [15.12, -3.99],
+    });
+    // a centre clear of "a" (radius 1 at the origin) by less than the rounding: (0.70, 0.71) and
+    // (0.71, 0.70) lie inside it, so the nearest round place clear of it
+    editor.ui.setState({ tool: "point", view: { cx: 0.7049, cy: 0.7094, scale: 20 } });
+    await addAtCentre(editor);
+    await settled(client);
+    expect(added(editor.doc).at(-1)).toMatchObject({ type: "addPoint", p: [0.71, 0.71] });
+    expect(editor.ui.getState().message?.tone).toBe("info");
+  });
+
   it("a centre already taken adds nothing and says what is in the way", async () => {
     const { editor, client } = await setup({ cx: 0.5, cy: 0, scale: 20 });
     for (const [tool, noun, button] of [

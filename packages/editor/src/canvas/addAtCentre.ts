@@ -8,7 +8,9 @@
  * points right, through it). The object is selected (Delete or Undo then act on it) and the message
  * bar says what was added. A centre already taken in the frame shown (a disc there, or a line or
  * point in the way of a new disc) adds nothing and says what is in the way and how to go on; the
- * tools that add nothing (Move, Velocity, Cue) say which tools do.
+ * tools that add nothing (Move, Velocity, Cue) say which tools do. The centre is rounded as a click
+ * there would be (pointerPlace.ts: to the coarsest power of ten no larger than a pixel, kept clear
+ * of what the frame shows), so panning with the keys leaves no digits of the view's arithmetic.
  */
 import type { Editor } from "../editor";
 import { shown } from "../editorSession";
@@ -17,6 +19,8 @@ import type { Tool } from "../store/uiStore";
 import { TOOL_KEYS } from "../tools";
 import { blockerAt, type NewShape } from "./freeSpot";
 import { NEW_DISC_PX, niceRadius } from "./gestures";
+import { pointerStep, roundToStep } from "./pointerGrid";
+import { placeShape } from "./pointerPlace";
 
 /** A line, ray or segment added by Enter is this many pixels long on screen (as Add line's). */
 export const NEW_LINE_PX = 200;
@@ -47,13 +51,13 @@ export async function addAtCentre(editor: Editor): Promise<void> {
     );
     return;
   }
-  const c: Vec2 = [view.cx, view.cy];
+  const centre: Vec2 = [view.cx, view.cy];
   const r = niceRadius(NEW_DISC_PX, view.scale);
   const half = niceRadius(NEW_LINE_PX / 2, view.scale);
   const shape: NewShape =
     tool === "disc" ? { kind: "disc", r } : tool === "point" ? { kind: "point" } : { kind: "segment", half };
   const f = editor.client.latestFrame;
-  const inTheWay = f === null ? null : blockerAt(f, shape, c, 0);
+  const inTheWay = f === null ? null : blockerAt(f, shape, centre, 0);
   if (inTheWay !== null) {
     editor.ui.setState({
       message: {
@@ -63,12 +67,16 @@ export async function addAtCentre(editor: Editor): Promise<void> {
     });
     return;
   }
+  const c = placeShape(f, shape, centre, view.scale);
+  // half is a multiple of the step (two digits of 100 px): the ends are round too, once written so
+  const step = pointerStep(view.scale);
+  const end = (dx: number): Vec2 => [roundToStep(c[0] + dx, step), c[1]];
   const err =
     tool === "disc"
       ? await editor.addBody(c[0], c[1], r)
       : tool === "point"
         ? await editor.addPoint(c)
-        : await editor.addLine([c[0] - half, c[1]], [c[0] + half, c[1]], tool as "line" | "ray" | "segment");
+        : await editor.addLine(end(-half), end(half), tool as "line" | "ray" | "segment");
   // a refusal is in the message bar already (the engine's, in the user's terms)
   const sel = editor.ui.getState().selection;
   if (err === null && sel !== null)

@@ -41,6 +41,16 @@ describe("freeSpot", () => {
     expect(distanceToLine([0, 0], [s[0] - 5, s[1]], [s[0] + 5, s[1]], "segment")).toBeGreaterThan(3);
   });
 
+  it("with a grid, each candidate is rounded to it before it is checked: round and free", () => {
+    const f = frame([[0, 0, 1]]);
+    expect(freeSpot(f, { kind: "disc", r: 1 }, [5.4321, -7.89], 2.5, 0.1)).toEqual([5.4, -7.9]);
+    const p = freeSpot(f, { kind: "disc", r: 1 }, [0.0123, 0], 2.5, 0.1)!;
+    // the first ring's candidates, rounded (cosines of eighths of a turn are no decimals)
+    expect(p.map((x) => Number(x.toFixed(1)))).toEqual(p);
+    expect(blockerAt(f, { kind: "disc", r: 1 }, p, 0.25)).toBeNull();
+    expect(blockerAt(f, { kind: "disc", r: 1 }, [0, 0.5], 0, "d0")).toBeNull();
+  });
+
   it("null when no ring has room", () => {
     const huge = frame([[0, 0, 10 * FREE_SPOT_RINGS]]);
     expect(freeSpot(huge, { kind: "disc", r: 1 }, [0, 0], 2.5)).toBeNull();

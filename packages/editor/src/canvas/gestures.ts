@@ -7,6 +7,10 @@
  * a click or drag adds is selected once the engine accepts it (Editor.addBody, addLine, addPoint).
  * cancel() (Escape, or the browser cancelling the pointer) drops the gesture: the view, the playback
  * and the scene are as before the press, no action is recorded, and the release applies nothing.
+ * What a release produces is at the pointer's precision (pointerPlace.ts: places rounded to the
+ * coarsest power of ten no larger than a pixel, kept clear of what the frame shows; velocities to
+ * what a pixel of the drag changes), never the raw digits of the pointer's position; the preview
+ * shows the raw drag (less than two pixels from where it lands).
  */
 import type { Editor } from "../editor";
 import type { Vec2 } from "../engineTypes";
@@ -14,6 +18,8 @@ import { F_R, F_X, F_Y, FRAME_STRIDE, type Frame } from "../remote/protocol";
 import type { Tool, View } from "../store/uiStore";
 import { ARROW_SECONDS, type Overlay } from "./draw";
 import { bodyIndex, hitTest } from "./hitTest";
+import { exponentAtMost, roundToStep, tenTo } from "./pointerGrid";
+import { placeLine, placeShape, pointerVelocity } from "./pointerPlace";
 import { pan, type Size, toWorld } from "./viewTransform";
 
 export const CLICK_SLOP_PX = 4;
@@ -41,8 +47,7 @@ export interface GestureHost {
 /** A radius that looks like `px` pixels at this scale, rounded to two significant digits. */
 export function niceRadius(px: number, scale: number): number {
   const r = px / scale;
-  const p = 10 ** (Math.floor(Math.log10(r)) - 1);
-  return Math.round(r / p) * p;
+  return roundToStep(r, tenTo(exponentAtMost(r) - 1));
 }
 
 export class CanvasGestures {
@@ -137,12 +142,17 @@ export class CanvasGestures {
     // a dragged disc is selected, as a click selects it (Delete removed the one selected before)
     if (g.kind === "move" || g.kind === "velocity")
       this.editor.ui.setState({ selection: { kind: "body", id: g.id }, highlight: [] });
-    if (g.kind === "move") void this.editor.moveBody(g.id, g.at[0], g.at[1]);
-    else if (g.kind === "velocity") {
-      const v: Vec2 = [(g.to[0] - g.from[0]) / ARROW_SECONDS, (g.to[1] - g.from[1]) / ARROW_SECONDS];
+    const { scale } = s.view;
+    const f = this.host.frame();
+    if (g.kind === "move") {
+      const [x, y] = placeShape(f, { kind: "disc", r: g.r }, g.at, scale, g.id);
+      void this.editor.moveBody(g.id, x, y);
+    } else if (g.kind === "velocity") {
+      const v = pointerVelocity(g.to[0] - g.from[0], g.to[1] - g.from[1], 1 / ARROW_SECONDS, scale);
       void this.editor.giveVelocity(g.id, v);
     } else if (g.kind === "line") {
-      void this.editor.addLine(g.p1, g.p2, s.tool as "line" | "ray" | "segment");
+      const kind = s.tool as "line" | "ray" | "segment";
+      void this.editor.addLine(...placeLine(f, g.p1, g.p2, kind, scale), kind);
     }
   }
 
@@ -167,18 +177,21 @@ export class CanvasGestures {
     const s = editor.ui.getState();
     const f = this.host.frame();
     const hit = hitTest(f, w, HIT_PX / s.view.scale);
+    const { scale } = s.view;
     if (tool === "disc" && !hit) {
-      void editor.addBody(w[0], w[1], niceRadius(NEW_DISC_PX, s.view.scale));
+      const r = niceRadius(NEW_DISC_PX, scale);
+      const [x, y] = placeShape(f, { kind: "disc", r }, w, scale);
+      void editor.addBody(x, y, r);
       return;
     }
     if (tool === "point" && !hit) {
-      void editor.addPoint(w);
+      void editor.addPoint(placeShape(f, { kind: "point" }, w, scale));
       return;
     }
     if (tool === "cue" && hit?.kind === "body" && f) {
       const i = bodyIndex(f, hit.id) * FRAME_STRIDE;
       editor.ui.setState({ selection: hit });
-      void editor.strike(hit.id, [f.data[i + F_X]!, f.data[i + F_Y]!], w);
+      void editor.strike(hit.id, [f.data[i + F_X]!, f.data[i + F_Y]!], w, scale);
       return;
     }
     editor.ui.setState({ selection: hit, highlight: [] });

@@ -52,6 +52,12 @@ describe("Add buttons", () => {
     await waitFor(() => expect(editor.doc.actions.some((a) => a.type === "addLine")).toBe(true));
     await waitFor(() => expect(editor.ui.getState().selection).toEqual({ kind: "line", id: "l1" }));
     expect(editor.ui.getState().message).toBeNull();
+    // moved off c1 on a ring around the centre, each is still at the pointer's precision (a pixel
+    // at 20 px per unit is 0.05: two decimals), not at the digits of a cosine
+    const added = editor.doc.actions.filter((a) => "id" in a && ["b1", "p1", "l1"].includes(a.id));
+    const numbers = added.flatMap((a) => JSON.stringify(a).match(/-?\d+(\.\d+)?(e-?\d+)?/g) ?? []);
+    expect(numbers.filter((n) => /\.\d{3,}|e-/.test(n))).toEqual([]);
+    expect(added).toHaveLength(3);
   });
 
   it("a refused Add body selects nothing", async () => {

@@ -5,6 +5,7 @@
 
 import { useRef } from "react";
 import { freeSpot } from "../canvas/freeSpot";
+import { pointerStep, roundPoint } from "../canvas/pointerGrid";
 import { useEditor } from "../EditorContext";
 import type { Vec2 } from "../engineTypes";
 import { CoordinateCell, ObjectRow } from "./ObjectRow";
@@ -26,10 +27,13 @@ export function PointsTable() {
         <button
           type="button"
           onClick={() => {
+            // at the free place nearest the centre of the view, at the pointer's precision
             const v = editor.ui.getState().view;
+            const grid = pointerStep(v.scale);
             const at: Vec2 = [v.cx, v.cy];
             void editor.addPoint(
-              freeSpot(editor.client.latestFrame, { kind: "point" }, at, 20 / v.scale) ?? at,
+              freeSpot(editor.client.latestFrame, { kind: "point" }, at, 20 / v.scale, grid) ??
+                roundPoint(at, grid),
             );
           }}
         >

@@ -1,0 +1,77 @@
+// What the canvas's tools produce from the pointer: round places that the frame shown accepts (the
+// moved disc left out of its own check), and velocities rounded to what a pixel of drag changes.
+import { describe, expect, it } from "vitest";
+import type { LineState } from "../engineTypes";
+import { F_R, F_X, F_Y, FRAME_STRIDE, type Frame } from "../remote/protocol";
+import { blockerAt, lineBlocker } from "./freeSpot";
+import { placeLine, placeShape, pointerVelocity } from "./pointerPlace";
+
+function frame(discs: [string, number, number, number][], lines: LineState[] = []): Frame {
+  const data = new Float64Array(discs.length * FRAME_STRIDE);
+  discs.forEach(([, x, y, r], i) => {
+    data[i * FRAME_STRIDE + F_X] = x;
+    data[i * FRAME_STRIDE + F_Y] = y;
+    data[i * FRAME_STRIDE + F_R] = r;
+  });
+  return { t: 0, revision: 0, g: 0, gravity: [0, 0], ids: discs.map((d) => d[0]), data, lines, points: [] };
+}
+
+describe("placeShape", () => {
+  it("rounds to the coarsest power of ten no larger than a pixel (no frame: rounded only)", () => {
+    expect(placeShape(null, { kind: "point" }, [123.45678901234, -0.0123456], 10)).toEqual([123.5, 0]);
+    expect(placeShape(null, { kind: "point" }, [123.45678901234, -0.0123456], 300)).toEqual([
+      123.457, -0.012,
+    ]);
+    expect(placeShape(null, { kind: "disc", r: 1 }, [123.45678901234, 7.77], 0.05)).toEqual([120, 10]);
+  });
+
+  it("a disc next to a wall is never rounded into it: the nearest round place clear of it", () => {
+    const wall: LineState = { id: "w", p1: [10, -5], p2: [10, 5], kind: "line" };
+    const f = frame([], [wall]);
+    // aimed 0.01 clear of the wall: 8.96 rounds to 9.0, 0.03 into it
+    const c = placeShape(f, { kind: "disc", r: 1.03 }, [8.96, 2.02], 10);
+    expect(c).toEqual([8.9, 2]);
+    expect(blockerAt(f, { kind: "disc", r: 1.03 }, c, 0)).toBeNull();
+    expect(blockerAt(f, { kind: "disc", r: 1.03 }, [9, 2], 0)).toEqual({ kind: "line", id: "w" });
+  });
+
+  it("a moved disc is not in its own way; the others are", () => {
+    // d0 moved towards d1 (contact at 2): aimed 2.03 from it, rounded 1.99
+    const f = frame([
+      ["d0", 0, 0, 1],
+      ["d1", 2.69, 0, 1],
+    ]);
+    expect(placeShape(f, { kind: "disc", r: 1 }, [0.66, 0], 10, "d0")).toEqual([0.6, 0]);
+    // counted in its own way, the aim itself is refused, and the rounded place is given as it is
+    expect(placeShape(f, { kind: "disc", r: 1 }, [0.66, 0], 10)).toEqual([0.7, 0]);
+  });
+});
+
+describe("placeLine", () => {
+  it("rounds both ends, and moves a line rounding would take into a disc clear of it, level", () => {
+    expect(placeLine(null, [1.2345, 6.789], [-3.21, 0.049], "ray", 10)).toEqual([
+      [1.2, 6.8],
+      [-3.2, 0],
+    ]);
+    const f = frame([["d0", 0, 0, 1.02]]);
+    const [p1, p2] = placeLine(f, [-5.01, 1.04], [5.04, 1.04], "segment", 10);
+    expect([p1, p2]).toEqual([
+      [-5, 1.1],
+      [5.1, 1.1],
+    ]);
+    expect(lineBlocker(f, [-5, 1], [5, 1], "segment")).toEqual({ kind: "body", id: "d0" });
+    expect(lineBlocker(f, p1, p2, "segment")).toBeNull();
+    // a ray pointing away from the disc does not reach it; the line through the same points does
+    expect(lineBlocker(f, [3, 0], [4, 0], "ray")).toBeNull();
+    expect(lineBlocker(f, [3, 0], [4, 0], "line")).toEqual({ kind: "body", id: "d0" });
+  });
+});
+
+describe("pointerVelocity", () => {
+  it("rounds each component to what one pixel of the drag changes in it", () => {
+    // a drag at 10 px per unit, 2 per unit (the arrow's half second): a pixel is 0.2, step 0.1
+    expect(pointerVelocity(1.234, 5.678, 2, 10)).toEqual([2.5, 11.4]);
+    // a cue (4 per unit) at 500 px per unit: a pixel is 0.008, step 0.001
+    expect(pointerVelocity(-0.33712345, 0.2131, 4, 500)).toEqual([-1.348, 0.852]);
+  });
+});
