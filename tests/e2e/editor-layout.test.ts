@@ -2,10 +2,11 @@
  * End-to-end, in Debian's Chromium: the page at the edges of window sizes. On a wide window
  * (1920 x 1080, 2560 x 1440) every panel keeps a panel's width: the Speed panel once stretched
  * 650 px and more across the time bar, its buttons at one end; only the Time panel, whose slider
- * gains from it, takes the rest of the line. On a phone on its side (844 x 390, 740 x 360) the
- * page fits the window and never scrolls: the canvas shrinks, the time bar stays in view and the
- * side panels scroll inside their column (the page once scrolled to 1,584 px, the time bar half
- * below the fold).
+ * gains from it, takes the rest of the line. On a phone on its side (844 x 390, 740 x 360, 667 x 375)
+ * the page fits the window and never scrolls, nor does the stage inside itself: the canvas shrinks,
+ * the time bar stays in view and the side panels scroll inside their column (the page once scrolled
+ * to 1,584 px, the time bar half below the fold; at 667 x 375 the stage scrolled 32 px inside itself,
+ * its canvas 96 px high).
  */
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -54,6 +55,11 @@ function inView(name: string): Promise<boolean> {
   });
 }
 
+/** The stage's (toolbar, canvas, time bar) scroll height and client height. */
+function stageScroll(): Promise<[number, number]> {
+  return page.locator(".stage").evaluate((el) => [el.scrollHeight, el.clientHeight]);
+}
+
 /** The page's scroll sizes and client sizes ([scrollWidth, scrollHeight], [clientWidth, clientHeight]). */
 function pageScroll(): Promise<[number[], number[]]> {
   return page.evaluate(() => {
@@ -100,11 +106,12 @@ describe("wide windows", () => {
 });
 
 describe("a phone on its side", () => {
-  it("the page fits the window: the canvas shrinks, the time bar is in view, the side panels scroll inside their column", async () => {
+  it("the page fits the window, the stage without scrolling inside itself: the canvas shrinks, the time bar is in view, the side panels scroll inside their column", async () => {
     try {
       for (const [width, height] of [
         [844, 390],
         [740, 360],
+        [667, 375],
       ] as const) {
         await page.setViewportSize({ width, height });
         const at = `${width} x ${height}`;
@@ -112,9 +119,18 @@ describe("a phone on its side", () => {
           [width, height],
           [width, height],
         ]);
+        const [scrollHeight, clientHeight] = await stageScroll();
+        expect(scrollHeight, at).toBeLessThanOrEqual(clientHeight);
         const canvas = (await page.getByTestId("scene-canvas").boundingBox())!;
-        expect(canvas.height, at).toBeGreaterThanOrEqual(120);
+        expect(canvas.height, at).toBeGreaterThanOrEqual(150);
         expect(canvas.width, at).toBeGreaterThanOrEqual(400);
+        // zoomed, the Time panel says which part of the history it shows: still no inner scroll
+        await page.getByRole("button", { name: "Zoom in", exact: true }).click();
+        await page.getByLabel("Time range shown").waitFor();
+        const [zoomedScroll, zoomedClient] = await stageScroll();
+        expect(zoomedScroll, `${at}, zoomed`).toBeLessThanOrEqual(zoomedClient);
+        expect((await page.getByTestId("scene-canvas").boundingBox())!.height).toBeGreaterThanOrEqual(120);
+        await page.getByRole("button", { name: "Whole history", exact: true }).click();
         const slider = (await page.getByRole("slider", { name: "Time" }).boundingBox())!;
         expect(slider.y + slider.height, at).toBeLessThanOrEqual(height);
         for (const name of ["Play", "Next event", "Previous event", "Undo", "Fit"])
