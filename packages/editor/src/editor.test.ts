@@ -45,14 +45,17 @@ describe("Editor over the worker protocol", () => {
     await h.editor.undo();
     await settled(h.client);
     expect(await h.client.nextEvent(0)).toBe(1);
+    // the striker was the last body added at t = 0: the edit there changed its addBody (doc/mergeEdit.ts)
     expect(h.editor.ui.getState().message).toEqual({
-      text: 'Undone: update body "striker" at t = 0 s.',
+      text: 'Undone: the change of v in add body "striker" at t = 0 s.',
       tone: "info",
     });
     await h.editor.redo();
     await settled(h.client);
     expect(await h.client.nextEvent(0)).toBe(0.5);
-    expect(h.editor.ui.getState().message?.text).toBe('Redone: update body "striker" at t = 0 s.');
+    expect(h.editor.ui.getState().message?.text).toBe(
+      'Redone: the change of v in add body "striker" at t = 0 s.',
+    );
   });
 
   it("an undo asked while an edit is still being applied waits for it and undoes it (redo brings it back)", async () => {

@@ -6,7 +6,9 @@
  * checked), EditorTime (editorTime.ts: the current time, go to, event steps, play and speed) and,
  * here, the edits at the current time: every edit is an
  * action stamped with the current time (add, move, strike, update, delete, clear), and the removal
- * of one action of any time (an Event-log entry's). Methods that can fail resolve to the engine's
+ * of one action of any time (an Event-log entry's). An edit of an object (move, velocity, update,
+ * globals) right after an action of that object at the same time is merged into it
+ * (doc/mergeEdit.ts): x, then y, then r of a body at t = 2 are one action, still three undo steps. Methods that can fail resolve to the engine's
  * message (null on success) and show it in the UI.
  */
 
@@ -77,11 +79,11 @@ export class Editor extends EditorTime {
   }
 
   moveBody(id: string, x: number, y: number): Promise<string | null> {
-    return this.edit([this.stamp({ time: this.now(), type: "updateBody", id, x, y })]);
+    return this.edit([this.stamp({ time: this.now(), type: "updateBody", id, x, y })], true);
   }
 
   giveVelocity(id: string, v: Vec2): Promise<string | null> {
-    return this.edit([this.stamp({ time: this.now(), type: "giveVelocity", id, v })]);
+    return this.edit([this.stamp({ time: this.now(), type: "giveVelocity", id, v })], true);
   }
 
   /**
@@ -100,19 +102,19 @@ export class Editor extends EditorTime {
   }
 
   updateBody(id: string, patch: { x?: number; y?: number; v?: Vec2; r?: number; m?: number; mu?: number }) {
-    return this.edit([this.stamp({ time: this.now(), type: "updateBody", id, ...patch })]);
+    return this.edit([this.stamp({ time: this.now(), type: "updateBody", id, ...patch })], true);
   }
 
   updateLine(id: string, patch: { p1?: Vec2; p2?: Vec2; kind?: "line" | "ray" | "segment" }) {
-    return this.edit([this.stamp({ time: this.now(), type: "updateLine", id, ...patch })]);
+    return this.edit([this.stamp({ time: this.now(), type: "updateLine", id, ...patch })], true);
   }
 
   updatePoint(id: string, p: Vec2) {
-    return this.edit([this.stamp({ time: this.now(), type: "updatePoint", id, p })]);
+    return this.edit([this.stamp({ time: this.now(), type: "updatePoint", id, p })], true);
   }
 
   setGlobal(patch: { g?: number; gravity?: Vec2 }) {
-    return this.edit([this.stamp({ time: this.now(), type: "setGlobal", ...patch })]);
+    return this.edit([this.stamp({ time: this.now(), type: "setGlobal", ...patch })], true);
   }
 
   /** Removes the selected body, line or point at the current time. */

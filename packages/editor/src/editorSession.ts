@@ -172,15 +172,19 @@ export class EditorSession extends EditorCompute {
     return null;
   }
 
-  /** Applies edits as one undo step; on error nothing changes and the message is returned. */
-  async edit(actions: Action[]): Promise<string | null> {
+  /**
+   * Applies edits as one undo step; on error nothing changes and the message is returned. `merge`:
+   * an edit of the object the action right before its place edits at the same time is merged into
+   * that action (doc/mergeEdit.ts); its undo step still restores the scene before this edit.
+   */
+  async edit(actions: Action[], merge = false): Promise<string | null> {
     const err = await this.changes.ticketed(async (ticket) => {
       const before = this.doc;
       const behind = this.notComputedYet(actions);
       if (behind !== null) return this.fail(behind);
       try {
         this.unconfirmed = before;
-        const applied = this.client.apply(actions);
+        const applied = this.client.apply(actions, merge);
         this.takeBackIfUndone(ticket);
         await applied;
       } catch (e) {

@@ -47,7 +47,8 @@ describe("canvas gestures", () => {
     expect(g.overlay).toEqual({ kind: "disc", x: 5, y: 0, r: 1 });
     g.up([450, 300]);
     await settled(client);
-    expect(editor.doc.actions.at(-1)).toMatchObject({ type: "updateBody", id: "a", x: 5, y: 0 });
+    // moved at the instant it was added: its addBody (doc/mergeEdit.ts)
+    expect(editor.doc.actions).toMatchObject([{ type: "addBody", id: "a", x: 5, y: 0 }]);
     expect(editor.history.getState().past.length).toBe(1);
   });
 
@@ -66,7 +67,7 @@ describe("canvas gestures", () => {
     g.up([400, 250]);
     expect(editor.ui.getState().selection).toEqual({ kind: "body", id: "a" });
     await settled(client);
-    expect(editor.doc.actions.at(-1)).toMatchObject({ type: "giveVelocity", id: "a" });
+    expect(editor.doc.actions).toMatchObject([{ type: "addBody", id: "a", x: 5, v: [0, 10] }]);
     // a drag cancelled selects nothing
     editor.ui.setState({ selection: other, tool: "move" });
     drag(g, CENTRE, [500, 300]);

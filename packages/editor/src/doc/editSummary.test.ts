@@ -38,6 +38,25 @@ describe("summarizeEdit", () => {
     );
   });
 
+  it("an edit merged into the action before it is said as the fields it changed in that action", () => {
+    const x: Action = { time: 2, type: "updateBody", id: "a", x: 3 };
+    expect(summarizeEdit(scene([a, x]), scene([a, { ...x, y: 4, r: 2 }]))).toBe(
+      'the change of y, r in update body "a" at t = 2 s',
+    );
+    expect(summarizeEdit(scene([a]), scene([{ ...a, x: 5 }]))).toBe(
+      'the change of x in add body "a" at t = 0 s',
+    );
+    // a velocity given, then a place: the giveVelocity became an updateBody
+    expect(summarizeEdit(scene([a, kick]), scene([a, { ...kick, type: "updateBody", x: 1 }]))).toBe(
+      'the change of x in update body "a" at t = 4.25 s',
+    );
+    // another object's action, or another time, is no such change
+    expect(summarizeEdit(scene([a, x]), scene([a, { ...x, id: "b" }]))).toBe('the rename of "a" to "b"');
+    expect(summarizeEdit(scene([a, x]), scene([a, { ...x, time: 3 }]))).toBe(
+      "a change of 2 actions, the earliest at t = 2 s",
+    );
+  });
+
   it("says when only the globals changed, or nothing did", () => {
     expect(summarizeEdit(scene([a]), scene([a], 1))).toBe("a change of the scene's g or gravity");
     expect(summarizeEdit(scene([a]), scene([a]))).toBe("a change that left the actions as they were");

@@ -1,7 +1,9 @@
 /**
  * summarizeEdit(before, after): one line saying what an edit changed, for the message shown after
  * Undo and Redo (an audit found they said nothing, and undoing an edit at a later time showed no
- * change at all). Actions are compared by content, as multisets (actionDiff.ts). Pure.
+ * change at all). Actions are compared by content, as multisets (actionDiff.ts). An edit merged
+ * into the action before it (doc/mergeEdit.ts: one action of the same object at the same time
+ * replaced by another) is said as the fields it changed in that action. Pure.
  */
 import type { Action, SceneFile } from "../engineTypes";
 import { actionKey as key, actionsMinus as minus } from "./actionDiff";
@@ -27,11 +29,35 @@ function renameOf(added: Action[], removed: Action[]): string | null {
   return `the rename of ${JSON.stringify(from[0])} to ${JSON.stringify(to[0])}`;
 }
 
+/**
+ * "the change of x, y in update body "a" at t = 2 s" when `to` replaced `from`, an action of the
+ * same object at the same time (a merged edit, or its undo), else null.
+ */
+function changeOf(from: Action, to: Action): string | null {
+  const id = (a: Action) => ("id" in a ? a.id : null);
+  if (from.time !== to.time || id(from) !== id(to) || objectOf(from) !== objectOf(to)) return null;
+  const a = from as unknown as Record<string, unknown>;
+  const b = to as unknown as Record<string, unknown>;
+  const fields = [...new Set([...Object.keys(b), ...Object.keys(a)])].filter(
+    (k) => k !== "type" && k !== "time" && k !== "id" && JSON.stringify(a[k]) !== JSON.stringify(b[k]),
+  );
+  if (fields.length === 0) return null;
+  return `the change of ${fields.join(", ")} in ${at(to)}`;
+}
+
+/** The kind of object an action edits ("body", "line", "point", "globals"). */
+function objectOf(a: Action): string {
+  if (a.type === "setGlobal") return "globals";
+  return /Body|Velocity/.test(a.type) ? "body" : /Line/.test(a.type) ? "line" : "point";
+}
+
 export function summarizeEdit(before: SceneFile, after: SceneFile): string {
   const added = minus(after.actions, before.actions);
   const removed = minus(before.actions, after.actions);
   if (added.length === 1 && removed.length === 0) return at(added[0]!);
   if (added.length === 0 && removed.length === 1) return `the removal of ${at(removed[0]!)}`;
+  const change = added.length === 1 && removed.length === 1 ? changeOf(removed[0]!, added[0]!) : null;
+  if (change !== null) return change;
   const rename = renameOf(added, removed);
   if (rename !== null) return rename;
   const changed = [...added, ...removed];

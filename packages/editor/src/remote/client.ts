@@ -139,8 +139,9 @@ export class TimelineClient {
     if (keepTo === undefined) return this.request({ op: "load", scene });
     return this.request(check ? { op: "load", scene, keepTo, check } : { op: "load", scene, keepTo });
   }
-  apply(actions: Action[]): Promise<void> {
-    return this.request({ op: "apply", actions });
+  /** Applies edits; `merge`: each merges into the action of its object right before it at its time (protocol.ts). */
+  apply(actions: Action[], merge = false): Promise<void> {
+    return this.request(merge ? { op: "apply", actions, merge } : { op: "apply", actions });
   }
   /**
    * Computes further from the horizon; `restore`: it brings back history the user had; `from`: the

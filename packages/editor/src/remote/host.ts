@@ -7,6 +7,7 @@
  * with the engine's message in `info.stopped`, the history computed so far kept. An edit in the past,
  * or a rewrite of the scene, is answered once its later actions are checked (pendingEdit.ts).
  */
+import { mergedEdit } from "../doc/mergeEdit";
 import type { Action, PathPiece, SceneFile } from "../engineTypes";
 import { errorInfo } from "./errors";
 import { findEventDetail, stepEventDetail } from "./eventDetail";
@@ -88,7 +89,7 @@ export class TimelineHost extends HostCompute {
         return null;
       }
       case "apply":
-        return this.applyAll(r.actions, r.id);
+        return this.applyAll(r.actions, r.id, r.merge === true);
       case "compute":
         this.startJob(
           r.from === undefined ? { until: r.until } : { until: r.until, from: r.from },
@@ -179,9 +180,10 @@ export class TimelineHost extends HostCompute {
    * Applies an edit. An edit in the past recomputes only up to its own time (checkLater: false) and
    * the rest in slices, with progress and Cancel: an edit before a later action at t = 100 of a
    * 20,000-disc scene blocked the worker for 3.5 s while the engine checked the later actions. The
-   * reply then waits until the recomputation has passed them (PendingEdit).
+   * reply then waits until the recomputation has passed them (PendingEdit). With `merge`, an edit
+   * that merges into the action before it (doc/mergeEdit.ts) takes that action's place (mergeInto).
    */
-  private applyAll(actions: Action[], id: number): null | typeof DEFERRED {
+  private applyAll(actions: Action[], id: number, merge = false): null | typeof DEFERRED {
     if (this.pending.edit) throw new Error("an edit is still being checked: wait for it");
     if (actions.length === 0) return null; // nothing changes (Math.min of no times is Infinity)
     const before = this.tl.actions.slice();
@@ -189,15 +191,17 @@ export class TimelineHost extends HostCompute {
     // being brought back (a second quick edit must not cut it to the part recomputed so far).
     const horizon = Math.max(this.tl.horizon, restoreTarget(this.job));
     this.job = null;
-    let applied = 0;
+    let changed = false;
     this.series.cut(Math.min(...actions.map((a) => a.time)));
     try {
       for (const a of actions) {
+        const merged = merge ? mergedEdit(this.tl.actions, a) : null;
         this.tl.apply(a, { keepHorizon: false, checkLater: false });
-        applied++;
+        changed = true;
+        if (merged !== null) this.mergeInto(merged.index, merged.action);
       }
     } catch (e) {
-      if (applied > 0) {
+      if (changed) {
         // Undo the part that was applied: rebuild the old list and recompute the old horizon.
         this.tl.setActions(before);
         this.changed(true);
@@ -221,5 +225,18 @@ export class TimelineHost extends HostCompute {
     }
     if (this.tl.horizon < horizon) this.restoreTo(horizon);
     return null;
+  }
+
+  /**
+   * After the edit that merges into actions[index] was applied (checked as any edit, right after
+   * it): the two replaced by `action`, both merged. The state after their instant is the same
+   * (doc/mergeEdit.ts); the timeline, computing lazily, goes back to its keyframe before them, and
+   * the reply waits until the history is computed past them again (a PendingEdit, as for an edit
+   * in the past).
+   */
+  private mergeInto(index: number, action: Action): void {
+    const list = this.tl.actions.slice();
+    list.splice(index, 2, action);
+    this.tl.setActions(list);
   }
 }

@@ -125,7 +125,12 @@ export type Request =
    * taken back, the previous one kept as it was.
    */
   | { op: "load"; scene: SceneFile; keepTo?: number; check?: boolean }
-  | { op: "apply"; actions: Action[] }
+  /**
+   * Applies edits at their times. `merge`: an edit of the object the action right before its place
+   * edits at the same time (doc/mergeEdit.ts) replaces that action with both merged, rather than
+   * adding one of its own.
+   */
+  | { op: "apply"; actions: Action[]; merge?: boolean }
   /**
    * `restore`: the computation brings back history the user had (see ComputeStatus.restore).
    * `from`: `until.time` counts from this time, not from the horizon (ComputeAsk).

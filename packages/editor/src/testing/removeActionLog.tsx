@@ -52,7 +52,8 @@ export async function twoVelocities() {
   return { h, log, velocities };
 }
 
-/** Two identical actions (update body "a" at t = 0.5, as editing a's vx then vy there makes). */
+/** Two identical actions (update body "a" at t = 0.5, as editing a's vx then vy there made before
+ *  such edits merged into one action, doc/mergeEdit.ts: a scene saved then). */
 export async function twoUpdates() {
   const { h, log } = await logOf(
     [
