@@ -6,6 +6,8 @@ import { describe, expect, it } from "vitest";
 import type { Action, SceneFile } from "./engineTypes";
 import { F_R, F_X, F_Y, FRAME_STRIDE } from "./remote/protocol";
 import { settled, testEditor } from "./testing/harness";
+import { boxScene } from "./testing/scenes";
+import { checking, slowEditorAt } from "./testing/sceneWatch";
 
 const addA: Action = { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 };
 const addB: Action = { time: 0, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 1, v: [-1, 0] };
@@ -122,5 +124,36 @@ describe("edits of one object at one instant", () => {
     expect(err).toMatch(/actions\[3\] is the action at t = 5 s: update body "b"/);
     await settled(client);
     expect(editor.doc).toEqual(before);
+  });
+
+  it("Undo while a merged edit is checked takes back that edit only: the action before it is as it was", async () => {
+    // discs bouncing in a box, computed to t = 40, an action at t = 30: the check of an edit at
+    // t = 10 lasts many rounds of the slow host
+    const addE: Action = { time: 30, type: "addBody", id: "e", x: 50, y: 50, r: 1, m: 1 };
+    const h = await slowEditorAt(boxScene([addE]), 40, 10);
+    expect(await h.editor.giveVelocity("b", [0, 1])).toBeNull();
+    await settled(h.client);
+    const first = h.editor.doc;
+    expect(first.actions.filter((a) => a.time === 10)).toEqual([
+      { time: 10, type: "giveVelocity", id: "b", v: [0, 1] },
+    ]);
+    const seen = checking(h);
+    const edit = h.editor.updateBody("b", { x: 20 });
+    await seen;
+    // the host's scene holds the merged action while it is checked
+    expect(h.client.getSnapshot().doc!.actions.filter((a) => a.time === 10)).toEqual([
+      { time: 10, type: "updateBody", id: "b", v: [0, 1], x: 20 },
+    ]);
+    const undone = h.editor.undo();
+    expect(await edit).not.toBeNull(); // taken back
+    await undone;
+    await settled(h.client);
+    expect(h.editor.doc.actions).toEqual(first.actions);
+    expect(h.editor.history.getState().past).toHaveLength(1);
+    await h.editor.redo();
+    await settled(h.client);
+    expect(h.editor.doc.actions.filter((a) => a.time === 10)).toEqual([
+      { time: 10, type: "updateBody", id: "b", v: [0, 1], x: 20 },
+    ]);
   });
 });
