@@ -376,6 +376,32 @@ export const GRID_LEVEL_GAIN = 0.65;
 export const GRID_CELL_VISIT_COST = 0.1;
 
 /**
+ * The grid for scenes of many obstacles (segments and points) and few bodies (sim/broadPhase.ts,
+ * sim/gridCost.ts `eventCost`): the cost of one collision is estimated, in pair tests, for the
+ * layout sized by the bodies alone (a single cell below GRID_MIN_BODIES) and for cells sized to
+ * minimise it over the box holding bodies and obstacles; the second is taken only when it costs at
+ * most GRID_OBSTACLE_GAIN of the first, so scenes the body layout suits (Galperin's billiard: 2
+ * discs and a line, the gases in a box of 4 walls) keep it. The constants below calibrate the
+ * estimate; only speed depends on them, never a result. Measured (hand runs, noisy 2-core host, µs
+ * per event, before and after): 8 discs in a maze of 1,000 segments 123 and ~3, 10,000 segments
+ * 1,230 and ~3; 5 balls among 5,000 pegs 476 and ~4; see docs/benchmarks.md for the row.
+ */
+export const GRID_OBSTACLE_GAIN = 0.7;
+/** Fixed cost of a prediction in pair tests (the heap update, the stop, the loop set-up): see GRID_OBSTACLE_GAIN. */
+export const GRID_PREDICTION_COST = 8;
+/** Fixed cost of a cell crossing in pair tests (its event, the move, the exit time): see GRID_OBSTACLE_GAIN. */
+export const GRID_CROSSING_COST = 6;
+/** Predictions per collision (2 for a disc pair, 1 against an obstacle): see GRID_OBSTACLE_GAIN. */
+export const GRID_PREDICTIONS_PER_EVENT = 1.5;
+/** A segment's test (its interior and two end points) in pair tests: see GRID_OBSTACLE_GAIN. */
+export const GRID_SEGMENT_TEST_COST = 1.5;
+/**
+ * Most level-0 cells of the obstacle layout per body and obstacle (and at least 16): memory and
+ * rebuild time stay O(bodies + obstacles). See GRID_OBSTACLE_GAIN.
+ */
+export const GRID_CELLS_PER_ITEM = 16;
+
+/**
  * A touching pair (disc–disc, disc–point, disc–line) counts as approaching only when its gap
  * shrinks faster than APPROACH_NOISE times the sum of the magnitudes of the products that make up
  * the rate (physics/timeOfImpact.ts, physics/farContact.ts): 16 roundings, well above the few

@@ -4,12 +4,32 @@
  * touch, and visiting the bodies near a disc for placement checks. It never changes a motion: the
  * grid only decides which pairs are tested, so no result depends on it, only speed.
  */
-import { GRID_CELL_MARGIN, GRID_CELLS_PER_BODY, GRID_MIN_BODIES } from "../tolerances.js";
-import { levelsPay, singleCellLevel } from "./gridCost.js";
+import {
+  GRID_CELL_MARGIN,
+  GRID_CELLS_PER_BODY,
+  GRID_CELLS_PER_ITEM,
+  GRID_MIN_BODIES,
+  GRID_OBSTACLE_GAIN,
+} from "../tolerances.js";
+import { cheapestCell, eventCost, levelsPay, type SceneLoad, singleCellLevel } from "./gridCost.js";
 import { rasterizeSegment } from "./rasterize.js";
 import { SimState } from "./state.js";
 
 const INF = Number.POSITIVE_INFINITY;
+
+/** Most radii the obstacle layout's cost estimate averages over (a rebuild stays O(bodies)). */
+const GRID_RADII_SAMPLE = 256;
+
+/** A grid layout: lower-left corner, level-0 cell side, columns, rows, the radius the side fits. */
+type Layout = [number, number, number, number, number, number];
+
+/** Grow box [minX, minY, maxX, maxY] to hold (x, y). */
+function stretch(box: number[], x: number, y: number): void {
+  box[0] = Math.min(box[0] as number, x);
+  box[1] = Math.min(box[1] as number, y);
+  box[2] = Math.max(box[2] as number, x);
+  box[3] = Math.max(box[3] as number, y);
+}
 
 export class BroadPhase extends SimState {
   /**
@@ -17,69 +37,123 @@ export class BroadPhase extends SimState {
    * about to be added is included; while editing (`slack` > 1) the grid is made roomier so that
    * a stream of additions rebuilds it only O(log n) times; `advance` rebuilds it tight.
    *
-   * Two layouts are weighed (gridCost.ts): level-0 cells that fit the smallest disc, larger discs
-   * in coarser levels, so that one radius-100 disc among thousands of radius 1 makes no cell 100
-   * times too large, and neither do a hundred of them; or cells that fit the largest disc. Either
-   * way cells are at least as large as GRID_CELLS_PER_BODY cells per body allow, and the levels go
-   * up to a single cell, so a disc that grows later has a level without a rebuild.
+   * The body layout (from GRID_MIN_BODIES bodies; a single cell below) weighs two options
+   * (gridCost.ts): level-0 cells that fit the smallest disc, larger discs in coarser levels, so that
+   * one radius-100 disc among thousands of radius 1 makes no cell 100 times too large, and neither
+   * do a hundred of them; or cells that fit the largest disc. Either way cells are at least as large
+   * as GRID_CELLS_PER_BODY cells per body allow, and the levels go up to a single cell, so a disc
+   * that grows later has a level without a rebuild. When segments and points are many, the obstacle
+   * layout covers them too, with the cell side that minimises the estimated cost of a collision
+   * (tests saved against crossings added); it is taken when it costs at most GRID_OBSTACLE_GAIN of
+   * the body layout.
    */
   protected rebuildGrid(ex = Number.NaN, ey = Number.NaN, er = 0, slack = 1): void {
     const b = this.store;
     const extra = !Number.isNaN(ex);
     const radii: number[] = extra ? [er] : [];
-    let minX = extra ? ex : INF;
-    let minY = extra ? ey : INF;
-    let maxX = extra ? ex : -INF;
-    let maxY = extra ? ey : -INF;
+    const box = extra ? [ex, ey, ex, ey] : [INF, INF, -INF, -INF];
     for (let s = 0; s < b.slotCount; s++) {
       if (b.ids[s] === undefined) continue;
-      const x = this.xAt(s, this.now);
-      const y = this.yAt(s, this.now);
       radii.push(b.r[s] as number);
-      minX = Math.min(minX, x);
-      maxX = Math.max(maxX, x);
-      minY = Math.min(minY, y);
-      maxY = Math.max(maxY, y);
+      stretch(box, this.xAt(s, this.now), this.yAt(s, this.now));
     }
     const n = radii.length;
     this.gridBodies = n;
     this.grid.reserve(b.capacity);
     this.heap.reserve(b.capacity);
-    if (n < GRID_MIN_BODIES || !this.opt.broadPhase) {
-      this.grid.reset(0, 0, 1, 1, 1);
-    } else {
-      let minR = INF;
-      let maxR = 0;
-      for (const r of radii) {
-        minR = Math.min(minR, r);
-        maxR = Math.max(maxR, r);
-      }
-      const layout = (r: number): [number, number, number, number, number] => {
-        let w = 2 * r * slack * GRID_CELL_MARGIN;
-        // Leave room around the bodies so that edits nearby do not force a rebuild.
-        const padX = slack > 1 ? Math.max(0.5 * slack * (maxX - minX), 2 * w) : 2 * w;
-        const padY = slack > 1 ? Math.max(0.5 * slack * (maxY - minY), 2 * w) : 2 * w;
-        const width = maxX - minX + 2 * padX;
-        const height = maxY - minY + 2 * padY;
-        const maxCells = Math.max(16, GRID_CELLS_PER_BODY * n);
-        if ((width / w) * (height / w) > maxCells) w = Math.sqrt((width * height) / maxCells);
-        const nx = Math.max(1, Math.min(maxCells, Math.ceil(width / w)));
-        const ny = Math.max(1, Math.min(maxCells, Math.ceil(height / w)));
-        return [minX - padX, minY - padY, w, nx, ny];
-      };
-      const one = layout(maxR);
-      const fine = layout(minR);
-      const area = one[3] * one[2] * (one[4] * one[2]);
-      const top = singleCellLevel(fine[3], fine[4]);
-      const [ox, oy, w, nx, ny] = levelsPay(radii, area, fine[2], one[2], top) ? fine : one;
-      this.grid.reset(ox, oy, w, nx, ny, w === one[2] ? maxR : minR);
-    }
+    if (n === 0 || !this.opt.broadPhase) this.grid.reset(0, 0, 1, 1, 1);
+    else this.resetLayout(radii, box, slack);
     for (let s = 0; s < b.slotCount; s++) {
       if (b.ids[s] === undefined) continue;
       this.placeInGrid(s, this.xAt(s, this.now), this.yAt(s, this.now));
     }
     this.rasterizeObstacles();
     this.dirty = true;
+  }
+
+  /** Reset the grid to the cheaper of the body layout and the obstacle layout (see rebuildGrid). */
+  private resetLayout(radii: number[], box: number[], slack: number): void {
+    let minR = INF;
+    let maxR = 0;
+    for (const r of radii) {
+      minR = Math.min(minR, r);
+      maxR = Math.max(maxR, r);
+    }
+    const n = radii.length;
+    // Cells of side at least 2 r (times slack and margin) over the box padded (roomier while
+    // editing), at most maxCells of them.
+    const layout = (bx: number[], r: number, maxCells: number, wAtLeast = 0): Layout => {
+      let w = Math.max(2 * r * slack * GRID_CELL_MARGIN, wAtLeast);
+      const padX = slack > 1 ? Math.max(0.5 * slack * ((bx[2] as number) - (bx[0] as number)), 2 * w) : 2 * w;
+      const padY = slack > 1 ? Math.max(0.5 * slack * ((bx[3] as number) - (bx[1] as number)), 2 * w) : 2 * w;
+      const width = (bx[2] as number) - (bx[0] as number) + 2 * padX;
+      const height = (bx[3] as number) - (bx[1] as number) + 2 * padY;
+      if ((width / w) * (height / w) > maxCells) w = Math.sqrt((width * height) / maxCells);
+      const nx = Math.max(1, Math.min(maxCells, Math.ceil(width / w)));
+      const ny = Math.max(1, Math.min(maxCells, Math.ceil(height / w)));
+      return [(bx[0] as number) - padX, (bx[1] as number) - padY, w, nx, ny, r];
+    };
+    let body: Layout = [0, 0, 1, 1, 1, 0];
+    if (n >= GRID_MIN_BODIES) {
+      const maxCells = Math.max(16, GRID_CELLS_PER_BODY * n);
+      const one = layout(box, maxR, maxCells);
+      const fine = layout(box, minR, maxCells);
+      const area = one[3] * one[2] * (one[4] * one[2]);
+      const top = singleCellLevel(fine[3], fine[4]);
+      body = levelsPay(radii, area, fine[2], one[2], top) ? fine : one;
+      // Level 0 fits the largest disc whenever its side is the one sized for it.
+      if (body[2] === one[2]) body[5] = maxR;
+    }
+    const load = this.obstacleLoad(radii, box);
+    if (load !== undefined) {
+      const [all, scene] = load;
+      const single = body[3] === 1 && body[4] === 1;
+      const bodyCost = eventCost(scene, single ? INF : body[2], singleCellLevel(body[3], body[4]));
+      const maxCells = Math.max(16, GRID_CELLS_PER_ITEM * (n + scene.segments + scene.points));
+      // Cells at least as large as the smallest or the largest disc needs: the cheaper.
+      let best: Layout | undefined;
+      let bestCost = INF;
+      for (const r of minR < maxR ? [minR, maxR] : [maxR]) {
+        const wide = layout(all, r, maxCells);
+        const { w, cost } = cheapestCell(scene, wide[3] * wide[2], wide[4] * wide[2], wide[2], maxCells);
+        if (cost < bestCost) {
+          best = layout(all, r, maxCells, w);
+          bestCost = cost;
+        }
+      }
+      if (best !== undefined && bestCost <= GRID_OBSTACLE_GAIN * bodyCost) body = best;
+    }
+    const [ox, oy, w, nx, ny, r] = body;
+    this.grid.reset(ox, oy, w, nx, ny, r);
+  }
+
+  /**
+   * The box of bodies and obstacles (segments and points; lines and rays are global) and what the
+   * cost model needs of them, or undefined when there is no segment or point.
+   */
+  private obstacleLoad(radii: number[], bodyBox: number[]): [number[], SceneLoad] | undefined {
+    const all = bodyBox.slice();
+    let segments = 0;
+    let segmentLength = 0;
+    for (const line of this.lineList) {
+      if (line.kind !== "segment") continue;
+      segments++;
+      segmentLength += Math.hypot(line.x2 - line.x1, line.y2 - line.y1);
+      stretch(all, line.x1, line.y1);
+      stretch(all, line.x2, line.y2);
+    }
+    for (const p of this.pointList) stretch(all, p.x, p.y);
+    const points = this.pointList.length;
+    if (segments + points === 0) return undefined;
+    // A box at least a few diameters wide each way (bodies and obstacles on one line have no area).
+    let maxR = 0;
+    for (const r of radii) maxR = Math.max(maxR, r);
+    const width = Math.max((all[2] as number) - (all[0] as number), 4 * maxR);
+    const height = Math.max((all[3] as number) - (all[1] as number), 4 * maxR);
+    // The estimate averages over the bodies: an even sample of their radii does as well.
+    const step = Math.ceil(radii.length / GRID_RADII_SAMPLE);
+    const sample = step > 1 ? radii.filter((_, i) => i % step === 0) : radii;
+    return [all, { bodies: radii.length, radii: sample, segments, segmentLength, points, width, height }];
   }
 
   /** Put body s (not in the grid yet), now at (x, y), in its cell at the level that fits it. */

@@ -36,7 +36,11 @@ export function segmentMeetsRect(
   return clip(x1, x2 - x1, rx0 - pad, rx1 + pad) && clip(y1, y2 - y1, ry0 - pad, ry1 + pad);
 }
 
-/** Append (cell, code) pairs for every cell the segment passes through. */
+/**
+ * Append (cell, code) pairs for every cell the segment passes through. Row by row, only the
+ * columns the segment spans within the row (one more each side for rounding) are tested, so a long
+ * diagonal segment costs O(cells it crosses), not O(its bounding box in cells).
+ */
 export function rasterizeSegment(
   grid: Grid,
   x1: number,
@@ -51,8 +55,21 @@ export function rasterizeSegment(
   const r0 = grid.row(Math.min(y1, y2));
   const r1 = grid.row(Math.max(y1, y2));
   const pad = grid.w * GRID_SEGMENT_PAD;
+  const dy = y2 - y1;
   for (let cy = r0; cy <= r1; cy++) {
-    for (let cx = c0; cx <= c1; cx++) {
+    let a = c0;
+    let b = c1;
+    if (dy !== 0 && c0 < c1) {
+      // The segment's x at the row's (padded) bottom and top, clamped to its ends.
+      const [, , ry0, ry1] = grid.cellRect(c0, cy);
+      const t0 = Math.min(1, Math.max(0, (ry0 - pad - y1) / dy));
+      const t1 = Math.min(1, Math.max(0, (ry1 + pad - y1) / dy));
+      const xa = x1 + (x2 - x1) * t0;
+      const xb = x1 + (x2 - x1) * t1;
+      a = Math.max(c0, grid.column(Math.min(xa, xb)) - 1);
+      b = Math.min(c1, grid.column(Math.max(xa, xb)) + 1);
+    }
+    for (let cx = a; cx <= b; cx++) {
       const [rx0, rx1, ry0, ry1] = grid.cellRect(cx, cy);
       if (segmentMeetsRect(x1, y1, x2, y2, rx0, rx1, ry0, ry1, pad)) out.push(cy * grid.nx + cx, code);
     }
