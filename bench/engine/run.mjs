@@ -8,6 +8,8 @@
  * - ablations (ablations.mjs, one process per configuration): each World `optimizations` switch
  *   off in turn, on the scene where it should matter; same events (checked), time ratio off/on.
  * - mixedRadii (mixedRadii.mjs): a gas of 10,000 discs around one disc of radius 1 to 100.
+ * - obstacles (obstacles.mjs): a few discs in mazes of 100 to 10,000 segments, balls through Galton
+ *   boards of 1,000 and 5,000 pegs; with and without the grid.
  * - timeline: stateAt latency and history bytes per event, when the engine exports Timeline.
  * - bulkReads (bulkReads.mjs): every body of 20,000 read as objects and as arrays (BodyArrays).
  */
@@ -19,6 +21,7 @@ import { ablations } from "./ablations.mjs";
 import { bulkReads } from "./bulkReads.mjs";
 import { galperinRun } from "./galperin7.mjs";
 import { mixedRadii } from "./mixedRadii.mjs";
+import { obstacleRows } from "./obstacles.mjs";
 
 import { againstReference } from "./reference.mjs";
 import { scaling } from "./scaling.mjs";
@@ -110,6 +113,7 @@ export async function runEngine(ctx) {
   out.reference = await againstReference(ctx);
   out.ablations = ablations(ctx);
   out.mixedRadii = mixedRadii(ctx);
+  out.obstacles = obstacleRows(ctx);
   out.timeline = timeline(ctx);
   out.bulkReads = await bulkReads(ctx);
   return out;

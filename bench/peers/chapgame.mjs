@@ -9,6 +9,7 @@ import { emptyState, escaped, finalError, kineticEnergy, worstOverlap } from "./
 export function buildWorld(engine, scene, worldOptions = {}) {
   const world = new engine.World({ g: scene.g, gravity: scene.gravity, ...worldOptions });
   for (const w of scene.walls) world.addLine(w.id, w.p1, w.p2, w.kind);
+  for (const p of scene.points ?? []) world.addPoint(p.id, p.p);
   for (const b of scene.bodies) {
     world.addBody(b.id, { x: b.x, y: b.y, r: b.r, m: b.m, mu: b.mu, vx: b.vx, vy: b.vy });
   }

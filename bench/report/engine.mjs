@@ -1,13 +1,15 @@
 /**
  * Report section 3, the engine: dilute-gas scaling against N (table, targets, the stripped loops'
  * ceilings, scaling.svg), Galperin's billiard at 7 digits, then the optimisation switches
- * (ablations.mjs), the all-pairs reference comparison and the Timeline (timeline.mjs).
+ * (ablations.mjs), mixed radii (mixedRadii.mjs), obstacle-heavy scenes (obstacles.mjs), the
+ * all-pairs reference comparison and the Timeline (timeline.mjs).
  * engineSection(results.engine, out, svgs) appends markdown lines to `out` and SVG texts to `svgs`.
  */
 import { ablationsBlock } from "./ablations.mjs";
 import { bulkReadsBlock } from "./bulkReads.mjs";
 import { galperinTarget, int, ms, numberWord, sig, status, table } from "./format.mjs";
 import { mixedRadiiBlock } from "./mixedRadii.mjs";
+import { obstaclesBlock } from "./obstacles.mjs";
 import { plot } from "./svg.mjs";
 import { timelineBlock } from "./timeline.mjs";
 
@@ -135,6 +137,7 @@ export function engineSection(e, out, svgs) {
   out.push("![scaling](bench/scaling.svg)\n");
   ablationsBlock(e, out);
   mixedRadiiBlock(e, out);
+  obstaclesBlock(e, out);
   const ref = e.reference;
   out.push("### Against the all-pairs reference simulator\n");
   out.push(
