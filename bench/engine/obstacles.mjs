@@ -76,7 +76,7 @@ function measureRow(engine, row, { warmup, batch, runs, offWarmup, offBatch }) {
 
 export function obstacleRows({ quick, engine, log }) {
   const opts = quick
-    ? { warmup: 3000, batch: 10000, runs: 1, offWarmup: 100, offBatch: 300 }
+    ? { warmup: 10000, batch: 20000, runs: 1, offWarmup: 100, offBatch: 300 }
     : { warmup: 10000, batch: 50000, runs: 3, offWarmup: 200, offBatch: 1000 };
   const rows = [];
   for (const row of OBSTACLE_ROWS) {

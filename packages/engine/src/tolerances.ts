@@ -181,8 +181,9 @@ export const GRID_CELL_MARGIN = 1 + 1e-6;
 export const GRID_SEGMENT_PAD = 1e-9;
 
 /**
- * Below this many bodies the broad phase is a single cell: testing every pair costs less than the
- * cell-crossing events a grid would add (Galperin's billiard: 2 bodies, millions of events).
+ * Below this many bodies the layout sized by the bodies is a single cell: testing every pair costs
+ * less than the cell-crossing events a grid would add (Galperin's billiard: 2 bodies, millions of
+ * events). Many segments or points still get cells (the obstacle layout, GRID_OBSTACLE_GAIN).
  */
 export const GRID_MIN_BODIES = 32;
 
@@ -382,9 +383,14 @@ export const GRID_CELL_VISIT_COST = 0.1;
  * minimise it over the box holding bodies and obstacles; the second is taken only when it costs at
  * most GRID_OBSTACLE_GAIN of the first, so scenes the body layout suits (Galperin's billiard: 2
  * discs and a line, the gases in a box of 4 walls) keep it. The constants below calibrate the
- * estimate; only speed depends on them, never a result. Measured (hand runs, noisy 2-core host, µs
- * per event, before and after): 8 discs in a maze of 1,000 segments 123 and ~3, 10,000 segments
- * 1,230 and ~3; 5 balls among 5,000 pegs 476 and ~4; see docs/benchmarks.md for the row.
+ * estimate; only speed depends on them, never a result. Calibrated by hand on a noisy 2-core host
+ * (24 Nov 2026, CPU µs per event, one cell against the layout the estimate picks): 8 discs in a
+ * maze of 9 segments 3.9 and 2.9 (estimate 0.79 of one cell: one cell kept), of 16 segments 4.6
+ * and 3.0 (0.72: one cell kept), of 30 segments 6.6 and 3.3 (0.48); 2 discs among 16 segments 3.2
+ * and 3.5 (0.91: one cell kept, rightly); 1 ball among 40 pegs 8.4 and 5.0 (0.56). The measured
+ * ratio ran from 0.1 below to 0.3 above the estimate, hence the margin. A maze of 10,000 segments
+ * went from ~1,200 to ~3-9 µs per event; the gases in a box of 4 walls (estimate ~1.0) keep the
+ * body layout.
  */
 export const GRID_OBSTACLE_GAIN = 0.7;
 /** Fixed cost of a prediction in pair tests (the heap update, the stop, the loop set-up): see GRID_OBSTACLE_GAIN. */
@@ -393,7 +399,11 @@ export const GRID_PREDICTION_COST = 8;
 export const GRID_CROSSING_COST = 6;
 /** Predictions per collision (2 for a disc pair, 1 against an obstacle): see GRID_OBSTACLE_GAIN. */
 export const GRID_PREDICTIONS_PER_EVENT = 1.5;
-/** A segment's test (its interior and two end points) in pair tests: see GRID_OBSTACLE_GAIN. */
+/**
+ * A segment's test (its interior and two end points) in pair tests (measured: 8 discs among 1,000
+ * segments or 5 balls among 1,000 points, one cell, ~120 and ~100 ns per obstacle per event): see
+ * GRID_OBSTACLE_GAIN.
+ */
 export const GRID_SEGMENT_TEST_COST = 1.5;
 /**
  * Most level-0 cells of the obstacle layout per body and obstacle (and at least 16): memory and
