@@ -138,7 +138,9 @@ export class BroadPhase extends SimState {
     for (const line of this.lineList) {
       if (line.kind !== "segment") continue;
       segments++;
-      segmentLength += Math.hypot(line.x2 - line.x1, line.y2 - line.y1);
+      const dx = line.x2 - line.x1;
+      const dy = line.y2 - line.y1;
+      segmentLength += Math.sqrt(dx * dx + dy * dy);
       stretch(all, line.x1, line.y1);
       stretch(all, line.x2, line.y2);
     }

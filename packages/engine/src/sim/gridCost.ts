@@ -17,7 +17,7 @@ import {
 } from "../tolerances.js";
 
 /** Ratio between the cell sides cheapestCell tries. */
-const GRID_CELL_STEP = 2 ** 0.25;
+const GRID_CELL_STEP = Math.sqrt(Math.SQRT2);
 
 /**
  * Finest level k whose cells (side w0 * 2^k) fit a disc of radius r; `top` (a single cell, which
