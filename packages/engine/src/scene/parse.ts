@@ -8,6 +8,7 @@
  * Timeline.fromScene checks those. Throws SceneError (path + reason). Returns the normalized scene
  * (defaults filled in, actions in file order).
  */
+import { given } from "../sim/refusalText.js";
 import { checkAction } from "./action.js";
 import { SceneError } from "./errors.js";
 import { isObject, nonNegative, onlyKeys, refuse, vec2 } from "./fields.js";
@@ -57,14 +58,17 @@ function where(text: string): string {
 export function checkHeader(raw: Record<string, unknown>): void {
   onlyKeys(raw, ["format", "version", "g", "gravity", "actions", "meta"], "");
   if (raw.format !== "chapgame") throw refuse("format", 'must be "chapgame"', raw.format);
-  if (raw.version !== 1) {
+  const v = raw.version;
+  // Not a number at all ("1", null, missing): say what it must be; `unsupported version "1" (this
+  // reader knows 1)` read as if the reader knew 1 and refused it anyway (audit of session 23).
+  if (typeof v !== "number") throw refuse("version", "must be the number 1", v);
+  if (v !== 1) {
     // A later whole-number version is a file from a newer chapgame: say so (review: the editor
     // showed only "unsupported version 2", which read as a damaged file).
-    const v = raw.version;
-    const newer = typeof v === "number" && Number.isInteger(v) && v > 1;
+    const newer = Number.isInteger(v) && v > 1;
     throw new SceneError(
       "version",
-      `unsupported version ${JSON.stringify(v)} (this reader knows 1)${newer ? ": the file comes from a newer chapgame; open it with that version, or save it there as version 1" : ""}`,
+      `unsupported version ${given(v)} (this reader knows 1)${newer ? ": the file comes from a newer chapgame; open it with that version, or save it there as version 1" : ""}`,
     );
   }
 }

@@ -14,9 +14,9 @@ describe("parseScene refuses, naming the path and the reason", () => {
       "version: unsupported version 2 (this reader knows 1): the file comes from a newer chapgame",
     ],
     [
-      "a version that is no newer one (a string): no such claim",
+      'a version written as a string: it must be the number 1 (it said unsupported version "1" (this reader knows 1))',
       JSON.stringify({ format: "chapgame", version: "1", actions: [] }),
-      'version: unsupported version "1" (this reader knows 1)',
+      'version: must be the number 1 (got the string "1")',
     ],
     ["missing actions", JSON.stringify({ format: "chapgame", version: 1 }), "actions: must be an array"],
     ["negative g", base([], { g: -1 }), "g: must be a non-negative finite number"],

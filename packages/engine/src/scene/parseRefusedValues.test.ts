@@ -41,6 +41,30 @@ describe("parseScene names the value it refuses in the scene's frame too (audit 
       'format: must be "chapgame" (got the string "box2d")',
     ],
     ["no format", JSON.stringify({ version: 1, actions: [] }), 'format: must be "chapgame" (got undefined)'],
+    // a version that is not a number is told to be one, whatever it is (the number 1 or a newer one)
+    [
+      "a version written as a string",
+      JSON.stringify({ format: "chapgame", version: "1", actions: [] }),
+      'version: must be the number 1 (got the string "1")',
+    ],
+    [
+      "a newer version written as a string",
+      JSON.stringify({ format: "chapgame", version: "2", actions: [] }),
+      'version: must be the number 1 (got the string "2")',
+    ],
+    [
+      "no version",
+      JSON.stringify({ format: "chapgame", actions: [] }),
+      "version: must be the number 1 (got undefined)",
+    ],
+    ["a null version", scene({ version: null, actions: [] }), "version: must be the number 1 (got null)"],
+    // a number other than 1: unsupported, and from a newer chapgame only when it is a later whole number
+    [
+      "a fractional version",
+      scene({ version: 1.5, actions: [] }),
+      "version: unsupported version 1.5 (this reader knows 1)",
+    ],
+    ["version 0", scene({ version: 0, actions: [] }), "version: unsupported version 0 (this reader knows 1)"],
     ["an array for the scene", "[1]", "scene: must be a JSON object (got an array of 1)"],
     ["null for the scene", "null", "scene: must be a JSON object (got null)"],
     ["actions as an object", scene({ actions: { 0: {} } }), "actions: must be an array (got an object)"],
@@ -66,4 +90,14 @@ describe("parseScene names the value it refuses in the scene's frame too (audit 
     it(name, () => {
       expect(refused(text).message).toBe(message);
     });
+});
+
+describe("parseScene names a version given as an object's number as it is", () => {
+  it("NaN and Infinity (NaN was written as JSON writes it: null)", () => {
+    const frame = (version: number) => ({ format: "chapgame", version, actions: [] });
+    expect(refused(frame(Number.NaN)).message).toBe("version: unsupported version NaN (this reader knows 1)");
+    expect(refused(frame(Infinity)).message).toBe(
+      "version: unsupported version Infinity (this reader knows 1)",
+    );
+  });
 });
