@@ -2,7 +2,7 @@
  * Field readers for scene validation: each reads one field of a plain object, checks it and returns
  * the normalized value, or throws SceneError naming the field's path and the reason.
  */
-import { given } from "../sim/refusalText.js";
+import { given, unknownField } from "../sim/refusalText.js";
 import { SceneError } from "./errors.js";
 import type { LineKind, Vec2 } from "./types.js";
 
@@ -114,5 +114,5 @@ export function onlyKeys(o: Obj, allowed: readonly string[], path: string): void
 /** "unknown field (known: ...)", with the scene format's spelling of a velocity when that is the slip. */
 function unknownFieldReason(k: string, allowed: readonly string[]): string {
   const hint = (k === "vx" || k === "vy") && allowed.includes("v") ? "; a velocity is v: [vx, vy]" : "";
-  return `unknown field (known: ${allowed.join(", ")}${hint})`;
+  return unknownField(allowed, hint);
 }

@@ -85,11 +85,17 @@ describe("World input objects", () => {
     const w = oneDisc();
     const e = refusal(() => w.addBody("b", { x: 5, y: 0, r: 1, m: 1, vX: 5 } as unknown as BodyInit));
     expect(e.path).toBe("init.vX");
-    expect(e.message).toMatch(/known: x, y, vx, vy, r, m, mu/);
+    // worded as a scene file's unknown key is (it said "is not a field here": audit of session 23)
+    expect(e.reason).toBe("unknown field (known: x, y, vx, vy, r, m, mu)");
+    expect(e.message).toBe("init.vX: unknown field (known: x, y, vx, vy, r, m, mu)");
     expect(w.hasBody("b")).toBe(false);
     expect(refusal(() => w.updateBody("a", { vX: 2 } as unknown as BodyInit)).path).toBe("patch.vX");
     expect(w.body("a").vx).toBe(1);
-    expect(refusal(() => new World({ grav: 1 } as unknown as { g: number })).path).toBe("options.grav");
+    const grav = refusal(() => new World({ grav: 1 } as unknown as { g: number }));
+    expect([grav.path, grav.reason]).toEqual([
+      "options.grav",
+      "unknown field (known: g, gravity, time, optimizations)",
+    ]);
     expect(
       refusal(() => new World({ optimizations: { broadphase: false } as unknown as { broadPhase: boolean } }))
         .path,
@@ -97,9 +103,11 @@ describe("World input objects", () => {
     expect(refusal(() => w.setGlobal({ gravity: [0, 0], G: 1 } as unknown as { g: number })).path).toBe(
       "patch.G",
     );
-    expect(refusal(() => w.advance({ until: 5 } as unknown as { untilTime: number })).path).toBe(
+    const until = refusal(() => w.advance({ until: 5 } as unknown as { untilTime: number }));
+    expect([until.path, until.reason]).toEqual([
       "limits.until",
-    );
+      "unknown field (known: untilTime, maxEvents)",
+    ]);
     w.addLine("l", [0, 10], [10, 10], "segment");
     expect(refusal(() => w.updateLine("l", { p3: [0, 0] } as unknown as { p1: [number, number] })).path).toBe(
       "patch.p3",

@@ -3,7 +3,9 @@
  * the scene's and the Timeline's SceneError): `given(v)` names the value ("-2", "NaN", "the string
  * \"1\"", "null", "an array of 3", "an object", "a function", "3n"), appended to the reason as " (got …)" (`refused`);
  * `quoteId(id)` writes an id as the messages quote it, in double quotes with JSON escapes
- * (`body "a"`), so that an id with spaces, quotes or nothing printable still reads unambiguously.
+ * (`body "a"`), so that an id with spaces, quotes or nothing printable still reads unambiguously;
+ * `unknownField(known)` is the reason a key no field has is refused with, the same by the World's
+ * options and edits as by a scene file's objects: "unknown field (known: …)".
  */
 import { ChapgameError } from "./errors.js";
 
@@ -25,4 +27,10 @@ export function quoteId(id: string): string {
 /** The World's refusal of value v of field `path`: the reason, and what was given. */
 export function refused(path: string, reason: string, v: unknown): ChapgameError {
   return new ChapgameError(path, `${reason} (got ${given(v)})`);
+}
+
+/** The reason a key that is no field of its object is refused with: "unknown field (known: a, b)",
+ *  then `more` (a hint) inside the parentheses when given. */
+export function unknownField(known: readonly string[], more = ""): string {
+  return `unknown field (known: ${known.join(", ")}${more})`;
 }

@@ -13,7 +13,7 @@ import {
   TIME_MAX,
 } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
-import { given, refused } from "./refusalText.js";
+import { given, refused, unknownField } from "./refusalText.js";
 import type { Vec2 } from "./types.js";
 
 export function requireId(path: string, id: unknown): string {
@@ -184,7 +184,7 @@ export function requireFields(
     throw refused(path, `must be an object with fields ${known.join(", ")}`, v);
   for (const key of Object.keys(v))
     if (!known.includes(key) && !ignored.includes(key))
-      throw new ChapgameError(`${path}.${key}`, `is not a field here (known: ${known.join(", ")})`);
+      throw new ChapgameError(`${path}.${key}`, unknownField(known));
 }
 
 /** The fields of a BodyInit / BodyPatch, and of a BodyState that may be passed back. */
