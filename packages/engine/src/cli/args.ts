@@ -13,9 +13,13 @@
  */
 
 export class UsageError extends Error {
-  constructor(message: string) {
+  /** The arguments do not fit the scene file's contents (a `path --id` no body of it has): the
+   *  message is shown after the file's name, as the errors about its contents are. */
+  readonly aboutScene: boolean;
+  constructor(message: string, aboutScene = false) {
     super(message);
     this.name = "UsageError";
+    this.aboutScene = aboutScene;
   }
 }
 

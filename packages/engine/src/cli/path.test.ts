@@ -53,11 +53,19 @@ describe("path: a body's exact pieces", () => {
     expect(JSON.stringify(JSON.parse(out.stdout), null, 2)).toBe(out.stdout.trimEnd());
   });
 
-  it("path refuses an id no body of the scene has, listing the bodies, before computing", () => {
+  it("path refuses an id no body of the scene has, after the file's name, listing the bodies, before computing", () => {
+    // the file's name first, as the other errors about a file's contents (audit of session 23: it had none)
     const { cli, out } = io({ "rest.json": sceneText(RESTS_AT_5) });
     expect(runCli(["path", "rest.json", "--id", "bal", "--to", "4"], cli)).toBe(2);
     expect(out.stdout).toBe("");
-    expect(out.stderr).toBe('chapgame: --id: no body "bal" in the scene (bodies: ball, rest)\n');
+    expect(out.stderr).toBe('chapgame: rest.json: --id: no body "bal" in the scene (bodies: ball, rest)\n');
+    const none = io({ "-": sceneText([]) });
+    expect(runCli(["path", "-", "--id", "a", "--to", "1"], none.cli)).toBe(2);
+    expect(none.out.stderr).toBe('chapgame: <stdin>: --id: no body "a" in the scene (it adds no body)\n');
+    // an error about the arguments alone names no file
+    const args = io({ "rest.json": sceneText(RESTS_AT_5) });
+    expect(runCli(["path", "rest.json", "--id", "ball", "--from", "5", "--to", "4"], args.cli)).toBe(2);
+    expect(args.out.stderr).toBe("chapgame: --from (5) must not be after --to (4)\n");
   });
 
   it("path of a body the scene adds only after --to prints no piece, exit 0 (it was an internal error, exit 1)", () => {

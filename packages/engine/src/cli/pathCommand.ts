@@ -1,7 +1,8 @@
 /**
  * `path`: body --id's pieces over [--from, --to] (Timeline.path). firstAdded refuses an id no addBody
- * of the scene names (a UsageError, before anything is computed); pathResult gives the pieces, or
- * after an error or an interrupt the pieces up to where the run stopped, with why.
+ * of the scene names (a UsageError about the scene, shown after the file's name, before anything is
+ * computed); pathResult gives the pieces, or after an error or an interrupt the pieces up to where
+ * the run stopped, with why.
  */
 import type { SceneFile } from "../scene/types.js";
 import type { PathPiece } from "../timeline/path.js";
@@ -27,6 +28,7 @@ export function firstAdded(scene: SceneFile, id: string): number {
     known.length <= 10 ? known.join(", ") : `${known.slice(0, 10).join(", ")}, … (${known.length} in all)`;
   throw new UsageError(
     `--id: no body ${JSON.stringify(id)} in the scene (${known.length === 0 ? "it adds no body" : `bodies: ${list}`})`,
+    true, // after the file's name, as the other errors about its contents
   );
 }
 

@@ -127,7 +127,7 @@ function* command(argv: readonly string[], given: CliIO): Generator<void, number
       return 1;
     }
     if (e instanceof UsageError) {
-      io.stderr(`chapgame: ${e.message}\n`);
+      io.stderr(`chapgame: ${e.aboutScene ? file : ""}${e.message}\n`);
       return 2;
     }
     if (e instanceof ChapgameError) {
