@@ -71,9 +71,12 @@ export const USAGE = `Usage:
       "until" (the span it covers) and t0, x0, y0, vx, vy, ax, ay, tStop: over its span the body
       is at x0 + d (vx + ax d / 2), d = min(t, tStop) - t0 (y likewise), and rests from tStop on.
       A piece ends at each collision or stop of the body and at each action that restarts it;
-      spans where the body does not exist give no piece. A run the exact model cannot continue
-      before --to prints the pieces up to where it stopped, with "to" there, "reason": "error"
-      and "error": why, and exits with 2.
+      spans where the body does not exist give no piece. --from T --to T (one time) prints the
+      one point where the body is at T: a single piece with "from" = "until" = T and the motion
+      it follows from T on (as state --at T shows it), or none when it does not exist then.
+      An ID no addBody of the scene names is refused (exit 2) with the scene's bodies listed.
+      A run the exact model cannot continue before --to prints the pieces up to where it
+      stopped, with "to" there, "reason": "error" and "error": why, and exits with 2.
   chapgame check SCENE [--progress]
       Check a scene file whole: every field, and every action against the simulation (ids that
       exist, overlaps with bodies that have moved), computing exactly up to its last action, so it

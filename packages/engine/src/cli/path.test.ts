@@ -93,6 +93,48 @@ describe("path: a body's exact pieces", () => {
     ).toEqual([[10, 12]]);
   });
 
+  it("path --from T --to T prints the one point where the body is at T, as state --at T (it printed no piece)", () => {
+    const files = {
+      "late.json": sceneText([
+        { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [0, 1] },
+        { time: 0, type: "addLine", id: "w", p1: [-5, 3], p2: [5, 3], kind: "line" },
+        { time: 4, type: "removeBody", id: "a" },
+        { time: 10, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 1 },
+      ]),
+    };
+    const point = (id: string, t: string) => {
+      const { cli, out } = io(files);
+      expect(runCli(["path", "late.json", "--id", id, "--from", t, "--to", t], cli)).toBe(0);
+      expect(out.stderr).toBe("");
+      const result = JSON.parse(out.stdout);
+      expect(result).toMatchObject({ id, from: Number(t), to: Number(t) });
+      return result.pieces as {
+        from: number;
+        until: number;
+        t0: number;
+        x0: number;
+        y0: number;
+        vy: number;
+        ay: number;
+      }[];
+    };
+    // a hits the line at t = 2 and turns back: at 2 the motion after the collision
+    for (const t of ["0", "1.5", "2", "3"]) {
+      const pieces = point("a", t);
+      expect(pieces.map((p) => [p.from, p.until, p.vy])).toEqual([
+        [Number(t), Number(t), t === "0" || t === "1.5" ? 1 : -1],
+      ]);
+      const at = io(files);
+      expect(runCli(["state", "late.json", "--at", t], at.cli)).toBe(0);
+      const a = JSON.parse(at.out.stdout).bodies.find((q: { id: string }) => q.id === "a");
+      const p = pieces[0] as (typeof pieces)[number];
+      expect(p.y0 + (Number(t) - p.t0) * (p.vy + 0.5 * p.ay * (Number(t) - p.t0))).toBe(a.y);
+    }
+    expect(point("a", "4")).toEqual([]); // removed at 4
+    expect(point("b", "9")).toEqual([]); // not added yet
+    expect(point("b", "10").map((p) => [p.from, p.until, p.x0, p.y0])).toEqual([[10, 10, 10, 0]]); // added at 10
+  });
+
   it("path meeting a Zeno state before --to prints the pieces up to where it stopped, then exits 2", () => {
     const { cli, out } = io({ "rest.json": sceneText(RESTS_AT_5) });
     expect(runCli(["path", "rest.json", "--id", "ball", "--to", "8"], cli)).toBe(2);

@@ -37,7 +37,8 @@ export type PathCommand = Extract<Command, { command: "path" }>;
 /**
  * The body's pieces over [from, to]: none when the body is first added (at `added`) after `to`, or
  * exactly at `to` without the addition having taken place there (Timeline.path refuses an id the
- * history has not met yet; for the command, a body that does not exist yet has no piece).
+ * history has not met yet; for the command, a body that does not exist yet has no piece). A span
+ * of no length gives Timeline.path's one point (a piece with until = from) when the body exists.
  */
 function piecesUpTo(tl: Timeline, cmd: PathCommand, added: number, to: number): PathPiece[] {
   const exists = added < to || (added === to && tl.stateAt(to).bodies.some((b) => b.id === cmd.id));

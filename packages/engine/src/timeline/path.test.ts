@@ -112,7 +112,7 @@ describe("Timeline.path", () => {
     expect(at(tl.path("b", 2, 4)[0] as PathPiece, 2)).toEqual([50, 0]);
   });
 
-  it("a span [from, to] clips the pieces to it; from = to gives none", () => {
+  it("a span [from, to] clips the pieces to it; from = to gives the one point there (pathPoint.test.ts)", () => {
     const tl = Timeline.fromScene(dilutedGas({ n: 30, packing: 0.1, seed: 7 }), { compute: false });
     tl.prolongTo(10);
     const all = tl.path("d3");
@@ -121,7 +121,10 @@ describe("Timeline.path", () => {
     expect(part[part.length - 1]?.until).toBe(7.25);
     const inside = all.filter((p) => p.until > 2.5 && p.from < 7.25);
     expect(part.map(({ from, until, ...m }) => m)).toEqual(inside.map(({ from, until, ...m }) => m));
-    expect(tl.path("d3", 4, 4)).toEqual([]);
+    const point = tl.path("d3", 4, 4);
+    expect(point.map(({ from, until }) => [from, until])).toEqual([[4, 4]]);
+    const around = all.find((p) => p.from <= 4 && 4 < p.until) as PathPiece;
+    expect(point.map(({ from, until, ...m }) => m)).toEqual([(({ from, until, ...m }) => m)(around)]);
   });
 
   it("Newton's cradle: the chain of collisions at t = 1 gives no pieces of no length", () => {

@@ -11,6 +11,10 @@
  * (updateBody x, y) or removed and added it again. Spans where the body does not exist give no piece.
  * At `to` itself a piece shows the body just before the actions logged at `to` (stateAt(to) shows it
  * after them): a move or an addition at `to` begins no piece, having no length yet.
+ * A span of no length (from = to = T) gives the one point where the body is at T: a single piece
+ * with from = until = T and the motion it follows from T on, after everything logged at T (the
+ * collisions and the actions: stateAt(T)'s numbers at T, bit for bit), or none when the body does
+ * not exist then (not yet added, or removed at T).
  *
  * Cost: one pass over the records from the last keyframe at or before `from` to `to`, touching only
  * the records of that body and the keyframes taken after actions (no other body is replayed).
@@ -31,7 +35,8 @@ import { applyRecord } from "./replay.js";
 export interface PathPiece extends BodyMotion {
   /** Start of the span this motion covers (absolute time). */
   from: number;
-  /** End of that span (absolute time; > from). */
+  /** End of that span (absolute time; > from, except in the one piece of a span of no length,
+   *  from = to, where until = from). */
   until: number;
 }
 
@@ -114,14 +119,17 @@ export function bodyPath(core: TimelineCore, id: string, from: number, to: numbe
     start = Math.max(t, from);
   }
   keyframesAt(rec.length); // (the keyframes after the loop's last record, up to `to`)
+  // a span of no length: the motion everything logged at `to` left (all of it replayed above)
+  if (to === from) return n === null ? out : [pieceOf(table, n, from, to)];
   close(to);
   return out;
 }
 
 /** The pieces of body `id` over [from, to] of a timeline without history: only its current motion
- *  (the span since the last logged entry; the caller checked from >= lastLogged). */
+ *  (the span since the last logged entry; the caller checked lastLogged <= from <= to); a span of
+ *  no length gives that motion too, as one piece from = until. */
 export function headlessBodyPath(core: TimelineCore, id: string, from: number, to: number): PathPiece[] {
   const w = core.world;
-  if (!w.hasBody(id) || !(to > from)) return [];
+  if (!w.hasBody(id)) return [];
   return [{ from, until: to, ...w.motion(id) }];
 }

@@ -100,8 +100,10 @@ export class TimelineReader {
    * ends where the body's motion changed (its collisions and stops, actions that restarted it);
    * spans where the body does not exist give none, and pieces of no length (several events of the
    * body at one instant) are left out; at `to` a piece shows the body before the actions logged at
-   * `to` (stateAt(to) after them). Without history only the current motion, from the last
-   * logged entry on, can be read. A time outside [historyStart, horizon] (or from > to) throws
+   * `to` (stateAt(to) after them). A span of no length (from = to) gives the one point where the
+   * body is at that time: one piece, until = from, with the motion after everything logged there
+   * (stateAt's), or none when the body does not exist then. Without history only the current
+   * motion, from the last logged entry on, can be read. A time outside [historyStart, horizon] (or from > to) throws
    * RangeError naming it, and so does an id no body of this timeline ever had. One pass over the
    * records from `from` to `to` that replays only this body's.
    */
