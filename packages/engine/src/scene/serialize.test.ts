@@ -52,6 +52,32 @@ describe("serializeScene", () => {
     const back = parseScene(serializeScene(s)).actions[0];
     expect(back?.type === "addPoint" && Object.is(back.p[0], -0)).toBe(true);
   });
+  it("takes a file that leaves g and gravity out, as a scene file may, and leaves them out (it required g)", () => {
+    const file = JSON.parse(
+      '{"format": "chapgame", "version": 1, "actions": [{"time": 0, "type": "addBody", "id": "a", "x": 0, "y": 0, "r": 1, "m": "Infinity"}]}',
+    );
+    const text = serializeScene(file);
+    expect(text).toBe(
+      [
+        "{",
+        '  "format": "chapgame",',
+        '  "version": 1,',
+        '  "actions": [',
+        '    { "time": 0, "type": "addBody", "id": "a", "x": 0, "y": 0, "r": 1, "m": "Infinity" }',
+        "  ]",
+        "}",
+        "",
+      ].join("\n"),
+    );
+    expect(parseScene(text)).toEqual(parseScene(file)); // g 9.81 and gravity [0, 0] read back
+    // one of them given: that one is written
+    expect(serializeScene({ ...file, gravity: [0, -1] })).toContain('"version": 1,\n  "gravity": [0, -1],\n');
+    expect(serializeScene({ ...file, g: 0 })).toContain('"version": 1,\n  "g": 0,\n  "actions"');
+    // still checked as parseScene checks them when given
+    expect(() => serializeScene({ ...file, g: -1 })).toThrow(
+      "g: must be a non-negative finite number (got -1)",
+    );
+  });
   it("keeps meta", () => {
     const s = parseScene({ format: "chapgame", version: 1, actions: [], meta: { view: [1, 2] } });
     expect(parseScene(serializeScene(s)).meta).toEqual({ view: [1, 2] });

@@ -2,10 +2,13 @@
  * serializeScene(scene): the scene as pretty JSON text with a stable key order (format, version, g,
  * gravity, actions, meta; in each action: time, type, then its fields in ACTION_FIELDS order, then
  * until), one action per line. Numbers are written so they read back bit-identical; an infinite
- * value (a mass) is written "Infinity". parseScene(serializeScene(s)) deep-equals a parsed s.
- * Every field, the format and version included, is checked first as parseScene checks it (SceneError naming the field: a scene is
- * never written that could not be read back field by field); the scene rules that need the scene's
- * state (ids, overlaps) are parseScene's. Valid actions are written as given (no defaults added).
+ * value (a mass) is written "Infinity". parseScene(serializeScene(s)) deep-equals parseScene(s).
+ * It takes what a scene file holds (a SceneFile, or a file's object as JSON.parse reads it: g and
+ * gravity may be left out, a mass may be "Infinity"). Every field, the format and version included,
+ * is checked first as parseScene checks it (SceneError naming the field: a scene is never written
+ * that could not be read back field by field); the scene rules that need the scene's state (ids,
+ * overlaps) are parseScene's. Fields are written as given: a g, a gravity or an action's field left
+ * out stays out (no defaults added; parseScene fills the same ones in).
  */
 
 import { ACTION_FIELDS, checkAction } from "./action.js";
@@ -13,7 +16,11 @@ import { isObject, nonNegative, refuse, vec2 } from "./fields.js";
 import { checkFieldMagnitudes } from "./magnitudes.js";
 import { checkMeta } from "./meta.js";
 import { checkHeader } from "./parse.js";
-import type { Action, SceneFile } from "./types.js";
+import { type Action, SCENE_DEFAULTS, type SceneFile, type Vec2 } from "./types.js";
+
+/** What serializeScene takes: a SceneFile, or a scene file as written, whose g and gravity may be
+ *  left out (parseScene gives them their defaults). */
+type SceneToWrite = Omit<SceneFile, "g" | "gravity"> & { g?: number | undefined; gravity?: Vec2 | undefined };
 
 function value(v: unknown): string {
   if (typeof v === "number") {
@@ -41,14 +48,17 @@ function actionLine(a: Action): string {
 }
 
 /** Throws SceneError naming the first field parseScene would refuse on its own. */
-function checkFields(scene: SceneFile): void {
+function checkFields(scene: SceneToWrite): void {
   const raw = scene as unknown as Record<string, unknown>;
   if (!isObject(raw)) throw refuse("scene", "must be an object", raw);
   // A scene of another version, or with a key this version does not have, is refused, not rewritten
   // as version 1 without it.
   checkHeader(raw);
   if (!Array.isArray(raw.actions)) throw refuse("actions", "must be an array", raw.actions);
-  checkFieldMagnitudes(nonNegative(raw, "g", ""), vec2(raw, "gravity", ""), "");
+  // left out, a field is at its default: checked as parseScene reads it
+  const g = raw.g === undefined ? SCENE_DEFAULTS.g : nonNegative(raw, "g", "");
+  const gravity = raw.gravity === undefined ? SCENE_DEFAULTS.gravity : vec2(raw, "gravity", "");
+  checkFieldMagnitudes(g, gravity, "");
   if (raw.meta !== undefined) checkMeta(raw.meta);
   raw.actions.forEach((a, i) => {
     checkAction(a, `actions[${i}]`);
@@ -58,18 +68,16 @@ function checkFields(scene: SceneFile): void {
 /**
  * The scene as JSON text: a stable key order, one action per line, numbers that read back
  * bit-identical (an infinite mass as "Infinity"); parseScene of the text deep-equals parseScene of
- * the scene. Every field is checked first as parseScene checks it (SceneError naming the field, e.g.
- * `actions[0].x`); the rules that need the scene's state (ids that exist, overlaps) are parseScene's.
+ * the scene. It takes what a scene file may hold: `g` and `gravity` may be left out (as in a file;
+ * they stay out), and an object JSON.parse read from a valid file is written as it is. Every field
+ * is checked first as parseScene checks it (SceneError naming the field, e.g. `actions[0].x`); the
+ * rules that need the scene's state (ids that exist, overlaps) are parseScene's.
  */
-export function serializeScene(scene: SceneFile): string {
+export function serializeScene(scene: SceneToWrite): string {
   checkFields(scene);
-  const lines = [
-    "{",
-    '  "format": "chapgame",',
-    '  "version": 1,',
-    `  "g": ${value(scene.g)},`,
-    `  "gravity": ${value(scene.gravity)},`,
-  ];
+  const lines = ["{", '  "format": "chapgame",', '  "version": 1,'];
+  if (scene.g !== undefined) lines.push(`  "g": ${value(scene.g)},`);
+  if (scene.gravity !== undefined) lines.push(`  "gravity": ${value(scene.gravity)},`);
   const acts = scene.actions.map((a) => `    ${actionLine(a)}`);
   const tail = scene.meta === undefined ? "" : ",";
   lines.push(
