@@ -120,7 +120,7 @@ export function bodyPath(core: TimelineCore, id: string, from: number, to: numbe
   }
   keyframesAt(rec.length); // (the keyframes after the loop's last record, up to `to`)
   // a span of no length: the motion everything logged at `to` left (all of it replayed above)
-  if (to === from) return n === null ? out : [pieceOf(table, n, from, to)];
+  if (to === from) return n === null ? [] : [pieceOf(table, n, from, to)];
   close(to);
   return out;
 }
