@@ -47,6 +47,49 @@ describe("placeShape", () => {
   });
 });
 
+describe("a rounded place is never across something from the aim (review of session 23)", () => {
+  // A disc or a line smaller than a pixel could be rounded to the far side of a wall or of a disc:
+  // clear there too, but a disc aimed inside a box then starts outside it.
+  it("a disc smaller than a pixel next to a wall stays on the aim's side", () => {
+    const wall: LineState = { id: "w", p1: [0.04, -5], p2: [0.04, 5], kind: "line" };
+    const f = frame([], [wall]);
+    // aimed 0.005 right of the wall (radius 0.001): rounded to x = 0, clear of it but left of it
+    const c = placeShape(f, { kind: "disc", r: 0.001 }, [0.045, 0.02], 10);
+    expect(c[0]).toBeGreaterThan(0.04);
+    expect(c).toEqual([0.1, 0]);
+    // a moved one likewise, and a point placed next to a segment
+    const seg: LineState = { id: "s", p1: [0.04, -5], p2: [0.04, 5], kind: "segment" };
+    expect(
+      placeShape(frame([["d", 3, 3, 0.001]], [seg]), { kind: "disc", r: 0.001 }, [0.045, 0], 10, "d"),
+    ).toEqual([0.1, 0]);
+    expect(placeShape(frame([], [seg]), { kind: "point" }, [0.045, 0], 10)[0]).toBeGreaterThan(0.04);
+  });
+
+  it("a disc smaller than a pixel is not rounded through another one", () => {
+    // b at x = 0.03 (radius 0.001); aimed right of it at 0.04, rounding to 0 would pass through it
+    const f = frame([["b", 0.03, 0, 0.001]]);
+    expect(placeShape(f, { kind: "disc", r: 0.001 }, [0.04, 0], 10)).toEqual([0.1, 0]);
+  });
+
+  it("a line drawn next to a disc smaller than a pixel keeps the disc on the same side", () => {
+    const f = frame([["d", 0, 0.03, 0.01]]);
+    // drawn 0.015 above the disc's centre: rounded to y = 0 it would pass below it
+    for (const kind of ["segment", "ray", "line"] as const) {
+      const [p1, p2] = placeLine(f, [-5.01, 0.045], [5.02, 0.045], kind, 10);
+      // up on both axes strays least of the corners that keep it above (as in the test above)
+      expect([p1, p2], kind).toEqual([
+        [-5, 0.1],
+        [5.1, 0.1],
+      ]);
+    }
+    // a segment that ends well before the disc is rounded as it is
+    expect(placeLine(f, [1.01, 0.045], [5.02, 0.045], "segment", 10)).toEqual([
+      [1, 0],
+      [5, 0],
+    ]);
+  });
+});
+
 describe("placeLine", () => {
   it("rounds both ends, and moves a line rounding would take into a disc clear of it, level", () => {
     expect(placeLine(null, [1.2345, 6.789], [-3.21, 0.049], "ray", 10)).toEqual([
