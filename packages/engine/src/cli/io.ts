@@ -1,7 +1,7 @@
 /**
  * CliIO: all the input and output of the `chapgame` command (the scene file, stdout, stderr, whether
- * stderr is a terminal, the version, the interrupt hooks, the clock that paces progress lines), so runCli can be tested in-process and
- * main.ts stays a thin wrapper. OutputError: what a CliIO.stdout throws when it cannot write the
+ * stderr is a terminal, the version, the interrupt hooks, the clock that paces progress lines), so
+ * runCli can be tested in-process and main.ts stays a thin wrapper. OutputError: what a CliIO.stdout throws when it cannot write the
  * result (exit status 1, "cannot write the result"), not a bug of the run.
  */
 

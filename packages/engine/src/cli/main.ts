@@ -14,9 +14,10 @@
  * signal).
  * The computation is paced by performance.now, a monotonic clock read between two slices of it
  * (cadence.ts: a progress line about once a second, slices of about 0.1 s): a timer (setInterval)
- * could not fire while a slice runs synchronously, and would only set a flag read at the same place. The clock is the CLI's: the
- * engine's own code reads none (test/exactArithmetic.test.ts allows host objects in src/cli alone),
- * and what is computed does not depend on it, only when a line is written to stderr does.
+ * could not fire while a slice runs synchronously, and would only set a flag read at the same place.
+ * The clock is the CLI's: the engine's own code reads none (test/exactArithmetic.test.ts allows host
+ * objects in src/cli alone), and what is computed does not depend on it, only when a line is written
+ * to stderr does.
  * The engine is built without Node's types (it must not depend on Node), so the few Node APIs used
  * here are typed locally and node:fs is loaded by a dynamic import.
  */
