@@ -1,0 +1,88 @@
+// Property: a series of edits of one body at one instant, merged as the editor merges them
+// (mergeEdit.ts), gives the future the separate actions give, bit for bit, but for the one case
+// its header names: the merged action changes nothing, and the future is the scene's without it.
+// Edits at the instant of a collision (t = 4: a meets b) and just before it are among the times.
+import { Timeline } from "@chapgame/engine";
+import fc from "fast-check";
+import { describe, expect, it } from "vitest";
+import type { Action, SceneFile } from "../engineTypes";
+import { mergedEdit } from "./mergeEdit";
+
+const SEED = Number(process.env.FC_SEED ?? 20261124); // fixed by default so CI is reproducible
+console.log(`mergeEdit.prop.test seed: ${SEED} (FC_SEED=${SEED} to reproduce)`);
+
+/** Three discs in a box: a and b meet at t = 4. */
+const BOX: Action[] = [
+  { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [1, 0.3] },
+  { time: 0, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 2, v: [-1, 0] },
+  { time: 0, type: "addBody", id: "c", x: 5, y: 6, r: 0.5, m: 1, v: [0, -1] },
+  { time: 0, type: "addLine", id: "e", p1: [20, -50], p2: [20, 50], kind: "line" },
+  { time: 0, type: "addLine", id: "w", p1: [-20, -50], p2: [-20, 50], kind: "line" },
+  { time: 0, type: "addLine", id: "s", p1: [-50, -20], p2: [50, -20], kind: "line" },
+  { time: 0, type: "addLine", id: "n", p1: [-50, 20], p2: [50, 20], kind: "line" },
+];
+const scene = (actions: readonly Action[]): SceneFile => ({
+  format: "chapgame",
+  version: 1,
+  g: 0,
+  gravity: [0, 0],
+  actions: [...actions],
+});
+const END = 30;
+
+/** The state at END of `actions`, or the error computing it gives. */
+function future(actions: readonly Action[]): string {
+  const tl = Timeline.fromScene(scene(actions), { compute: false });
+  try {
+    tl.prolongTo(END);
+  } catch (e) {
+    return String(e);
+  }
+  return JSON.stringify(tl.stateAt(END));
+}
+
+const edit = (time: number, id: string): fc.Arbitrary<Action> =>
+  fc.oneof(
+    fc
+      .tuple(fc.integer({ min: -20, max: 20 }), fc.integer({ min: -20, max: 20 }))
+      .map(([vx, vy]): Action => ({ time, type: "giveVelocity", id, v: [vx / 10, vy / 10] })),
+    fc.integer({ min: -15, max: 15 }).map((x): Action => ({ time, type: "updateBody", id, x })),
+    fc.integer({ min: -15, max: 15 }).map((y): Action => ({ time, type: "updateBody", id, y })),
+    fc.integer({ min: 1, max: 3 }).map((m): Action => ({ time, type: "updateBody", id, m })),
+  );
+
+const series = fc
+  .tuple(fc.constantFrom(0, 3.999, 4, 7.5, 12), fc.constantFrom("a", "b", "c"))
+  .chain(([time, id]) => fc.array(edit(time, id), { minLength: 2, maxLength: 4 }));
+
+describe("merged edits of one body at one instant", () => {
+  it("property: the future of the separate actions, or, when the merged action changes nothing, of the scene without it", () => {
+    fc.assert(
+      fc.property(series, (edits) => {
+        // the separate actions as the engine takes them; a series it refuses is no case
+        let separate: Action[] = BOX;
+        for (const e of edits) {
+          const tl = Timeline.fromScene(scene(separate), { compute: false });
+          try {
+            tl.apply(e, { keepHorizon: false, checkLater: false });
+          } catch {
+            return;
+          }
+          separate = tl.actions.slice() as Action[];
+        }
+        let merged: Action[] = BOX;
+        for (const e of edits) {
+          const m = mergedEdit(merged, e);
+          merged = m === null ? [...merged, e] : merged.map((a, i) => (i === m.index ? m.action : a));
+        }
+        expect(merged.length).toBe(BOX.length + 1); // all merged into the first edit (or the add at 0)
+        const got = future(merged);
+        if (got === future(separate)) return;
+        const unchanged = merged.filter((a) => !edits.includes(a) && !BOX.includes(a));
+        expect(unchanged).toHaveLength(1);
+        expect(got).toBe(future(merged.filter((a) => a !== unchanged[0])));
+      }),
+      { seed: SEED, numRuns: 150 },
+    );
+  });
+});
