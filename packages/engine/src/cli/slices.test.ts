@@ -3,6 +3,7 @@ import { dilutedGas } from "../scene/presets.js";
 import type { Until } from "../scene/types.js";
 import { Timeline } from "../timeline/timeline.js";
 import {
+  clockCadence,
   eventCadence,
   FIRST_SLICE_EVENTS,
   nextSliceBudget,
@@ -155,6 +156,35 @@ describe("computeSlices on a clock", () => {
     });
     expect(told.map(([n, ms]) => [n, Math.round(ms * 1e6) / 1e6])).toEqual(expected);
     expect(rec.log).toEqual([]);
+  });
+
+  it("a clock that goes backwards or reads NaN shows no line then, and the run goes on to its end", () => {
+    // readings: the start, then after each slice (a clock put back by an hour, a broken one)
+    const readings = [5_000, 5_010, -3_600_000, Number.NaN, Number.NaN, 5_200, 6_000, 6_010];
+    let k = 0;
+    const budgets: number[] = [];
+    const tl: Sliceable = {
+      prolongSlice(_until, budget) {
+        budgets.push(budget);
+        return budgets.length < readings.length
+          ? { done: false, events: budget, horizon: budgets.length }
+          : { done: true, events: 1, horizon: budgets.length, reason: "time" };
+      },
+    };
+    const told: number[] = [];
+    const cadence = clockCadence();
+    const rec = recorder((events, elapsed) => {
+      told.push(elapsed);
+      return cadence.due(events, elapsed);
+    });
+    expect(runToEnd(computeSlices(tl, {}, rec.progress, () => readings[k++] as number))).toBe("time");
+    expect(told).toEqual([10, -3_605_000, Number.NaN, Number.NaN, 200, 1_000, 1_010]);
+    // backwards: a short slice (doubled); NaN, and the first reading after it: kept; then 800 ms:
+    // scaled down to the target; 10 ms: doubled
+    expect(budgets).toEqual([1_000, 2_000, 4_000, 4_000, 4_000, 4_000, 500, 1_000]);
+    expect([FIRST_SLICE_EVENTS, SLICE_TARGET_MS]).toEqual([1_000, 100]);
+    // one line, once the clock reads half a second past the start again
+    expect(rec.log).toEqual(["6:19000", "end"]);
   });
 
   it("gives a real Timeline the history one prolong gives, bit for bit, however the clock sizes the slices", () => {
