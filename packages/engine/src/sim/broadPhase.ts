@@ -48,6 +48,7 @@ export class BroadPhase extends SimState {
    * the body layout.
    */
   protected rebuildGrid(ex = Number.NaN, ey = Number.NaN, er = 0, slack = 1): void {
+    this.compactObstacles();
     const b = this.store;
     const extra = !Number.isNaN(ex);
     const radii: number[] = extra ? [er] : [];

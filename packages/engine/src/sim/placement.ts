@@ -100,6 +100,7 @@ export class Placement extends Simulator {
       for (const s of this.index.values()) test(s);
     } else this.forEachNear(x, y, r, test);
     if (body !== undefined) throw new ChapgameError(field, `the body would overlap body ${quoteId(body)}`);
+    this.compactObstacles();
     const rk = r * keep;
     const line = firstById(this.lineList.filter((l) => distanceToLine(l, x, y) < rk));
     if (line) throw new ChapgameError(field, `the body would overlap line ${quoteId(line.id)}`);
@@ -113,12 +114,12 @@ export class Placement extends Simulator {
 
   /** Whether a line (of any kind: line, ray or segment) with this id exists. */
   hasLine(id: string): boolean {
-    return this.lineList.some((l) => l.id === id);
+    return this.lineAt.has(this.lineList, id);
   }
 
   /** Whether a point obstacle with this id exists. */
   hasPoint(id: string): boolean {
-    return this.pointList.some((p) => p.id === id);
+    return this.pointAt.has(this.pointList, id);
   }
 
   /**
@@ -132,7 +133,7 @@ export class Placement extends Simulator {
     requireId("id", id);
     if (this.hasLine(id)) throw new ChapgameError("id", `a line with id ${quoteId(id)} already exists`);
     const line = this.checkedLine(id, p1, p2, kind);
-    this.lineList = [...this.lineList, line];
+    this.lineAt.add(this.lineList, line);
     this.markDirty();
   }
 
@@ -144,11 +145,10 @@ export class Placement extends Simulator {
    */
   updateLine(id: string, patch: { p1?: Vec2; p2?: Vec2; kind?: LineKind }): void {
     requireId("id", id);
-    const i = this.lineList.findIndex((l) => l.id === id);
-    if (i < 0) throw new ChapgameError("id", `no line with id ${quoteId(id)}`);
+    const old = this.lineAt.get(this.lineList, id);
+    if (old === undefined) throw new ChapgameError("id", `no line with id ${quoteId(id)}`);
     // (a LineState's id may come back with it; the id argument names the line)
     requireFields("patch", patch, ["p1", "p2", "kind"], ["id"]);
-    const old = this.lineList[i] as Line;
     const p1 = patch.p1 ?? [old.x1, old.y1];
     const p2 = patch.p2 ?? [old.x2, old.y2];
     const kind = patch.kind ?? old.kind;
@@ -162,7 +162,7 @@ export class Placement extends Simulator {
           ? "kind"
           : "p1";
     const line = this.checkedLine(id, p1, p2, kind, field);
-    this.lineList = this.lineList.map((l, k) => (k === i ? line : l));
+    this.lineAt.replace(this.lineList, line);
     this.markDirty();
   }
 
@@ -170,7 +170,7 @@ export class Placement extends Simulator {
   removeLine(id: string): void {
     requireId("id", id);
     if (!this.hasLine(id)) throw new ChapgameError("id", `no line with id ${quoteId(id)}`);
-    this.lineList = this.lineList.filter((l) => l.id !== id);
+    this.lineAt.remove(this.lineList, id);
     this.markDirty();
   }
 
@@ -182,7 +182,7 @@ export class Placement extends Simulator {
   addPoint(id: string, p: Vec2): void {
     requireId("id", id);
     if (this.hasPoint(id)) throw new ChapgameError("id", `a point with id ${quoteId(id)} already exists`);
-    this.pointList = [...this.pointList, this.checkedPoint(id, p)];
+    this.pointAt.add(this.pointList, this.checkedPoint(id, p));
     this.markDirty();
   }
 
@@ -190,8 +190,7 @@ export class Placement extends Simulator {
   updatePoint(id: string, p: Vec2): void {
     requireId("id", id);
     if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id ${quoteId(id)}`);
-    const point = this.checkedPoint(id, p);
-    this.pointList = this.pointList.map((q) => (q.id === id ? point : q));
+    this.pointAt.replace(this.pointList, this.checkedPoint(id, p));
     this.markDirty();
   }
 
@@ -199,12 +198,13 @@ export class Placement extends Simulator {
   removePoint(id: string): void {
     requireId("id", id);
     if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id ${quoteId(id)}`);
-    this.pointList = this.pointList.filter((q) => q.id !== id);
+    this.pointAt.remove(this.pointList, id);
     this.markDirty();
   }
 
   /** All lines, sorted by id. */
   lines(): LineState[] {
+    this.compactObstacles();
     return [...this.lineList]
       .sort((a, b) => (a.id < b.id ? -1 : 1))
       .map((l) => ({ id: l.id, p1: [l.x1, l.y1] as Vec2, p2: [l.x2, l.y2] as Vec2, kind: l.kind }));
@@ -212,6 +212,7 @@ export class Placement extends Simulator {
 
   /** All points, sorted by id. */
   points(): PointState[] {
+    this.compactObstacles();
     return [...this.pointList]
       .sort((a, b) => (a.id < b.id ? -1 : 1))
       .map((p) => ({ id: p.id, p: [p.x, p.y] as Vec2 }));

@@ -10,6 +10,7 @@ import { type MotionLaw, motionLaw, positionAt, velocityAt } from "../physics/mo
 import { BodyStore, EV_BODY, EV_CROSS, EV_LINE, EV_POINT } from "./bodyStore.js";
 import { CalendarQueue } from "./calendarQueue.js";
 import { Grid } from "./grid.js";
+import { ObstacleIndex } from "./obstacleIndex.js";
 import type { Line, Point } from "./obstacles.js";
 import type { EventCounts, Optimizations, Vec2, WorldEventRecord } from "./types.js";
 import { ZenoWatch } from "./zenoWatch.js";
@@ -33,8 +34,16 @@ export class SimState {
   protected store: BodyStore;
   protected grid: Grid;
   protected heap: CalendarQueue;
+  /**
+   * The lines and points, in the order they were added, and where each id sits in them
+   * (obstacleIndex.ts). A removed one stays in its list until compactObstacles: every read of a
+   * whole list compacts first (grid rebuilds, placement checks, copies); the simulation reads them
+   * only after a rebuild (an obstacle edit marks the predictions out of date).
+   */
   protected lineList: Line[] = [];
   protected pointList: Point[] = [];
+  protected readonly lineAt = new ObstacleIndex<Line>();
+  protected readonly pointAt = new ObstacleIndex<Point>();
   /** Indices of infinite lines and rays (tested against every moving body). */
   protected globalLines: number[] = [];
   /** Per obstacle: the prediction stamp that last tested it (avoids testing it twice per prediction). */
@@ -125,8 +134,15 @@ export class SimState {
     return [this.gravX, this.gravY];
   }
 
+  /** Drop removed lines and points from their lists (obstacleIndex.ts); O(1) when there are none. */
+  protected compactObstacles(): void {
+    this.lineAt.compact(this.lineList);
+    this.pointAt.compact(this.pointList);
+  }
+
   /** Copy all state into `target` (a fresh Simulator of the same class). */
   protected copyInto(target: SimState): void {
+    this.compactObstacles();
     target.now = this.now;
     target.frictionG = this.frictionG;
     target.gravX = this.gravX;
@@ -136,6 +152,8 @@ export class SimState {
     target.heap = this.heap.cloneWith((a, b) => target.tieLess(a, b));
     target.lineList = this.lineList.slice();
     target.pointList = this.pointList.slice();
+    target.lineAt.reset();
+    target.pointAt.reset();
     target.globalLines = this.globalLines;
     target.obstStamp = new Int32Array(this.obstStamp.length);
     target.dirty = this.dirty;
