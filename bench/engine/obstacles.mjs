@@ -5,7 +5,11 @@
  * cost per event should barely grow with the number of obstacles. Each row: a fresh World, a
  * warm-up, then `runs` timed batches (median); beside it the same scene with `broadPhase: false`
  * (every prediction tests every body, segment and point) over a smaller batch after a short warm-up,
- * and whether the two Worlds are in the same state after those events, bit for bit.
+ * and whether the two Worlds are in the same state after those events, bit for bit. Each row also
+ * times the scene's build, ready to simulate: a World, every wall, point and disc added through the
+ * public API, then `advance({ maxEvents: 0 })` (the grid laid out, every obstacle registered in its
+ * cells, every disc predicted); the median of the row's three builds (the timed World, and the two
+ * compared with and without the grid), and that per obstacle, which should not grow with them.
  *
  * `node --expose-gc bench/engine/obstacles.mjs [--quick]` runs the rows alone and prints them.
  */
@@ -31,13 +35,28 @@ function sceneOf(row) {
     : galton({ balls: row.discs, pegs: row.obstacles });
 }
 
+/** The median of a few numbers. */
+function median(xs) {
+  const s = [...xs].sort((a, b) => a - b);
+  return s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+}
+
 /** Each body's state, for the bit-for-bit comparison of the two Worlds. */
 const stateOf = (world) => JSON.stringify(world.bodies());
 
 function measureRow(engine, row, { warmup, batch, runs, offWarmup, offBatch }) {
   const scene = sceneOf(row);
-  gc();
-  const world = buildWorld(engine, scene);
+  const builds = [];
+  /** The scene built and ready to simulate (timed: see the header). */
+  const built = (worldOptions) => {
+    gc();
+    const a = nowNs();
+    const w = buildWorld(engine, scene, worldOptions);
+    w.advance({ maxEvents: 0 });
+    builds.push(nowNs() - a);
+    return w;
+  };
+  const world = built();
   world.advance({ maxEvents: warmup });
   const t = timedRuns(
     () => {
@@ -50,9 +69,9 @@ function measureRow(engine, row, { warmup, batch, runs, offWarmup, offBatch }) {
   const grid = world.grid;
   // The same scene without the grid (a short warm-up of its own, then offBatch events timed), and
   // with it over as many events.
-  const on = buildWorld(engine, scene);
+  const on = built();
   on.advance({ maxEvents: offWarmup + offBatch });
-  const off = buildWorld(engine, scene, { optimizations: { broadPhase: false } });
+  const off = built({ optimizations: { broadPhase: false } });
   off.advance({ maxEvents: offWarmup });
   const a = nowNs();
   const offEvents = off.advance({ maxEvents: offBatch }).events;
@@ -71,6 +90,8 @@ function measureRow(engine, row, { warmup, batch, runs, offWarmup, offBatch }) {
     offBatch: offEvents,
     offUsPerEvent: offNs / 1e3 / offEvents,
     sameAsOff: stateOf(on) === stateOf(off),
+    buildMs: median(builds) / 1e6,
+    buildUsPerObstacle: median(builds) / 1e3 / row.obstacles,
   };
 }
 
@@ -85,7 +106,7 @@ export function obstacleRows({ quick, engine, log }) {
       const r = measureRow(engine, row, opts);
       rows.push(r);
       log(
-        `  ${label}: ${r.usPerEvent.toFixed(2)} µs/event (grid of ${r.cells} cells), ${r.offUsPerEvent.toFixed(1)} without the grid${r.sameAsOff ? "" : ", DIFFERENT STATE"}`,
+        `  ${label}: ${r.usPerEvent.toFixed(2)} µs/event (grid of ${r.cells} cells), ${r.offUsPerEvent.toFixed(1)} without the grid${r.sameAsOff ? "" : ", DIFFERENT STATE"}; built in ${r.buildMs.toFixed(1)} ms (${r.buildUsPerObstacle.toFixed(2)} µs per obstacle)`,
       );
     } catch (e) {
       log(`  ${label}: ERROR ${e.message}`);

@@ -12,6 +12,8 @@ export interface ObstacleRow {
   offBatch?: number;
   offUsPerEvent?: number;
   sameAsOff?: boolean;
+  buildMs?: number;
+  buildUsPerObstacle?: number;
   error?: string;
 }
 export function obstaclesBlock(

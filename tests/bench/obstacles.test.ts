@@ -3,7 +3,8 @@
  * (bench/report/obstacles.mjs): a maze has the segments asked for, its discs clear of every wall and
  * of each other; a Galton board has its pegs inside the box and its balls above them; the same seed
  * gives the same scene; the report gives each row's cost against the row of fewest obstacles of its
- * kind, keeps an error row, and writes nothing for a run from before the rows existed.
+ * kind and the time to build it (a dash for a run from before builds were timed), keeps an error
+ * row, and writes nothing for a run from before the rows existed.
  */
 import { describe, expect, it } from "vitest";
 import { obstaclesBlock } from "../../bench/report/obstacles.mjs";
@@ -72,6 +73,8 @@ const row = (kind: string, obstacles: number, usPerEvent: number, sameAsOff = tr
   cells: 676,
   offUsPerEvent: 100,
   sameAsOff,
+  buildMs: obstacles / 400,
+  buildUsPerObstacle: 2.5,
 });
 
 describe("obstacle-heavy scenes in the report", () => {
@@ -86,16 +89,19 @@ describe("obstacle-heavy scenes in the report", () => {
             row("galton", 1000, 5),
             row("galton", 5000, 7.5),
             { kind: "galton", discs: 5, obstacles: 9000, error: "boom" },
+            // a row from a run before builds were timed
+            { ...row("maze", 400, 2), buildMs: undefined, buildUsPerObstacle: undefined },
           ],
         },
       },
       out,
     );
     const text = out.join("\n");
-    expect(text).toContain("| maze | 8 | 100 | 676 | 50,000 | 3 | 2 | 1× | 100 | yes |");
-    expect(text).toContain("| maze | 8 | 10,000 | 676 | 50,000 | 3 | 3 | 1.5× | 100 | **no** |");
-    expect(text).toContain("| galton | 8 | 5,000 | 676 | 50,000 | 3 | 7.5 | 1.5× | 100 | yes |");
-    expect(text).toContain("| galton | 5 | 9,000 |  |  |  | error: boom |  |  |  |");
+    expect(text).toContain("| maze | 8 | 100 | 676 | 50,000 | 3 | 2 | 1× | 100 | yes | 0.25 | 2.5 |");
+    expect(text).toContain("| maze | 8 | 10,000 | 676 | 50,000 | 3 | 3 | 1.5× | 100 | **no** | 25 | 2.5 |");
+    expect(text).toContain("| galton | 8 | 5,000 | 676 | 50,000 | 3 | 7.5 | 1.5× | 100 | yes | 12.5 | 2.5 |");
+    expect(text).toContain("| galton | 5 | 9,000 |  |  |  | error: boom |  |  |  |  |  |");
+    expect(text).toContain("| maze | 8 | 400 | 676 | 50,000 | 3 | 2 | 1× | 100 | yes | — | — |");
   });
 
   it("writes nothing for a run from before the rows existed", () => {
