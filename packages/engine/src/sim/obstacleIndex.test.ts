@@ -20,7 +20,7 @@ describe("ObstacleIndex", () => {
   it("keeps the order and contents the plain list operations give", () => {
     console.log(`[obstacle index] fast-check seed ${SEED} (set FC_SEED to change)`);
     fc.assert(
-      fc.property(fc.array(op, { maxLength: 120 }), (ops) => {
+      fc.property(fc.array(op, { minLength: 30, maxLength: 200 }), (ops) => {
         let list: Item[] = [];
         let index = new ObstacleIndex<Item>();
         let plain: Item[] = [];

@@ -17,8 +17,9 @@
 export class ObstacleIndex<T extends { readonly id: string }> {
   /** Position of each live obstacle's id in the list; null until first needed (a copied list is indexed then). */
   private at: Map<string, number> | null = null;
-  /** Removed entries still in the list. */
+  /** Removed entries still in the list, and the first one's position. */
   private removed = 0;
+  private firstRemoved = 0;
 
   /** The position map, built from `list` (which holds no removed entry then) when first needed. */
   private positions(list: readonly T[]): Map<string, number> {
@@ -59,7 +60,10 @@ export class ObstacleIndex<T extends { readonly id: string }> {
 
   /** Remove the obstacle with this id (which must be in the list); `compact` drops its entry. */
   remove(list: readonly T[], id: string): void {
-    this.positions(list).delete(id);
+    const at = this.positions(list);
+    const k = at.get(id) as number;
+    at.delete(id);
+    if (this.removed === 0 || k < this.firstRemoved) this.firstRemoved = k;
     this.removed++;
   }
 
@@ -67,8 +71,9 @@ export class ObstacleIndex<T extends { readonly id: string }> {
   compact(list: T[]): void {
     if (this.removed === 0) return;
     const at = this.positions(list);
-    let w = 0;
-    for (let k = 0; k < list.length; k++) {
+    // Entries before the first removed one keep their places.
+    let w = this.firstRemoved;
+    for (let k = w; k < list.length; k++) {
       const item = list[k] as T;
       // A removed entry is no longer indexed at its position (its id may live on elsewhere: re-added).
       if (at.get(item.id) !== k) continue;
