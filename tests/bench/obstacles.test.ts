@@ -90,7 +90,7 @@ describe("obstacle-heavy scenes in the report", () => {
             row("galton", 5000, 7.5),
             { kind: "galton", discs: 5, obstacles: 9000, error: "boom" },
             // a row from a run before builds were timed
-            { ...row("maze", 400, 2), buildMs: undefined, buildUsPerObstacle: undefined },
+            (({ buildMs, buildUsPerObstacle, ...before }) => before)(row("maze", 400, 2)),
           ],
         },
       },
