@@ -134,6 +134,24 @@ describe("parseScene refuses, naming the path and the reason", () => {
       'actions[1]: body "a" would overlap line "w" at time 0',
     ],
     [
+      "body onto two lines, the later-added with the smaller id: the smallest id is named, as the World does",
+      base([
+        { time: 0, type: "addLine", id: "w2", p1: [0, -5], p2: [0, 5], kind: "segment" },
+        { time: 0, type: "addLine", id: "w1", p1: [0.4, -5], p2: [0.4, 5], kind: "segment" },
+        disc("a", 0.2),
+      ]),
+      'actions[2]: body "a" would overlap line "w1" at time 0',
+    ],
+    [
+      "body onto two points, the later-added with the smaller id",
+      base([
+        { time: 0, type: "addPoint", id: "q", p: [0, 0] },
+        { time: 0, type: "addPoint", id: "p", p: [0.3, 0] },
+        disc("a", 0.1),
+      ]),
+      'actions[2]: body "a" would overlap point "p" at time 0',
+    ],
+    [
       "line onto a body",
       base([
         disc("a", 0),

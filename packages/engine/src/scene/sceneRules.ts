@@ -150,20 +150,26 @@ function checkDisc(view: SceneView, path: string, id: string, x: number, y: numb
   const other = view.grid.findOverlap(x, y, r, id);
   if (other !== null)
     throw new SceneError(path, `body ${q(id)} would overlap body ${q(other)} at time ${view.time}`);
-  for (const [lid, l] of view.lines)
-    if (discOverlapsLine(x, y, r, l.p1, l.p2, l.kind))
-      throw new SceneError(path, `body ${q(id)} would overlap line ${q(lid)} at time ${view.time}`);
-  for (const [pid, p] of view.points)
-    if (discOverlapsPoint(x, y, r, p))
-      throw new SceneError(path, `body ${q(id)} would overlap point ${q(pid)} at time ${view.time}`);
+  // The smallest id hit, as the World names it: the message does not depend on the order of adds.
+  const line = smallestHit(view.lines, (l) => discOverlapsLine(x, y, r, l.p1, l.p2, l.kind));
+  if (line !== undefined)
+    throw new SceneError(path, `body ${q(id)} would overlap line ${q(line)} at time ${view.time}`);
+  const point = smallestHit(view.points, (p) => discOverlapsPoint(x, y, r, p));
+  if (point !== undefined)
+    throw new SceneError(path, `body ${q(id)} would overlap point ${q(point)} at time ${view.time}`);
+}
+
+/** The smallest id of `map` whose value `hits`, if any (one pass). */
+function smallestHit<T>(map: Map<string, T>, hits: (v: T) => boolean): string | undefined {
+  let first: string | undefined;
+  for (const [key, v] of map) if ((first === undefined || key < first) && hits(v)) first = key;
+  return first;
 }
 
 /** Refuses an obstacle that `hits` a body of known position, naming the smallest such id (one pass:
  *  sorting every body's id for each line added made a scene of n bodies and m lines cost m n log n). */
 function checkObstacle(view: SceneView, path: string, what: string, hits: (b: ViewBody) => boolean): void {
-  let first: string | undefined;
-  for (const [bid, b] of view.bodies)
-    if ((first === undefined || bid < first) && b.known && hits(b)) first = bid;
+  const first = smallestHit(view.bodies, (b) => b.known && hits(b));
   if (first !== undefined)
     throw new SceneError(path, `${what} would overlap body ${q(first)} at time ${view.time}`);
 }
