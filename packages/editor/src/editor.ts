@@ -12,7 +12,7 @@
  * message (null on success) and show it in the UI.
  */
 
-import { pointerVelocity } from "./canvas/pointerPlace";
+import { strikeVelocity } from "./canvas/pointerPlace";
 import { describeEntry } from "./doc/actionRefs";
 import { nextFreeId } from "./doc/ids";
 import { type ActionEntry, withoutAction } from "./doc/removeAction";
@@ -27,6 +27,10 @@ import type { UiStore } from "./store/uiStore";
 
 /** Velocity given by a cue strike, per world unit of offset between the click and the disc centre (1/s). */
 export const STRIKE_RATE = 4;
+
+/** A cue click at a disc's very centre: the strike goes away from the click, so it has no direction. */
+export const NO_STRIKE_DIRECTION =
+  "Not struck: the cue strikes a disc away from the click, so click off its centre (the farther, the harder).";
 
 export const EMPTY_SCENE: SceneFile = {
   format: "chapgame",
@@ -89,15 +93,20 @@ export class Editor extends EditorTime {
   /**
    * A cue strike: velocity away from the click point, STRIKE_RATE per unit of offset. With the
    * view's `scale` (a click of the pointer) it is rounded to what one pixel of the offset changes in
-   * it (canvas/pointerPlace.ts), not given the digits of the pointer's position.
+   * it (canvas/pointerPlace.ts strikeVelocity: never to [0, 0], which would stop the disc), not
+   * given the digits of the pointer's position. A click at the centre itself gives no direction: it
+   * is refused with a message and nothing changes.
    */
   strike(id: string, centre: Vec2, click: Vec2, scale?: number): Promise<string | null> {
     const dx = centre[0] - click[0];
     const dy = centre[1] - click[1];
-    const v: Vec2 =
+    const v: Vec2 | null =
       scale === undefined
-        ? [dx * STRIKE_RATE, dy * STRIKE_RATE]
-        : pointerVelocity(dx, dy, STRIKE_RATE, scale);
+        ? dx === 0 && dy === 0
+          ? null
+          : [dx * STRIKE_RATE, dy * STRIKE_RATE]
+        : strikeVelocity(dx, dy, STRIKE_RATE, scale);
+    if (v === null) return Promise.resolve(this.fail(NO_STRIKE_DIRECTION));
     return this.giveVelocity(id, v);
   }
 

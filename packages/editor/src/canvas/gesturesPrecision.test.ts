@@ -2,8 +2,9 @@
 // 10 px per unit a click, a drop, a drawn velocity or a strike gives one decimal, not the digits of
 // the pointer's position; and a drop next to a disc is never rounded into a refusal.
 import { describe, expect, it } from "vitest";
+import { NO_STRIKE_DIRECTION } from "../editor";
 import type { SceneFile } from "../engineTypes";
-import type { Frame } from "../remote/protocol";
+import { F_X, type Frame } from "../remote/protocol";
 import { settled, testEditor } from "../testing/harness";
 import { CanvasGestures, NEW_DISC_PX, niceRadius } from "./gestures";
 
@@ -17,6 +18,8 @@ const SCENE: SceneFile = {
 /** The view is centred on the disc at 10 px per unit: screen (400 + 10 x, 300 − 10 y). */
 const size = { width: 800, height: 600 };
 const CENTRE: [number, number] = [400, 300];
+/** A new disc's radius at 10 px per unit. */
+const NEW_R = niceRadius(NEW_DISC_PX, 10);
 
 async function setup() {
   const h = testEditor();
@@ -53,11 +56,10 @@ describe("the pointer's precision", () => {
     await settled(client);
     expect(editor.ui.getState().message).toBeNull();
     expect(editor.doc.actions.slice(1)).toMatchObject([
-      { type: "addBody", x: 3.3, y: 1.2, r: niceRadius(NEW_DISC_PX, 10) },
+      { type: "addBody", x: 3.3, y: 1.2, r: NEW_R },
       { type: "addPoint", p: [-30, 20] },
       { type: "addLine", p1: [-24.9, -22], p2: [-4.9, -22], kind: "segment" },
     ]);
-    expect(niceRadius(NEW_DISC_PX, 10)).toBe(1.8);
     // the scene file holds the short decimals
     expect(JSON.stringify(editor.doc.actions.slice(1))).not.toMatch(/\d\.\d{2,}/);
   });
@@ -79,9 +81,27 @@ describe("the pointer's precision", () => {
     expect(editor.doc.actions).toMatchObject([{ type: "addBody", id: "a", v: [-1.3, 0.9] }]);
   });
 
+  it("a cue click within a pixel of the centre still strikes (the smallest velocity at that precision); at the centre it is refused", async () => {
+    const { editor, client, g } = await setup();
+    editor.ui.setState({ tool: "cue" });
+    // 4 per unit of offset (−0.01, −0.004): (−0.04, −0.016), which rounds to [0, 0] at a step of 0.1
+    drag(g, [400.1, 300.04], [400.1, 300.04]);
+    await settled(client);
+    expect(editor.ui.getState().message).toBeNull();
+    expect(editor.doc.actions).toMatchObject([{ type: "addBody", id: "a", v: [-0.1, 0] }]);
+    // the disc moves off to the left: struck, not stopped
+    expect((await client.frame(1)).data[F_X]).toBeLessThan(0);
+    const before = editor.doc;
+    drag(g, CENTRE, CENTRE); // the centre itself: no direction
+    await settled(client);
+    expect(editor.ui.getState().message).toEqual({ text: NO_STRIKE_DIRECTION, tone: "error" });
+    expect(editor.doc).toEqual(before);
+  });
+
   it("a disc clicked beside another is never rounded into it: the nearest round place clear of it, accepted", async () => {
     const { editor, client, g } = await setup();
-    const r = niceRadius(NEW_DISC_PX, 10); // 1.8: touching "a" at 2.8
+    const r = NEW_R;
+    expect(r).toBe(1.8); // touching "a" at 2.8
     // rounded to one decimal the new disc would overlap "a": the engine refuses that place
     expect(await editor.addBody(2, 1.9, r)).toMatch(/overlap/);
     expect(editor.doc.actions).toHaveLength(1);

@@ -4,7 +4,7 @@ import { describe, expect, it } from "vitest";
 import type { LineState } from "../engineTypes";
 import { F_R, F_X, F_Y, FRAME_STRIDE, type Frame } from "../remote/protocol";
 import { blockerAt, lineBlocker } from "./freeSpot";
-import { placeLine, placeShape, pointerVelocity } from "./pointerPlace";
+import { placeLine, placeShape, pointerVelocity, strikeVelocity } from "./pointerPlace";
 
 function frame(discs: [string, number, number, number][], lines: LineState[] = []): Frame {
   const data = new Float64Array(discs.length * FRAME_STRIDE);
@@ -116,5 +116,26 @@ describe("pointerVelocity", () => {
     expect(pointerVelocity(1.234, 5.678, 2, 10)).toEqual([2.5, 11.4]);
     // a cue (4 per unit) at 500 px per unit: a pixel is 0.008, step 0.001
     expect(pointerVelocity(-0.33712345, 0.2131, 4, 500)).toEqual([-1.348, 0.852]);
+  });
+});
+
+describe("strikeVelocity", () => {
+  it("is pointerVelocity's rounding while that leaves a component other than 0", () => {
+    expect(strikeVelocity(-0.33712345, 0.2131, 4, 500)).toEqual(pointerVelocity(-0.33712345, 0.2131, 4, 500));
+    expect(strikeVelocity(0.02, 0, 4, 10)).toEqual([0.1, 0]); // 0.08 rounds to 0.1
+  });
+
+  it("a click that rounds to [0, 0] gives one step along its larger component, the other rounded to the step", () => {
+    // 4 per unit at 10 px per unit: a pixel is 0.4, step 0.1
+    expect(pointerVelocity(-0.01, 0.004, 4, 10)).toEqual([0, 0]);
+    expect(strikeVelocity(-0.01, 0.004, 4, 10)).toEqual([-0.1, 0]);
+    expect(strikeVelocity(0.009, -0.008, 4, 10)).toEqual([0.1, -0.1]);
+    expect(strikeVelocity(0, 1e-9, 4, 10)).toEqual([0, 0.1]);
+    // at 500 px per unit: a pixel is 0.008, step 0.001
+    expect(strikeVelocity(-1e-5, -1.5e-5, 4, 500)).toEqual([-0.001, -0.001]);
+  });
+
+  it("a click at the centre itself gives no direction: null", () => {
+    expect(strikeVelocity(0, 0, 4, 10)).toBeNull();
   });
 });

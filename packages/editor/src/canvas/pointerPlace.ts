@@ -84,3 +84,20 @@ export function pointerVelocity(dx: number, dy: number, perUnit: number, scale: 
   const step = pointerStep(scale / perUnit);
   return [roundToStep(dx * perUnit, step), roundToStep(dy * perUnit, step)];
 }
+
+/**
+ * A cue strike's velocity for a click (dx, dy) world units from the disc's centre (the strike goes
+ * away from the click, `perUnit` per unit of offset), rounded as pointerVelocity rounds it; null for
+ * a click at the centre itself, which gives no direction. A click so near the centre that every
+ * component rounds to 0 (within about half a pixel) still strikes: the smallest velocity at that
+ * precision in the strike's direction (its larger component one step, the other rounded to the same
+ * step), never [0, 0], which would stop the disc: the opposite of a strike.
+ */
+export function strikeVelocity(dx: number, dy: number, perUnit: number, scale: number): Vec2 | null {
+  if (dx === 0 && dy === 0) return null;
+  const v = pointerVelocity(dx, dy, perUnit, scale);
+  if (v[0] !== 0 || v[1] !== 0) return v;
+  const step = pointerStep(scale / perUnit);
+  const big = Math.max(Math.abs(dx), Math.abs(dy));
+  return [roundToStep((dx / big) * step, step), roundToStep((dy / big) * step, step)];
+}
