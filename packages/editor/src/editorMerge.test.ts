@@ -84,6 +84,34 @@ describe("edits of one object at one instant", () => {
     expect(await h.client.nextEvent(1)).toBe(await fresh.client.nextEvent(1));
   });
 
+  it("an edit that puts back what the edit before it changed leaves no action: the scene, its file and its log as before both; Undo steps back", async () => {
+    const h = await open(scene(), 2);
+    const { editor, client } = h;
+    const before = editor.doc;
+    const motion = await bodyAt(h, "b", 6);
+    expect(await editor.updateBody("b", { m: 2 })).toBeNull();
+    expect(await editor.updateBody("b", { m: 1 })).toBeNull(); // b's mass at t = 2 again
+    await settled(client);
+    expect(editor.doc.actions).toEqual(before.actions);
+    const page = await client.events(2, 50, 50, null);
+    expect(page.events.filter((e) => e.type === "action").map((e) => e.time)).toEqual([0, 0]);
+    expect(await bodyAt(h, "b", 6)).toEqual(motion);
+    expect(editor.history.getState().past).toHaveLength(2);
+    await editor.undo();
+    await settled(client);
+    expect(editor.doc.actions.slice(2)).toEqual([{ time: 2, type: "updateBody", id: "b", m: 2 }]);
+    await editor.undo();
+    await settled(client);
+    expect(editor.doc.actions).toEqual(before.actions);
+    // at the instant a disc was added, its add stays (an add always changes something)
+    editor.ui.setState({ t: 0 });
+    expect(await editor.updateBody("b", { m: 2 })).toBeNull();
+    expect(await editor.updateBody("b", { m: 1 })).toBeNull();
+    await settled(client);
+    expect(editor.doc.actions).toEqual(before.actions); // b's add, with m = 1
+    expect(editor.history.getState().past).toHaveLength(2);
+  });
+
   it("stays separate with another object's edit between, or at another time", async () => {
     const { editor, client } = await open(scene(), 2);
     expect(await editor.updateBody("a", { x: -3 })).toBeNull();
@@ -127,10 +155,16 @@ describe("edits of one object at one instant", () => {
   });
 
   it("Undo while a merged edit is checked takes back that edit only: the action before it is as it was", async () => {
-    // discs bouncing in a box, computed to t = 40, an action at t = 30: the check of an edit at
-    // t = 10 lasts many rounds of the slow host
+    // six discs bouncing near the floor of a box, computed to t = 40, an action at t = 30: the
+    // check of an edit at t = 10 lasts a dozen events, each a round of the slow host
     const addE: Action = { time: 30, type: "addBody", id: "e", x: 50, y: 50, r: 1, m: 1 };
-    const h = await slowEditorAt(boxScene([addE]), 40, 10);
+    const discs = [..."abcdfg"].map((id, k): [string, number, number, [number, number]] => [
+      id,
+      5 + 7 * k,
+      5,
+      [6 - k, 2 + k],
+    ]);
+    const h = await slowEditorAt(boxScene([addE], discs), 40, 10);
     expect(await h.editor.giveVelocity("b", [0, 1])).toBeNull();
     await settled(h.client);
     const first = h.editor.doc;

@@ -1,8 +1,8 @@
 // Consecutive edits of one object at one instant merge into one action; anything else stays an
 // action of its own.
 import { describe, expect, it } from "vitest";
-import type { Action } from "../engineTypes";
-import { mergedEdit } from "./mergeEdit";
+import type { Action, SceneState } from "../engineTypes";
+import { changesNothing, mergedEdit } from "./mergeEdit";
 
 const addA: Action = { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 };
 const addB: Action = { time: 0, type: "addBody", id: "b", x: 5, y: 0, r: 1, m: 1 };
@@ -102,5 +102,40 @@ describe("mergedEdit", () => {
       index: 1,
       action: { ...xA, r: 2 },
     });
+  });
+});
+
+describe("changesNothing", () => {
+  const state: SceneState = {
+    time: 2,
+    g: 0.5,
+    gravity: [0, -1],
+    bodies: [{ id: "a", x: 3, y: 4, vx: 1, vy: -2, ax: 0, ay: -1, r: 1, m: 2, mu: 0 }],
+    lines: [{ id: "l", p1: [0, 0], p2: [5, 0], kind: "segment" }],
+    points: [{ id: "p", p: [7, 7] }],
+  };
+  it("an update that sets every field it gives to the value the object has", () => {
+    expect(changesNothing({ time: 2, type: "updateBody", id: "a", x: 3, m: 2, v: [1, -2] }, state)).toBe(
+      true,
+    );
+    expect(changesNothing({ time: 2, type: "giveVelocity", id: "a", v: [1, -2] }, state)).toBe(true);
+    expect(changesNothing({ time: 2, type: "updateLine", id: "l", p2: [5, 0], kind: "segment" }, state)).toBe(
+      true,
+    );
+    expect(changesNothing({ time: 2, type: "updatePoint", id: "p", p: [7, 7] }, state)).toBe(true);
+    expect(changesNothing({ time: 2, type: "setGlobal", g: 0.5, gravity: [0, -1] }, state)).toBe(true);
+  });
+
+  it("one value other (even -0 for 0), another object, an add, a removal or an until: something", () => {
+    expect(changesNothing({ time: 2, type: "updateBody", id: "a", x: 3, m: 2.5 }, state)).toBe(false);
+    expect(changesNothing({ time: 2, type: "giveVelocity", id: "a", v: [1, -2.0000001] }, state)).toBe(false);
+    expect(changesNothing({ time: 2, type: "updateLine", id: "l", kind: "line" }, state)).toBe(false);
+    expect(changesNothing({ time: 2, type: "setGlobal", gravity: [-0, -1] }, state)).toBe(false);
+    expect(changesNothing({ time: 2, type: "updateBody", id: "zz", x: 3 }, state)).toBe(false);
+    expect(changesNothing({ time: 2, type: "addBody", id: "a", x: 3, y: 4, r: 1, m: 2 }, state)).toBe(false);
+    expect(changesNothing({ time: 2, type: "removeBody", id: "a" }, state)).toBe(false);
+    expect(
+      changesNothing({ time: 2, type: "giveVelocity", id: "a", v: [1, -2], until: { time: 1 } }, state),
+    ).toBe(false);
   });
 });

@@ -12,18 +12,22 @@
  *   updatePoint of the same point: an updatePoint; into a setGlobal: a setGlobal.
  * The state after the instant is the same: the actions at one instant are applied in order before
  * anything they cause, and the merged action sets each field to its last value. Only the
- * intermediate state between the two, which nothing reads, is no longer checked. One difference
- * in the last bits: an edit that puts back what the action before it changed (m = 2, then m = 1
- * again) merges into an action that changes nothing, which keeps the body's motion (the World's
- * updateBody), so the future is the scene's without either edit bit for bit, where the two actions
- * restarted the motion from the same state and rounded it anew (mergeEdit.prop.test.ts: random
- * series of edits, at a collision's instant too, give the separate actions' future but for that). Only the action
+ * intermediate state between the two, which nothing reads, is no longer checked. Only the action
  * right before merges: another action between them (another object's, or a removal) would then be
  * applied after the merged fields, and the placement checks could differ. An edit with an `until`,
- * or a removal or an add, never merges. Undo still undoes one edit: it restores the whole scene
- * before it (doc/history.ts), with the action as it was. Pure.
+ * or a removal or an add, never merges.
+ * A merged action that changes nothing (changesNothing: m = 2, then m = 1 again, sets what the body
+ * had before either edit) is dropped (the host, remote/host.ts): the scene, its file and its Event
+ * log are then the scene's without either edit, bit for bit. An add never changes nothing, nor does
+ * an action with an `until`. For a body that is also the future the engine gives the merged action,
+ * which the World's updateBody takes as no change and keeps the motion of; the two separate actions
+ * differed from it in the last bits, restarting the motion from the same state and rounding it anew
+ * (mergeEdit.prop.test.ts: random series of edits, at a collision's instant too, give the separate
+ * actions' future, or, when the merged action changes nothing, the future without it). Undo still
+ * undoes one edit: it restores the whole scene before it (doc/history.ts), with the action as it
+ * was. Pure.
  */
-import type { Action } from "../engineTypes";
+import type { Action, SceneState, Vec2 } from "../engineTypes";
 
 /** What names an action rather than sets a field of its object. */
 const NOT_FIELDS = new Set(["time", "type", "id", "until"]);
@@ -83,4 +87,39 @@ export function mergedEdit(
   const t = target(prev);
   if (t === null || t !== target(next)) return null;
   return { index: i, action: combined(prev, next) };
+}
+
+const sameVec = (a: Vec2, b: Vec2): boolean => Object.is(a[0], b[0]) && Object.is(a[1], b[1]);
+
+/**
+ * Whether the update `a` sets only what `before` (the state at its time, after the actions of that
+ * instant before it) already holds, every value the same number (Object.is): a merged edit that put
+ * back what its first edit changed. Adds, removals and actions with an `until` are never "nothing".
+ */
+export function changesNothing(a: Action, before: SceneState): boolean {
+  if (a.until !== undefined) return false;
+  const fields = fieldsOf(a);
+  const same = (has: Record<string, unknown>) =>
+    Object.entries(fields).every(([k, v]) =>
+      Array.isArray(v) ? sameVec(v as unknown as Vec2, has[k] as Vec2) : Object.is(v, has[k]),
+    );
+  switch (a.type) {
+    case "updateBody":
+    case "giveVelocity": {
+      const b = before.bodies.find((s) => s.id === a.id);
+      return b !== undefined && same({ x: b.x, y: b.y, r: b.r, m: b.m, mu: b.mu, v: [b.vx, b.vy] });
+    }
+    case "updateLine": {
+      const l = before.lines.find((s) => s.id === a.id);
+      return l !== undefined && same({ p1: l.p1, p2: l.p2, kind: l.kind });
+    }
+    case "updatePoint": {
+      const p = before.points.find((s) => s.id === a.id);
+      return p !== undefined && same({ p: p.p });
+    }
+    case "setGlobal":
+      return same({ g: before.g, gravity: before.gravity });
+    default:
+      return false;
+  }
 }

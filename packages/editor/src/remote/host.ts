@@ -7,7 +7,8 @@
  * with the engine's message in `info.stopped`, the history computed so far kept. An edit in the past,
  * or a rewrite of the scene, is answered once its later actions are checked (pendingEdit.ts).
  */
-import { mergedEdit } from "../doc/mergeEdit";
+import { checkAction } from "@chapgame/engine";
+import { changesNothing, mergedEdit } from "../doc/mergeEdit";
 import type { Action, PathPiece, SceneFile } from "../engineTypes";
 import { errorInfo } from "./errors";
 import { findEventDetail, stepEventDetail } from "./eventDetail";
@@ -181,7 +182,8 @@ export class TimelineHost extends HostCompute {
    * the rest in slices, with progress and Cancel: an edit before a later action at t = 100 of a
    * 20,000-disc scene blocked the worker for 3.5 s while the engine checked the later actions. The
    * reply then waits until the recomputation has passed them (PendingEdit). With `merge`, an edit
-   * that merges into the action before it (doc/mergeEdit.ts) takes that action's place (mergeInto).
+   * that merges into the action before it (doc/mergeEdit.ts) takes that action's place (mergeInto),
+   * or, when the merged action changes nothing, that action goes.
    */
   private applyAll(actions: Action[], id: number, merge = false): null | typeof DEFERRED {
     if (this.pending.edit) throw new Error("an edit is still being checked: wait for it");
@@ -196,9 +198,13 @@ export class TimelineHost extends HostCompute {
     try {
       for (const a of actions) {
         const merged = merge ? mergedEdit(this.tl.actions, a) : null;
-        this.tl.apply(a, { keepHorizon: false, checkLater: false });
+        if (merged === null) this.tl.apply(a, { keepHorizon: false, checkLater: false });
+        else {
+          checkAction(a, "action"); // a refused field changes nothing, as apply's check does
+          changed = true;
+          this.mergeInto(merged.index, merged.action, a);
+        }
         changed = true;
-        if (merged !== null) this.mergeInto(merged.index, merged.action);
       }
     } catch (e) {
       if (changed) {
@@ -228,15 +234,32 @@ export class TimelineHost extends HostCompute {
   }
 
   /**
-   * After the edit that merges into actions[index] was applied (checked as any edit, right after
-   * it): the two replaced by `action`, both merged. The state after their instant is the same
-   * (doc/mergeEdit.ts); the timeline, computing lazily, goes back to its keyframe before them, and
-   * the reply waits until the history is computed past them again (a PendingEdit, as for an edit
-   * in the past).
+   * An edit that merges into actions[index] (doc/mergeEdit.ts): that action is taken out, which
+   * brings the history back to the keyframe before its time (setActions on this compute: false
+   * timeline computes nothing), the history is computed up to that instant again (its other actions
+   * applied: the action merged into is the instant's last), and the merged action is applied there
+   * and checked as any edit, unless it changes nothing (changesNothing), when it is left out. The
+   * history from the keyframe to the edit's time is computed once, as for an edit of its own in the
+   * past (applying the edit, then replacing the two with setActions, computed it twice, and the
+   * second time in slices with the reply waiting for it); at the horizon the engine has no point to
+   * restart from between the instant's actions, so that one computation stays where an edit of its
+   * own computes nothing. A refused merged action is refused as the edit `next` on its own would
+   * be: the same final place, but the engine names the first field that changed, which may be the
+   * earlier edit's, so the edit is applied after the action again for its message. The caller takes
+   * the list back on an error.
    */
-  private mergeInto(index: number, action: Action): void {
+  private mergeInto(index: number, action: Action, next: Action): void {
     const list = this.tl.actions.slice();
-    list.splice(index, 2, action);
+    const [earlier] = list.splice(index, 1);
     this.tl.setActions(list);
+    this.tl.prolongTo(action.time);
+    if (changesNothing(action, this.tl.stateAt(action.time))) return;
+    try {
+      this.tl.apply(action, { keepHorizon: false, checkLater: false });
+    } catch (e) {
+      this.tl.apply(earlier as Action, { keepHorizon: false, checkLater: false });
+      this.tl.apply(next, { keepHorizon: false, checkLater: false });
+      throw e;
+    }
   }
 }

@@ -10,6 +10,7 @@
  * meanwhile extends the check's job or waits for the check to pass (`afterCheck`). This module holds
  * that state and answers the reply; the host restores its timeline (HostCompute.takeBack).
  */
+import { actionKey } from "../doc/actionDiff";
 import type { Action } from "../engineTypes";
 import { errorInfo } from "./errors";
 import type { ComputeAsk, ComputeStatus, ErrorInfo, HostMessage } from "./protocol";
@@ -95,14 +96,30 @@ export class PendingEdits {
 /**
  * A refusal of a later action, named by its index in the action list before the edit (as a
  * synchronous apply names it, and as the editor explains it): the engine names it by its index in
- * the current list (`actions`), which holds the edit. Actions are the same objects in both lists.
+ * the current list (`actions`), which holds the edit. An edit of its own leaves the other actions
+ * the same objects in both lists; a merged one (host.ts mergeInto) puts copies in place, which are
+ * matched by content, the k-th copy of an action to its k-th occurrence before the edit.
  */
 export function beforeEdit(info: ErrorInfo, p: PendingEdit, actions: readonly Action[]): ErrorInfo {
   const m = info.path === null ? null : /^actions\[(\d+)\]/.exec(info.path);
   if (m === null || !("actions" in p.undo)) return info;
-  const j = p.undo.actions.indexOf(actions[Number(m[1])] as Action);
+  const i = Number(m[1]);
+  const j = sameIndex(p.undo.actions, actions, i);
   if (j < 0) return info;
   const was = m[0];
   const now = `actions[${j}]`;
   return { message: info.message.replace(was, now), path: (info.path as string).replace(was, now) };
+}
+
+/** The index in `before` of the action at `i` in `now`: the same object, else the same occurrence of
+ *  the same content (actionDiff.ts actionKey); -1 when there is none. */
+function sameIndex(before: readonly Action[], now: readonly Action[], i: number): number {
+  const a = now[i] as Action;
+  const same = before.indexOf(a);
+  if (same >= 0) return same;
+  const key = actionKey(a);
+  let k = 0;
+  for (let n = 0; n < i; n++) if (actionKey(now[n] as Action) === key) k++;
+  for (let n = 0; n < before.length; n++) if (actionKey(before[n] as Action) === key && k-- === 0) return n;
+  return -1;
 }

@@ -21,6 +21,7 @@ export interface TimelineLike {
   apply(action: Action, options?: { keepHorizon?: boolean; checkLater?: boolean }): void;
   setActions(actions: readonly Action[]): void;
   prolongSlice(until: Until, budget: number): { done: boolean; events: number; horizon: number };
+  prolongTo(t: number): unknown;
   stateAt(t: number): SceneState;
   bodyArraysAt(t: number, into?: BodyArrays): BodyArrays;
   nextEventTime(t: number): number | null;
