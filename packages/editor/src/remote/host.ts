@@ -239,9 +239,10 @@ export class TimelineHost extends HostCompute {
    * timeline computes nothing), the history is computed up to that instant again (its other actions
    * applied: the action merged into is the instant's last), and the merged action is applied there
    * and checked as any edit, unless it changes nothing (changesNothing), when it is left out. The
-   * history from the keyframe to the edit's time is computed once, as for an edit of its own in the
-   * past (applying the edit, then replacing the two with setActions, computed it twice, and the
-   * second time in slices with the reply waiting for it); at the horizon the engine has no point to
+   * history from the keyframe before the instant up to it is computed once, here, as for an edit
+   * of its own in the past, and the reply waits only for a check of later actions, as its does (applying the edit and then replacing the
+   * two with setActions cost the same computation, in slices, with the reply waiting for them, and
+   * could not tell a merged action that changes nothing); at the horizon the engine has no point to
    * restart from between the instant's actions, so that one computation stays where an edit of its
    * own computes nothing. A refused merged action is refused as the edit `next` on its own would
    * be: the same final place, but the engine names the first field that changed, which may be the
