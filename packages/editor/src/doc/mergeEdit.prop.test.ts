@@ -2,7 +2,7 @@
 // (mergeEdit.ts), gives the future the separate actions give, bit for bit, but for the one case
 // its header names: the merged action changes nothing (changesNothing, which the host then drops),
 // and the future is the scene's without it, bit for bit.
-// Edits at the instant of a collision (t = 4: a meets b) and just before it are among the times.
+// Edits at the instant of a collision (MEET: a meets b) and just before it are among the times.
 import { Timeline } from "@chapgame/engine";
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
@@ -12,7 +12,7 @@ import { changesNothing, mergedEdit } from "./mergeEdit";
 const SEED = Number(process.env.FC_SEED ?? 20261124); // fixed by default so CI is reproducible
 console.log(`mergeEdit.prop.test seed: ${SEED} (FC_SEED=${SEED} to reproduce)`);
 
-/** Three discs in a box: a and b meet at t = 4. */
+/** Three discs in a box: a and b meet at MEET (about 3.86). */
 const BOX: Action[] = [
   { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, v: [1, 0.3] },
   { time: 0, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 2, v: [-1, 0] },
@@ -30,6 +30,13 @@ const scene = (actions: readonly Action[]): SceneFile => ({
   actions: [...actions],
 });
 const END = 30;
+
+/** The time of BOX's first collision (a meets b), read from its log. */
+const MEET = (() => {
+  const tl = Timeline.fromScene(scene(BOX), { compute: false });
+  tl.prolongTo(5);
+  return tl.eventsBetween(0, 5).find((e) => e.type === "bodyBody")!.time;
+})();
 
 /** The state at END of `actions`, or the error computing it gives. */
 function future(actions: readonly Action[]): string {
@@ -53,7 +60,7 @@ const edit = (time: number, id: string): fc.Arbitrary<Action> =>
   );
 
 const series = fc
-  .tuple(fc.constantFrom(0, 3.999, 4, 7.5, 12), fc.constantFrom("a", "b", "c"))
+  .tuple(fc.constantFrom(0, MEET - 0.001, MEET, 7.5, 12), fc.constantFrom("a", "b", "c"))
   .chain(([time, id]) => fc.array(edit(time, id), { minLength: 2, maxLength: 4 }));
 
 describe("merged edits of one body at one instant", () => {
@@ -90,5 +97,24 @@ describe("merged edits of one body at one instant", () => {
       }),
       { seed: SEED, numRuns: 150 },
     );
+  });
+});
+
+describe("changesNothing at a collision's instant", () => {
+  it("reads the velocity the collision gave, as the engine's own no-change check does", () => {
+    const at = (t: number) => {
+      const tl = Timeline.fromScene(scene(BOX), { compute: false });
+      tl.prolongTo(t);
+      return tl.stateAt(t);
+    };
+    const state = at(MEET);
+    const a = state.bodies.find((b) => b.id === "a")!;
+    expect([a.vx, a.vy]).not.toEqual([1, 0.3]); // the collision has turned a
+    const same: Action = { time: MEET, type: "giveVelocity", id: "a", v: [a.vx, a.vy] };
+    const old: Action = { time: MEET, type: "giveVelocity", id: "a", v: [1, 0.3] };
+    expect(changesNothing(same, state)).toBe(true);
+    expect(future([...BOX, same])).toBe(future(BOX));
+    expect(changesNothing(old, state)).toBe(false);
+    expect(future([...BOX, old])).not.toBe(future(BOX));
   });
 });
