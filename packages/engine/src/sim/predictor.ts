@@ -247,37 +247,53 @@ export class Predictor extends ContactTimes {
   protected crossing(s: number, k: number, cx: number, cy: number): void {
     const b = this.store;
     const grid = this.grid;
-    const t0 = b.mot[s * 8 + 0] as number;
+    const m = b.mot;
+    // Record offsets as s << 3 and fields as i | f (as in solvePair: no overflow checks).
+    const i = s << 3;
+    const t0 = m[i] as number;
     const lo = this.now - t0;
-    const hi = (b.mot[s * 8 + 7] as number) - t0;
-    // Cell bounds without allocation; edge cells extend to infinity. Level k's boundaries are
-    // level 0's boundaries (cx << k), computed the same way.
-    const x0 = cx === 0 ? -INF : grid.boundaryX(cx << k);
-    const x1 = cx === (grid.nxOf[k] as number) - 1 ? INF : grid.boundaryX((cx + 1) << k);
-    const y0 = cy === 0 ? -INF : grid.boundaryY(cy << k);
-    const y1 = cy === (grid.nyOf[k] as number) - 1 ? INF : grid.boundaryY((cy + 1) << k);
-    const tx = axisExit(
-      b.mot[s * 8 + 1] as number,
-      b.mot[s * 8 + 3] as number,
-      0.5 * (b.mot[s * 8 + 5] as number),
-      lo,
-      hi,
-      x0,
-      x1,
-      side,
-    );
-    const sx = side[0] as number;
-    const ty = axisExit(
-      b.mot[s * 8 + 2] as number,
-      b.mot[s * 8 + 4] as number,
-      0.5 * (b.mot[s * 8 + 6] as number),
-      lo,
-      hi,
-      y0,
-      y1,
-      side,
-    );
-    const sy = side[0] as number;
+    const hax = 0.5 * (m[i | 5] as number);
+    const hay = 0.5 * (m[i | 6] as number);
+    let tx = INF;
+    let ty = INF;
+    let sx = 0;
+    let sy = 0;
+    if (hax === 0 && hay === 0) {
+      // Uniform motion (the gas without friction or gravity): axisExit's division for the end
+      // ahead on each axis, inline, with the same operands, so the same bits.
+      const vx = m[i | 3] as number;
+      const vy = m[i | 4] as number;
+      if (vx > 0) {
+        if (cx !== (grid.nxOf[k] as number) - 1) {
+          sx = 1;
+          tx = Math.max(lo, (grid.boundaryX((cx + 1) << k) - (m[i | 1] as number)) / vx);
+        }
+      } else if (vx < 0 && cx !== 0) {
+        sx = -1;
+        tx = Math.max(lo, (grid.boundaryX(cx << k) - (m[i | 1] as number)) / vx);
+      }
+      if (vy > 0) {
+        if (cy !== (grid.nyOf[k] as number) - 1) {
+          sy = 1;
+          ty = Math.max(lo, (grid.boundaryY((cy + 1) << k) - (m[i | 2] as number)) / vy);
+        }
+      } else if (vy < 0 && cy !== 0) {
+        sy = -1;
+        ty = Math.max(lo, (grid.boundaryY(cy << k) - (m[i | 2] as number)) / vy);
+      }
+    } else {
+      const hi = (m[i | 7] as number) - t0;
+      // Cell bounds without allocation; edge cells extend to infinity. Level k's boundaries are
+      // level 0's boundaries (cx << k), computed the same way.
+      const x0 = cx === 0 ? -INF : grid.boundaryX(cx << k);
+      const x1 = cx === (grid.nxOf[k] as number) - 1 ? INF : grid.boundaryX((cx + 1) << k);
+      const y0 = cy === 0 ? -INF : grid.boundaryY(cy << k);
+      const y1 = cy === (grid.nyOf[k] as number) - 1 ? INF : grid.boundaryY((cy + 1) << k);
+      tx = axisExit(m[i | 1] as number, m[i | 3] as number, hax, lo, hi, x0, x1, side);
+      sx = side[0] as number;
+      ty = axisExit(m[i | 2] as number, m[i | 4] as number, hay, lo, hi, y0, y1, side);
+      sy = side[0] as number;
+    }
     // Directions: 0 -x, 1 +x, 2 -y, 3 +y.
     const best = Math.min(tx, ty);
     b.crossDir[s] = best === INF ? -1 : tx <= ty ? (sx < 0 ? 0 : 1) : sy < 0 ? 2 : 3;
