@@ -14,25 +14,27 @@ export class CellCrossings extends Predictor {
     // Only level 0 holds bodies: a plain grid's crossing, inline (as in predict).
     const b = this.store;
     const grid = this.grid;
+    const nx = grid.nx | 0;
     const cell = grid.cellOf[s] as number;
-    let cx = cell % grid.nx;
-    let cy = (cell - cx) / grid.nx;
+    // In integers: cell / nx truncated is the row (cell >= 0).
+    let cy = (cell / nx) | 0;
+    let cx = cell - cy * nx;
     const dir = b.crossDir[s] as number;
     if (dir === 0) cx--;
     else if (dir === 1) cx++;
     else if (dir === 2) cy--;
     else cy++;
-    grid.move(s, cy * grid.nx + cx);
+    grid.move(s, cy * nx + cx);
     this.stamp++;
     // The strip (one column or one row of three cells), clipped to the grid, scanned by one loop:
     // one call site, so that V8 inlines the scans (and the pair test) once, in full.
     const xa = Math.max(0, dir === 1 ? cx + 1 : cx - 1);
-    const xb = Math.min(grid.nx - 1, dir === 0 ? cx - 1 : cx + 1);
+    const xb = Math.min(nx - 1, dir === 0 ? cx - 1 : cx + 1);
     const ya = Math.max(0, dir === 3 ? cy + 1 : cy - 1);
     const yb = Math.min(grid.ny - 1, dir === 2 ? cy - 1 : cy + 1);
     for (let y = ya; y <= yb; y++)
       for (let x = xa; x <= xb; x++) {
-        const c = y * grid.nx + x;
+        const c = y * nx + x;
         this.scanCell(s, c, true);
         this.scanCellObstacles(s, c);
       }

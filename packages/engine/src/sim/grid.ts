@@ -109,8 +109,10 @@ export class Grid {
     this.ox = ox;
     this.oy = oy;
     this.w = w;
-    this.nx = nx;
-    this.ny = ny;
+    // Whole numbers below 2^31 (cell counts): stored as small integers, so that the hot path's cell
+    // arithmetic runs in integers (a field that once held a double stays a boxed double).
+    this.nx = nx | 0;
+    this.ny = ny | 0;
     const nxOf: number[] = [];
     const nyOf: number[] = [];
     const fit: number[] = [];

@@ -92,20 +92,23 @@ export class Predictor extends ContactTimes {
       this.heap.set(s, Math.min(b.evTime[s] as number, b.crossTime[s] as number));
       return;
     }
+    // Cell coordinates in integers (cell / nx truncated is the row).
+    const nx = grid.nx | 0;
+    const ny = grid.ny | 0;
     const cell = grid.cellOf[s] as number;
-    const cx = cell % grid.nx;
-    const cy = (cell - cx) / grid.nx;
+    const cy = (cell / nx) | 0;
+    const cx = cell - cy * nx;
     this.stamp++;
     for (let y = cy - 1; y <= cy + 1; y++) {
-      if (y < 0 || y >= grid.ny) continue;
+      if (y < 0 || y >= ny) continue;
       for (let x = cx - 1; x <= cx + 1; x++) {
-        if (x < 0 || x >= grid.nx) continue;
-        this.scanCell(s, y * grid.nx + x, moving);
-        if (moving) this.scanCellObstacles(s, y * grid.nx + x);
+        if (x < 0 || x >= nx) continue;
+        this.scanCell(s, y * nx + x, moving);
+        if (moving) this.scanCellObstacles(s, y * nx + x);
       }
     }
     if (moving) for (const i of this.globalLines) this.testLine(s, i);
-    if (moving && (grid.nx > 1 || grid.ny > 1)) this.crossing(s, 0, cx, cy);
+    if (moving && (nx > 1 || ny > 1)) this.crossing(s, 0, cx, cy);
     else b.crossTime[s] = INF;
     const key = Math.min(b.evTime[s] as number, b.crossTime[s] as number);
     this.heap.set(s, key);
