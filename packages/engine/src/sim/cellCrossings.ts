@@ -7,7 +7,7 @@ import { Predictor } from "./predictor.js";
 
 export class CellCrossings extends Predictor {
   protected processCrossing(s: number): void {
-    if (!this.grid.flat) {
+    if (this.grid.flat !== true) {
       this.crossLevels(s);
       return;
     }
