@@ -38,6 +38,7 @@ export class ContactTimes extends BroadPhase {
     this.memoVS = vs;
     this.memoVO = vo;
     this.memoTime = this.now;
+    this.memoResult = this.pairResult;
     return this.memoResult;
   }
 
@@ -47,12 +48,14 @@ export class ContactTimes extends BroadPhase {
   private memoVO = -1;
   private memoTime = Number.NaN;
   private memoResult = INF;
+  /** What the last solvePair found (its result: see there). */
+  protected pairResult = INF;
 
   /**
-   * Solve the pair into `memoResult`. Not returned: V8 boxes a double that a call it does not
+   * Solve the pair into `pairResult`. Not returned: V8 boxes a double that a call it does not
    * inline returns (a heap allocation per pair test), and a double field is written in place.
    */
-  private solvePair(s: number, o: number): void {
+  protected solvePair(s: number, o: number): void {
     const b = this.store;
     const m = b.mot;
     // Record offsets as s << 3 and fields as i | k: integer operations V8 compiles without the
@@ -73,7 +76,7 @@ export class ContactTimes extends BroadPhase {
         (b.boxMinY[s] as number) > (b.boxMaxY[o] as number) ||
         (b.boxMinY[o] as number) > (b.boxMaxY[s] as number)
       ) {
-        this.memoResult = INF;
+        this.pairResult = INF;
         return;
       }
     }
@@ -99,7 +102,7 @@ export class ContactTimes extends BroadPhase {
     const uy = vyo - vys;
     // Cheap rejection before any solve: with no relative acceleration a receding pair never meets.
     if (axo === axs && ayo === ays && dx * ux + dy * uy >= 0 && this.opt.recedingReject) {
-      this.memoResult = INF;
+      this.pairResult = INF;
       return;
     }
     const R = (b.r[s] as number) + (b.r[o] as number);
@@ -120,7 +123,7 @@ export class ContactTimes extends BroadPhase {
       Math.abs(dx) * (Math.abs(axs) + Math.abs(axo)) + Math.abs(dy) * (Math.abs(ays) + Math.abs(ayo)),
       INF_NEG, // two discs never rest on each other (a field accelerates both alike)
     );
-    this.memoResult = tau === INF ? INF : Math.max(tb + tau, this.now);
+    this.pairResult = tau === INF ? INF : Math.max(tb + tau, this.now);
   }
 
   /**
