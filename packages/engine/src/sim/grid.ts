@@ -135,7 +135,9 @@ export class Grid {
     for (let k = 0; k < levels; k++)
       this.base[k + 1] = (this.base[k] as number) + (nxOf[k] as number) * (nyOf[k] as number);
     const cells = this.base[levels] as number;
-    if (this.head.length < cells) this.head = new Int32Array(cells);
+    // Reused while large enough; given back when a rebuild needs far fewer cells (a roomy layout
+    // while a scene is built can be many times the final one: 180,000 cells for 40,000 at N = 10⁴).
+    if (this.head.length < cells || this.head.length > 4 * cells + 1024) this.head = new Int32Array(cells);
     this.head.fill(-1, 0, cells);
     this.count = new Int32Array(levels);
     // No obstacles until setObstacles (which a rebuild calls after placing the bodies).
