@@ -113,7 +113,12 @@ export function SceneCanvas() {
     let fittedView: View | null = null;
     const unsubUi = ui.subscribe((s, p) => {
       if (s.fitRequest !== p.fitRequest) fitPending = true;
-      if (s.view !== p.view && s.view !== fittedView) fitted = false;
+      if (s.view !== p.view && s.view !== fittedView) {
+        fitted = false;
+        // A view the reader sets before the fit's frame arrives wins over that fit (a zoom right
+        // after a load was undone when the first frame came in), unless it came with the request.
+        if (s.fitRequest === p.fitRequest) fitPending = false;
+      }
       if (
         s.view !== p.view ||
         s.selection !== p.selection ||
