@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { ACTION_FIELDS, checkAction } from "./action.js";
+import { ACTION_FIELDS, ACTION_TYPES, checkAction } from "./action.js";
 
 describe("checkAction", () => {
   it("returns the keys in canonical order whichever optional fields are given (mu came after v)", () => {
@@ -28,5 +28,22 @@ describe("checkAction defaults", () => {
     a.v[0] = 5;
     expect(b.v).toEqual([0, 0]);
     expect(checkAction(raw, "c")).toMatchObject({ v: [0, 0] });
+  });
+});
+
+describe("ACTION_TYPES", () => {
+  it("lists the eleven types in the format's order, and cannot be changed at run time", () => {
+    expect(ACTION_TYPES).toEqual(Object.keys(ACTION_FIELDS));
+    expect(ACTION_TYPES[0]).toBe("addBody");
+    expect(ACTION_TYPES.at(-1)).toBe("setGlobal");
+    expect(Object.isFrozen(ACTION_TYPES)).toBe(true);
+    const mutable = ACTION_TYPES as unknown as string[];
+    expect(() => mutable.push("addDisc")).toThrow(TypeError);
+    expect(() => mutable.sort()).toThrow(TypeError);
+    expect(ACTION_TYPES).toHaveLength(11);
+    // The refusal of an unknown type still quotes the list as it was.
+    expect(() => checkAction({ time: 0, type: "addDisc", id: "a" }, "a")).toThrow(
+      `a.type: unknown action type "addDisc" (known: ${Object.keys(ACTION_FIELDS).join(", ")})`,
+    );
   });
 });

@@ -3,7 +3,8 @@
  * World's magnitude limits: magnitudes.ts) and
  * returns it normalized (addBody gets mu 0 and v [0, 0] when absent; keys in canonical order).
  * Checks that need the scene's state (ids that exist, overlaps) are in sceneRules.ts.
- * ACTION_FIELDS gives the canonical key order used by serializeScene.
+ * ACTION_FIELDS gives the canonical key order used by serializeScene; ACTION_TYPES (frozen) the
+ * type names in that order.
  */
 import { SceneError } from "./errors.js";
 import {
@@ -64,8 +65,10 @@ export const ACTION_FIELDS: Readonly<Record<ActionType, readonly FieldSpec[]>> =
   ],
 };
 
-/** The type names of all actions ("addBody", "giveVelocity", ..., "setGlobal"). */
-export const ACTION_TYPES = Object.keys(ACTION_FIELDS) as ActionType[];
+/** The type names of all actions ("addBody", "giveVelocity", ..., "setGlobal"), in the format's
+ *  order. Frozen: a caller cannot change the list the error messages quote (push or sort throw a
+ *  TypeError); copy it (`[...ACTION_TYPES]`) to edit. */
+export const ACTION_TYPES: readonly ActionType[] = Object.freeze(Object.keys(ACTION_FIELDS) as ActionType[]);
 
 function checkUntil(raw: unknown, path: string): { time?: number; events?: number } {
   if (!isObject(raw)) throw refuse(path, "must be an object with optional time and events", raw);
