@@ -4,19 +4,13 @@
  * root per piece whose ends have opposite exact signs (see README.md, steps 5–7).
  *
  * `solveLevel0(P, n, m, lo, hi, splits, ns, out)`: P the (scaled) polynomial of degree n already
- * loaded into certify.ts, m its degree after the degree drop, splits[0..ns) the sorted critical
+ * loaded into certify.ts (and so criticalPoint.ts), m its degree after the degree drop, splits[0..ns) the sorted critical
  * points inside (lo, hi); appends the roots, ascending and distinct, to out. `push` appends one root
  * keeping out strictly increasing. Module scratch arrays, grown on demand.
  */
 
-import {
-  certSign,
-  criticalPoint,
-  lastAbsValue,
-  lastWasNoisy,
-  nearestCritical,
-  refineRoot,
-} from "./certify.js";
+import { certSign, lastAbsValue, lastWasNoisy, refineRoot } from "./certify.js";
+import { criticalPoint, nearestCritical } from "./criticalPoint.js";
 import { newtonPlain, quadRootsPlain } from "./newton.js";
 
 let cap = 0;
