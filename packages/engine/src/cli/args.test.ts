@@ -27,7 +27,7 @@ describe("parseArgs", () => {
     expect(parseArgs(["simulate", "-"])).toMatchObject({ scene: "-" });
     expect(() => parseArgs(["simulate", "-odd.json"])).toThrow("unknown option -odd.json");
   });
-  it("parses --compact for both commands", () => {
+  it("parses --compact for every command that prints JSON (check had none: a CI loop over commands hit it)", () => {
     expect(parseArgs(["simulate", "s.json", "--compact"])).toMatchObject({
       command: "simulate",
       compact: true,
@@ -36,6 +36,12 @@ describe("parseArgs", () => {
       command: "state",
       compact: true,
     });
+    expect(parseArgs(["check", "s.json", "--compact"])).toEqual({
+      command: "check",
+      scene: "s.json",
+      compact: true,
+    });
+    expect(parseArgs(["check", "s.json"])).toEqual({ command: "check", scene: "s.json" });
     expect(() => parseArgs(["state", "s.json", "--at", "1", "--compact=yes"])).toThrow(
       "--compact takes no value",
     );
@@ -156,7 +162,7 @@ describe("parseArgs", () => {
     // regression: an option was taken for the value of the one before it
     [["simulate", "a", "--until-time", "--events"], "--until-time needs a value"],
     [["--version", "extra"], '--version takes no arguments, got "extra"'],
-    [["check", "a", "--events"], "unknown option --events for check (options: --progress)"],
+    [["check", "a", "--events"], "unknown option --events for check (options: --compact, --progress)"],
     [["check"], "check: missing SCENE file"],
     [["path", "a", "--to", "1"], "path: --id ID is required"],
     [["path", "a", "--id", "b"], "path: --to T is required"],

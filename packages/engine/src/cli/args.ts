@@ -3,7 +3,7 @@
  *   chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--compact] [--progress]
  *   chapgame state SCENE --at T [--events] [--compact] [--progress]
  *   chapgame path SCENE --id ID --to T [--from T] [--compact] [--progress]
- *   chapgame check SCENE [--progress]
+ *   chapgame check SCENE [--compact] [--progress]
  * (USAGE, the --help text, describes them, the result, how a run ends and the exit statuses.)
  *   chapgame --help | help
  *   chapgame --version
@@ -45,7 +45,7 @@ export type Command =
       compact?: boolean;
       progress?: boolean;
     }
-  | { command: "check"; scene: string; progress?: boolean };
+  | { command: "check"; scene: string; compact?: boolean; progress?: boolean };
 
 export const USAGE = `Usage:
   chapgame simulate SCENE [--until-time T] [--max-events N] [--events] [--compact] [--progress]
@@ -77,7 +77,7 @@ export const USAGE = `Usage:
       An ID no addBody of the scene names is refused (exit 2) with the scene's bodies listed.
       A run the exact model cannot continue before --to prints the pieces up to where it
       stopped, with "to" there, "reason": "error" and "error": why, and exits with 2.
-  chapgame check SCENE [--progress]
+  chapgame check SCENE [--compact] [--progress]
       Check a scene file whole: every field, and every action against the simulation (ids that
       exist, overlaps with bodies that have moved), computing exactly up to its last action, so it
       ends for any scene. Prints {"valid": true, "actions": N, "checkedTo": T, "events": E} and
@@ -173,7 +173,7 @@ export function parseArgs(argv: readonly string[]): Command {
         ? ["--at", "--events", "--compact", "--progress"]
         : cmd === "path"
           ? ["--id", "--from", "--to", "--compact", "--progress"]
-          : ["--progress"];
+          : ["--compact", "--progress"];
   let optionsEnd = false;
   for (let i = 0; i < rest.length; i++) {
     const arg = rest[i] as string;
@@ -211,6 +211,7 @@ export function parseArgs(argv: readonly string[]): Command {
   const compact = opts.has("--compact");
   if (cmd === "check") {
     const c: Command = { command: "check", scene };
+    if (compact) c.compact = true;
     if (progress) c.progress = true;
     return c;
   }

@@ -66,4 +66,25 @@ describe("check: a scene file validated whole, up to its last action", () => {
     expect(j.result.valid).toBe(false);
     expect(j.result.error).toMatch(/JSON/);
   });
+
+  it("--compact writes the same object on one line, valid or not", () => {
+    const run = (text: string, argv: string[]) => {
+      const { cli, out } = io({ "s.json": text });
+      return { status: runCli(argv, cli), ...out };
+    };
+    const ok = sceneText(RESTS_AT_5.filter((a) => a.type !== "setGlobal"));
+    const wide = run(ok, ["check", "s.json"]);
+    const compact = run(ok, ["check", "s.json", "--compact"]);
+    expect(compact.status).toBe(0);
+    expect(compact.stdout).toBe('{"valid":true,"actions":5,"checkedTo":0,"events":0}\n');
+    expect(JSON.parse(compact.stdout)).toEqual(JSON.parse(wide.stdout));
+    const bad = sceneText([{ time: 0, type: "addBody", id: "a", x: 0, y: 0, r: -1, m: 1 }]);
+    const refused = run(bad, ["check", "--compact", "s.json"]);
+    expect(refused.status).toBe(2);
+    expect(refused.stdout.split("\n")).toEqual([
+      expect.stringMatching(/^\{"valid":false,"error":"actions\[0\]\.r: /),
+      "",
+    ]);
+    expect(JSON.parse(refused.stdout)).toEqual(JSON.parse(run(bad, ["check", "s.json"]).stdout));
+  });
 });

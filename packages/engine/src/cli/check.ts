@@ -16,14 +16,16 @@ import { Interrupted } from "./slices.js";
  * {"valid": true, "actions", "checkedTo", "events"} and returns 0, or {"valid": false, "error",
  * "path"} (the message on stderr too, after the file's name) and returns 2; a Zeno state before the
  * last action is invalid too (path null). An interrupt prints nothing on stdout and returns 130 / 143.
+ * `compact` writes the object on one line (`--compact`), else indented.
  */
 export function* checkScene(
   read: () => string,
   file: string,
   line: ProgressLine,
+  compact = false,
 ): Generator<void, number, void> {
   const io = line.io;
-  const write = (result: object) => io.stdout(`${JSON.stringify(result, null, 2)}\n`);
+  const write = (result: object) => io.stdout(`${JSON.stringify(result, null, compact ? 0 : 2)}\n`);
   const invalid = (e: Error, path: string | null) => {
     const error = printable(e.message);
     write({ valid: false, error, path });

@@ -61,7 +61,7 @@ function* command(argv: readonly string[], given: CliIO): Generator<void, number
     source = cmd.scene === "-" ? "<stdin>" : cmd.scene;
     // the text is read where it is parsed, and not kept (150 MB for a million bodies)
     const read = () => readText(io, cmd.scene, line);
-    if (cmd.command === "check") return yield* checkScene(read, printable(source), line);
+    if (cmd.command === "check") return yield* checkScene(read, printable(source), line, cmd.compact);
     const scene = parseSceneFrom(read);
     // the scene's own bound only when the command line gives none
     const bound =
