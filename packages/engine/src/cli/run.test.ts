@@ -17,6 +17,32 @@ describe("runCli in-process", () => {
     expect(without.out.stdout).toBe("chapgame (version unknown)\n");
   });
 
+  it("a file that cannot be read: one line saying why in words, exit 2, nothing on stdout", () => {
+    // Node's message ("ENOENT: no such file or directory, open 'nope.json'") named the file twice.
+    const { cli, out } = io({});
+    expect(runCli(["simulate", "nope.json"], cli)).toBe(2);
+    expect(out).toEqual({ stdout: "", stderr: "chapgame: cannot read nope.json: no such file (ENOENT)\n" });
+    const failing = (error: Error) => {
+      const r = io({});
+      r.cli.readFile = () => {
+        throw error;
+      };
+      expect(runCli(["check", "s.json"], r.cli)).toBe(2);
+      expect(r.out.stdout).toBe("");
+      return r.out.stderr;
+    };
+    const coded = (code: string) => Object.assign(new Error(`${code}: node's text`), { code });
+    expect(failing(coded("EISDIR"))).toBe(
+      "chapgame: cannot read s.json: it is a folder, not a file (EISDIR)\n",
+    );
+    expect(failing(coded("EACCES"))).toBe("chapgame: cannot read s.json: permission denied (EACCES)\n");
+    // a code without words of its own keeps the system's message (its first line)
+    expect(failing(coded("EIO"))).toBe("chapgame: cannot read s.json: EIO: node's text\n");
+    expect(failing(new Error("not UTF-8 text: byte 0xE9\nmore"))).toBe(
+      "chapgame: cannot read s.json: not UTF-8 text: byte 0xE9\n",
+    );
+  });
+
   it("a run the engine cannot continue prints the result up to where it stopped, then exits 2", () => {
     // Audit of session 15: exit 2 and nothing on stdout, so the events computed before were lost.
     const { cli, out } = io({ "rest.json": sceneText(RESTS_AT_5) });

@@ -143,13 +143,26 @@ function* command(argv: readonly string[], given: CliIO): Generator<void, number
   }
 }
 
+/** Why a file could not be read, in words, for the system errors a user meets (Node's own message,
+ *  "ENOENT: no such file or directory, open 'x.json'", repeats the name); others as Node says. */
+const READ_ERRORS: Readonly<Record<string, string>> = {
+  ENOENT: "no such file",
+  EISDIR: "it is a folder, not a file",
+  EACCES: "permission denied",
+  EPERM: "permission denied",
+  ENOTDIR: "a part of the path is not a folder",
+};
+
 /** The scene file's text (a UsageError when it cannot be read); a long one is announced. */
 function readText(io: CliIO, path: string, line: ProgressLine): string {
   let text: string;
   try {
     text = io.readFile(path);
   } catch (e) {
-    throw new UsageError(`cannot read ${path}: ${(e as Error).message.split("\n")[0]}`);
+    const code = (e as { code?: unknown }).code;
+    const known = typeof code === "string" && Object.hasOwn(READ_ERRORS, code);
+    const why = known ? `${READ_ERRORS[code]} (${code})` : (e as Error).message.split("\n")[0];
+    throw new UsageError(`cannot read ${path}: ${why}`);
   }
   line.reading(text);
   return text;

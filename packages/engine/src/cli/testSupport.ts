@@ -12,7 +12,8 @@ export function io(files: Record<string, string>, progress = false) {
   const cli: CliIO = {
     readFile: (p) => {
       const f = files[p];
-      if (f === undefined) throw new Error(`ENOENT: no such file or directory, open '${p}'`);
+      if (f === undefined)
+        throw Object.assign(new Error(`ENOENT: no such file or directory, open '${p}'`), { code: "ENOENT" });
       return f;
     },
     stdout: (t) => {
