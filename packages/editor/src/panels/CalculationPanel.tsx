@@ -1,6 +1,7 @@
 /**
  * Calculation: compute ahead by seconds and/or events, or without limit (∞); the horizon; automatic
- * extension during playback; progress and Cancel while the worker computes. The horizon is plain
+ * extension during playback; progress and Cancel while the worker computes. Compute and Auto-extend
+ * say what they do in their titles (a new user read "Time 10 s" as the current time). The horizon is plain
  * text, not an <output> (a live region: a screen reader announced it every 50 ms while computing).
  * Cancel goes with the computation: if it had the keyboard focus, the focus goes to Compute (it
  * fell to the page: review). Compute, greyed out while the worker computes, keeps the focus
@@ -114,10 +115,15 @@ export function CalculationPanel() {
         </button>
       </div>
       <div className="row">
-        <FocusKeptButton ref={computeRef} enabled={computing === null} onPress={() => editor.computeAhead()}>
+        <FocusKeptButton
+          ref={computeRef}
+          enabled={computing === null}
+          onPress={() => editor.computeAhead()}
+          title="Compute further past the horizon: the seconds and/or events ticked above (∞: until no event is left)"
+        >
           Compute
         </FocusKeptButton>
-        <label>
+        <label title="While playing forwards, compute further by itself as the time nears the horizon (as Compute does)">
           <input
             type="checkbox"
             checked={calc.autoExtend}

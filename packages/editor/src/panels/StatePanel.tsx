@@ -1,7 +1,8 @@
 /**
  * State: Copy / Paste the scene as JSON (format v1; a broken paste shows the validation message and
- * keeps the current scene; a paste is one undo step, and says so), Clear, a shareable link (copied,
- * the address bar left as it is). Undo, Redo, Save file and Load file are in the header
+ * keeps the current scene; a paste is one undo step, and says so), Clear scene (named so: a plain
+ * "Clear" beside the text box read as clearing the box), a shareable link (copied, the address bar
+ * left as it is). Undo, Redo, Save file and Load file are in the header
  * (SceneActions.tsx).
  */
 import { useState } from "react";
@@ -69,8 +70,12 @@ export function StatePanel() {
     <section className="panel" aria-labelledby="state-title">
       <h2 id="state-title">State</h2>
       <div className="row">
-        <button type="button" onClick={() => void editor.clear()}>
-          Clear
+        <button
+          type="button"
+          title="Remove every body, line, point and action (Undo brings them back)"
+          onClick={() => void editor.clear()}
+        >
+          Clear scene
         </button>
         <button type="button" onClick={() => void share()}>
           Share link

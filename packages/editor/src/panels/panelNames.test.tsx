@@ -10,9 +10,11 @@ import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
 import { cradleEditor } from "../testing/harness";
 import { BodiesTable } from "./BodiesTable";
+import { CalculationPanel } from "./CalculationPanel";
 import { EventLog, ROW_HINT } from "./EventLog";
 import { LinesTable } from "./LinesTable";
 import { PointsTable } from "./PointsTable";
+import { StatePanel } from "./StatePanel";
 import { TimePanel } from "./TimePanel";
 
 afterEach(cleanup);
@@ -69,5 +71,34 @@ describe("panel names", () => {
       expect(row.getAttribute("aria-label")).toBeNull();
     }
     expect(ROW_HINT).toMatch(/Enter.*go to this event/);
+  });
+
+  it('the State panel\'s button that empties the scene says so: "Clear scene" (a plain "Clear" beside the text box read as clearing the box)', async () => {
+    const h = await cradleEditor();
+    render(
+      <EditorContext.Provider value={h.editor}>
+        <StatePanel />
+      </EditorContext.Provider>,
+    );
+    const clear = screen.getByRole("button", { name: "Clear scene" });
+    expect(clear.title).toBe("Remove every body, line, point and action (Undo brings them back)");
+    expect(screen.queryByRole("button", { name: "Clear" })).toBeNull();
+    expect(h.editor.doc.actions.length).toBeGreaterThan(0);
+    clear.click();
+    await waitFor(() => expect(h.editor.doc.actions).toEqual([]));
+  });
+
+  it("Compute and Auto-extend say in their tooltips what they compute", async () => {
+    const h = await cradleEditor();
+    render(
+      <EditorContext.Provider value={h.editor}>
+        <CalculationPanel />
+      </EditorContext.Provider>,
+    );
+    expect(screen.getByRole("button", { name: "Compute" }).title).toMatch(
+      /^Compute further past the horizon/,
+    );
+    const auto = screen.getByRole("checkbox", { name: "Auto-extend" });
+    expect(auto.closest("label")?.title).toMatch(/^While playing forwards, compute further by itself/);
   });
 });
