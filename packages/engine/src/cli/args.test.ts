@@ -131,7 +131,10 @@ describe("parseArgs", () => {
   });
   const bad: [string[], string][] = [
     [[], "missing command"],
-    [["run", "x"], 'unknown command "run"'],
+    [["run", "x"], 'unknown command "run" (commands: simulate, state, path, check; try chapgame --help)'],
+    // an option before the command (a misspelt --version, or the command left out) is not a command
+    [["--versio"], "unknown option --versio before a command: the command comes first (simulate, state"],
+    [["--until-time", "5", "s.json"], "unknown option --until-time before a command"],
     [["simulate"], "simulate: missing SCENE file"],
     [["simulate", "a", "b"], "one SCENE file expected"],
     [["simulate", "a", "--at", "1"], "unknown option --at for simulate"],

@@ -162,7 +162,11 @@ export function parseArgs(argv: readonly string[]): Command {
   }
   const [cmd, ...rest] = argv;
   if (cmd !== "simulate" && cmd !== "state" && cmd !== "path" && cmd !== "check")
-    throw new UsageError(`unknown command "${cmd}" (try chapgame --help)`);
+    throw new UsageError(
+      cmd?.startsWith("-")
+        ? `unknown option ${cmd} before a command: the command comes first (simulate, state, path or check; try chapgame --help)`
+        : `unknown command "${cmd}" (commands: simulate, state, path, check; try chapgame --help)`,
+    );
   const positional: string[] = [];
   const opts = new Map<string, string | true>();
   const valued = VALUED;
