@@ -12,7 +12,7 @@
  */
 import type { Size } from "./canvas/viewTransform";
 import type { Editor } from "./editor";
-import { saveSceneFile } from "./panels/sceneFile";
+import { saveScene } from "./panels/sceneFile";
 import { type KeyContext, SHORTCUTS } from "./shortcuts";
 
 /** Input types whose keys are text editing (every shortcut is left to them). */
@@ -89,7 +89,7 @@ export function handleKey(editor: Editor, e: KeyboardEvent, save: () => void = (
 export function bindKeyboard(
   editor: Editor,
   target: Window = window,
-  save: () => void = () => saveSceneFile(editor.doc),
+  save: () => void = () => saveScene(editor),
 ): () => void {
   const listener = (e: KeyboardEvent) => {
     if (handleKey(editor, e, save)) e.preventDefault();

@@ -2,7 +2,7 @@
  * The header's scene actions, first in the tab order and always in view (they sat at the foot of the
  * side column, off-screen at 1280×800 and hundreds of tab stops after the tables): Undo / Redo
  * (editorUndo.ts; Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y), Save file (Ctrl/Cmd+S) and Load file (as a dropped
- * file, doc/openScene.ts). Clear, Share link and the scene JSON stay in the State panel.
+ * file, doc/openScene.ts). Clear scene, Share link and the scene JSON stay in the State panel.
  */
 import { useRef } from "react";
 import { openSceneFile } from "../doc/openScene";
@@ -10,7 +10,7 @@ import { canRedo as redoable, canUndo as undoable } from "../doc/undoIntents";
 import { useEditor, useHistory } from "../EditorContext";
 import { useStore } from "../store/createStore";
 import { FocusKeptButton } from "./FocusKeptButton";
-import { saveSceneFile } from "./sceneFile";
+import { saveScene } from "./sceneFile";
 
 export function SceneActions() {
   const editor = useEditor();
@@ -36,7 +36,7 @@ export function SceneActions() {
       <FocusKeptButton title="Ctrl+Shift+Z or Ctrl+Y" enabled={canRedo} onPress={() => void editor.redo()}>
         Redo
       </FocusKeptButton>
-      <button type="button" title="Ctrl+S" onClick={() => saveSceneFile(editor.doc)}>
+      <button type="button" title="Ctrl+S" onClick={() => saveScene(editor)}>
         Save file
       </button>
       <button type="button" onClick={() => fileRef.current?.click()}>
