@@ -113,7 +113,7 @@ export function solveLevel0(
 /**
  * Where p is at rounding-noise level at a critical point, plain arithmetic cannot resolve the
  * structure around it (a cluster of roots of p′): the nearest exact sign changes of p′ on each side
- * (found with certified signs, see certify.ts) are inserted as further piece ends with their exact
+ * (found with certified signs, see criticalPoint.ts) are inserted as further piece ends with their exact
  * signs of p, and the search goes on beyond each inserted point while p is still at noise level
  * there, so that no root hides in a non-monotone piece. Returns the new number of points.
  */
