@@ -45,6 +45,26 @@ describe("opening a scene file", () => {
     expect(editor.doc).toBe(before);
   });
 
+  it("a file that is not UTF-8 is refused, naming the file, instead of opening with its bad bytes replaced", async () => {
+    const { editor } = await cradleEditor();
+    const before = editor.doc;
+    const scene = { ...LONELY, actions: [{ ...LONELY.actions[0], id: "caf\u00e9" }] };
+    const text = JSON.stringify(scene);
+    // Latin-1: one byte per character, so the é is the lone byte 0xE9
+    const latin1 = Uint8Array.from(text, (c) => c.charCodeAt(0));
+    const err = await openSceneFile(editor, new File([latin1], "latin1.json", { type: "application/json" }));
+    expect(err).toBe(
+      "latin1.json: not UTF-8 text (a scene file is UTF-8 JSON: save it as UTF-8 and open it again); nothing was opened.",
+    );
+    expect(editor.ui.getState().message).toEqual({ text: err, tone: "error" });
+    expect(editor.doc).toBe(before);
+    // the same scene in UTF-8 opens, with its id as written
+    expect(
+      await openSceneFile(editor, new File([text], "utf8.json", { type: "application/json" })),
+    ).toBeNull();
+    expect(editor.doc.actions.map((a) => ("id" in a ? a.id : a.type))).toEqual(["caf\u00e9"]);
+  });
+
   it("a drop opens exactly one JSON file; several files or another kind are refused with a message", () => {
     const scene = json("scene.json", LONELY);
     expect(droppedSceneFile([scene])).toBe(scene);

@@ -25,17 +25,36 @@ export async function openSceneText(editor: Editor, source: string, origin = "")
 
 /** Opens a scene file (Load file, or dropped); says so, and that Undo returns to the scene before. */
 export async function openSceneFile(editor: Editor, file: File): Promise<string | null> {
-  let text: string;
+  let bytes: Uint8Array;
   try {
-    text = await file.text();
+    bytes = new Uint8Array(await file.arrayBuffer());
   } catch (e) {
     const msg = `${file.name}: could not be read (${e instanceof Error ? e.message : String(e)})`;
+    editor.ui.setState({ message: { text: msg, tone: "error" } });
+    return msg;
+  }
+  const text = decodeUtf8OrNull(bytes);
+  if (text === null) {
+    const msg = `${file.name}: not UTF-8 text (a scene file is UTF-8 JSON: save it as UTF-8 and open it again); nothing was opened.`;
     editor.ui.setState({ message: { text: msg, tone: "error" } });
     return msg;
   }
   const err = await openSceneText(editor, text, `${file.name}: `);
   if (err === null) editor.info(`Opened ${file.name}. Undo returns to the scene you had before.`);
   return err;
+}
+
+/**
+ * The file's bytes as text, or null when they are not UTF-8. A lenient decode (what `File.text()`
+ * does) would turn each bad byte into U+FFFD, and an id like "café" saved as Latin-1 would open as
+ * a different id without a word; the CLI refuses such a file too. A leading BOM is dropped.
+ */
+function decodeUtf8OrNull(bytes: Uint8Array): string | null {
+  try {
+    return new TextDecoder("utf-8", { fatal: true }).decode(bytes);
+  } catch {
+    return null;
+  }
 }
 
 /** Whether a file is offered as JSON (by its name or its type): only those are read on a drop. */
