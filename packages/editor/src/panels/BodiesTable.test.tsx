@@ -122,7 +122,7 @@ describe("BodiesTable messages", () => {
       fireEvent.keyDown(input, { key: "Escape" });
       return shown;
     };
-    expect(await refusal("ball vx", "abc")).toBe("ball vx: must be a number");
+    expect(await refusal("ball vx", "abc")).toBe('ball vx: must be a number, got "abc"');
     expect(await refusal("ball speed", "-2")).toBe("ball |v|: must be zero or positive");
     // regression (audit of session 20): "ball v: must be an array of two finite numbers"
     expect(await refusal("ball speed", "1e999")).toBe("ball |v|: must be a finite number");

@@ -15,7 +15,7 @@ import { useEditor, useUi } from "../EditorContext";
 import { F_M, F_MU, F_R, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE } from "../remote/protocol";
 import { listBodies, listNote } from "./bodyList";
 import { DeleteRowButton } from "./DeleteRowButton";
-import { EditableCell, formatNumber, isInfinityWord, parseNumber } from "./EditableCell";
+import { EditableCell, formatNumber, isInfinityWord, notANumber, parseNumber } from "./EditableCell";
 import { SkipTable } from "./SkipTable";
 import { useLiveFrame } from "./useLiveFrame";
 import { useRevealRow } from "./useRevealRow";
@@ -56,7 +56,7 @@ export function BodiesTable() {
     const x = parseNumber(text);
     // Named as the engine's refusals are (doc/refusalTerms.ts): the body, then the column.
     const cell = `${id} ${COLUMNS.find((c) => c.field === field)?.title ?? field}`;
-    if (x === null) return `${cell}: must be a number`;
+    if (x === null) return notANumber(cell, text);
     if (field === "speed" && x < 0) return `${cell}: must be zero or positive`;
     // (scaling the velocity by an infinite speed gave NaN components: "v: must be an array of two
     // finite numbers", a field the table does not have: audit of session 20)

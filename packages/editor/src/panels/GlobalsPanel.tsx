@@ -1,6 +1,6 @@
 /** Globals at the current time: friction g (quick buttons 1 and 9.81) and the gravity vector. */
 import { useEditor } from "../EditorContext";
-import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
+import { EditableCell, formatNumber, notANumber, parseNumber } from "./EditableCell";
 import { useLiveFrame } from "./useLiveFrame";
 
 export function GlobalsPanel() {
@@ -10,7 +10,7 @@ export function GlobalsPanel() {
   const gravity = frame?.gravity ?? editor.doc.gravity;
   const num = (name: string, apply: (x: number) => Promise<string | null>) => async (text: string) => {
     const x = parseNumber(text);
-    return x === null ? `${name}: must be a number` : apply(x);
+    return x === null ? notANumber(name, text) : apply(x);
   };
   return (
     <section className="panel" aria-labelledby="globals-title">

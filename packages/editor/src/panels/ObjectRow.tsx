@@ -10,7 +10,7 @@ import type { ReactNode } from "react";
 import { useEditor, useUi } from "../EditorContext";
 import type { Vec2 } from "../engineTypes";
 import { DeleteRowButton } from "./DeleteRowButton";
-import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
+import { EditableCell, formatNumber, notANumber, parseNumber } from "./EditableCell";
 
 export function ObjectRow({
   kind,
@@ -60,7 +60,7 @@ export function CoordinateCell(props: {
         size={6}
         onCommit={async (text) => {
           const x = parseNumber(text);
-          if (x === null) return `${id} ${name}: must be a number`;
+          if (x === null) return notANumber(`${id} ${name}`, text);
           return onCommit(axis === 0 ? [x, point[1]] : [point[0], x]);
         }}
       />
