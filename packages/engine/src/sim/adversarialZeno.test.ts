@@ -17,15 +17,16 @@ function thrown(f: () => unknown): unknown {
 
 /**
  * A disc between a wall and an immovable disc moving at it (time of the crush: t0 + 7), all on one
- * line; and a disc at rest far away, so that the trap watch's proof of a crush in line (which
- * needs the crushed disc to be the only finite one: lineCrush.ts) leaves it to the windows.
+ * line; and a disc moving away far from it, so that the trap watch's proof of a crush in line
+ * (which needs every other finite disc off the line to be at rest: lineWatch.ts) leaves it to the
+ * windows.
  */
 function crush(t0: number): World {
   const w = new World({ g: 0, time: t0 });
   w.addLine("wall", [0, -10], [0, 10], "line");
   w.addBody("d", { x: 5, y: 0, r: 1, m: 1, vx: -10 });
   w.addBody("p", { x: 10, y: 0, r: 1, m: Number.POSITIVE_INFINITY, vx: -1 });
-  w.addBody("far", { x: 100, y: 100, r: 1, m: 1 });
+  w.addBody("far", { x: 100, y: 100, r: 1, m: 1, vx: 1, vy: 1 });
   return w;
 }
 

@@ -187,7 +187,7 @@ describe(`other pockets an immovable disc closes on a disc are reported within $
   });
 });
 
-describe("a disc crushed in line (the only finite disc, all on one line parallel to an axis)", () => {
+describe("a disc crushed in line (all on one line parallel to an axis; rows of discs: lineWatch.test.ts)", () => {
   /** Advance to the report; its events, after checking that it is the in-line one. */
   function inLine(w: World, end: string): number {
     const { error, events } = runToError(w);

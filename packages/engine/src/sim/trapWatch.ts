@@ -12,67 +12,19 @@
  * proven to close on d at t* and P's path until t* meets no obstacle and no immovable disc: nothing
  * else can change P's motion (finite discs do not, and no other immovable body moves). The report
  * is a SimulationError at the event's time with ids [] (a Zeno state of many events), thrown
- * before anything is counted or changed, so the same event throws again. When no pocket is proven
- * and d is the only finite disc in the World, each of those sides is tried as the end of a crush
- * in line (lineCrush.ts), the stretch of line d keeps to clear of every other obstacle.
+ * before anything is counted or changed, so the same event throws again. When no pocket is proven,
+ * a crush in line is tried (lineWatch.ts: d and P on one axis-parallel line, pressing the row of
+ * discs on it against a still end).
  */
 import { ZENO_TRAP_CANDIDATES, ZENO_TRAP_SLACK } from "../tolerances.js";
-import { CellCrossings } from "./cellCrossings.js";
 import { SimulationError } from "./errors.js";
-import { lineCloses } from "./lineCrush.js";
+import { hull, LineWatch } from "./lineWatch.js";
 import { pocketCloses } from "./pocket.js";
-import { type Core, type CoreKind, coreDistance, length, triangleCoreDistance } from "./pocketGeometry.js";
+import { coreDistance, length } from "./pocketGeometry.js";
 import { quoteId } from "./refusalText.js";
+import { before, fill, named, type Side, scratch } from "./trapSides.js";
 
 const INF = Number.POSITIVE_INFINITY;
-
-/** A side the pocket may have: its core and its order key (which also names it). */
-interface Side {
-  core: Core;
-  /** Distance from d's surface to it. */
-  gap: number;
-  /** 0 line, 1 point, 2 body (ids are unique per kind). */
-  rank: number;
-  id: string;
-}
-
-const hull = new Float64Array(6);
-/** The stretch of line a disc crushed in line keeps to, and it as a flat triangle. */
-const corridor = new Float64Array(4);
-const strip = new Float64Array(6);
-
-/** How the message names a side. */
-function named(side: Side): string {
-  return `${side.rank === 0 ? "line" : side.rank === 1 ? "point" : "the immovable body"} ${quoteId(side.id)}`;
-}
-
-/** Canonical order of sides: nearer first, then lines, points, bodies, then by id. */
-function before(gap: number, rank: number, id: string, v: Side): boolean {
-  if (gap !== v.gap) return gap < v.gap;
-  if (rank !== v.rank) return rank < v.rank;
-  return id < v.id;
-}
-
-/** A core to fill in place: the scans measure every obstacle without allocating one each. */
-const scratch: { -readonly [K in keyof Core]: Core[K] } = {
-  kind: "point",
-  x1: 0,
-  y1: 0,
-  x2: 0,
-  y2: 0,
-  rad: 0,
-};
-
-/** The scratch core, filled with a core of this shape. */
-function fill(kind: CoreKind, x1: number, y1: number, x2: number, y2: number, rad: number): Core {
-  scratch.kind = kind;
-  scratch.x1 = x1;
-  scratch.y1 = y1;
-  scratch.x2 = x2;
-  scratch.y2 = y2;
-  scratch.rad = rad;
-  return scratch;
-}
 
 /**
  * Insert the side in `scratch` (its gap, rank and id given) into `kept` (sorted, at most
@@ -86,7 +38,7 @@ function keep(kept: Side[], gap: number, rank: number, id: string): void {
   if (kept.length > ZENO_TRAP_CANDIDATES) kept.pop();
 }
 
-export class TrapWatch extends CellCrossings {
+export class TrapWatch extends LineWatch {
   /**
    * Throw a SimulationError if the collision of slot s with slot o (about to be processed now) is
    * that of a finite disc with the moving immovable disc that is proven to crush it. Changes
@@ -125,76 +77,13 @@ export class TrapWatch extends CellCrossings {
         t,
       );
     }
-    if (this.alone) this.guardLineCrush(d, p, sides);
+    this.guardLineCrush(d, p);
   }
-
-  /**
-   * The crush in line (lineCrush.ts), for slot d, the only finite disc, and the moving immovable
-   * slot p: each of the nearest `sides` is tried as the end.
-   */
-  private guardLineCrush(d: number, p: number, sides: readonly Side[]): void {
-    const b = this.store;
-    const m = b.mot;
-    const t = this.now;
-    const disc = {
-      x: this.xAt(d, t),
-      y: this.yAt(d, t),
-      vx: this.vxAt(d, t),
-      vy: this.vyAt(d, t),
-      ax: m[d * 8 + 5] as number,
-      ay: m[d * 8 + 6] as number,
-      r: b.r[d] as number,
-    };
-    const R = b.r[p] as number;
-    const margin = ZENO_TRAP_SLACK * disc.r;
-    for (const end of sides) {
-      const tStar = lineCloses(t, disc, m, p * 8, R, end.core, hull, corridor);
-      if (Number.isNaN(tStar) || !this.pathClear(p, R, margin)) continue;
-      strip[0] = corridor[0] as number;
-      strip[1] = corridor[1] as number;
-      strip[2] = corridor[2] as number;
-      strip[3] = corridor[3] as number;
-      strip[4] = corridor[2] as number;
-      strip[5] = corridor[3] as number;
-      if (!this.stripClear(p, end, disc.r + margin)) continue;
-      throw new SimulationError(
-        `body ${quoteId(b.ids[d] as string)} is crushed in line between the immovable body ${quoteId(b.ids[p] as string)} and ${named(end)}, which close on it by t=${tStar}: infinitely many collisions before then (a Zeno state: a disc crushed by an immovable body), which the exact model cannot pass`,
-        t,
-      );
-    }
-  }
-
-  /**
-   * Whether the stretch of line in `strip` keeps more than `reach` (plus their own radius) from
-   * every line, point and immovable disc but slot p and the side `end`: the disc on it touches
-   * nothing else.
-   */
-  private stripClear(p: number, end: Side, reach: number): boolean {
-    const b = this.store;
-    for (const l of this.lineList)
-      if (!(end.rank === 0 && end.id === l.id))
-        if (!(triangleCoreDistance(strip, fill(l.kind, l.x1, l.y1, l.x2, l.y2, 0)) > reach)) return false;
-    for (const q of this.pointList)
-      if (!(end.rank === 1 && end.id === q.id))
-        if (!(triangleCoreDistance(strip, fill("point", q.x, q.y, q.x, q.y, 0)) > reach)) return false;
-    for (let s = 0; s < b.slotCount; s++) {
-      const id = b.ids[s];
-      if (id === undefined || s === p || b.m[s] !== INF || (end.rank === 2 && end.id === id)) continue;
-      const qx = b.mot[s * 8 + 1] as number;
-      const qy = b.mot[s * 8 + 2] as number;
-      const rad = b.r[s] as number;
-      if (!(triangleCoreDistance(strip, fill("point", qx, qy, qx, qy, rad)) > reach + rad)) return false;
-    }
-    return true;
-  }
-
-  /** Whether the last sidesNear found no finite disc but d. */
-  private alone = false;
 
   /**
    * The obstacles and immovable discs (other than p) nearest slot d, in canonical order, at most
    * ZENO_TRAP_CANDIDATES of them; null when another immovable body than p moves (its motion could
-   * change what p runs into). Sets `alone`.
+   * change what p runs into).
    */
   private sidesNear(d: number, p: number): Side[] | null {
     const b = this.store;
@@ -209,14 +98,10 @@ export class TrapWatch extends CellCrossings {
     }
     for (const q of this.pointList)
       keep(kept, coreDistance(fill("point", q.x, q.y, q.x, q.y, 0), x, y) - r, 1, q.id);
-    this.alone = true;
     for (let s = 0; s < b.slotCount; s++) {
       const id = b.ids[s];
       if (id === undefined || s === p || s === d) continue;
-      if (b.m[s] !== INF) {
-        this.alone = false;
-        continue;
-      }
+      if (b.m[s] !== INF) continue;
       if (this.isMoving(s)) return null;
       const qx = b.mot[s * 8 + 1] as number;
       const qy = b.mot[s * 8 + 2] as number;
@@ -224,25 +109,5 @@ export class TrapWatch extends CellCrossings {
       keep(kept, coreDistance(fill("point", qx, qy, qx, qy, rad), x, y) - rad - r, 2, id);
     }
     return kept;
-  }
-
-  /**
-   * Whether slot p's path (radius R) over the triangle in `hull` stays more than `margin` clear of
-   * every line, point and immovable disc: it meets nothing that would change its motion.
-   */
-  private pathClear(p: number, R: number, margin: number): boolean {
-    const b = this.store;
-    for (const l of this.lineList)
-      if (!(triangleCoreDistance(hull, fill(l.kind, l.x1, l.y1, l.x2, l.y2, 0)) > R + margin)) return false;
-    for (const q of this.pointList)
-      if (!(triangleCoreDistance(hull, fill("point", q.x, q.y, q.x, q.y, 0)) > R + margin)) return false;
-    for (let s = 0; s < b.slotCount; s++) {
-      if (b.ids[s] === undefined || s === p || b.m[s] !== INF) continue;
-      const qx = b.mot[s * 8 + 1] as number;
-      const qy = b.mot[s * 8 + 2] as number;
-      const rad = b.r[s] as number;
-      if (!(triangleCoreDistance(hull, fill("point", qx, qy, qx, qy, rad)) > R + rad + margin)) return false;
-    }
-    return true;
   }
 }
