@@ -17,8 +17,8 @@ function thrown(f: () => unknown): unknown {
 
 /**
  * A disc between a wall and an immovable disc moving at it (time of the crush: t0 + 7), all on one
- * line; and a disc moving away far from it, so that the trap watch's proof of a crush in line
- * (which needs every other finite disc off the line to be at rest: lineWatch.ts) leaves it to the
+ * line; and a second immovable disc moving away far from it, so that the trap watch's proofs
+ * (which need the crusher to be the only immovable body that moves: trapWatch.ts) leave it to the
  * windows.
  */
 function crush(t0: number): World {
@@ -26,7 +26,7 @@ function crush(t0: number): World {
   w.addLine("wall", [0, -10], [0, 10], "line");
   w.addBody("d", { x: 5, y: 0, r: 1, m: 1, vx: -10 });
   w.addBody("p", { x: 10, y: 0, r: 1, m: Number.POSITIVE_INFINITY, vx: -1 });
-  w.addBody("far", { x: 100, y: 100, r: 1, m: 1, vx: 1, vy: 1 });
+  w.addBody("far", { x: 100, y: 100, r: 1, m: Number.POSITIVE_INFINITY, vx: 1, vy: 1 });
   return w;
 }
 

@@ -6,21 +6,23 @@
  * - the end is the still body across L (a line, a point, an immovable disc at rest: footOf) whose
  *   surface is nearest beyond d, away from P;
  * - the row is every finite disc centred on L, keeping to it, between the end and P (d among them);
- * - every other finite disc is at rest, farther than its radius + the row's largest radius from the
- *   row's stretch of L and than its radius + P's from P's path until t* (a margin more): nothing
- *   that moves before t* (the row on its stretch, P on its path) reaches it, so it stays at rest
- *   and never reaches them (the earliest such contact would contradict these distances);
+ * - every other finite disc ("aside") is farther from the row's stretch of L than its radius + the
+ *   row's largest radius, and from P's path until t* than its radius + P's, each by more than it
+ *   can travel before t* (a margin more; asideClear: a bound from the kinetic energy of the discs
+ *   aside, which only the row or P could raise, without gravity; under gravity they must be at
+ *   rest): none of them meets the row or P before t* (the earliest such contact would contradict
+ *   these distances);
  * - the row's stretch of L keeps clear of every other line, point and immovable disc, and P's path
  *   meets none (pathClear): nothing else changes P's motion, or knocks a disc of the row off L.
  *
  * The report is a SimulationError at the event's time with ids [] (a Zeno state of many events),
  * thrown before anything is counted or changed, so the same event throws again.
  */
-import { ZENO_TRAP_SLACK } from "../tolerances.js";
+import { ZENO_TRAP_SCALE, ZENO_TRAP_SLACK } from "../tolerances.js";
 import { CellCrossings } from "./cellCrossings.js";
 import { SimulationError } from "./errors.js";
 import { footOf, type LineDisc, lineAxis, lineCloses, onLine } from "./lineCrush.js";
-import { triangleCoreDistance } from "./pocketGeometry.js";
+import { length, triangleCoreDistance } from "./pocketGeometry.js";
 import { quoteId } from "./refusalText.js";
 import { before, fill, named, type Side, scratch } from "./trapSides.js";
 
@@ -54,10 +56,10 @@ export class LineWatch extends CellCrossings {
     const across = k === 0 ? disc.y : disc.x;
     const along = k === 0 ? disc.x : disc.y;
     const side = Math.sign((k === 0 ? this.xAt(p, t) : this.yAt(p, t)) - along);
-    // Every other finite disc: on L (in the row or not) or at rest; any other, no proof.
+    // Every other finite disc: on L (in the row or not) or aside.
     const others: LineDisc[] = [];
     const otherSlots: number[] = [];
-    const still: number[] = [];
+    const aside: number[] = [];
     for (let s = 0; s < b.slotCount; s++) {
       if (b.ids[s] === undefined || s === d || s === p) continue;
       if (b.m[s] === INF) {
@@ -68,8 +70,7 @@ export class LineWatch extends CellCrossings {
       if (onLine(o, k, across)) {
         others.push(o);
         otherSlots.push(s);
-      } else if (this.isMoving(s)) return;
-      else still.push(s);
+      } else aside.push(s);
     }
     const end = this.nearestEnd(k, across, along, side, disc.r, p);
     if (end === null) return;
@@ -86,8 +87,7 @@ export class LineWatch extends CellCrossings {
         row.push(s);
         rMin = Math.min(rMin, b.r[s] as number);
         rMax = Math.max(rMax, b.r[s] as number);
-      } else if (this.isMoving(s)) return;
-      else still.push(s);
+      } else aside.push(s);
     }
     const margin = ZENO_TRAP_SLACK * rMin;
     if (!this.pathClear(p, R, margin)) return;
@@ -98,13 +98,7 @@ export class LineWatch extends CellCrossings {
     strip[4] = corridor[2] as number;
     strip[5] = corridor[3] as number;
     if (!this.stripClear(p, end, rMax + margin)) return;
-    for (const s of still) {
-      const x = m[s * 8 + 1] as number;
-      const y = m[s * 8 + 2] as number;
-      const rad = b.r[s] as number;
-      if (!(triangleCoreDistance(strip, fill("point", x, y, x, y, 0)) > rad + rMax + margin)) return;
-      if (!(triangleCoreDistance(hull, fill("point", x, y, x, y, 0)) > rad + R + margin)) return;
-    }
+    if (!this.asideClear(aside, tStar - t, rMin, rMax, R)) return;
     // The row named from P to the end.
     const at = (s: number): number => side * (k === 0 ? this.xAt(s, t) : this.yAt(s, t));
     row.sort((u, v) => at(v) - at(u));
@@ -113,6 +107,49 @@ export class LineWatch extends CellCrossings {
       `${bodiesNamed(ids)} ${ids.length === 1 ? "is" : "are"} crushed in line between the immovable body ${quoteId(b.ids[p] as string)} and ${named(end)}, which close on ${ids.length === 1 ? "it" : "them"} by t=${tStar}: infinitely many collisions before then (a Zeno state: a disc crushed by an immovable body), which the exact model cannot pass`,
       t,
     );
+  }
+
+  /**
+   * Whether none of the finite discs `aside` (slots off the row) can reach the row's stretch of L
+   * (in `strip`, the row's largest radius rMax) or P's path (in `hull`, P's radius R) within `span`
+   * from now. Without gravity their accelerations are friction's, which takes energy away, and their
+   * collisions with one another and with still bodies keep it: until one of them first meets the row
+   * or P, their kinetic energy E never grows, so none moves faster than sqrt(2 E / m) (m its mass),
+   * nor farther than that times `span`. Under gravity they must be at rest (E = 0): a disc at rest
+   * with no acceleration stays so until struck. Each test keeps the proof's margin,
+   * ZENO_TRAP_SLACK × rMin, or that slack of the disc's magnitudes / ZENO_TRAP_SCALE when larger
+   * (a huge disc aside), so that round-off cannot turn it.
+   */
+  private asideClear(aside: readonly number[], span: number, rMin: number, rMax: number, R: number): boolean {
+    const b = this.store;
+    const t = this.now;
+    const gravity = this.gx !== 0 || this.gy !== 0;
+    let energy = 0;
+    for (const s of aside) {
+      if (gravity && this.isMoving(s)) return false;
+      const vx = this.vxAt(s, t);
+      const vy = this.vyAt(s, t);
+      energy += 0.5 * (b.m[s] as number) * (vx * vx + vy * vy);
+    }
+    for (const s of aside) {
+      const x = this.xAt(s, t);
+      const y = this.yAt(s, t);
+      const rad = b.r[s] as number;
+      const reach = span * Math.sqrt((2 * energy) / (b.m[s] as number));
+      const size = Math.max(
+        Math.abs(x),
+        Math.abs(y),
+        rad,
+        reach,
+        Math.abs(t) * length(this.vxAt(s, t), this.vyAt(s, t)),
+      );
+      const margin = ZENO_TRAP_SLACK * Math.max(rMin, size / ZENO_TRAP_SCALE);
+      if (!(triangleCoreDistance(strip, fill("point", x, y, x, y, 0)) > rad + rMax + reach + margin))
+        return false;
+      if (!(triangleCoreDistance(hull, fill("point", x, y, x, y, 0)) > rad + R + reach + margin))
+        return false;
+    }
+    return true;
   }
 
   /** Slot s's motion now, as the proof of a crush in line reads it. */
