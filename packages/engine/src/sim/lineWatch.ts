@@ -232,7 +232,8 @@ export class LineWatch extends CellCrossings {
 
   /**
    * Whether slot p's path (radius R) over the triangle in `hull` stays more than `margin` clear of
-   * every line, point and immovable disc: it meets nothing that would change its motion.
+   * every line, point and immovable disc (where it is now; the trap watch answers for those that
+   * move): it meets nothing that would change its motion.
    */
   protected pathClear(p: number, R: number, margin: number): boolean {
     const b = this.store;
@@ -242,8 +243,9 @@ export class LineWatch extends CellCrossings {
       if (!(triangleCoreDistance(hull, fill("point", q.x, q.y, q.x, q.y, 0)) > R + margin)) return false;
     for (let s = 0; s < b.slotCount; s++) {
       if (b.ids[s] === undefined || s === p || b.m[s] !== INF) continue;
-      const qx = b.mot[s * 8 + 1] as number;
-      const qy = b.mot[s * 8 + 2] as number;
+      // Where it is now (one at rest: where it was put, to the bit).
+      const qx = this.xAt(s, this.now);
+      const qy = this.yAt(s, this.now);
       const rad = b.r[s] as number;
       if (!(triangleCoreDistance(hull, fill("point", qx, qy, qx, qy, rad)) > R + rad + margin)) return false;
     }
