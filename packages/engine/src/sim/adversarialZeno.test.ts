@@ -17,9 +17,9 @@ function thrown(f: () => unknown): unknown {
 
 /**
  * A disc between a wall and an immovable disc moving at it (time of the crush: t0 + 7), all on one
- * line; and a second immovable disc moving away far from it, so that the trap watch's proofs
- * (which need the crusher to be the only immovable body that moves: trapWatch.ts) leave it to the
- * windows.
+ * line; and a second immovable disc moving away far from it, so that the trap watch's proof of a
+ * crush in line (which needs the crusher to be the only immovable disc that moves: lineWatch.ts)
+ * leaves it to the windows.
  */
 function crush(t0: number): World {
   const w = new World({ g: 0, time: t0 });

@@ -3,7 +3,7 @@
 // is symmetric about the line to the bit, and P closes on the row before its motion ends.
 import { describe, expect, it } from "vitest";
 import { ZENO_TRAP_GAP, ZENO_TRAP_SLACK } from "../tolerances.js";
-import { footOf, type LineDisc, lineAxis, lineCloses } from "./lineCrush.js";
+import { footOf, type LineDisc, lineAxis, lineCloses, orderedSum } from "./lineCrush.js";
 import type { Core } from "./pocketGeometry.js";
 
 const INF = Number.POSITIVE_INFINITY;
@@ -209,5 +209,18 @@ describe("the line and its ends", () => {
     expect(footOf({ kind: "point", x1: 4, y1: 7, x2: 4, y2: 7, rad: 0.5 }, 0, 4)).toBeNaN();
     // A line along the line itself is no end.
     expect(footOf({ kind: "line", x1: 0, y1: 0, x2: 1, y2: 0, rad: 0 }, 0, 0)).toBeNaN();
+  });
+});
+
+describe("orderedSum", () => {
+  it("gives the same bits whatever order the numbers come in", () => {
+    const values = [1e16, 1, -1e16, 0.1, 3, 2 ** -30, 7.5];
+    const sum = orderedSum([...values]);
+    expect(orderedSum([...values].reverse())).toBe(sum);
+    expect(
+      orderedSum([values[3], values[0], values[6], values[1], values[5], values[2], values[4]] as number[]),
+    ).toBe(sum);
+    // Left to right, as given, the order changes the bits.
+    expect(values.reduce((a, b) => a + b, 0)).not.toBe([...values].reverse().reduce((a, b) => a + b, 0));
   });
 });

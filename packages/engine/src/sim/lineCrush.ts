@@ -36,6 +36,17 @@ export interface LineDisc {
   readonly r: number;
 }
 
+/**
+ * The sum of the numbers, added in increasing order: the same bits whatever order they come in
+ * (the discs' slots follow the order they were added in).
+ */
+export function orderedSum(values: number[]): number {
+  values.sort((a, b) => a - b);
+  let sum = 0;
+  for (const v of values) sum += v;
+  return sum;
+}
+
 /** Whether the disc is centred on L (axis k along it, `across` its coordinate across) and keeps to it. */
 export function onLine(o: LineDisc, k: number, across: number): boolean {
   return k === 0 ? o.y === across && o.vy === 0 && o.ay === 0 : o.x === across && o.vx === 0 && o.ax === 0;
@@ -121,7 +132,7 @@ export function lineCloses(
   const between = (a: number): boolean => Math.sign(a - foot) === side && Math.sign(pAlong - a) === side;
   if (side === 0 || !between(along)) return Number.NaN;
   // The row: its radii's sum and smallest, and the largest magnitude its positions carry.
-  let sum = d.r;
+  const radii = [d.r];
   let r = d.r;
   let size = Math.max(
     Math.abs(along),
@@ -138,11 +149,12 @@ export function lineCloses(
     const inside = onLine(o, k, across) && between(a);
     inRow[i] = inside;
     if (!inside) continue;
-    sum += o.r;
+    radii.push(o.r);
     r = Math.min(r, o.r);
     size = Math.max(size, Math.abs(a), Math.abs(now) * Math.abs(k === 0 ? o.vx : o.vy));
   }
   if (!(size <= ZENO_TRAP_SCALE * r)) return Number.NaN;
+  const sum = orderedSum(radii);
   const verify = sum * (1 - 1.5 * ZENO_TRAP_SLACK);
   const aim = sum * (1 - 3 * ZENO_TRAP_SLACK);
   const closed = R + end.rad + 2 * verify;

@@ -7,6 +7,7 @@
 // rest within reach of it) is left to the windows.
 import { describe, expect, it } from "vitest";
 import { SimulationError } from "./errors.js";
+import type { BodyInit } from "./types.js";
 import { World } from "./world.js";
 
 const INF = Number.POSITIVE_INFINITY;
@@ -89,20 +90,35 @@ describe("a row of discs crushed in line is reported by the trap watch (before: 
     expect(w.time).toBeGreaterThan(crush - 1e-3);
   });
 
+  /** Three discs of different radii and masses in a row along y on a point, P, a disc at rest and one moving aside. */
+  const mixed: [string, BodyInit][] = [
+    ["a", { x: 3, y: 0, r: 0.5, m: 1, vy: 1 }],
+    ["b", { x: 3, y: 2, r: 1, m: 3, vy: -1 }],
+    ["c", { x: 3, y: 3.5, r: 0.25, m: 0.1 }],
+    ["p", { x: 3, y: 6, r: 2, m: INF, vy: -1 }],
+    ["rest", { x: 10, y: 0, r: 1, m: 1 }],
+    ["away", { x: -10, y: 0, r: 0.3, m: 0.2, vx: -1, vy: 0.7 }],
+  ];
+
   it("discs of different radii and masses along y against a point, a disc at rest aside", () => {
     const w = new World({ g: 0 });
     w.addPoint("pin", [3, -1]);
-    w.addBody("a", { x: 3, y: 0, r: 0.5, m: 1, vy: 1 });
-    w.addBody("b", { x: 3, y: 2, r: 1, m: 3, vy: -1 });
-    w.addBody("c", { x: 3, y: 3.5, r: 0.25, m: 0.1 });
-    w.addBody("p", { x: 3, y: 6, r: 2, m: INF, vy: -1 });
-    w.addBody("rest", { x: 10, y: 0, r: 1, m: 1 });
-    const { events } = reported(w, 'bodies "c", "b" and "a"', "p", 'point "pin"');
+    for (const [id, body] of mixed) w.addBody(id, body);
+    const { events, error } = reported(w, 'bodies "c", "b" and "a"', "p", 'point "pin"');
     expect(events).toBeLessThanOrEqual(120_000); // 83,713 (before: 2,399,999 events, 3.4 s)
     // P's centre reaches y = -1 + 2 (0.5 + 1 + 0.25) + 2 = 4.5 at t = 1.5.
     expect(w.time).toBeLessThan(1.5);
     expect(w.time).toBeGreaterThan(1.5 - 1e-3);
     expect(w.body("rest")).toMatchObject({ x: 10, y: 0, vx: 0, vy: 0 });
+    // The same report, at the same event, whatever order the bodies were added in (the row's radii
+    // and the energy of the discs aside are summed in an order of their own).
+    const reversed = new World({ g: 0 });
+    reversed.addPoint("pin", [3, -1]);
+    for (const [id, body] of [...mixed].reverse()) reversed.addBody(id, body);
+    const again = reported(reversed, 'bodies "c", "b" and "a"', "p", 'point "pin"');
+    expect(again.events).toBe(events);
+    expect(again.error.message).toBe(error.message);
+    expect(reversed.time).toBe(w.time);
   });
 
   it("one fast disc, a disc at rest far away (the windows' own test scene until now)", () => {

@@ -21,7 +21,7 @@
 import { ZENO_TRAP_SCALE, ZENO_TRAP_SLACK } from "../tolerances.js";
 import { CellCrossings } from "./cellCrossings.js";
 import { SimulationError } from "./errors.js";
-import { footOf, type LineDisc, lineAxis, lineCloses, onLine } from "./lineCrush.js";
+import { footOf, type LineDisc, lineAxis, lineCloses, onLine, orderedSum } from "./lineCrush.js";
 import { length, triangleCoreDistance } from "./pocketGeometry.js";
 import { quoteId } from "./refusalText.js";
 import { before, fill, named, type Side, scratch } from "./trapSides.js";
@@ -124,13 +124,14 @@ export class LineWatch extends CellCrossings {
     const b = this.store;
     const t = this.now;
     const gravity = this.gx !== 0 || this.gy !== 0;
-    let energy = 0;
+    const energies: number[] = [];
     for (const s of aside) {
       if (gravity && this.isMoving(s)) return false;
       const vx = this.vxAt(s, t);
       const vy = this.vyAt(s, t);
-      energy += 0.5 * (b.m[s] as number) * (vx * vx + vy * vy);
+      energies.push(0.5 * (b.m[s] as number) * (vx * vx + vy * vy));
     }
+    const energy = orderedSum(energies);
     for (const s of aside) {
       const x = this.xAt(s, t);
       const y = this.yAt(s, t);

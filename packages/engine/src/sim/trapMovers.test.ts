@@ -47,16 +47,25 @@ describe("a crush in a pocket is reported while other immovable discs move (befo
   it("one moving away far from it", () => {
     const w = corner();
     w.addBody("q", { x: 30, y: 30, r: 2, m: INF, vx: 1, vy: 0.5 });
-    expect(expectCornerReport(w)).toBeLessThanOrEqual(5000); // 2,561
+    expect(expectCornerReport(w)).toBeLessThanOrEqual(5000); // 2,561 (before: 2,399,999 events, 4.9 s)
   });
 
-  it("two going to and fro between two walls of their own, striking each other", () => {
-    const w = corner();
-    w.addLine("left", [20, 20], [20, 30], "segment");
-    w.addLine("right", [35, 20], [35, 30], "segment");
-    w.addBody("q1", { x: 25, y: 23, r: 1, m: INF, vx: 5 });
-    w.addBody("q2", { x: 30, y: 27, r: 1, m: INF, vx: -3 });
-    expect(expectCornerReport(w)).toBeLessThanOrEqual(5000); // 2,560
+  it("two going to and fro between two walls of their own, striking each other (in either order)", () => {
+    const platforms = (order: readonly string[]): World => {
+      const w = corner();
+      w.addLine("left", [20, 20], [20, 30], "segment");
+      w.addLine("right", [35, 20], [35, 30], "segment");
+      for (const id of order)
+        if (id === "q1") w.addBody("q1", { x: 25, y: 23, r: 1, m: INF, vx: 5 });
+        else w.addBody("q2", { x: 30, y: 27, r: 1, m: INF, vx: -3 });
+      return w;
+    };
+    const w = platforms(["q1", "q2"]);
+    const events = expectCornerReport(w);
+    expect(events).toBeLessThanOrEqual(5000); // 2,560 (before: 2,399,999 events, 7.4 s)
+    const other = platforms(["q2", "q1"]);
+    expect(expectCornerReport(other)).toBe(events);
+    expect(other.time).toBe(w.time);
   });
 });
 

@@ -19,6 +19,7 @@
  */
 import { ZENO_TRAP_CANDIDATES, ZENO_TRAP_SLACK } from "../tolerances.js";
 import { SimulationError } from "./errors.js";
+import { orderedSum } from "./lineCrush.js";
 import { hull, LineWatch } from "./lineWatch.js";
 import { pocketCloses } from "./pocket.js";
 import { coreDistance, length, triangleCoreDistance } from "./pocketGeometry.js";
@@ -133,13 +134,13 @@ export class TrapWatch extends LineWatch {
     if (this.gx !== 0 || this.gy !== 0) return false;
     const b = this.store;
     const t = this.now;
-    let squares = 0;
+    const squares: number[] = [];
     for (const q of this.movers) {
       const vx = this.vxAt(q, t);
       const vy = this.vyAt(q, t);
-      squares += vx * vx + vy * vy;
+      squares.push(vx * vx + vy * vy);
     }
-    const reach = span * Math.sqrt(squares);
+    const reach = span * Math.sqrt(orderedSum(squares));
     const R = b.r[p] as number;
     for (let s = 0; s < b.slotCount; s++) {
       const id = b.ids[s];
