@@ -29,7 +29,7 @@ import { before, fill, named, type Side, scratch } from "./trapSides.js";
 const INF = Number.POSITIVE_INFINITY;
 
 /** The triangle holding P's path until t*, filled by the proofs (x0, y0, x1, y1, x2, y2). */
-export const hull = new Float64Array(6);
+export const hull: Float64Array = new Float64Array(6);
 /** The stretch of line the row keeps to, and it as a flat triangle. */
 const corridor = new Float64Array(4);
 const strip = new Float64Array(6);
