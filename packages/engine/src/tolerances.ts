@@ -181,6 +181,17 @@ export const GRID_CELL_MARGIN = 1 + 1e-6;
 export const GRID_SEGMENT_PAD = 1e-9;
 
 /**
+ * The placement checks find the obstacles near a disc, and the bodies near an obstacle, in spatial
+ * indexes (sim/obstacleCells.ts, sim/bodiesNear.ts, scene/discGrid.ts) instead of testing every
+ * pair; each box they look in or register in is widened by PLACEMENT_INDEX_PAD times the sum of the
+ * magnitudes of its coordinates. An overlap test computed in doubles errs by a few ulps of the
+ * coordinates it reads (about 1e-15 of them), so a pair it calls overlapping has boxes that share a
+ * cell: the refusals are exactly those of a scan. Far above that rounding, far below any size that
+ * costs a scan (a disc at 1e6 looks 1e-6 further).
+ */
+export const PLACEMENT_INDEX_PAD = 1e-12;
+
+/**
  * Below this many bodies the layout sized by the bodies is a single cell: testing every pair costs
  * less than the cell-crossing events a grid would add (Galperin's billiard: 2 bodies, millions of
  * events). Many segments or points still get cells (the obstacle layout, GRID_OBSTACLE_GAIN).

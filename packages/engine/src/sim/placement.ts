@@ -1,11 +1,17 @@
 /**
  * The World's obstacles (add, update, remove and list lines and points) and the placement checks
  * for every edit: whether a disc, line or point may be put somewhere without overlapping what is
- * already there (touching is allowed), using the broad-phase grid for large scenes. Every check
- * throws ChapgameError naming the field before anything changes.
+ * already there (touching is allowed). A disc is tested against the bodies near it in the
+ * broad-phase grid and the segments and points near it in ObstacleCells (obstacleCells.ts); a
+ * segment or point against the bodies near it in the grid (bodiesNear.ts); infinite lines and rays,
+ * few, are tested against every body, and every disc against all of them. Each check names the
+ * smallest id it hits, as a scan of everything would. Every check throws ChapgameError naming the
+ * field before anything changes.
  */
 import { OVERLAP_REL } from "../tolerances.js";
+import { forEachBodyNearSegment } from "./bodiesNear.js";
 import { ChapgameError } from "./errors.js";
+import { ObstacleCells } from "./obstacleCells.js";
 import { distanceToLine, type Line, type LineKind, makeLine, type Point } from "./obstacles.js";
 import { quoteId } from "./refusalText.js";
 import { Simulator } from "./simulator.js";
@@ -21,6 +27,9 @@ const LINEAR_SCAN_BODIES = 64;
 export class Placement extends Simulator {
   /** Slot of each body id. */
   protected index = new Map<string, number>();
+  /** The lines and the points by place, built when a disc is first checked (a copy starts without). */
+  private lineCells: ObstacleCells<Line> | null = null;
+  private pointCells: ObstacleCells<Point> | null = null;
 
   /** A checked line; an overlap with a body is refused naming `field` (addLine: p1; updateLine:
    *  the first of p1, p2, kind that changed). */
@@ -34,6 +43,7 @@ export class Placement extends Simulator {
       (s) =>
         distanceToLine(line, this.xAt(s, this.now), this.yAt(s, this.now)) <
         (this.store.r[s] as number) * KEEP,
+      kind === "segment" ? line : undefined,
     );
     if (hit !== undefined) throw new ChapgameError(field, `the line would overlap body ${quoteId(hit)}`);
     return line;
@@ -41,21 +51,51 @@ export class Placement extends Simulator {
 
   protected checkedPoint(id: string, p: Vec2): Point {
     const [x, y] = requireVec("p", p);
-    const hit = this.firstBodyWhere((s) => {
-      const dx = this.xAt(s, this.now) - x;
-      const dy = this.yAt(s, this.now) - y;
-      const r = (this.store.r[s] as number) * KEEP;
-      return dx * dx + dy * dy < r * r;
-    });
+    const hit = this.firstBodyWhere(
+      (s) => {
+        const dx = this.xAt(s, this.now) - x;
+        const dy = this.yAt(s, this.now) - y;
+        const r = (this.store.r[s] as number) * KEEP;
+        return dx * dx + dy * dy < r * r;
+      },
+      { x1: x, y1: y, x2: x, y2: y },
+    );
     if (hit !== undefined) throw new ChapgameError("p", `the point would lie inside body ${quoteId(hit)}`);
     return { id, x, y };
   }
 
-  /** The smallest id of the bodies for which `test` holds (a message independent of insertion order). */
-  private firstBodyWhere(test: (s: number) => boolean): string | undefined {
+  /**
+   * The smallest id of the bodies for which `test` holds (a message independent of insertion order):
+   * among those near `near` (a segment, or a point: both ends equal) when the grid holds enough
+   * bodies, else among all (an infinite line or ray, a small scene).
+   */
+  private firstBodyWhere(
+    test: (s: number) => boolean,
+    near?: { x1: number; y1: number; x2: number; y2: number },
+  ): string | undefined {
     let best: string | undefined;
-    for (const [bid, s] of this.index) if ((best === undefined || bid < best) && test(s)) best = bid;
+    if (near === undefined || this.index.size < LINEAR_SCAN_BODIES) {
+      for (const [bid, s] of this.index) if ((best === undefined || bid < best) && test(s)) best = bid;
+      return best;
+    }
+    const ids = this.store.ids;
+    forEachBodyNearSegment(this.grid, near.x1, near.y1, near.x2, near.y2, (s) => {
+      const bid = ids[s] as string;
+      if ((best === undefined || bid < best) && test(s)) best = bid;
+    });
     return best;
+  }
+
+  /** The lines and the points indexed by place (built from the lists when first needed). */
+  private obstacleCells(): [ObstacleCells<Line>, ObstacleCells<Point>] {
+    if (this.lineCells === null || this.pointCells === null) {
+      this.compactObstacles();
+      this.lineCells = new ObstacleCells<Line>();
+      this.pointCells = new ObstacleCells<Point>();
+      for (const l of this.lineList) indexLine(this.lineCells, l);
+      for (const p of this.pointList) this.pointCells.set(p.id, p, p.x, p.y, p.x, p.y, true);
+    }
+    return [this.lineCells, this.pointCells];
   }
 
   /**
@@ -100,14 +140,12 @@ export class Placement extends Simulator {
       for (const s of this.index.values()) test(s);
     } else this.forEachNear(x, y, r, test);
     if (body !== undefined) throw new ChapgameError(field, `the body would overlap body ${quoteId(body)}`);
-    this.compactObstacles();
     const rk = r * keep;
-    const line = firstById(this.lineList.filter((l) => distanceToLine(l, x, y) < rk));
-    if (line) throw new ChapgameError(field, `the body would overlap line ${quoteId(line.id)}`);
-    const point = firstById(
-      this.pointList.filter((p) => (p.x - x) * (p.x - x) + (p.y - y) * (p.y - y) < rk * rk),
-    );
-    if (point) throw new ChapgameError(field, `the body would overlap point ${quoteId(point.id)}`);
+    const [lines, points] = this.obstacleCells();
+    const line = lines.smallestHit(x, y, r, (l) => distanceToLine(l, x, y) < rk);
+    if (line !== undefined) throw new ChapgameError(field, `the body would overlap line ${quoteId(line)}`);
+    const point = points.smallestHit(x, y, r, (p) => (p.x - x) * (p.x - x) + (p.y - y) * (p.y - y) < rk * rk);
+    if (point !== undefined) throw new ChapgameError(field, `the body would overlap point ${quoteId(point)}`);
   }
 
   // ---- obstacles ----------------------------------------------------------------------------
@@ -134,6 +172,7 @@ export class Placement extends Simulator {
     if (this.hasLine(id)) throw new ChapgameError("id", `a line with id ${quoteId(id)} already exists`);
     const line = this.checkedLine(id, p1, p2, kind);
     this.lineAt.add(this.lineList, line);
+    if (this.lineCells !== null) indexLine(this.lineCells, line);
     this.markDirty();
   }
 
@@ -163,6 +202,7 @@ export class Placement extends Simulator {
           : "p1";
     const line = this.checkedLine(id, p1, p2, kind, field);
     this.lineAt.replace(this.lineList, line);
+    if (this.lineCells !== null) indexLine(this.lineCells, line);
     this.markDirty();
   }
 
@@ -171,6 +211,7 @@ export class Placement extends Simulator {
     requireId("id", id);
     if (!this.hasLine(id)) throw new ChapgameError("id", `no line with id ${quoteId(id)}`);
     this.lineAt.remove(this.lineList, id);
+    this.lineCells?.delete(id);
     this.markDirty();
   }
 
@@ -182,16 +223,14 @@ export class Placement extends Simulator {
   addPoint(id: string, p: Vec2): void {
     requireId("id", id);
     if (this.hasPoint(id)) throw new ChapgameError("id", `a point with id ${quoteId(id)} already exists`);
-    this.pointAt.add(this.pointList, this.checkedPoint(id, p));
-    this.markDirty();
+    this.placePoint(this.checkedPoint(id, p), false);
   }
 
   /** Move a point to `p` at the current time. Checked as addPoint; ChapgameError naming `id` when there is no such point. */
   updatePoint(id: string, p: Vec2): void {
     requireId("id", id);
     if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id ${quoteId(id)}`);
-    this.pointAt.replace(this.pointList, this.checkedPoint(id, p));
-    this.markDirty();
+    this.placePoint(this.checkedPoint(id, p), true);
   }
 
   /** Remove a point at the current time. Throws ChapgameError naming `id` when there is no such point. */
@@ -199,6 +238,15 @@ export class Placement extends Simulator {
     requireId("id", id);
     if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id ${quoteId(id)}`);
     this.pointAt.remove(this.pointList, id);
+    this.pointCells?.delete(id);
+    this.markDirty();
+  }
+
+  /** Store a checked point, new or in place of the one of its id. */
+  private placePoint(point: Point, replace: boolean): void {
+    if (replace) this.pointAt.replace(this.pointList, point);
+    else this.pointAt.add(this.pointList, point);
+    this.pointCells?.set(point.id, point, point.x, point.y, point.x, point.y, true);
     this.markDirty();
   }
 
@@ -219,9 +267,7 @@ export class Placement extends Simulator {
   }
 }
 
-/** The obstacle with the smallest id, if any. */
-function firstById<T extends { id: string }>(list: T[]): T | undefined {
-  let best: T | undefined;
-  for (const o of list) if (best === undefined || o.id < best.id) best = o;
-  return best;
+/** Put `line` in `cells` (a segment by place; a line or ray is tested by every query). */
+function indexLine(cells: ObstacleCells<Line>, line: Line): void {
+  cells.set(line.id, line, line.x1, line.y1, line.x2, line.y2, line.kind === "segment");
 }
