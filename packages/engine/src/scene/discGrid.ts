@@ -1,21 +1,20 @@
 /**
  * DiscGrid: a spatial hash of discs (id → x, y, r) for overlap queries while validating edits, so that
- * validating N added bodies costs about N, not N². Cell size is fixed by the first disc (4 r); a query
- * whose box spans more cells than there are discs falls back to a scan of all discs.
+ * validating N added bodies costs about N, not N², and M lines or points placed among them about
+ * M + N (smallestNearSegment). Cell size is fixed by the first disc (4 r); a query whose box spans
+ * more cells than there are discs falls back to a scan of all discs.
  * The discs are kept in typed arrays by slot, each cell a chain of slots (about 120 bytes a disc; one
  * object per disc and an array per cell took 300 bytes, 300 MB for a scene of a million bodies).
  */
+import { cellKey } from "../sim/cellKey.js";
+import { placementPad, segmentXRange } from "../sim/segmentBand.js";
 import { discsOverlap } from "./overlap.js";
 
-/** Cell numbers below this in size make a small integer key, -1 - ((cx + SMALL) * 2 SMALL + (cy +
- *  SMALL)), in [-2^30, -1] (a small integer for V8, whatever the build); below OFFSET a numeric key
- *  (cx + OFFSET) * SPAN + (cy + OFFSET), exact in a double (both factors < 2^26) and > 0; beyond it
- *  the key is a string. The three kinds never meet. */
-const SMALL = 2 ** 14;
-const OFFSET = 2 ** 25;
-const SPAN = 2 ** 26;
 /** The end of a cell's chain. */
 const END = -1;
+/** A segment query's cells, row by row: row, first and last column (reused). */
+const rows: number[] = [];
+const span = [0, 0];
 
 export class DiscGrid {
   private readonly slotOf = new Map<string, number>();
@@ -35,16 +34,8 @@ export class DiscGrid {
     return this.slotOf.size;
   }
 
-  private key(cx: number, cy: number): number | string {
-    if (cx > -SMALL && cx < SMALL && cy > -SMALL && cy < SMALL)
-      return -1 - ((cx + SMALL) * 2 * SMALL + (cy + SMALL));
-    return cx > -OFFSET && cx < OFFSET && cy > -OFFSET && cy < OFFSET
-      ? (cx + OFFSET) * SPAN + (cy + OFFSET)
-      : `${cx}:${cy}`;
-  }
-
   private keyAt(x: number, y: number): number | string {
-    return this.key(Math.floor(x / this.cell), Math.floor(y / this.cell));
+    return cellKey(Math.floor(x / this.cell), Math.floor(y / this.cell));
   }
 
   /** A free slot (the arrays grow when full). */
@@ -138,8 +129,59 @@ export class DiscGrid {
     }
     for (let cx = x0; cx <= x1; cx++)
       for (let cy = y0; cy <= y1; cy++)
-        for (let s = this.heads.get(this.key(cx, cy)) ?? END; s !== END; s = this.next[s] as number)
+        for (let s = this.heads.get(cellKey(cx, cy)) ?? END; s !== END; s = this.next[s] as number)
           best = this.smaller(s, x, y, r, except, best);
+    return best;
+  }
+
+  /**
+   * The smallest id of the discs that can reach the segment (x1, y1)-(x2, y2) (a point when both
+   * ends are equal) for which `hits(x, y, r)` holds: the cells within the largest radius (and the
+   * segment's pad, and a cell more) of it, row by row, or every disc when they are fewer than those
+   * cells (or the cell numbers exceed 2^53).
+   */
+  smallestNearSegment(
+    x1: number,
+    y1: number,
+    x2: number,
+    y2: number,
+    hits: (x: number, y: number, r: number) => boolean,
+  ): string | null {
+    const n = this.slotOf.size;
+    if (n === 0) return null;
+    const c = this.cell;
+    const reach = this.rMax + placementPad(x1, y1, x2, y2) + c;
+    const r0 = Math.floor((Math.min(y1, y2) - reach) / c);
+    const r1 = Math.floor((Math.max(y1, y2) + reach) / c);
+    let cells = 0;
+    let enumerable = Number.isSafeInteger(r0) && Number.isSafeInteger(r1) && r1 - r0 < n;
+    rows.length = 0;
+    for (let cy = r0; enumerable && cy <= r1; cy++) {
+      if (!segmentXRange(x1, y1, x2, y2, cy * c - reach, (cy + 1) * c + reach, span)) continue;
+      const c0 = Math.floor(((span[0] as number) - reach) / c);
+      const c1 = Math.floor(((span[1] as number) + reach) / c);
+      cells += c1 - c0 + 1;
+      enumerable = Number.isSafeInteger(c0) && Number.isSafeInteger(c1) && cells <= n;
+      rows.push(cy, c0, c1);
+    }
+    let best: string | null = null;
+    const visit = (s: number): void => {
+      const id = this.ids[s] as string | null;
+      if (id === null || (best !== null && id >= best)) return;
+      if (hits(this.xs[s] as number, this.ys[s] as number, this.rs[s] as number)) best = id;
+    };
+    if (!enumerable) {
+      for (let s = 0; s < this.ids.length; s++) visit(s);
+      return best;
+    }
+    for (let i = 0; i < rows.length; i += 3)
+      for (let cx = rows[i + 1] as number; cx <= (rows[i + 2] as number); cx++)
+        for (
+          let s = this.heads.get(cellKey(cx, rows[i] as number)) ?? END;
+          s !== END;
+          s = this.next[s] as number
+        )
+          visit(s);
     return best;
   }
 

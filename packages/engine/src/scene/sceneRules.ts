@@ -2,138 +2,28 @@
  * The rules an action must satisfy against the scene as it is at the action's time: ids that exist
  * (or not yet), unique ids among live objects of a kind, no body added, moved or grown into an overlap
  * with a body, line or point, no line or point added or moved into a body, and no friction (mu > 0)
- * together with a non-zero gravity field. `SceneView` is that scene (positions may be unknown when a
- * caller cannot simulate: then overlaps with such bodies are not checked). `checkAndApply` throws
- * SceneError (path + reason) and changes nothing, or updates the view.
+ * together with a non-zero gravity field. `SceneView` (sceneView.ts) is that scene (positions may be
+ * unknown when a caller cannot simulate: then overlaps with such bodies are not checked). `checkAndApply` throws
+ * SceneError (path + reason) and changes nothing, or updates the view. Overlaps are looked for near
+ * the action (a disc among the segments and points near it, sim/obstacleCells.ts; a segment or point
+ * among the discs near it, discGrid.ts), infinite lines and rays against everything; each refusal
+ * names the smallest id hit, as a scan of everything would.
  */
 import { quoteId } from "../sim/refusalText.js";
-import { DiscGrid } from "./discGrid.js";
 import { SceneError } from "./errors.js";
 import { join } from "./fields.js";
 import { lineDirection } from "./magnitudes.js";
 import { discOverlapsLine, discOverlapsPoint } from "./overlap.js";
-import type { Action, LineKind, Vec2 } from "./types.js";
+import type { SceneView, ViewBody, ViewLine } from "./sceneView.js";
+import type { Action, Vec2 } from "./types.js";
 
-export interface ViewBody {
-  x: number;
-  y: number;
-  r: number;
-  mu: number;
-  /** false when the position at the view's time is unknown (validation without a simulation) */
-  known: boolean;
-}
-export interface ViewLine {
-  p1: Vec2;
-  p2: Vec2;
-  kind: LineKind;
-}
-
-export interface ViewSource {
-  time: number;
-  g: number;
-  gravity: Vec2;
-  bodies: readonly { id: string; x: number; y: number; r: number; mu: number }[];
-  lines: readonly { id: string; p1: Vec2; p2: Vec2; kind: LineKind }[];
-  points: readonly { id: string; p: Vec2 }[];
-}
-
-/** A state whose bodies are read only when an action needs them all (SceneView.lazy). */
-export interface LazyViewSource extends Omit<ViewSource, "bodies"> {
-  bodies(): ViewSource["bodies"];
-  hasBody(id: string): boolean;
-}
-
-export class SceneView {
-  time: number;
-  g: number;
-  gravity: Vec2;
-  readonly lines = new Map<string, ViewLine>();
-  readonly points = new Map<string, Vec2>();
-  private readonly bodyMap = new Map<string, ViewBody>();
-  private readonly discs = new DiscGrid();
-  /** Of a lazy view, the source its bodies are read from (null once they are), and the ids removed
-   *  meanwhile. */
-  private source: LazyViewSource | null = null;
-  private removed: Set<string> | null = null;
-
-  constructor(time: number, g: number, gravity: Vec2) {
-    this.time = time;
-    this.g = g;
-    this.gravity = gravity;
-  }
-
-  /** A view of a known state (all positions known). */
-  static of(s: ViewSource): SceneView {
-    const v = new SceneView(s.time, s.g, s.gravity);
-    v.addBodies(s.bodies);
-    for (const l of s.lines) v.lines.set(l.id, { p1: l.p1, p2: l.p2, kind: l.kind });
-    for (const p of s.points) v.points.set(p.id, p.p);
-    return v;
-  }
-
-  /**
-   * A view of a known state whose bodies are read from `s` only when an action needs them all (a
-   * body added, moved or checked against a line or point, a change of gravity): a group of actions
-   * that only give velocities to bodies or remove them asks `s.hasBody` alone (reading a million
-   * bodies for each such group made a scene's later actions cost seconds each). Until then `s`
-   * must give the state at the view's time less the bodies this view removed (a World the group's
-   * actions are applied to as they are checked does).
-   */
-  static lazy(s: LazyViewSource): SceneView {
-    const v = SceneView.of({ ...s, bodies: [] });
-    v.source = s;
-    return v;
-  }
-
-  private addBodies(bodies: ViewSource["bodies"]): void {
-    for (const b of bodies) {
-      if (this.removed?.has(b.id)) continue;
-      this.bodyMap.set(b.id, { x: b.x, y: b.y, r: b.r, mu: b.mu, known: true });
-      this.discs.add(b.id, b.x, b.y, b.r); // ids are unique in a state
-    }
-  }
-
-  /** The bodies, read from a lazy view's source first. */
-  get bodies(): Map<string, ViewBody> {
-    if (this.source !== null) {
-      const s = this.source;
-      this.source = null;
-      this.addBodies(s.bodies());
-      this.removed = null;
-    }
-    return this.bodyMap;
-  }
-
-  /** The discs of the bodies whose position is known. */
-  get grid(): DiscGrid {
-    if (this.source !== null) void this.bodies;
-    return this.discs;
-  }
-
-  /** Whether body `id` is in the view (without reading a lazy view's bodies). */
-  hasBody(id: string): boolean {
-    if (this.source === null) return this.bodyMap.has(id);
-    return this.removed?.has(id) !== true && this.source.hasBody(id);
-  }
-
-  /** Removes body `id` (in the view: `hasBody(id)`). */
-  removeBody(id: string): void {
-    if (this.source === null) {
-      this.bodyMap.delete(id);
-      this.discs.remove(id);
-    } else {
-      this.removed ??= new Set();
-      this.removed.add(id);
-    }
-  }
-
-  /** Time moves on without a simulation: every body's position becomes unknown. */
-  forgetPositions(time: number): void {
-    this.time = time;
-    for (const b of this.bodies.values()) b.known = false;
-    this.discs.clear();
-  }
-}
+export {
+  type LazyViewSource,
+  SceneView,
+  type ViewBody,
+  type ViewLine,
+  type ViewSource,
+} from "./sceneView.js";
 
 /** An id as every refusal quotes it (sim/refusalText.ts). */
 const q = quoteId;
@@ -151,10 +41,11 @@ function checkDisc(view: SceneView, path: string, id: string, x: number, y: numb
   if (other !== null)
     throw new SceneError(path, `body ${q(id)} would overlap body ${q(other)} at time ${view.time}`);
   // The smallest id hit, as the World names it: the message does not depend on the order of adds.
-  const line = smallestHit(view.lines, (l) => discOverlapsLine(x, y, r, l.p1, l.p2, l.kind));
+  const [lines, points] = view.obstacleCells();
+  const line = lines.smallestHit(x, y, r, (l) => discOverlapsLine(x, y, r, l.p1, l.p2, l.kind));
   if (line !== undefined)
     throw new SceneError(path, `body ${q(id)} would overlap line ${q(line)} at time ${view.time}`);
-  const point = smallestHit(view.points, (p) => discOverlapsPoint(x, y, r, p));
+  const point = points.smallestHit(x, y, r, (p) => discOverlapsPoint(x, y, r, p));
   if (point !== undefined)
     throw new SceneError(path, `body ${q(id)} would overlap point ${q(point)} at time ${view.time}`);
 }
@@ -166,10 +57,23 @@ function smallestHit<T>(map: Map<string, T>, hits: (v: T) => boolean): string | 
   return first;
 }
 
-/** Refuses an obstacle that `hits` a body of known position, naming the smallest such id (one pass:
- *  sorting every body's id for each line added made a scene of n bodies and m lines cost m n log n). */
-function checkObstacle(view: SceneView, path: string, what: string, hits: (b: ViewBody) => boolean): void {
-  const first = smallestHit(view.bodies, (b) => b.known && hits(b));
+/**
+ * Refuses an obstacle that `hits` a body of known position (x, y, r), naming the smallest such id:
+ * among the discs near `near` (a segment, or a point: both ends equal; the view's grid holds the
+ * bodies of known position), else (an infinite line or ray) among all (one pass: sorting every
+ * body's id for each line added made a scene of n bodies and m lines cost m n log n).
+ */
+function checkObstacle(
+  view: SceneView,
+  path: string,
+  what: string,
+  hits: (x: number, y: number, r: number) => boolean,
+  near: readonly [Vec2, Vec2] | null,
+): void {
+  const first =
+    near === null
+      ? smallestHit(view.bodies, (b) => b.known && hits(b.x, b.y, b.r))
+      : (view.grid.smallestNearSegment(near[0][0], near[0][1], near[1][0], near[1][1], hits) ?? undefined);
   if (first !== undefined)
     throw new SceneError(path, `${what} would overlap body ${q(first)} at time ${view.time}`);
 }
@@ -234,28 +138,32 @@ export function checkAndApply(view: SceneView, a: Action, path: string): void {
         line = { p1: a.p1 ?? old.p1, p2: a.p2 ?? old.p2, kind: a.kind ?? old.kind };
         lineDirection(join(path, a.p2 ? "p2" : "p1"), line.p1, line.p2, "p1 and p2 of the line");
       }
-      checkObstacle(view, path, `line ${q(a.id)}`, (b) =>
-        discOverlapsLine(b.x, b.y, b.r, line.p1, line.p2, line.kind),
+      checkObstacle(
+        view,
+        path,
+        `line ${q(a.id)}`,
+        (x, y, r) => discOverlapsLine(x, y, r, line.p1, line.p2, line.kind),
+        line.kind === "segment" ? [line.p1, line.p2] : null,
       );
-      view.lines.set(a.id, line);
+      view.setLine(a.id, line);
       return;
     }
     case "removeLine":
       need(view.lines, a.id, "line", view, path);
-      view.lines.delete(a.id);
+      view.deleteLine(a.id);
       return;
     case "addPoint":
     case "updatePoint": {
       if (a.type === "addPoint") fresh(view.points, a.id, "point", view, path);
       else need(view.points, a.id, "point", view, path);
       const p = a.p;
-      checkObstacle(view, path, `point ${q(a.id)}`, (b) => discOverlapsPoint(b.x, b.y, b.r, p));
-      view.points.set(a.id, p);
+      checkObstacle(view, path, `point ${q(a.id)}`, (x, y, r) => discOverlapsPoint(x, y, r, p), [p, p]);
+      view.setPoint(a.id, p);
       return;
     }
     case "removePoint":
       need(view.points, a.id, "point", view, path);
-      view.points.delete(a.id);
+      view.deletePoint(a.id);
       return;
     case "setGlobal": {
       const gravity = a.gravity ?? view.gravity;
