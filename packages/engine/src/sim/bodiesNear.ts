@@ -6,6 +6,7 @@
  * cell, since a body's recorded cell may be one off its position by a crossing's rounding), row by
  * row (segmentBand.ts), or the level's bodies when they are fewer than those cells.
  */
+import { mulPow2 } from "../roots/pow2.js";
 import type { Grid } from "./grid.js";
 import { placementPad, segmentXRange } from "./segmentBand.js";
 
@@ -28,7 +29,7 @@ export function forEachBodyNearSegment(
     const members = grid.members[j] as number[];
     const nxj = grid.nxOf[j] as number;
     const nyj = grid.nyOf[j] as number;
-    const wj = grid.w * 2 ** j;
+    const wj = mulPow2(grid.w, j);
     const reach = (grid.fitR[j] as number) + pad + wj;
     const r0 = grid.row(Math.min(y1, y2) - reach) >> j;
     const r1 = grid.row(Math.max(y1, y2) + reach) >> j;

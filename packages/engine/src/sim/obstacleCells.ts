@@ -16,7 +16,7 @@
  * no extent: every query tests all of them (a scan; they are few). The first queries, and all
  * while the obstacles are few, scan everything: placing one disc does not pay for the tables.
  */
-import { mulPow2 } from "../roots/pow2.js";
+import { exponentOf, mulPow2 } from "../roots/pow2.js";
 import { cellKey } from "./cellKey.js";
 import { placementPad, segmentXRange } from "./segmentBand.js";
 
@@ -49,16 +49,12 @@ export interface ObstacleCellsOptions {
   scanSize?: number;
 }
 
-/** Smallest k with 2^k >= v (v > 0), within [MIN_LEVEL, MAX_LEVEL]. */
+/** Smallest k with 2^k >= v (v > 0), within [MIN_LEVEL, MAX_LEVEL] (from the bits: pow2.ts). */
 export function levelAtLeast(v: number): number {
   if (!(v > mulPow2(1, MIN_LEVEL))) return MIN_LEVEL;
   if (!(v <= mulPow2(1, MAX_LEVEL))) return MAX_LEVEL;
-  const k = Math.floor(Math.log2(v));
-  // log2 may round across a power of two: settle on the exact one.
-  let e = Math.min(MAX_LEVEL, Math.max(MIN_LEVEL, k));
-  while (e < MAX_LEVEL && mulPow2(1, e) < v) e++;
-  while (e > MIN_LEVEL && mulPow2(1, e - 1) >= v) e--;
-  return e;
+  const e = exponentOf(v);
+  return v === mulPow2(1, e) ? e : e + 1;
 }
 
 export class ObstacleCells<T> {
