@@ -41,11 +41,14 @@ function checkDisc(view: SceneView, path: string, id: string, x: number, y: numb
   if (other !== null)
     throw new SceneError(path, `body ${q(id)} would overlap body ${q(other)} at time ${view.time}`);
   // The smallest id hit, as the World names it: the message does not depend on the order of adds.
-  const [lines, points] = view.obstacleCells();
-  const line = lines.smallestHit(x, y, r, (l) => discOverlapsLine(x, y, r, l.p1, l.p2, l.kind));
+  const cells = view.obstacleCells();
+  const hitsLine = (l: ViewLine) => discOverlapsLine(x, y, r, l.p1, l.p2, l.kind);
+  const line = cells === null ? smallestHit(view.lines, hitsLine) : cells[0].smallestHit(x, y, r, hitsLine);
   if (line !== undefined)
     throw new SceneError(path, `body ${q(id)} would overlap line ${q(line)} at time ${view.time}`);
-  const point = points.smallestHit(x, y, r, (p) => discOverlapsPoint(x, y, r, p));
+  const hitsPoint = (p: Vec2) => discOverlapsPoint(x, y, r, p);
+  const point =
+    cells === null ? smallestHit(view.points, hitsPoint) : cells[1].smallestHit(x, y, r, hitsPoint);
   if (point !== undefined)
     throw new SceneError(path, `body ${q(id)} would overlap point ${q(point)} at time ${view.time}`);
 }
