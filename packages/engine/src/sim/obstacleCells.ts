@@ -43,9 +43,9 @@ interface Table {
 }
 
 export interface ObstacleCellsOptions {
-  /** Queries answered by a scan before the tables are built (tests pass 0). */
+  /** Queries answered by a scan before the tables are built (0: a caller that scanned already, tests). */
   scanQueries?: number;
-  /** Fewest obstacles for which the tables are built (tests pass 0). */
+  /** Fewest obstacles for which the tables are built (tests pass 0 to index a few). */
   scanSize?: number;
 }
 
