@@ -308,11 +308,12 @@ export const ZENO_PUSH_BODIES = 4;
 export const ZENO_STREAK_PROGRESS = 0.01;
 
 /**
- * The trap watch (sim/trapWatch.ts, its proofs in sim/pocket.ts and sim/lineCrush.ts): a disc shut
- * in a pocket of two or three still sides (lines, points, immovable discs at rest) and the one
- * moving immovable disc, which closes the pocket before anything can change that disc's motion, is
- * crushed: infinitely many events before the pocket closes (so is a disc alone in the World,
- * pressed in line against a still end, all symmetric about an axis-parallel line). The proof is geometric, so that such a crush is reported after
+ * The trap watch (sim/trapWatch.ts, its proofs in sim/pocket.ts, sim/lineCrush.ts and
+ * sim/lineWatch.ts): a disc shut in a pocket of two or three still sides (lines, points, immovable
+ * discs at rest) and the moving immovable disc that closes the pocket before anything can change
+ * that disc's motion is crushed: infinitely many events before the pocket closes (so is a disc, or
+ * a row of discs, pressed in line against a still end, all symmetric about an axis-parallel line,
+ * with no other disc able to reach them in time). The proof is geometric, so that such a crush is reported after
  * hundreds or thousands of events instead of the 2.2 to 2.4 million the windows' convergence test
  * (ZENO_SHRINK) needs: a disc crushed into a corner by an immovable disc falling in under gravity
  * took 2.4 million events and 6 to 19 s (review, session 22); 256 to 2,560 events now
