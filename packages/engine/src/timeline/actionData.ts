@@ -25,6 +25,7 @@ export function copyAction(a: Action): Action {
 /** Deep equality of plain data (numbers by Object.is, so -0 and 0 differ). */
 export function sameValue(a: unknown, b: unknown): boolean {
   if (typeof a === "number" || typeof b === "number") return Object.is(a, b);
+  if (a === b) return true; // (the same frozen action: setActions given the timeline's own list)
   if (typeof a !== "object" || typeof b !== "object" || a === null || b === null) return a === b;
   const ka = Object.keys(a);
   const kb = Object.keys(b);
@@ -63,13 +64,28 @@ export function firstChange(acts: readonly Action[], sorted: readonly Action[]):
   return { d, cut };
 }
 
-/** The keyframe (holding a World) to recompute from when the first change (firstChange) is action
- *  `d`, at time `cut`: the last one before it, taken when only unchanged actions were applied
- *  (0 = from scratch). */
-export function restartKeyframe(keyframes: readonly Keyframe[], d: number, cut: number): number {
-  for (let k = keyframes.length - 1; k > 0; k--) {
-    const kf = keyframes[k] as Keyframe;
-    if (kf.actionCount <= d && kf.time < cut) return k;
-  }
+/**
+ * Whether keyframe `kf` is a point to recompute from when the first change (firstChange) is action
+ * `d`, at time `cut` (`acts`: the actions, unchanged before d): taken when only unchanged actions
+ * were applied, and before `cut`, or at `cut` after some of that instant's actions (the rest are
+ * applied there as the same group), or at `cut` before all of them with every event there
+ * processed (the instant's events come first, then its actions: restartPoint.ts).
+ */
+export function restartsAt(kf: Keyframe, d: number, cut: number, acts: readonly Action[]): boolean {
+  if (kf.actionCount > d || kf.time > cut) return false;
+  if (kf.time < cut || kf.afterActions) return true;
+  return kf.atTimeLimit && (kf.actionCount === 0 || (acts[kf.actionCount - 1] as Action).time < cut);
+}
+
+/** The keyframe (holding a World) to recompute from when the first change is action `d`, at time
+ *  `cut`: the last one restartsAt accepts (0 = from scratch). */
+export function restartKeyframe(
+  keyframes: readonly Keyframe[],
+  d: number,
+  cut: number,
+  acts: readonly Action[],
+): number {
+  for (let k = keyframes.length - 1; k > 0; k--)
+    if (restartsAt(keyframes[k] as Keyframe, d, cut, acts)) return k;
   return 0;
 }

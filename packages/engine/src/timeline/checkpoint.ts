@@ -1,10 +1,18 @@
 /**
  * Keyframes of a TimelineCore, both directions (the Keyframe type and its snapshots: keyframe.ts).
- * takeKeyframe(core, afterActions) appends a keyframe of the core's current point: after every group
- * of actions, and every recordsPerKeyframe(core) records (drive). restoreKeyframe(core, k) cuts the
- * computed history back to keyframe k: the World (rebuilt from the keyframe's motions), the motion
- * table, the registry, the records and the counts are as they were when it was taken.
+ * takeKeyframe(core, afterActions) appends a keyframe of the core's current point: every
+ * recordsPerKeyframe(core) records (drive). After a group of actions the keyframe is owed
+ * (oweKeyframe): what only the World's computation would change is noted (its instant, record and
+ * Zeno watch), the rest is read when it is taken (settleKeyframe): at the first record after the
+ * group, at the next group at another instant, or when anything reads the keyframes
+ * (TimelineCore.keyframes). The motion table, the registry and the obstacles change only through
+ * those, so the keyframe is the one taking it at once gives; a group applied at the same instant
+ * with nothing logged since replaces an owed keyframe without taking it (a scene built one action
+ * per apply took a copy of every obstacle per apply). restoreKeyframe(core, k) cuts the computed
+ * history back to keyframe k: the World (rebuilt from the keyframe's motions), the motion table,
+ * the registry, the records and the counts are as they were when it was taken.
  */
+import type { ZenoCounters } from "../sim/zenoWatch.js";
 import type { TimelineCore } from "./core.js";
 import { type Keyframe, loadMotions, snapshotMotions, snapshotProps, worldAt } from "./keyframe.js";
 import { MotionTable } from "./motionTable.js";
@@ -30,19 +38,34 @@ function liveOrder(c: TimelineCore): Uint32Array {
   return c.sortedLive;
 }
 
-/** Append a keyframe of the current point. One taken between actions shares the previous
- *  keyframe's order, props, lines and points (nothing but motions changed since). */
-export function takeKeyframe(c: TimelineCore, afterActions: boolean): void {
+/** What a keyframe owed after a group of actions notes at once (see the header). */
+export interface OwedKeyframe {
+  time: number;
+  record: number;
+  zeno: Readonly<ZenoCounters>;
+}
+
+/** A keyframe of the core's point at `time` (the World's, or the owed one's), not appended. One
+ *  taken between actions shares the last keyframe's order, props, obstacles (nothing but
+ *  motions changed since: an owed keyframe is settled before anything else changes). */
+export function keyframeOf(
+  c: TimelineCore,
+  afterActions: boolean,
+  time = c.world.time,
+  atTimeLimit = c.atTimeLimit,
+  zeno: Readonly<ZenoCounters> = c.world.zenoWatch(),
+): Keyframe {
   const w = c.world;
-  const prev = c.keyframes[c.keyframes.length - 1];
+  const list = c.rawKeyframes;
+  const prev = list[list.length - 1];
   const share = !afterActions && prev !== undefined;
   const order = share ? prev.order : liveOrder(c);
-  c.keyframes.push({
-    time: w.time,
+  return {
+    time,
     record: c.records.length,
     actionCount: c.applied,
     afterActions,
-    atTimeLimit: c.atTimeLimit,
+    atTimeLimit,
     counts: { ...c.counts },
     eventTotal: c.eventTotal,
     g: w.g,
@@ -55,18 +78,52 @@ export function takeKeyframe(c: TimelineCore, afterActions: boolean): void {
     bodyCount: c.bodyIds.length,
     lineCount: c.lineIds.length,
     pointCount: c.pointIds.length,
-    lineNums: new Map(c.lineNums),
-    pointNums: new Map(c.pointNums),
-    zeno: w.zenoWatch(),
-  });
+    // (never changed once in a keyframe: a restore copies them)
+    lineNums: share ? prev.lineNums : new Map(c.lineNums),
+    pointNums: share ? prev.pointNums : new Map(c.pointNums),
+    zeno,
+  };
+}
+
+/** Append a keyframe of the current point (an owed one is settled first). */
+export function takeKeyframe(c: TimelineCore, afterActions: boolean): void {
+  settleKeyframe(c);
+  c.rawKeyframes.push(keyframeOf(c, afterActions));
+}
+
+/** Owe the keyframe after the group of actions just applied (see the header). */
+export function oweKeyframe(c: TimelineCore): void {
+  c.owed = { time: c.world.time, record: c.records.length, zeno: c.world.zenoWatch() };
+}
+
+/** Take the owed keyframe, if any (see the header). */
+export function settleKeyframe(c: TimelineCore): void {
+  const o = c.owed;
+  if (o === null) return;
+  c.owed = null;
+  c.rawKeyframes.push(keyframeOf(c, true, o.time, false, o.zeno));
+}
+
+/** The record of the last keyframe, owed or taken. */
+export function lastKeyframeRecord(c: TimelineCore): number {
+  if (c.owed !== null) return c.owed.record;
+  return (c.rawKeyframes[c.rawKeyframes.length - 1] as Keyframe).record;
 }
 
 /** Cut the computed history back to keyframe `k` (see the header). */
 export function restoreKeyframe(c: TimelineCore, k: number): void {
-  const kf = c.keyframes[k] as Keyframe;
-  c.keyframes.length = k + 1;
+  restorePoint(c, c.keyframes[k] as Keyframe, k + 1);
+}
+
+/** Cut the computed history back to the point keyframe `kf` holds, keeping the first `kept`
+ *  keyframes of the list (those before it, and it when it is one of them). */
+export function restorePoint(c: TimelineCore, kf: Keyframe, kept: number): void {
+  c.keyframes.length = kept;
   c.rewrites++;
-  c.world = worldAt(kf, c.bodyIds);
+  c.view = null;
+  // the spare restart point holds while the history up to it is kept (restartPoint.ts)
+  if (c.spare !== null && c.spare.record > kf.record) c.spare = null;
+  c.world = kf.world !== undefined ? kf.world.clone() : worldAt(kf, c.bodyIds);
   c.records.length = kf.record;
   c.applied = kf.actionCount;
   c.actEvents.length = kf.actionCount;

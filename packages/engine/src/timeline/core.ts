@@ -10,11 +10,19 @@
  * nothing, the history only depends on the actions and how far it was computed, never on how the
  * computation was sliced or restarted from a keyframe.
  */
+
+import type { SceneView } from "../scene/sceneRules.js";
 import type { Action, Vec2 } from "../scene/types.js";
-import type { WorldEvent } from "../sim/types.js";
+import type { AdvanceLimits, AdvanceResult, WorldEvent } from "../sim/types.js";
 import { World } from "../sim/world.js";
 import { applyGroup } from "./actionGroup.js";
-import { recordsPerKeyframe, takeKeyframe } from "./checkpoint.js";
+import {
+  lastKeyframeRecord,
+  type OwedKeyframe,
+  recordsPerKeyframe,
+  settleKeyframe,
+  takeKeyframe,
+} from "./checkpoint.js";
 import { type Goal, satisfied } from "./goals.js";
 import type { Keyframe } from "./keyframe.js";
 import { MotionTable } from "./motionTable.js";
@@ -29,6 +37,15 @@ const KIND_CODE = {
   bodyPoint: K_BODY_POINT,
   stop: K_STOP,
 } as const;
+
+/** A group's checked scene, and the point of the computation it holds for (actionGroup.ts). */
+export interface OpenView {
+  view: SceneView;
+  world: World;
+  applied: number;
+  events: number;
+  records: number;
+}
 
 function emptyCounts(): TimelineCounts {
   return { bodyBody: 0, bodyLine: 0, bodyPoint: 0, stop: 0, action: 0 };
@@ -56,7 +73,17 @@ export class TimelineCore {
   pointIds: string[] = [];
   pointNums = new Map<string, number>();
   records = new Records();
-  keyframes: Keyframe[] = [];
+  /** the keyframes taken (keyframes: the same, with an owed one taken first) */
+  rawKeyframes: Keyframe[] = [];
+  /** the keyframe owed after the last group of actions, not yet taken (checkpoint.ts) */
+  owed: OwedKeyframe | null = null;
+  /** A restart point that is not in the keyframe list (restartPoint.ts): the keyframe after the
+   *  first actions of an instant that later calls added to, or the point before an instant's
+   *  actions; null when none, or when the history before it was cut. */
+  spare: Keyframe | null = null;
+  /** the scene the last group of actions was checked against, kept for the next group at the same
+   *  instant (actionGroup.ts openView) */
+  view: OpenView | null = null;
   counts = emptyCounts();
   eventTotal = 0;
   goals: Goal[] = [];
@@ -107,6 +134,16 @@ export class TimelineCore {
     if (history) takeKeyframe(this, false);
   }
 
+  /** The keyframes, the owed one taken first (checkpoint.ts): every reader sees them all. */
+  get keyframes(): Keyframe[] {
+    if (this.owed !== null) settleKeyframe(this);
+    return this.rawKeyframes;
+  }
+
+  set keyframes(list: Keyframe[]) {
+    this.rawKeyframes = list;
+  }
+
   get horizon(): number {
     return this.world.time;
   }
@@ -128,6 +165,9 @@ export class TimelineCore {
   // ---- recording ------------------------------------------------------------------------------
 
   private record(e: WorldEvent): void {
+    // the keyframe owed after the actions holds the motions before this event (nothing else
+    // changed since: the World only computes)
+    if (this.owed !== null) settleKeyframe(this);
     this.eventTotal++;
     this.counts[e.kind]++;
     this.lastLogged = e.time;
@@ -203,22 +243,30 @@ export class TimelineCore {
       if (this.applied < this.acts.length)
         untilTime = Math.min(untilTime, (this.acts[this.applied] as Action).time);
       else if (this.idle && untilTime === INF) return { events, reason: "idle" };
-      if (this.history) {
-        const last = this.keyframes[this.keyframes.length - 1] as Keyframe;
-        maxEvents = Math.min(maxEvents, recordsPerKeyframe(this) - (this.records.length - last.record));
-      }
+      if (this.history)
+        maxEvents = Math.min(
+          maxEvents,
+          recordsPerKeyframe(this) - (this.records.length - lastKeyframeRecord(this)),
+        );
       const limits: { untilTime?: number; maxEvents?: number } = {};
       if (untilTime < INF) limits.untilTime = untilTime;
       if (maxEvents < INF) limits.maxEvents = Math.max(0, maxEvents);
-      const res = this.world.advance(limits, this.onEvent);
+      const res = this.advanceWorld(limits);
       events += res.events;
       this.atTimeLimit = res.reason !== "events";
       this.groupOpen = false;
       this.idle = res.reason === "idle";
-      if (this.history) {
-        const last = this.keyframes[this.keyframes.length - 1] as Keyframe;
-        if (this.records.length - last.record >= recordsPerKeyframe(this)) takeKeyframe(this, false);
-      }
+      if (this.history && this.records.length - lastKeyframeRecord(this) >= recordsPerKeyframe(this))
+        takeKeyframe(this, false);
     }
+  }
+
+  /** world.advance, without the call when it cannot do anything: no body, and no time to pass (the
+   *  World would rebuild its grid around its obstacles, once per action of a scene built one
+   *  obstacle per apply; nothing moves, nothing is logged, and the grid decides no result). */
+  private advanceWorld(limits: AdvanceLimits): AdvanceResult {
+    const w = this.world;
+    if (w.bodyCount === 0 && limits.untilTime === w.time) return { events: 0, reason: "idle" };
+    return w.advance(limits, this.onEvent);
   }
 }

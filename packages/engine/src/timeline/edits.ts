@@ -3,28 +3,46 @@
  * checks, the listeners and the headless instant record; the contracts are theirs):
  * - applyToCore(c, a, keepHorizon, checkLater, instant): inserts the checked action `a` at its time.
  *   At or after the horizon it computes forward to it; before, it restores the last keyframe before
- *   it, replays and recomputes (up to the old horizon, or less: ApplyOptions). Without history, an
+ *   it (or the spare restart point after it, restartPoint.ts), replays and recomputes (up to the old horizon, or less: ApplyOptions). Without history, an
  *   action at the horizon's instant joins that instant's group (headlessInstant.ts). On any error the
  *   core is as it was (undo.ts) and an error naming a later action it made invalid says so. Returns
  *   the headless instant record to keep (null with history).
  * - actionsOnCore(c, sorted, order, fresh): replaces the action list (sorted in apply order; `order`
  *   maps each to its index in the caller's list, for messages). The history up to the first change
  *   is kept: when it lies after the horizon (or at it, where an apply would append) nothing is cut
- *   and the computation goes on from the horizon; otherwise it recomputes from the keyframe before
- *   the first change, or from scratch on a fresh core. Returns the core to use. Atomic likewise.
+ *   and the computation goes on from the horizon; otherwise it recomputes from the keyframe (or the
+ *   spare restart point) before the first change, or from scratch on a fresh core. Returns the core to use. Atomic likewise.
  */
 import { SceneError } from "../scene/errors.js";
 import type { Action } from "../scene/types.js";
-import { firstChange, restartKeyframe } from "./actionData.js";
+import { firstChange, restartKeyframe, restartsAt } from "./actionData.js";
 import { restoreKeyframe } from "./checkpoint.js";
 import type { TimelineCore } from "./core.js";
 import { goalFrom, reopenGoals } from "./goals.js";
 import { type HeadlessInstant, instantHolds, noteInstant, reapplyInstant } from "./headlessInstant.js";
 import { checkKeptActions, checkKeptApply, forgot } from "./kept.js";
 import type { Keyframe } from "./keyframe.js";
-import { saveCore } from "./undo.js";
+import { restoreSpare, spareFits, spareSlot } from "./restartPoint.js";
+import { type EditScope, saveCore } from "./undo.js";
 
 const INF = Number.POSITIVE_INFINITY;
+
+/** The scope of an edit that restarts from keyframe k, or from the spare restart point. */
+function restartScope(c: TimelineCore, k: number, spare: boolean, insertAt?: number): EditScope {
+  const scope: EditScope = { fromKeyframe: spare ? spareSlot(c) : k, worldReplaced: true };
+  if (insertAt !== undefined) scope.insertAt = insertAt;
+  if (spare) scope.restart = c.spare as Keyframe;
+  return scope;
+}
+
+function restartRecord(c: TimelineCore, k: number, spare: boolean): number {
+  return (spare ? (c.spare as Keyframe) : (c.keyframes[k] as Keyframe)).record;
+}
+
+function restart(c: TimelineCore, k: number, spare: boolean): void {
+  if (spare) restoreSpare(c);
+  else restoreKeyframe(c, k);
+}
 
 /** An error of the recomputed future that names a later action: said to come from this one. */
 function laterActionRefusal(e: unknown): unknown {
@@ -60,22 +78,24 @@ export function applyToCore(
         : `must be >= the horizon ${c.horizon} (history is off)`,
     );
   let k = 0;
+  let spare = false;
   if (!forward) {
     const kfs = c.keyframes;
     for (k = kfs.length - 1; k > 0; k--) {
       const kf = kfs[k] as Keyframe;
-      if (kf.time < a.time || (kf.time === a.time && kf.afterActions && kf.actionCount === insertAt)) break;
+      if (restartsAt(kf, insertAt, a.time, c.acts)) break;
     }
+    spare = spareFits(c, insertAt, a.time, k);
   }
   // Only what this edit can change is kept (undo.ts); forward, the undo also serves a later action
   // at the same instant without history (headlessInstant.ts: the lists only grow meanwhile).
   const scope = forward
-    ? { fromKeyframe: c.keyframes.length - 1, insertAt, worldReplaced: false, forward: true }
-    : { fromKeyframe: k, insertAt, worldReplaced: true };
-  const undo = saveCore(c, forward ? c.records.length : (c.keyframes[k] as Keyframe).record, scope);
+    ? { fromKeyframe: c.rawKeyframes.length - 1, insertAt, worldReplaced: false, forward: true }
+    : restartScope(c, k, spare, insertAt);
+  const undo = saveCore(c, forward ? c.records.length : restartRecord(c, k, spare), scope);
   try {
     const oldHorizon = c.horizon;
-    if (!forward) restoreKeyframe(c, k);
+    if (!forward) restart(c, k, spare);
     c.acts.splice(insertAt, 0, a);
     // the others by their index in `actions` as the caller knows it (without this one)
     c.pathOf = (i) => (i === insertAt ? "action" : `actions[${i > insertAt ? i - 1 : i}]`);
@@ -134,7 +154,7 @@ export function actionsOnCore(
   if (keepsHistory(c, d, cut)) {
     // Only computing forward (or nothing): what it may change is what an apply at the horizon may.
     const undo = saveCore(c, c.records.length, {
-      fromKeyframe: c.keyframes.length - 1,
+      fromKeyframe: c.rawKeyframes.length - 1,
       worldReplaced: false,
       forward: true,
     });
@@ -149,14 +169,12 @@ export function actionsOnCore(
     return c;
   }
   // after forgetBefore, keyframe 0 is the start of the kept history: a restart point, not scratch
-  const k = c.history ? restartKeyframe(c.keyframes, d, cut) : 0;
-  if (k > 0 || forgot(c)) {
-    const undo = saveCore(c, (c.keyframes[k] as Keyframe).record, {
-      fromKeyframe: k,
-      worldReplaced: true,
-    });
+  const k = c.history ? restartKeyframe(c.keyframes, d, cut, c.acts) : 0;
+  const spare = c.history && spareFits(c, d, cut, k);
+  if (spare || k > 0 || forgot(c)) {
+    const undo = saveCore(c, restartRecord(c, k, spare), restartScope(c, k, spare));
     try {
-      restoreKeyframe(c, k);
+      restart(c, k, spare);
       c.acts = sorted;
       c.pathOf = pathOf;
       reopenGoals(c);

@@ -57,6 +57,8 @@ export function forgetBefore(c: TimelineCore, t: number): { start: number; dropp
   c.forgotten.records += n;
   // new objects (the keyframes are not shared outside the core, but an object never changes)
   c.keyframes = kfs.slice(k).map((kf) => ({ ...kf, record: kf.record - n }));
+  // the spare restart point (restartPoint.ts) moves with the records, or goes with them
+  c.spare = c.spare !== null && c.spare.record > n ? { ...c.spare, record: c.spare.record - n } : null;
   // a log cursor's replay position (logCursor.ts) names records by their old index: it restarts
   c.rewrites++;
   return { start: cut.time, dropped: true };

@@ -49,6 +49,10 @@ export interface Keyframe {
   /** the World's Zeno watch counters (World.zenoWatch), so a restart detects a Zeno state at the
    *  same event as the uninterrupted computation */
   zeno: Readonly<ZenoCounters>;
+  /** A copy of the World at this point, never changed, restored by copying it (no rebuild, no
+   *  predictions to recompute): only the spare restart point taken before an instant's actions
+   *  holds one (restartPoint.ts). */
+  world?: World;
 }
 
 /** Numbers per body in Keyframe.motions. */

@@ -18,6 +18,13 @@
  * - with `worldReplaced`, the World object and the motion table are replaced (restoreKeyframe)
  *   before anything changes them, so the old ones need no copy; without it, of the motion table
  *   only the rows of the live bodies can change.
+ * - `restart`: the keyframe the edit restores when it is not keyframes[fromKeyframe] (the spare
+ *   restart point, restartPoint.ts, which goes into the list at `fromKeyframe`).
+ * The id → number maps are not copied for a scope: a restore replaces them (new Maps), and an edit
+ * computing forward only adds and deletes entries, so its undo rebuilds them from the id lists and
+ * the World it gives back (renumber), O(ids) on an error only (a copy per apply made a scene built
+ * one obstacle per apply quadratic). The keyframe owed (checkpoint.ts), the spare restart point and
+ * the kept view of the scene (actionGroup.ts) are given back or dropped with the rest.
  * The undo must run before any other operation on the core.
  */
 import type { TimelineCore } from "./core.js";
@@ -37,6 +44,7 @@ export interface EditScope {
    * applied at that instant and it was computed further (headlessInstant.ts keeps it for that).
    */
   forward?: boolean;
+  restart?: Keyframe;
 }
 
 /** An array's elements from `start` on, and how to put them back. */
@@ -71,9 +79,27 @@ function putRows(data: Float64Array, saved: { nums: number[]; rows: Float64Array
     data.set(saved.rows.subarray(k * STRIDE, (k + 1) * STRIDE), (saved.nums[k] as number) * STRIDE);
 }
 
+/** The number of every live body, line and point, from the id lists (the live one of an id is its
+ *  last number) and the World (which holds exactly the live ones). */
+function renumber(c: TimelineCore): void {
+  const w = c.world;
+  const numbers = (ids: readonly string[], alive: (id: string) => boolean) => {
+    const m = new Map<string, number>();
+    for (let n = ids.length - 1; n >= 0; n--) {
+      const id = ids[n] as string;
+      if (!m.has(id) && alive(id)) m.set(id, n);
+    }
+    return m;
+  };
+  c.live = numbers(c.bodyIds, (id) => w.hasBody(id));
+  c.lineNums = numbers(c.lineIds, (id) => w.hasLine(id));
+  c.pointNums = numbers(c.pointIds, (id) => w.hasPoint(id));
+}
+
 export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): () => void {
   // (a timeline without history may hold no keyframe at all)
-  const kf: Keyframe | null = edit === undefined ? null : (c.keyframes[edit.fromKeyframe] ?? null);
+  const kfs = c.rawKeyframes; // (an owed keyframe stays owed: it is saved below)
+  const kf: Keyframe | null = edit === undefined ? null : (edit.restart ?? kfs[edit.fromKeyframe] ?? null);
   // where each list's tail starts: 0 (no scope: all of it), today's length (forward), or the
   // restart keyframe's count
   const fwd = edit?.forward === true;
@@ -95,17 +121,16 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
     // (without history the table is not kept: it has no rows)
     rows: edit === undefined || edit.worldReplaced || !c.history ? null : liveRows(c),
     bodyIds: tailOf(c.bodyIds, start(c.bodyIds, kf?.bodyCount)),
-    live: new Map(c.live),
+    live: edit === undefined ? new Map(c.live) : fwd ? null : c.live,
     lineIds: tailOf(c.lineIds, start(c.lineIds, kf?.lineCount)),
-    lineNums: new Map(c.lineNums),
+    lineNums: edit === undefined ? new Map(c.lineNums) : fwd ? null : c.lineNums,
     pointIds: tailOf(c.pointIds, start(c.pointIds, kf?.pointCount)),
-    pointNums: new Map(c.pointNums),
+    pointNums: edit === undefined ? new Map(c.pointNums) : fwd ? null : c.pointNums,
     tail: c.records.saveTail(cutRecord),
-    keyframes: tailOf(
-      c.keyframes,
-      edit === undefined ? 0 : Math.max(0, Math.min(edit.fromKeyframe, c.keyframes.length)),
-    ),
-    keyframeList: c.keyframes,
+    keyframes: tailOf(kfs, edit === undefined ? 0 : Math.max(0, Math.min(edit.fromKeyframe, kfs.length))),
+    keyframeList: kfs,
+    owed: c.owed,
+    spare: c.spare,
     counts: { ...c.counts },
     eventTotal: c.eventTotal,
     goals: c.goals.slice(),
@@ -135,14 +160,20 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
     c.table.data = saved.table;
     if (saved.rows !== null) putRows(saved.table, saved.rows);
     putBack(c.bodyIds, saved.bodyIds);
-    c.live = saved.live;
     putBack(c.lineIds, saved.lineIds);
-    c.lineNums = saved.lineNums;
     putBack(c.pointIds, saved.pointIds);
-    c.pointNums = saved.pointNums;
+    if (saved.live === null || saved.lineNums === null || saved.pointNums === null) renumber(c);
+    else {
+      c.live = saved.live;
+      c.lineNums = saved.lineNums;
+      c.pointNums = saved.pointNums;
+    }
     c.records.restoreTail(cutRecord, saved.tail);
     c.keyframes = saved.keyframeList;
-    putBack(c.keyframes, saved.keyframes);
+    putBack(kfs, saved.keyframes);
+    c.owed = saved.owed;
+    c.spare = saved.spare;
+    c.view = null;
     c.rewrites++;
     c.counts = saved.counts;
     c.eventTotal = saved.eventTotal;
