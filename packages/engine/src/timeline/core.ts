@@ -84,6 +84,10 @@ export class TimelineCore {
   /** the scene the last group of actions was checked against, kept for the next group at the same
    *  instant (actionGroup.ts openView) */
   view: OpenView | null = null;
+  /** During an edit computing forward: the copy of the World its undo keeps (never changed unless
+   *  the undo runs), and the point it was taken at; the spare restart point taken at that point
+   *  shares it (actionGroup.ts). Cleared when the edit ends. */
+  beforeEdit: { world: World; time: number; records: number; applied: number; events: number } | null = null;
   counts = emptyCounts();
   eventTotal = 0;
   goals: Goal[] = [];

@@ -118,6 +118,8 @@ export function applyToCore(
   } catch (e) {
     undo();
     throw laterActionRefusal(e);
+  } finally {
+    c.beforeEdit = null;
   }
   if (!c.history) return forward ? noteInstant(instant, c, a, undo) : null;
   return instant;
@@ -165,6 +167,8 @@ export function actionsOnCore(
     } catch (e) {
       undo();
       throw e;
+    } finally {
+      c.beforeEdit = null;
     }
     return c;
   }

@@ -1,7 +1,7 @@
 /**
- * Determinism of the incremental paths: a scene built one action per apply (reads in between or
- * not: the keyframe after an instant's actions is owed until something needs it, checkpoint.ts),
- * then edits at the horizon's instant one call at a time, edits of the last action there taken
+ * Determinism of the incremental paths: a gas (frictionless, or with friction) built one action
+ * per apply (reads in between or not: the keyframe after an instant's actions is owed until
+ * something needs it, checkpoint.ts), then edits at the horizon's instant one call at a time, edits of the last action there taken
  * back and given again the editor's way (setActions without it, prolongTo, apply: the spare
  * restart point, restartPoint.ts), edits at earlier instants, all give the log, counts, states
  * and event details that building the final action list from scratch gives, bit for bit.
@@ -95,10 +95,17 @@ describe("incremental and from-scratch builds give the same history", () => {
         fc.integer({ min: 8, max: 60 }),
         fc.integer({ min: 1, max: 1000 }),
         fc.boolean(),
+        fc.constantFrom(0, 0.001),
         fc.array(fc.boolean(), { minLength: 1, maxLength: 70 }),
         ops,
-        (n, gasSeed, compute, reads, steps) => {
-          const s = dilutedGas({ n, packing: 0.15, seed: gasSeed });
+        (n, gasSeed, compute, mu, reads, steps) => {
+          // frictionless, or with friction (stops, g = 1)
+          const gas = dilutedGas({ n, packing: 0.15, seed: gasSeed });
+          const s = {
+            ...gas,
+            g: mu > 0 ? 1 : gas.g,
+            actions: gas.actions.map((a) => (a.type === "addBody" ? { ...a, mu } : a)),
+          };
           const tl = new Timeline({ g: s.g, gravity: s.gravity, compute });
           s.actions.forEach((a, i) => {
             tl.apply(a);

@@ -5,11 +5,11 @@
  * records back, or at the start: 85 ms of recomputation at 6,000 discs for each merged edit of the
  * editor). It is either
  * - the keyframe after the first actions of an instant, when a later call applied more actions at
- *   the same instant with nothing logged between (actionGroup.ts: the keyframe that group replaced),
- *   or
+ *   the same instant with nothing logged between (actionGroup.ts: the keyframe that group replaced,
+ *   with the copy of the World that call's undo took there, when it took one), or
  * - the point just before an instant's first actions (noteInstantStart), taken when the last
  *   restart point lies at least SPARE_BODIES_PER_RECORD times fewer records back than there are
- *   live bodies (see there).
+ *   live bodies (see there), with the copy of the World the edit under way took there, if any.
  * Either is a valid restart point for a first change `d` at time `cut` (spareFits): the actions
  * before it are unchanged (actionCount <= d), and it lies before `cut`, or at `cut` after some of
  * that instant's actions (the rest are applied as the same group) or before all of them, every event
@@ -18,6 +18,7 @@
  * history up to it is cut (restoreKeyframe, forgetBefore), kept and given back by an undo (undo.ts).
  */
 import type { Action } from "../scene/types.js";
+import type { World } from "../sim/world.js";
 import { restartsAt } from "./actionData.js";
 import { keyframeOf, lastKeyframeRecord, restorePoint } from "./checkpoint.js";
 import type { TimelineCore } from "./core.js";
@@ -26,9 +27,10 @@ import type { Keyframe } from "./keyframe.js";
 /**
  * The spare before an instant's actions is taken when the newest restart point lies at least
  * max(1, live bodies / SPARE_BODIES_PER_RECORD) records back. It copies 40 bytes per body (its
- * order, properties and obstacles are the last keyframe's), a few nanoseconds per body, while a
- * record costs microseconds of computation to replay: at most a few per cent more work for a
- * script applying an action every that many records, and a restart replays at most that many.
+ * order, properties and obstacles are the last keyframe's; the World's copy, when it has one, is
+ * the undo's), a few nanoseconds per body, while a record costs microseconds of computation to
+ * replay: at most a few per cent more work for a script applying an action every that many
+ * records, and a restart replays at most that many.
  */
 export const SPARE_BODIES_PER_RECORD = 8;
 
@@ -41,7 +43,23 @@ export function noteInstantStart(c: TimelineCore): void {
   if (c.applied > 0 && (c.acts[c.applied - 1] as Action).time >= t) return;
   const newest = Math.max(lastKeyframeRecord(c), c.spare?.record ?? 0);
   if (c.records.length - newest < Math.max(1, c.live.size / SPARE_BODIES_PER_RECORD)) return;
-  c.spare = { ...keyframeOf(c, false), world: c.world.clone() };
+  const kf = keyframeOf(c, false);
+  const world = worldCopyHere(c);
+  c.spare = world === null ? kf : { ...kf, world };
+}
+
+/** The copy of the World the edit under way took for its undo (core.beforeEdit), when it holds the
+ *  core's current point: the spare shares it (restored by a copy: no grid to rebuild, no prediction
+ *  to make). A group applied by a recomputation has none: its spare is rebuilt from its motions. */
+export function worldCopyHere(c: TimelineCore): World | null {
+  const b = c.beforeEdit;
+  const here =
+    b !== null &&
+    b.time === c.world.time &&
+    b.records === c.records.length &&
+    b.applied === c.applied &&
+    b.events === c.eventTotal;
+  return here ? b.world : null;
 }
 
 /** Whether the spare is a restart point for a first change `d` at time `cut` (see the header) that

@@ -24,9 +24,12 @@
  * computing forward only adds and deletes entries, so its undo rebuilds them from the id lists and
  * the World it gives back (renumber), O(ids) on an error only (a copy per apply made a scene built
  * one obstacle per apply quadratic). The keyframe owed (checkpoint.ts), the spare restart point and
- * the kept view of the scene (actionGroup.ts) are given back or dropped with the rest.
+ * the kept view of the scene (actionGroup.ts) are given back or dropped with the rest. The World's
+ * copy is also noted as core.beforeEdit, for the spare restart point to share (the undo, which
+ * would make it the core's World, also gives back the spare as it was).
  * The undo must run before any other operation on the core.
  */
+import type { World } from "../sim/world.js";
 import type { TimelineCore } from "./core.js";
 import type { Keyframe } from "./keyframe.js";
 import { MotionTable, STRIDE } from "./motionTable.js";
@@ -96,6 +99,20 @@ function renumber(c: TimelineCore): void {
   c.pointNums = numbers(c.pointIds, (id) => w.hasPoint(id));
 }
 
+/** A copy of the core's World for an undo, noted as core.beforeEdit with the point it holds. */
+function copyWorld(c: TimelineCore): World {
+  const world = c.world.clone();
+  if (c.history)
+    c.beforeEdit = {
+      world,
+      time: world.time,
+      records: c.records.length,
+      applied: c.applied,
+      events: c.eventTotal,
+    };
+  return world;
+}
+
 export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): () => void {
   // (a timeline without history may hold no keyframe at all)
   const kfs = c.rawKeyframes; // (an owed keyframe stays owed: it is saved below)
@@ -106,7 +123,7 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
   const start = (list: readonly unknown[], count: number | undefined): number =>
     edit === undefined ? 0 : fwd ? list.length : Math.min(count ?? 0, list.length);
   const saved = {
-    world: edit?.worldReplaced ? c.world : c.world.clone(),
+    world: edit?.worldReplaced ? c.world : copyWorld(c),
     acts: edit === undefined ? c.acts.slice() : c.acts,
     actsLength: c.acts.length,
     actEvents: tailOf(
@@ -174,6 +191,7 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
     c.owed = saved.owed;
     c.spare = saved.spare;
     c.view = null;
+    c.beforeEdit = null;
     c.rewrites++;
     c.counts = saved.counts;
     c.eventTotal = saved.eventTotal;
