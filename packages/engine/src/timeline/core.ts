@@ -88,6 +88,9 @@ export class TimelineCore {
    *  the undo runs), and the point it was taken at; the spare restart point taken at that point
    *  shares it (actionGroup.ts). Cleared when the edit ends. */
   beforeEdit: { world: World; time: number; records: number; applied: number; events: number } | null = null;
+  /** During an apply at or after the horizon: its instant, where the spare restart point may be
+   *  taken before the instant's actions (restartPoint.ts). */
+  spareAt: number | null = null;
   counts = emptyCounts();
   eventTotal = 0;
   goals: Goal[] = [];

@@ -93,6 +93,7 @@ export function applyToCore(
     ? { fromKeyframe: c.rawKeyframes.length - 1, insertAt, worldReplaced: false, forward: true }
     : restartScope(c, k, spare, insertAt);
   const undo = saveCore(c, forward ? c.records.length : restartRecord(c, k, spare), scope);
+  c.spareAt = a.time >= c.horizon ? a.time : null;
   try {
     const oldHorizon = c.horizon;
     if (!forward) restart(c, k, spare);
@@ -120,6 +121,7 @@ export function applyToCore(
     throw laterActionRefusal(e);
   } finally {
     c.beforeEdit = null;
+    c.spareAt = null;
   }
   if (!c.history) return forward ? noteInstant(instant, c, a, undo) : null;
   return instant;

@@ -9,7 +9,9 @@
  *   with the copy of the World that call's undo took there, when it took one), or
  * - the point just before an instant's first actions (noteInstantStart), taken when the last
  *   restart point lies at least SPARE_BODIES_PER_RECORD times fewer records back than there are
- *   live bodies (see there), with the copy of the World the edit under way took there, if any.
+ *   live bodies (see there), at the instant of an apply at or after the horizon, with the copy of
+ *   the World its undo took there if it took it there (an edit in the past, or a setActions, takes
+ *   none: taken back, it restarts where it did).
  * Either is a valid restart point for a first change `d` at time `cut` (spareFits): the actions
  * before it are unchanged (actionCount <= d), and it lies before `cut`, or at `cut` after some of
  * that instant's actions (the rest are applied as the same group) or before all of them, every event
@@ -27,18 +29,21 @@ import type { Keyframe } from "./keyframe.js";
 /**
  * The spare before an instant's actions is taken when the newest restart point lies at least
  * max(1, live bodies / SPARE_BODIES_PER_RECORD) records back. It copies 40 bytes per body (its
- * order, properties and obstacles are the last keyframe's; the World's copy, when it has one, is
- * the undo's), a few nanoseconds per body, while a record costs microseconds of computation to
+ * order, properties and obstacles are the last keyframe's; a copy of the World is the undo's), a
+ * few nanoseconds per body, while a record costs microseconds of computation to
  * replay: at most a few per cent more work for a script applying an action every that many
  * records, and a restart replays at most that many.
  */
 export const SPARE_BODIES_PER_RECORD = 8;
 
 /** Before a group of actions at a new instant (with history): keep the point before it as the
- *  spare when the newest restart point lies far enough back (above), every event at the instant
- *  processed and none of its actions applied. */
+ *  spare when it is the instant of an apply at or after the horizon (core.spareAt: a recomputation
+ *  for anything else keeps none), the newest restart point lies far enough back (above), every
+ *  event at the instant is processed and none of its actions applied. With the copy of the World
+ *  the apply's undo took there, if it took it there. */
 export function noteInstantStart(c: TimelineCore): void {
   const t = c.world.time;
+  if (c.spareAt !== t) return;
   if (!c.atTimeLimit || c.groupOpen) return;
   if (c.applied > 0 && (c.acts[c.applied - 1] as Action).time >= t) return;
   const newest = Math.max(lastKeyframeRecord(c), c.spare?.record ?? 0);
@@ -50,7 +55,7 @@ export function noteInstantStart(c: TimelineCore): void {
 
 /** The copy of the World the edit under way took for its undo (core.beforeEdit), when it holds the
  *  core's current point: the spare shares it (restored by a copy: no grid to rebuild, no prediction
- *  to make). A group applied by a recomputation has none: its spare is rebuilt from its motions. */
+ *  to make). */
 export function worldCopyHere(c: TimelineCore): World | null {
   const b = c.beforeEdit;
   const here =
