@@ -4,8 +4,9 @@
  *
  * `criticalPoint(x, lo, hi, out)` refines an approximate critical point x to where the exact
  * derivative p' changes sign; `nearestCritical(x, limit, out)` finds the nearest such sign change
- * between x and limit. Both decide on exact signs of p': compensated Horner on the double-double
- * coefficients i·cᵢ with its error bound, else BigInt (exactPoly.ts); both write the two adjacent
+ * between x and limit. Both decide on exact signs of p': plain Horner with its bound, else
+ * compensated Horner on the double-double coefficients i·cᵢ with its error bound, else BigInt
+ * (exactPoly.ts); both write the two adjacent
  * doubles around the sign change (equal where p' is exactly 0). Bisection is bounded by
  * ROOTS_MAX_ITERATIONS, else RootSolverError.
  *
@@ -15,7 +16,7 @@
 
 import { ROOTS_MAX_ITERATIONS } from "../tolerances.js";
 import { RootSolverError, splitPoint } from "./bracket.js";
-import { compHornerDD } from "./compHorner.js";
+import { compHornerDD, hornerBound } from "./compHorner.js";
 import { exactDerivativeSign, nextDown, nextUp } from "./exactPoly.js";
 import { mulPow2 } from "./pow2.js";
 
@@ -59,8 +60,19 @@ function loadDerivative(): void {
   }
 }
 
-/** Exact sign of P' at x (compensated double-double, then BigInt). */
+/**
+ * Exact sign of P' at x (plain Horner on the high parts, then compensated double-double, then
+ * BigInt). The plain value decides when it exceeds twice Higham's bound: once for the rounding of
+ * the evaluation, once for the low parts it leaves out (|dLo[i]| <= u |dHi[i]|, so their sum is
+ * within u times the bound's p~(|x|), far below the bound's 2.5 n u p~(|x|)). Every probe of
+ * nearestCritical's search away from a critical point is decided so: a disc sliding along a channel
+ * exactly its diameter wide met a double root at each wall's end point, and some 110 compensated
+ * evaluations per solve there cost ten times the solve of a channel 0.01 wider.
+ */
 function certDerivSign(x: number): number {
+  hornerBound(dHi, deg - 1, x, ev);
+  const p = ev[0] as number;
+  if (Math.abs(p) > 2 * (ev[1] as number)) return p > 0 ? 1 : -1;
   compHornerDD(dHi, dLo, deg - 1, x, ev);
   const v = ev[0] as number;
   if (Math.abs(v) > (ev[1] as number)) return v > 0 ? 1 : -1;
@@ -145,6 +157,10 @@ export function nearestCritical(x: number, limit: number, out: Float64Array): bo
     out[0] = out[1] = start;
     return true;
   }
+  // p' moving away from 0 all the way (p'' of the sign s0 on the way up, -s0 on the way down): no
+  // probe below could find another sign, and the search would end with none (next to a double
+  // root, whose p' grows steadily on both sides, that cost ~55 probes each way; see certDerivSign).
+  if (movesAwayFromZero(up ? start : end, up ? end : start, up ? s0 : -s0)) return false;
   const ax = x < 0 ? -x : x;
   let off = x === 0 ? Number.MIN_VALUE : nextUp(ax) - ax;
   let prev = start;
@@ -164,6 +180,41 @@ export function nearestCritical(x: number, limit: number, out: Float64Array): bo
     if (last) return false;
   }
   return false;
+}
+
+const d2 = new Float64Array(3);
+const d3 = new Float64Array(2);
+
+/**
+ * Whether P'' certainly has the sign `sign` on all of [a, b] (a < b), for P of degree 2 to 4: P''
+ * of that exact sign at both ends and P''' (of degree at most 1) of one exact sign at both ends, so
+ * that P'' is monotone between them. False when undecided (higher degree, or values too near 0).
+ */
+function movesAwayFromZero(a: number, b: number, sign: number): boolean {
+  if (deg < 2 || deg > 4) return false;
+  // The coefficients of P'' and P''', each rounded once (relative error <= u: see signOrZero).
+  for (let i = 2; i <= deg; i++) d2[i - 2] = i * (i - 1) * (P[i] as number);
+  if (deg === 2) return Math.sign(d2[0] as number) === sign;
+  for (let i = 3; i <= deg; i++) d3[i - 3] = i * (i - 1) * (i - 2) * (P[i] as number);
+  const s3 = signOrZero(d3, deg - 3, a);
+  return (
+    s3 !== 0 &&
+    signOrZero(d3, deg - 3, b) === s3 &&
+    signOrZero(d2, deg - 2, a) === sign &&
+    signOrZero(d2, deg - 2, b) === sign
+  );
+}
+
+/**
+ * The exact sign at x of the polynomial whose exact coefficients are within a relative u of c[0..n],
+ * or 0 when plain Horner cannot tell: the value must exceed twice Higham's bound (once for the
+ * evaluation, once for the coefficients' rounding, as in certDerivSign).
+ */
+function signOrZero(c: Float64Array, n: number, x: number): number {
+  if (n === 0) return Math.sign(c[0] as number);
+  hornerBound(c, n, x, ev);
+  const v = ev[0] as number;
+  return Math.abs(v) > 2 * (ev[1] as number) ? (v > 0 ? 1 : -1) : 0;
 }
 
 /** Bisect a sign change of P' between a < b (exact signs sa, sb) down to adjacent doubles. */
