@@ -146,6 +146,15 @@ export function criticalPoint(x: number, lo: number, hi: number, out: Float64Arr
  * out[1] (equal when P' is exactly 0 there) and returns true; false when there is none.
  */
 export function nearestCritical(x: number, limit: number, out: Float64Array): boolean {
+  return searchCritical(x, limit, out, true);
+}
+
+/** nearestCritical without its shortcut (movesAwayFromZero): for the test that both agree. */
+export function probeCritical(x: number, limit: number, out: Float64Array): boolean {
+  return searchCritical(x, limit, out, false);
+}
+
+function searchCritical(x: number, limit: number, out: Float64Array, shortcut: boolean): boolean {
   if (deg < 2 || x === limit) return false;
   loadDerivative();
   const up = limit > x;
@@ -160,7 +169,7 @@ export function nearestCritical(x: number, limit: number, out: Float64Array): bo
   // p' moving away from 0 all the way (p'' of the sign s0 on the way up, -s0 on the way down): no
   // probe below could find another sign, and the search would end with none (next to a double
   // root, whose p' grows steadily on both sides, that cost ~55 probes each way; see certDerivSign).
-  if (movesAwayFromZero(up ? start : end, up ? end : start, up ? s0 : -s0)) return false;
+  if (shortcut && movesAwayFromZero(up ? start : end, up ? end : start, up ? s0 : -s0)) return false;
   const ax = x < 0 ? -x : x;
   let off = x === 0 ? Number.MIN_VALUE : nextUp(ax) - ax;
   let prev = start;
@@ -190,7 +199,7 @@ const d3 = new Float64Array(2);
  * of that exact sign at both ends and P''' (of degree at most 1) of one exact sign at both ends, so
  * that P'' is monotone between them. False when undecided (higher degree, or values too near 0).
  */
-function movesAwayFromZero(a: number, b: number, sign: number): boolean {
+export function movesAwayFromZero(a: number, b: number, sign: number): boolean {
   if (deg < 2 || deg > 4) return false;
   // The coefficients of P'' and P''', each rounded once (relative error <= u: see signOrZero).
   for (let i = 2; i <= deg; i++) d2[i - 2] = i * (i - 1) * (P[i] as number);
