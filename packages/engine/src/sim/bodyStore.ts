@@ -33,34 +33,37 @@ const F64_FIELDS = [
 const I32_FIELDS = ["evKind", "evOther", "evAux", "crossDir"] as const;
 
 export class BodyStore {
-  capacity: number;
+  // Fields first set in the constructor are `declare`d: a field declared without a value is defined
+  // as undefined first (ES2022 class fields), and V8 then no longer knows which array it holds and
+  // checks the array's map at every read (docs/engine-throughput.md, session 24).
+  declare capacity: number;
   count = 0;
   /** Id of each live slot; undefined for free slots. */
   ids: (string | undefined)[] = [];
   private free: number[] = [];
   /** Current motion, 8 doubles per slot (one cache line): t0, x0, y0, vx0, vy0, ax, ay, tEnd. */
-  mot: Float64Array;
-  r: Float64Array;
-  m: Float64Array;
-  mu: Float64Array;
-  version: Float64Array;
+  declare mot: Float64Array;
+  declare r: Float64Array;
+  declare m: Float64Array;
+  declare mu: Float64Array;
+  declare version: Float64Array;
   /** Next predicted interaction (collision or stop) and with whom. */
-  evTime: Float64Array;
-  evOtherVersion: Float64Array;
-  evKind: Int32Array;
-  evOther: Int32Array;
+  declare evTime: Float64Array;
+  declare evOtherVersion: Float64Array;
+  declare evKind: Int32Array;
+  declare evOther: Int32Array;
   /** Line events: 0 = the line itself, 1 = its first end point, 2 = its second end point. */
-  evAux: Int32Array;
+  declare evAux: Int32Array;
   /** Next cell crossing and its direction (0: -x, 1: +x, 2: -y, 3: +y). */
-  crossTime: Float64Array;
-  crossDir: Int32Array;
+  declare crossTime: Float64Array;
+  declare crossDir: Int32Array;
   /** Bounding box of the whole remaining path including the radius (infinite when unbounded). */
-  boxMinX: Float64Array;
-  boxMinY: Float64Array;
-  boxMaxX: Float64Array;
-  boxMaxY: Float64Array;
+  declare boxMinX: Float64Array;
+  declare boxMinY: Float64Array;
+  declare boxMaxX: Float64Array;
+  declare boxMaxY: Float64Array;
   /** Order key of each slot's id (idOrder.ts): the response orders a colliding pair without reading the strings. */
-  idKey: Float64Array;
+  declare idKey: Float64Array;
 
   constructor(capacity = 16) {
     this.capacity = capacity;

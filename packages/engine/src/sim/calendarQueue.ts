@@ -35,13 +35,14 @@ const MAX_BUCKET = 2 ** 52;
 const FRONT_CROWDED = 64;
 
 export class CalendarQueue {
-  private key: Float64Array;
-  private loc: Int32Array;
+  // `declare`: set in the constructor, never undefined, so V8 knows their types (bodyStore.ts).
+  declare private key: Float64Array;
+  declare private loc: Int32Array;
   /** Ring and overflow lists (per slot). */
-  private next: Int32Array;
-  private prev: Int32Array;
+  declare private next: Int32Array;
+  declare private prev: Int32Array;
   /** Entries due in the current bucket or earlier. */
-  private front: FrontHeap;
+  declare private front: FrontHeap;
   private ring: Int32Array = new Int32Array(16).fill(-1);
   private mask = 15;
   private overHead = -1;

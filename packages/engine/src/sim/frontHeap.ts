@@ -5,12 +5,12 @@
  * Each slot's heap position is kept (`pos`) for O(log n) update and removal.
  */
 export class FrontHeap {
-  /** Slots and their keys in heap order; n entries. */
-  slots: Int32Array;
-  keys: Float64Array;
+  /** Slots and their keys in heap order; n entries (`declare`: never undefined, see bodyStore.ts). */
+  declare slots: Int32Array;
+  declare keys: Float64Array;
   n = 0;
   /** Heap position of each slot in the heap (meaningless for slots not in it). */
-  private pos: Int32Array;
+  declare private pos: Int32Array;
   private readonly tieLess: (a: number, b: number) => boolean;
 
   constructor(capacity: number, tieLess: (a: number, b: number) => boolean) {

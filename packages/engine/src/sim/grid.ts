@@ -63,13 +63,14 @@ export class Grid {
    * coarse disc near more finer cells than the finer level has bodies tests those bodies instead.
    */
   members: number[][] = [[]];
-  memberPos: Int32Array;
+  // `declare`: set in the constructor, never undefined, so V8 knows the array type (bodyStore.ts).
+  declare memberPos: Int32Array;
   head: Int32Array = new Int32Array(1).fill(-1);
-  next: Int32Array;
-  prev: Int32Array;
+  declare next: Int32Array;
+  declare prev: Int32Array;
   /** Global cell of each slot (-1: not registered), and its level. */
-  cellOf: Int32Array;
-  levelOf: Int8Array;
+  declare cellOf: Int32Array;
+  declare levelOf: Int8Array;
 
   constructor(slotCapacity: number) {
     this.next = new Int32Array(slotCapacity).fill(-1);

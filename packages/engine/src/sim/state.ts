@@ -36,9 +36,10 @@ export class SimState {
   protected gravY = 0;
   /** The optimisation switches in effect: WorldOptions.optimizations with the defaults (all true) filled in. */
   readonly opt: { [K in keyof Optimizations]-?: boolean };
-  protected store: BodyStore;
-  protected grid: Grid;
-  protected heap: CalendarQueue;
+  // `declare`: set in the constructor, never undefined, so V8 knows their classes (bodyStore.ts).
+  declare protected store: BodyStore;
+  declare protected grid: Grid;
+  declare protected heap: CalendarQueue;
   /**
    * The lines and points, in the order they were added, and where each id sits in them
    * (obstacleIndex.ts). A removed one stays in its list until compactObstacles: every read of a
