@@ -5,6 +5,12 @@
 // (within OVERLAP_REL and just past it), tiny radii and far-off coordinates.
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
+import {
+  placementFrame as frame,
+  type PlacementPlace as Place,
+  placementPlace as place,
+  placementUnit as unit,
+} from "../sim/testSupport.js";
 import { seedFor } from "../timeline/testSupport.js";
 import { SceneError } from "./errors.js";
 import { discOverlapsLine, discOverlapsPoint, discsOverlap } from "./overlap.js";
@@ -109,31 +115,6 @@ class Scan {
   }
 }
 
-const frame = fc
-  .record({
-    os: fc.constantFrom(
-      [0, 1],
-      [0, 1],
-      [1e6, 1],
-      [-1e12, 1],
-      [3e15, 4],
-      [1e29, 1e18],
-      [0, 1e-6],
-      [1e6, 1e-6],
-    ),
-    rho: fc.constantFrom(0.5, 1, 1.9),
-  })
-  .map(({ os, rho }) => ({ o: os[0] as number, s: os[1] as number, rho }));
-const unit = fc.integer({ min: -40, max: 40 }).map((k) => k / 2);
-const place = fc.record({
-  u: fc.tuple(unit, unit),
-  near: fc.oneof(fc.constant(-1), fc.nat(200)),
-  what: fc.constantFrom("body", "line", "point"),
-  end: fc.constantFrom(0, 0.5, 1),
-  angle: fc.constantFrom(0, 1, 2, 3, 0.5),
-  gap: fc.constantFrom(0, 0, 3e-10, -3e-10, 1e-9, -1e-9, 2e-9, -2e-9, 1e-3, -0.3, 0.5),
-});
-type Place = typeof place extends fc.Arbitrary<infer P> ? P : never;
 const kind = fc.constantFrom("segment", "segment", "segment", "ray", "line") as fc.Arbitrary<LineKind>;
 const step = fc.oneof(
   {

@@ -9,6 +9,12 @@ import { seedFor } from "../timeline/testSupport.js";
 import { OVERLAP_REL } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
 import { distanceToLine, type LineKind, makeLine } from "./obstacles.js";
+import {
+  placementFrame as frame,
+  type PlacementPlace as Place,
+  placementPlace as place,
+  placementUnit as unit,
+} from "./testSupport.js";
 import type { BodyState, Vec2 } from "./types.js";
 import { World } from "./world.js";
 
@@ -109,34 +115,6 @@ function apply(w: World, edit: Edit): string {
   }
 }
 
-/** A frame: coordinates o + s·u (far off, tiny, or plain), and the base discs' radius in units. */
-const frame = fc
-  .record({
-    os: fc.constantFrom(
-      [0, 1],
-      [0, 1],
-      [1e6, 1],
-      [-1e12, 1],
-      [3e15, 4],
-      [1e29, 1e18],
-      [0, 1e-6],
-      [1e6, 1e-6],
-    ),
-    rho: fc.constantFrom(0.5, 1, 1.9),
-  })
-  .map(({ os, rho }) => ({ o: os[0] as number, s: os[1] as number, rho }));
-const unit = fc.integer({ min: -40, max: 40 }).map((k) => k / 2);
-const gap = fc.constantFrom(0, 0, 3e-10, -3e-10, 1e-9, -1e-9, 2e-9, -2e-9, 1e-3, -0.3, 0.5);
-/** A place: a lattice point, or touching body/line/point number `near` (mod their count) up to `gap`. */
-const place = fc.record({
-  u: fc.tuple(unit, unit),
-  near: fc.oneof(fc.constant(-1), fc.nat(200)),
-  what: fc.constantFrom("body", "line", "point"),
-  end: fc.constantFrom(0, 0.5, 1),
-  angle: fc.constantFrom(0, 1, 2, 3, 0.5),
-  gap,
-});
-type Place = typeof place extends fc.Arbitrary<infer P> ? P : never;
 const step = fc.oneof(
   {
     arbitrary: fc.record({

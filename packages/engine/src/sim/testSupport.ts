@@ -3,6 +3,7 @@
  * break of a rack of touching discs (a scene that found several rounding defects), and a pit an
  * immovable disc passes over (the trap watch's tests).
  */
+import fc from "fast-check";
 import type { BodyState } from "./types.js";
 import { World } from "./world.js";
 
@@ -75,3 +76,33 @@ export function pit(gap: number): World {
   w.addBody("p", { x: T, y: apex - 0.5 * g * T * T, r: 1, m: Number.POSITIVE_INFINITY, vx: -1, vy: g * T });
   return w;
 }
+
+// The placement checks' property tests (sim/placementIndex, scene/sceneRulesIndex): the same frames and places.
+/** A frame: coordinates o + s·u (far off, tiny, or plain), and the base discs' radius in units. */
+export const placementFrame = fc
+  .record({
+    os: fc.constantFrom(
+      [0, 1],
+      [0, 1],
+      [1e6, 1],
+      [-1e12, 1],
+      [3e15, 4],
+      [1e29, 1e18],
+      [0, 1e-6],
+      [1e6, 1e-6],
+    ),
+    rho: fc.constantFrom(0.5, 1, 1.9),
+  })
+  .map(({ os, rho }) => ({ o: os[0] as number, s: os[1] as number, rho }));
+export const placementUnit = fc.integer({ min: -40, max: 40 }).map((k) => k / 2);
+const placementGap = fc.constantFrom(0, 0, 3e-10, -3e-10, 1e-9, -1e-9, 2e-9, -2e-9, 1e-3, -0.3, 0.5);
+/** A place: a lattice point, or touching body/line/point number `near` (mod their count) up to `gap`. */
+export const placementPlace = fc.record({
+  u: fc.tuple(placementUnit, placementUnit),
+  near: fc.oneof(fc.constant(-1), fc.nat(200)),
+  what: fc.constantFrom("body", "line", "point"),
+  end: fc.constantFrom(0, 0.5, 1),
+  angle: fc.constantFrom(0, 1, 2, 3, 0.5),
+  gap: placementGap,
+});
+export type PlacementPlace = typeof placementPlace extends fc.Arbitrary<infer P> ? P : never;
