@@ -6,10 +6,11 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import {
+  placementFarEnd as farEnd,
   placementFrame as frame,
   type PlacementPlace as Place,
   placementPlace as place,
-  placementUnit as unit,
+  placementPointStep as pointStep,
 } from "../sim/testSupport.js";
 import { seedFor } from "../timeline/testSupport.js";
 import { SceneError } from "./errors.js";
@@ -146,19 +147,13 @@ const step = fc.oneof(
     arbitrary: fc.record({
       op: fc.constant("line" as const),
       id: fc.integer({ min: 0, max: 47 }),
-      d: fc.oneof(
-        fc.tuple(unit, unit),
-        fc.tuple(fc.integer({ min: -900, max: 900 }), fc.integer({ min: -900, max: 900 })),
-      ),
+      d: farEnd,
       kind,
       place,
     }),
     weight: 4,
   },
-  {
-    arbitrary: fc.record({ op: fc.constant("point" as const), id: fc.integer({ min: 0, max: 47 }), place }),
-    weight: 3,
-  },
+  { arbitrary: pointStep, weight: 3 },
   {
     arbitrary: fc.record({
       op: fc.constant("remove" as const),

@@ -10,9 +10,11 @@ import { OVERLAP_REL } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
 import { distanceToLine, type LineKind, makeLine } from "./obstacles.js";
 import {
+  placementFarEnd as farEnd,
   placementFrame as frame,
   type PlacementPlace as Place,
   placementPlace as place,
+  placementPointStep as pointStep,
   placementUnit as unit,
 } from "./testSupport.js";
 import type { BodyState, Vec2 } from "./types.js";
@@ -138,19 +140,13 @@ const step = fc.oneof(
       op: fc.constant("line" as const),
       id: fc.integer({ min: 0, max: 47 }),
       a: fc.tuple(unit, unit),
-      b: fc.oneof(
-        fc.tuple(unit, unit),
-        fc.tuple(fc.integer({ min: -900, max: 900 }), fc.integer({ min: -900, max: 900 })),
-      ),
+      b: farEnd,
       kind: fc.constantFrom("segment", "segment", "segment", "ray", "line") as fc.Arbitrary<LineKind>,
       place,
     }),
     weight: 4,
   },
-  {
-    arbitrary: fc.record({ op: fc.constant("point" as const), id: fc.integer({ min: 0, max: 47 }), place }),
-    weight: 3,
-  },
+  { arbitrary: pointStep, weight: 3 },
   {
     arbitrary: fc.record({
       op: fc.constant("remove" as const),

@@ -106,3 +106,14 @@ export const placementPlace = fc.record({
   gap: placementGap,
 });
 export type PlacementPlace = typeof placementPlace extends fc.Arbitrary<infer P> ? P : never;
+/** A line's far end: near the lattice, or far off (a long wall across many cells). */
+export const placementFarEnd = fc.oneof(
+  fc.tuple(placementUnit, placementUnit),
+  fc.tuple(fc.integer({ min: -900, max: 900 }), fc.integer({ min: -900, max: 900 })),
+);
+/** Add or move point p<id> to a place. */
+export const placementPointStep = fc.record({
+  op: fc.constant("point" as const),
+  id: fc.integer({ min: 0, max: 47 }),
+  place: placementPlace,
+});
