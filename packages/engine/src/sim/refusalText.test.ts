@@ -65,7 +65,7 @@ describe("the World's refusals say what was given and quote ids as the scene's d
         "must be a positive number (or Infinity) (got NaN)",
       ],
       [() => w.addBody("b", disc({ r: "1" })), "r", 'must be a positive finite number (got the string "1")'],
-      [() => w.addBody("b", disc({ mu: -1 })), "mu", "must be a finite number >= 0 (got -1)"],
+      [() => w.addBody("b", disc({ mu: -1 })), "mu", "must be a non-negative finite number (got -1)"],
       [() => w.addBody("", disc({})), "id", 'must be a non-empty string (got the string "")'],
       [
         () => w.addBody("b", null as unknown as BodyInit),
@@ -114,7 +114,7 @@ describe("the World's refusals say what was given and quote ids as the scene's d
       [
         () => w.addLine("m", [0, 5], [1] as unknown as Vec2, "line"),
         "p2",
-        "must be a pair of finite numbers [x, y] (got an array of 1)",
+        "must be an array of two finite numbers (got an array of 1)",
       ],
       [
         () => w.addLine("m", [0, 5], [1, 5], "curve" as LineKind),
@@ -127,7 +127,7 @@ describe("the World's refusals say what was given and quote ids as the scene's d
       [() => w.addPoint("q", [0.5, 0]), "p", 'the point would lie inside body "a"'],
       [() => w.addPoint("p", [20, 20]), "id", 'a point with id "p" already exists'],
       [() => w.removePoint("zz"), "id", 'no point with id "zz"'],
-      [() => w.setGlobal({ g: -1 }), "g", "must be a finite number >= 0 (got -1)"],
+      [() => w.setGlobal({ g: -1 }), "g", "must be a non-negative finite number (got -1)"],
       [
         () => w.setGlobal({ gravity: [0, "1"] as unknown as Vec2 }),
         "gravity[1]",
@@ -138,7 +138,7 @@ describe("the World's refusals say what was given and quote ids as the scene's d
         "optimizations.broadPhase",
         'must be true or false (got the string "no")',
       ],
-      [() => new World({ g: Number.NaN }), "g", "must be a finite number >= 0 (got NaN)"],
+      [() => new World({ g: Number.NaN }), "g", "must be a non-negative finite number (got NaN)"],
       [
         () => w.advance({ untilTime: "5" as unknown as number }),
         "untilTime",

@@ -116,7 +116,7 @@ function requirePositiveFinite(path: string, v: unknown): number {
 
 function requireNonNegativeFinite(path: string, v: unknown): number {
   if (typeof v !== "number" || !Number.isFinite(v) || v < 0)
-    throw refused(path, "must be a finite number >= 0", v);
+    throw refused(path, "must be a non-negative finite number", v);
   return v;
 }
 
@@ -148,7 +148,7 @@ export function requireTime(path: string, v: unknown): number {
 
 /** A pair [x, y] of lengths or rates, each checked by requireBounded. */
 export function requireVec(path: string, v: unknown): Vec2 {
-  if (!Array.isArray(v) || v.length !== 2) throw refused(path, "must be a pair of finite numbers [x, y]", v);
+  if (!Array.isArray(v) || v.length !== 2) throw refused(path, "must be an array of two finite numbers", v);
   return [requireBounded(`${path}[0]`, v[0]), requireBounded(`${path}[1]`, v[1])];
 }
 
