@@ -475,6 +475,33 @@ export const NEGLIGIBLE_DRIFT = 16 * UNIT_ROUNDOFF;
 export const CONTACT_BAND = 16 * UNIT_ROUNDOFF;
 
 /**
+ * On a straight path (uniform or under friction), a contact with an end of a ray or segment counts
+ * only if the centre at the contact is not inside the solid part (along the line, from that end) by
+ * more than END_INSIDE_SLACK times the magnitudes of the contact (the centre's and the end's
+ * coordinates, and r). A centre inside is at most r from the line, so the interior touched first
+ * or at the same time and lineTime owns that contact; an end-point contact found there is the
+ * rounding of a graze: a disc sliding along the wall (touching, not approaching it) past its end,
+ * whose gap to the end dipped a rounding below 0. Its entry lies about sqrt(2 r delta) before the
+ * end for a gap rounded by delta, far above this slack (1,024 roundings) unless the coordinates are
+ * some 10^10 radii; the centre's own rounding near a genuine hit on the end is a few roundings, far
+ * below it. Without it a disc sliding under friction along a tilted channel of segments exactly
+ * its diameter wide took a tiny impulse at the wall's end and bounced between the two walls it
+ * touched: a Zeno error (session 25; the axis-parallel channel is exact: contactTimes.ts onEdgePath).
+ */
+export const END_INSIDE_SLACK = 1024 * UNIT_ROUNDOFF;
+
+/**
+ * On a straight path, an end of a ray or segment that lies r from the path's line within
+ * GRAZE_SLACK times the magnitudes of the contact (as END_INSIDE_SLACK) is passed untouched: a
+ * graze, whose exact gap touches 0 and never crosses it (a disc entering, leaving or sliding along a
+ * channel of tilted segments exactly its diameter wide; the axis-parallel case is exact:
+ * contactTimes.ts onEdgePath). The rounding of the path's direction and of the end's coordinates
+ * moves that distance by a few roundings of the magnitudes; 64 of them leave a disc passing that
+ * close overlapping the end by at most 64 roundings of its coordinates.
+ */
+export const GRAZE_SLACK = 64 * UNIT_ROUNDOFF;
+
+/**
  * At a collision the centres are the contact distance D apart (r1 + r2, or r from a line or point)
  * up to a few roundings of the coordinates. When, as doubles, they are farther than
  * CONTACT_UNRESOLVED_FRACTION·D from it, the coordinates are so large against the radii that their

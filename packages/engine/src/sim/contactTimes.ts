@@ -6,7 +6,7 @@
  */
 import { positionAt, velocityAt } from "../physics/motion.js";
 import { discDiscTimeScaled, discLineCrossings } from "../physics/timeOfImpact.js";
-import { CONTACT_BAND } from "../tolerances.js";
+import { CONTACT_BAND, END_INSIDE_SLACK, GRAZE_SLACK } from "../tolerances.js";
 import { BroadPhase } from "./broadPhase.js";
 import { type Line, lineParameter, parameterOnLine } from "./obstacles.js";
 
@@ -213,6 +213,61 @@ export class ContactTimes extends BroadPhase {
     if (tau === INF) return INF;
     const t = t0 + tau;
     return Math.max(t, this.now);
+  }
+
+  /**
+   * Earliest contact of body s with end 1 (x1, y1) or end 2 (x2, y2) of a ray or segment, or
+   * +Infinity: pointTime's, unless that contact is not the end's: the path is straight and the
+   * contact belongs to the interior (END_INSIDE_SLACK: the centre lies inside the solid part beyond
+   * the slack, on a path that does not turn back) or is a graze (GRAZE_SLACK: the end lies r from the path's line, within the
+   * rounding; a disc moving along a wall past its end). Either way the end is passed. Only on a
+   * straight path (uniform, under friction, from rest, or curved by no more than a rounding) does
+   * the first contact stand for all: its gap to the end is a quadratic in the distance travelled,
+   * so after an entry from inside only the exit follows, and a graze is one all the way. A curved
+   * path may come back from outside. One function with pointTime inlined into it, called from
+   * testLine: split in two, V8 inlined them into testLine, and the gas took 1,300 more instructions
+   * per collision at N = 10^3 (callgrind; this way 80 more, from 15,890).
+   */
+  protected endTime(s: number, line: Line, end: 1 | 2): number {
+    const px = end === 1 ? line.x1 : line.x2;
+    const py = end === 1 ? line.y1 : line.y2;
+    const t = this.pointTime(s, px, py);
+    if (t === INF) return INF;
+    const b = this.store;
+    const m = b.mot;
+    const k = s * 8;
+    const vx = m[k + 3] as number;
+    const vy = m[k + 4] as number;
+    const ax = m[k + 5] as number;
+    const ay = m[k + 6] as number;
+    const friction = (b.mu[s] as number) > 0;
+    const uniform = ax === 0 && ay === 0;
+    const fromRest = vx === 0 && vy === 0;
+    const vv = Math.abs(vx) + Math.abs(vy);
+    const aa = Math.abs(ax) + Math.abs(ay);
+    if (!(uniform || friction || fromRest || Math.abs(vx * ay - vy * ax) <= END_INSIDE_SLACK * vv * aa))
+      return t;
+    const tc = t - (m[k] as number);
+    const x0 = m[k + 1] as number;
+    const y0 = m[k + 2] as number;
+    const x = x0 + tc * (vx + 0.5 * ax * tc);
+    const y = y0 + tc * (vy + 0.5 * ay * tc);
+    const r = b.r[s] as number;
+    // (the centre is rounded from the motion's origin and from the way travelled since)
+    const scale = Math.abs(x0) + Math.abs(y0) + Math.abs(x) + Math.abs(y) + Math.abs(px) + Math.abs(py) + r;
+    // the centre inside the solid part, on a path that does not turn back: the interior's contact
+    const along = ((x - px) * line.ex + (y - py) * line.ey) / Math.sqrt(line.ee);
+    const monotone = uniform || friction || fromRest || vx * ax + vy * ay >= 0;
+    if (monotone && (end === 1 ? along : -along) > END_INSIDE_SLACK * scale) return INF;
+    // a graze: the end lies r from the path's line, within the rounding of the positions
+    let dx = vx + ax * tc;
+    let dy = vy + ay * tc;
+    if (dx === 0 && dy === 0) {
+      dx = ax;
+      dy = ay;
+    }
+    const h = Math.abs(dx * (py - y) - dy * (px - x)) / Math.sqrt(dx * dx + dy * dy);
+    return Math.abs(h - r) <= GRAZE_SLACK * scale ? INF : t;
   }
 
   /**

@@ -222,10 +222,10 @@ export class Predictor extends ContactTimes {
     const t = this.lineTime(s, line);
     if (t !== INF) this.offer(s, t, EV_LINE, i, 0);
     if (line.kind !== "line") {
-      const t1 = this.pointTime(s, line.x1, line.y1);
+      const t1 = this.endTime(s, line, 1);
       if (t1 !== INF) this.offer(s, t1, EV_LINE, i, 1);
       if (line.kind === "segment") {
-        const t2 = this.pointTime(s, line.x2, line.y2);
+        const t2 = this.endTime(s, line, 2);
         if (t2 !== INF) this.offer(s, t2, EV_LINE, i, 2);
       }
     }
