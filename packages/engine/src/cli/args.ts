@@ -115,12 +115,17 @@ a result that could not be written, 130 or 143 interrupted (SIGINT, SIGTERM).`;
 /** A time as written in decimal (12.5, .5, 3., 1e-3); Number() alone also takes 0x10 and 0b11. */
 const DECIMAL_TIME = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
 
-function time(name: string, v: string): number {
+/** For a bound that may be left out (--until-time), an infinite value's refusal says so, as
+ *  --max-events's does: a user asking for no limit learns how to get one. */
+const NO_LIMIT_HINT = " (for no limit, leave it out)";
+
+function time(name: string, v: string, hint = ""): number {
   const t = Number(v);
-  if (/^[+-]?infinity$/i.test(v.trim())) throw new UsageError(`${name}: must be a finite number, got "${v}"`);
+  if (/^[+-]?infinity$/i.test(v.trim()))
+    throw new UsageError(`${name}: must be a finite number, got "${v}"${hint}`);
   if (!DECIMAL_TIME.test(v.trim()) || t < 0)
     throw new UsageError(`${name}: must be a non-negative number, got "${v}"`);
-  if (!Number.isFinite(t)) throw new UsageError(`${name}: must be a finite number, got "${v}"`);
+  if (!Number.isFinite(t)) throw new UsageError(`${name}: must be a finite number, got "${v}"${hint}`);
   return t;
 }
 
@@ -250,7 +255,7 @@ export function parseArgs(argv: readonly string[]): Command {
   if (compact) c.compact = true;
   if (progress) c.progress = true;
   const ut = opts.get("--until-time");
-  if (ut !== undefined) c.untilTime = time("--until-time", ut as string);
+  if (ut !== undefined) c.untilTime = time("--until-time", ut as string, NO_LIMIT_HINT);
   const me = opts.get("--max-events");
   if (me !== undefined) c.maxEvents = count("--max-events", me as string);
   return c;
