@@ -52,7 +52,8 @@ export const USAGE = `Usage:
       Run the scene's actions and simulate until time T or N events (collisions and stops),
       whichever comes first; print the bodies then as JSON, with "reason": "time", "events" or
       "idle" (no event and no action left). An idle run's bodies are printed at T with
-      --until-time (they may still glide), else at its last event or action.
+      --until-time (they may still glide), at the scene's bound with its untils (below), else at
+      its last event or action.
       Without --until-time and --max-events, a scene whose actions carry an "until" (seconds
       and/or events to compute after the action) is computed as far as they say: every action
       applied and each until met, counted from its action; "reason" is then "until" (or "idle"),
