@@ -424,6 +424,17 @@ export const GRID_SEGMENT_TEST_COST = 1.5;
 export const GRID_CELLS_PER_ITEM = 16;
 
 /**
+ * An edit of a segment or point keeps the grid's layout (sim/obstacleUpkeep.ts: the obstacle is
+ * registered in, or taken out of, the cells it covers, and only the bodies it can concern are
+ * predicted again) while the segments and points number at most GRID_OBSTACLE_RELAYOUT times what
+ * the layout was computed for (counted as at least GRID_MIN_BODIES) and, when that was more than
+ * GRID_MIN_BODIES, at least 1 / GRID_OBSTACLE_RELAYOUT of it; past that the grid is laid out again
+ * and every body predicted, since the cost estimate that chose the layout (GRID_OBSTACLE_GAIN) grows
+ * with them. A stream of m edits so lays out the grid O(log m) times. Only speed depends on it.
+ */
+export const GRID_OBSTACLE_RELAYOUT = 2;
+
+/**
  * A touching pair (disc–disc, disc–point, disc–line) counts as approaching only when its gap
  * shrinks faster than APPROACH_NOISE times the sum of the magnitudes of the products that make up
  * the rate (physics/timeOfImpact.ts, physics/farContact.ts): 16 roundings, well above the few

@@ -32,6 +32,23 @@ function stretch(box: number[], x: number, y: number): void {
 }
 
 export class BroadPhase extends SimState {
+  /** Segments and points the grid's layout was computed for (obstacleUpkeep.ts keeps it while they stay near that). */
+  protected gridObstacles = 0;
+
+  protected override copyInto(target: SimState): void {
+    super.copyInto(target);
+    (target as BroadPhase).gridObstacles = this.gridObstacles;
+  }
+
+  /** The level-0 cells the segment (x1, y1)-(x2, y2) (a point: both ends equal) is registered in. */
+  protected cellsOfObstacle(x1: number, y1: number, x2: number, y2: number): number[] {
+    const pairs: number[] = [];
+    rasterizeSegment(this.grid, x1, y1, x2, y2, 0, pairs);
+    const cells: number[] = [];
+    for (let i = 0; i < pairs.length; i += 2) cells.push(pairs[i] as number);
+    return cells;
+  }
+
   /**
    * Rebuild the grid around the current positions (never changes a motion). A disc (ex, ey, er)
    * about to be added is included; while editing (`slack` > 1) the grid is made roomier so that
@@ -184,6 +201,7 @@ export class BroadPhase extends SimState {
     });
     this.grid.setObstacles(pairs);
     this.globalLines = global;
+    this.gridObstacles = this.lineList.length - global.length + this.pointList.length;
     this.obstStamp = new Int32Array(this.lineList.length + this.pointList.length);
     this.stamp = 0;
   }

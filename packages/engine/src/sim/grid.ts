@@ -32,6 +32,7 @@
 
 import { mulPow2 } from "../roots/pow2.js";
 import { GRID_CELL_MARGIN } from "../tolerances.js";
+import { buildLevel, levelBuilt, setObstacles } from "./gridObstacles.js";
 
 const INF = Number.POSITIVE_INFINITY;
 
@@ -141,14 +142,11 @@ export class Grid {
     if (this.head.length < cells || this.head.length > 4 * cells + 1024) this.head = new Int32Array(cells);
     this.head.fill(-1, 0, cells);
     this.count = new Int32Array(levels);
-    // No obstacles until setObstacles (which a rebuild calls after placing the bodies).
-    this.obstPairs = [];
-    this.obstBuilt = new Uint8Array(levels).fill(1);
-    this.obstStart = new Int32Array(cells + 1);
-    this.obstList = new Int32Array(0);
-    this.obstBits = new Int32Array((cells >> 5) + 1);
     this.members = nxOf.map(() => []);
     this.occupied = [];
+    // No obstacles until setObstacles (which a rebuild calls after placing the bodies).
+    setObstacles(this, []);
+    this.obstBuilt.fill(1);
     this.flat = true;
     this.cellOf.fill(-1);
   }
@@ -190,10 +188,7 @@ export class Grid {
     this.count[k] = c + 1;
     if (c === 0) {
       this.setOccupied([...this.occupied, k].sort((a, b) => a - b));
-      if (this.obstBuilt[k] === 0) {
-        this.obstBuilt[k] = 1;
-        this.buildObstacles();
-      }
+      if (this.obstBuilt[k] === 0) buildLevel(this, k);
     }
   }
 
@@ -280,79 +275,35 @@ export class Grid {
   }
 
   /**
-   * Static obstacles per cell in compressed rows: the codes of cell c are
-   * obstList[obstStart[c] .. obstStart[c + 1]). Codes: i >= 0 is segment i of the world's line
-   * list, -(i + 1) is point i. Filled by `setObstacles` for level 0 and the levels holding bodies
-   * (only a body scans its own level's obstacles); a level gets its lists when a body first enters
-   * it, so a rebuild does not pay for the many empty levels up to the single top cell.
+   * Static obstacles per cell (gridObstacles.ts): the codes of cell c are
+   * obstList[obstStart[c] .. obstEnd[c]), with room up to obstCap[c]. Codes: i >= 0 is segment i of
+   * the world's line list, -(i + 1) is point i. Built for level 0 and the levels holding bodies (only
+   * a body scans its own level's obstacles); a level gets its rows when a body first enters it.
    */
-  obstStart: Int32Array = new Int32Array(2);
+  obstStart: Int32Array = new Int32Array(1);
+  obstEnd: Int32Array = new Int32Array(1);
+  obstCap: Int32Array = new Int32Array(1);
   obstList: Int32Array = new Int32Array(0);
+  /** Codes and room laid out in obstList, and codes registered (gridObstacles.ts). */
+  obstTail = 0;
+  obstLive = 0;
   /**
-   * One bit per cell, set when its list is not empty: 1/32 of obstStart's size, so the scans of a
+   * One bit per cell, set when its row is not empty: 1/32 of obstStart's size, so the scans of a
    * large grid whose cells are mostly empty of obstacles read a few cached words, not obstStart.
    */
   obstBits: Int32Array = new Int32Array(1);
-  /** The level-0 (cell, code) pairs of the last `setObstacles` (never mutated), and the levels whose lists are built. */
-  private obstPairs: readonly number[] = [];
-  private obstBuilt: Uint8Array = new Uint8Array(1).fill(1);
+  /** The levels whose rows are built, and whether a copy shares the rows (copy on write). */
+  obstBuilt: Uint8Array = new Uint8Array(1).fill(1);
+  obstShared = false;
 
-  /**
-   * Set the obstacles from level-0 (cell, code) pairs; a coarser cell lists what its level-0 cells
-   * list (each code once, in the order first seen).
-   */
+  /** Set the obstacles from level-0 (cell, code) pairs (gridObstacles.ts). */
   setObstacles(level0: number[]): void {
-    this.obstPairs = level0.slice();
-    this.obstBuilt = new Uint8Array(this.levels);
-    this.obstBuilt[0] = 1;
-    for (const k of this.occupied) this.obstBuilt[k] = 1;
-    this.buildObstacles();
+    setObstacles(this, level0);
   }
 
-  /** Whether level k's obstacle lists are built (the others read as empty). */
+  /** Whether level k's obstacle rows are built (the others read as empty). */
   obstaclesBuilt(k: number): boolean {
-    return this.obstBuilt[k] === 1;
-  }
-
-  /** Build the compressed rows for the levels marked in obstBuilt. */
-  private buildObstacles(): void {
-    const level0 = this.obstPairs;
-    const pairs = level0.slice();
-    for (let k = 1; k < this.levels; k++) {
-      if (this.obstBuilt[k] === 0) continue;
-      const seen = new Set<number>();
-      const cells = (this.base[k + 1] as number) - (this.base[k] as number);
-      for (let i = 0; i < level0.length; i += 2) {
-        const c = level0[i] as number;
-        const cx = c % this.nx;
-        const cell = this.cellAt(k, cx, (c - cx) / this.nx);
-        const code = level0[i + 1] as number;
-        // Codes run from -(points) to lines - 1; key each (cell, code) pair uniquely.
-        const key = cell - (this.base[k] as number) + cells * (code + level0.length);
-        if (seen.has(key)) continue;
-        seen.add(key);
-        pairs.push(cell, code);
-      }
-    }
-    const nc = this.base[this.levels] as number;
-    const start = new Int32Array(nc + 1);
-    for (let i = 0; i < pairs.length; i += 2)
-      start[(pairs[i] as number) + 1] = (start[(pairs[i] as number) + 1] as number) + 1;
-    for (let c = 0; c < nc; c++) start[c + 1] = (start[c + 1] as number) + (start[c] as number);
-    const fill = start.slice(0, nc);
-    const list = new Int32Array(pairs.length / 2);
-    for (let i = 0; i < pairs.length; i += 2) {
-      const c = pairs[i] as number;
-      list[fill[c] as number] = pairs[i + 1] as number;
-      fill[c] = (fill[c] as number) + 1;
-    }
-    const bits = new Int32Array((nc >> 5) + 1);
-    for (let c = 0; c < nc; c++)
-      if ((start[c + 1] as number) > (start[c] as number))
-        bits[c >> 5] = (bits[c >> 5] as number) | (1 << (c & 31));
-    this.obstStart = start;
-    this.obstList = list;
-    this.obstBits = bits;
+    return levelBuilt(this, k);
   }
 
   /** Cell rectangle [x0, x1] x [y0, y1]; edge cells extend to infinity. */
@@ -390,10 +341,15 @@ export class Grid {
     g.members = this.members.map((m) => m.slice());
     g.memberPos = this.memberPos.slice();
     g.obstStart = this.obstStart;
+    g.obstEnd = this.obstEnd;
+    g.obstCap = this.obstCap;
     g.obstList = this.obstList;
+    g.obstTail = this.obstTail;
+    g.obstLive = this.obstLive;
     g.obstBits = this.obstBits;
-    g.obstPairs = this.obstPairs;
     g.obstBuilt = this.obstBuilt.slice();
+    g.obstShared = true;
+    this.obstShared = true;
     return g;
   }
 }

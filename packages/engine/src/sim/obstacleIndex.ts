@@ -12,7 +12,8 @@
  * entries in one ordered pass: the owner compacts before reading the list whole (a grid rebuild, a
  * placement check, a copy), a read that costs O(m) itself, so a run of k removals costs O(k + m)
  * rather than O(k m). Between a removal and the next compaction the list is read only by id
- * through this index.
+ * through this index. (A World whose grid holds the obstacles by position compacts at once and
+ * renumbers what refers to the positions after the removed one: obstacleUpkeep.ts.)
  */
 export class ObstacleIndex<T extends { readonly id: string }> {
   /** Position of each live obstacle's id in the list; null until first needed (a copied list is indexed then). */
@@ -45,6 +46,11 @@ export class ObstacleIndex<T extends { readonly id: string }> {
   get(list: readonly T[], id: string): T | undefined {
     const k = this.positions(list).get(id);
     return k === undefined ? undefined : list[k];
+  }
+
+  /** Position of the obstacle with this id in the list (-1: none). */
+  indexOf(list: readonly T[], id: string): number {
+    return this.positions(list).get(id) ?? -1;
   }
 
   /** Append `item` (its id must not be in the list). */

@@ -13,8 +13,8 @@ import { forEachBodyNearSegment } from "./bodiesNear.js";
 import { ChapgameError } from "./errors.js";
 import { ObstacleCells } from "./obstacleCells.js";
 import { distanceToLine, type Line, type LineKind, makeLine, type Point } from "./obstacles.js";
+import { ObstacleUpkeep } from "./obstacleUpkeep.js";
 import { quoteId } from "./refusalText.js";
-import { Simulator } from "./simulator.js";
 import type { LineState, PointState, Vec2 } from "./types.js";
 import { requireFields, requireId, requireLineDirection, requireLineKind, requireVec } from "./validate.js";
 
@@ -24,7 +24,7 @@ const KEEP = 1 - OVERLAP_REL;
 /** Below this many bodies an overlap check scans them all instead of using the grid. */
 const LINEAR_SCAN_BODIES = 64;
 
-export class Placement extends Simulator {
+export class Placement extends ObstacleUpkeep {
   /** Slot of each body id. */
   protected index = new Map<string, number>();
   /** The lines and the points by place, built when a disc is first checked (a copy starts without). */
@@ -171,9 +171,8 @@ export class Placement extends Simulator {
     requireId("id", id);
     if (this.hasLine(id)) throw new ChapgameError("id", `a line with id ${quoteId(id)} already exists`);
     const line = this.checkedLine(id, p1, p2, kind);
-    this.lineAt.add(this.lineList, line);
+    this.addLineEntry(line);
     if (this.lineCells !== null) indexLine(this.lineCells, line);
-    this.markDirty();
   }
 
   /**
@@ -201,18 +200,16 @@ export class Placement extends Simulator {
           ? "kind"
           : "p1";
     const line = this.checkedLine(id, p1, p2, kind, field);
-    this.lineAt.replace(this.lineList, line);
+    this.replaceLineEntry(line);
     if (this.lineCells !== null) indexLine(this.lineCells, line);
-    this.markDirty();
   }
 
   /** Remove a line at the current time. Throws ChapgameError naming `id` when there is no such line. */
   removeLine(id: string): void {
     requireId("id", id);
     if (!this.hasLine(id)) throw new ChapgameError("id", `no line with id ${quoteId(id)}`);
-    this.lineAt.remove(this.lineList, id);
+    this.removeLineEntry(id);
     this.lineCells?.delete(id);
-    this.markDirty();
   }
 
   /**
@@ -237,17 +234,15 @@ export class Placement extends Simulator {
   removePoint(id: string): void {
     requireId("id", id);
     if (!this.hasPoint(id)) throw new ChapgameError("id", `no point with id ${quoteId(id)}`);
-    this.pointAt.remove(this.pointList, id);
+    this.removePointEntry(id);
     this.pointCells?.delete(id);
-    this.markDirty();
   }
 
   /** Store a checked point, new or in place of the one of its id. */
   private placePoint(point: Point, replace: boolean): void {
-    if (replace) this.pointAt.replace(this.pointList, point);
-    else this.pointAt.add(this.pointList, point);
+    if (replace) this.replacePointEntry(point);
+    else this.addPointEntry(point);
     this.pointCells?.set(point.id, point, point.x, point.y, point.x, point.y, true);
-    this.markDirty();
   }
 
   /** All lines, sorted by id. */

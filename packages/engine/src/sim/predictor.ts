@@ -235,7 +235,7 @@ export class Predictor extends ContactTimes {
   protected scanCellObstacles(s: number, cell: number): void {
     const grid = this.grid;
     if (((grid.obstBits[cell >> 5] as number) & (1 << (cell & 31))) === 0) return;
-    const end = grid.obstStart[cell + 1] as number;
+    const end = grid.obstEnd[cell] as number;
     for (let k = grid.obstStart[cell] as number; k < end; k++) {
       const code = grid.obstList[k] as number;
       const key = code >= 0 ? code : this.lineList.length - code - 1;

@@ -1,0 +1,222 @@
+/**
+ * The grid's obstacle rows (grid.ts's obst* fields): per cell, the codes of the segments and points
+ * registered in it (i >= 0: line i of the World's list, -(i + 1): point i), for level 0 and the
+ * levels whose rows are built (level 0 and the levels holding bodies; a level gets its rows when a
+ * body first enters it, so a rebuild does not pay for the many empty levels up to the single top
+ * cell). A coarser cell lists what its level-0 cells list, each code once. The order within a row
+ * is no contract: predictions break ties between obstacles by id.
+ *
+ * All rows share one Int32Array: cell c's codes are obstList[obstStart[c] .. obstEnd[c]), with room
+ * up to obstCap[c]. A row that outgrows its room moves to the end of the list with twice the room
+ * (the list grows by doubling, and is packed when the rooms left behind outnumber the codes), so
+ * adding or removing one obstacle costs the cells it covers at each built level, not the grid:
+ * the World's obstacle edits (obstacleUpkeep.ts) keep the grid's layout this way. obstBits has one
+ * bit per cell whose row is not empty (the scans read a few cached words on a large, mostly empty
+ * grid). A copy of the grid shares the rows until either side edits them (copy on write).
+ */
+import type { Grid } from "./grid.js";
+
+/** Fewest codes of room a row gets when it first grows. */
+const ROW_ROOM_MIN = 4;
+
+/**
+ * Set the rows from level-0 (cell, code) pairs (each cell once per code), for level 0 and the
+ * levels holding bodies; the other levels get theirs when a body enters (buildLevel).
+ */
+export function setObstacles(g: Grid, level0: readonly number[]): void {
+  g.obstBuilt = new Uint8Array(g.levels);
+  g.obstBuilt[0] = 1;
+  for (const k of g.occupied) g.obstBuilt[k] = 1;
+  const pairs = level0.slice();
+  for (let k = 1; k < g.levels; k++) if (g.obstBuilt[k] === 1) coarsePairs(g, k, level0, pairs);
+  const nc = g.base[g.levels] as number;
+  g.obstStart = new Int32Array(nc);
+  g.obstEnd = new Int32Array(nc);
+  g.obstCap = new Int32Array(nc);
+  g.obstBits = new Int32Array((nc >> 5) + 1);
+  g.obstList = new Int32Array(Math.max(16, pairs.length / 2));
+  g.obstTail = 0;
+  g.obstLive = 0;
+  g.obstShared = false;
+  appendRows(g, pairs);
+}
+
+/** Whether level k's rows are built (the others read as empty). */
+export function levelBuilt(g: Grid, k: number): boolean {
+  return g.obstBuilt[k] === 1;
+}
+
+/** Build level k's rows (a body entered it for the first time), from level 0's. */
+export function buildLevel(g: Grid, k: number): void {
+  if (g.obstBuilt[k] === 1) return;
+  own(g);
+  g.obstBuilt[k] = 1;
+  const level0: number[] = [];
+  const cells0 = g.nx * g.ny;
+  for (let c = 0; c < cells0; c++)
+    for (let i = g.obstStart[c] as number; i < (g.obstEnd[c] as number); i++)
+      level0.push(c, g.obstList[i] as number);
+  const pairs: number[] = [];
+  coarsePairs(g, k, level0, pairs);
+  appendRows(g, pairs);
+}
+
+/** Register obstacle `code` in the level-0 cells `cells` (distinct) and their cells at every built level. */
+export function addObstacle(g: Grid, code: number, cells: readonly number[]): void {
+  own(g);
+  forEachCell(g, cells, (cell) => insert(g, cell, code));
+}
+
+/** Take obstacle `code`, registered in the level-0 cells `cells` (as addObstacle or setObstacles put it), out of every row. */
+export function removeObstacle(g: Grid, code: number, cells: readonly number[]): void {
+  own(g);
+  forEachCell(g, cells, (cell) => remove(g, cell, code));
+}
+
+/**
+ * The World's list dropped line `line` (or, with `line` undefined, point `point`) and closed the
+ * gap: renumber the codes after it, one pass over the list of codes.
+ */
+export function renumberAfterRemoval(g: Grid, line: number | undefined, point = 0): void {
+  own(g);
+  const list = g.obstList;
+  const tail = g.obstTail;
+  if (line !== undefined) {
+    for (let i = 0; i < tail; i++) if ((list[i] as number) > line) list[i] = (list[i] as number) - 1;
+  } else {
+    const code = -(point + 1);
+    for (let i = 0; i < tail; i++) if ((list[i] as number) < code) list[i] = (list[i] as number) + 1;
+  }
+}
+
+/** The level-0 cells `cells` and, at each other built level, the cells over them (each once). */
+function forEachCell(g: Grid, cells: readonly number[], visit: (cell: number) => void): void {
+  for (const c of cells) visit(c);
+  for (let k = 1; k < g.levels; k++) {
+    if (g.obstBuilt[k] !== 1) continue;
+    const seen = new Set<number>();
+    for (const c of cells) {
+      const cx = c % g.nx;
+      const cell = g.cellAt(k, cx, (c - cx) / g.nx);
+      if (seen.has(cell)) continue;
+      seen.add(cell);
+      visit(cell);
+    }
+  }
+}
+
+/** Append to `out` level k's (cell, code) pairs over the level-0 pairs `level0`, each once. */
+function coarsePairs(g: Grid, k: number, level0: readonly number[], out: number[]): void {
+  const seen = new Set<number>();
+  const cells = (g.base[k + 1] as number) - (g.base[k] as number);
+  for (let i = 0; i < level0.length; i += 2) {
+    const c = level0[i] as number;
+    const cx = c % g.nx;
+    const cell = g.cellAt(k, cx, (c - cx) / g.nx);
+    const code = level0[i + 1] as number;
+    // Codes run from -(points) to lines - 1; key each (cell, code) pair uniquely.
+    const key = cell - (g.base[k] as number) + cells * (code + level0.length);
+    if (seen.has(key)) continue;
+    seen.add(key);
+    out.push(cell, code);
+  }
+}
+
+/** Lay out new rows, without room to spare, for the (cell, code) pairs of cells whose rows are empty. */
+function appendRows(g: Grid, pairs: readonly number[]): void {
+  const counts = new Map<number, number>();
+  for (let i = 0; i < pairs.length; i += 2)
+    counts.set(pairs[i] as number, (counts.get(pairs[i] as number) ?? 0) + 1);
+  let need = 0;
+  for (const n of counts.values()) need += n;
+  reserveList(g, need);
+  for (const [cell, n] of counts) {
+    g.obstStart[cell] = g.obstTail;
+    g.obstEnd[cell] = g.obstTail;
+    g.obstCap[cell] = g.obstTail + n;
+    g.obstTail += n;
+  }
+  for (let i = 0; i < pairs.length; i += 2) {
+    const cell = pairs[i] as number;
+    g.obstList[g.obstEnd[cell] as number] = pairs[i + 1] as number;
+    g.obstEnd[cell] = (g.obstEnd[cell] as number) + 1;
+    g.obstBits[cell >> 5] = (g.obstBits[cell >> 5] as number) | (1 << (cell & 31));
+  }
+  g.obstLive += need;
+}
+
+function insert(g: Grid, cell: number, code: number): void {
+  if (g.obstEnd[cell] === g.obstCap[cell]) moveRow(g, cell);
+  const end = g.obstEnd[cell] as number;
+  g.obstList[end] = code;
+  g.obstEnd[cell] = end + 1;
+  g.obstBits[cell >> 5] = (g.obstBits[cell >> 5] as number) | (1 << (cell & 31));
+  g.obstLive++;
+}
+
+function remove(g: Grid, cell: number, code: number): void {
+  const start = g.obstStart[cell] as number;
+  const end = g.obstEnd[cell] as number;
+  for (let i = start; i < end; i++) {
+    if (g.obstList[i] !== code) continue;
+    g.obstList[i] = g.obstList[end - 1] as number;
+    g.obstEnd[cell] = end - 1;
+    if (end - 1 === start) g.obstBits[cell >> 5] = (g.obstBits[cell >> 5] as number) & ~(1 << (cell & 31));
+    g.obstLive--;
+    return;
+  }
+  throw new Error(`grid rows: obstacle ${code} is not registered in cell ${cell}`);
+}
+
+/** Move cell's full row to the end of the list with twice its room. */
+function moveRow(g: Grid, cell: number): void {
+  const len = (g.obstEnd[cell] as number) - (g.obstStart[cell] as number);
+  const room = Math.max(ROW_ROOM_MIN, 2 * len);
+  // Pack first when the list holds more unused room than codes (then it stays within a few times
+  // the codes it holds, and packing, O(cells + codes), comes at most once per that many codes added).
+  if (g.obstTail + room > g.obstList.length && g.obstTail - g.obstLive > g.obstLive) pack(g);
+  reserveList(g, room);
+  const start = g.obstStart[cell] as number;
+  g.obstList.copyWithin(g.obstTail, start, start + len);
+  g.obstStart[cell] = g.obstTail;
+  g.obstEnd[cell] = g.obstTail + len;
+  g.obstCap[cell] = g.obstTail + room;
+  g.obstTail += room;
+}
+
+/** Make room for `n` more codes at the end of the list. */
+function reserveList(g: Grid, n: number): void {
+  if (g.obstTail + n <= g.obstList.length) return;
+  const list = new Int32Array(Math.max(2 * g.obstList.length, g.obstTail + n));
+  list.set(g.obstList.subarray(0, g.obstTail));
+  g.obstList = list;
+}
+
+/** Lay the rows out again, each without room to spare, dropping the rooms left behind. */
+function pack(g: Grid): void {
+  const nc = g.obstStart.length;
+  const list = new Int32Array(Math.max(16, 2 * g.obstLive));
+  let tail = 0;
+  for (let c = 0; c < nc; c++) {
+    const start = g.obstStart[c] as number;
+    const end = g.obstEnd[c] as number;
+    list.set(g.obstList.subarray(start, end), tail);
+    g.obstStart[c] = tail;
+    tail += end - start;
+    g.obstEnd[c] = tail;
+    g.obstCap[c] = tail;
+  }
+  g.obstList = list;
+  g.obstTail = tail;
+}
+
+/** Stop sharing the rows with a copy of the grid before editing them. */
+function own(g: Grid): void {
+  if (!g.obstShared) return;
+  g.obstStart = g.obstStart.slice();
+  g.obstEnd = g.obstEnd.slice();
+  g.obstCap = g.obstCap.slice();
+  g.obstList = g.obstList.slice();
+  g.obstBits = g.obstBits.slice();
+  g.obstShared = false;
+}
