@@ -1,5 +1,5 @@
 /**
- * The World's edits of bodies and globals (obstacles: placement.ts), made at the current time.
+ * The World's edits of bodies and globals (obstacles: placement.ts, obstacleUpkeep.ts), made at the current time.
  * Every edit checks its input first: invalid input throws ChapgameError naming the field, and
  * changes nothing. A body edit re-predicts the body at once unless predictions are out of date;
  * a change of globals marks them out of date (the next advance predicts every body).

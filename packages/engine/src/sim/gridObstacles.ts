@@ -38,7 +38,7 @@ export function setObstacles(g: Grid, level0: readonly number[]): void {
   g.obstTail = 0;
   g.obstLive = 0;
   g.obstShared = false;
-  appendRows(g, pairs);
+  appendRows(g, pairs, 0, nc);
 }
 
 /** Whether level k's rows are built (the others read as empty). */
@@ -58,7 +58,7 @@ export function buildLevel(g: Grid, k: number): void {
       level0.push(c, g.obstList[i] as number);
   const pairs: number[] = [];
   coarsePairs(g, k, level0, pairs);
-  appendRows(g, pairs);
+  appendRows(g, pairs, g.base[k] as number, g.base[k + 1] as number);
 }
 
 /** Register obstacle `code` in the level-0 cells `cells` (distinct) and their cells at every built level. */
@@ -122,27 +122,35 @@ function coarsePairs(g: Grid, k: number, level0: readonly number[], out: number[
   }
 }
 
-/** Lay out new rows, without room to spare, for the (cell, code) pairs of cells whose rows are empty. */
-function appendRows(g: Grid, pairs: readonly number[]): void {
-  const counts = new Map<number, number>();
-  for (let i = 0; i < pairs.length; i += 2)
-    counts.set(pairs[i] as number, (counts.get(pairs[i] as number) ?? 0) + 1);
-  let need = 0;
-  for (const n of counts.values()) need += n;
-  reserveList(g, need);
-  for (const [cell, n] of counts) {
-    g.obstStart[cell] = g.obstTail;
-    g.obstEnd[cell] = g.obstTail;
-    g.obstCap[cell] = g.obstTail + n;
-    g.obstTail += n;
+/**
+ * Lay out new rows in cell order, without room to spare, for the (cell, code) pairs, whose cells
+ * lie in [lo, hi) and have empty rows.
+ */
+function appendRows(g: Grid, pairs: readonly number[], lo: number, hi: number): void {
+  const counts = new Int32Array(hi - lo);
+  for (let i = 0; i < pairs.length; i += 2) {
+    const c = (pairs[i] as number) - lo;
+    counts[c] = (counts[c] as number) + 1;
   }
+  reserveList(g, pairs.length / 2);
+  let tail = g.obstTail;
+  for (let c = lo; c < hi; c++) {
+    const n = counts[c - lo] as number;
+    if (n === 0) continue;
+    g.obstStart[c] = tail;
+    g.obstEnd[c] = tail;
+    tail += n;
+    g.obstCap[c] = tail;
+  }
+  g.obstTail = tail;
   for (let i = 0; i < pairs.length; i += 2) {
     const cell = pairs[i] as number;
-    g.obstList[g.obstEnd[cell] as number] = pairs[i + 1] as number;
-    g.obstEnd[cell] = (g.obstEnd[cell] as number) + 1;
+    const end = g.obstEnd[cell] as number;
+    g.obstList[end] = pairs[i + 1] as number;
+    g.obstEnd[cell] = end + 1;
     g.obstBits[cell >> 5] = (g.obstBits[cell >> 5] as number) | (1 << (cell & 31));
   }
-  g.obstLive += need;
+  g.obstLive += pairs.length / 2;
 }
 
 function insert(g: Grid, cell: number, code: number): void {

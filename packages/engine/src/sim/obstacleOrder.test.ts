@@ -59,7 +59,7 @@ describe("a maze of many segments and pegs, added in any order", () => {
 });
 
 describe("a maze built one add at a time equals the maze built at once", () => {
-  it("with the grid rebuilt and every body predicted after each add, or a copy probed after each", () => {
+  it("with the World advanced after each add (each made locally or laying the grid out again), or a copy probed after each", () => {
     const m = maze(3, 8, 80, 5);
     const adds = mazeAdds(m);
     const atOnce = mazeWorld(adds);
@@ -67,8 +67,8 @@ describe("a maze built one add at a time equals the maze built at once", () => {
     expect(expected.events.length).toBe(300);
     const kinds = new Set(expected.events.map((e) => e.kind));
     expect(kinds.has("bodyLine") && kinds.has("bodyPoint"), "walls and pegs are hit").toBe(true);
-    // advance to the current time: the World rebuilds its grid (rasterizing every obstacle so
-    // far) and predicts every body before each next add
+    // advance to the current time: the predictions are up to date before each next add, which
+    // is then made in the grid as it is (obstacleUpkeep.ts), or lays it out again (their number doubled)
     const stepped = mazeWorld([]);
     // nextEventTime while edits are pending: a copy is probed, the World itself is left as it is
     const probed = mazeWorld([]);

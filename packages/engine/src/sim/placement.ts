@@ -6,7 +6,8 @@
  * segment or point against the bodies near it in the grid (bodiesNear.ts); infinite lines and rays,
  * few, are tested against every body, and every disc against all of them. Each check names the
  * smallest id it hits, as a scan of everything would. Every check throws ChapgameError naming the
- * field before anything changes.
+ * field before anything changes. What a checked obstacle edit does to the lists, the grid and the
+ * predictions: obstacleUpkeep.ts.
  */
 import { OVERLAP_REL } from "../tolerances.js";
 import { forEachBodyNearSegment } from "./bodiesNear.js";

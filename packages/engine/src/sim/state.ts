@@ -44,7 +44,8 @@ export class SimState {
    * The lines and points, in the order they were added, and where each id sits in them
    * (obstacleIndex.ts). A removed one stays in its list until compactObstacles: every read of a
    * whole list compacts first (grid rebuilds, placement checks, copies); the simulation reads them
-   * only after a rebuild (an obstacle edit marks the predictions out of date).
+   * only after a rebuild, or after an edit that compacted them at once and renumbered what refers
+   * to their positions (obstacleUpkeep.ts).
    */
   protected lineList: Line[] = [];
   protected pointList: Point[] = [];
@@ -66,7 +67,7 @@ export class SimState {
    */
   protected changes = 0;
 
-  /** The predictions are out of date (an obstacle or global edited): the next advance redoes them. */
+  /** The predictions are out of date (a global or an infinite line edited, ...): the next advance redoes them. */
   protected markDirty(): void {
     this.dirty = true;
     this.changes++;

@@ -259,9 +259,10 @@ export class World extends Edits {
    * which looks up the next LOGGED event after t in a computed history and gives null when there
    * is none. Throws the SimulationError that advancing to it would throw. Changes nothing observable. Costs O(1) per internal item (cell
    * crossing, stale prediction) before that event, processed in place and undone; only while
-   * predictions are out of date (before the first advance, or after an edit of obstacles or
-   * globals or a grid rebuild) does it cost a copy of the world and predicting every body, as the
-   * next advance will.
+   * predictions are out of date (before the first advance, after an edit of globals or of an
+   * infinite line or ray, or when an edit of segments and points lays the grid out again
+   * (obstacleUpkeep.ts), or after a grid rebuild) does it cost a copy of the world and predicting
+   * every body, as the next advance will.
    */
   nextEventTime(): number {
     if (!this.dirty) return this.peekEventTime();
