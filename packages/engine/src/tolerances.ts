@@ -428,9 +428,12 @@ export const GRID_CELLS_PER_ITEM = 16;
  * registered in, or taken out of, the cells it covers, and only the bodies it can concern are
  * predicted again) while the segments and points number at most GRID_OBSTACLE_RELAYOUT times what
  * the layout was computed for (counted as at least GRID_MIN_BODIES) and, when that was more than
- * GRID_MIN_BODIES, at least 1 / GRID_OBSTACLE_RELAYOUT of it; past that the grid is laid out again
- * and every body predicted, since the cost estimate that chose the layout (GRID_OBSTACLE_GAIN) grows
- * with them. A stream of m edits so lays out the grid O(log m) times. Only speed depends on it.
+ * GRID_MIN_BODIES, at least 1 / GRID_OBSTACLE_RELAYOUT of it. Past that, the cost estimate that
+ * chose the layout (GRID_OBSTACLE_GAIN), which grows with them, is evaluated again: when it picks
+ * the other kind of layout (sized by the bodies, or by the obstacles) or cells more than
+ * GRID_OBSTACLE_RELAYOUT times larger or smaller, the grid is laid out again and every body
+ * predicted; otherwise the range starts again from there. A stream of m edits so evaluates the
+ * estimate O(log m) times. Only speed depends on it.
  */
 export const GRID_OBSTACLE_RELAYOUT = 2;
 

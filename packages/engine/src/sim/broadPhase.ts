@@ -32,12 +32,17 @@ function stretch(box: number[], x: number, y: number): void {
 }
 
 export class BroadPhase extends SimState {
-  /** Segments and points the grid's layout was computed for (obstacleUpkeep.ts keeps it while they stay near that). */
+  /**
+   * Segments and points the grid's layout was computed (or last found right) for, and whether it
+   * is the obstacle layout (obstacleUpkeep.ts keeps it while they stay near that number).
+   */
   protected gridObstacles = 0;
+  protected gridForObstacles = false;
 
   protected override copyInto(target: SimState): void {
     super.copyInto(target);
     (target as BroadPhase).gridObstacles = this.gridObstacles;
+    (target as BroadPhase).gridForObstacles = this.gridForObstacles;
   }
 
   /** The level-0 cells the segment (x1, y1)-(x2, y2) (a point: both ends equal) is registered in. */
@@ -79,8 +84,13 @@ export class BroadPhase extends SimState {
     this.gridBodies = n;
     this.grid.reserve(b.capacity);
     this.heap.reserve(b.capacity);
+    this.gridForObstacles = false;
     if (n === 0 || !this.opt.broadPhase) this.grid.reset(0, 0, 1, 1, 1);
-    else this.resetLayout(radii, box, slack);
+    else {
+      const [ox, oy, w, nx, ny, r, forObstacles] = this.chooseLayout(radii, box, slack);
+      this.grid.reset(ox, oy, w, nx, ny, r);
+      this.gridForObstacles = forObstacles;
+    }
     for (let s = 0; s < b.slotCount; s++) {
       if (b.ids[s] === undefined) continue;
       this.placeInGrid(s, this.xAt(s, this.now), this.yAt(s, this.now));
@@ -89,8 +99,11 @@ export class BroadPhase extends SimState {
     this.dirty = true;
   }
 
-  /** Reset the grid to the cheaper of the body layout and the obstacle layout (see rebuildGrid). */
-  private resetLayout(radii: number[], box: number[], slack: number): void {
+  /**
+   * The cheaper of the body layout and the obstacle layout (see rebuildGrid) for bodies of these
+   * radii in this box, and whether it is the obstacle layout.
+   */
+  protected chooseLayout(radii: number[], box: number[], slack: number): [...Layout, boolean] {
     let minR = INF;
     let maxR = 0;
     for (const r of radii) {
@@ -112,6 +125,7 @@ export class BroadPhase extends SimState {
       return [(bx[0] as number) - padX, (bx[1] as number) - padY, w, nx, ny, r];
     };
     let body: Layout = [0, 0, 1, 1, 1, 0];
+    let forObstacles = false;
     if (n >= GRID_MIN_BODIES) {
       const maxCells = Math.max(16, GRID_CELLS_PER_BODY * n);
       const one = layout(box, maxR, maxCells);
@@ -139,10 +153,12 @@ export class BroadPhase extends SimState {
           bestCost = cost;
         }
       }
-      if (best !== undefined && bestCost <= GRID_OBSTACLE_GAIN * bodyCost) body = best;
+      if (best !== undefined && bestCost <= GRID_OBSTACLE_GAIN * bodyCost) {
+        body = best;
+        forObstacles = true;
+      }
     }
-    const [ox, oy, w, nx, ny, r] = body;
-    this.grid.reset(ox, oy, w, nx, ny, r);
+    return [...body, forObstacles];
   }
 
   /**

@@ -20,7 +20,11 @@
  * again and predicts every body: when they are out of date already (before the first advance,
  * after a change of globals), when an infinite line or ray is added or moved (every moving body
  * tests it), and when the segments and points leave the range the layout was computed for
- * (GRID_OBSTACLE_RELAYOUT: their count doubled or halved).
+ * (GRID_OBSTACLE_RELAYOUT: their count doubled or halved) and the cost estimate that chose the
+ * layout (broadPhase.ts, gridCost.ts) now chooses another: the other kind (sized by the bodies, or
+ * by the obstacles), or cells more than GRID_OBSTACLE_RELAYOUT times larger or smaller (when it
+ * chooses the same, the range starts again from there). A stream of m edits so evaluates the
+ * estimate O(log m) times, and lays the grid out again at most as often.
  *
  * Measured (24 Nov 2026, shared 2-core host, a scratch script through World: 5,000 moving discs
  * of radius 1 on a lattice, 1,000 wall segments around them and 1,000 points added one per edit,
@@ -38,6 +42,8 @@ import { addObstacle, removeObstacle, renumberAfterRemoval } from "./gridObstacl
 import type { Line, Point } from "./obstacles.js";
 import { Simulator } from "./simulator.js";
 import type { SimState } from "./state.js";
+
+const INF = Number.POSITIVE_INFINITY;
 
 export class ObstacleUpkeep extends Simulator {
   /**
@@ -156,9 +162,44 @@ export class ObstacleUpkeep extends Simulator {
     if (this.dirty || this.fullObstacleRebuild) return false;
     const laidOut = this.gridObstacles;
     const after = this.lineList.length - this.globalLines.length + this.pointList.length + change;
-    return (
+    if (
       after <= GRID_OBSTACLE_RELAYOUT * Math.max(laidOut, GRID_MIN_BODIES) &&
       (laidOut <= GRID_MIN_BODIES || GRID_OBSTACLE_RELAYOUT * after >= laidOut)
+    )
+      return true;
+    if (!this.layoutStillFits()) return false;
+    this.gridObstacles = after;
+    return true;
+  }
+
+  /**
+   * Whether the layout a rebuild would choose now (broadPhase.ts's cost estimate, over the bodies
+   * where they are and the obstacles before the edit) is of the current kind (sized by the bodies,
+   * or by the obstacles) with level-0 cells within GRID_OBSTACLE_RELAYOUT of the current side. It
+   * costs a pass over the bodies and the obstacles and the estimate, no prediction.
+   */
+  private layoutStillFits(): boolean {
+    if (!this.opt.broadPhase) return true;
+    const b = this.store;
+    const radii: number[] = [];
+    const box = [INF, INF, -INF, -INF];
+    for (let s = 0; s < b.slotCount; s++) {
+      if (b.ids[s] === undefined) continue;
+      radii.push(b.r[s] as number);
+      const x = this.xAt(s, this.now);
+      const y = this.yAt(s, this.now);
+      box[0] = Math.min(box[0] as number, x);
+      box[1] = Math.min(box[1] as number, y);
+      box[2] = Math.max(box[2] as number, x);
+      box[3] = Math.max(box[3] as number, y);
+    }
+    if (radii.length === 0) return true;
+    const layout = this.chooseLayout(radii, box, 1);
+    const w = layout[2];
+    return (
+      layout[6] === this.gridForObstacles &&
+      w <= GRID_OBSTACLE_RELAYOUT * this.grid.w &&
+      GRID_OBSTACLE_RELAYOUT * w >= this.grid.w
     );
   }
 
@@ -174,9 +215,10 @@ export class ObstacleUpkeep extends Simulator {
     if (this.obstStamp.length < size) this.obstStamp = new Int32Array(2 * size);
     const b = this.store;
     const again = new Set<number>();
+    const evKind = b.evKind;
     if (index >= 0)
       for (let s = 0; s < b.slotCount; s++) {
-        if (b.ids[s] === undefined || b.evKind[s] !== kind) continue;
+        if (evKind[s] !== kind || b.ids[s] === undefined) continue;
         const other = b.evOther[s] as number;
         if (other === index) again.add(s);
         else if (removed && other > index) b.evOther[s] = other - 1;
