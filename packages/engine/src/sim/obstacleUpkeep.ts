@@ -26,15 +26,15 @@
  * chooses the same, the range starts again from there). A stream of m edits so evaluates the
  * estimate O(log m) times, and lays the grid out again at most as often.
  *
- * Measured (24 Nov 2026, shared 2-core host, a scratch script through World: 5,000 moving discs
- * of radius 1 on a lattice, 1,000 wall segments around them and 1,000 points added one per edit,
- * then each moved, then each removed, 3 events advanced between edits): per 1,000 edits, before
- * (every edit marked the predictions out of date) 5.0 million predictions and 3.4–9.9 s in every
- * phase; after, adding segments 26,000 predictions and 0.35 s (25,000 of them the 5 re-layouts at
- * 65, 129, 257, 513 and 1,025 segments and points), adding points 12,900 and 0.29 s, moving
- * segments 6,900 and 0.23 s, moving points 6,600 and 0.21 s, removing segments 6,400 and 0.18 s,
- * removing points 31,000 and 0.36 s (6 re-layouts as they halve); the 3 events between edits
- * alone make 6,300 of those predictions and 0.08–0.23 s. Same events and final state, bit for bit.
+ * Measured (24 Nov 2026, shared 2-core host, a scratch script through World: moving discs of
+ * radius 1 on a lattice, 1,000 wall segments around them and 1,000 points added one per edit,
+ * then each moved, then each removed, 3 events advanced between edits; times noisy): with 5,000
+ * discs, every 1,000 edits cost 5.0 million predictions and 3.4–9.9 s before (every edit marked the
+ * predictions out of date), and after 6,400–8,400 predictions and 0.13–0.38 s, of which the 3
+ * events between edits alone make 6,300 predictions and 0.18–0.25 s (about 1–2 predictions per
+ * add or move, 0.1 per removal; no re-layout: the estimate kept the body layout each time it was
+ * asked). With 20,000 discs: 20,000 predictions and 15–28 ms per edit before, 0.2–0.6 s per
+ * 1,000 edits after. The same events and final state, bit for bit.
  */
 import { GRID_MIN_BODIES, GRID_OBSTACLE_RELAYOUT } from "../tolerances.js";
 import { EV_LINE, EV_POINT } from "./bodyStore.js";
