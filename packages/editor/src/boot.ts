@@ -17,7 +17,7 @@ import type { SceneFile } from "./engineTypes";
 import { bindKeyboard } from "./keyboard";
 import { clockTime } from "./newerWork";
 import { startPlayback } from "./playback";
-import { buildPreset, DEFAULT_PRESET } from "./presets";
+import { buildPreset, DEFAULT_PRESET, presetFileName } from "./presets";
 import { TimelineClient } from "./remote/client";
 import type { Port } from "./remote/protocol";
 import { listenForSharedLinks } from "./sharedLink";
@@ -41,6 +41,8 @@ export interface FirstScene {
   unreadable?: { text: string; reason: string } | null;
   /** This tab's autosave id: where a refused scene of it is kept (doc/refusedScene.ts). */
   tab?: string;
+  /** The file name `scene` came from, which Save file suggests (sceneNames.ts); none when absent. */
+  name?: string | null;
 }
 
 /** The scene to start with: a shared link in the URL, else the tab's autosave, else the default preset. */
@@ -87,6 +89,7 @@ function chooseFirstScene(hash: string, autosave: TabAutosave): FirstScene {
     undoNote: null,
     error,
     note: null,
+    name: presetFileName(DEFAULT_PRESET),
   };
 }
 
@@ -113,7 +116,7 @@ export async function loadFirstScene(
     // the autosave a shared link was to be opened over, refused: kept like one restored alone
     if (first.previous && previousErr !== null)
       refused = { text: sceneText(first.previous), reason: previousErr };
-    err = await editor.loadScene(first.scene, { undoable: false });
+    err = await editor.loadScene(first.scene, { undoable: false, name: first.name ?? null });
   }
   if (err !== null && first.from === "autosave") refused = { text: sceneText(first.scene), reason: err };
   if (refused) {
@@ -123,7 +126,10 @@ export async function loadFirstScene(
     editor.ui.setState({ refusedScene: { ...refused, tab: kept ? tab : null } });
   }
   if (err !== null && first.from !== "preset")
-    err = await editor.loadScene(buildPreset(DEFAULT_PRESET), { undoable: false });
+    err = await editor.loadScene(buildPreset(DEFAULT_PRESET), {
+      undoable: false,
+      name: presetFileName(DEFAULT_PRESET),
+    });
   if (first.error) editor.ui.setState({ message: { text: first.error, tone: "error" } });
   else if (first.note) editor.info(first.note);
   // this tab's scene refused at an earlier start, whose notice was not dismissed

@@ -24,6 +24,7 @@ import type { Action, SceneFile } from "./engineTypes";
 import { type Port, UNDONE_DURING_CHECK } from "./remote/protocol";
 import { type Replaced, ReplacementSteps } from "./replacementSteps";
 import { SceneChanges } from "./sceneChanges";
+import { SceneNames } from "./sceneNames";
 import { createStore, type Store } from "./store/createStore";
 
 export { shown } from "./editorCompute";
@@ -38,6 +39,12 @@ export interface LoadOptions {
   keepTime?: boolean;
   /** The scene loaded can be had again as it is (a preset, Clear): see Replacement. */
   reproducible?: boolean;
+  /**
+   * The file name the loaded scene came from (an opened file's, a preset's), which Save file
+   * suggests (sceneNames.ts); a load that replaces the scene without one leaves it with none. A
+   * rewrite of the current scene (keepTime) keeps the current name.
+   */
+  name?: string | null;
 }
 
 export class EditorSession extends EditorCompute {
@@ -53,6 +60,8 @@ export class EditorSession extends EditorCompute {
    * recent ones whose undo step is undone now (Undo went back past them; Redo may bring them back).
    */
   readonly replaced: Store<Replaced> = this.replacements.replaced;
+  /** The file name the current scene came from, which Save file suggests (sceneNames.ts). */
+  readonly names = new SceneNames();
   /** Makes a fresh host (a new Web Worker) for restartEngine; null where none can be made. */
   portFactory: (() => Port) | null = null;
   /**
@@ -147,6 +156,8 @@ export class EditorSession extends EditorCompute {
       this.unconfirmed = null;
     }
     if (options.undoable !== false) this.history.setState(record(this.history.getState(), before));
+    this.names.left(before);
+    if (!options.keepTime) this.names.loaded(options.name ?? null);
     if (options.undoable !== false && !options.keepTime)
       this.replacements.recorded({ before, loaded: this.doc, reproducible: options.reproducible === true });
     this.ui.setState((s) => ({
@@ -197,6 +208,7 @@ export class EditorSession extends EditorCompute {
         this.unconfirmed = null;
       }
       this.history.setState(record(this.history.getState(), before));
+      this.names.left(before);
       this.ui.setState({ message: null });
       return null;
     });

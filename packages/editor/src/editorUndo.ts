@@ -122,6 +122,7 @@ export class EditorUndo extends EditorSession {
     }
     this.unchecked.delete(scene);
     this.history.setState(history);
+    this.names.returned(from, scene);
     // the Undo of a Delete selects the object again, its Redo selects nothing (doc/stepSelection.ts)
     this.ui.setState((s) => ({ selection: selectionAfterStep(from, scene, s.selection) }));
     this.info(said);

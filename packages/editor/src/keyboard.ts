@@ -89,7 +89,7 @@ export function handleKey(editor: Editor, e: KeyboardEvent, save: () => void = (
 export function bindKeyboard(
   editor: Editor,
   target: Window = window,
-  save: () => void = () => saveScene(editor),
+  save: () => void = () => void saveScene(editor),
 ): () => void {
   const listener = (e: KeyboardEvent) => {
     if (handleKey(editor, e, save)) e.preventDefault();

@@ -1,8 +1,10 @@
 /**
  * The presets menu's entries: the engine's presets (written once, shared with tests and benchmarks),
- * plus the digit count of Galperin's billiard as a parameter.
+ * plus the digit count of Galperin's billiard as a parameter, and the file name Save file suggests
+ * for a preset loaded unchanged or edited (presetFileName).
  */
 import { galperin, presets } from "@chapgame/engine";
+import { fileNameFrom } from "./doc/saveName";
 import type { SceneFile } from "./engineTypes";
 
 export interface PresetEntry {
@@ -28,4 +30,9 @@ export function buildPreset(id: string, digits = 4): SceneFile {
   const p = presets.find((q) => q.id === id);
   if (!p) throw new Error(`preset: unknown id "${id}"`);
   return p.make();
+}
+
+/** "billiardsBreak" → "billiards-break.chapgame.json"; Galperin's billiard names its digits ("galperin-4-digits…"). */
+export function presetFileName(id: string, digits = 4): string {
+  return fileNameFrom(id === GALPERIN_ID ? `${id} ${digits} digits` : id);
 }

@@ -2,16 +2,24 @@
  * Opening a scene the user hands over: pasted text, a file from Load file, a file dropped on the
  * page. One path for all: the engine's validation (a refusal names the field, and a file's name
  * before it), the current scene kept on any refusal, and an opened scene is one undo step over the
- * one it replaces. droppedSceneFile says which file of a drop to open, or why none.
+ * one it replaces; an opened file's name is what Save file suggests for it. droppedSceneFile says which file of a drop to open, or why none.
  */
 import type { Editor } from "../editor";
 import { parseSceneText } from "./sceneIo";
 
-/** Loads scene text; a refusal names `origin` (a file's name and ": ") before the field and the reason. */
-export async function openSceneText(editor: Editor, source: string, origin = ""): Promise<string | null> {
+/**
+ * Loads scene text; a refusal names `origin` (a file's name and ": ") before the field and the
+ * reason. `name`: the file name the scene came from, which Save file then suggests (null: none).
+ */
+export async function openSceneText(
+  editor: Editor,
+  source: string,
+  origin = "",
+  name: string | null = null,
+): Promise<string | null> {
   let err: string | null;
   try {
-    err = await editor.loadScene(parseSceneText(source));
+    err = await editor.loadScene(parseSceneText(source), { name });
   } catch (e) {
     err = e instanceof Error ? e.message : String(e);
   }
@@ -39,7 +47,7 @@ export async function openSceneFile(editor: Editor, file: File): Promise<string 
     editor.ui.setState({ message: { text: msg, tone: "error" } });
     return msg;
   }
-  const err = await openSceneText(editor, text, `${file.name}: `);
+  const err = await openSceneText(editor, text, `${file.name}: `, file.name);
   if (err === null) editor.info(`Opened ${file.name}. Undo returns to the scene you had before.`);
   return err;
 }

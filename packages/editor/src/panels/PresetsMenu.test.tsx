@@ -71,7 +71,8 @@ describe("Presets menu: loading", () => {
     fireEvent.click(screen.getByRole("button", { name: "Load preset" }));
     await Promise.resolve();
     await Promise.resolve();
-    expect(calls).toEqual([{ reproducible: true }]);
+    // named as Save file then suggests it
+    expect(calls).toEqual([{ reproducible: true, name: "original-demo.chapgame.json" }]);
     expect(infos).toHaveLength(1);
     expect(infos[0]).toMatch(/^Loaded the preset .+\. Undo returns to the scene you had\.$/);
   });

@@ -9,7 +9,7 @@
 import { useState } from "react";
 import { useEditor } from "../EditorContext";
 import type { Editor } from "../editor";
-import { buildPreset, GALPERIN_ID, PRESETS } from "../presets";
+import { buildPreset, GALPERIN_ID, PRESETS, presetFileName } from "../presets";
 import { formatNumber } from "./EditableCell";
 
 /** Resolves once the editor's worker runs no computation (done, cancelled or stopped). */
@@ -66,7 +66,9 @@ export function PresetsMenu() {
         onClick={() => {
           const n = clampDigits(digits);
           setDigits(String(n));
-          void editor.loadScene(buildPreset(id, n), { reproducible: true }).then(async (err) => {
+          // named as Save file then suggests it (sceneNames.ts)
+          const options = { reproducible: true, name: presetFileName(id, n) };
+          void editor.loadScene(buildPreset(id, n), options).then(async (err) => {
             if (err !== null) return;
             const loaded = `Loaded the preset ${entry?.name ?? id}. Undo returns to the scene you had.`;
             if (id !== GALPERIN_ID) {

@@ -8,17 +8,10 @@
 
 import { dropRefused } from "../doc/refusedScene";
 import { useEditor, useUi } from "../EditorContext";
+import { downloadText } from "./sceneFile";
 
 /** The downloaded file's name. */
 export const REFUSED_NAME = "refused-scene.chapgame.json";
-
-function download(text: string, page: Document): void {
-  const a = page.createElement("a");
-  a.href = URL.createObjectURL(new Blob([text], { type: "application/json" }));
-  a.download = REFUSED_NAME;
-  a.click();
-  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
-}
 
 export function RefusedSceneNotice({ local = window.localStorage }: { local?: Storage }) {
   const editor = useEditor();
@@ -33,7 +26,7 @@ export function RefusedSceneNotice({ local = window.localStorage }: { local?: St
           ? " The refused scene is kept until you dismiss this notice."
           : " It could not be kept in this browser's storage: save it now, or it goes with this page."}
       </span>
-      <button type="button" onClick={() => download(refused.text, document)}>
+      <button type="button" onClick={() => downloadText(refused.text, REFUSED_NAME)}>
         Save it as a file
       </button>
       <button

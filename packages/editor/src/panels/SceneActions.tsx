@@ -36,7 +36,7 @@ export function SceneActions() {
       <FocusKeptButton title="Ctrl+Shift+Z or Ctrl+Y" enabled={canRedo} onPress={() => void editor.redo()}>
         Redo
       </FocusKeptButton>
-      <button type="button" title="Ctrl+S" onClick={() => saveScene(editor)}>
+      <button type="button" title="Ctrl+S" onClick={() => void saveScene(editor)}>
         Save file
       </button>
       <button type="button" onClick={() => fileRef.current?.click()}>
