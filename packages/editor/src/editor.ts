@@ -32,6 +32,11 @@ export const STRIKE_RATE = 4;
 export const NO_STRIKE_DIRECTION =
   "Not struck: the cue strikes a disc away from the click, so click off its centre (the farther, the harder).";
 
+/** "(3, -0.5)": a place as messages write it. */
+const point = (p: Vec2): string => `(${shown(p[0])}, ${shown(p[1])})`;
+/** ", at t = 3.2 s" for an object added after the start; nothing at t = 0. */
+const when = (t: number): string => (t === 0 ? "" : `, at t = ${shown(t)} s`);
+
 export const EMPTY_SCENE: SceneFile = {
   format: "chapgame",
   version: 1,
@@ -56,29 +61,42 @@ export class Editor extends EditorTime {
     return a;
   }
 
-  /** Adds a disc and selects it (a refused disc selects nothing). */
+  /**
+   * Adds a disc and selects it (a refused disc selects nothing). Added, it says which disc was added
+   * where (a refusal is the engine's message, in the user's terms: doc/refusalTerms.ts).
+   */
   async addBody(x: number, y: number, r: number, m = 1, v: Vec2 = [0, 0]): Promise<string | null> {
     const id = nextFreeId("b", this.client.latestFrame?.ids ?? [], this.doc.actions);
-    const err = await this.edit([
-      this.stamp({ time: this.now(), type: "addBody", id, x, y, r, m, mu: 0, v }),
-    ]);
-    if (err === null) this.ui.setState({ selection: { kind: "body", id } });
+    const time = this.now();
+    const err = await this.edit([this.stamp({ time, type: "addBody", id, x, y, r, m, mu: 0, v })]);
+    if (err === null) {
+      this.ui.setState({ selection: { kind: "body", id } });
+      this.info(`Added disc "${id}" at ${point([x, y])}, radius ${shown(r)}${when(time)}.`);
+    }
     return err;
   }
 
-  /** Adds a line, ray or segment and selects it (a refused one selects nothing), as addBody. */
+  /** Adds a line, ray or segment and selects it (a refused one selects nothing), and says so, as addBody. */
   async addLine(p1: Vec2, p2: Vec2, kind: "line" | "ray" | "segment"): Promise<string | null> {
     const id = nextFreeId("l", this.client.latestFrame?.lines.map((l) => l.id) ?? [], this.doc.actions);
-    const err = await this.edit([this.stamp({ time: this.now(), type: "addLine", id, p1, p2, kind })]);
-    if (err === null) this.ui.setState({ selection: { kind: "line", id } });
+    const time = this.now();
+    const err = await this.edit([this.stamp({ time, type: "addLine", id, p1, p2, kind })]);
+    if (err === null) {
+      this.ui.setState({ selection: { kind: "line", id } });
+      this.info(`Added ${kind} "${id}" from ${point(p1)} to ${point(p2)}${when(time)}.`);
+    }
     return err;
   }
 
-  /** Adds a fixed point and selects it (a refused one selects nothing), as addBody. */
+  /** Adds a fixed point and selects it (a refused one selects nothing), and says so, as addBody. */
   async addPoint(p: Vec2): Promise<string | null> {
     const id = nextFreeId("p", this.client.latestFrame?.points.map((q) => q.id) ?? [], this.doc.actions);
-    const err = await this.edit([this.stamp({ time: this.now(), type: "addPoint", id, p })]);
-    if (err === null) this.ui.setState({ selection: { kind: "point", id } });
+    const time = this.now();
+    const err = await this.edit([this.stamp({ time, type: "addPoint", id, p })]);
+    if (err === null) {
+      this.ui.setState({ selection: { kind: "point", id } });
+      this.info(`Added point "${id}" at ${point(p)}${when(time)}.`);
+    }
     return err;
   }
 

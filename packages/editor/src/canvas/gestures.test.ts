@@ -91,7 +91,17 @@ describe("canvas gestures", () => {
       else drag(g, [...add.from], [...add.to]);
       g.up([...add.to]);
       await settled(client);
-      expect(editor.ui.getState().message).toBeNull();
+      // accepted, and said (an add once said nothing): which object, where
+      const noun =
+        add.tool === "disc"
+          ? "disc"
+          : add.tool === "line" || add.tool === "ray" || add.tool === "segment"
+            ? add.tool
+            : "point";
+      expect(editor.ui.getState().message).toEqual({
+        text: expect.stringMatching(new RegExp(`^Added ${noun} "${add.selection.id}" (at|from) \\(`)),
+        tone: "info",
+      });
       expect(editor.ui.getState().selection, add.tool).toEqual(add.selection);
     }
     expect(editor.doc.actions.map((a) => a.type)).toEqual([

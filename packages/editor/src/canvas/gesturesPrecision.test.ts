@@ -54,7 +54,11 @@ describe("the pointer's precision", () => {
     editor.ui.setState({ tool: "segment" });
     drag(g, [150.55, 520.04], [350.77, 520.04]); // level at y = −22.004
     await settled(client);
-    expect(editor.ui.getState().message).toBeNull();
+    // each accepted and said, the last one showing (with the short decimals)
+    expect(editor.ui.getState().message).toEqual({
+      text: 'Added segment "l1" from (-24.9, -22) to (-4.9, -22).',
+      tone: "info",
+    });
     expect(editor.doc.actions.slice(1)).toMatchObject([
       { type: "addBody", x: 3.3, y: 1.2, r: NEW_R },
       { type: "addPoint", p: [-30, 20] },
@@ -108,7 +112,10 @@ describe("the pointer's precision", () => {
     editor.ui.setState({ tool: "disc" });
     drag(g, [420.4, 280.8], [420.4, 280.8]); // (2.04, 1.92): 2.8014 from "a", clear of it
     await settled(client);
-    expect(editor.ui.getState().message).toBeNull();
+    expect(editor.ui.getState().message).toEqual({
+      text: 'Added disc "b1" at (2.1, 1.9), radius 1.8.',
+      tone: "info",
+    });
     expect(editor.doc.actions.at(-1)).toMatchObject({ type: "addBody", x: 2.1, y: 1.9, r });
   });
 });

@@ -9,10 +9,9 @@
  * passes its cells in one Tab press.
  */
 import { type ReactNode, useRef, useState } from "react";
-import { freeSpot } from "../canvas/freeSpot";
-import { pointerStep, roundPoint } from "../canvas/pointerGrid";
 import { useEditor, useUi } from "../EditorContext";
 import { F_M, F_MU, F_R, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE } from "../remote/protocol";
+import { addBodyNearCentre } from "./addNear";
 import { listBodies, listNote } from "./bodyList";
 import { DeleteRowButton } from "./DeleteRowButton";
 import { EditableCell, formatNumber, isInfinityWord, notANumber, parseNumber } from "./EditableCell";
@@ -137,22 +136,13 @@ export function BodiesTable() {
   }
   rows.push(spacerRow("after", win.after, COLUMNS.length + 2));
 
-  // A disc of about 20 px, at the free place nearest the centre of the view, at the pointer's precision.
-  const addBody = () => {
-    const v = editor.ui.getState().view;
-    const r = Math.max(1e-3, Number((20 / v.scale).toPrecision(2)));
-    const grid = pointerStep(v.scale);
-    const at = freeSpot(editor.client.latestFrame, { kind: "disc", r }, [v.cx, v.cy], 2.5 * r, grid);
-    void editor.addBody(...(at ?? roundPoint([v.cx, v.cy], grid)), r);
-  };
-
   return (
     <section className="panel" aria-labelledby="bodies-title">
       <div className="panel-head">
         <h2 id="bodies-title">
           Bodies <small>({n})</small>
         </h2>
-        <button type="button" onClick={addBody}>
+        <button type="button" onClick={() => void addBodyNearCentre(editor)}>
           Add body
         </button>
       </div>

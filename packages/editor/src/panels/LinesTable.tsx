@@ -4,11 +4,9 @@
  */
 
 import { useRef } from "react";
-import { freeSpot } from "../canvas/freeSpot";
-import { niceRadius } from "../canvas/gestures";
-import { pointerStep, roundPoint, roundToStep } from "../canvas/pointerGrid";
 import { useEditor } from "../EditorContext";
 import type { LineKind } from "../engineTypes";
+import { addLineNearCentre } from "./addNear";
 import { CoordinateCell, ObjectRow } from "./ObjectRow";
 import { SkipTable } from "./SkipTable";
 import { useLiveFrame } from "./useLiveFrame";
@@ -27,26 +25,13 @@ export function LinesTable() {
   const lines = frame?.lines ?? [];
   const scrollRef = useRef<HTMLDivElement>(null);
 
-  // A horizontal segment of about 200 px, at the free place nearest the centre of the view, at the
-  // pointer's precision (half of it has two digits: a multiple of the step, so the ends are round).
-  const add = () => {
-    const v = editor.ui.getState().view;
-    const half = niceRadius(100, v.scale);
-    const shape = { kind: "segment", half } as const;
-    const grid = pointerStep(v.scale);
-    const [x, y] =
-      freeSpot(editor.client.latestFrame, shape, [v.cx, v.cy], 20 / v.scale, grid) ??
-      roundPoint([v.cx, v.cy], grid);
-    void editor.addLine([roundToStep(x - half, grid), y], [roundToStep(x + half, grid), y], "segment");
-  };
-
   return (
     <section className="panel" aria-labelledby="lines-title">
       <div className="panel-head">
         <h2 id="lines-title">
           Lines <small>({lines.length})</small>
         </h2>
-        <button type="button" onClick={add}>
+        <button type="button" onClick={() => void addLineNearCentre(editor)}>
           Add line
         </button>
       </div>

@@ -4,10 +4,8 @@
  */
 
 import { useRef } from "react";
-import { freeSpot } from "../canvas/freeSpot";
-import { pointerStep, roundPoint } from "../canvas/pointerGrid";
 import { useEditor } from "../EditorContext";
-import type { Vec2 } from "../engineTypes";
+import { addPointNearCentre } from "./addNear";
 import { CoordinateCell, ObjectRow } from "./ObjectRow";
 import { SkipTable } from "./SkipTable";
 import { useLiveFrame } from "./useLiveFrame";
@@ -24,19 +22,7 @@ export function PointsTable() {
         <h2 id="points-title">
           Points <small>({points.length})</small>
         </h2>
-        <button
-          type="button"
-          onClick={() => {
-            // at the free place nearest the centre of the view, at the pointer's precision
-            const v = editor.ui.getState().view;
-            const grid = pointerStep(v.scale);
-            const at: Vec2 = [v.cx, v.cy];
-            void editor.addPoint(
-              freeSpot(editor.client.latestFrame, { kind: "point" }, at, 20 / v.scale, grid) ??
-                roundPoint(at, grid),
-            );
-          }}
-        >
+        <button type="button" onClick={() => void addPointNearCentre(editor)}>
           Add point
         </button>
       </div>
