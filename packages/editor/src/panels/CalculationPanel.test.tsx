@@ -58,6 +58,27 @@ describe("CalculationPanel", () => {
     );
   });
 
+  it("an accepted value takes down its field's refusal, and only that", () => {
+    const editor = renderPanel();
+    const seconds = screen.getByRole("textbox", { name: "Seconds ahead" }) as HTMLInputElement;
+    const events = screen.getByRole("textbox", { name: "Events ahead" }) as HTMLInputElement;
+    const type = (input: HTMLInputElement, value: string) => {
+      input.focus();
+      fireEvent.change(input, { target: { value } });
+      fireEvent.keyDown(input, { key: "Enter" });
+    };
+    type(seconds, "1e999");
+    expect(editor.ui.getState().message?.text).toMatch(/^Seconds ahead: must be /);
+    type(events, "300"); // another field's value: the refusal of Seconds ahead stays
+    expect(editor.ui.getState().message?.text).toMatch(/^Seconds ahead: must be /);
+    type(seconds, "20");
+    expect(editor.ui.getState().calc.seconds).toBe(20);
+    expect(editor.ui.getState().message).toBeNull();
+    act(() => editor.info("Something else."));
+    type(events, "400"); // a message not about the field stays
+    expect(editor.ui.getState().message?.text).toBe("Something else.");
+  });
+
   it("Compute pressed from the keyboard keeps the focus while it computes (greyed out, not disabled)", async () => {
     const h = testEditor();
     await h.editor.loadScene(dilutedGas({ n: 400, packing: 0.1, seed: 2 }), { undoable: false });

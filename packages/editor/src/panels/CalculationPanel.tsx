@@ -39,6 +39,13 @@ export function CalculationPanel() {
     if (document.activeElement === null || document.activeElement === document.body)
       computeRef.current?.focus();
   }, [running]);
+  // An accepted setting takes down its field's refusal still in the message bar (a refusal of
+  // "1e999" stayed up after 20 was accepted, as if 20 had been refused too).
+  const accept = (name: string, patch: Partial<CalcSettings>) => {
+    set(patch);
+    if (editor.ui.getState().message?.text.startsWith(`${name}: must be `))
+      editor.ui.setState({ message: null });
+  };
   // A refused setting is put back, and the message bar says so (it was restored without a word).
   const refuse = (input: HTMLInputElement, name: string, what: string, kept: number) => {
     const typed = input.value;
@@ -79,7 +86,7 @@ export function CalculationPanel() {
           onKeyDown={blurOnEnter}
           onBlur={(e) => {
             const x = parseNumber(e.target.value);
-            if (x !== null && x > 0 && Number.isFinite(x)) set({ seconds: x });
+            if (x !== null && x > 0 && Number.isFinite(x)) accept("Seconds ahead", { seconds: x });
             else refuse(e.target, "Seconds ahead", "a positive finite number", calc.seconds);
           }}
         />{" "}
@@ -100,7 +107,7 @@ export function CalculationPanel() {
           onKeyDown={blurOnEnter}
           onBlur={(e) => {
             const x = parseNumber(e.target.value);
-            if (x !== null && x >= 1 && Number.isInteger(x)) set({ events: x });
+            if (x !== null && x >= 1 && Number.isInteger(x)) accept("Events ahead", { events: x });
             else refuse(e.target, "Events ahead", "a whole number of at least 1", calc.events);
           }}
         />
