@@ -51,6 +51,28 @@ describe("refusalInUserTerms", () => {
     );
   });
 
+  it("a line end meeting the other end names both ends by their cells", () => {
+    // (it said "L p1: must differ from p1 and p2 of the line": fields the Lines table does not have)
+    const moved: Action = { time: 0, type: "updateLine", id: "L", p1: [128, 28] };
+    expect(refusalInUserTerms("action.p1: must differ from p1 and p2 of the line", "action.p1", moved)).toBe(
+      "L x1, y1: must differ from x2, y2 (a line needs two different ends)",
+    );
+    const both: Action = { time: 0, type: "updateLine", id: "L", p1: [0, 0], p2: [1e-31, 0] };
+    expect(
+      refusalInUserTerms(
+        "action.p2: must be at least 1e-30 from p1 and p2 of the line in x or y (got 1e-31): a shorter direction underflows the contact tests",
+        "action.p2",
+        both,
+      ),
+    ).toBe(
+      "L x2, y2: must be at least 1e-30 from x1, y1 in x or y (got 1e-31): a shorter direction underflows the contact tests",
+    );
+    const added: Action = { time: 0, type: "addLine", id: "l1", p1: [1, 1], p2: [1, 1], kind: "ray" };
+    expect(refusalInUserTerms("action.p2: must differ from p1", "action.p2", added)).toBe(
+      "new line x2, y2: must differ from x1, y1 (a line needs two different ends)",
+    );
+  });
+
   it("a refused action as a whole keeps the engine's reason; an added disc is 'a new disc here'", () => {
     const overlap = 'body "A" would overlap body "B" at time 0';
     expect(refusalInUserTerms(`action: ${overlap}`, "action", update)).toBe(overlap);

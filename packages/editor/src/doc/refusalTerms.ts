@@ -7,7 +7,9 @@
  * point being added is named by its place ("a new disc here would overlap body "B"": its id was
  * never shown). A vector refused whole (`action.v`: "must be an array of two finite numbers") with
  * one component not finite names that component's cell ("A vx: must be a finite number"), since a
- * cell edits one component. Paths of other actions (`actions[i]`, doc/actionRefs.ts) and messages without a
+ * cell edits one component. A line's end refused whole for meeting the other end is named by both
+ * of its cells and the other end's ("L x1, y1: must differ from x2, y2 (a line needs two different
+ * ends)"; the engine's "L p1: must differ from p1 and p2 of the line" named fields no table has). Paths of other actions (`actions[i]`, doc/actionRefs.ts) and messages without a
  * path are left as they are. Pure.
  */
 import type { Action } from "../engineTypes";
@@ -50,10 +52,34 @@ export function refusalInUserTerms(message: string, path: string | null, action:
     const self = `${added.kind} ${JSON.stringify(id)}`;
     return reason.startsWith(self) ? `a new ${added.noun} here${reason.slice(self.length)}` : reason;
   }
+  const ends = lineEnds(action, field, reason);
+  if (ends !== null) return `${subjectOf(action, ends.name)}: ${ends.reason}`;
   const part = oneBadComponent(action, field);
   if (part !== null)
     return `${subjectOf(action, FIELD_NAMES[`${field}[${part}]`] ?? field)}: ${narrowed(reason)}`;
   return `${subjectOf(action, FIELD_NAMES[field] ?? field)}: ${reason}`;
+}
+
+/** A line's end and the other one, as the Lines table's cells name them. */
+const END_CELLS: Record<string, { name: string; other: string }> = {
+  p1: { name: "x1, y1", other: "x2, y2" },
+  p2: { name: "x2, y2", other: "x1, y1" },
+};
+
+/**
+ * A line's end `field` refused for its distance to the other end (engine: "must differ from p1",
+ * "must differ from p1 and p2 of the line", "must be at least … from p1 … in x or y"), in the
+ * table's terms; null for any other refusal.
+ */
+function lineEnds(action: Action, field: string, reason: string): { name: string; reason: string } | null {
+  const cells = END_CELLS[field];
+  if (cells === undefined || (action.type !== "addLine" && action.type !== "updateLine")) return null;
+  const m = /^(must differ from|must be at least \S+ from) p[12](?: and p[12] of the line)?(.*)$/.exec(
+    reason,
+  );
+  if (m === null) return null;
+  const why = m[1] === "must differ from" ? " (a line needs two different ends)" : "";
+  return { name: cells.name, reason: `${m[1]} ${cells.other}${m[2]}${why}` };
 }
 
 /** The engine's reason for a vector refused whole, said of the one component at fault. */
