@@ -41,6 +41,22 @@ function drag(g: CanvasGestures, from: [number, number], to: [number, number], s
 }
 
 describe("canvas gestures", () => {
+  it("a Disc or Point click on an object adds nothing, selects it and says so", async () => {
+    const { editor, client, g } = await setup();
+    for (const tool of ["disc", "point"] as const) {
+      editor.ui.setState({ tool, selection: null, message: null });
+      g.down(CENTRE, false);
+      g.up(CENTRE);
+      await settled(client);
+      expect(editor.doc.actions).toHaveLength(1);
+      expect(editor.ui.getState().selection).toEqual({ kind: "body", id: "a" });
+      expect(editor.ui.getState().message).toEqual({
+        text: `Nothing added: body "a" is there (selected now). The ${tool === "disc" ? "Disc" : "Point"} tool adds where the click meets nothing.`,
+        tone: "info",
+      });
+    }
+  });
+
   it("a disc dragged and released moves there in one undo step (the control case)", async () => {
     const { editor, client, g } = await setup();
     drag(g, CENTRE, [450, 300]);

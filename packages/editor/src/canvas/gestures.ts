@@ -4,7 +4,8 @@
  * overlay) and ends in one edit on release; a press that moves less than CLICK_SLOP_PX is a click.
  * Picking up a disc (move, velocity) pauses playback; a cue strike does not (it strikes a moving disc).
  * A disc dragged and released (move, velocity) is the selection, as a click on it makes it; an object
- * a click or drag adds is selected once the engine accepts it (Editor.addBody, addLine, addPoint).
+ * a click or drag adds is selected once the engine accepts it (Editor.addBody, addLine, addPoint);
+ * a Disc or Point click on an object selects it and says that it added nothing.
  * cancel() (Escape, or the browser cancelling the pointer) drops the gesture: the view, the playback
  * and the scene are as before the press, no action is recorded, and the release applies nothing.
  * What a release produces is at the pointer's precision (pointerPlace.ts: places rounded to the
@@ -195,5 +196,10 @@ export class CanvasGestures {
       return;
     }
     editor.ui.setState({ selection: hit, highlight: [] });
+    // A Disc or Point click on an object adds nothing: said, or the last "Added …" read as this one's.
+    if ((tool === "disc" || tool === "point") && hit)
+      editor.info(
+        `Nothing added: ${hit.kind} "${hit.id}" is there (selected now). The ${tool === "disc" ? "Disc" : "Point"} tool adds where the click meets nothing.`,
+      );
   }
 }
