@@ -103,6 +103,11 @@ describe("Editor over the worker protocol", () => {
     expect((await h.client.frame(2.5)).ids).not.toContain("c5");
     expect((await h.client.frame(1.5)).ids).toContain("c5");
     expect(h.editor.ui.getState().selection).toBeNull();
+    // said (a Delete said nothing, unlike the Event log's removal of an action)
+    expect(h.editor.ui.getState().message).toEqual({
+      text: 'Deleted body "c5" at t = 2 s (Undo brings it back).',
+      tone: "info",
+    });
   });
 
   it("renaming a body rewrites every action of it", async () => {

@@ -144,13 +144,17 @@ export class Editor extends EditorTime {
     return this.edit([this.stamp({ time: this.now(), type: "setGlobal", ...patch })], true);
   }
 
-  /** Removes the selected body, line or point at the current time. */
+  /** Removes the selected body, line or point at the current time, and says so (it said nothing). */
   async deleteSelection(): Promise<string | null> {
     const sel = this.ui.getState().selection;
     if (!sel) return null;
     const type = sel.kind === "body" ? "removeBody" : sel.kind === "line" ? "removeLine" : "removePoint";
-    const err = await this.edit([this.stamp({ time: this.now(), type, id: sel.id })]);
-    if (err === null) this.ui.setState({ selection: null });
+    const time = this.now();
+    const err = await this.edit([this.stamp({ time, type, id: sel.id })]);
+    if (err === null) {
+      this.ui.setState({ selection: null });
+      this.info(`Deleted ${sel.kind} "${sel.id}" at t = ${shown(time)} s (Undo brings it back).`);
+    }
     return err;
   }
 
