@@ -4,7 +4,7 @@
  * save, a preset's) in the browser's save dialog (the File System Access API, replaced here by a
  * recording stand-in: headless Chromium closes the real dialog at once), downloads the scene under
  * that name where the browser has no such dialog, and says in the message bar what was saved under
- * which name. The Add body / Add line / Add point buttons say what they added where, or why they
+ * which name; a reload keeps the name (autosave). The Add body / Add line / Add point buttons say what they added where, or why they
  * added nothing.
  */
 import type { Page } from "playwright-core";
@@ -115,6 +115,15 @@ describe("Save file", () => {
     await poll(message).toMatch(/^Undone: the scene loaded over yours/);
     await button("Save file").click();
     await poll(message).toBe("Saved the scene as original-demo.chapgame.json.");
+  });
+
+  it("a reload keeps the name the scene came from", async () => {
+    await openFile("billiards.chapgame.json", BILLIARDS);
+    await page.reload();
+    await page.getByRole("table", { name: "Bodies" }).getByLabel("red x", { exact: true }).waitFor();
+    await standInDialog();
+    await button("Save file").click();
+    await poll(message).toBe("Saved the scene as billiards.chapgame.json.");
   });
 
   it("downloads the scene under its name where the browser has no save dialog", async () => {

@@ -210,3 +210,32 @@ describe("autosave per tab", () => {
     expect(bAgain.restored?.note).toMatch(/^This tab's last scene could not be autosaved/);
   });
 });
+
+describe("autosave keeps the scene's file name", () => {
+  it("a reload suggests the name the scene came from, and a save under another name is kept too", async () => {
+    const p = newProfile();
+    const a = await p.open();
+    // opened over work of its own, which the reload brings back first (Undo's step): the path
+    // that once dropped the name
+    await a.editor.loadScene(scene("work"));
+    a.flush();
+    await a.editor.loadScene(scene("opened"), { name: "billiards.chapgame.json" });
+    a.flush();
+    expect(readSlot(p.shared, a.autosave.tab)?.name).toBe("billiards.chapgame.json");
+    const again = await p.open(a.session, true, true); // the tab reloads (as boot.ts starts)
+    expect(ids(again.editor.doc)).toEqual(["opened"]);
+    expect(again.editor.names.name).toBe("billiards.chapgame.json");
+    expect(again.editor.history.getState().past.map(ids)).toEqual([["work"]]);
+    // saved under another name (the scene unchanged): the slot is written again with it
+    again.editor.names.saved("break-shot.chapgame.json");
+    again.flush();
+    expect(readSlot(p.shared, a.autosave.tab)?.name).toBe("break-shot.chapgame.json");
+    expect((await p.open(a.session, true, true)).editor.names.name).toBe("break-shot.chapgame.json");
+    // a scene without a name writes none (a slot of an earlier version has none either)
+    const b = await p.open();
+    await b.editor.loadScene(scene("nameless"));
+    b.flush();
+    expect(readSlot(p.shared, b.autosave.tab)?.name).toBeNull();
+    expect(p.shared.getItem(slotKey(b.autosave.tab))?.split("\n")[0]).not.toMatch(/name/);
+  });
+});

@@ -117,19 +117,19 @@ export class TabAutosave {
    * pruned, which must not prune in turn, or tabs would prune each other for ever); null on success,
    * else a message for the user.
    */
-  save(scene: SceneFile, prune = true): string | null {
+  save(scene: SceneFile, prune = true, name: string | null = null): string | null {
     const now = this.env.now();
     const text = sceneText(scene);
     // The current scene first: the replaced scene beside it is written only after, and gives its
     // space up when the slot does not fit (else near the quota an older scene would stay stored
     // and the current one be lost).
-    let failed = writeSlot(this.env.local, this.tab, text, now);
+    let failed = writeSlot(this.env.local, this.tab, text, now, name);
     if (failed !== null) {
       // tried again after it (written again below, or with the next save that fits, if it fits too)
       if (this.replaced.text !== null) this.replaced.pending = true;
       if (this.env.local.getItem(replacedKey(this.tab)) !== null) {
         removeReplaced(this.env.local, this.tab);
-        failed = writeSlot(this.env.local, this.tab, text, now);
+        failed = writeSlot(this.env.local, this.tab, text, now, name);
       }
     }
     if (failed !== null) {
@@ -158,6 +158,8 @@ export class TabAutosave {
     // The scene last written: the confirmed one (Editor.confirmedDoc), never a change whose later
     // actions are still being checked; its answer (confirmed or taken back) is heard below.
     let savedDoc = editor.confirmedDoc();
+    // The file name written with it (sceneNames.ts): saving under another name writes the slot again.
+    let savedName = editor.names.name;
     let timer: ReturnType<typeof setTimeout> | null = null;
     let autosaveFailed = false;
     /** `force`: write even when the scene did not change (the slot was pruned, or the id changed). */
@@ -165,9 +167,11 @@ export class TabAutosave {
       if (timer !== null) clearTimeout(timer);
       timer = null;
       const doc = editor.confirmedDoc();
-      if (doc === savedDoc && !force && !this.replaced.pending) return;
+      const name = editor.names.name;
+      if (doc === savedDoc && name === savedName && !force && !this.replaced.pending) return;
       savedDoc = doc;
-      const failed = doc ? this.save(doc, !force) : null;
+      savedName = name;
+      const failed = doc ? this.save(doc, !force, name) : null;
       if (failed !== null && !autosaveFailed) ui.setState({ message: { text: failed, tone: "error" } });
       autosaveFailed = failed !== null; // said once, until autosave works again
     };
@@ -181,11 +185,12 @@ export class TabAutosave {
       if (s.undone !== p.undone) this.undoneNow(s.undone);
     });
     const changed = () => {
-      if (editor.confirmedDoc() === savedDoc || timer !== null) return;
+      if ((editor.confirmedDoc() === savedDoc && editor.names.name === savedName) || timer !== null) return;
       timer = setTimeout(save, AUTOSAVE_DELAY_MS);
     };
     const unsubClient = client.subscribe(changed);
     const unsubConfirmed = editor.unconfirmedStore.subscribe(changed);
+    const unsubName = editor.names.current.subscribe(changed);
     // A reload or a closed tab within the quiet delay of an edit keeps that edit.
     const onHide = () => save();
     win.addEventListener("pagehide", onHide);
@@ -252,6 +257,7 @@ export class TabAutosave {
       clearTimeout(adopt);
       unsubClient();
       unsubConfirmed();
+      unsubName();
       unsubReplaced();
       unsubUi();
       win.removeEventListener("pagehide", onHide);

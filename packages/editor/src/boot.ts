@@ -74,6 +74,7 @@ function chooseFirstScene(hash: string, autosave: TabAutosave): FirstScene {
   if (saved)
     return {
       scene: saved,
+      name: restored?.slot.name ?? null,
       from: "autosave",
       previous: replaced?.scene ?? null,
       undoNote: replaced
@@ -110,7 +111,8 @@ export async function loadFirstScene(
   const previousErr = first.previous ? await editor.loadScene(first.previous, { undoable: false }) : null;
   if (first.previous && previousErr === null) {
     // A shared scene the engine refuses leaves the previous scene loaded (the message says why).
-    if ((await editor.loadScene(first.scene)) === null && first.undoNote) editor.info(first.undoNote);
+    const named = { name: first.name ?? null };
+    if ((await editor.loadScene(first.scene, named)) === null && first.undoNote) editor.info(first.undoNote);
     err = null;
   } else {
     // the autosave a shared link was to be opened over, refused: kept like one restored alone

@@ -17,7 +17,7 @@ export async function openNewerWork(editor: Editor, storage: Storage, tab: strin
     editor.ui.setState({ message: { text, tone: "error" } });
     return text;
   }
-  const err = await editor.loadScene(slot.scene);
+  const err = await editor.loadScene(slot.scene, { name: slot.name }); // with its file name
   if (err === null)
     editor.info(
       `Opened the scene another tab saved at ${clockTime(slot.savedAt)}. Undo returns to the scene you had.`,

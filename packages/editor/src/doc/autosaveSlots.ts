@@ -1,7 +1,8 @@
 /**
  * Autosave slots in localStorage, one per editor tab, so two tabs never overwrite each other's work.
- * A slot is `chapgame.editor.autosave.v2.<tab id>`, its value one line of metadata (`{"savedAt":ms}`)
- * then the scene (format v1). The single slot of earlier versions (`...autosave.v1`, the scene alone)
+ * A slot is `chapgame.editor.autosave.v2.<tab id>`, its value one line of metadata (`{"savedAt":ms}`,
+ * with `"name"`: the file name the scene came from, when it has one: sceneNames.ts) then the scene
+ * (format v1). The single slot of earlier versions (`...autosave.v1`, the scene alone)
  * is migrated into the slot of tab "v1" with savedAt 0 (its time is unknown: any newer slot wins).
  * At most MAX_SLOTS slots are kept: the oldest are pruned, never the saving tab's own.
  * Beside each slot, a tab keeps the last scene of its own that a load replaced (Clear, a preset, an
@@ -31,6 +32,8 @@ export interface SlotInfo {
 
 export interface Slot extends SlotInfo {
   scene: SceneFile;
+  /** The file name the scene came from (what Save file suggests), null when none was stored. */
+  name: string | null;
   /** The scene's text as stored (to compare scenes without parsing them again). */
   text: string;
 }
@@ -41,14 +44,15 @@ export const REPLACED_PREFIX = "chapgame.editor.replaced.v1.";
 export const replacedKey = (tab: string): string => REPLACED_PREFIX + tab;
 
 /** The metadata and the scene text of a stored slot value; null when it is not one. */
-function split(value: string | null): { savedAt: number; text: string } | null {
+function split(value: string | null): { savedAt: number; name: string | null; text: string } | null {
   if (value === null) return null;
   const nl = value.indexOf("\n");
   if (nl < 0) return null;
   try {
-    const meta = JSON.parse(value.slice(0, nl)) as { savedAt?: unknown };
+    const meta = JSON.parse(value.slice(0, nl)) as { savedAt?: unknown; name?: unknown };
     if (typeof meta.savedAt !== "number" || !Number.isFinite(meta.savedAt)) return null;
-    return { savedAt: meta.savedAt, text: value.slice(nl + 1) };
+    const name = typeof meta.name === "string" && meta.name !== "" ? meta.name : null;
+    return { savedAt: meta.savedAt, name, text: value.slice(nl + 1) };
   } catch {
     return null;
   }
@@ -88,7 +92,8 @@ export function readSlot(storage: Storage, tab: string, key = slotKey(tab)): Slo
   const parts = split(storage.getItem(key));
   if (!parts) return null;
   try {
-    return { tab, key, savedAt: parts.savedAt, scene: parseSceneText(parts.text), text: parts.text };
+    const { savedAt, name, text } = parts;
+    return { tab, key, savedAt, name, scene: parseSceneText(text), text };
   } catch {
     return null;
   }
@@ -172,13 +177,23 @@ export function removeReplaced(storage: Storage, tab: string): void {
 }
 
 /**
- * Writes `tab`'s slot (`text`: the scene's text, sceneIo.sceneText); null on success, else a message for the user. When the scene cannot be stored
+ * Writes `tab`'s slot (`text`: the scene's text, sceneIo.sceneText; `name`: the file name it came
+ * from, or null); null on success, else a message for the user. When the scene cannot be stored
  * (storage full or disabled), the tab's older slot is removed: a reload must not bring back an older
  * scene of this tab as if it were the latest. Other tabs' slots are never touched here.
  */
-export function writeSlot(storage: Storage, tab: string, text: string, savedAt: number): string | null {
+export function writeSlot(
+  storage: Storage,
+  tab: string,
+  text: string,
+  savedAt: number,
+  name: string | null = null,
+): string | null {
   try {
-    storage.setItem(slotKey(tab), `${JSON.stringify({ savedAt })}\n${text}`);
+    storage.setItem(
+      slotKey(tab),
+      `${JSON.stringify(name === null ? { savedAt } : { savedAt, name })}\n${text}`,
+    );
     return null;
   } catch {
     try {
