@@ -30,11 +30,19 @@ describe("opening a scene file", () => {
     const bad = { ...LONELY, actions: [{ ...LONELY.actions[0], r: "big" }] };
     const err = await openSceneFile(editor, json("bad.json", bad));
     expect(err).toMatch(/^bad\.json: actions\[0\]\.r: /);
+    // and says the scene is kept, as the other refusals of a file do (it said only what was wrong)
+    expect(err).toMatch(/; nothing was opened \(your scene is as it was\)\.$/);
     expect(editor.ui.getState().message).toEqual({ text: err, tone: "error" });
     expect(editor.doc).toBe(before);
     expect(editor.history.getState().past.length).toBe(0);
     // broken JSON, and a scene the engine refuses when building it (two discs overlapping)
-    expect(await openSceneFile(editor, json("cut.json", '{"format":"chap'))).toMatch(/^cut\.json: /);
+    expect(await openSceneFile(editor, json("cut.json", '{"format":"chap'))).toMatch(
+      /^cut\.json: .*; nothing was opened \(your scene is as it was\)\.$/,
+    );
+    const newer = { ...LONELY, version: 2 };
+    expect(await openSceneFile(editor, json("newer.json", newer))).toBe(
+      "newer.json: version: unsupported version 2 (this reader knows 1): the file comes from a newer chapgame; open it with that version, or save it there as version 1; nothing was opened (your scene is as it was).",
+    );
     const overlap = {
       ...LONELY,
       actions: [LONELY.actions[0], { ...LONELY.actions[0], id: "twin", x: 0.5 }],

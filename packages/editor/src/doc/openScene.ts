@@ -9,13 +9,15 @@ import { parseSceneText } from "./sceneIo";
 
 /**
  * Loads scene text; a refusal names `origin` (a file's name and ": ") before the field and the
- * reason. `name`: the file name the scene came from, which Save file then suggests (null: none).
+ * reason, and ends with `after`. `name`: the file name the scene came from, which Save file then
+ * suggests (null: none).
  */
 export async function openSceneText(
   editor: Editor,
   source: string,
   origin = "",
   name: string | null = null,
+  after = "",
 ): Promise<string | null> {
   let err: string | null;
   try {
@@ -24,12 +26,15 @@ export async function openSceneText(
     err = e instanceof Error ? e.message : String(e);
   }
   if (err !== null) {
-    const text = origin + err;
+    const text = origin + err + after;
     editor.ui.setState({ message: { text, tone: "error" } });
     return text;
   }
   return null;
 }
+
+/** What a refused file's message ends with. */
+export const KEPT = "; nothing was opened (your scene is as it was).";
 
 /** Opens a scene file (Load file, or dropped); says so, and that Undo returns to the scene before. */
 export async function openSceneFile(editor: Editor, file: File): Promise<string | null> {
@@ -47,7 +52,8 @@ export async function openSceneFile(editor: Editor, file: File): Promise<string 
     editor.ui.setState({ message: { text: msg, tone: "error" } });
     return msg;
   }
-  const err = await openSceneText(editor, text, `${file.name}: `, file.name);
+  // A refusal says the scene is kept, as the other refusals of a file do ("nothing was opened").
+  const err = await openSceneText(editor, text, `${file.name}: `, file.name, KEPT);
   if (err === null) editor.info(`Opened ${file.name}. Undo returns to the scene you had before.`);
   return err;
 }
