@@ -4,7 +4,8 @@
  * save, a preset's) in the browser's save dialog (the File System Access API, replaced here by a
  * recording stand-in: headless Chromium closes the real dialog at once), downloads the scene under
  * that name where the browser has no such dialog, and says in the message bar what was saved under
- * which name; a reload keeps the name (autosave). The Add body / Add line / Add point buttons say what they added where, or why they
+ * which name; a reload keeps the name (autosave); a value typed in a cell and not committed is said
+ * not to be in the file. The Add body / Add line / Add point buttons say what they added where, or why they
  * added nothing.
  */
 import type { Page } from "playwright-core";
@@ -124,6 +125,20 @@ describe("Save file", () => {
     await standInDialog();
     await button("Save file").click();
     await poll(message).toBe("Saved the scene as billiards.chapgame.json.");
+  });
+
+  it("Ctrl+S in a cell with a value typed says that value is not in the file", async () => {
+    const bodies = page.getByRole("table", { name: "Bodies" });
+    await bodies.getByLabel("red x", { exact: true }).click();
+    const input = bodies.getByRole("textbox", { name: "red x", exact: true });
+    await input.fill("12");
+    await page.keyboard.press("Control+s");
+    await poll(message).toBe(
+      "Saved the scene as billiards.chapgame.json. The value typed in red x is not in it: press Enter there, then save again.",
+    );
+    const written = await saved();
+    expect(JSON.parse(written.text).actions[1]).toMatchObject({ id: "red", x: 10 });
+    await input.press("Escape");
   });
 
   it("downloads the scene under its name where the browser has no save dialog", async () => {

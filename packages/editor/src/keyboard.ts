@@ -3,7 +3,8 @@
  * space play/pause, ←/→ previous/next event, Ctrl+Z undo, Ctrl+Shift+Z (or Ctrl+Y) redo, Ctrl+S
  * (Cmd+S) save file, Delete/Backspace delete the selection, and the view's and tools' keys. Ctrl+S
  * works everywhere, in a field too (no field uses it, and the browser would offer to save the page);
- * it saves the scene as it is (text typed in a cell and not yet committed is not in it). Ignored
+ * it saves the scene as it is (text typed in a cell and not yet committed is not in it: the message
+ * says so, panels/sceneFile.ts draftNote). Ignored
  * while typing in a field or inside a dialog; on other controls (the Time slider, a checkbox, a list)
  * only the keys the control uses itself are left to it (the slider's arrows, a checkbox's or a
  * button's space and Enter, a list's keys but Ctrl+Z/Y), so Ctrl+Z and space still work after

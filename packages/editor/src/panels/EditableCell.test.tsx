@@ -279,3 +279,15 @@ describe("EditableCell", () => {
     expect(onCommit).toHaveBeenCalledWith("7");
   });
 });
+
+describe("EditableCell: a draft", () => {
+  it("is marked while typed and differing from the value (Save file says it is not in the file)", () => {
+    render(<EditableCell label="A x" value="3" onCommit={async () => null} />);
+    const input = open("A x");
+    expect(input.hasAttribute("data-draft")).toBe(false); // opened, nothing typed
+    fireEvent.change(input, { target: { value: "5" } });
+    expect(input.hasAttribute("data-draft")).toBe(true);
+    fireEvent.change(input, { target: { value: "3" } }); // typed back to the value: nothing to commit
+    expect(input.hasAttribute("data-draft")).toBe(false);
+  });
+});

@@ -145,6 +145,8 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
     <span className="cell">
       <input
         aria-label={label}
+        // a draft typed and not committed: Save file says it is not in the file (sceneFile.ts)
+        data-draft={typed !== null && typed !== value ? "" : undefined}
         aria-invalid={error !== null}
         aria-describedby={error ? errorId : undefined}
         size={size}

@@ -181,3 +181,22 @@ describe("saveScene", () => {
     });
   });
 });
+
+describe("Save file with a value typed in a cell and not committed", () => {
+  it("says the value is not in the file, naming the cell", async () => {
+    const { editor } = await cradleEditor();
+    const input = document.createElement("input");
+    input.setAttribute("aria-label", "c1 x");
+    input.setAttribute("data-draft", "");
+    document.body.append(input);
+    try {
+      await saveScene(editor, document, fakePicker().picker);
+      expect(message(editor)).toEqual({
+        text: "Saved the scene as scene.chapgame.json. The value typed in c1 x is not in it: press Enter there, then save again.",
+        tone: "info",
+      });
+    } finally {
+      input.remove();
+    }
+  });
+});

@@ -7,7 +7,8 @@
  * scene's (the next save suggests it). Elsewhere, or when the browser refuses the dialog (a
  * SecurityError: no user gesture, a cross-origin frame), the scene is downloaded under the name.
  * Every outcome is said in the message bar with the file's name: saved (and where), not saved
- * because the dialog was closed, or not written (the scene is kept: save again).
+ * because the dialog was closed, or not written (the scene is kept: save again); a saved one also
+ * says when a value typed in a table cell is not in it (not committed yet: draftNote).
  */
 import { saveNameFor } from "../doc/saveName";
 import { sceneText } from "../doc/sceneIo";
@@ -82,9 +83,10 @@ export async function saveScene(
   const doc = editor.doc;
   const name = saveNameFor(editor.names.name, doc);
   const text = sceneText(doc);
+  const draft = draftNote(page);
   if (picker === null) {
     downloadText(text, name, page);
-    editor.info(`Saved the scene as ${name} (in the browser's downloads).`);
+    editor.info(`Saved the scene as ${name} (in the browser's downloads).${draft}`);
     return;
   }
   let handle: SaveHandle;
@@ -97,7 +99,7 @@ export async function saveScene(
     }
     downloadText(text, name, page);
     editor.info(
-      `Saved the scene as ${name} (in the browser's downloads: the browser refused its save dialog: ${reasonOf(e)}).`,
+      `Saved the scene as ${name} (in the browser's downloads: the browser refused its save dialog: ${reasonOf(e)}).${draft}`,
     );
     return;
   }
@@ -115,5 +117,14 @@ export async function saveScene(
     return;
   }
   editor.names.saved(handle.name);
-  editor.info(`Saved the scene as ${handle.name}.`);
+  editor.info(`Saved the scene as ${handle.name}.${draft}`);
+}
+
+/**
+ * What a save says of a value typed in a table cell and not committed (Ctrl+S works in a cell): it
+ * is not in the file, so the author who typed x = 5 and pressed Ctrl+S is told; "" when none is.
+ */
+export function draftNote(page: Document): string {
+  const label = page.querySelector("input[data-draft]")?.getAttribute("aria-label");
+  return label ? ` The value typed in ${label} is not in it: press Enter there, then save again.` : "";
 }
