@@ -47,11 +47,30 @@ function where(text: string): string {
   if (pos < 0) return "";
   const { line, column } = lineColumn(text, pos);
   const at = `line ${line}, column ${column}`;
+  if (/^\s*$/.test(text))
+    return ': the text is empty (a scene is a JSON object, {"format": "chapgame", ...})';
   if (pos >= text.length) return ` at the end (${at}): the text stops early`;
   const word = /^(NaN|Infinity|undefined)/.exec(text.slice(pos, pos + 9));
-  if (word === null) return ` at ${at}`;
+  if (word === null) return ` at ${at}${trailingComma(text, pos)}`;
   const fix = word[1] === "undefined" ? "leave the field out" : "write a finite number";
   return ` at ${at}: JSON has no ${word[1]} (${fix})`;
+}
+
+/** The hint for a comma just before the closing } or ] at `pos` (which JSON, unlike JavaScript, refuses). */
+function trailingComma(text: string, pos: number): string {
+  const c = text[pos];
+  if (c !== "}" && c !== "]") return "";
+  let i = pos - 1;
+  while (i >= 0 && /\s/.test(text[i] as string)) i--;
+  return text[i] === "," ? `: JSON allows no comma before ${c} (remove the last comma)` : "";
+}
+
+/**
+ * V8's own message without its position ("in JSON at position 46", and Chromium's "(line 1 column
+ * 47)" after it): the refusal gives the line and column itself, and said them twice in the editor.
+ */
+function withoutPosition(message: string): string {
+  return message.replace(/ in JSON at position \d+(?: \(line \d+ column \d+\))?/, "");
 }
 
 /** The scene object's own keys, format and version, as a reader and a writer of version 1 check them. */
@@ -115,7 +134,7 @@ function readText(input: string): { raw: unknown; underflow: Map<string, string>
     raw = JSON.parse(text);
   } catch (e) {
     const message = (e as Error).message;
-    throw new SceneError("json", `invalid JSON${where(text)} (${printable(message)})`);
+    throw new SceneError("json", `invalid JSON${where(text)} (${printable(withoutPosition(message))})`);
   }
   // One walk over the text (the first problem in text order is reported): JSON.parse keeps the
   // last of two equal keys silently (the first value would be lost), and reads 1e999 as Infinity

@@ -35,6 +35,34 @@ describe("parseScene on broken JSON", () => {
     ).toEqual([]);
   });
 
+  it("says the position once, in lines and columns (Chromium's V8 adds its own '(line 1 column 8)')", () => {
+    const e = refused('{"a":1 "b":2}');
+    expect(e.message).toBe(
+      "json: invalid JSON at line 1, column 8 (Expected ',' or '}' after property value)",
+    );
+    expect(e.message).not.toMatch(/position/);
+  });
+
+  it("says an empty text is empty (review of session 25: 'at the end (line 1, column 1)')", () => {
+    for (const text of ["", " \n\t"])
+      expect(refused(text).message).toMatch(
+        /^json: invalid JSON: the text is empty \(a scene is a JSON object, /,
+      );
+  });
+
+  it("names a comma before a closing brace or bracket (JavaScript allows it, JSON does not)", () => {
+    const obj = refused('{"format":"chapgame","version":1,"actions":[],\n }');
+    expect(obj.message).toMatch(
+      /^json: invalid JSON at line 2, column 2: JSON allows no comma before \} \(remove the last comma\) \(/,
+    );
+    const arr = refused('{"format":"chapgame","version":1,"actions":[1,2, ]}');
+    expect(arr.message).toMatch(
+      /at line 1, column 50: JSON allows no comma before \] \(remove the last comma\)/,
+    );
+    // a closing brace after something else is not this slip
+    expect(refused('{"a":1 }}').message).not.toMatch(/comma/);
+  });
+
   it("says where a truncated text stops (the parser gives no position: it said only 'Unexpected end')", () => {
     const e = refused('{"format":"chapgame",\n"version":1,\n"actions":[');
     expect(e.path).toBe("json");

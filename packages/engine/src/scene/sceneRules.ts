@@ -139,7 +139,7 @@ export function checkAndApply(view: SceneView, a: Action, path: string): void {
       } else {
         const old = need(view.lines, a.id, "line", view, path);
         line = { p1: a.p1 ?? old.p1, p2: a.p2 ?? old.p2, kind: a.kind ?? old.kind };
-        lineDirection(join(path, a.p2 ? "p2" : "p1"), line.p1, line.p2, "p1 and p2 of the line");
+        lineDirection(join(path, a.p2 ? "p2" : "p1"), line.p1, line.p2, a.p2 ? "p1" : "p2");
       }
       checkObstacle(
         view,

@@ -89,6 +89,9 @@ describe("World input objects", () => {
     expect(e.reason).toBe("unknown field (known: x, y, vx, vy, r, m, mu)");
     expect(e.message).toBe("init.vX: unknown field (known: x, y, vx, vy, r, m, mu)");
     expect(w.hasBody("b")).toBe(false);
+    // an action's spelling of a velocity gets the World's (review of session 25: no hint)
+    const v = refusal(() => w.addBody("b", { x: 5, y: 0, r: 1, m: 1, v: [5, 0] } as unknown as BodyInit));
+    expect(v.message).toBe("init.v: unknown field (known: x, y, vx, vy, r, m, mu; a velocity is vx, vy)");
     expect(refusal(() => w.updateBody("a", { vX: 2 } as unknown as BodyInit)).path).toBe("patch.vX");
     expect(w.body("a").vx).toBe(1);
     const grav = refusal(() => new World({ grav: 1 } as unknown as { g: number }));

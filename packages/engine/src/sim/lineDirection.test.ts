@@ -41,6 +41,34 @@ describe("a line's direction", () => {
     expect(w.lines()[0]?.p2).toEqual([1, 0]); // nothing changed
   });
 
+  it("an end moved onto the other is refused naming the end that moved and the one it met", () => {
+    // (review of session 25: updateLine's p1 moved onto p2 was refused as "p2: must differ from
+    // p1" by the World, "p1: must differ from p1 and p2 of the line" by a Timeline)
+    const w = new World({ g: 0 });
+    w.addLine("l", [0, 0], [1, 0], "segment");
+    expect(refusal(() => w.updateLine("l", { p1: [1, 0] }))).toEqual({
+      path: "p1",
+      reason: "must differ from p2",
+    });
+    expect(refusal(() => w.updateLine("l", { p2: [0, 0] }))).toEqual({
+      path: "p2",
+      reason: "must differ from p1",
+    });
+    expect(refusal(() => w.updateLine("l", { p1: [2, 0], p2: [2, 0] }))).toEqual({
+      path: "p2",
+      reason: "must differ from p1",
+    });
+    const tl = Timeline.fromScene(parseScene(sceneWithLine([1, 0])));
+    expect(refusal(() => tl.apply({ time: 1, type: "updateLine", id: "l", p1: [1, 0] }))).toEqual({
+      path: "action.p1",
+      reason: "must differ from p2",
+    });
+    expect(refusal(() => tl.apply({ time: 1, type: "updateLine", id: "l", p2: [0, 0] }))).toEqual({
+      path: "action.p2",
+      reason: "must differ from p1",
+    });
+  });
+
   it("a scene file's addLine and a Timeline's updateLine are refused the same way, naming the field", () => {
     expect(refusal(() => parseScene(sceneWithLine([1e-200, 0])))).toEqual({
       path: "actions[0].p2",
@@ -49,7 +77,7 @@ describe("a line's direction", () => {
     const tl = Timeline.fromScene(parseScene(sceneWithLine([1, 0])));
     expect(refusal(() => tl.apply({ time: 1, type: "updateLine", id: "l", p1: [1, 1e-31] }))).toEqual({
       path: "action.p1",
-      reason: `must be at least ${RADIUS_MIN} from p1 and p2 of the line in x or y (got 1e-31): a shorter direction underflows the contact tests`,
+      reason: `must be at least ${RADIUS_MIN} from p2 in x or y (got 1e-31): a shorter direction underflows the contact tests`,
     });
   });
 

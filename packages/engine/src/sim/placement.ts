@@ -33,12 +33,13 @@ export class Placement extends ObstacleUpkeep {
   private pointCells: ObstacleCells<Point> | null = null;
 
   /** A checked line; an overlap with a body is refused naming `field` (addLine: p1; updateLine:
-   *  the first of p1, p2, kind that changed). */
-  protected checkedLine(id: string, p1: Vec2, p2: Vec2, kind: LineKind, field = "p1"): Line {
+   *  the first of p1, p2, kind that changed), ends too close naming `end` (p2, or p1 when only p1
+   *  moved: "p1: must differ from p2"). */
+  protected checkedLine(id: string, p1: Vec2, p2: Vec2, kind: LineKind, field = "p1", end = "p2"): Line {
     const a = requireVec("p1", p1);
     const c = requireVec("p2", p2);
     requireLineKind("kind", kind);
-    requireLineDirection("p2", a, c);
+    requireLineDirection(end, a, c, end === "p1" ? "p2" : "p1");
     const line = makeLine(id, a, c, kind);
     const hit = this.firstBodyWhere(
       (s) =>
@@ -200,7 +201,8 @@ export class Placement extends ObstacleUpkeep {
         : kind !== old.kind
           ? "kind"
           : "p1";
-    const line = this.checkedLine(id, p1, p2, kind, field);
+    const end = moved(p1, old.x1, old.y1) && !moved(p2, old.x2, old.y2) ? "p1" : "p2";
+    const line = this.checkedLine(id, p1, p2, kind, field, end);
     this.replaceLineEntry(line);
     if (this.lineCells !== null) indexLine(this.lineCells, line);
   }

@@ -44,8 +44,8 @@ export function requireBounded(path: string, v: unknown): number {
  * A line's second point p2 given its first p1: a different point, at least RADIUS_MIN away along x
  * or y. The line's direction is p2 - p1, whose square enters every contact test: below RADIUS_MIN
  * it underflows, and a disc passed through the line or gained energy at it (review: p2 = p1 + 1e-170
- * gave no collision at all). `path` names p2 (or p1 when p2 was kept); `what` says what the points
- * are of ("p1", "p1 and p2 of the line").
+ * gave no collision at all). `path` names p2 (or p1 when p2 was kept); `what` names the other end
+ * ("p1", or "p2" when `path` is p1).
  */
 export function requireLineDirection(path: string, p1: Vec2, p2: Vec2, what = "p1"): void {
   const d = Math.max(Math.abs(p2[0] - p1[0]), Math.abs(p2[1] - p1[1]));
@@ -184,7 +184,11 @@ export function requireFields(
     throw refused(path, `must be an object with fields ${known.join(", ")}`, v);
   for (const key of Object.keys(v))
     if (!known.includes(key) && !ignored.includes(key))
-      throw new ChapgameError(`${path}.${key}`, unknownField(known));
+      throw new ChapgameError(
+        `${path}.${key}`,
+        // (the slip the other way round from a scene file's: actions spell a velocity v: [vx, vy])
+        unknownField(known, key === "v" && known.includes("vx") ? "; a velocity is vx, vy" : ""),
+      );
 }
 
 /** The fields of a BodyInit / BodyPatch, and of a BodyState that may be passed back. */
