@@ -16,7 +16,7 @@ import type { TimelineCore } from "./core.js";
 import { goalFrom } from "./goals.js";
 import type { Keyframe } from "./keyframe.js";
 import { K_ACTION } from "./records.js";
-import { noteInstantStart, worldCopyHere } from "./restartPoint.js";
+import { noteInstantStart } from "./restartPoint.js";
 
 /** Apply every scheduled action at the World's current time (validated first). */
 export function applyGroup(c: TimelineCore): void {
@@ -37,7 +37,6 @@ export function applyGroup(c: TimelineCore): void {
     last.time === t &&
     last.record === groupStart;
   if (c.history && !joinsOwed && !joinsTaken) noteInstantStart(c);
-  const world = joinsTaken ? worldCopyHere(c) : null;
   // untils met only by idleness count on: building from scratch, these actions were pending then
   if (c.dormant.length > 0) {
     for (const g of c.dormant) c.goals.push(g);
@@ -74,9 +73,7 @@ export function applyGroup(c: TimelineCore): void {
   // would stack one keyframe each: the previous one is redundant when nothing happened since, but
   // it is the point between the instant's actions an edit of the last one restarts from.
   if (joinsTaken) {
-    const kf = kfs.pop() as Keyframe;
-    // with the copy of the World the edit under way took at that point, if any (restartPoint.ts)
-    c.spare = world === null ? kf : { ...kf, world };
+    c.spare = kfs.pop() as Keyframe;
     c.rewrites++;
   }
   oweKeyframe(c);

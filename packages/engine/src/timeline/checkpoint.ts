@@ -145,4 +145,5 @@ export function restorePoint(c: TimelineCore, kf: Keyframe, kept: number): void 
   c.lastLogged = kf.record > 0 ? (c.records.time[kf.record - 1] as number) : c.forgotten.lastTime;
   c.lastActionTime = kf.afterActions ? kf.time : Number.NEGATIVE_INFINITY;
   c.eventAfterActions = false;
+  c.settled = true;
 }

@@ -28,6 +28,7 @@ import type { Keyframe } from "./keyframe.js";
 import { MotionTable } from "./motionTable.js";
 import { K_ACTION, K_BODY_BODY, K_BODY_LINE, K_BODY_POINT, K_STOP, Records } from "./records.js";
 import type { TimelineCounts } from "./types.js";
+import type { UndoBase } from "./undoReplay.js";
 
 const INF = Number.POSITIVE_INFINITY;
 
@@ -84,10 +85,13 @@ export class TimelineCore {
   /** the scene the last group of actions was checked against, kept for the next group at the same
    *  instant (actionGroup.ts openView) */
   view: OpenView | null = null;
-  /** During an edit computing forward: the copy of the World its undo keeps (never changed unless
-   *  the undo runs), and the point it was taken at; the spare restart point taken at that point
-   *  shares it (actionGroup.ts). Cleared when the edit ends. */
-  beforeEdit: { world: World; time: number; records: number; applied: number; events: number } | null = null;
+  /** Without history: the newest point an undo restarts from (undoReplay.ts), null until an edit
+   *  takes one. */
+  undoBase: UndoBase | null = null;
+  /** No computation threw since the core was built or restored (a prolong that meets a Zeno state
+   *  keeps what it computed, where the World stopped inside an event: a point no recomputation
+   *  stops at, so an undo there copies the World: undo.ts). */
+  settled = true;
   /** During an apply at or after the horizon: its instant, where the spare restart point may be
    *  taken before the instant's actions (restartPoint.ts). */
   spareAt: number | null = null;
@@ -212,7 +216,7 @@ export class TimelineCore {
   }
 
   /** Whether a scheduled action is due now. */
-  private due(): boolean {
+  due(): boolean {
     return (
       this.applied < this.acts.length &&
       (this.atTimeLimit || this.groupOpen) &&
@@ -230,6 +234,18 @@ export class TimelineCore {
    * number of events done and how `focus` was met (null when the budget ran out first).
    */
   drive(budget: number, focus: Goal | null): { events: number; reason: "events" | "idle" | "time" | null } {
+    // a throw leaves the core unsettled (see `settled`) until a restore
+    const settled = this.settled;
+    this.settled = false;
+    const res = this.computeGoals(budget, focus);
+    this.settled = settled;
+    return res;
+  }
+
+  private computeGoals(
+    budget: number,
+    focus: Goal | null,
+  ): { events: number; reason: "events" | "idle" | "time" | null } {
     let events = 0;
     for (;;) {
       if (this.due()) {
@@ -271,7 +287,7 @@ export class TimelineCore {
   /** world.advance, without the call when it cannot do anything: no body, and no time to pass (the
    *  World would rebuild its grid around its obstacles, once per action of a scene built one
    *  obstacle per apply; nothing moves, nothing is logged, and the grid decides no result). */
-  private advanceWorld(limits: AdvanceLimits): AdvanceResult {
+  advanceWorld(limits: AdvanceLimits): AdvanceResult {
     const w = this.world;
     if (w.bodyCount === 0 && limits.untilTime === w.time) return { events: 0, reason: "idle" };
     return w.advance(limits, this.onEvent);

@@ -120,7 +120,6 @@ export function applyToCore(
     undo();
     throw laterActionRefusal(e);
   } finally {
-    c.beforeEdit = null;
     c.spareAt = null;
   }
   if (!c.history) return forward ? noteInstant(instant, c, a, undo) : null;
@@ -169,8 +168,6 @@ export function actionsOnCore(
     } catch (e) {
       undo();
       throw e;
-    } finally {
-      c.beforeEdit = null;
     }
     return c;
   }

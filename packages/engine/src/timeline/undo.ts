@@ -29,10 +29,10 @@
  * would make it the core's World, also gives back the spare as it was).
  * The undo must run before any other operation on the core.
  */
-import type { World } from "../sim/world.js";
 import type { TimelineCore } from "./core.js";
 import type { Keyframe } from "./keyframe.js";
 import { MotionTable, STRIDE } from "./motionTable.js";
+import { pointOf, recompute, renumber, untouchedSince } from "./undoReplay.js";
 
 /** What an edit may change (see the header). */
 export interface EditScope {
@@ -82,37 +82,6 @@ function putRows(data: Float64Array, saved: { nums: number[]; rows: Float64Array
     data.set(saved.rows.subarray(k * STRIDE, (k + 1) * STRIDE), (saved.nums[k] as number) * STRIDE);
 }
 
-/** The number of every live body, line and point, from the id lists (the live one of an id is its
- *  last number) and the World (which holds exactly the live ones). */
-function renumber(c: TimelineCore): void {
-  const w = c.world;
-  const numbers = (ids: readonly string[], alive: (id: string) => boolean) => {
-    const m = new Map<string, number>();
-    for (let n = ids.length - 1; n >= 0; n--) {
-      const id = ids[n] as string;
-      if (!m.has(id) && alive(id)) m.set(id, n);
-    }
-    return m;
-  };
-  c.live = numbers(c.bodyIds, (id) => w.hasBody(id));
-  c.lineNums = numbers(c.lineIds, (id) => w.hasLine(id));
-  c.pointNums = numbers(c.pointIds, (id) => w.hasPoint(id));
-}
-
-/** A copy of the core's World for an undo, noted as core.beforeEdit with the point it holds. */
-function copyWorld(c: TimelineCore): World {
-  const world = c.world.clone();
-  if (c.history)
-    c.beforeEdit = {
-      world,
-      time: world.time,
-      records: c.records.length,
-      applied: c.applied,
-      events: c.eventTotal,
-    };
-  return world;
-}
-
 export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): () => void {
   // (a timeline without history may hold no keyframe at all)
   const kfs = c.rawKeyframes; // (an owed keyframe stays owed: it is saved below)
@@ -122,8 +91,10 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
   const fwd = edit?.forward === true;
   const start = (list: readonly unknown[], count: number | undefined): number =>
     edit === undefined ? 0 : fwd ? list.length : Math.min(count ?? 0, list.length);
+  // forward from a point a recomputation reaches: no copy of the World (undoReplay.ts)
+  const point = fwd && c.settled ? pointOf(c) : null;
   const saved = {
-    world: edit?.worldReplaced ? c.world : copyWorld(c),
+    world: edit?.worldReplaced || point !== null ? c.world : c.world.clone(),
     acts: edit === undefined ? c.acts.slice() : c.acts,
     actsLength: c.acts.length,
     actEvents: tailOf(
@@ -131,12 +102,13 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
       fwd ? Math.min(c.applied, c.actEvents.length) : start(c.actEvents, kf?.actionCount),
     ),
     applied: c.applied,
-    // the motion table: whole (no scope), untouched (a restore replaces it), or the rows of the live
-    // bodies (the only rows an edit computing forward changes: a body gone keeps its row, and a new
-    // body's row lies past the restored ids and is written whole when a body takes it again)
-    table: edit === undefined ? c.table.data.slice() : c.table.data,
+    // the motion table: whole (no scope), untouched (a restore replaces it), recomputed with the
+    // World (null), or the rows of the live bodies (the only rows an edit computing forward changes:
+    // a body gone keeps its row, and a new body's row lies past the restored ids and is written
+    // whole when a body takes it again)
+    table: edit === undefined ? c.table.data.slice() : point !== null ? null : c.table.data,
     // (without history the table is not kept: it has no rows)
-    rows: edit === undefined || edit.worldReplaced || !c.history ? null : liveRows(c),
+    rows: edit === undefined || edit.worldReplaced || !c.history || point !== null ? null : liveRows(c),
     bodyIds: tailOf(c.bodyIds, start(c.bodyIds, kf?.bodyCount)),
     live: edit === undefined ? new Map(c.live) : fwd ? null : c.live,
     lineIds: tailOf(c.lineIds, start(c.lineIds, kf?.lineCount)),
@@ -161,21 +133,22 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
     sortedLive: c.sortedLive,
     pathOf: c.pathOf,
     forgotten: c.forgotten.records,
+    settled: c.settled,
   };
   const insertAt = edit?.insertAt;
-  return () => {
-    if (c.forgotten.records !== saved.forgotten)
-      throw new Error("timeline: the history was forgotten during an edit; its undo cannot restore it");
-    c.world = saved.world;
+  const restore = (): void => {
+    if (point === null) c.world = saved.world;
     c.acts = saved.acts;
     // the actions inserted into the same list since go again (one run at insertAt: see EditScope)
     if (c.acts.length > saved.actsLength && insertAt !== undefined)
       c.acts.splice(insertAt, c.acts.length - saved.actsLength);
     putBack(c.actEvents, saved.actEvents);
     c.applied = saved.applied;
-    c.table = new MotionTable(0);
-    c.table.data = saved.table;
-    if (saved.rows !== null) putRows(saved.table, saved.rows);
+    if (saved.table !== null) {
+      c.table = new MotionTable(0);
+      c.table.data = saved.table;
+      if (saved.rows !== null) putRows(saved.table, saved.rows);
+    }
     putBack(c.bodyIds, saved.bodyIds);
     putBack(c.lineIds, saved.lineIds);
     putBack(c.pointIds, saved.pointIds);
@@ -191,7 +164,6 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
     c.owed = saved.owed;
     c.spare = saved.spare;
     c.view = null;
-    c.beforeEdit = null;
     c.rewrites++;
     c.counts = saved.counts;
     c.eventTotal = saved.eventTotal;
@@ -205,5 +177,17 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
     c.eventAfterActions = saved.eventAfterActions;
     c.sortedLive = saved.sortedLive;
     c.pathOf = saved.pathOf;
+    c.settled = saved.settled;
+  };
+  return () => {
+    if (c.forgotten.records !== saved.forgotten)
+      throw new Error("timeline: the history was forgotten during an edit; its undo cannot restore it");
+    const touched = point !== null && !untouchedSince(c, point);
+    restore();
+    if (!touched) return;
+    // the action list, the lists and the counts as they were, then the World recomputed up to the
+    // point, then the rest given back again over what the recomputation left
+    recompute(c, point);
+    restore();
   };
 }
