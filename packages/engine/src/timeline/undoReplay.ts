@@ -168,6 +168,7 @@ function restoreBase(c: TimelineCore, b: UndoBase): void {
   c.lastLogged = b.lastLogged;
   c.lastActionTime = b.lastActionTime;
   c.eventAfterActions = b.eventAfterActions;
+  c.settled = true; // (a base is taken at a settled point only: pointOf)
 }
 
 function lost(p: CorePoint): Error {
