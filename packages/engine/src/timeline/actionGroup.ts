@@ -119,10 +119,10 @@ function track(c: TimelineCore, a: Action): void {
     c.live.delete(a.id);
     c.sortedLive = null;
   } else if (a.type === "addBody") {
+    if (c.sortedLive !== null) c.liveAdded.push(c.bodyIds.length);
     c.live.set(a.id, c.bodyIds.length);
     c.bodyIds.push(a.id);
     if (c.history) c.table.ensure(c.bodyIds.length); // without history the table is not used
-    c.sortedLive = null;
   } else if (a.type === "addLine") {
     c.lineNums.set(a.id, c.lineIds.length);
     c.lineIds.push(a.id);

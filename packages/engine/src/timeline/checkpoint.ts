@@ -29,13 +29,45 @@ export function recordsPerKeyframe(c: TimelineCore): number {
   return Math.max(KEYFRAME_MIN_RECORDS, KEYFRAME_RECORDS_PER_BODY * c.live.size);
 }
 
-/** Live body numbers sorted by id (cached in core.sortedLive until a body is added or removed). */
+/** Live body numbers sorted by id: core.sortedLive, with the bodies added since merged in (a sort of
+ *  every id per instant made a scene built one disc per instant O(n log n) string comparisons per
+ *  apply), or sorted again after a removal. */
 function liveOrder(c: TimelineCore): Uint32Array {
   if (c.sortedLive === null) {
     const ids = [...c.live.keys()].sort();
     c.sortedLive = Uint32Array.from(ids, (id) => c.live.get(id) as number);
+    c.liveAdded = [];
+  } else if (c.liveAdded.length > 0) {
+    c.sortedLive = mergeById(c.sortedLive, c.liveAdded, c.bodyIds);
+    c.liveAdded = [];
   }
   return c.sortedLive;
+}
+
+/** The body numbers of `sorted` (sorted by id) and `added` (none of them in it) sorted by id
+ *  (`ids[n]` names body n; ids differ), as a new array. */
+export function mergeById(
+  sorted: Uint32Array,
+  added: readonly number[],
+  ids: readonly string[],
+): Uint32Array {
+  const id = (n: number) => ids[n] as string;
+  const extra = added.slice().sort((p, q) => (id(p) < id(q) ? -1 : 1));
+  const out = new Uint32Array(sorted.length + extra.length);
+  let i = 0;
+  let j = 0;
+  for (let k = 0; k < out.length; k++) {
+    const a = sorted[i];
+    const b = extra[j];
+    if (b === undefined || (a !== undefined && id(a) < id(b))) {
+      out[k] = a as number;
+      i++;
+    } else {
+      out[k] = b;
+      j++;
+    }
+  }
+  return out;
 }
 
 /** What a keyframe owed after a group of actions notes at once (see the header). */
@@ -135,6 +167,7 @@ export function restorePoint(c: TimelineCore, kf: Keyframe, kept: number): void 
   c.live = new Map();
   for (const i of kf.order) c.live.set(c.bodyIds[i] as string, i);
   c.sortedLive = kf.order;
+  c.liveAdded = [];
   c.lineNums = new Map(kf.lineNums);
   c.pointNums = new Map(kf.pointNums);
   c.table = new MotionTable(Math.max(16, kf.bodyCount));

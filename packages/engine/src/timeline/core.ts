@@ -130,8 +130,11 @@ export class TimelineCore {
   /** What forgetBefore dropped (forget.ts): how many records (record i of `records` is log entry
    *  `records + i`), and the time and kind of the last of them (kind -1: none). */
   forgotten = { records: 0, lastTime: 0, lastKind: -1 };
-  /** live body numbers sorted by id (cache; null after an add or remove) */
+  /** live body numbers sorted by id (cache; null after a removal), but for the bodies added since
+   *  (liveAdded: checkpoint.ts liveOrder merges them in; only appended to, or replaced by a new
+   *  array, so that an undo gives it back by its length: undo.ts) */
   sortedLive: Uint32Array | null = null;
+  liveAdded: number[] = [];
   private readonly onEvent: (e: WorldEvent) => void;
 
   constructor(g: number, gravity: Vec2, history: boolean, eager: boolean, untils = eager) {

@@ -8,7 +8,7 @@
  *
  * Without `edit` everything is copied: O(bodies + actions + keyframes + records after cutRecord).
  * With `edit` (an EditScope: what the operation may change, given by the caller), only what it may
- * change is kept, so that an edit costs O(live bodies + what it recomputes), not O(every action and
+ * change is kept, so that an edit costs O(what it changes and recomputes), not O(every action and
  * keyframe ever) (audit of session 20: a game applying one action a frame slowed down without
  * bound, forgetBefore or not). The scope's promises, which apply() and setActions() keep:
  * - nothing before keyframe `fromKeyframe` changes: every keyframe, body id, line id, point id and
@@ -24,9 +24,14 @@
  * computing forward only adds and deletes entries, so its undo rebuilds them from the id lists and
  * the World it gives back (renumber), O(ids) on an error only (a copy per apply made a scene built
  * one obstacle per apply quadratic). The keyframe owed (checkpoint.ts), the spare restart point and
- * the kept view of the scene (actionGroup.ts) are given back or dropped with the rest. The World's
- * copy is also noted as core.beforeEdit, for the spare restart point to share (the undo, which
- * would make it the core's World, also gives back the spare as it was).
+ * the kept view of the scene (actionGroup.ts) are given back or dropped with the rest.
+ * Nor is the World copied for an edit computing forward (nor the motion-table rows of the live
+ * bodies): that copy, O(bodies) per apply, made a scene built one disc per apply quadratic (4,000
+ * discs: 2 s). The undo keeps the World when the edit did not reach it, and otherwise recomputes it
+ * from the last restart point (undoReplay.ts: deterministic, so bit for bit), O(bodies + records
+ * since that point) on an error only. Only after a computation that threw (core.settled false: a
+ * prolong that met a Zeno state, whose World no recomputation stops at) is the World copied as
+ * before. Without a scope (the headless instant's group, headlessInstant.ts) everything is copied.
  * The undo must run before any other operation on the core.
  */
 import type { TimelineCore } from "./core.js";
@@ -130,8 +135,10 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
     lastLogged: c.lastLogged,
     lastActionTime: c.lastActionTime,
     eventAfterActions: c.eventAfterActions,
-    sortedLive: c.sortedLive,
     pathOf: c.pathOf,
+    sortedLive: c.sortedLive,
+    liveAdded: c.liveAdded,
+    liveAddedCount: c.liveAdded.length,
     forgotten: c.forgotten.records,
     settled: c.settled,
   };
@@ -175,7 +182,11 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
     c.lastLogged = saved.lastLogged;
     c.lastActionTime = saved.lastActionTime;
     c.eventAfterActions = saved.eventAfterActions;
+    // the bodies added since the order was sorted: the same list (only appended to, or replaced by
+    // a new one: checkpoint.ts liveOrder), cut back
     c.sortedLive = saved.sortedLive;
+    c.liveAdded = saved.liveAdded;
+    c.liveAdded.length = saved.liveAddedCount;
     c.pathOf = saved.pathOf;
     c.settled = saved.settled;
   };
