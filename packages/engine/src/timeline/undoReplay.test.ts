@@ -246,3 +246,25 @@ describe("a scene built one disc per apply copies no World per apply", () => {
     },
   );
 });
+
+describe("an apply whose until reaches a scheduled action it makes invalid (compute: false)", () => {
+  it.each([true, false])("history %s: refused, nothing changes", (history) => {
+    const make = () => {
+      const tl = new Timeline({ g: 0, history, compute: false });
+      const actions: Action[] = [];
+      for (let i = 0; i < 6; i++) actions.push(...cell(i, 0));
+      actions.push(still("late", 30, 30, 2));
+      tl.setActions(actions);
+      tl.prolongTo(1.5);
+      return tl;
+    };
+    const tl = make();
+    const twin = make();
+    // a disc where "late" will be added at t = 2, moving off after it: that addBody overlaps it
+    const doomed: Action = { ...disc("z", 30, 30, [0.1, 0], 1.5), until: { time: 1 } };
+    expect(() => tl.apply(doomed)).toThrow(/actions\[\d+\].*once this action is in place/);
+    expect(seen(tl)).toStrictEqual(seen(twin));
+    for (const t of [tl, twin]) t.prolongTo(4);
+    expect(seen(tl)).toStrictEqual(seen(twin));
+  });
+});
