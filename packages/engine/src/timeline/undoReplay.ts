@@ -16,8 +16,10 @@
  * Without history there is no keyframe: the undo base is a copy of the World at an earlier point
  * (undoBaseFor), taken again by the edit that finds it more than max(1, bodies /
  * UNDO_BASE_BODIES_PER_STEP) steps (events and actions) old: O(UNDO_BASE_BODIES_PER_STEP) per step,
- * amortized, and a replay of at most that many steps plus the failed edit's own. A base holds while
- * the computation only went on from it (core.rewrites unchanged: an undo or a restore changes it).
+ * amortized, and on an error a replay of at most that many steps (with the free flight between
+ * them: a game applying an action a frame to bodies that rarely collide replays up to bodies / 8
+ * frames) plus the failed edit's own. A base holds while the computation only went on from it
+ * (core.rewrites unchanged: an undo or a restore changes it).
  */
 import type { AdvanceLimits } from "../sim/types.js";
 import type { World } from "../sim/world.js";
