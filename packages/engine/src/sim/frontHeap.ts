@@ -11,7 +11,8 @@ export class FrontHeap {
   n = 0;
   /** Heap position of each slot in the heap (meaningless for slots not in it). */
   declare private pos: Int32Array;
-  private readonly tieLess: (a: number, b: number) => boolean;
+  /** `declare`d: set only in the constructor, never undefined first (see bodyStore.ts). */
+  declare private readonly tieLess: (a: number, b: number) => boolean;
 
   constructor(capacity: number, tieLess: (a: number, b: number) => boolean) {
     this.slots = new Int32Array(capacity);

@@ -34,8 +34,14 @@ export class SimState {
   protected frictionG = 0;
   protected gravX = 0;
   protected gravY = 0;
-  /** The optimisation switches in effect: WorldOptions.optimizations with the defaults (all true) filled in. */
-  readonly opt: { [K in keyof Optimizations]-?: boolean };
+  /**
+   * The optimisation switches in effect: WorldOptions.optimizations with the defaults (all true)
+   * filled in. `declare`d like the fields below: a field definition would start it as undefined, and
+   * V8 would check the object's map again after each load of it (solvePair reads it per pair test).
+   * The pair test compares its switches with `=== true`: V8 does not know that a field holds a
+   * boolean, and a plain test of one is a full ToBoolean (false, "", numbers, BigInts).
+   */
+  declare readonly opt: { [K in keyof Optimizations]-?: boolean };
   // `declare`: set in the constructor, never undefined, so V8 knows their classes (bodyStore.ts).
   declare protected store: BodyStore;
   declare protected grid: Grid;
