@@ -24,7 +24,11 @@ export class CellCrossings extends Predictor {
     else if (dir === 1) cx++;
     else if (dir === 2) cy--;
     else cy++;
-    grid.move(s, cy * nx + cx);
+    const to = cy * nx + cx;
+    grid.move(s, to);
+    // The strip lies in the new cell's 3 x 3: its obstacle lists are read only when one of those
+    // lists something (grid.obstNear).
+    const obstacles = ((grid.obstNear[to >> 5] as number) & (1 << (to & 31))) !== 0;
     this.stamp++;
     // The strip (one column or one row of three cells), clipped to the grid, scanned by one loop:
     // one call site, so that V8 inlines the scans (and the pair test) once, in full.
@@ -36,7 +40,7 @@ export class CellCrossings extends Predictor {
       for (let x = xa; x <= xb; x++) {
         const c = y * nx + x;
         this.scanCell(s, c, true);
-        this.scanCellObstacles(s, c);
+        if (obstacles) this.scanCellObstacles(s, c);
       }
     this.crossing(s, 0, cx, cy);
     this.heap.set(s, Math.min(b.evTime[s] as number, b.crossTime[s] as number));

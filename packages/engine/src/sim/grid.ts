@@ -292,6 +292,13 @@ export class Grid {
    * large grid whose cells are mostly empty of obstacles read a few cached words, not obstStart.
    */
   obstBits: Int32Array = new Int32Array(1);
+  /**
+   * One bit per level-0 cell, set when the cell or one of its eight neighbours lists obstacles: a
+   * plain grid's 3 x 3 scan (and a crossing's strip, inside the new cell's 3 x 3) reads this one
+   * bit and skips the obstacle bits of all its cells when it is clear, as in most cells of a gas.
+   * Kept exact through the obstacle edits (gridObstacles.ts).
+   */
+  obstNear: Int32Array = new Int32Array(1);
   /** The levels whose rows are built, and whether a copy shares the rows (copy on write). */
   obstBuilt: Uint8Array = new Uint8Array(1).fill(1);
   obstShared = false;
@@ -347,6 +354,7 @@ export class Grid {
     g.obstTail = this.obstTail;
     g.obstLive = this.obstLive;
     g.obstBits = this.obstBits;
+    g.obstNear = this.obstNear;
     g.obstBuilt = this.obstBuilt.slice();
     g.obstShared = true;
     this.obstShared = true;

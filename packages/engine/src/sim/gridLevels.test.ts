@@ -81,6 +81,21 @@ describe("Grid levels", () => {
         expect(got.sort((x, y) => x - y)).toEqual((want.get(cell) ?? []).sort((x, y) => x - y));
       }
     }
+    // obstNear: a level-0 cell's bit is set exactly when a cell of its 3 x 3 (clipped) lists something.
+    const lists = (c: number) => (g.obstEnd[c] as number) > (g.obstStart[c] as number);
+    let near = 0;
+    for (let cy = 0; cy < 23; cy++)
+      for (let cx = 0; cx < 37; cx++) {
+        let want = false;
+        for (let y = Math.max(0, cy - 1); y <= Math.min(22, cy + 1); y++)
+          for (let x = Math.max(0, cx - 1); x <= Math.min(36, cx + 1); x++) want ||= lists(y * 37 + x);
+        const c = cy * 37 + cx;
+        const got = ((g.obstNear[c >> 5] as number) & (1 << (c & 31))) !== 0;
+        expect(got).toBe(want);
+        if (got) near++;
+      }
+    expect(near).toBeGreaterThan(0);
+    expect(near).toBeLessThan(37 * 23);
   });
 
   it("a point's cell at level k holds its level-0 cell, and level k's boundaries are level 0's", () => {

@@ -1,8 +1,8 @@
 // The grid's obstacle rows (gridObstacles.ts) against a plain model, under fast-check: after any run
 // of obstacles added and removed, the list renumbered after a removal, levels built as bodies enter
 // them, and copies of the grid edited on either side, each built level's cell lists every code
-// registered in a level-0 cell under it, once, its bit says whether it lists any, and a copy never
-// sees the other's edits. Prints its seed; set FC_SEED to explore others.
+// registered in a level-0 cell under it, once, its bit says whether it lists any, each level-0 cell's
+// obstNear bit whether its 3 x 3 does, and a copy never sees the other's edits. Prints its seed; set FC_SEED to explore others.
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import { Grid } from "./grid.js";
@@ -31,6 +31,18 @@ function expectRows(g: Grid, model: Model): void {
       expect(bit).toBe(got.length > 0 ? 1 : 0);
     }
   }
+  // obstNear: a level-0 cell's bit says whether a cell of its 3 x 3 (clipped) lists anything
+  const listed = new Set<number>();
+  for (const cells of model.values()) for (const c of cells) listed.add(c);
+  for (let cy = 0; cy < NY; cy++)
+    for (let cx = 0; cx < NX; cx++) {
+      let want = 0;
+      for (let y = Math.max(0, cy - 1); y <= Math.min(NY - 1, cy + 1); y++)
+        for (let x = Math.max(0, cx - 1); x <= Math.min(NX - 1, cx + 1); x++)
+          if (listed.has(y * NX + x)) want = 1;
+      const c = cy * NX + cx;
+      expect(((g.obstNear[c >> 5] as number) >>> (c & 31)) & 1).toBe(want);
+    }
 }
 
 const cellsArb = fc.uniqueArray(fc.integer({ min: 0, max: NX * NY - 1 }), { minLength: 1, maxLength: 12 });

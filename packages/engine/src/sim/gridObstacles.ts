@@ -12,7 +12,9 @@
  * adding or removing one obstacle costs the cells it covers at each built level, not the grid:
  * the World's obstacle edits (obstacleUpkeep.ts) keep the grid's layout this way. obstBits has one
  * bit per cell whose row is not empty (the scans read a few cached words on a large, mostly empty
- * grid). A copy of the grid shares the rows until either side edits them (copy on write).
+ * grid), and obstNear one bit per level-0 cell whose 3 x 3 holds a cell with a row (a plain grid's
+ * scan reads that one bit), both kept exact by every edit. A copy of the grid shares the rows until
+ * either side edits them (copy on write).
  */
 import type { Grid } from "./grid.js";
 
@@ -39,6 +41,39 @@ export function setObstacles(g: Grid, level0: readonly number[]): void {
   g.obstLive = 0;
   g.obstShared = false;
   appendRows(g, pairs, 0, nc);
+  g.obstNear = new Int32Array(((g.nx * g.ny) >> 5) + 1);
+  for (let c = 0; c < g.nx * g.ny; c++) if (hasRow(g, c)) markNear(g, c);
+}
+
+function hasRow(g: Grid, cell: number): boolean {
+  return ((g.obstBits[cell >> 5] as number) & (1 << (cell & 31))) !== 0;
+}
+
+/** The level-0 cells of the 3 x 3 around level-0 cell c (clipped to the grid), each visited. */
+function forEachAround(g: Grid, c: number, visit: (cell: number) => void): void {
+  const nx = g.nx;
+  const cy = (c / nx) | 0;
+  const cx = c - cy * nx;
+  for (let y = Math.max(0, cy - 1); y <= Math.min(g.ny - 1, cy + 1); y++)
+    for (let x = Math.max(0, cx - 1); x <= Math.min(nx - 1, cx + 1); x++) visit(y * nx + x);
+}
+
+/** Level-0 cell c has a row now: its 3 x 3 is near obstacles. */
+function markNear(g: Grid, c: number): void {
+  forEachAround(g, c, (n) => {
+    g.obstNear[n >> 5] = (g.obstNear[n >> 5] as number) | (1 << (n & 31));
+  });
+}
+
+/** Level-0 cell c's row became empty: each cell of its 3 x 3 is near obstacles only if a cell of its own 3 x 3 has a row. */
+function unmarkNear(g: Grid, c: number): void {
+  forEachAround(g, c, (n) => {
+    let near = false;
+    forEachAround(g, n, (m) => {
+      near ||= hasRow(g, m);
+    });
+    if (!near) g.obstNear[n >> 5] = (g.obstNear[n >> 5] as number) & ~(1 << (n & 31));
+  });
 }
 
 /** Whether level k's rows are built (the others read as empty). */
@@ -159,6 +194,7 @@ function insert(g: Grid, cell: number, code: number): void {
   g.obstList[end] = code;
   g.obstEnd[cell] = end + 1;
   g.obstBits[cell >> 5] = (g.obstBits[cell >> 5] as number) | (1 << (cell & 31));
+  if (end === (g.obstStart[cell] as number) && cell < g.nx * g.ny) markNear(g, cell);
   g.obstLive++;
 }
 
@@ -169,7 +205,10 @@ function remove(g: Grid, cell: number, code: number): void {
     if (g.obstList[i] !== code) continue;
     g.obstList[i] = g.obstList[end - 1] as number;
     g.obstEnd[cell] = end - 1;
-    if (end - 1 === start) g.obstBits[cell >> 5] = (g.obstBits[cell >> 5] as number) & ~(1 << (cell & 31));
+    if (end - 1 === start) {
+      g.obstBits[cell >> 5] = (g.obstBits[cell >> 5] as number) & ~(1 << (cell & 31));
+      if (cell < g.nx * g.ny) unmarkNear(g, cell);
+    }
     g.obstLive--;
     return;
   }
@@ -226,5 +265,6 @@ function own(g: Grid): void {
   g.obstCap = g.obstCap.slice();
   g.obstList = g.obstList.slice();
   g.obstBits = g.obstBits.slice();
+  g.obstNear = g.obstNear.slice();
   g.obstShared = false;
 }

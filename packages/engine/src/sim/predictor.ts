@@ -106,13 +106,15 @@ export class Predictor extends ContactTimes {
     const cell = grid.cellOf[s] as number;
     const cy = (cell / nx) | 0;
     const cx = cell - cy * nx;
+    // The cells' obstacle lists are read only when one of the 3 x 3 lists something (grid.obstNear).
+    const obstacles = moving && ((grid.obstNear[cell >> 5] as number) & (1 << (cell & 31))) !== 0;
     this.stamp++;
     for (let y = cy - 1; y <= cy + 1; y++) {
       if (y < 0 || y >= ny) continue;
       for (let x = cx - 1; x <= cx + 1; x++) {
         if (x < 0 || x >= nx) continue;
         this.scanCell(s, y * nx + x, moving);
-        if (moving) this.scanCellObstacles(s, y * nx + x);
+        if (obstacles) this.scanCellObstacles(s, y * nx + x);
       }
     }
     if (moving) for (const i of this.globalLines) this.testLine(s, i);
