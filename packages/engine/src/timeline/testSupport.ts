@@ -9,6 +9,7 @@ import type { Action, SceneFile } from "../scene/types.js";
 import { ARRAY_FIELDS, type BodyArrays } from "../sim/bodyArrays.js";
 import type { BodyState } from "../sim/types.js";
 import type { TimelineCore } from "./core.js";
+import type { Keyframe } from "./keyframe.js";
 import { Timeline } from "./timeline.js";
 import type { SceneState } from "./types.js";
 
@@ -129,3 +130,24 @@ export const num = (min: number, max: number) =>
 /** A velocity component: 0 or 0.1…5 in size (not 1e-134: such a disc reaches a wall at t ~ 1e135,
  *  where time has no resolution left; that is outside what these properties are about). */
 export const speed = fc.oneof(fc.constant(0), num(0.1, 5), num(-5, -0.1));
+
+/**
+ * What a Timeline's core holds besides the World: where it stands, its goals, keyframes and restart
+ * points, its flags and counters, and the numbers of its live bodies, lines and points (the maps by
+ * content: their order means nothing). Two timelines that took the same edits hold the same.
+ */
+export function coreInternals(tl: Timeline): unknown {
+  const c = coreOf(tl);
+  const k = (kf: Keyframe | null) =>
+    kf === null ? null : [kf.time, kf.record, kf.actionCount, kf.world !== undefined];
+  return {
+    keyframes: c.rawKeyframes.map(k),
+    owed: c.owed,
+    spare: k(c.spare),
+    goals: c.goals,
+    dormant: c.dormant,
+    flags: [c.atTimeLimit, c.groupOpen, c.idle, c.settled, c.eventAfterActions, c.applied],
+    times: [c.lastLogged, c.lastActionTime, c.eventTotal],
+    numbers: [c.live, c.lineNums, c.pointNums].map((m) => [...m].sort()),
+  };
+}

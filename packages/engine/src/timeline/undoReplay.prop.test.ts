@@ -8,8 +8,7 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import type { Action } from "../scene/types.js";
-import type { Keyframe } from "./keyframe.js";
-import { coreOf, disc, fingerprint, seedFor } from "./testSupport.js";
+import { coreInternals, disc, fingerprint, seedFor } from "./testSupport.js";
 import { Timeline } from "./timeline.js";
 
 const BOX: Action[] = [
@@ -55,30 +54,13 @@ const opArb: fc.Arbitrary<Op> = fc.oneof(
   fc.record({ kind: fc.constant("twice" as const), who: fc.nat(20), dt: fc.constantFrom(0.1, 0.5, 2) }),
 );
 
-/** The core's internals besides the World (the maps by content: their order means nothing). */
-function internals(tl: Timeline): unknown {
-  const c = coreOf(tl);
-  const k = (kf: Keyframe | null) =>
-    kf === null ? null : [kf.time, kf.record, kf.actionCount, kf.world !== undefined];
-  return {
-    keyframes: c.rawKeyframes.map(k),
-    owed: c.owed,
-    spare: k(c.spare),
-    goals: c.goals,
-    dormant: c.dormant,
-    flags: [c.atTimeLimit, c.groupOpen, c.idle, c.settled, c.eventAfterActions, c.applied],
-    times: [c.lastLogged, c.lastActionTime, c.eventTotal],
-    numbers: [c.live, c.lineNums, c.pointNums].map((m) => [...m].sort()),
-  };
-}
-
 /** Everything observable, then the internals (after the reads: run() reads the timeline it edits,
  *  which takes a keyframe owed, and the twin is not given the refused edits). */
 function seen(tl: Timeline): unknown {
   const shown = tl.history
     ? fingerprint(tl)
     : { scene: tl.toScene(), horizon: tl.horizon, counts: tl.counts(), state: tl.stateAt(tl.horizon) };
-  return { shown, inner: internals(tl) };
+  return { shown, inner: coreInternals(tl) };
 }
 
 /** Runs op on a timeline (reading its state at the horizon first), or throws as the timeline does. */

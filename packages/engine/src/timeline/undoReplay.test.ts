@@ -10,8 +10,7 @@ import { SceneError } from "../scene/errors.js";
 import type { Action } from "../scene/types.js";
 import { SimulationError } from "../sim/errors.js";
 import { World } from "../sim/world.js";
-import type { Keyframe } from "./keyframe.js";
-import { coreOf, disc, fingerprint } from "./testSupport.js";
+import { coreInternals, coreOf, disc, fingerprint } from "./testSupport.js";
 import { Timeline } from "./timeline.js";
 import { UNDO_BASE_BODIES_PER_STEP } from "./undoReplay.js";
 
@@ -83,28 +82,10 @@ function build(history: boolean, how: Build): Timeline {
 /** A still disc at (x, y) at time t. */
 const still = (id: string, x: number, y: number, time: number): Action => disc(id, x, y, [0, 0], time);
 
-/** What the core holds besides the World: where it stands, its goals, keyframes and restart points. */
-function internals(tl: Timeline): unknown {
-  const c = coreOf(tl);
-  const k = (kf: Keyframe | null) =>
-    kf === null ? null : [kf.time, kf.record, kf.actionCount, kf.world !== undefined];
-  return {
-    keyframes: c.rawKeyframes.map(k),
-    owed: c.owed,
-    spare: k(c.spare),
-    goals: c.goals,
-    dormant: c.dormant,
-    flags: [c.atTimeLimit, c.groupOpen, c.idle, c.settled, c.eventAfterActions],
-    times: [c.lastLogged, c.lastActionTime],
-    // (the numbers of the live bodies, lines and points; the maps' order means nothing)
-    numbers: [c.live, c.lineNums, c.pointNums].map((m) => [...m].sort()),
-  };
-}
-
 /** Everything observable (without history: the horizon's state, counts and actions), and the core's
  *  internals. */
 function seen(tl: Timeline): unknown {
-  const inner = internals(tl); // (before the readers settle an owed keyframe)
+  const inner = coreInternals(tl); // (before the readers settle an owed keyframe)
   if (tl.history) return { ...(fingerprint(tl) as object), inner };
   return {
     scene: tl.toScene(),
