@@ -7,7 +7,7 @@ import { describe, expect, it } from "vitest";
 import { SceneError } from "../scene/errors.js";
 import type { Action } from "../scene/types.js";
 import { SimulationError } from "../sim/errors.js";
-import { wallAndHeavyDisc } from "./testSupport.js";
+import { CONVERGING_PAIR, wallAndHeavyDisc } from "./testSupport.js";
 import { Timeline } from "./timeline.js";
 
 describe("Timeline as a debugger's back end", () => {
@@ -134,17 +134,7 @@ describe("Timeline as a debugger's back end", () => {
     // a frictionless disc pushing a braking one: collisions and stops converge to t ≈ 52.249
     const zeno = (): Timeline => {
       const tl = new Timeline({ g: 0.5 });
-      tl.apply({
-        time: 0,
-        type: "addBody",
-        id: "b0",
-        x: 3,
-        y: 3,
-        r: 0.3,
-        m: 0.7401641156608975,
-        v: [0.1, 0],
-      });
-      tl.apply({ time: 0, type: "addBody", id: "b1", x: 7, y: 3, r: 0.3, m: 0.5, mu: 0.05 });
+      for (const a of CONVERGING_PAIR) tl.apply(a);
       return tl;
     };
     for (const run of [
@@ -165,8 +155,7 @@ describe("Timeline as a debugger's back end", () => {
 
   it("a listener that throws after a Zeno stop does not hide the SimulationError", () => {
     const tl = new Timeline({ g: 0.5 });
-    tl.apply({ time: 0, type: "addBody", id: "b0", x: 3, y: 3, r: 0.3, m: 0.7401641156608975, v: [0.1, 0] });
-    tl.apply({ time: 0, type: "addBody", id: "b1", x: 7, y: 3, r: 0.3, m: 0.5, mu: 0.05 });
+    for (const a of CONVERGING_PAIR) tl.apply(a);
     tl.subscribe(() => {
       throw new Error("listener");
     });

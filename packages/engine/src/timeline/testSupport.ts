@@ -151,3 +151,13 @@ export function coreInternals(tl: Timeline): unknown {
     numbers: [c.live, c.lineNums, c.pointNums].map((m) => [...m].sort()),
   };
 }
+
+/**
+ * A frictionless disc pushing a braking one (g = 0.5 for the scene): their collisions and stops
+ * converge geometrically to t ≈ 52.249, a Zeno state the exact model cannot continue (found by the
+ * slices property, seed 7). The two addBody actions at time 0.
+ */
+export const CONVERGING_PAIR: readonly Action[] = [
+  { time: 0, type: "addBody", id: "b0", x: 3, y: 3, r: 0.3, m: 0.7401641156608975, mu: 0, v: [0.1, 0] },
+  { time: 0, type: "addBody", id: "b1", x: 7, y: 3, r: 0.3, m: 0.5, mu: 0.05 },
+];

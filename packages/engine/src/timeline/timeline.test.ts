@@ -5,7 +5,7 @@ import { SimulationError } from "../sim/errors.js";
 import type { WorldEvent } from "../sim/types.js";
 import { World } from "../sim/world.js";
 import { applyToWorld } from "./applyAction.js";
-import { scene } from "./testSupport.js";
+import { CONVERGING_PAIR, scene } from "./testSupport.js";
 import { Timeline } from "./timeline.js";
 
 /** Runs a scene whose actions are all at t = 0 directly on a World, copying every event. */
@@ -146,13 +146,7 @@ describe("Timeline agrees with the World", () => {
 describe("a scene the exact model cannot continue (Zeno)", () => {
   it("a frictionless disc pushing a braking one: prolong throws, the history before it stays readable", () => {
     // found by the slices property (seed 7): collisions and stops converge geometrically to t ≈ 52.249
-    const s = scene(
-      [
-        { time: 0, type: "addBody", id: "b0", x: 3, y: 3, r: 0.3, m: 0.7401641156608975, mu: 0, v: [0.1, 0] },
-        { time: 0, type: "addBody", id: "b1", x: 7, y: 3, r: 0.3, m: 0.5, mu: 0.05 },
-      ],
-      0.5,
-    );
+    const s = scene([...CONVERGING_PAIR], 0.5);
     const tl = Timeline.fromScene(s);
     expect(() => tl.prolong({ time: 60 })).toThrow(SimulationError);
     expect(tl.horizon).toBeCloseTo(52.24895312777856, 9);

@@ -10,7 +10,7 @@ import { SceneError } from "../scene/errors.js";
 import type { Action } from "../scene/types.js";
 import { SimulationError } from "../sim/errors.js";
 import { World } from "../sim/world.js";
-import { coreInternals, coreOf, disc, fingerprint } from "./testSupport.js";
+import { CONVERGING_PAIR, coreInternals, coreOf, disc, fingerprint } from "./testSupport.js";
 import { Timeline } from "./timeline.js";
 import { UNDO_BASE_BODIES_PER_STEP } from "./undoReplay.js";
 
@@ -162,18 +162,7 @@ describe("an apply refused after a prolong met a Zeno state", () => {
     const make = () => {
       // (timeline.test.ts: collisions and stops converge geometrically to t ≈ 52.249)
       const tl = new Timeline({ g: 0.5, history });
-      tl.apply({
-        time: 0,
-        type: "addBody",
-        id: "b0",
-        x: 3,
-        y: 3,
-        r: 0.3,
-        m: 0.7401641156608975,
-        mu: 0,
-        v: [0.1, 0],
-      });
-      tl.apply({ time: 0, type: "addBody", id: "b1", x: 7, y: 3, r: 0.3, m: 0.5, mu: 0.05 });
+      for (const a of CONVERGING_PAIR) tl.apply(a);
       expect(() => tl.prolong({ time: 60 })).toThrow(SimulationError);
       return tl;
     };
