@@ -37,7 +37,7 @@
 import type { TimelineCore } from "./core.js";
 import type { Keyframe } from "./keyframe.js";
 import { MotionTable, STRIDE } from "./motionTable.js";
-import { pointOf, recompute, renumber, untouchedSince } from "./undoReplay.js";
+import { driveStateOf, pointOf, putDriveState, recompute, renumber, untouchedSince } from "./undoReplay.js";
 
 /** What an edit may change (see the header). */
 export interface EditScope {
@@ -129,12 +129,7 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
     eventTotal: c.eventTotal,
     goals: c.goals.slice(),
     dormant: c.dormant.slice(),
-    atTimeLimit: c.atTimeLimit,
-    groupOpen: c.groupOpen,
-    idle: c.idle,
-    lastLogged: c.lastLogged,
-    lastActionTime: c.lastActionTime,
-    eventAfterActions: c.eventAfterActions,
+    drive: driveStateOf(c),
     pathOf: c.pathOf,
     sortedLive: c.sortedLive,
     liveAdded: c.liveAdded,
@@ -176,12 +171,7 @@ export function saveCore(c: TimelineCore, cutRecord: number, edit?: EditScope): 
     c.eventTotal = saved.eventTotal;
     c.goals = saved.goals;
     c.dormant = saved.dormant;
-    c.atTimeLimit = saved.atTimeLimit;
-    c.groupOpen = saved.groupOpen;
-    c.idle = saved.idle;
-    c.lastLogged = saved.lastLogged;
-    c.lastActionTime = saved.lastActionTime;
-    c.eventAfterActions = saved.eventAfterActions;
+    putDriveState(c, saved.drive);
     // the bodies added since the order was sorted: the same list (only appended to, or replaced by
     // a new one: checkpoint.ts liveOrder), cut back
     c.sortedLive = saved.sortedLive;

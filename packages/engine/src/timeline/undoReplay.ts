@@ -46,6 +46,36 @@ export interface CorePoint {
   base: UndoBase | null;
 }
 
+/** Where the core's drive loop stands: the flags and times an undo saves and gives back together. */
+export interface DriveState {
+  atTimeLimit: boolean;
+  groupOpen: boolean;
+  idle: boolean;
+  lastLogged: number;
+  lastActionTime: number;
+  eventAfterActions: boolean;
+}
+
+export function driveStateOf(c: TimelineCore): DriveState {
+  return {
+    atTimeLimit: c.atTimeLimit,
+    groupOpen: c.groupOpen,
+    idle: c.idle,
+    lastLogged: c.lastLogged,
+    lastActionTime: c.lastActionTime,
+    eventAfterActions: c.eventAfterActions,
+  };
+}
+
+export function putDriveState(c: TimelineCore, d: DriveState): void {
+  c.atTimeLimit = d.atTimeLimit;
+  c.groupOpen = d.groupOpen;
+  c.idle = d.idle;
+  c.lastLogged = d.lastLogged;
+  c.lastActionTime = d.lastActionTime;
+  c.eventAfterActions = d.eventAfterActions;
+}
+
 /** Without history: a copy of the World at an earlier point of the computation, never changed, and
  *  what the core needs to compute on from there. */
 export interface UndoBase {
@@ -55,12 +85,7 @@ export interface UndoBase {
   events: number;
   applied: number;
   counts: TimelineCounts;
-  atTimeLimit: boolean;
-  groupOpen: boolean;
-  idle: boolean;
-  lastLogged: number;
-  lastActionTime: number;
-  eventAfterActions: boolean;
+  drive: DriveState;
   bodyCount: number;
   lineCount: number;
   pointCount: number;
@@ -94,12 +119,7 @@ export function undoBaseFor(c: TimelineCore): UndoBase {
     events: c.eventTotal,
     applied: c.applied,
     counts: { ...c.counts },
-    atTimeLimit: c.atTimeLimit,
-    groupOpen: c.groupOpen,
-    idle: c.idle,
-    lastLogged: c.lastLogged,
-    lastActionTime: c.lastActionTime,
-    eventAfterActions: c.eventAfterActions,
+    drive: driveStateOf(c),
     bodyCount: c.bodyIds.length,
     lineCount: c.lineIds.length,
     pointCount: c.pointIds.length,
@@ -164,12 +184,7 @@ function restoreBase(c: TimelineCore, b: UndoBase): void {
   renumber(c);
   c.sortedLive = null;
   c.view = null;
-  c.atTimeLimit = b.atTimeLimit;
-  c.groupOpen = b.groupOpen;
-  c.idle = b.idle;
-  c.lastLogged = b.lastLogged;
-  c.lastActionTime = b.lastActionTime;
-  c.eventAfterActions = b.eventAfterActions;
+  putDriveState(c, b.drive);
   c.settled = true; // (a base is taken at a settled point only: pointOf)
 }
 
