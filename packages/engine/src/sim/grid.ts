@@ -279,14 +279,18 @@ export class Grid {
    * obstList[obstStart[c] .. obstEnd[c]), with room up to obstCap[c]. Codes: i >= 0 is segment i of
    * the world's line list, -(i + 1) is point i. Built for level 0 and the levels holding bodies (only
    * a body scans its own level's obstacles); a level gets its rows when a body first enters it.
+   * obstStart has one entry more than there are cells; while the rows are packed (`obstPacked`),
+   * obstEnd and obstCap are views of it from its second entry (no memory of their own).
    */
-  obstStart: Int32Array = new Int32Array(1);
-  obstEnd: Int32Array = new Int32Array(1);
-  obstCap: Int32Array = new Int32Array(1);
+  obstStart: Int32Array = new Int32Array(2);
+  obstEnd: Int32Array = this.obstStart.subarray(1);
+  obstCap: Int32Array = this.obstStart.subarray(1);
   obstList: Int32Array = new Int32Array(0);
   /** Codes and room laid out in obstList, and codes registered (gridObstacles.ts). */
   obstTail = 0;
   obstLive = 0;
+  /** Whether the rows lie back to back in cell order, each ending where the next begins (gridObstacles.ts). */
+  obstPacked = true;
   /**
    * One bit per cell, set when its row is not empty: 1/32 of obstStart's size, so the scans of a
    * large grid whose cells are mostly empty of obstacles read a few cached words, not obstStart.
@@ -353,6 +357,7 @@ export class Grid {
     g.obstList = this.obstList;
     g.obstTail = this.obstTail;
     g.obstLive = this.obstLive;
+    g.obstPacked = this.obstPacked;
     g.obstBits = this.obstBits;
     g.obstNear = this.obstNear;
     g.obstBuilt = this.obstBuilt.slice();

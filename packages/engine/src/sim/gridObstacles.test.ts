@@ -125,4 +125,26 @@ describe("grid obstacle rows", () => {
       { seed: SEED, numRuns: 100 },
     );
   });
+
+  it("keep no arrays of row ends and rooms of their own until an obstacle is edited in place", () => {
+    // Packed rows read their ends from obstStart; a copy edited in place gets its own, the original keeps none.
+    const ownsEnds = (g: Grid) =>
+      g.obstEnd.buffer !== g.obstStart.buffer || g.obstCap.buffer !== g.obstStart.buffer;
+    const g = new Grid(4);
+    g.reset(0, 0, 1, NX, NY);
+    g.enter(0, 0, g.cellAt(0, 2, 2));
+    g.setObstacles([0, 0, 1, 0, 14, -1]);
+    expect(ownsEnds(g)).toBe(false);
+    g.enter(1, 2, g.cellAt(2, 4, 4));
+    renumberAfterRemoval(g, undefined, 0);
+    expect(ownsEnds(g)).toBe(false);
+    const copy = g.clone();
+    addObstacle(copy, 1, [5, 6]);
+    expect(ownsEnds(copy)).toBe(true);
+    expect(ownsEnds(g)).toBe(false);
+    removeObstacle(g, 0, [0, 1]);
+    expect(ownsEnds(g)).toBe(true);
+    expect([...g.obstList.subarray(g.obstStart[14] as number, g.obstEnd[14] as number)]).toEqual([-1]);
+    expect([...copy.obstList.subarray(copy.obstStart[5] as number, copy.obstEnd[5] as number)]).toEqual([1]);
+  });
 });

@@ -7,14 +7,19 @@
  * is no contract: predictions break ties between obstacles by id.
  *
  * All rows share one Int32Array: cell c's codes are obstList[obstStart[c] .. obstEnd[c]), with room
- * up to obstCap[c]. A row that outgrows its room moves to the end of the list with twice the room
- * (the list grows by doubling, and is packed when the rooms left behind outnumber the codes), so
- * adding or removing one obstacle costs the cells it covers at each built level, not the grid:
- * the World's obstacle edits (obstacleUpkeep.ts) keep the grid's layout this way. obstBits has one
- * bit per cell whose row is not empty (the scans read a few cached words on a large, mostly empty
- * grid), and obstNear one bit per level-0 cell whose 3 x 3 holds a cell with a row (a plain grid's
- * scan reads that one bit), both kept exact by every edit. A copy of the grid shares the rows until
- * either side edits them (copy on write).
+ * up to obstCap[c]. A rebuild lays them out back to back in cell order (`obstPacked`): then each
+ * row ends where the next begins, and obstEnd and obstCap are views of obstStart from its second
+ * entry (obstStart has one entry more than there are cells), which cost no memory: two arrays of
+ * one entry per cell are 8 bytes per cell, about 33 bytes per body in a gas, which would be paid
+ * by every World while only obstacle edits use them. The first edit in place gives them arrays of
+ * their own (`editInPlace`). A row that outgrows its room moves to the end of the list with twice
+ * the room (the list grows by doubling, and is packed again when the rooms left behind outnumber
+ * the codes), so adding or removing one obstacle costs the cells it covers at each built level,
+ * not the grid: the World's obstacle edits (obstacleUpkeep.ts) keep the grid's layout this way.
+ * obstBits has one bit per cell whose row is not empty (the scans read a few cached words on a
+ * large, mostly empty grid), and obstNear one bit per level-0 cell whose 3 x 3 holds a cell with a
+ * row (a plain grid's scan reads that one bit), both kept exact by every edit. A copy of the grid
+ * shares the rows until either side edits them (copy on write).
  */
 import type { Grid } from "./grid.js";
 
@@ -22,8 +27,8 @@ import type { Grid } from "./grid.js";
 const ROW_ROOM_MIN = 4;
 
 /**
- * Set the rows from level-0 (cell, code) pairs (each cell once per code), for level 0 and the
- * levels holding bodies; the other levels get theirs when a body enters (buildLevel).
+ * Set the rows from level-0 (cell, code) pairs (each cell once per code), packed, for level 0 and
+ * the levels holding bodies; the other levels get theirs when a body enters (buildLevel).
  */
 export function setObstacles(g: Grid, level0: readonly number[]): void {
   g.obstBuilt = new Uint8Array(g.levels);
@@ -31,16 +36,7 @@ export function setObstacles(g: Grid, level0: readonly number[]): void {
   for (const k of g.occupied) g.obstBuilt[k] = 1;
   const pairs = level0.slice();
   for (let k = 1; k < g.levels; k++) if (g.obstBuilt[k] === 1) coarsePairs(g, k, level0, pairs);
-  const nc = g.base[g.levels] as number;
-  g.obstStart = new Int32Array(nc);
-  g.obstEnd = new Int32Array(nc);
-  g.obstCap = new Int32Array(nc);
-  g.obstBits = new Int32Array((nc >> 5) + 1);
-  g.obstList = new Int32Array(Math.max(16, pairs.length / 2));
-  g.obstTail = 0;
-  g.obstLive = 0;
-  g.obstShared = false;
-  appendRows(g, pairs, 0, nc);
+  layOutPacked(g, pairs);
   g.obstNear = new Int32Array(((g.nx * g.ny) >> 5) + 1);
   for (let c = 0; c < g.nx * g.ny; c++) if (hasRow(g, c)) markNear(g, c);
 }
@@ -93,24 +89,43 @@ export function buildLevel(g: Grid, k: number): void {
       level0.push(c, g.obstList[i] as number);
   const pairs: number[] = [];
   coarsePairs(g, k, level0, pairs);
-  appendRows(g, pairs, g.base[k] as number, g.base[k + 1] as number);
+  if (!g.obstPacked) {
+    appendRows(g, pairs, g.base[k] as number, g.base[k + 1] as number);
+    return;
+  }
+  // Packed: lay every row out again with the new level's (O(cells + codes), as the pass above).
+  const all: number[] = [];
+  for (let c = 0; c < (g.base[g.levels] as number); c++)
+    for (let i = g.obstStart[c] as number; i < (g.obstEnd[c] as number); i++)
+      all.push(c, g.obstList[i] as number);
+  for (const p of pairs) all.push(p);
+  layOutPacked(g, all);
+}
+
+/** Give the rows their own ends and rooms, so that they can grow and shrink in place (and stop sharing them). */
+function editInPlace(g: Grid): void {
+  own(g);
+  if (!g.obstPacked) return;
+  g.obstEnd = g.obstStart.slice(1);
+  g.obstCap = g.obstStart.slice(1);
+  g.obstPacked = false;
 }
 
 /** Register obstacle `code` in the level-0 cells `cells` (distinct) and their cells at every built level. */
 export function addObstacle(g: Grid, code: number, cells: readonly number[]): void {
-  own(g);
+  editInPlace(g);
   forEachCell(g, cells, (cell) => insert(g, cell, code));
 }
 
 /** Take obstacle `code`, registered in the level-0 cells `cells` (as addObstacle or setObstacles put it), out of every row. */
 export function removeObstacle(g: Grid, code: number, cells: readonly number[]): void {
-  own(g);
+  editInPlace(g);
   forEachCell(g, cells, (cell) => remove(g, cell, code));
 }
 
 /**
  * The World's list dropped line `line` (or, with `line` undefined, point `point`) and closed the
- * gap: renumber the codes after it, one pass over the list of codes.
+ * gap: renumber the codes after it, one pass over the list of codes (the rows stay where they are).
  */
 export function renumberAfterRemoval(g: Grid, line: number | undefined, point = 0): void {
   own(g);
@@ -158,8 +173,43 @@ function coarsePairs(g: Grid, k: number, level0: readonly number[], out: number[
 }
 
 /**
- * Lay out new rows in cell order, without room to spare, for the (cell, code) pairs, whose cells
- * lie in [lo, hi) and have empty rows.
+ * Lay out every row, packed in cell order, from the (cell, code) pairs (each cell's codes in the
+ * pairs' order), with new arrays: row starts (ends and rooms their views), list and bits.
+ */
+function layOutPacked(g: Grid, pairs: readonly number[]): void {
+  const nc = g.base[g.levels] as number;
+  const start = new Int32Array(nc + 1);
+  for (let i = 0; i < pairs.length; i += 2) {
+    const c = (pairs[i] as number) + 1;
+    start[c] = (start[c] as number) + 1;
+  }
+  for (let c = 0; c < nc; c++) start[c + 1] = (start[c + 1] as number) + (start[c] as number);
+  const codes = pairs.length / 2;
+  const list = new Int32Array(Math.max(16, codes));
+  const bits = new Int32Array((nc >> 5) + 1);
+  // Fill each row from its start; the row's end (the next start) is filled last, so `fill[c]` runs ahead.
+  const fill = start.slice(0, nc);
+  for (let i = 0; i < pairs.length; i += 2) {
+    const cell = pairs[i] as number;
+    const at = fill[cell] as number;
+    list[at] = pairs[i + 1] as number;
+    fill[cell] = at + 1;
+    bits[cell >> 5] = (bits[cell >> 5] as number) | (1 << (cell & 31));
+  }
+  g.obstStart = start;
+  g.obstEnd = start.subarray(1);
+  g.obstCap = start.subarray(1);
+  g.obstList = list;
+  g.obstBits = bits;
+  g.obstTail = codes;
+  g.obstLive = codes;
+  g.obstPacked = true;
+  g.obstShared = false;
+}
+
+/**
+ * Rows not packed: lay out new rows at the end of the list, in cell order, without room to spare,
+ * for the (cell, code) pairs, whose cells lie in [lo, hi) and have empty rows.
  */
 function appendRows(g: Grid, pairs: readonly number[], lo: number, hi: number): void {
   const counts = new Int32Array(hi - lo);
@@ -239,9 +289,9 @@ function reserveList(g: Grid, n: number): void {
   g.obstList = list;
 }
 
-/** Lay the rows out again, each without room to spare, dropping the rooms left behind. */
+/** Lay the rows out again in cell order, each without room to spare, dropping the rooms left behind. */
 function pack(g: Grid): void {
-  const nc = g.obstStart.length;
+  const nc = g.obstEnd.length;
   const list = new Int32Array(Math.max(16, 2 * g.obstLive));
   let tail = 0;
   for (let c = 0; c < nc; c++) {
@@ -261,8 +311,13 @@ function pack(g: Grid): void {
 function own(g: Grid): void {
   if (!g.obstShared) return;
   g.obstStart = g.obstStart.slice();
-  g.obstEnd = g.obstEnd.slice();
-  g.obstCap = g.obstCap.slice();
+  if (g.obstPacked) {
+    g.obstEnd = g.obstStart.subarray(1);
+    g.obstCap = g.obstStart.subarray(1);
+  } else {
+    g.obstEnd = g.obstEnd.slice();
+    g.obstCap = g.obstCap.slice();
+  }
   g.obstList = g.obstList.slice();
   g.obstBits = g.obstBits.slice();
   g.obstNear = g.obstNear.slice();
