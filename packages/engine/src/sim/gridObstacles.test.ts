@@ -6,7 +6,7 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import { Grid } from "./grid.js";
-import { addObstacle, removeObstacle, renumberAfterRemoval } from "./gridObstacles.js";
+import { addObstacle, removeObstacle, renumberAfterRemoval } from "./gridObstacleEdits.js";
 
 const SEED = Number(process.env.FC_SEED ?? 20261124);
 const NX = 13;

@@ -3,7 +3,7 @@
  * lists, its grid and its predictions.
  *
  * While the predictions are up to date and the grid can keep its layout, the edit is local: a
- * segment or point is registered in, or taken out of, the cells it covers (gridObstacles.ts), and
+ * segment or point is registered in, or taken out of, the cells it covers (gridObstacleEdits.ts), and
  * only the bodies whose predictions can change are predicted again: the moving bodies whose 3x3
  * scan covers a cell the obstacle enters (a body elsewhere meets it only after crossing into such a
  * cell, and a crossing scans the cells it brings: the rows already hold the obstacle), and every body
@@ -38,7 +38,7 @@
  */
 import { GRID_MIN_BODIES, GRID_OBSTACLE_RELAYOUT } from "../tolerances.js";
 import { EV_LINE, EV_POINT } from "./bodyStore.js";
-import { addObstacle, removeObstacle, renumberAfterRemoval } from "./gridObstacles.js";
+import { addObstacle, removeObstacle, renumberAfterRemoval } from "./gridObstacleEdits.js";
 import type { Line, Point } from "./obstacles.js";
 import { Simulator } from "./simulator.js";
 import type { SimState } from "./state.js";
