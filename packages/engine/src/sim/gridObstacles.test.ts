@@ -15,8 +15,13 @@ const NY = 9;
 /** The model: each code's level-0 cells. */
 type Model = Map<number, number[]>;
 
-/** What each cell of a built level of `g` should list, by the model. */
+/**
+ * What each cell of a built level of `g` should list, by the model. Compared in one assertion per
+ * call (one per cell made the test spend most of its time in the assertions).
+ */
 function expectRows(g: Grid, model: Model): void {
+  const got: [number, number[], number][] = [];
+  const wanted: [number, number[], number][] = [];
   for (let k = 0; k < g.levels; k++) {
     if (!g.obstaclesBuilt(k)) continue;
     const want = new Map<number, number[]>();
@@ -25,10 +30,11 @@ function expectRows(g: Grid, model: Model): void {
       for (const cell of at) want.set(cell, [...(want.get(cell) ?? []), code]);
     }
     for (let cell = g.base[k] as number; cell < (g.base[k + 1] as number); cell++) {
-      const got = [...g.obstList.subarray(g.obstStart[cell] as number, g.obstEnd[cell] as number)];
-      expect(got.sort((a, b) => a - b)).toEqual((want.get(cell) ?? []).sort((a, b) => a - b));
+      const row = [...g.obstList.subarray(g.obstStart[cell] as number, g.obstEnd[cell] as number)];
       const bit = ((g.obstBits[cell >> 5] as number) >>> (cell & 31)) & 1;
-      expect(bit).toBe(got.length > 0 ? 1 : 0);
+      const codes = (want.get(cell) ?? []).sort((a, b) => a - b);
+      got.push([cell, row.sort((a, b) => a - b), bit]);
+      wanted.push([cell, codes, codes.length > 0 ? 1 : 0]);
     }
   }
   // obstNear: a level-0 cell's bit says whether a cell of its 3 x 3 (clipped) lists anything
@@ -41,8 +47,10 @@ function expectRows(g: Grid, model: Model): void {
         for (let x = Math.max(0, cx - 1); x <= Math.min(NX - 1, cx + 1); x++)
           if (listed.has(y * NX + x)) want = 1;
       const c = cy * NX + cx;
-      expect(((g.obstNear[c >> 5] as number) >>> (c & 31)) & 1).toBe(want);
+      got.push([-1 - c, [], ((g.obstNear[c >> 5] as number) >>> (c & 31)) & 1]);
+      wanted.push([-1 - c, [], want]);
     }
+  expect(got).toEqual(wanted);
 }
 
 const cellsArb = fc.uniqueArray(fc.integer({ min: 0, max: NX * NY - 1 }), { minLength: 1, maxLength: 12 });
