@@ -37,7 +37,7 @@ function frictionWithGravity(path: string): SceneError {
 }
 
 function checkDisc(view: SceneView, path: string, id: string, x: number, y: number, r: number): void {
-  const other = view.grid.findOverlap(x, y, r, id);
+  const other = view.overlapOf(x, y, r, id);
   if (other !== null)
     throw new SceneError(path, `body ${q(id)} would overlap body ${q(other)} at time ${view.time}`);
   // The smallest id hit, as the World names it: the message does not depend on the order of adds.
@@ -76,7 +76,7 @@ function checkObstacle(
   const first =
     near === null
       ? smallestHit(view.bodies, (b) => b.known && hits(b.x, b.y, b.r))
-      : (view.grid.smallestNearSegment(near[0][0], near[0][1], near[1][0], near[1][1], hits) ?? undefined);
+      : (view.smallestNearSegment(near[0][0], near[0][1], near[1][0], near[1][1], hits) ?? undefined);
   if (first !== undefined)
     throw new SceneError(path, `${what} would overlap body ${q(first)} at time ${view.time}`);
 }
@@ -91,28 +91,31 @@ function need<T>(map: Map<string, T>, id: string, kind: string, view: SceneView,
   return v;
 }
 
+function exists(id: string, kind: string, view: SceneView, path: string): SceneError {
+  return new SceneError(join(path, "id"), `${kind} ${q(id)} already exists at time ${view.time}`);
+}
+
 function fresh(map: Map<string, unknown>, id: string, kind: string, view: SceneView, path: string): void {
-  if (map.has(id))
-    throw new SceneError(join(path, "id"), `${kind} ${q(id)} already exists at time ${view.time}`);
+  if (map.has(id)) throw exists(id, kind, view, path);
 }
 
 /** Checks `a` (already field-validated) against the view at its time, then applies it to the view. */
 export function checkAndApply(view: SceneView, a: Action, path: string): void {
   switch (a.type) {
     case "addBody": {
-      fresh(view.bodies, a.id, "body", view, path);
+      if (view.hasBody(a.id)) throw exists(a.id, "body", view, path);
       const mu = a.mu ?? 0;
       if (mu > 0 && gravityOn(view.gravity)) throw frictionWithGravity(join(path, "mu"));
       checkDisc(view, path, a.id, a.x, a.y, a.r);
-      view.bodies.set(a.id, { x: a.x, y: a.y, r: a.r, mu, known: true });
-      view.grid.add(a.id, a.x, a.y, a.r); // a new body: the grid holds only the view's bodies
+      view.setBody(a.id, { x: a.x, y: a.y, r: a.r, mu, known: true });
       return;
     }
     case "giveVelocity":
       if (!view.hasBody(a.id)) throw missing(a.id, "body", view, path);
       return;
     case "updateBody": {
-      const b = need(view.bodies, a.id, "body", view, path);
+      const b = view.body(a.id);
+      if (b === undefined) throw missing(a.id, "body", view, path);
       const mu = a.mu ?? b.mu;
       if (a.mu !== undefined && mu > 0 && gravityOn(view.gravity))
         throw frictionWithGravity(join(path, "mu"));
@@ -122,8 +125,7 @@ export function checkAndApply(view: SceneView, a: Action, path: string): void {
       const r = a.r ?? b.r;
       const moved = a.x !== undefined || a.y !== undefined || a.r !== undefined;
       if (known && moved) checkDisc(view, path, a.id, x, y, r);
-      view.bodies.set(a.id, { x, y, r, mu, known });
-      if (known) view.grid.insert(a.id, x, y, r);
+      view.setBody(a.id, { x, y, r, mu, known });
       return;
     }
     case "removeBody":

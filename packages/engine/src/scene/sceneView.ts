@@ -3,10 +3,13 @@
  * action's time: bodies (positions may be unknown when a caller cannot simulate), lines and points,
  * the globals, and the indexes the checks look near an action in: a DiscGrid of the bodies of known
  * position, and the lines and points by place (sim/obstacleCells.ts, built once a few discs have
- * checked). A lazy view reads its bodies only when an action needs them all.
+ * checked). A lazy view reads its bodies only when an action needs them all: it asks its source (a
+ * Timeline's World) for one body, or for the bodies near a disc or a segment, and tests those with
+ * the scene's own rules (overlap.ts), so that its answers are the ones reading every body gives.
  */
 import { ObstacleCells } from "../sim/obstacleCells.js";
 import { DiscGrid } from "./discGrid.js";
+import { discsOverlap } from "./overlap.js";
 import type { LineKind, Vec2 } from "./types.js";
 
 /**
@@ -39,10 +42,20 @@ export interface ViewSource {
   points: readonly { id: string; p: Vec2 }[];
 }
 
+/** A body's disc at the view's time: visited by a lazy view's source (see forEachBodyNear). */
+export type DiscVisitor = (id: string, x: number, y: number, r: number) => void;
+
 /** A state whose bodies are read only when an action needs them all (SceneView.lazy). */
 export interface LazyViewSource extends Omit<ViewSource, "bodies"> {
   bodies(): ViewSource["bodies"];
   hasBody(id: string): boolean;
+  /** Body `id` as `bodies()` gives it (it exists: hasBody). */
+  body(id: string): { x: number; y: number; r: number; mu: number };
+  /** Visits every body that could overlap the disc (x, y, r), and perhaps others, each as
+   *  `bodies()` gives it (a World's placement candidates: sim/placement.ts). */
+  forEachBodyNear(x: number, y: number, r: number, visit: DiscVisitor): void;
+  /** The same for the segment (x1, y1)-(x2, y2), a point when both ends are equal. */
+  forEachBodyNearSegment(x1: number, y1: number, x2: number, y2: number, visit: DiscVisitor): void;
 }
 
 export class SceneView {
@@ -57,10 +70,8 @@ export class SceneView {
   private lineCells: ObstacleCells<ViewLine> | null = null;
   private pointCells: ObstacleCells<Vec2> | null = null;
   private discChecks = 0;
-  /** Of a lazy view, the source its bodies are read from (null once they are), and the ids removed
-   *  meanwhile. */
+  /** Of a lazy view, the source its bodies are read from (null once they are). */
   private source: LazyViewSource | null = null;
-  private removed: Set<string> | null = null;
 
   constructor(time: number, g: number, gravity: Vec2) {
     this.time = time;
@@ -81,9 +92,11 @@ export class SceneView {
    * A view of a known state whose bodies are read from `s` only when an action needs them all (a
    * body added, moved or checked against a line or point, a change of gravity): a group of actions
    * that only give velocities to bodies or remove them asks `s.hasBody` alone (reading a million
-   * bodies for each such group made a scene's later actions cost seconds each). Until then `s`
-   * must give the state at the view's time less the bodies this view removed (a World the group's
-   * actions are applied to as they are checked does).
+   * bodies for each such group made a scene's later actions cost seconds each), and a body added
+   * or moved asks `s` for the bodies near it (reading every body for each instant that added one
+   * made a scene built one body per instant quadratic). Until then `s` must give the state at the
+   * view's time with every action this view checked applied (a World the group's actions are
+   * applied to as they are checked does).
    */
   static lazy(s: LazyViewSource): SceneView {
     const v = SceneView.of({ ...s, bodies: [] });
@@ -93,7 +106,6 @@ export class SceneView {
 
   private addBodies(bodies: ViewSource["bodies"]): void {
     for (const b of bodies) {
-      if (this.removed?.has(b.id)) continue;
       this.bodyMap.set(b.id, { x: b.x, y: b.y, r: b.r, mu: b.mu, known: true });
       this.discs.add(b.id, b.x, b.y, b.r); // ids are unique in a state
     }
@@ -105,32 +117,65 @@ export class SceneView {
       const s = this.source;
       this.source = null;
       this.addBodies(s.bodies());
-      this.removed = null;
     }
     return this.bodyMap;
   }
 
-  /** The discs of the bodies whose position is known. */
-  get grid(): DiscGrid {
-    if (this.source !== null) void this.bodies;
-    return this.discs;
-  }
-
   /** Whether body `id` is in the view (without reading a lazy view's bodies). */
   hasBody(id: string): boolean {
-    if (this.source === null) return this.bodyMap.has(id);
-    return this.removed?.has(id) !== true && this.source.hasBody(id);
+    return this.source === null ? this.bodyMap.has(id) : this.source.hasBody(id);
   }
 
-  /** Removes body `id` (in the view: `hasBody(id)`). */
+  /** Body `id`, or undefined (without reading a lazy view's bodies). */
+  body(id: string): ViewBody | undefined {
+    if (this.source === null) return this.bodyMap.get(id);
+    if (!this.source.hasBody(id)) return undefined;
+    const b = this.source.body(id);
+    return { x: b.x, y: b.y, r: b.r, mu: b.mu, known: true };
+  }
+
+  /** Sets body `id` (new, or in place of the one of that id); a lazy view's source gets it when the
+   *  action is applied to it. */
+  setBody(id: string, b: ViewBody): void {
+    if (this.source !== null) return;
+    this.bodyMap.set(id, b);
+    if (b.known) this.discs.insert(id, b.x, b.y, b.r);
+  }
+
+  /** Removes body `id` (in the view: `hasBody(id)`); a lazy view's source, when the action is applied. */
   removeBody(id: string): void {
-    if (this.source === null) {
-      this.bodyMap.delete(id);
-      this.discs.remove(id);
-    } else {
-      this.removed ??= new Set();
-      this.removed.add(id);
-    }
+    if (this.source !== null) return;
+    this.bodyMap.delete(id);
+    this.discs.remove(id);
+  }
+
+  /** The smallest id of a body of known position other than `except` that the disc (x, y, r)
+   *  overlaps (discsOverlap), or null; a lazy view tests its source's bodies near the disc. */
+  overlapOf(x: number, y: number, r: number, except: string): string | null {
+    if (this.source === null) return this.discs.findOverlap(x, y, r, except);
+    let best: string | null = null;
+    this.source.forEachBodyNear(x, y, r, (id, bx, by, br) => {
+      if (id !== except && (best === null || id < best) && discsOverlap(x, y, r, bx, by, br)) best = id;
+    });
+    return best;
+  }
+
+  /** The smallest id of a body of known position near the segment (x1, y1)-(x2, y2) (a point: both
+   *  ends equal) for which `hits(x, y, r)` holds, or null (DiscGrid.smallestNearSegment; a lazy view
+   *  tests its source's bodies near the segment). */
+  smallestNearSegment(
+    x1: number,
+    y1: number,
+    x2: number,
+    y2: number,
+    hits: (x: number, y: number, r: number) => boolean,
+  ): string | null {
+    if (this.source === null) return this.discs.smallestNearSegment(x1, y1, x2, y2, hits);
+    let best: string | null = null;
+    this.source.forEachBodyNearSegment(x1, y1, x2, y2, (id, bx, by, br) => {
+      if ((best === null || id < best) && hits(bx, by, br)) best = id;
+    });
+    return best;
   }
 
   /** Sets line `id` (new or moved). */

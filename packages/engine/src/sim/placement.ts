@@ -7,10 +7,13 @@
  * few, are tested against every body, and every disc against all of them. Each check names the
  * smallest id it hits, as a scan of everything would. Every check throws ChapgameError naming the
  * field before anything changes. What a checked obstacle edit does to the lists, the grid and the
- * predictions: obstacleUpkeep.ts.
+ * predictions: obstacleUpkeep.ts. The same candidates serve the scene rules' checks of a Timeline's
+ * actions (forEachBodyNear, forEachBodyNearSegment: scene/sceneView.ts), which test them with the
+ * scene's own rounding.
  */
 import { OVERLAP_REL } from "../tolerances.js";
 import { forEachBodyNearSegment } from "./bodiesNear.js";
+import { stateOf } from "./bodyState.js";
 import { ChapgameError } from "./errors.js";
 import { ObstacleCells } from "./obstacleCells.js";
 import { distanceToLine, type Line, type LineKind, makeLine, type Point } from "./obstacles.js";
@@ -21,6 +24,9 @@ import { requireFields, requireId, requireLineDirection, requireLineKind, requir
 
 /** Contact distances are shortened by this factor before testing an overlap (OVERLAP_REL's slack). */
 const KEEP = 1 - OVERLAP_REL;
+
+/** A body's id, position now and radius, to a scene rule (forEachBodyNear). */
+type DiscVisit = (id: string, x: number, y: number, r: number) => void;
 
 /** Below this many bodies an overlap check scans them all instead of using the grid. */
 const LINEAR_SCAN_BODIES = 64;
@@ -86,6 +92,37 @@ export class Placement extends ObstacleUpkeep {
       if ((best === undefined || bid < best) && test(s)) best = bid;
     });
     return best;
+  }
+
+  /**
+   * @internal For the scene rules (scene/sceneView.ts): `visit(id, x, y, r)` for every body that
+   * could overlap the disc (x, y, r) now, and perhaps others, each at its position now as `body(id)`
+   * gives it: the candidates checkOverlap tests (the bodies near it in the grid, or all of a small
+   * scene), so that checking a disc added to n bodies costs about O(1), not O(n).
+   */
+  forEachBodyNear(x: number, y: number, r: number, visit: DiscVisit): void {
+    const at = this.stateVisitor(visit);
+    if (this.index.size < LINEAR_SCAN_BODIES) for (const s of this.index.values()) at(s);
+    else this.forEachNear(x, y, r, at);
+  }
+
+  /**
+   * @internal forEachBodyNear for the segment (x1, y1)-(x2, y2) (a point when both ends are equal):
+   * every body that could overlap it, and perhaps others (the candidates of checkedLine and
+   * checkedPoint).
+   */
+  forEachBodyNearSegment(x1: number, y1: number, x2: number, y2: number, visit: DiscVisit): void {
+    const at = this.stateVisitor(visit);
+    if (this.index.size < LINEAR_SCAN_BODIES) for (const s of this.index.values()) at(s);
+    else forEachBodyNearSegment(this.grid, x1, y1, x2, y2, at);
+  }
+
+  /** A visitor of slots calling `visit` with each one's id, position now and radius. */
+  private stateVisitor(visit: DiscVisit): (s: number) => void {
+    return (s) => {
+      const b = stateOf(this.store, s, this.now);
+      visit(b.id, b.x, b.y, b.r);
+    };
   }
 
   /** The lines and the points indexed by place (built from the lists when first needed). */

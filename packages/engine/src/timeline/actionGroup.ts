@@ -107,6 +107,9 @@ function openView(c: TimelineCore): SceneView {
     gravity: w.gravity,
     bodies: () => w.bodies(),
     hasBody: (id) => w.hasBody(id),
+    body: (id) => w.body(id),
+    forEachBodyNear: (x, y, r, visit) => w.forEachBodyNear(x, y, r, visit),
+    forEachBodyNearSegment: (x1, y1, x2, y2, visit) => w.forEachBodyNearSegment(x1, y1, x2, y2, visit),
     lines: w.lines(),
     points: w.points(),
   });
