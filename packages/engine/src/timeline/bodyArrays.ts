@@ -17,6 +17,7 @@
 import { arraysFor, type BodyArrays, writeMotionAt } from "../sim/bodyArrays.js";
 import type { TimelineCore } from "./core.js";
 import { type Keyframe, keyframeAtOrBefore, loadMotions } from "./keyframe.js";
+import { orderOf } from "./keyframeDelta.js";
 import { MotionTable, STRIDE } from "./motionTable.js";
 import { K_ACTION } from "./records.js";
 import { applyRecord, requireHeadlessTime } from "./replay.js";
@@ -35,7 +36,7 @@ export class ArraysCursor {
       requireHeadlessTime(core, t, "bodyArraysAt");
       return core.world.bodyArrays(t, into);
     }
-    const order = this.seek(core, t).order;
+    const order = orderOf(this.seek(core, t), core.bodyIds);
     const names = core.bodyIds;
     const n = order.length;
     const idAt = (k: number) => names[order[k] as number] as string;

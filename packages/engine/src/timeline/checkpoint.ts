@@ -8,13 +8,16 @@
  * (TimelineCore.keyframes). The motion table, the registry and the obstacles change only through
  * those, so the keyframe is the one taking it at once gives; a group applied at the same instant
  * with nothing logged since replaces an owed keyframe without taking it (a scene built one action
- * per apply took a copy of every obstacle per apply). restoreKeyframe(core, k) cuts the computed
+ * per apply took a copy of every obstacle per apply). A keyframe after a group of actions holds only
+ * what changed since the keyframe before it when it can (keyframeDelta.ts: a scene built one action
+ * per instant took a copy of every body per instant). restoreKeyframe(core, k) cuts the computed
  * history back to keyframe k: the World (rebuilt from the keyframe's motions), the motion table,
  * the registry, the records and the counts are as they were when it was taken.
  */
 import type { ZenoCounters } from "../sim/zenoWatch.js";
 import type { TimelineCore } from "./core.js";
 import { type Keyframe, loadMotions, snapshotMotions, snapshotProps, worldAt } from "./keyframe.js";
+import { deltaSince, mergeById, orderOf } from "./keyframeDelta.js";
 import { MotionTable } from "./motionTable.js";
 
 /** Records between keyframes: at least this many, so small scenes do not drown in keyframes… */
@@ -44,32 +47,6 @@ function liveOrder(c: TimelineCore): Uint32Array {
   return c.sortedLive;
 }
 
-/** The body numbers of `sorted` (sorted by id) and `added` (none of them in it) sorted by id
- *  (`ids[n]` names body n; ids differ), as a new array. */
-export function mergeById(
-  sorted: Uint32Array,
-  added: readonly number[],
-  ids: readonly string[],
-): Uint32Array {
-  const id = (n: number) => ids[n] as string;
-  const extra = added.slice().sort((p, q) => (id(p) < id(q) ? -1 : 1));
-  const out = new Uint32Array(sorted.length + extra.length);
-  let i = 0;
-  let j = 0;
-  for (let k = 0; k < out.length; k++) {
-    const a = sorted[i];
-    const b = extra[j];
-    if (b === undefined || (a !== undefined && id(a) < id(b))) {
-      out[k] = a as number;
-      i++;
-    } else {
-      out[k] = b;
-      j++;
-    }
-  }
-  return out;
-}
-
 /** What a keyframe owed after a group of actions notes at once (see the header). */
 export interface OwedKeyframe {
   time: number;
@@ -91,7 +68,11 @@ export function keyframeOf(
   const list = c.rawKeyframes;
   const prev = list[list.length - 1];
   const share = !afterActions && prev !== undefined;
-  const order = share ? prev.order : liveOrder(c);
+  const delta = afterActions && prev !== undefined ? deltaSince(c, prev) : null;
+  // order and props are shared with a full keyframe before (a delta has none: the live order is
+  // the one it stands for)
+  const shared = share && prev.full !== null ? prev.full : null;
+  const order = delta !== null ? null : (shared?.order ?? liveOrder(c));
   return {
     time,
     record: c.records.length,
@@ -102,17 +83,24 @@ export function keyframeOf(
     eventTotal: c.eventTotal,
     g: w.g,
     gravity: [w.gx, w.gy],
-    order,
-    props: share ? prev.props : snapshotProps(c.table, order),
-    motions: snapshotMotions(c.table, order),
-    lines: share ? prev.lines : w.lines(),
-    points: share ? prev.points : w.points(),
+    full:
+      order === null
+        ? null
+        : {
+            order,
+            props: shared?.props ?? snapshotProps(c.table, order),
+            motions: snapshotMotions(c.table, order),
+          },
+    delta,
+    // a delta: no obstacle changed since prev (deltaSince)
+    lines: share || delta !== null ? (prev as Keyframe).lines : w.lines(),
+    points: share || delta !== null ? (prev as Keyframe).points : w.points(),
     bodyCount: c.bodyIds.length,
     lineCount: c.lineIds.length,
     pointCount: c.pointIds.length,
     // (never changed once in a keyframe: a restore copies them)
-    lineNums: share ? prev.lineNums : new Map(c.lineNums),
-    pointNums: share ? prev.pointNums : new Map(c.pointNums),
+    lineNums: share || delta !== null ? (prev as Keyframe).lineNums : new Map(c.lineNums),
+    pointNums: share || delta !== null ? (prev as Keyframe).pointNums : new Map(c.pointNums),
     zeno,
   };
 }
@@ -165,8 +153,9 @@ export function restorePoint(c: TimelineCore, kf: Keyframe, kept: number): void 
   c.lineIds.length = kf.lineCount;
   c.pointIds.length = kf.pointCount;
   c.live = new Map();
-  for (const i of kf.order) c.live.set(c.bodyIds[i] as string, i);
-  c.sortedLive = kf.order;
+  const order = orderOf(kf, c.bodyIds);
+  for (const i of order) c.live.set(c.bodyIds[i] as string, i);
+  c.sortedLive = order;
   c.liveAdded = [];
   c.lineNums = new Map(kf.lineNums);
   c.pointNums = new Map(kf.pointNums);

@@ -18,7 +18,8 @@
  */
 import { show } from "./args.js";
 import type { TimelineCore } from "./core.js";
-import { type Keyframe, keyframeAtOrBefore } from "./keyframe.js";
+import { type Keyframe, keyframeAtOrBefore, loadMotions } from "./keyframe.js";
+import { arraysOf } from "./keyframeDelta.js";
 
 /** Start of the kept history: keyframes[0]'s time (0 until something is forgotten, and without
  *  history). */
@@ -55,10 +56,23 @@ export function forgetBefore(c: TimelineCore, t: number): { start: number; dropp
   }
   r.dropBefore(n);
   c.forgotten.records += n;
-  // new objects (the keyframes are not shared outside the core, but an object never changes)
-  c.keyframes = kfs.slice(k).map((kf) => ({ ...kf, record: kf.record - n }));
+  // new objects (the keyframes are not shared outside the core, but an object never changes); a
+  // delta (keyframeDelta.ts) patches the new object of the keyframe before it, or holds its bodies
+  // in full when that one goes (keyframes[0]: nothing before it is kept)
+  const moved = new Map<Keyframe, Keyframe>();
+  const move = (kf: Keyframe): Keyframe => {
+    const copy: Keyframe = { ...kf, record: kf.record - n };
+    const prev = kf.delta === null ? undefined : moved.get(kf.delta.prev);
+    if (kf.delta !== null && prev === undefined) {
+      copy.full = arraysOf(kf, c.bodyIds, loadMotions);
+      copy.delta = null;
+    } else if (kf.delta !== null) copy.delta = { ...kf.delta, prev: prev as Keyframe };
+    moved.set(kf, copy);
+    return copy;
+  };
+  c.keyframes = kfs.slice(k).map(move);
   // the spare restart point (restartPoint.ts) moves with the records, or goes with them
-  c.spare = c.spare !== null && c.spare.record > n ? { ...c.spare, record: c.spare.record - n } : null;
+  c.spare = c.spare !== null && c.spare.record > n ? move(c.spare) : null;
   // a log cursor's replay position (logCursor.ts) names records by their old index: it restarts
   c.rewrites++;
   return { start: cut.time, dropped: true };

@@ -5,12 +5,14 @@
  * from: worldAt(kf) rebuilds the World from the motions, obstacles and globals, which gives the same
  * future bit for bit (World.restoreBodyMotion: addBodyMotion without the overlap check, since the
  * World's own motions may hold a pressed pair's overlap). stateAt(t) = the last keyframe at or
- * before t + the records up to t.
+ * before t + the records up to t. A keyframe after a group of actions may be a delta of the one
+ * before it (keyframeDelta.ts): read its order and arrays through orderOf and arraysOf.
  */
 import type { Vec2 } from "../scene/types.js";
 import type { LineState, PointState } from "../sim/types.js";
 import { World } from "../sim/world.js";
 import type { ZenoCounters } from "../sim/zenoWatch.js";
+import { arraysOf, loadDelta, orderOf } from "./keyframeDelta.js";
 import { type MotionTable, STRIDE } from "./motionTable.js";
 import type { TimelineCounts } from "./types.js";
 
@@ -30,13 +32,11 @@ export interface Keyframe {
   eventTotal: number;
   g: number;
   gravity: Vec2;
-  /** live body numbers sorted by id (shared with the keyframes since the last group of actions) */
-  order: Uint32Array;
-  /** r, m, mu per body of `order` (shared like `order`: only actions change them) */
-  props: Float64Array;
-  /** t0, x0, y0, vx0, vy0 per body of `order`; ax, ay and the end time are recomputed on loading
-   *  with motionLaw, exactly as the World computed them */
-  motions: Float64Array;
+  /** the bodies of a full keyframe, null for a delta */
+  full: KeyframeArrays | null;
+  /** of a keyframe after a group of actions, the bodies that changed since the keyframe before it
+   *  (keyframeDelta.ts) */
+  delta: KeyframeDelta | null;
   lines: LineState[];
   points: PointState[];
   /** body numbers and obstacle numbers allocated so far */
@@ -55,7 +55,32 @@ export interface Keyframe {
   world?: World;
 }
 
-/** Numbers per body in Keyframe.motions. */
+/** The bodies of a full keyframe. */
+export interface KeyframeArrays {
+  /** live body numbers sorted by id (shared with the keyframes since the last group of actions) */
+  order: Uint32Array;
+  /** r, m, mu per body of `order` (shared like `order`: only actions change them) */
+  props: Float64Array;
+  /** t0, x0, y0, vx0, vy0 per body of `order`; ax, ay and the end time are recomputed on loading
+   *  with motionLaw, exactly as the World computed them */
+  motions: Float64Array;
+}
+
+/** What a keyframe after a group of actions may hold instead of KeyframeArrays (keyframeDelta.ts). */
+export interface KeyframeDelta {
+  /** the keyframe before it, which this one patches */
+  prev: Keyframe;
+  /** the body numbers that changed since prev (or are new), and per number t0, x0, y0, vx0, vy0,
+   *  r, m, mu (DELTA_ROW) */
+  nums: Uint32Array;
+  rows: Float64Array;
+  /** the body numbers added since prev, sorted by id */
+  added: Uint32Array;
+  /** rows of the deltas back to the full keyframe, this one's included */
+  chainRows: number;
+}
+
+/** Numbers per body in KeyframeArrays.motions. */
 const KF_MOTION = 5;
 
 /** Copy the motion starts (t0, x0, y0, vx0, vy0) of the bodies in `order` out of `table`. */
@@ -88,21 +113,24 @@ export function snapshotProps(table: MotionTable, order: Uint32Array): Float64Ar
 
 /** Number of the live body `id` in a keyframe's order (`ids[n]` names body n), or null. */
 export function liveNumber(kf: Keyframe, ids: readonly string[], id: string): number | null {
-  for (const n of kf.order) if (ids[n] === id) return n;
+  for (const n of orderOf(kf, ids)) if (ids[n] === id) return n;
   return null;
 }
 
 /** Load a keyframe's motions into `table` (made large enough for kf.bodyCount bodies). */
 export function loadMotions(kf: Keyframe, table: MotionTable): void {
+  if (kf.full === null) {
+    loadDelta(kf, table, (k) => loadMotions(k, table));
+    return;
+  }
   table.ensure(kf.bodyCount);
-  const m = kf.motions;
-  const p = kf.props;
+  const { order, motions: m, props: p } = kf.full;
   const [gx, gy] = kf.gravity;
-  for (let k = 0; k < kf.order.length; k++) {
+  for (let k = 0; k < order.length; k++) {
     const q = k * KF_MOTION;
-    table.setProps(kf.order[k] as number, p[3 * k] as number, p[3 * k + 1] as number, p[3 * k + 2] as number);
+    table.setProps(order[k] as number, p[3 * k] as number, p[3 * k + 1] as number, p[3 * k + 2] as number);
     table.start(
-      kf.order[k] as number,
+      order[k] as number,
       m[q] as number,
       m[q + 1] as number,
       m[q + 2] as number,
@@ -124,11 +152,10 @@ export function worldAt(kf: Keyframe, ids: readonly string[]): World {
   const w = World.restoredAt(kf.time, kf.g, kf.gravity);
   for (const l of kf.lines) w.addLine(l.id, l.p1, l.p2, l.kind);
   for (const p of kf.points) w.addPoint(p.id, p.p);
-  const m = kf.motions;
-  const p = kf.props;
-  for (let k = 0; k < kf.order.length; k++) {
+  const { order, motions: m, props: p } = arraysOf(kf, ids, loadMotions);
+  for (let k = 0; k < order.length; k++) {
     const q = k * KF_MOTION;
-    w.restoreBodyMotion(ids[kf.order[k] as number] as string, {
+    w.restoreBodyMotion(ids[order[k] as number] as string, {
       t0: m[q] as number,
       x0: m[q + 1] as number,
       y0: m[q + 2] as number,
@@ -169,9 +196,16 @@ export function keyframeAtRecord(kfs: readonly Keyframe[], i: number): number {
 
 /** Bytes held by a keyframe, not counting what it shares with `prev`. */
 export function keyframeBytes(kf: Keyframe, prev: Keyframe | undefined): number {
-  let bytes = kf.motions.byteLength + 160;
-  if (prev?.order !== kf.order) bytes += kf.order.byteLength;
-  if (prev?.props !== kf.props) bytes += kf.props.byteLength;
+  let bytes = 160;
+  if (kf.delta !== null) {
+    const { nums, rows, added } = kf.delta;
+    bytes += nums.byteLength + rows.byteLength + added.byteLength;
+  }
+  if (kf.full !== null) {
+    bytes += kf.full.motions.byteLength;
+    if (prev?.full?.order !== kf.full.order) bytes += kf.full.order.byteLength;
+    if (prev?.full?.props !== kf.full.props) bytes += kf.full.props.byteLength;
+  }
   if (prev?.lines !== kf.lines) bytes += 48 * kf.lines.length;
   if (prev?.points !== kf.points) bytes += 32 * kf.points.length;
   return bytes;

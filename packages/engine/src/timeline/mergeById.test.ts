@@ -1,11 +1,11 @@
 /**
- * mergeById (checkpoint.ts): the live order after bodies were added, merged into the order sorted
+ * mergeById (keyframeDelta.ts): the live order after bodies were added, merged into the order sorted
  * before, is the order a sort of every live id gives (keyframes and the World rebuilt from them
  * depend on it, bit for bit).
  */
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
-import { mergeById } from "./checkpoint.js";
+import { mergeById } from "./keyframeDelta.js";
 import { seedFor } from "./testSupport.js";
 
 /** Numbers of `live` (body numbers naming ids[n]) sorted by id, by a sort of every id. */

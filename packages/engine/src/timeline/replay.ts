@@ -11,6 +11,7 @@ import type { Action } from "../scene/types.js";
 import { lineParameter, makeLine, parameterOnLine } from "../sim/obstacles.js";
 import type { TimelineCore } from "./core.js";
 import { type Keyframe, keyframeAtOrBefore, loadMotions } from "./keyframe.js";
+import { orderOf } from "./keyframeDelta.js";
 import type { MotionTable } from "./motionTable.js";
 import { K_ACTION, K_BODY_BODY, K_BODY_LINE, K_BODY_POINT, KIND_NAMES, type Records } from "./records.js";
 import type { LogEvent, SceneState } from "./types.js";
@@ -41,7 +42,7 @@ export function stateAt(core: TimelineCore, t: number, scratch: MotionTable): Sc
     applyRecord(rec, i, scratch, kf);
   }
   const ids = core.bodyIds;
-  const bodies = Array.from(kf.order, (n) => scratch.state(n, ids[n] as string, t));
+  const bodies = Array.from(orderOf(kf, ids), (n) => scratch.state(n, ids[n] as string, t));
   // copies: the keyframe's own lists rebuild Worlds (an edit in the past), so they must not be handed out
   return {
     time: t,
