@@ -12,6 +12,7 @@
  *   boards of 1,000 and 5,000 pegs; with and without the grid.
  * - timeline: stateAt latency and history bytes per event, when the engine exports Timeline.
  * - bulkReads (bulkReads.mjs): every body of 20,000 read as objects and as arrays (BodyArrays).
+ * - instants (instants.mjs): 1,000 to 8,000 discs applied one per call at successive instants.
  */
 
 import { lcg } from "../lib/lcg.mjs";
@@ -20,6 +21,7 @@ import { gas } from "../scenes/gas.mjs";
 import { ablations } from "./ablations.mjs";
 import { bulkReads } from "./bulkReads.mjs";
 import { galperinRun } from "./galperin7.mjs";
+import { instants } from "./instants.mjs";
 import { mixedRadii } from "./mixedRadii.mjs";
 import { obstacleRows } from "./obstacles.mjs";
 
@@ -116,5 +118,6 @@ export async function runEngine(ctx) {
   out.obstacles = obstacleRows(ctx);
   out.timeline = timeline(ctx);
   out.bulkReads = await bulkReads(ctx);
+  out.instants = instants(ctx);
   return out;
 }

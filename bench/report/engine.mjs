@@ -8,6 +8,7 @@
 import { ablationsBlock } from "./ablations.mjs";
 import { bulkReadsBlock } from "./bulkReads.mjs";
 import { galperinTarget, int, ms, numberWord, sig, status, table } from "./format.mjs";
+import { instantsBlock } from "./instants.mjs";
 import { mixedRadiiBlock } from "./mixedRadii.mjs";
 import { obstaclesBlock } from "./obstacles.mjs";
 import { plot } from "./svg.mjs";
@@ -171,4 +172,5 @@ export function engineSection(e, out, svgs) {
     );
   timelineBlock(e, out);
   bulkReadsBlock(e, out);
+  instantsBlock(e, out);
 }

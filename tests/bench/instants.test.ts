@@ -1,0 +1,47 @@
+/**
+ * The report's rows of a scene built one action per call at successive instants
+ * (bench/report/instants.mjs): each scene and history setting with its time per N and the growth of
+ * the time per apply, an error said as such, and nothing for a run from before the rows existed (so
+ * the committed report stays what it was).
+ */
+import { describe, expect, it } from "vitest";
+import { instantsBlock } from "../../bench/report/instants.mjs";
+
+describe("one action per instant in the report", () => {
+  it("gives each scene's build times per N and how the time per apply grows", () => {
+    const out: string[] = [];
+    const points = (a: number, b: number) => [
+      { n: 1000, ms: a },
+      { n: 8000, ms: b },
+    ];
+    instantsBlock(
+      {
+        instants: {
+          runs: 3,
+          dt: 0.01,
+          rows: [
+            { scene: "resting", history: true, points: points(263, 939), scaling: 0.446 },
+            { scene: "thrown", history: false, points: points(177, 515), scaling: 0.3637 },
+          ],
+        },
+      },
+      out,
+    );
+    const text = out.join("\n");
+    expect(text).toContain("one per call at t = 0, 0.01, 0.02, …");
+    expect(text).toContain("each time is the median of 3 fresh builds");
+    expect(text).toContain("the time per apply at N = 8,000 over that at N = 1,000: 1 is linear.");
+    expect(text).toContain("| scene | history | N = 1,000 | N = 8,000 | per apply, largest / smallest N |");
+    expect(text).toContain("| discs at rest on a lattice | yes | 263 ms | 939 ms | 0.446× |");
+    expect(text).toContain("| discs thrown under friction | no | 177 ms | 515 ms | 0.364× |");
+  });
+
+  it("says an error, and gives nothing for a run without the rows", () => {
+    const failed: string[] = [];
+    instantsBlock({ instants: { error: "body d3 would overlap body d0" } }, failed);
+    expect(failed.join("\n")).toContain("Not measured: body d3 would overlap body d0");
+    const none: string[] = [];
+    instantsBlock({}, none);
+    expect(none).toStrictEqual([]);
+  });
+});
