@@ -4,6 +4,9 @@
  * action's body, the bodies added) and the bodies added, not every body. A scene built one action
  * per instant (an editor adding discs at different times, a game spawning a body every frame) took
  * a copy of every body per instant: 4,000 discs one per instant spent seconds in keyframes.
+ * Keyframes stay one per instant (not one per amount of work done): stateAt's replay, the log and
+ * path readers, forgetBefore's cut, an edit's restart and the spare restart point stand on them, and
+ * a delta keeps each where it was, so nothing observable moves.
  *
  * - deltaSince(core, prev): the delta of the core's current point over keyframe `prev`, or null when
  *   a full keyframe is due: an action since prev that removes a body or changes an obstacle or the
