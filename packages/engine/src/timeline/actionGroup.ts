@@ -52,13 +52,15 @@ export function applyGroup(c: TimelineCore): void {
     const path = c.pathOf(k);
     if (view !== null) checkAndApply(view, a, path);
     applyToWorld(w, a, path);
+    // an action's record holds the number of the body it removes (keyframeDelta.ts reads it)
+    const removed = a.type === "removeBody" ? (c.live.get(a.id) as number) : 0;
     track(c, a);
     c.actEvents[k] = c.eventTotal;
     c.counts.action++;
     c.lastLogged = t;
     c.lastActionTime = t;
     c.eventAfterActions = false;
-    if (c.history) c.records.push(t, K_ACTION, k, 0, 0, 0, 0, 0);
+    if (c.history) c.records.push(t, K_ACTION, k, removed, 0, 0, 0, 0);
     if (c.untils && a.until) c.goals.push(goalFrom(c, a.until, t));
     c.applied++;
   }

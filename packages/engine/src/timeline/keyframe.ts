@@ -74,8 +74,9 @@ export interface KeyframeDelta {
    *  r, m, mu (DELTA_ROW) */
   nums: Uint32Array;
   rows: Float64Array;
-  /** the body numbers added since prev, sorted by id */
+  /** the body numbers added since prev (live), sorted by id, and those of prev's bodies removed */
   added: Uint32Array;
+  removed: Uint32Array;
   /** rows of the deltas back to the full keyframe, this one's included */
   chainRows: number;
 }
@@ -198,8 +199,8 @@ export function keyframeAtRecord(kfs: readonly Keyframe[], i: number): number {
 export function keyframeBytes(kf: Keyframe, prev: Keyframe | undefined): number {
   let bytes = 160;
   if (kf.delta !== null) {
-    const { nums, rows, added } = kf.delta;
-    bytes += nums.byteLength + rows.byteLength + added.byteLength;
+    const { nums, rows, added, removed } = kf.delta;
+    bytes += nums.byteLength + rows.byteLength + added.byteLength + removed.byteLength;
   }
   if (kf.full !== null) {
     bytes += kf.full.motions.byteLength;

@@ -1,18 +1,20 @@
 /**
  * Keyframes taken after a group of actions as a delta of the keyframe before them (keyframe.ts,
  * Keyframe.delta): the motions of the bodies the records since then touched (an event's bodies, an
- * action's body, the bodies added) and the bodies added, not every body. A scene built one action
- * per instant (an editor adding discs at different times, a game spawning a body every frame) took
- * a copy of every body per instant: 4,000 discs one per instant spent seconds in keyframes.
+ * action's body, the bodies added), the bodies added and the bodies removed, not every body. A scene
+ * built one action per instant (an editor adding discs at different times, a game spawning a body
+ * every frame and removing old ones) took a copy of every body per instant: 4,000 discs one per
+ * instant spent seconds in keyframes.
  * Keyframes stay one per instant (not one per amount of work done): stateAt's replay, the log and
  * path readers, forgetBefore's cut, an edit's restart and the spare restart point stand on them, and
  * a delta keeps each where it was, so nothing observable moves.
  *
  * - deltaSince(core, prev): the delta of the core's current point over keyframe `prev`, or null when
- *   a full keyframe is due: an action since prev that removes a body or changes an obstacle or the
- *   globals (the order would lose a body, the shared obstacle lists would change), or the chain back
- *   to the last full keyframe would hold more rows than there are live bodies (so loading a
- *   keyframe costs at most about twice a full one's load: stateAt stays bounded).
+ *   a full keyframe is due: an action since prev that changes an obstacle or the globals (the
+ *   obstacle lists shared with prev would change), or the chain back to the last full keyframe
+ *   would hold more rows than there are live bodies (so loading a keyframe costs at most about
+ *   twice a full one's load: stateAt stays bounded). A removed body's number is in its action's
+ *   record (actionGroup.ts).
  * - loadDelta(kf, table): a keyframe's motions, its chain's full keyframe loaded and each delta's rows
  *   after it, the same numbers the full keyframe of that point gives (each row is loaded as a full
  *   keyframe loads it).
@@ -54,29 +56,38 @@ export function mergeById(
   return out;
 }
 
-/** Whether an action leaves the keyframe's order, obstacles and globals as they were. */
+/** Whether an action leaves the keyframe's obstacles and globals as they were. */
 function deltaAction(a: Action): boolean {
-  return a.type === "addBody" || a.type === "giveVelocity" || a.type === "updateBody";
+  return (
+    a.type === "addBody" || a.type === "giveVelocity" || a.type === "updateBody" || a.type === "removeBody"
+  );
 }
 
 /** The delta of the core's current point over `prev` (see the header), or null. */
 export function deltaSince(c: TimelineCore, prev: Keyframe): KeyframeDelta | null {
   const rec = c.records;
   const touched = new Set<number>();
+  const removed: number[] = [];
   for (let i = prev.record; i < rec.length; i++) {
     const kind = rec.kind[i] as number;
     if (kind === K_ACTION) {
       const a = c.acts[rec.a[i] as number] as Action;
       if (!deltaAction(a)) return null;
-      touched.add(c.live.get((a as { id: string }).id) as number);
+      if (a.type === "removeBody") {
+        if ((rec.b[i] as number) < prev.bodyCount) removed.push(rec.b[i] as number);
+      } else touched.add(c.live.get((a as { id: string }).id) as number);
     } else {
       touched.add(rec.a[i] as number);
       if (kind === K_BODY_BODY) touched.add(rec.b[i] as number);
     }
   }
-  const chainRows = (prev.delta?.chainRows ?? 0) + touched.size;
+  // the rows of the bodies live now (one touched, then removed, has none; undefined: an action's
+  // body removed since)
+  const live = (n: number | undefined): n is number =>
+    n !== undefined && c.live.get(c.bodyIds[n] as string) === n;
+  const nums = Uint32Array.from([...touched].filter(live));
+  const chainRows = (prev.delta?.chainRows ?? 0) + nums.length + removed.length;
   if (chainRows > c.live.size) return null;
-  const nums = Uint32Array.from(touched);
   const rows = new Float64Array(nums.length * DELTA_ROW);
   const d = c.table.data;
   nums.forEach((n, k) => {
@@ -88,8 +99,15 @@ export function deltaSince(c: TimelineCore, prev: Keyframe): KeyframeDelta | nul
     rows[q + 7] = d[o + 10] as number;
   });
   const added: number[] = [];
-  for (let n = prev.bodyCount; n < c.bodyIds.length; n++) added.push(n);
-  return { prev, nums, rows, added: mergeById(new Uint32Array(0), added, c.bodyIds), chainRows };
+  for (let n = prev.bodyCount; n < c.bodyIds.length; n++) if (live(n)) added.push(n);
+  return {
+    prev,
+    nums,
+    rows,
+    added: mergeById(new Uint32Array(0), added, c.bodyIds),
+    removed: Uint32Array.from(removed),
+    chainRows,
+  };
 }
 
 /** The chain of `kf` from its full keyframe on (full first). */
@@ -130,9 +148,16 @@ export function orderOf(kf: Keyframe, ids: readonly string[]): Uint32Array {
   if (cached.kf === kf) return cached.order;
   const chain = chainOf(kf);
   const added: number[] = [];
-  for (let c = 1; c < chain.length; c++)
-    for (const n of ((chain[c] as Keyframe).delta as KeyframeDelta).added) added.push(n);
-  const order = mergeById(((chain[0] as Keyframe).full as KeyframeArrays).order, added, ids);
+  const removed = new Set<number>();
+  for (let c = 1; c < chain.length; c++) {
+    const d = (chain[c] as Keyframe).delta as KeyframeDelta;
+    for (const n of d.added) added.push(n);
+    for (const n of d.removed) removed.add(n);
+  }
+  // a body one delta added and a later one removed is in the first's `added` and the later's `removed`
+  const base = ((chain[0] as Keyframe).full as KeyframeArrays).order;
+  const kept = removed.size === 0 ? base : base.filter((n) => !removed.has(n));
+  const order = mergeById(kept, removed.size === 0 ? added : added.filter((n) => !removed.has(n)), ids);
   cached = { kf, order, arrays: null };
   return order;
 }
