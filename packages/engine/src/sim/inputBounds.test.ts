@@ -41,9 +41,8 @@ describe("the World's time option is at most TIME_MAX in size", () => {
       gravity: [0, 0],
       lines: [],
       points: [],
-      order: new Uint32Array(0),
-      props: new Float64Array(0),
-      motions: new Float64Array(0),
+      full: { order: new Uint32Array(0), props: new Float64Array(0), motions: new Float64Array(0) },
+      delta: null,
       zeno: w.zenoWatch(),
     } as unknown as Keyframe;
     expect(worldAt(kf, []).time).toBe(4 * TIME_MAX);

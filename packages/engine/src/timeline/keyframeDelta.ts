@@ -12,9 +12,10 @@
  * - deltaSince(core, prev): the delta of the core's current point over keyframe `prev`, or null when
  *   a full keyframe is due: an action since prev that changes an obstacle or the globals (the
  *   obstacle lists shared with prev would change), or the chain back to the last full keyframe
- *   would hold more rows than there are live bodies (so loading a keyframe costs at most about
- *   twice a full one's load: stateAt stays bounded). A removed body's number is in its action's
- *   record (actionGroup.ts).
+ *   would hold more rows than half the live bodies: loading a keyframe then costs at most about 1.5
+ *   full loads, and its order a sort of at most that many ids (stateAt stays bounded; a scene built
+ *   in one group, fromScene's, gets a full keyframe: its reads sort nothing). A removed body's
+ *   number is in its action's record (actionGroup.ts).
  * - loadDelta(kf, table): a keyframe's motions, its chain's full keyframe loaded and each delta's rows
  *   after it, the same numbers the full keyframe of that point gives (each row is loaded as a full
  *   keyframe loads it).
@@ -87,7 +88,7 @@ export function deltaSince(c: TimelineCore, prev: Keyframe): KeyframeDelta | nul
     n !== undefined && c.live.get(c.bodyIds[n] as string) === n;
   const nums = Uint32Array.from([...touched].filter(live));
   const chainRows = (prev.delta?.chainRows ?? 0) + nums.length + removed.length;
-  if (chainRows > c.live.size) return null;
+  if (2 * chainRows > c.live.size) return null;
   const rows = new Float64Array(nums.length * DELTA_ROW);
   const d = c.table.data;
   nums.forEach((n, k) => {
