@@ -122,14 +122,14 @@ describe("BodiesTable messages", () => {
       fireEvent.keyDown(input, { key: "Escape" });
       return shown;
     };
-    expect(await refusal("ball vx", "abc")).toBe('ball vx: must be a number, got "abc"');
-    expect(await refusal("ball speed", "-2")).toBe("ball |v|: must be zero or positive");
+    expect(await refusal("ball vx", "abc")).toBe('ball vx: must be a number (got "abc")');
+    expect(await refusal("ball speed", "-2")).toBe("ball |v|: must be zero or positive (got -2)");
     // regression (audit of session 20): "ball v: must be an array of two finite numbers"
-    expect(await refusal("ball speed", "1e999")).toBe("ball |v|: must be a finite number");
+    expect(await refusal("ball speed", "1e999")).toBe("ball |v|: must be a finite number (got 1e999)");
     // the friction column is μ in the engine's refusals too (it said "ball mu")
     expect(await refusal("ball mu", "-1")).toBe("ball μ: must be a non-negative finite number (got -1)");
     expect(await refusal("ball m", "1e999")).toBe(
-      "ball m: 1e999 is too large for a number; type ∞ or Infinity for an immovable body",
+      "ball m: is too large for a number (got 1e999): type ∞ or Infinity for an immovable body",
     );
     expect(h.editor.doc.actions.length).toBe(1);
   });

@@ -14,8 +14,9 @@ import { F_M, F_MU, F_R, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE } from "../remote/pr
 import { addBodyNearCentre } from "./addNear";
 import { listBodies, listNote } from "./bodyList";
 import { DeleteRowButton } from "./DeleteRowButton";
-import { EditableCell, formatNumber, isInfinityWord, notANumber, parseNumber } from "./EditableCell";
+import { EditableCell, formatNumber, isInfinityWord, parseNumber } from "./EditableCell";
 import { SkipTable } from "./SkipTable";
+import { notANumber, refusedTyped } from "./typedRefusal";
 import { useLiveFrame } from "./useLiveFrame";
 import { useRevealRow } from "./useRevealRow";
 import { spacerRow, useRowWindow } from "./useRowWindow";
@@ -56,13 +57,18 @@ export function BodiesTable() {
     // Named as the engine's refusals are (doc/refusalTerms.ts): the body, then the column.
     const cell = `${id} ${COLUMNS.find((c) => c.field === field)?.title ?? field}`;
     if (x === null) return notANumber(cell, text);
-    if (field === "speed" && x < 0) return `${cell}: must be zero or positive`;
+    if (field === "speed" && x < 0) return refusedTyped(cell, "must be zero or positive", text);
     // (scaling the velocity by an infinite speed gave NaN components: "v: must be an array of two
     // finite numbers", a field the table does not have: audit of session 20)
-    if (field === "speed" && !Number.isFinite(x)) return `${cell}: must be a finite number`;
+    if (field === "speed" && !Number.isFinite(x)) return refusedTyped(cell, "must be a finite number", text);
     // 1e999 overflows to Infinity: an immovable body only when asked for by name (audit)
     if (field === "m" && !Number.isFinite(x) && !isInfinityWord(text))
-      return `${cell}: ${text.trim()} is too large for a number; type ∞ or Infinity for an immovable body`;
+      return refusedTyped(
+        cell,
+        "is too large for a number",
+        text,
+        "type ∞ or Infinity for an immovable body",
+      );
     const [vx, vy] =
       field === "vx" || field === "vy" || field === "speed"
         ? await velocityNow(id, [shownVx, shownVy])

@@ -36,25 +36,39 @@ describe("CalculationPanel", () => {
     expect(editor.ui.getState().message).toBeNull();
   });
 
-  it("puts a refused value back and says why", () => {
+  it("keeps a refused value in its field, says why beside it, and applies the correction", () => {
     const editor = renderPanel();
     const before = editor.ui.getState().calc.seconds;
     const seconds = screen.getByRole("textbox", { name: "Seconds ahead" }) as HTMLInputElement;
     seconds.focus();
     fireEvent.change(seconds, { target: { value: "abc" } });
     fireEvent.keyDown(seconds, { key: "Enter" });
-    expect(seconds.value).toBe(String(before));
+    // the text typed stays (it was put back to the setting, the text lost), the refusal beside it
+    expect(seconds.value).toBe("abc");
     expect(editor.ui.getState().calc.seconds).toBe(before);
-    expect(editor.ui.getState().message).toEqual({
-      text: `Seconds ahead: must be a positive finite number, got "abc" (kept ${before})`,
-      tone: "error",
-    });
+    const refusal = `Seconds ahead: must be a positive finite number (got "abc"): Compute still uses ${before} s`;
+    expect(editor.ui.getState().message).toEqual({ text: refusal, tone: "error" });
+    expect(seconds.getAttribute("aria-invalid")).toBe("true");
+    expect(document.getElementById(seconds.getAttribute("aria-describedby") ?? "")?.textContent).toBe(
+      refusal,
+    );
+    // leaving the field with the same text does not refuse it again; the corrected text applies
+    fireEvent.blur(seconds);
+    expect(seconds.value).toBe("abc");
+    fireEvent.change(seconds, { target: { value: "abc5" } });
+    fireEvent.change(seconds, { target: { value: "5" } });
+    fireEvent.keyDown(seconds, { key: "Enter" });
+    expect(editor.ui.getState().calc.seconds).toBe(5);
+    expect(seconds.value).toBe("5");
+    expect(seconds.getAttribute("aria-invalid")).toBe("false");
+    expect(seconds.getAttribute("aria-describedby")).toBeNull();
+    expect(editor.ui.getState().message).toBeNull();
     const events = screen.getByRole("textbox", { name: "Events ahead" }) as HTMLInputElement;
     events.focus();
     fireEvent.change(events, { target: { value: "2.5" } });
     fireEvent.blur(events);
     expect(editor.ui.getState().message?.text).toMatch(
-      /^Events ahead: must be a whole number of at least 1, got "2.5"/,
+      /^Events ahead: must be a whole number of at least 1 \(got 2\.5\): Compute still uses \d+ events$/,
     );
   });
 

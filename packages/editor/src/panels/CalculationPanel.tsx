@@ -5,7 +5,9 @@
  * text, not an <output> (a live region: a screen reader announced it every 50 ms while computing).
  * Cancel goes with the computation: if it had the keyboard focus, the focus goes to Compute (it
  * fell to the page: review). Compute, greyed out while the worker computes, keeps the focus
- * (FocusKeptButton: pressed from the keyboard, it dropped the focus to the page).
+ * (FocusKeptButton: pressed from the keyboard, it dropped the focus to the page). Seconds ahead and
+ * Events ahead apply on Enter or on leaving them; a refused value stays typed, the refusal beside it
+ * (useTypedField.tsx) saying which value Compute still uses.
  */
 import { useEffect, useRef } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
@@ -13,11 +15,12 @@ import type { CalcSettings } from "../store/uiStore";
 import { formatNumber, parseNumber } from "./EditableCell";
 import { EngineWatch } from "./EngineWatch";
 import { FocusKeptButton } from "./FocusKeptButton";
+import { isFieldMessage } from "./fieldMessages";
+import { refusedTyped } from "./typedRefusal";
+import { useTypedField } from "./useTypedField";
 
-/** Enter in a settings field applies it (as leaving the field does; it only applied on leaving). */
-function blurOnEnter(e: React.KeyboardEvent<HTMLInputElement>): void {
-  if (e.key === "Enter") e.currentTarget.blur();
-}
+const SECONDS = "Seconds ahead";
+const EVENTS = "Events ahead";
 
 export function CalculationPanel() {
   const editor = useEditor();
@@ -41,20 +44,35 @@ export function CalculationPanel() {
   }, [running]);
   // An accepted setting takes down its field's refusal still in the message bar (a refusal of
   // "1e999" stayed up after 20 was accepted, as if 20 had been refused too).
-  const accept = (name: string, patch: Partial<CalcSettings>) => {
+  const accept = (name: string, patch: Partial<CalcSettings>): null => {
     set(patch);
-    if (editor.ui.getState().message?.text.startsWith(`${name}: must be `))
-      editor.ui.setState({ message: null });
+    if (isFieldMessage(editor.ui.getState().message, name)) editor.ui.setState({ message: null });
+    return null;
   };
-  // A refused setting is put back, and the message bar says so (it was restored without a word).
-  const refuse = (input: HTMLInputElement, name: string, what: string, kept: number) => {
-    const typed = input.value;
-    input.value = String(kept);
-    if (typed.trim() !== String(kept))
-      editor.ui.setState({
-        message: { text: `${name}: must be ${what}, got "${typed}" (kept ${kept})`, tone: "error" },
-      });
-  };
+  // A refused setting stays in its field for correction (it was put back, the text typed lost:
+  // useTypedField.tsx); the setting in use is the one before, which the refusal says.
+  const seconds = useTypedField(String(calc.seconds), (typed) => {
+    const x = parseNumber(typed);
+    return x !== null && x > 0 && Number.isFinite(x)
+      ? accept(SECONDS, { seconds: x })
+      : refusedTyped(
+          SECONDS,
+          "must be a positive finite number",
+          typed,
+          `Compute still uses ${calc.seconds} s`,
+        );
+  });
+  const events = useTypedField(String(calc.events), (typed) => {
+    const x = parseNumber(typed);
+    return x !== null && x >= 1 && Number.isInteger(x)
+      ? accept(EVENTS, { events: x })
+      : refusedTyped(
+          EVENTS,
+          "must be a whole number of at least 1",
+          typed,
+          `Compute still uses ${calc.events} events`,
+        );
+  });
 
   let progress: number | null = null;
   if (computing) {
@@ -79,18 +97,7 @@ export function CalculationPanel() {
           />{" "}
           Time
         </label>
-        <input
-          aria-label="Seconds ahead"
-          size={5}
-          defaultValue={calc.seconds}
-          onKeyDown={blurOnEnter}
-          onBlur={(e) => {
-            const x = parseNumber(e.target.value);
-            if (x !== null && x > 0 && Number.isFinite(x)) accept("Seconds ahead", { seconds: x });
-            else refuse(e.target, "Seconds ahead", "a positive finite number", calc.seconds);
-          }}
-        />{" "}
-        s
+        <input aria-label={SECONDS} size={5} {...seconds.input} /> s{seconds.refusal}
         <label>
           <input
             type="checkbox"
@@ -100,17 +107,8 @@ export function CalculationPanel() {
           />{" "}
           Events
         </label>
-        <input
-          aria-label="Events ahead"
-          size={6}
-          defaultValue={calc.events}
-          onKeyDown={blurOnEnter}
-          onBlur={(e) => {
-            const x = parseNumber(e.target.value);
-            if (x !== null && x >= 1 && Number.isInteger(x)) accept("Events ahead", { events: x });
-            else refuse(e.target, "Events ahead", "a whole number of at least 1", calc.events);
-          }}
-        />
+        <input aria-label={EVENTS} size={6} {...events.input} />
+        {events.refusal}
         <button
           type="button"
           aria-pressed={unlimited}

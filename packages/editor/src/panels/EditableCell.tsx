@@ -195,11 +195,6 @@ export function parseNumber(text: string): number | null {
   return Number(t);
 }
 
-/** The refusal of a cell whose text is not a number, quoting it as the Time and Speed fields do. */
-export function notANumber(label: string, text: string): string {
-  return `${label}: must be a number, got "${text.trim()}"`;
-}
-
 /** Whether `text` names infinity (∞, Infinity, inf), rather than a number too large for a double. */
 export function isInfinityWord(text: string): boolean {
   const t = text.trim();

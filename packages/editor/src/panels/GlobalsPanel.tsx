@@ -1,6 +1,7 @@
 /** Globals at the current time: friction g (quick buttons 1 and 9.81) and the gravity vector. */
 import { useEditor } from "../EditorContext";
-import { EditableCell, formatNumber, notANumber, parseNumber } from "./EditableCell";
+import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
+import { notANumber } from "./typedRefusal";
 import { useLiveFrame } from "./useLiveFrame";
 
 export function GlobalsPanel() {

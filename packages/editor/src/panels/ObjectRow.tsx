@@ -10,7 +10,8 @@ import type { ReactNode } from "react";
 import { useEditor, useUi } from "../EditorContext";
 import type { Vec2 } from "../engineTypes";
 import { DeleteRowButton } from "./DeleteRowButton";
-import { EditableCell, formatNumber, notANumber, parseNumber } from "./EditableCell";
+import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
+import { notANumber } from "./typedRefusal";
 
 export function ObjectRow({
   kind,

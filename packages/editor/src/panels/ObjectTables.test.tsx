@@ -58,7 +58,7 @@ describe("Lines and Points tables", () => {
     const { editor, lineId } = await setup();
     const before = editor.doc.actions.length;
     await commit(`${lineId} x1`, "abc");
-    expect(screen.getByRole("alert").textContent).toBe(`${lineId} x1: must be a number, got "abc"`);
+    expect(screen.getByRole("alert").textContent).toBe(`${lineId} x1: must be a number (got "abc")`);
     expect(editor.doc.actions.length).toBe(before);
   });
 

@@ -35,15 +35,36 @@ describe("SpeedPanel", () => {
     type(field, "0.0004");
     expect(editor.ui.getState().speed).toBe(-0.25);
     expect(editor.ui.getState().message?.text).toBe(
-      'Speed: must be 0 or at least 0.001 in size (speeds are kept to 0.001), got "0.0004"',
+      "Speed: must be 0 or at least 0.001 in size (got 0.0004): speeds are kept to 0.001",
     );
     type(field, "fast");
     expect(editor.ui.getState().speed).toBe(-0.25);
     expect(editor.ui.getState().message?.text).toBe(
-      'Speed: must be a finite number (negative plays backwards), got "fast"',
+      'Speed: must be a finite number (got "fast"): a negative speed plays backwards',
     );
     type(field, "0");
     expect(editor.ui.getState().speed).toBe(0);
+  });
+
+  it("keeps a refused speed typed in the field, the refusal beside it, until corrected", () => {
+    const { editor, field } = renderSpeed();
+    const input = field as HTMLInputElement;
+    type(input, "2x");
+    expect(input.value).toBe("2x");
+    expect(editor.ui.getState().speed).toBe(1);
+    const beside = document.getElementById(input.getAttribute("aria-describedby") ?? "");
+    expect(beside?.textContent).toBe(
+      'Speed: must be a finite number (got "2x"): a negative speed plays backwards',
+    );
+    // focused again, the text refused is not replaced by the speed
+    fireEvent.blur(input);
+    fireEvent.focus(input);
+    expect(input.value).toBe("2x");
+    fireEvent.change(input, { target: { value: "2" } });
+    fireEvent.keyDown(input, { key: "Enter" });
+    expect(editor.ui.getState().speed).toBe(2);
+    expect(input.value).toBe("2");
+    expect(input.getAttribute("aria-invalid")).toBe("false");
   });
 
   it("a valid speed removes the field's earlier refusal, not another message", () => {
@@ -52,9 +73,9 @@ describe("SpeedPanel", () => {
     expect(editor.ui.getState().message?.text).toMatch(/^Speed: must be a finite number/);
     type(field, "2");
     expect(editor.ui.getState()).toMatchObject({ speed: 2, message: null });
-    editor.ui.setState({ message: { text: 'Time (s): must be 0 or later, got "-3"', tone: "error" } });
+    editor.ui.setState({ message: { text: "Time (s): must be 0 or later (got -3)", tone: "error" } });
     type(field, "3");
-    expect(editor.ui.getState().message?.text).toBe('Time (s): must be 0 or later, got "-3"');
+    expect(editor.ui.getState().message?.text).toBe("Time (s): must be 0 or later (got -3)");
   });
 
   it("Reverse (−1×) at t = 0 says why nothing plays instead of doing nothing", () => {

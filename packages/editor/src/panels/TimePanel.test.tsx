@@ -33,10 +33,49 @@ describe("TimePanel time field", () => {
       fireEvent.keyDown(field, { key: "Enter" });
       expect(editor.ui.getState().t).toBe(1.25);
       expect(editor.ui.getState().message).toEqual({
-        text: `Time (s): must be a finite number of seconds, got "${typed}"`,
+        text: `Time (s): must be a finite number of seconds (got ${typed === "abc" ? '"abc"' : typed})`,
         tone: "error",
       });
     }
+  });
+});
+
+describe("TimePanel time field, refused text", () => {
+  it("keeps the text refused in the field, beside it the refusal, until corrected or dropped", async () => {
+    const { editor, field } = await renderPanel();
+    act(() => editor.setTime(1.25));
+    field.focus();
+    fireEvent.change(field, { target: { value: "2,5" } });
+    fireEvent.keyDown(field, { key: "Enter" });
+    const refusal = 'Time (s): must be a finite number of seconds (got "2,5")';
+    // the text stays (it was replaced by the time, what the user typed lost)
+    expect(field.value).toBe("2,5");
+    expect(field.getAttribute("aria-invalid")).toBe("true");
+    const beside = document.getElementById(field.getAttribute("aria-describedby") ?? "");
+    expect(beside?.textContent).toBe(refusal);
+    // the message bar shows it too, so the copy beside the field is no second alert
+    expect(editor.ui.getState().message?.text).toBe(refusal);
+    expect(beside?.getAttribute("role")).toBeNull();
+    // the time moving (playback, the slider) leaves the text typed in place
+    act(() => editor.setTime(0.5));
+    expect(field.value).toBe("2,5");
+    // corrected, it applies and the refusal goes, beside the field and in the message bar
+    fireEvent.change(field, { target: { value: "2.5" } });
+    await act(async () => {
+      fireEvent.keyDown(field, { key: "Enter" });
+    });
+    expect(editor.ui.getState().t).toBe(2.5);
+    expect(field.value).toBe("2.5");
+    expect(field.getAttribute("aria-describedby")).toBeNull();
+    expect(editor.ui.getState().message).toBeNull();
+    // Escape drops a refused text and its refusal
+    fireEvent.change(field, { target: { value: "-1" } });
+    fireEvent.keyDown(field, { key: "Enter" });
+    expect(editor.ui.getState().message?.text).toBe("Time (s): must be 0 or later (got -1)");
+    fireEvent.keyDown(field, { key: "Escape" });
+    expect(field.value).toBe("2.5");
+    expect(field.getAttribute("aria-invalid")).toBe("false");
+    expect(editor.ui.getState().message).toBeNull();
   });
 });
 
@@ -65,7 +104,7 @@ describe("TimePanel time field, negative times", () => {
     });
     expect(editor.ui.getState().t).toBe(1.25);
     expect(editor.ui.getState().message).toEqual({
-      text: 'Time (s): must be 0 or later, got "-3"',
+      text: "Time (s): must be 0 or later (got -3)",
       tone: "error",
     });
     // -0 is 0.
@@ -91,7 +130,7 @@ describe("TimePanel time field, negative times", () => {
     expect(editor.ui.getState().t).toBe(2);
     expect(editor.ui.getState().message).toBeNull();
     const other = {
-      text: 'Window width (s): must be a positive number of seconds, got "0"',
+      text: "Window width (s): must be a positive number of seconds (got 0)",
       tone: "error" as const,
     };
     act(() => editor.ui.setState({ message: other }));

@@ -7,21 +7,24 @@
  * While playing, this panel re-renders about 10 times a second (useShownTime); the slider's thumb
  * follows every frame by itself (TimeSlider). The time field shows the current time until the user
  * types in it; only typed text is gone to (Enter or leaving the field), so clicking into the field
- * while playing and away again leaves the time alone; text that is not a time is refused with a
- * message, which a valid time then clears (fieldMessages.ts). Zoomed, it shows the time to the
+ * while playing and away again leaves the time alone; text that is not a time is refused beside the
+ * field and in the message bar, the text kept for correction (useTypedField.tsx); a valid time then
+ * clears the message (fieldMessages.ts). Zoomed, it shows the time to the
  * window's precision (timeInWindow) and widens to fit. The horizon is plain text, not an <output>:
  * that is a live region, and a computation changes the horizon every 50 ms.
  */
-import { useMemo, useRef, useState } from "react";
+import { useMemo, useRef } from "react";
 import { useEditor, useInfoValue, useUi } from "../EditorContext";
 import { timeInWindow, viewRange } from "../store/timeWindow";
 import { formatNumber, parseNumber } from "./EditableCell";
 import { isFieldMessage } from "./fieldMessages";
 import { TimeSlider } from "./TimeSlider";
 import { TimeZoom } from "./TimeZoom";
+import { refusedTyped } from "./typedRefusal";
 import { useHistoryEnd } from "./useHistoryEnd";
 import { useRefreshed } from "./useRefreshed";
 import { useShownTime } from "./useThrottledTime";
+import { useTypedField } from "./useTypedField";
 import { useWheelZoom } from "./useWheelZoom";
 
 const TICKS = 300;
@@ -58,12 +61,25 @@ export function TimePanel() {
     TICKS_EVERY_MS,
     `${docRevision} ${windowKey}`,
   );
-  /** The text typed in the time field (null: nothing typed; the field shows the current time). */
-  const [draft, setDraft] = useState<string | null>(null);
   const scrubber = useRef<HTMLDivElement>(null);
   useWheelZoom(editor, scrubber);
-  // zoomed, to the window's precision (6 digits read 1e+9 for every time of a window of seconds there)
-  const timeText = draft ?? timeInWindow(t, timeWindow, formatNumber);
+  // Typed text is applied by goTo; text that is not a time is refused (useTypedField keeps it for
+  // correction; it was dropped without a word, and a negative time went to 0 without one: audit).
+  const field = useTypedField(
+    // zoomed, to the window's precision (6 digits read 1e+9 for every time of a window of seconds there)
+    timeInWindow(t, timeWindow, formatNumber),
+    (typed) => {
+      const x = parseNumber(typed);
+      if (x === null || !Number.isFinite(x))
+        return refusedTyped(TIME_LABEL, "must be a finite number of seconds", typed);
+      if (x < 0) return refusedTyped(TIME_LABEL, "must be 0 or later", typed);
+      // the field's earlier refusal no longer holds (it stayed up)
+      const { message } = editor.ui.getState();
+      if (isFieldMessage(message, TIME_LABEL)) editor.ui.setState({ message: null });
+      void editor.goTo(x);
+      return null;
+    },
+  );
 
   // Ticks are times: a reply asked for an earlier window is drawn on the current one, in its range.
   const tickLines = useMemo(() => {
@@ -78,29 +94,6 @@ export function TimePanel() {
       });
   }, [ticks, end, timeWindow]);
 
-  const commitDraft = () => {
-    if (draft === null) return;
-    const x = parseNumber(draft);
-    // Text that is not a time was dropped without a word, a negative time went to 0 without one
-    // (audit): say why the time did not move.
-    const why =
-      x === null || !Number.isFinite(x)
-        ? "must be a finite number of seconds"
-        : x < 0
-          ? "must be 0 or later"
-          : null;
-    if (why === null) {
-      // the field's earlier refusal no longer holds (it stayed up)
-      const { message } = editor.ui.getState();
-      if (isFieldMessage(message, TIME_LABEL)) editor.ui.setState({ message: null });
-      void editor.goTo(x as number);
-    } else
-      editor.ui.setState({
-        message: { text: `${TIME_LABEL}: ${why}, got "${draft.trim()}"`, tone: "error" },
-      });
-    setDraft(null);
-  };
-
   return (
     <section className="panel time-panel" aria-labelledby="time-title">
       <h2 id="time-title">Time</h2>
@@ -112,21 +105,10 @@ export function TimePanel() {
       </div>
       <div className="row">
         <label>
-          t ={" "}
-          <input
-            aria-label={TIME_LABEL}
-            size={Math.max(9, timeText.length + 1)}
-            value={timeText}
-            onChange={(e) => setDraft(e.target.value)}
-            onBlur={commitDraft}
-            onKeyDown={(e) => {
-              if (e.key === "Enter") commitDraft();
-              // Escape drops what was typed and shows the time again, as the table cells do
-              if (e.key === "Escape") setDraft(null);
-            }}
-          />{" "}
-          s of <span className="horizon">{formatNumber(horizon)}</span> s
+          t = <input aria-label={TIME_LABEL} size={Math.max(9, field.text.length + 1)} {...field.input} /> s
+          of <span className="horizon">{formatNumber(horizon)}</span> s
         </label>
+        {field.refusal}
         <TimeZoom />
         {/* After an undo, a redo or a rename the history is recomputed from the start while the time
             stays: say why the canvas and tables show an earlier state until it gets there. */}

@@ -154,7 +154,7 @@ describe("Time slider: typed window width", () => {
     expect(editor.ui.getState().t).toBe(w.hi);
   });
 
-  it("refuses a width that is not a positive number, with a message; Escape drops the text", async () => {
+  it("refuses a width that is not a positive number, with a message, keeping the text; Escape drops it", async () => {
     const { editor, width, typeWidth } = await renderPanel();
     act(() => editor.setTime(5));
     typeWidth("2");
@@ -164,10 +164,14 @@ describe("Time slider: typed window width", () => {
       typeWidth(text);
       expect(editor.ui.getState().timeWindow).toBe(w);
       expect(editor.ui.getState().message).toEqual({
-        text: `Window width (s): must be a positive number of seconds, got "${text}"`,
+        text: `Window width (s): must be a positive number of seconds (got ${text === "abc" ? '"abc"' : text})`,
         tone: "error",
       });
-      expect(width.value).toBe("2");
+      // the text typed stays for correction, the refusal beside it (it was put back to the width)
+      expect(width.value).toBe(text);
+      expect(width.getAttribute("aria-invalid")).toBe("true");
+      const beside = document.getElementById(width.getAttribute("aria-describedby") ?? "");
+      expect(beside?.textContent).toBe(editor.ui.getState().message?.text);
     }
     act(() => {
       fireEvent.change(width, { target: { value: "0.5" } });

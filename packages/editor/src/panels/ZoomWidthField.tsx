@@ -6,59 +6,40 @@
  * span; a width covering the history, or ∞, is the whole history). From a billion seconds to 5 s is
  * one typed number instead of 28 presses of Zoom in.
  * As in the time field, only typed text is applied (clicking in and out changes nothing), Escape
- * drops it, and text that is not a positive number of seconds is refused with a message. A width
+ * drops it, and text that is not a positive number of seconds is refused beside the field and in the
+ * message bar, the text kept for correction (useTypedField.tsx). A width
  * narrower than the smallest window there is widened to it, which a note says; an applied width
  * clears the field's earlier message (zoomWidthMessages.ts). The field widens to show its width
  * whole (0.000123457 was cut to 7 characters).
  */
-import { useState } from "react";
 import { useEditor, useUi } from "../EditorContext";
 import { viewRange } from "../store/timeWindow";
 import { zoomToSpan } from "../store/zoomRequest";
 import { formatNumber, parseNumber } from "./EditableCell";
 import { useHistoryEnd } from "./useHistoryEnd";
+import { useTypedField } from "./useTypedField";
 import { applyZoom, zoomState } from "./zoomActions";
 import { messageAfterWidth, refusedWidth, WIDTH_LABEL } from "./zoomWidthMessages";
 
 export function ZoomWidthField() {
   const editor = useEditor();
   const w = useUi((s) => s.timeWindow);
-  /** The text typed in the field (null: nothing typed; the field shows the window's width). */
-  const [draft, setDraft] = useState<string | null>(null);
   const r = viewRange(w, useHistoryEnd());
-  const text = draft ?? formatNumber(r.hi - r.lo);
-
-  const commit = () => {
-    if (draft === null) return;
-    const typed = draft.trim();
-    const span = parseNumber(draft);
-    setDraft(null);
-    if (span === null || !(span > 0)) {
-      editor.ui.setState({ message: refusedWidth(typed) });
-      return;
-    }
+  const field = useTypedField(formatNumber(r.hi - r.lo), (typed) => {
+    const span = parseNumber(typed);
+    if (span === null || !(span > 0)) return refusedWidth(typed);
     const s = zoomState(editor);
     const { message } = editor.ui.getState();
     const after = messageAfterWidth(message, typed, span, s.t, s.end);
     if (after !== message) editor.ui.setState({ message: after });
     applyZoom(editor, () => zoomToSpan(s.w, span, s.t, s.end));
-  };
+    return null;
+  });
 
   return (
     <label className="zoom-width">
-      window{" "}
-      <input
-        aria-label={WIDTH_LABEL}
-        size={Math.max(7, text.length + 1)}
-        value={text}
-        onChange={(e) => setDraft(e.target.value)}
-        onBlur={commit}
-        onKeyDown={(e) => {
-          if (e.key === "Enter") commit();
-          else if (e.key === "Escape") setDraft(null);
-        }}
-      />{" "}
-      s
+      window <input aria-label={WIDTH_LABEL} size={Math.max(7, field.text.length + 1)} {...field.input} /> s
+      {field.refusal}
     </label>
   );
 }

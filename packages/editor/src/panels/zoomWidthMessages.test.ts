@@ -17,18 +17,15 @@ describe("window width field messages", () => {
   });
 
   it("an applied width replaces the field's own message (by the note, or none), not another one", () => {
-    const refused = refusedWidth("0");
-    expect(refused).toEqual({
-      text: 'Window width (s): must be a positive number of seconds, got "0"',
-      tone: "error",
-    });
+    const refused = { text: refusedWidth("0"), tone: "error" as const };
+    expect(refused.text).toBe("Window width (s): must be a positive number of seconds (got 0)");
     expect(isWidthMessage(refused)).toBe(true);
     expect(messageAfterWidth(refused, "4", 4, 5, 10)).toBeNull();
     const note = narrowedWidth("1e-12", 1e-12, 5, 10);
     expect(isWidthMessage(note)).toBe(true);
     expect(messageAfterWidth(refused, "1e-12", 1e-12, 5, 10)).toEqual(note);
     expect(messageAfterWidth(note, "2", 2, 5, 10)).toBeNull();
-    const other = { text: 'Time (s): must be 0 or later, got "-1"', tone: "error" as const };
+    const other = { text: "Time (s): must be 0 or later (got -1)", tone: "error" as const };
     expect(isWidthMessage(other)).toBe(false);
     expect(messageAfterWidth(other, "2", 2, 5, 10)).toBe(other);
     expect(messageAfterWidth(null, "2", 2, 5, 10)).toBeNull();

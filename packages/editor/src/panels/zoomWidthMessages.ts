@@ -12,6 +12,7 @@ import type { Message } from "../store/uiStore";
 import { smallestSpanAt } from "../store/zoomRequest";
 import { formatNumber } from "./EditableCell";
 import { afterFieldApplied, isFieldMessage } from "./fieldMessages";
+import { refusedTyped } from "./typedRefusal";
 
 export const WIDTH_LABEL = "Window width (s)";
 
@@ -20,9 +21,9 @@ export function isWidthMessage(m: Message | null): boolean {
   return isFieldMessage(m, WIDTH_LABEL);
 }
 
-/** The error for typed text that is not a positive number of seconds. */
-export function refusedWidth(typed: string): Message {
-  return { text: `${WIDTH_LABEL}: must be a positive number of seconds, got "${typed}"`, tone: "error" };
+/** The refusal of typed text that is not a positive number of seconds. */
+export function refusedWidth(typed: string): string {
+  return refusedTyped(WIDTH_LABEL, "must be a positive number of seconds", typed);
 }
 
 /**
