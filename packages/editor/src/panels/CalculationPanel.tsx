@@ -97,7 +97,7 @@ export function CalculationPanel() {
           />{" "}
           Time
         </label>
-        <input aria-label={SECONDS} size={5} {...seconds.input} /> s{seconds.refusal}
+        <input aria-label={SECONDS} size={5} {...seconds.input} /> s
         <label>
           <input
             type="checkbox"
@@ -108,7 +108,6 @@ export function CalculationPanel() {
           Events
         </label>
         <input aria-label={EVENTS} size={6} {...events.input} />
-        {events.refusal}
         <button
           type="button"
           aria-pressed={unlimited}
@@ -119,6 +118,13 @@ export function CalculationPanel() {
           ∞
         </button>
       </div>
+      {/* under the settings: beside its field, a refusal pushed the Events box away from its own */}
+      {seconds.refusal || events.refusal ? (
+        <div className="row">
+          {seconds.refusal}
+          {events.refusal}
+        </div>
+      ) : null}
       <div className="row">
         <FocusKeptButton
           ref={computeRef}

@@ -1,6 +1,6 @@
 /**
  * A field's own messages: a field that refuses typed text says so in the message bar, the text
- * starting with the field's label ("Time (s): must be 0 or later, got "-3""). Once the field
+ * starting with the field's label ("Time (s): must be 0 or later (got -3)"). Once the field
  * applies a valid value, its earlier message no longer holds and goes (it stayed next to the zoom or
  * the time it made); a message of another field or of the editor stays. Pure.
  */

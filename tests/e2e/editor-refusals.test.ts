@@ -1,0 +1,138 @@
+/**
+ * End-to-end: what a scene author types and the editor refuses, in Debian's Chromium. A refused
+ * Time, Speed, Seconds ahead, Events ahead or window width keeps the text typed in its field, the
+ * refusal beside it naming the field, until the author corrects it (it was replaced by the old
+ * value, the text typed lost); a table cell keeps it too. Every refusal of typed text reads as the
+ * engine's, `label: reason (got …)`.
+ */
+import type { Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { openEditor, type Session, screenshot } from "./harness.js";
+
+const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
+
+/** The part of the page's `window.chapgame` (the Editor) read here. */
+type CalcWindow = { chapgame: { ui: { getState(): { calc: { seconds: number } } } } };
+
+let s: Session;
+let page: Page;
+
+const message = () => page.locator(".message > span").textContent();
+
+/** The text of the refusal the field describes itself with (aria-describedby), or null. */
+const besideOf = (name: string) =>
+  page.getByRole("textbox", { name, exact: true }).evaluate((el) => {
+    const id = el.getAttribute("aria-describedby");
+    return id === null ? null : (document.getElementById(id)?.textContent ?? null);
+  });
+
+async function type(name: string, text: string): Promise<void> {
+  const field = page.getByRole("textbox", { name, exact: true });
+  await field.fill(text);
+  await field.press("Enter");
+}
+
+beforeAll(async () => {
+  s = await openEditor();
+  page = s.page;
+});
+
+afterAll(async () => {
+  await s?.close();
+});
+
+describe("refused typed values", () => {
+  it("the Time, Speed, Calculation and window width fields keep refused text beside its refusal", async () => {
+    const cases = [
+      { name: "Time (s)", text: "2,5", refusal: 'Time (s): must be a finite number of seconds (got "2,5")' },
+      {
+        name: "Speed",
+        text: "0.0001",
+        refusal: "Speed: must be 0 or at least 0.001 in size (got 0.0001): speeds are kept to 0.001",
+      },
+      {
+        name: "Seconds ahead",
+        text: "-5",
+        refusal: /^Seconds ahead: must be a positive finite number \(got -5\): Compute still uses \d+ s$/,
+      },
+      {
+        name: "Events ahead",
+        text: "2.5",
+        refusal:
+          /^Events ahead: must be a whole number of at least 1 \(got 2\.5\): Compute still uses \d+ events$/,
+      },
+      {
+        name: "Window width (s)",
+        text: "wide",
+        refusal: 'Window width (s): must be a positive number of seconds (got "wide")',
+      },
+    ];
+    for (const c of cases) {
+      await type(c.name, c.text);
+      const field = page.getByRole("textbox", { name: c.name, exact: true });
+      // the text stays where it was typed, the field marked invalid, its refusal beside it and in
+      // the message bar
+      await poll(() => field.inputValue()).toBe(c.text);
+      expect(await field.getAttribute("aria-invalid")).toBe("true");
+      if (typeof c.refusal === "string") {
+        await poll(() => besideOf(c.name)).toBe(c.refusal);
+        expect(await message()).toBe(c.refusal);
+      } else {
+        await poll(() => besideOf(c.name)).toMatch(c.refusal);
+        expect(await message()).toMatch(c.refusal);
+      }
+      // leaving the field keeps it too
+      await page.getByRole("heading", { name: "Bodies" }).click();
+      expect(await field.inputValue()).toBe(c.text);
+    }
+    await screenshot(page, "refused-fields");
+  });
+
+  it("a correction applies and takes the refusal down; Escape drops the text", async () => {
+    await type("Time (s)", "1.5");
+    await poll(() => page.getByRole("slider", { name: "Time" }).inputValue()).toBe("1.5");
+    await poll(() => besideOf("Time (s)")).toBeNull();
+    await type("Speed", "0.5");
+    await poll(() => page.getByRole("textbox", { name: "Speed" }).inputValue()).toBe("0.5");
+    expect(await besideOf("Speed")).toBeNull();
+    await type("Seconds ahead", "12");
+    expect(
+      await page.evaluate(() => (window as unknown as CalcWindow).chapgame.ui.getState().calc.seconds),
+    ).toBe(12);
+    expect(await besideOf("Seconds ahead")).toBeNull();
+    const events = page.getByRole("textbox", { name: "Events ahead" });
+    await events.press("Escape");
+    await poll(() => besideOf("Events ahead")).toBeNull();
+    expect(await events.inputValue()).toMatch(/^\d+$/);
+    const width = page.getByRole("textbox", { name: "Window width (s)" });
+    await width.press("Escape");
+    expect(Number(await width.inputValue())).toBeGreaterThan(0);
+    expect(await page.locator(".message").count()).toBe(0);
+  });
+
+  it("a table cell's text that is not a number is refused as the engine's refusals read, and kept", async () => {
+    const bodies = page.getByRole("table", { name: "Bodies" });
+    const name = (await bodies.getByRole("button", { name: / x$/ }).first().getAttribute("aria-label"))!;
+    await bodies.getByLabel(name, { exact: true }).click();
+    const input = bodies.getByRole("textbox", { name, exact: true });
+    await input.fill("abc");
+    await input.press("Enter");
+    await poll(() => bodies.locator(".cell-error").textContent()).toBe(
+      `${name}: must be a number (got "abc")`,
+    );
+    expect(await input.inputValue()).toBe("abc");
+    // the engine's own refusal, in the same form
+    await input.fill("0");
+    const r = name.replace(/ x$/, " r");
+    await input.press("Escape");
+    await bodies.getByLabel(r, { exact: true }).click();
+    const rInput = bodies.getByRole("textbox", { name: r, exact: true });
+    await rInput.fill("-1");
+    await rInput.press("Enter");
+    await poll(() => bodies.locator(".cell-error").textContent()).toBe(
+      `${r}: must be a positive finite number (got -1)`,
+    );
+    expect(await rInput.inputValue()).toBe("-1");
+    await rInput.press("Escape");
+  });
+});
