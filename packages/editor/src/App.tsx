@@ -1,5 +1,5 @@
 /**
- * The editor's layout: header (scene actions: Undo, Redo, Save file, Load file; presets, message,
+ * The editor's layout: header (scene actions: Undo, Redo, Save file, Load file; the scene's title; presets, message,
  * newer work in another tab), canvas with its toolbar, side panels (the Event log, then the details
  * of its selected entry), time bar, the drop indicator (a scene file dropped anywhere opens) and
  * the Keyboard shortcuts dialog. In a narrow window the header and the stage fill the screen, so the
@@ -19,6 +19,7 @@ import { PointsTable } from "./panels/PointsTable";
 import { PresetsMenu } from "./panels/PresetsMenu";
 import { RefusedSceneNotice } from "./panels/RefusedSceneNotice";
 import { SceneActions } from "./panels/SceneActions";
+import { SceneTitle } from "./panels/SceneTitle";
 import { ShortcutHelp } from "./panels/ShortcutHelp";
 import { SpeedPanel } from "./panels/SpeedPanel";
 import { StatePanel } from "./panels/StatePanel";
@@ -34,6 +35,7 @@ export function App() {
         <header className="header">
           <h1>chapgame</h1>
           <SceneActions />
+          <SceneTitle />
           <PresetsMenu />
           <MessageBar />
           <NewerWorkNotice />

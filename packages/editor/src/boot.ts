@@ -118,7 +118,11 @@ export async function loadFirstScene(
     // the autosave a shared link was to be opened over, refused: kept like one restored alone
     if (first.previous && previousErr !== null)
       refused = { text: sceneText(first.previous), reason: previousErr };
-    err = await editor.loadScene(first.scene, { undoable: false, name: first.name ?? null });
+    err = await editor.loadScene(first.scene, {
+      undoable: false,
+      name: first.name ?? null,
+      preset: first.from === "preset",
+    });
   }
   if (err !== null && first.from === "autosave") refused = { text: sceneText(first.scene), reason: err };
   if (refused) {
@@ -131,6 +135,7 @@ export async function loadFirstScene(
     err = await editor.loadScene(buildPreset(DEFAULT_PRESET), {
       undoable: false,
       name: presetFileName(DEFAULT_PRESET),
+      preset: true,
     });
   if (first.error) editor.ui.setState({ message: { text: first.error, tone: "error" } });
   else if (first.note) editor.info(first.note);

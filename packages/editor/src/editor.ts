@@ -16,6 +16,8 @@ import { strikeVelocity } from "./canvas/pointerPlace";
 import { describeEntry } from "./doc/actionRefs";
 import { nextFreeId } from "./doc/ids";
 import { type ActionEntry, withoutAction } from "./doc/removeAction";
+import { saveNameFor } from "./doc/saveName";
+import { metaWithTitle, titleOf } from "./doc/sceneTitle";
 import { shown } from "./editorSession";
 import { EditorTime } from "./editorTime";
 import type { Action, SceneFile, Vec2 } from "./engineTypes";
@@ -169,6 +171,33 @@ export class Editor extends EditorTime {
     if (err !== null) return err;
     const what = describeEntry(entry.type, entry.id);
     this.info(`Removed ${what} at t = ${shown(entry.time)} s from the scene (Undo brings it back).`);
+    return null;
+  }
+
+  /**
+   * Sets the scene's title (`meta.title`; blank: none; doc/sceneTitle.ts) as one undo step; nothing
+   * is recomputed. A title names the file Save suggests unless the author chose its name (a file
+   * opened, a name saved under: saving back to it stays the suggestion); the message says which
+   * name Save file suggests. The same title again changes nothing (no undo step).
+   */
+  async setTitle(typed: string): Promise<string | null> {
+    if (JSON.stringify(metaWithTitle(this.doc.meta, typed)) === JSON.stringify(this.doc.meta)) return null;
+    let chosen = true;
+    const err = await this.changeMeta(
+      (doc) => metaWithTitle(doc.meta, typed),
+      () => {
+        chosen = this.names.chosen;
+        // the titled scene starts a file of its own: Undo goes back to the preset's name
+        if (!chosen) this.names.loaded(null);
+      },
+    );
+    if (err !== null) return err;
+    const title = titleOf(this.doc);
+    const name = saveNameFor(this.names.name, this.doc);
+    const said = title === "" ? "Removed the scene's title" : `Titled the scene ${JSON.stringify(title)}`;
+    this.info(
+      `${said}: Save file suggests ${name}${chosen ? " (the scene's own file)" : ""}. Undo takes it back.`,
+    );
     return null;
   }
 

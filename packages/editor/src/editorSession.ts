@@ -45,6 +45,8 @@ export interface LoadOptions {
    * rewrite of the current scene (keepTime) keeps the current name.
    */
   name?: string | null;
+  /** `name` is a preset's, not one the author chose: a title set later names the file (sceneNames.ts). */
+  preset?: boolean;
 }
 
 export class EditorSession extends EditorCompute {
@@ -157,7 +159,7 @@ export class EditorSession extends EditorCompute {
     }
     if (options.undoable !== false) this.history.setState(record(this.history.getState(), before));
     this.names.left(before);
-    if (!options.keepTime) this.names.loaded(options.name ?? null);
+    if (!options.keepTime) this.names.loaded(options.name ?? null, options.preset === true);
     if (options.undoable !== false && !options.keepTime)
       this.replacements.recorded({ before, loaded: this.doc, reproducible: options.reproducible === true });
     this.ui.setState((s) => ({
@@ -215,6 +217,30 @@ export class EditorSession extends EditorCompute {
     if (err !== null) return err;
     await this.ensureAhead();
     return null;
+  }
+
+  /**
+   * Replaces the scene's meta (free data for tools: its title; undefined: none) by `next` of the
+   * scene's when the change's turn comes, as one undo step. Nothing is recomputed (the history does
+   * not depend on it: client.setMeta) and the time stays. `then` runs once it is applied, before the
+   * next change (the file name a title gives).
+   */
+  async changeMeta(
+    next: (doc: SceneFile) => Record<string, unknown> | undefined,
+    then?: () => void,
+  ): Promise<string | null> {
+    return this.changes.ticketed(async () => {
+      const before = this.doc;
+      try {
+        await this.client.setMeta(next(before) ?? null);
+      } catch (e) {
+        return this.fail(e);
+      }
+      this.history.setState(record(this.history.getState(), before));
+      this.names.left(before);
+      then?.();
+      return null;
+    });
   }
 
   /**

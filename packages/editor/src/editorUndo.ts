@@ -15,6 +15,7 @@
 
 import { summarizeEdit } from "./doc/editSummary";
 import { type History, redo, undo } from "./doc/history";
+import { sameButMeta } from "./doc/sceneTitle";
 import { selectionAfterStep } from "./doc/stepSelection";
 import { redoAsked, redoTurn, type Ticket, undoAsked, undoTurn } from "./doc/undoIntents";
 import { EditorSession } from "./editorSession";
@@ -107,7 +108,9 @@ export class EditorUndo extends EditorSession {
     const check = this.unchecked.has(scene);
     try {
       if (check) this.unconfirmed = this.doc; // what a restart loads meanwhile
-      await this.client.load(scene, this.keepTo(), check);
+      // a step that changed the meta alone (a title) brings it back without recomputing anything
+      if (!check && sameButMeta(from, scene)) await this.client.setMeta(scene.meta ?? null);
+      else await this.client.load(scene, this.keepTo(), check);
     } catch (e) {
       if (!check || !namesAction(e)) {
         this.fail(e);

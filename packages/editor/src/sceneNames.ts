@@ -6,7 +6,8 @@
  * It follows the undo history: every scene that leaves the current place (an edit, a load, an Undo
  * or Redo away from it) is tagged with its file, and a scene Undo or Redo brings back is in its
  * file again, so that undoing the opening of billiards.chapgame.json suggests the name of the scene
- * before it, and redoing it billiards.chapgame.json again.
+ * before it, and redoing it billiards.chapgame.json again. A preset's name is the editor's, not the
+ * author's (`preset`): a title the author gives the scene then names the file (Editor.setTitle).
  */
 import type { SceneFile } from "./engineTypes";
 import { createStore, type Store } from "./store/createStore";
@@ -14,12 +15,14 @@ import { createStore, type Store } from "./store/createStore";
 /** One file: the scenes of one load and the edits after it share it. */
 interface NamedFile {
   name: string | null;
+  /** The name is a preset's (the editor gave it), not one the author chose or opened. */
+  preset: boolean;
 }
 
 export class SceneNames {
   /** The current scene's file name (null: none). */
   readonly current: Store<{ name: string | null }> = createStore<{ name: string | null }>({ name: null });
-  private file: NamedFile = { name: null };
+  private file: NamedFile = { name: null, preset: false };
   /** The file of each scene that left the current place (history entries hold these scenes). */
   private readonly files = new WeakMap<SceneFile, NamedFile>();
 
@@ -27,15 +30,21 @@ export class SceneNames {
     return this.file.name;
   }
 
-  /** A load: the current scene starts a new file named `name` (null: none). */
-  loaded(name: string | null): void {
-    this.file = { name };
+  /** Whether the current file's name is a preset's (or none): one the author did not choose. */
+  get chosen(): boolean {
+    return this.file.name !== null && !this.file.preset;
+  }
+
+  /** A load: the current scene starts a new file named `name` (null: none), a preset's when `preset`. */
+  loaded(name: string | null, preset = false): void {
+    this.file = { name, preset };
     this.current.setState({ name });
   }
 
   /** Saved under `name`: the current file is renamed, also where the undo history holds it. */
   saved(name: string): void {
     this.file.name = name;
+    this.file.preset = false;
     this.current.setState({ name });
   }
 

@@ -3,11 +3,13 @@
  * Undo and Redo (an audit found they said nothing, and undoing an edit at a later time showed no
  * change at all). Actions are compared by content, as multisets (actionDiff.ts). An edit merged
  * into the action before it (doc/mergeEdit.ts: one action of the same object at the same time
- * replaced by another) is said as the fields it changed in that action. Pure.
+ * replaced by another) is said as the fields it changed in that action; a change of the scene's
+ * title alone, as what became of the title (sceneTitle.ts). Pure.
  */
 import type { Action, SceneFile } from "../engineTypes";
 import { actionKey as key, actionsMinus as minus } from "./actionDiff";
 import { describeAction } from "./actionRefs";
+import { titleChange } from "./sceneTitle";
 
 function at(a: Action): string {
   return `${describeAction(a)} at t = ${Number(a.time.toPrecision(6))} s`;
@@ -66,5 +68,6 @@ export function summarizeEdit(before: SceneFile, after: SceneFile): string {
     return `a change of ${added.length + removed.length} actions, the earliest at t = ${Number(first.toPrecision(6))} s`;
   }
   const globals = before.g !== after.g || before.gravity.join() !== after.gravity.join();
-  return globals ? "a change of the scene's g or gravity" : "a change that left the actions as they were";
+  if (globals) return "a change of the scene's g or gravity";
+  return titleChange(before, after) ?? "a change that left the actions as they were";
 }

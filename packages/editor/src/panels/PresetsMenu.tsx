@@ -67,7 +67,7 @@ export function PresetsMenu() {
           const n = clampDigits(digits);
           setDigits(String(n));
           // named as Save file then suggests it (sceneNames.ts)
-          const options = { reproducible: true, name: presetFileName(id, n) };
+          const options = { reproducible: true, name: presetFileName(id, n), preset: true };
           void editor.loadScene(buildPreset(id, n), options).then(async (err) => {
             if (err !== null) return;
             const loaded = `Loaded the preset ${entry?.name ?? id}. Undo returns to the scene you had.`;

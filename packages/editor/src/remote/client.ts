@@ -151,6 +151,10 @@ export class TimelineClient {
     if (from === undefined) return this.request({ op: "compute", until, restore });
     return this.request({ op: "compute", until, restore, from });
   }
+  /** Replaces the scene's meta (null: none) and nothing else: nothing is recomputed (protocol.ts `meta`). */
+  setMeta(meta: Record<string, unknown> | null): Promise<void> {
+    return this.request({ op: "meta", meta });
+  }
   cancel(): Promise<void> {
     return this.request({ op: "cancel" });
   }

@@ -91,6 +91,9 @@ export class TimelineHost extends HostCompute {
       }
       case "apply":
         return this.applyAll(r.actions, r.id, r.merge === true);
+      case "meta":
+        this.setMeta(r.meta);
+        return null;
       case "compute":
         this.startJob(
           r.from === undefined ? { until: r.until } : { until: r.until, from: r.from },
@@ -114,7 +117,7 @@ export class TimelineHost extends HostCompute {
         // An Undo pressed during the check: the change goes, nothing else (no pending change: the
         // Undo will undo what was answered, and the computation running is left alone).
         if (!this.pending.edit) return null;
-        const scene = this.tl.toScene();
+        const scene = this.sceneOf(this.tl);
         this.takeBack(UNDONE_DURING_CHECK, null);
         return scene;
       }

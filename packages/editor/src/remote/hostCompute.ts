@@ -10,7 +10,7 @@
  * answered; a computation asked meanwhile starts once the old history is back (afterRestore).
  * How a request becomes a job (or leaves the running one alone) and the slices' budget: computeJob.ts.
  */
-import type { Until } from "../engineTypes";
+import type { SceneFile, Until } from "../engineTypes";
 import { type Job, nextBudget, planJob, targetOf } from "./computeJob";
 import { errorInfo } from "./errors";
 import { lastEventTime } from "./eventQueries";
@@ -53,6 +53,8 @@ export interface HostEnv {
 export class HostCompute {
   protected revision = 0;
   private docRevision = 0;
+  /** The meta set on a timeline since it was made (sceneOf; null: none). */
+  private readonly metas = new WeakMap<TimelineLike, Record<string, unknown> | null>();
   private sentDocRevision = -1;
   private idle = false;
   private stopped: string | null = null;
@@ -237,6 +239,30 @@ export class HostCompute {
     if (this.job) this.kick();
   }
 
+  /**
+   * The scene of timeline `tl`: its own (Timeline.toScene), with the meta set on it since (op
+   * `meta`: the engine's Timeline keeps the meta of the scene it was made from). Kept per timeline,
+   * so a timeline given back (a change taken back) has its own meta again.
+   */
+  protected sceneOf(tl: TimelineLike): SceneFile {
+    const scene = tl.toScene();
+    if (!this.metas.has(tl)) return scene;
+    const meta = this.metas.get(tl) ?? null;
+    if (meta === null) delete scene.meta;
+    else scene.meta = JSON.parse(JSON.stringify(meta)) as Record<string, unknown>;
+    return scene;
+  }
+
+  /** Sets the current scene's meta (op `meta`): nothing is recomputed; the scene is sent again. */
+  protected setMeta(meta: Record<string, unknown> | null): void {
+    this.metas.set(
+      this.tl,
+      meta === null ? null : (JSON.parse(JSON.stringify(meta)) as Record<string, unknown>),
+    );
+    this.docRevision++;
+    this.env.post({ type: "info", info: this.info() });
+  }
+
   protected changed(docChanged: boolean): void {
     this.revision++;
     const now = this.env.now();
@@ -265,7 +291,7 @@ export class HostCompute {
       counts: tl.counts(),
       lastEventTime: lastEventTime(tl),
       idle: this.idle,
-      doc: sendDoc ? tl.toScene() : null,
+      doc: sendDoc ? this.sceneOf(tl) : null,
       docRevision: this.docRevision,
       computing: this.job ? { ...this.job } : null,
       stopped: this.stopped,

@@ -132,6 +132,12 @@ export type Request =
    */
   | { op: "apply"; actions: Action[]; merge?: boolean }
   /**
+   * Replaces the scene's `meta` (free data for tools: the title; null: none) and nothing else: the
+   * history does not depend on it, so nothing is recomputed (a title set, or its undo, in a scene of
+   * thousands of discs recomputed their whole history). Answered once `info` holds the new scene.
+   */
+  | { op: "meta"; meta: Record<string, unknown> | null }
+  /**
    * `restore`: the computation brings back history the user had (see ComputeStatus.restore).
    * `from`: `until.time` counts from this time, not from the horizon (ComputeAsk).
    */
