@@ -2,8 +2,8 @@
  * End-to-end: what a scene author types and the editor refuses, in Debian's Chromium. A refused
  * Time, Speed, Seconds ahead, Events ahead or window width keeps the text typed in its field, the
  * refusal beside it naming the field, until the author corrects it (it was replaced by the old
- * value, the text typed lost); a table cell keeps it too. Every refusal of typed text reads as the
- * engine's, `label: reason (got …)`.
+ * value, the text typed lost); a table cell keeps it too, also once the time moves on (it closed,
+ * dropping it). Every refusal of typed text reads as the engine's, `label: reason (got …)`.
  */
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -133,6 +133,14 @@ describe("refused typed values", () => {
       `${r}: must be a positive finite number (got -1)`,
     );
     expect(await rInput.inputValue()).toBe("-1");
+    // the time moving on keeps the text typed (it closed the cell), and says where Enter applies it
+    const t0 = await page.getByRole("slider", { name: "Time" }).inputValue();
+    await page.getByRole("button", { name: "+1 s: forward 1 second" }).click();
+    await poll(() => bodies.locator(".cell-error").textContent()).toBe(
+      `${r}: refused at t = ${t0} s; the time is now ${Number(t0) + 1} s, where Enter applies it (Escape drops it)`,
+    );
+    expect(await rInput.inputValue()).toBe("-1");
     await rInput.press("Escape");
+    expect(await bodies.getByRole("textbox", { name: r, exact: true }).count()).toBe(0);
   });
 });

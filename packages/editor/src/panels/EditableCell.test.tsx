@@ -227,7 +227,7 @@ describe("EditableCell", () => {
     expect(screen.getAllByRole("alert").map((a) => a.textContent)).toEqual(["vx: must be a number"]);
   });
 
-  it("a refused draft closes when the time moves: a retry would apply at the new time (it saved r at t = 3 for t = 1)", async () => {
+  it("a refused draft stays when the time moves, saying where Enter now applies it (it saved r at t = 3 for t = 1 without a word, then closed, the text lost)", async () => {
     const { editor } = testEditor();
     editor.ui.setState({ t: 1 });
     const onCommit = vi.fn(async () => "ball1 r: would overlap ball2 at time 1");
@@ -243,9 +243,28 @@ describe("EditableCell", () => {
     });
     expect(screen.getByRole("textbox", { name: "ball1 r" })).toBeTruthy();
     act(() => editor.ui.setState({ t: 3 }));
-    expect(screen.queryByRole("textbox", { name: "ball1 r" })).toBeNull();
-    expect(screen.getByRole("button", { name: "ball1 r" }).textContent).toBe("0.3");
+    const kept = screen.getByRole("textbox", { name: "ball1 r" }) as HTMLInputElement;
+    expect(kept.value).toBe("100");
+    const note = () => document.getElementById(kept.getAttribute("aria-describedby") ?? "")?.textContent;
+    expect(note()).toBe(
+      "ball1 r: refused at t = 1 s; the time is now 3 s, where Enter applies it (Escape drops it)",
+    );
+    // back at the time it was refused, the refusal is shown again
+    act(() => editor.ui.setState({ t: 1 }));
+    expect(note()).toBe("ball1 r: would overlap ball2 at time 1");
     expect(onCommit).toHaveBeenCalledTimes(1);
+    // Enter at another time tries it there; a refusal there is noted from that time
+    act(() => editor.ui.setState({ t: 2 }));
+    await act(async () => {
+      fireEvent.keyDown(kept, { key: "Enter" });
+    });
+    expect(onCommit).toHaveBeenCalledTimes(2);
+    act(() => editor.ui.setState({ t: 4 }));
+    expect(note()).toBe(
+      "ball1 r: refused at t = 2 s; the time is now 4 s, where Enter applies it (Escape drops it)",
+    );
+    fireEvent.keyDown(kept, { key: "Escape" });
+    expect(screen.getByRole("button", { name: "ball1 r" }).textContent).toBe("0.3");
   });
 
   it("opened while the value changes (playing), follows it and commits nothing until typed in", async () => {

@@ -5,8 +5,8 @@
  * the values of the time playback paused at once the table refreshes), and Enter or leaving it
  * commits nothing. Once the user has typed, Enter or leaving the input commits a changed draft through
  * `onCommit`, which resolves to an error message (the value is refused, the message shown in place,
- * the draft kept for correction, until the time moves: the draft then closes, since its row shows
- * another time) or null (accepted). A commit an Undo took back during its check
+ * the draft kept for correction; once the time moves, its row shows another time, and a note in
+ * place of the refusal says where Enter applies the draft) or null (accepted). A commit an Undo took back during its check
  * (UNDONE_DURING_CHECK) closes the cell on the scene's value as an accepted one does: the Undo says
  * what it did, and the draft it undid is not committed again. Escape closes without committing.
  * A refusal is shown under the input and describes it (aria-describedby); it is an alert only when
@@ -75,17 +75,20 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
   };
   // A refused draft stays open for correction, at the time it was refused: once the time moves (the
   // ±1 s buttons, the slider) the row shows another time, and a retry applied there (review: r = 0.35
-  // saved at t = 3 for a refusal at t = 1, without a word). The cell closes, dropping the draft.
+  // saved at t = 3 for a refusal at t = 1, without a word). It closed, dropping the text typed; it
+  // now stays, the refusal replaced by a note saying where Enter applies it (timeMovedNote), and
+  // the refusal comes back if the time returns to where it was refused.
   const refused = edit !== null && error !== null;
+  /** The refusal shown and the time it was given at (set with it). */
+  const refusal = useRef<{ text: string; at: number } | null>(null);
   useEffect(() => {
     if (!refused || !editor) return;
     return editor.ui.subscribe((s, p) => {
-      if (s.t !== p.t) {
-        setEdit(null);
-        setError(null);
-      }
+      const r = refusal.current;
+      if (s.t === p.t || r === null) return;
+      setError(s.t === r.at ? r.text : timeMovedNote(label, r.at, s.t));
     });
-  }, [refused, editor]);
+  }, [refused, editor, label]);
 
   const typed = edit?.typed ?? null;
 
@@ -98,6 +101,8 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
     void editor?.refusalChanged(err)?.then((next) => {
       if (shownError.current !== err) return; // corrected, closed or refused again meanwhile
       shownError.current = next;
+      const at = refusal.current?.at ?? 0;
+      refusal.current = next === null ? null : { text: next, at };
       setError(next);
       if (next !== null) followRefusal(next);
     });
@@ -117,6 +122,7 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
       const err = await onCommit(typed.trim());
       if (err === null || err === UNDONE_DURING_CHECK) close(byKey);
       else {
+        refusal.current = { text: err, at: editor?.ui.getState().t ?? 0 };
         setError(err);
         followRefusal(err);
       }
@@ -185,6 +191,14 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
       )}
     </span>
   );
+}
+
+/**
+ * What a refused draft says once the time has moved from `at`, where it was refused, to `now`: the
+ * row shows another time, and Enter would apply the draft there.
+ */
+export function timeMovedNote(label: string, at: number, now: number): string {
+  return `${label}: refused at t = ${formatNumber(at)} s; the time is now ${formatNumber(now)} s, where Enter applies it (Escape drops it)`;
 }
 
 /** Parses a number typed in a cell ("Infinity" and "∞" allowed); null when it is not a number. */
