@@ -15,7 +15,7 @@
 
 import { summarizeEdit } from "./doc/editSummary";
 import { type History, redo, undo } from "./doc/history";
-import { sameButMeta } from "./doc/sceneTitle";
+import { differsInMetaAlone } from "./doc/sceneTitle";
 import { selectionAfterStep } from "./doc/stepSelection";
 import { redoAsked, redoTurn, type Ticket, undoAsked, undoTurn } from "./doc/undoIntents";
 import { EditorSession } from "./editorSession";
@@ -109,7 +109,7 @@ export class EditorUndo extends EditorSession {
     try {
       if (check) this.unconfirmed = this.doc; // what a restart loads meanwhile
       // a step that changed the meta alone (a title) brings it back without recomputing anything
-      if (!check && sameButMeta(from, scene)) await this.client.setMeta(scene.meta ?? null);
+      if (!check && differsInMetaAlone(from, scene)) await this.client.setMeta(scene.meta ?? null);
       else await this.client.load(scene, this.keepTo(), check);
     } catch (e) {
       if (!check || !namesAction(e)) {

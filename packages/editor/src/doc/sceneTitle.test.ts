@@ -2,7 +2,7 @@ import { newtonsCradle } from "@chapgame/engine";
 import { describe, expect, it } from "vitest";
 import type { SceneFile } from "../engineTypes";
 import { sceneText } from "./sceneIo";
-import { metaWithTitle, sameButMeta, titleChange, titleOf } from "./sceneTitle";
+import { differsInMetaAlone, metaWithTitle, titleChange, titleOf } from "./sceneTitle";
 
 const withMeta = (meta: Record<string, unknown> | undefined): SceneFile => ({ ...newtonsCradle(), meta });
 
@@ -50,14 +50,17 @@ describe("titleChange", () => {
   });
 });
 
-describe("sameButMeta", () => {
-  it("is true for scenes differing in meta alone, false when an action, g or gravity differs", () => {
+describe("differsInMetaAlone", () => {
+  it("is true for scenes differing in meta alone, false when an action, g or gravity differs too", () => {
     const a = withMeta({ title: "A" });
-    expect(sameButMeta(a, withMeta(undefined))).toBe(true);
-    expect(sameButMeta(a, { ...a, g: 1 })).toBe(false);
-    expect(sameButMeta(a, { ...a, gravity: [0, -1] })).toBe(false);
-    expect(sameButMeta(a, { ...a, actions: a.actions.slice(1) })).toBe(false);
+    expect(differsInMetaAlone(a, withMeta({ title: "A" }))).toBe(false);
+    expect(differsInMetaAlone(a, withMeta({ title: "B" }))).toBe(true);
+    expect(differsInMetaAlone(a, withMeta(undefined))).toBe(true);
+    const b = withMeta({ title: "B" });
+    expect(differsInMetaAlone(a, { ...b, g: 1 })).toBe(false);
+    expect(differsInMetaAlone(a, { ...b, gravity: [0, -1] })).toBe(false);
+    expect(differsInMetaAlone(a, { ...b, actions: b.actions.slice(1) })).toBe(false);
     const moved = a.actions.map((x, i) => (i === 0 ? { ...x, time: 1 } : x));
-    expect(sameButMeta(a, { ...a, actions: moved })).toBe(false);
+    expect(differsInMetaAlone(a, { ...b, actions: moved })).toBe(false);
   });
 });

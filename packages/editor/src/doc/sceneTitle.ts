@@ -9,8 +9,9 @@
  *   `meta` is kept as it is.
  * - titleChange: what a change of the title is called in Undo's and Redo's messages, null when
  *   the titles are the same.
- * - sameButMeta: whether two scenes differ in their meta alone (a title changed, or its undo), so
- *   that nothing needs recomputing between them.
+ * - differsInMetaAlone: whether two scenes differ in their meta and in nothing else (a title
+ *   changed, or its undo), so that nothing needs recomputing between them. Scenes with the same
+ *   meta are answered without writing them out (every Undo and Redo asks).
  */
 import type { SceneFile } from "../engineTypes";
 import { sceneText } from "./sceneIo";
@@ -42,9 +43,9 @@ export function titleChange(before: SceneFile, after: SceneFile): string | null 
   return `the title changed from ${JSON.stringify(a)} to ${JSON.stringify(b)}`;
 }
 
-/** Whether `a` and `b` are the same scene but for their meta. */
-export function sameButMeta(a: SceneFile, b: SceneFile): boolean {
-  if (a === b) return true;
-  if (a.actions.length !== b.actions.length) return false;
+/** Whether `a` and `b` differ in their meta, and only there. */
+export function differsInMetaAlone(a: SceneFile, b: SceneFile): boolean {
+  if (a.actions.length !== b.actions.length || JSON.stringify(a.meta) === JSON.stringify(b.meta))
+    return false;
   return sceneText({ ...a, meta: undefined }) === sceneText({ ...b, meta: undefined });
 }
