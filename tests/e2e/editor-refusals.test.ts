@@ -3,7 +3,8 @@
  * Time, Speed, Seconds ahead, Events ahead or window width keeps the text typed in its field, the
  * refusal beside it naming the field, until the author corrects it (it was replaced by the old
  * value, the text typed lost); a table cell keeps it too, also once the time moves on (it closed,
- * dropping it). Every refusal of typed text reads as the engine's, `label: reason (got …)`.
+ * dropping it), and so does the header's digits of π field. Every refusal of typed text reads as
+ * the engine's, `label: reason (got …)`.
  */
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -18,6 +19,7 @@ let s: Session;
 let page: Page;
 
 const message = () => page.locator(".message > span").textContent();
+const button = (name: string) => page.getByRole("button", { name, exact: true });
 
 /** The text of the refusal the field describes itself with (aria-describedby), or null. */
 const besideOf = (name: string) =>
@@ -108,6 +110,43 @@ describe("refused typed values", () => {
     await width.press("Escape");
     expect(Number(await width.inputValue())).toBeGreaterThan(0);
     expect(await page.locator(".message").count()).toBe(0);
+  });
+
+  it("a correction applied by pressing Compute computes: the refusal going does not move Compute away", async () => {
+    await type("Seconds ahead", "later");
+    await poll(() => besideOf("Seconds ahead")).toMatch(/^Seconds ahead: must be a positive finite number/);
+    const horizon = () => page.getByRole("region", { name: "Calculation" }).locator(".horizon").textContent();
+    const before = Number(await horizon());
+    await page.getByRole("textbox", { name: "Seconds ahead" }).fill("3");
+    await button("Compute").click();
+    await poll(async () => Number(await horizon())).toBe(before + 3);
+    await poll(() => besideOf("Seconds ahead")).toBeNull();
+  });
+
+  it("Galperin's digits of π not from 1 to 7 are refused beside the field and nothing is loaded", async () => {
+    await page.getByRole("combobox", { name: "Preset" }).selectOption("galperin");
+    const digits = page.getByRole("spinbutton", { name: "Digits of π" });
+    await digits.fill("9");
+    await button("Load preset").click();
+    const refusal = "Digits of π: must be a whole number from 1 to 7 (got 9)";
+    await poll(() => message()).toBe(refusal);
+    expect(await digits.inputValue()).toBe("9");
+    expect(
+      await digits.evaluate(
+        (el) => document.getElementById(el.getAttribute("aria-describedby") ?? "")?.textContent,
+      ),
+    ).toBe(refusal);
+    await screenshot(page, "refused-digits");
+    // nothing was loaded: the scene is still the start's (its disc A)
+    const discA = () =>
+      page.getByRole("table", { name: "Bodies" }).getByLabel("A x", { exact: true }).count();
+    expect(await discA()).toBe(1);
+    await digits.fill("2");
+    await button("Load preset").click();
+    await poll(() => message()).toMatch(/^Loaded the preset Galperin's π billiard\./);
+    await poll(discA).toBe(0);
+    await button("Undo").click();
+    await poll(discA).toBe(1);
   });
 
   it("a table cell's text that is not a number is refused as the engine's refusals read, and kept", async () => {

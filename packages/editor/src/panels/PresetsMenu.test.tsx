@@ -1,12 +1,14 @@
 // @vitest-environment jsdom
 // The digits field of Galperin's billiard keeps what is typed (it once snapped an emptied field to
-// 1 at once, so Backspace then "6" gave "16", clamped to 7) and clamps to 1..7 on blur and on load.
+// 1 at once, so Backspace then "6" gave "16", clamped to 7) and refuses what is not 1..7 on blur and
+// on load, keeping the text (it was clamped without a word).
 import { cleanup, fireEvent, render, screen, waitFor } from "@testing-library/react";
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
 import type { Editor } from "../editor";
 import type { SceneFile } from "../engineTypes";
 import { buildPreset } from "../presets";
+import { createUiStore } from "../store/uiStore";
 import { testEditor } from "../testing/harness";
 import { PresetsMenu } from "./PresetsMenu";
 
@@ -14,7 +16,8 @@ afterEach(cleanup);
 
 function setup() {
   const loaded: SceneFile[] = [];
-  const editor = { loadScene: async (s: SceneFile) => void loaded.push(s) } as unknown as Editor;
+  const ui = createUiStore();
+  const editor = { loadScene: async (s: SceneFile) => void loaded.push(s), ui } as unknown as Editor;
   render(
     <EditorContext.Provider value={editor}>
       <PresetsMenu />
@@ -22,7 +25,12 @@ function setup() {
   );
   fireEvent.change(screen.getByRole("combobox", { name: "Preset" }), { target: { value: "galperin" } });
   const field = screen.getByRole("spinbutton", { name: "Digits of π" }) as HTMLInputElement;
-  return { loaded, field, load: () => fireEvent.click(screen.getByRole("button", { name: "Load preset" })) };
+  return {
+    loaded,
+    field,
+    ui,
+    load: () => fireEvent.click(screen.getByRole("button", { name: "Load preset" })),
+  };
 }
 
 describe("Presets menu: digits of π", () => {
@@ -37,18 +45,29 @@ describe("Presets menu: digits of π", () => {
     expect(loaded).toEqual([buildPreset("galperin", 6)]);
   });
 
-  it("clamps to 1..7 on blur and when the preset is loaded", () => {
-    const { loaded, field, load } = setup();
+  it("refuses digits not from 1 to 7 on blur and on load, keeping the text; loads once corrected", () => {
+    const { loaded, field, load, ui } = setup();
+    const refusal = () => document.getElementById(field.getAttribute("aria-describedby") ?? "")?.textContent;
     fireEvent.change(field, { target: { value: "9" } });
     load();
-    expect(loaded).toEqual([buildPreset("galperin", 7)]);
-    expect(field.value).toBe("7");
+    expect(loaded).toEqual([]);
+    expect(field.value).toBe("9");
+    expect(field.getAttribute("aria-invalid")).toBe("true");
+    expect(refusal()).toBe("Digits of π: must be a whole number from 1 to 7 (got 9)");
+    expect(ui.getState().message?.text).toBe(refusal());
     fireEvent.change(field, { target: { value: "" } });
     fireEvent.blur(field);
-    expect(field.value).toBe("1");
+    expect(field.value).toBe("");
+    expect(refusal()).toBe('Digits of π: must be a whole number from 1 to 7 (got "")');
     fireEvent.change(field, { target: { value: "2.6" } });
     fireEvent.blur(field);
-    expect(field.value).toBe("3");
+    expect(refusal()).toBe("Digits of π: must be a whole number from 1 to 7 (got 2.6)");
+    fireEvent.change(field, { target: { value: "3" } });
+    fireEvent.blur(field);
+    expect(field.getAttribute("aria-invalid")).toBe("false");
+    expect(ui.getState().message).toBeNull();
+    load();
+    expect(loaded).toEqual([buildPreset("galperin", 3)]);
   });
 });
 
@@ -72,7 +91,7 @@ describe("Presets menu: loading", () => {
     await Promise.resolve();
     await Promise.resolve();
     // named as Save file then suggests it
-    expect(calls).toEqual([{ reproducible: true, name: "original-demo.chapgame.json" }]);
+    expect(calls).toEqual([{ reproducible: true, name: "original-demo.chapgame.json", preset: true }]);
     expect(infos).toHaveLength(1);
     expect(infos[0]).toMatch(/^Loaded the preset .+\. Undo returns to the scene you had\.$/);
   });

@@ -1,16 +1,19 @@
 /**
  * The presets menu: pick a scene to start from (Galperin's billiard takes a number of digits). The
- * digits field keeps what is typed (an emptied field stays empty, so Backspace then 6 gives 6) and
- * is clamped to 1..7 when it loses focus and when the preset is loaded. A loaded preset is one undo
+ * digits field keeps what is typed (an emptied field stays empty, so Backspace then 6 gives 6); text
+ * that is not a whole number from 1 to 7 is refused beside the field and in the message bar when
+ * it loses focus or the preset is to be loaded (nothing is loaded then), and stays for correction
+ * (it was clamped to 1..7 without a word: 9 loaded 7 digits, 2.6 three). A loaded preset is one undo
  * step, and says so (the scene it replaced also survives a reload: autosave.ts). Galperin's billiard
  * is then computed to its last collision, whatever the Calculation settings, so that the collision
  * count shows the digits of π (with the default 10 s it read 3140 of 3141: review).
  */
-import { useState } from "react";
+import { useId, useState } from "react";
 import { useEditor } from "../EditorContext";
 import type { Editor } from "../editor";
 import { buildPreset, GALPERIN_ID, PRESETS, presetFileName } from "../presets";
-import { formatNumber } from "./EditableCell";
+import { formatNumber, parseNumber } from "./EditableCell";
+import { refusedTyped } from "./typedRefusal";
 
 /** Resolves once the editor's worker runs no computation (done, cancelled or stopped). */
 function computed(editor: Editor): Promise<void> {
@@ -25,16 +28,39 @@ function computed(editor: Editor): Promise<void> {
   });
 }
 
-/** The digits typed, as a whole number from 1 to 7 (1 for an empty or broken field). */
-export function clampDigits(text: string): number {
-  return Math.max(1, Math.min(7, Math.round(Number(text) || 1)));
+/** Most digits of π the preset is offered with (its collisions grow tenfold per digit). */
+const MAX_DIGITS = 7;
+const DIGITS_LABEL = "Digits of π";
+
+/** The digits typed, or the refusal of text that is not a whole number from 1 to MAX_DIGITS. */
+export function readDigits(text: string): number | string {
+  const n = parseNumber(text);
+  return n !== null && Number.isInteger(n) && n >= 1 && n <= MAX_DIGITS
+    ? n
+    : refusedTyped(DIGITS_LABEL, `must be a whole number from 1 to ${MAX_DIGITS}`, text);
 }
 
 export function PresetsMenu() {
   const editor = useEditor();
   const [id, setId] = useState(PRESETS[0]!.id);
   const [digits, setDigits] = useState("4");
+  /** The refusal of the digits typed (null: none shown). */
+  const [refusal, setRefusal] = useState<string | null>(null);
+  const refusalId = useId();
   const entry = PRESETS.find((p) => p.id === id);
+  /** The digits to load, or null once their refusal is shown. */
+  const checkDigits = (): number | null => {
+    const n = readDigits(digits);
+    if (typeof n === "number") {
+      if (refusal !== null && editor.ui.getState().message?.text === refusal)
+        editor.ui.setState({ message: null });
+      setRefusal(null);
+      return n;
+    }
+    setRefusal(n);
+    editor.ui.setState({ message: { text: n, tone: "error" } });
+    return null;
+  };
   return (
     <div className="presets">
       <label>
@@ -51,21 +77,23 @@ export function PresetsMenu() {
         <label>
           digits{" "}
           <input
-            aria-label="Digits of π"
+            aria-label={DIGITS_LABEL}
             type="number"
             min={1}
-            max={7}
+            max={MAX_DIGITS}
             value={digits}
+            aria-invalid={refusal !== null}
+            aria-describedby={refusal === null ? undefined : refusalId}
             onChange={(e) => setDigits(e.target.value)}
-            onBlur={() => setDigits(String(clampDigits(digits)))}
+            onBlur={() => void checkDigits()}
           />
         </label>
       )}
       <button
         type="button"
         onClick={() => {
-          const n = clampDigits(digits);
-          setDigits(String(n));
+          const n = entry?.takesDigits ? checkDigits() : 4;
+          if (n === null) return;
           // named as Save file then suggests it (sceneNames.ts)
           const options = { reproducible: true, name: presetFileName(id, n), preset: true };
           void editor.loadScene(buildPreset(id, n), options).then(async (err) => {
@@ -100,6 +128,13 @@ export function PresetsMenu() {
       >
         Load preset
       </button>
+      {/* after Load preset: before it, its removal on leaving the field moved the button away from
+          the pointer pressing it */}
+      {entry?.takesDigits && refusal !== null && (
+        <span id={refusalId} className="field-error">
+          {refusal}
+        </span>
+      )}
     </div>
   );
 }

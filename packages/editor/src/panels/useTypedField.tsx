@@ -9,10 +9,12 @@
  * text unchanged does not refuse it again; Escape drops the text and the refusal (in the message bar
  * too). The refusal beside
  * the field is an alert only when the message bar does not show the same text (a screen reader
- * announced each twice), as a table cell's (EditableCell).
+ * announced each twice), as a table cell's (EditableCell). An applied value takes the refusal down
+ * once a pointer pressed meanwhile is released (pointerRelease.ts: the button pressed moved away).
  */
 import { type ReactNode, useId, useState } from "react";
 import { useEditor, useUi } from "../EditorContext";
+import { afterPointerRelease } from "./pointerRelease";
 
 export interface TypedField {
   /** What the field shows: the text typed, else `shown`. */
@@ -44,7 +46,8 @@ export function useTypedField(shown: string, apply: (typed: string) => string | 
     const why = apply(draft.trim());
     if (why === null) {
       setDraft(null);
-      setRefusal(null);
+      // not under a pointer pressing a button below it (pointerRelease.ts)
+      if (refusal !== null) afterPointerRelease(() => setRefusal((r) => (r === refusal ? null : r)));
       return;
     }
     setRefusal({ text: why, refused: draft });
