@@ -42,6 +42,20 @@ describe("SceneTitle", () => {
     await waitFor(() => expect(field.value).toBe("Cradle"));
   });
 
+  it("a title that is not text is not shown, and the field says one is there", async () => {
+    const h = testEditor();
+    await h.editor.loadScene({ ...newtonsCradle(), meta: { title: 7 } }, { undoable: false });
+    await settled(h.client);
+    render(
+      <EditorContext.Provider value={h.editor}>
+        <SceneTitle />
+      </EditorContext.Provider>,
+    );
+    const field = screen.getByRole("textbox", { name: "Scene title" }) as HTMLInputElement;
+    expect(field.value).toBe("");
+    expect(field.placeholder).toBe("the file's title is not text");
+  });
+
   it("Escape drops the text typed; leaving the field then changes nothing", async () => {
     const { editor, field } = await renderTitle();
     fireEvent.change(field, { target: { value: "Other" } });

@@ -28,7 +28,12 @@ export function SceneTitle() {
       Title{" "}
       <input
         aria-label={TITLE_LABEL}
-        placeholder="untitled"
+        // a title that is not text (a file written elsewhere) is not shown: say it is there
+        placeholder={
+          doc !== null && doc.meta?.title !== undefined && titleOf(doc) === ""
+            ? "the file's title is not text"
+            : "untitled"
+        }
         size={18}
         title={saveName === null ? undefined : `Save file suggests ${saveName}`}
         {...field.input}
