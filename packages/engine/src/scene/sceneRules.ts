@@ -9,7 +9,7 @@
  * among the discs near it, discGrid.ts), infinite lines and rays against everything; each refusal
  * names the smallest id hit, as a scan of everything would.
  */
-import { quoteId } from "../sim/refusalText.js";
+import { gravityWithFriction, quoteId } from "../sim/refusalText.js";
 import { SceneError } from "./errors.js";
 import { join } from "./fields.js";
 import { lineDirection } from "./magnitudes.js";
@@ -175,21 +175,7 @@ export function checkAndApply(view: SceneView, a: Action, path: string): void {
       if (a.gravity !== undefined && gravityOn(gravity)) {
         // every body with friction, not only the first (audit of session 20: one refusal per body)
         const ids = [...view.bodies.keys()].sort().filter((bid) => (view.bodies.get(bid) as ViewBody).mu > 0);
-        if (ids.length > 0) {
-          const shown = ids
-            .slice(0, 10)
-            .map((bid) => q(bid))
-            .join(", ");
-          const more = ids.length > 10 ? ` and ${ids.length - 10} more` : "";
-          const which =
-            ids.length === 1
-              ? `body ${shown} has mu > 0: set its mu to 0 first`
-              : `bodies ${shown}${more} have mu > 0: set their mu to 0 first`;
-          throw new SceneError(
-            join(path, "gravity"),
-            `a non-zero gravity field cannot be combined with friction (${which})`,
-          );
-        }
+        if (ids.length > 0) throw new SceneError(join(path, "gravity"), gravityWithFriction(ids));
       }
       if (a.g !== undefined) view.g = a.g;
       view.gravity = gravity;

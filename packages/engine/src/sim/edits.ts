@@ -7,7 +7,7 @@
 import { type MotionLaw, motionLaw, positionAt } from "../physics/motion.js";
 import { ChapgameError } from "./errors.js";
 import { Placement } from "./placement.js";
-import { quoteId, refused } from "./refusalText.js";
+import { gravityWithFriction, quoteId, refused } from "./refusalText.js";
 import type { BodyInit, BodyMotionInit, BodyPatch, Vec2 } from "./types.js";
 import {
   BODY_FIELDS,
@@ -35,7 +35,7 @@ export class Edits extends Placement {
    * Add a disc at the current time (`init`: x, y, r, m, and optional mu, vx, vy, each defaulting to
    * 0). Touching is allowed, overlapping another body, a line or a point is not. Throws
    * ChapgameError naming the field: `id` (empty, or a body with it exists), a bad number (`r`,
-   * `vx`, ...), an overlap (`x`), an unknown key (`init.vX`); nothing changes then.
+   * `vx`, ...), an overlap (`x`), an unknown key (`vX`: named alone, as a known field is); nothing changes then.
    */
   addBody(id: string, init: BodyInit): void {
     requireId("id", id);
@@ -212,14 +212,19 @@ export class Edits extends Placement {
    * Change the friction field `g` and/or the gravity field at the current time (a field left out is
    * kept); every body continues from its current position and velocity under the new fields. Each
    * is checked as in WorldOptions (ChapgameError naming `g` or `gravity[i]`); a non-zero gravity is
-   * refused while a body has mu > 0 (ChapgameError naming `bodies.<id>.mu`). Nothing changes on error.
+   * refused while a body has mu > 0 (ChapgameError naming `gravity`, and every such body). Nothing changes on error.
    */
   setGlobal(patch: { g?: number | undefined; gravity?: Vec2 | undefined }): void {
     requireFields("patch", patch, ["g", "gravity"]);
     const g = requireFieldRate("g", patch.g ?? this.frictionG);
     const gravity = requireGravity("gravity", patch.gravity ?? this.gravity);
-    for (const [id, s] of this.index)
-      checkFrictionGravity(`bodies.${id}.mu`, this.store.mu[s] as number, gravity);
+    if (gravity[0] !== 0 || gravity[1] !== 0) {
+      // every body with friction named, as a scene's setGlobal names them (it named only the first
+      // added, under the path `bodies.<id>.mu`, no field of this call: review of session 26)
+      const withFriction = [...this.index].filter(([, s]) => (this.store.mu[s] as number) > 0);
+      if (withFriction.length > 0)
+        throw new ChapgameError("gravity", gravityWithFriction(withFriction.map(([id]) => id).sort()));
+    }
     const now = this.now;
     const states = [...this.index.values()].map((s) => [
       s,

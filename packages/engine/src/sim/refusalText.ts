@@ -5,7 +5,9 @@
  * `quoteId(id)` writes an id as the messages quote it, in double quotes with JSON escapes
  * (`body "a"`), so that an id with spaces, quotes or nothing printable still reads unambiguously;
  * `unknownField(known)` is the reason a key no field has is refused with, the same by the World's
- * options and edits as by a scene file's objects: "unknown field (known: …)".
+ * options and edits as by a scene file's objects: "unknown field (known: …)"; `gravityWithFriction(ids)`
+ * is the reason a non-zero gravity field is refused while bodies have friction, the same by the
+ * World's setGlobal as by a scene's setGlobal action.
  */
 import { ChapgameError } from "./errors.js";
 
@@ -33,4 +35,18 @@ export function refused(path: string, reason: string, v: unknown): ChapgameError
  *  then `more` (a hint) inside the parentheses when given. */
 export function unknownField(known: readonly string[], more = ""): string {
   return `unknown field (known: ${known.join(", ")}${more})`;
+}
+
+/**
+ * The reason a non-zero gravity field is refused while the bodies `ids` (sorted, at least one) have
+ * mu > 0: every one of them named, the first ten and how many more, and what to do.
+ */
+export function gravityWithFriction(ids: readonly string[]): string {
+  const shown = ids.slice(0, 10).map(quoteId).join(", ");
+  const more = ids.length > 10 ? ` and ${ids.length - 10} more` : "";
+  const which =
+    ids.length === 1
+      ? `body ${shown} has mu > 0: set its mu to 0 first`
+      : `bodies ${shown}${more} have mu > 0: set their mu to 0 first`;
+  return `a non-zero gravity field cannot be combined with friction (${which})`;
 }

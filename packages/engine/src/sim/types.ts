@@ -11,7 +11,7 @@ export type EventKind = "bodyBody" | "bodyLine" | "bodyPoint" | "stop";
 
 /**
  * A new disc for `World.addBody`, placed at the World's current time. Every number is checked
- * (ChapgameError naming the field, e.g. `r`); a key not listed here is refused (`init.vX`), except
+ * (ChapgameError naming the field, e.g. `r`); a key not listed here is refused (`vX`), except
  * the derived `id`, `ax`, `ay` of a BodyState, so a reported state can be passed back.
  */
 export interface BodyInit {
@@ -198,7 +198,7 @@ export interface Optimizations {
 
 /**
  * Options of `new World(options)`. Each is checked (ChapgameError naming it: `g`, `gravity[1]`,
- * `time`); an unknown key is refused (`options.gx`).
+ * `time`); an unknown key is refused (`gx`).
  */
 export interface WorldOptions {
   /**

@@ -122,6 +122,13 @@ function requireNonNegativeFinite(path: string, v: unknown): number {
 
 /** A mass: between MASS_MIN and MASS_MAX, or +Infinity (immovable by collisions; see tolerances.ts). */
 export function requireMass(path: string, v: unknown): number {
+  if (v === "Infinity")
+    // a scene file's (and a motion saved as JSON's) way of writing it, passed on as it is (review
+    // of session 26: the refusal said only "got the string")
+    throw new ChapgameError(
+      path,
+      `must be a positive number (or Infinity) (got the string "Infinity"): write the number Infinity (the string is how a scene file writes it)`,
+    );
   if (typeof v !== "number" || Number.isNaN(v) || v <= 0)
     throw refused(path, "must be a positive number (or Infinity)", v);
   if (v !== Number.POSITIVE_INFINITY && !(v >= MASS_MIN && v <= MASS_MAX))
@@ -173,19 +180,27 @@ export function checkFrictionGravity(path: string, mu: number, gravity: Vec2): v
  * id, ax, ay; a motion's ax, ay, tStop) so that such a report can be passed back as it is; they are
  * derived, so the edit does not read them. Any other key is refused by name: a misspelt field
  * (`vX`, `grav`) would otherwise be dropped without a word.
+ *
+ * Paths: the object itself, when it is not an object, is `path` (`init`, `patch`, `options`); a key
+ * of it is `fieldsAt` + the key, where `fieldsAt` is how the checks of its known fields name them:
+ * "" for an argument of a World method, whose fields are named alone (`r`, `untilTime`), so that a
+ * misspelt key is named like a bad value of a known one (`radius: unknown field`, `r: must be …`),
+ * as a scene file names its top-level keys (`title: unknown field`, `g: must be …`); "optimizations."
+ * for the options' nested switches (`optimizations.broadphase`, `optimizations.broadPhase`).
  */
 export function requireFields(
   path: string,
   v: unknown,
   known: readonly string[],
   ignored: readonly string[] = [],
+  fieldsAt = "",
 ): void {
   if (typeof v !== "object" || v === null || Array.isArray(v))
     throw refused(path, `must be an object with fields ${known.join(", ")}`, v);
   for (const key of Object.keys(v))
     if (!known.includes(key) && !ignored.includes(key))
       throw new ChapgameError(
-        `${path}.${key}`,
+        `${fieldsAt}${key}`,
         // (the slip the other way round from a scene file's: actions spell a velocity v: [vx, vy])
         unknownField(known, key === "v" && known.includes("vx") ? "; a velocity is vx, vy" : ""),
       );

@@ -52,7 +52,7 @@ export class World extends Edits {
   /**
    * A World with no bodies or obstacles. Options: `g` (friction field, default 9.81), `gravity`
    * (default [0, 0]), `time` (default 0, at most TIME_MAX in size), `optimizations` (all on).
-   * Throws ChapgameError naming a bad option (`g`, `gravity[0]`, `time`) or an unknown key (`options.gx`).
+   * Throws ChapgameError naming a bad option (`g`, `gravity[0]`, `time`) or an unknown key by its own name (`gx`; `options` when the argument is no object).
    */
   constructor(options: WorldOptions = {}) {
     const { g, gravity, time, optimizations } = checkWorldOptions(options);

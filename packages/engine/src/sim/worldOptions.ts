@@ -1,7 +1,7 @@
 /**
  * The checks of `new World(options)` (WorldOptions): only the known keys, each optimisation switch
  * true or false, then g, gravity and time, in this order; the first bad one throws ChapgameError
- * naming it (`options.gx`, `optimizations.broadPhase`, `g`, `gravity[0]`, `time`). Returns the
+ * naming it (`gx`, `optimizations.broadphase`, `optimizations.broadPhase`, `g`, `gravity[0]`, `time`). Returns the
  * values to build the World with, the defaults filled in.
  */
 import { refused } from "./refusalText.js";
@@ -26,7 +26,7 @@ export function checkWorldOptions(options: WorldOptions): {
 } {
   requireFields("options", options, ["g", "gravity", "time", "optimizations"]);
   if (options.optimizations !== undefined) {
-    requireFields("options.optimizations", options.optimizations, OPTIMIZATION_KEYS);
+    requireFields("optimizations", options.optimizations, OPTIMIZATION_KEYS, [], "optimizations.");
     // Each switch a boolean: "no" or 3 would be taken as on.
     for (const key of OPTIMIZATION_KEYS) {
       const v = options.optimizations[key];
