@@ -28,6 +28,7 @@ import {
   type Packed,
   packEngine,
   type Run,
+  repoRoot,
   run,
   tempDir,
   tscBin,
@@ -178,6 +179,41 @@ describe("TypeScript consumers (the repository's tsc, strict, library types chec
     const old = tsc("tsconfig.cts-node16.json");
     expect(old.code).not.toBe(0);
     expect(old.stdout).toContain("error TS1479");
+  });
+});
+
+describe("the repository README's TypeScript check, run as it is written", () => {
+  it("its command gives TS7034 for the plain example, passes with the README's typed lines, writes no example.mjs", () => {
+    // Review of session 26: the README said "checked with `tsc --strict`"; run as written, tsc's
+    // defaults (CommonJS, ES5) met the package's Map types (10 errors, none of them TS7034) and
+    // wrote example.mjs over the JavaScript example.
+    const readme = readFileSync(join(repoRoot, "README.md"), "utf8");
+    const command = /`npx tsc ([^`]*) example\.mts`/.exec(readme)?.[1];
+    expect(command, "the README gives the tsc command line").toBeDefined();
+    const flags = (command as string).split(/\s+/);
+    const code = /```js\n([\s\S]*?)```/.exec(readme)?.[1] as string;
+    const typed = /```ts\n([\s\S]*?)```/.exec(readme)?.[1] as string;
+    const [importLine, logLine] = typed.trim().split("\n") as [string, string];
+    write("example.mjs", code);
+    const check = (source: string): Run => {
+      write("example.mts", source);
+      return node([tscBin, ...flags, "example.mts"], project);
+    };
+    const plain = check(code);
+    expect(plain.code).not.toBe(0);
+    expect(plain.stdout.split("\n").filter((l) => /error TS/.test(l))[0]).toMatch(
+      /^example\.mts\(\d+,\d+\): error TS7034: Variable 'log' implicitly has type/,
+    );
+    const ts = code.replace(/^import .*$/m, importLine).replace(/^const log = \[\];$/m, logLine);
+    expect(ts).toContain(logLine);
+    const r = check(ts);
+    expect(r.stdout + r.stderr).toBe("");
+    expect(r.code).toBe(0);
+    expect(readFileSync(join(project, "example.mjs"), "utf8")).toBe(code);
+    // What the README says of the flags it adds: without them, tsc's defaults fail on the package.
+    const bare = node([tscBin, "--strict", "--noEmit", "example.mts"], project);
+    expect(bare.code).not.toBe(0);
+    expect(bare.stdout).toMatch(/error TS2583: Cannot find name 'Map'/);
   });
 });
 
