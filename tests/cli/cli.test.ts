@@ -167,6 +167,18 @@ describe("chapgame on invalid input: exit 2, one line on stderr, no stack trace"
       '{"format":"chapgame","version":1,"actions":[{"time":0,"type":"addBody","id":"a","x":0,"y":0,"r":1e-999,"m":1}]}',
       "chapgame: <stdin>: actions[0].r: must be a positive finite number (the file writes 1e-999, below the smallest double (about 5e-324): JSON reads it as 0)",
     ],
+    [
+      "NaN written for a number (JSON has none)",
+      ["simulate", "-"],
+      '{"format":"chapgame","version":1,"actions":[{"time":0,"type":"addBody","id":"a","x":NaN,"y":0,"r":1,"m":1}]}',
+      "chapgame: <stdin>: json: invalid JSON at line 1, column 85: JSON has no NaN (write a finite number)",
+    ],
+    [
+      "two bodies added with one id",
+      ["check", "-"],
+      '{"format":"chapgame","version":1,"actions":[{"time":0,"type":"addBody","id":"a","x":0,"y":0,"r":1,"m":1},{"time":0,"type":"addBody","id":"a","x":5,"y":0,"r":1,"m":1}]}',
+      'chapgame: <stdin>: actions[1].id: body "a" already exists at time 0',
+    ],
   ];
   it("a truncated scene file: its name, and where the text stops", () => {
     const file = join(dir, "truncated.json");
@@ -200,10 +212,41 @@ describe("chapgame on invalid input: exit 2, one line on stderr, no stack trace"
     it(name, () => {
       const r = run(args, input);
       expect(r.code).toBe(2);
-      expect(r.stdout).toBe("");
+      // check prints its verdict on stdout too
+      if (args[0] === "check") expect(JSON.parse(r.stdout)).toMatchObject({ valid: false });
+      else expect(r.stdout).toBe("");
       expect(r.stderr.startsWith(message)).toBe(true);
       expect(r.stderr.trimEnd().split("\n")).toHaveLength(1);
     });
+
+  it("a disc placed on a floor under gravity: exit 2, the result up to there, and what to do", () => {
+    // Review of session 26: the message said only that resting contact is not supported.
+    const resting = serializeScene({
+      format: "chapgame",
+      version: 1,
+      g: 0,
+      gravity: [0, -9.81],
+      actions: [
+        { time: 0, type: "addLine", id: "floor", p1: [-10, 0], p2: [10, 0], kind: "segment" },
+        { time: 0, type: "addBody", id: "ball", x: 0, y: 1, r: 1, m: 1 },
+      ],
+    });
+    const r = run(["simulate", "-", "--until-time", "1"], resting);
+    expect(r.code).toBe(2);
+    const out = JSON.parse(r.stdout);
+    expect([out.reason, out.time]).toEqual(["error", 0]);
+    const hint = 'place the body a little apart from "floor" (it then bounces, elastically)';
+    expect(out.error).toContain('body "ball" rests against "floor"');
+    expect(out.error).toContain(hint);
+    expect(r.stderr.trimEnd().split("\n")).toHaveLength(1);
+    expect(r.stderr).toContain(hint);
+    // and doing so works: a little above, it bounces
+    const lifted = resting.replace('"y": 1,', '"y": 1.5,');
+    expect(lifted).not.toBe(resting);
+    const bounced = run(["simulate", "-", "--until-time", "1"], lifted);
+    expect([bounced.code, bounced.stderr]).toEqual([0, ""]);
+    expect(JSON.parse(bounced.stdout).counts.bodyLine).toBe(2); // at t = 0.319 and 0.958
+  });
 
   it("--help prints the usage and exits 0", () => {
     const r = run(["--help"]);

@@ -166,7 +166,7 @@ export class ContactGeometry extends ZenoGuard {
       (pressedInto(vx, vy, ax, ay, nx, ny, round, friction) || (round && this.staysOnPoint(s, px, py)))
     ) {
       throw new SimulationError(
-        `body ${quoteId(this.store.ids[s] as string)} rests against ${quoteId(otherId)} under an acceleration at t=${t}: resting contact is not supported (it would take infinitely many bounces)`,
+        `body ${quoteId(this.store.ids[s] as string)} rests against ${quoteId(otherId)} under an acceleration at t=${t}: resting contact is not supported (it would take infinitely many bounces): place the body a little apart from ${quoteId(otherId)} (it then bounces, elastically), or give it no acceleration towards it`,
         t,
         [this.store.ids[s] as string, otherId],
       );
