@@ -161,7 +161,7 @@ export function requireVec(path: string, v: unknown): Vec2 {
 
 export function requireLineKind(path: string, v: unknown): "line" | "ray" | "segment" {
   if (v !== "line" && v !== "ray" && v !== "segment")
-    throw refused(path, 'must be "line", "ray" or "segment"', v);
+    throw refused(path, 'must be one of "line", "ray", "segment"', v); // a scene's words (scene/fields.ts)
   return v;
 }
 
