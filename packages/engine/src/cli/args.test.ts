@@ -135,7 +135,7 @@ describe("parseArgs", () => {
     // an option before the command (a misspelt --version, or the command left out) is not a command
     [["--versio"], "unknown option --versio before a command: the command comes first (simulate, state"],
     [["--until-time", "5", "s.json"], "unknown option --until-time before a command"],
-    [["simulate"], "simulate: missing SCENE file"],
+    [["simulate"], "simulate: missing SCENE file (a scene file's name, or - to read standard input)"],
     [["simulate", "a", "b"], "one SCENE file expected"],
     [["simulate", "a", "--at", "1"], "unknown option --at for simulate"],
     [["state", "a"], "state: --at T is required"],
@@ -167,12 +167,23 @@ describe("parseArgs", () => {
       ["simulate", "a", "--max-events", "1e21"],
       "--max-events: must be an integer from 0 to 9007199254740991",
     ],
-    [["simulate", "a", "--max-events", "0x10"], "--max-events: must be a non-negative integer"],
+    // review of session 26: "must be a non-negative integer" did not say what was wrong with 0x10
+    [
+      ["simulate", "a", "--max-events", "0x10"],
+      '--max-events: must be a whole number written in decimal (1000, 1e6), got "0x10"',
+    ],
+    [["simulate", "a", "--max-events", "-0"], '--max-events: must be a non-negative integer, got "-0"'],
     [["simulate", "a", "--max-events", "2.5e0"], "--max-events: must be a non-negative integer"],
     // regression (acceptance audit): times took Number()'s other notations, counts did not
-    [["simulate", "a", "--until-time", "0x10"], '--until-time: must be a non-negative number, got "0x10"'],
-    [["state", "a", "--at", "0b11"], '--at: must be a non-negative number, got "0b11"'],
+    // (review of session 26: refused as "must be a non-negative number", which 0x10 is)
+    [
+      ["simulate", "a", "--until-time", "0x10"],
+      '--until-time: must be a number written in decimal (12.5, 1e-3), got "0x10"',
+    ],
+    [["state", "a", "--at", "0b11"], '--at: must be a number written in decimal (12.5, 1e-3), got "0b11"'],
     [["state", "a", "--at", "1_000"], '--at: must be a non-negative number, got "1_000"'],
+    [["state", "a", "--at", "-0x10"], '--at: must be a non-negative number, got "-0x10"'],
+    [["state", "a", "--at="], '--at: must be a non-negative number, got ""'],
     // regression: an option was taken for the value of the one before it
     [["simulate", "a", "--until-time", "--events"], "--until-time needs a value"],
     [["--version", "extra"], '--version takes no arguments, got "extra"'],

@@ -124,6 +124,10 @@ function time(name: string, v: string, hint = ""): number {
   const t = Number(v);
   if (/^[+-]?infinity$/i.test(v.trim()))
     throw new UsageError(`${name}: must be a finite number, got "${v}"${hint}`);
+  if (!DECIMAL_TIME.test(v.trim()) && /^\+?\d/.test(v.trim()) && t >= 0)
+    // 0x10, 0b11, 1_000: a number to Number() or to a reader, but not a time as the CLI reads one
+    // (review of session 26: "must be a non-negative number" did not say what was wrong with 0x10)
+    throw new UsageError(`${name}: must be a number written in decimal (12.5, 1e-3), got "${v}"`);
   if (!DECIMAL_TIME.test(v.trim()) || t < 0)
     throw new UsageError(`${name}: must be a non-negative number, got "${v}"`);
   if (!Number.isFinite(t)) throw new UsageError(`${name}: must be a finite number, got "${v}"${hint}`);
@@ -136,6 +140,8 @@ const DECIMAL = /^\+?\d+(\.\d+)?(e\+?\d+)?$/i;
 
 function count(name: string, v: string): number {
   const n = Number(v);
+  if (!DECIMAL.test(v.trim()) && /^\+?\d/.test(v.trim()) && Number.isInteger(n) && n >= 0)
+    throw new UsageError(`${name}: must be a whole number written in decimal (1000, 1e6), got "${v}"`);
   if (!DECIMAL.test(v.trim()) || !Number.isInteger(n))
     throw new UsageError(`${name}: must be a non-negative integer, got "${v}"`);
   if (!Number.isSafeInteger(n))
@@ -212,7 +218,8 @@ export function parseArgs(argv: readonly string[]): Command {
       opts.set(name, true);
     }
   }
-  if (positional.length === 0) throw new UsageError(`${cmd}: missing SCENE file`);
+  if (positional.length === 0)
+    throw new UsageError(`${cmd}: missing SCENE file (a scene file's name, or - to read standard input)`);
   if (positional.length > 1)
     throw new UsageError(`${cmd}: one SCENE file expected, got ${positional.length} arguments`);
   const scene = positional[0] as string;
