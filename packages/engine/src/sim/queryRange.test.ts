@@ -25,9 +25,15 @@ describe("World.body / bodies after the current time", () => {
 
   it("refuses an infinite time even when nothing will ever happen (a disc gliding on was at NaN)", () => {
     const w = new World({ g: 0 });
+    // an empty World too (review of session 26: bodies(NaN) gave [], bodyArrays(NaN) a time of NaN)
+    for (const t of [Number.NaN, Number.POSITIVE_INFINITY]) {
+      expect(() => w.bodies(t)).toThrow(`t: must be a finite time (got ${t})`);
+      expect(() => w.bodyArrays(t)).toThrow(`t: must be a finite time (got ${t})`);
+    }
     w.addBody("a", { x: 0, y: 0, r: 1, m: 1, vx: 1 });
     expect(w.nextEventTime()).toBe(Number.POSITIVE_INFINITY);
-    for (const t of [Number.POSITIVE_INFINITY, Number.NEGATIVE_INFINITY]) {
+    // NaN is no time, not one before the body's motion (it was refused as that)
+    for (const t of [Number.NaN, Number.POSITIVE_INFINITY, Number.NEGATIVE_INFINITY]) {
       expect(() => w.body("a", t)).toThrow(`t: must be a finite time (got ${t})`);
       expect(() => w.bodies(t)).toThrow(ChapgameError);
     }

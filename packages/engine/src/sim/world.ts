@@ -143,7 +143,9 @@ export class World extends Edits {
    * grid an edit sees) and is kept until a change could move it, so a loop of queries pays once.
    */
   private requireNoEventBefore(t: number): void {
-    if (typeof t !== "number" || t === INF || t === -INF) throw refused("t", "must be a finite time", t);
+    // NaN too: it passed to stateOf, which called it a time before the body's motion (review of
+    // session 26), and an empty World gave bodies(NaN) = [] and bodyArrays(NaN).time = NaN
+    if (typeof t !== "number" || !Number.isFinite(t)) throw refused("t", "must be a finite time", t);
     if (!(t > this.now)) return;
     if (this.nextEventChanges !== this.changes) {
       this.nextEventBlocked = "";
