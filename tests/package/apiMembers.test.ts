@@ -59,3 +59,17 @@ describe("api.md names every public member of World and Timeline with its parame
     expect(all.filter((m) => !text.includes(m))).toEqual([]);
   });
 });
+
+describe("api.md's BodyArrays order", () => {
+  it('is JavaScript\'s default sort, as its examples say ("B" < "a", "b10" < "b9")', async () => {
+    const line = doc.split("\n").find((l) => l.startsWith("| type `BodyArrays` |"));
+    expect(line).toContain('`"B" < "a"`, `"b10" < "b9"`');
+    const { World } = (await import(join(enginePkg, "dist/index.js"))) as typeof import("@chapgame/engine");
+    const w = new World({ g: 0 });
+    ["b9", "a", "B", "b10"].forEach((id, i) => {
+      w.addBody(id, { x: 3 * i, y: 0, r: 1, m: 1 });
+    });
+    expect(w.bodyArrays().ids).toEqual(["B", "a", "b10", "b9"]);
+    expect(w.bodies().map((b) => b.id)).toEqual(["B", "a", "b10", "b9"]);
+  });
+});
