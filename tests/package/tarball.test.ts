@@ -9,7 +9,7 @@
 import { readFileSync, rmSync } from "node:fs";
 import { dirname, join, normalize } from "node:path";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { npm, type Packed, packEngine, readPacked } from "./npmTools.js";
+import { engineManifest, npm, type Packed, packEngine, readPacked, repoRoot, run } from "./npmTools.js";
 
 let packed: Packed;
 let manifest: {
@@ -136,5 +136,15 @@ describe("the tarball of @chapgame/engine", () => {
     );
     expect(packed.size).toBeLessThan(1_000_000);
     expect(packed.unpackedSize).toBeLessThan(4_000_000);
+  });
+});
+
+describe("the README's npm pack in the repository", () => {
+  it("writes a tarball git ignores (it showed as untracked after following the README)", () => {
+    const readme = readFileSync(join(repoRoot, "README.md"), "utf8");
+    const name = /`npm pack -w @chapgame\/engine` writes `([^`]+\.tgz)`/.exec(readme)?.[1];
+    expect(name).toBe(`chapgame-engine-${engineManifest().version}.tgz`);
+    const r = run("git", ["check-ignore", "--no-index", join(repoRoot, name as string)], repoRoot);
+    expect([r.code, r.stderr]).toEqual([0, ""]);
   });
 });
