@@ -73,3 +73,18 @@ describe("api.md's BodyArrays order", () => {
     expect(w.bodies().map((b) => b.id)).toEqual(["B", "a", "b10", "b9"]);
   });
 });
+
+describe("api.md's World counts", () => {
+  it("is live, as the EventCounts row says: a copy keeps the snapshot", async () => {
+    const line = doc.split("\n").find((l) => l.startsWith("| type `EventCounts` |"));
+    expect(line).toContain("one live, read-only object");
+    const { World } = (await import(join(enginePkg, "dist/index.js"))) as typeof import("@chapgame/engine");
+    const w = new World({ g: 0 });
+    w.addBody("a", { x: 0, y: 0, r: 1, m: 1, vx: 1 });
+    w.addBody("b", { x: 5, y: 0, r: 1, m: 1 });
+    const live = w.counts;
+    const copy = { ...w.counts };
+    w.advance({});
+    expect([live.bodyBody, copy.bodyBody]).toEqual([1, 0]);
+  });
+});
