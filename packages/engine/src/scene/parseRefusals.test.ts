@@ -172,7 +172,7 @@ describe("parseScene refuses, naming the path and the reason", () => {
     [
       "friction with gravity",
       base([disc("a", 0, { mu: 0.1 })], { gravity: [0, -1] }),
-      "actions[0].mu: friction (mu > 0) cannot be combined with a non-zero gravity field",
+      "actions[0].mu: friction (mu > 0) cannot be combined with a non-zero gravity field (got 0.1): set mu to 0, or the gravity field to [0, 0] first",
     ],
     [
       "gravity switched on with friction",

@@ -9,7 +9,7 @@
  * among the discs near it, discGrid.ts), infinite lines and rays against everything; each refusal
  * names the smallest id hit, as a scan of everything would.
  */
-import { gravityWithFriction, quoteId } from "../sim/refusalText.js";
+import { frictionUnderGravity, gravityWithFriction, quoteId } from "../sim/refusalText.js";
 import { SceneError } from "./errors.js";
 import { join } from "./fields.js";
 import { lineDirection } from "./magnitudes.js";
@@ -32,8 +32,8 @@ function gravityOn(g: Vec2): boolean {
   return g[0] !== 0 || g[1] !== 0;
 }
 
-function frictionWithGravity(path: string): SceneError {
-  return new SceneError(path, "friction (mu > 0) cannot be combined with a non-zero gravity field");
+function frictionWithGravity(path: string, mu: number): SceneError {
+  return new SceneError(path, frictionUnderGravity(mu));
 }
 
 function checkDisc(view: SceneView, path: string, id: string, x: number, y: number, r: number): void {
@@ -105,7 +105,7 @@ export function checkAndApply(view: SceneView, a: Action, path: string): void {
     case "addBody": {
       if (view.hasBody(a.id)) throw exists(a.id, "body", view, path);
       const mu = a.mu ?? 0;
-      if (mu > 0 && gravityOn(view.gravity)) throw frictionWithGravity(join(path, "mu"));
+      if (mu > 0 && gravityOn(view.gravity)) throw frictionWithGravity(join(path, "mu"), mu);
       checkDisc(view, path, a.id, a.x, a.y, a.r);
       view.setBody(a.id, { x: a.x, y: a.y, r: a.r, mu, known: true });
       return;
@@ -118,7 +118,7 @@ export function checkAndApply(view: SceneView, a: Action, path: string): void {
       if (b === undefined) throw missing(a.id, "body", view, path);
       const mu = a.mu ?? b.mu;
       if (a.mu !== undefined && mu > 0 && gravityOn(view.gravity))
-        throw frictionWithGravity(join(path, "mu"));
+        throw frictionWithGravity(join(path, "mu"), mu);
       const known = b.known || (a.x !== undefined && a.y !== undefined);
       const x = a.x ?? b.x;
       const y = a.y ?? b.y;

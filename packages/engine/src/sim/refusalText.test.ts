@@ -160,7 +160,7 @@ describe("the World's refusals say what was given and quote ids as the scene's d
     const mu = new World({ g: 1, gravity: [0, -1] });
     expect(refusal(() => mu.addBody("b", disc({ mu: 0.5 })))).toEqual([
       "mu",
-      "mu: must be 0 while the gravity field is non-zero (got 0.5): friction under gravity is not polynomial motion",
+      "mu: friction (mu > 0) cannot be combined with a non-zero gravity field (got 0.5): set mu to 0, or the gravity field to [0, 0] first",
     ]);
   });
 
@@ -216,6 +216,17 @@ describe("the World's refusals say what was given and quote ids as the scene's d
         () => parseScene({ format: "chapgame", version: 1, gravity, actions: [] }),
       ]),
     ];
+    // friction under gravity (it was "must be 0 while the gravity field is non-zero" in a World)
+    pairs.push([
+      () => new World({ g: 0, gravity: [0, -1] }).addBody("a", disc({ mu: 0.5 })),
+      () =>
+        parseScene({
+          format: "chapgame",
+          version: 1,
+          gravity: [0, -1],
+          actions: [{ time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, mu: 0.5 }],
+        }),
+    ]);
     for (const [inWorld, inScene] of pairs) expect(reasonOf(inWorld)).toBe(reasonOf(inScene));
     // an id: `body "a"` in both (the World's overlap, the Timeline's scene rule)
     const w = world();

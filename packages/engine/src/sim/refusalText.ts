@@ -5,9 +5,9 @@
  * `quoteId(id)` writes an id as the messages quote it, in double quotes with JSON escapes
  * (`body "a"`), so that an id with spaces, quotes or nothing printable still reads unambiguously;
  * `unknownField(known)` is the reason a key no field has is refused with, the same by the World's
- * options and edits as by a scene file's objects: "unknown field (known: …)"; `gravityWithFriction(ids)`
- * is the reason a non-zero gravity field is refused while bodies have friction, the same by the
- * World's setGlobal as by a scene's setGlobal action.
+ * options and edits as by a scene file's objects: "unknown field (known: …)"; `frictionUnderGravity(mu)`
+ * and `gravityWithFriction(ids)` are the reasons a non-zero gravity field is refused while bodies have friction, the same by the
+ * World's edits as by a scene's actions: a body's mu > 0 under gravity, and gravity switched on under bodies with friction.
  */
 import { ChapgameError } from "./errors.js";
 
@@ -35,6 +35,16 @@ export function refused(path: string, reason: string, v: unknown): ChapgameError
  *  then `more` (a hint) inside the parentheses when given. */
 export function unknownField(known: readonly string[], more = ""): string {
   return `unknown field (known: ${known.join(", ")}${more})`;
+}
+
+/**
+ * The reason a friction coefficient mu > 0 is refused under a non-zero gravity field, the same by
+ * the World's edits as by a scene's actions (the World said "must be 0 while the gravity field is
+ * non-zero", a scene "friction (mu > 0) cannot be combined with …": review of session 26): the
+ * rule, the value given and what to do.
+ */
+export function frictionUnderGravity(mu: unknown): string {
+  return `friction (mu > 0) cannot be combined with a non-zero gravity field (got ${given(mu)}): set mu to 0, or the gravity field to [0, 0] first`;
 }
 
 /**

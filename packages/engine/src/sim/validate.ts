@@ -13,7 +13,7 @@ import {
   TIME_MAX,
 } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
-import { given, refused, unknownField } from "./refusalText.js";
+import { frictionUnderGravity, given, refused, unknownField } from "./refusalText.js";
 import type { Vec2 } from "./types.js";
 
 export function requireId(path: string, id: unknown): string {
@@ -168,10 +168,7 @@ export function requireLineKind(path: string, v: unknown): "line" | "ray" | "seg
 /** Friction (mu > 0 with g > 0 would be needed to matter) is refused under a non-zero gravity field. */
 export function checkFrictionGravity(path: string, mu: number, gravity: Vec2): void {
   if (mu > 0 && (gravity[0] !== 0 || gravity[1] !== 0))
-    throw new ChapgameError(
-      path,
-      `must be 0 while the gravity field is non-zero (got ${given(mu)}): friction under gravity is not polynomial motion`,
-    );
+    throw new ChapgameError(path, frictionUnderGravity(mu));
 }
 
 /**
