@@ -203,7 +203,9 @@ export class World extends Edits {
    * World's time is the failing event's (`error.time`) and advancing again throws the same.
    * `onEvent` may edit the World (bodies, obstacles, globals): the edit acts as if this advance had
    * stopped after that event and the edit been made before the next, bit for bit. Calling advance
-   * from `onEvent` throws ChapgameError (path `advance`).
+   * from `onEvent` throws ChapgameError (path `advance`). An error `onEvent` throws ends the
+   * advance and is passed on, the World left as after that event (processed, counted, `time` at
+   * it; the callback's edits before the throw kept), as maxEvents would leave it.
    */
   advance(limits: AdvanceLimits = {}, onEvent?: (e: WorldEvent) => void): AdvanceResult {
     requireFields("limits", limits, ["untilTime", "maxEvents"]);
