@@ -195,9 +195,11 @@ export class TimelineHost extends HostCompute {
     // Where the user's history reaches: past the horizon while an earlier edit's history is still
     // being brought back (a second quick edit must not cut it to the part recomputed so far).
     const horizon = Math.max(this.tl.horizon, restoreTarget(this.job));
+    // A refused edit changes nothing: the computation it met runs on (dropped without an info, it
+    // left the client showing it computing forever: editorUndoSequences, seed 704378602).
+    const running = this.job;
     this.job = null;
     let changed = false;
-    this.series.cut(Math.min(...actions.map((a) => a.time)));
     try {
       for (const a of actions) {
         const merged = merge ? mergedEdit(this.tl.actions, a) : null;
@@ -212,12 +214,14 @@ export class TimelineHost extends HostCompute {
     } catch (e) {
       if (changed) {
         // Undo the part that was applied: rebuild the old list and recompute the old horizon.
+        this.series.cut(Math.min(...actions.map((a) => a.time)));
         this.tl.setActions(before);
         this.changed(true);
         this.restoreTo(horizon);
-      }
+      } else this.job = running;
       throw e;
     }
+    this.series.cut(Math.min(...actions.map((a) => a.time)));
     this.changed(true);
     const last = this.tl.actions.at(-1)?.time ?? 0;
     const checkTo = Math.min(horizon, last);
