@@ -40,10 +40,10 @@ const warmed = new Set();
  * backing stores (outside the heap), grown over enough copies (at least 10^5 bodies in all) that
  * the collector's noise of a few hundred kB is small against it.
  */
-function bytesPerBody(engine, scene) {
+async function bytesPerBody(engine, scene) {
   const n = scene.bodies.length;
   const copies = Math.max(1, Math.ceil(1e5 / n));
-  gc();
+  await settle();
   const before = memoryInUse();
   const kept = [];
   for (let i = 0; i < copies; i++) {
@@ -51,9 +51,20 @@ function bytesPerBody(engine, scene) {
     world.advance({ maxEvents: 0 });
     kept.push(world);
   }
-  gc();
+  await settle();
   const bytes = memoryInUse() - before;
   return bytes / (kept.length * n);
+}
+
+/**
+ * Collect, and let the event loop turn, three times: right after gc() the array buffers it freed
+ * are at times still counted (up to 190 B/body more at N = 1e5; docs/engine-throughput.md, session 26).
+ */
+async function settle() {
+  for (let i = 0; i < 3; i++) {
+    gc();
+    await new Promise((resolve) => setTimeout(resolve, 50));
+  }
 }
 
 /** Bytes in use by JS objects and by ArrayBuffer backing stores (typed arrays live outside the heap). */
@@ -118,7 +129,7 @@ async function measureRow(engine, n, quick) {
   const warm = buildWorld(engine, gas({ n: 1000, packing: 0.1, speed: 10, seed: 2, span: 1e9 }));
   warm.advance({ maxEvents: quick ? 100000 : 300000 });
   const scene = gas({ n, packing: 0.1, speed: 10, seed: 11, span: 1e9 });
-  const heapBytesPerBody = bytesPerBody(engine, scene);
+  const heapBytesPerBody = await bytesPerBody(engine, scene);
   gc();
   const t0 = nowNs();
   const world = buildWorld(engine, scene);
