@@ -18,7 +18,7 @@ export class ContactTimes extends BroadPhase {
    * Earliest contact time of bodies s and o, or +Infinity. The result is symmetric (it depends
    * only on the two motions), so the last pair solved is remembered: after a collision both
    * participants are re-predicted and the second would solve the same pair again. The plain grid's
-   * cell scan (predictor.ts scanCell) calls solvePair directly: there the memo cost more than it saved.
+   * cell scan (candidates.ts scanCell) calls solvePair directly: there the memo cost more than it saved.
    */
   protected pairTime(s: number, o: number): number {
     const b = this.store;
