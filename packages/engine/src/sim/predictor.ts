@@ -3,8 +3,9 @@
  * (collision or stop) and its next cell crossing; the heap key is the earlier of the two. Here are
  * the scans (which cells, levels and lines a body is tested against) and the next cell crossing;
  * one test and the choice of the earliest candidate are candidates.ts's, the contact times
- * contactTimes.ts's, functions of the motions alone; ties at one time are broken in a canonical
- * order (ids), so the prediction does not depend on the order bodies were added or tested.
+ * pairTimes.ts's and contactTimes.ts's, functions of the motions alone; ties at one time are broken
+ * in a canonical order (ids), so the prediction does not depend on the order bodies were added or
+ * tested.
  */
 import { EV_BODY, EV_NONE, EV_STOP } from "./bodyStore.js";
 import { Candidates } from "./candidates.js";
