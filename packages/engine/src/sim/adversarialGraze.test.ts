@@ -3,7 +3,7 @@
 // changed the velocities by less than an ulp), and the same contact was found again at once, for
 // ever, and reported as a Zeno state. Now such a contact is a graze (APPROACH_NOISE).
 import { describe, expect, it } from "vitest";
-import { firstDownCrossingQuadratic } from "../physics/timeOfImpact.js";
+import { firstDownCrossingQuadratic } from "../physics/quadraticCrossing.js";
 import { minCentreDistance, rackBreak, totals } from "./testSupport.js";
 import { World } from "./world.js";
 

@@ -6,7 +6,7 @@
  * centre crosses a finite end outwards, or +Infinity, and writes the side (-1 lower, +1 upper) to
  * side[0]. A centre already outside by a rounding error while moving outwards exits at lo.
  */
-import { firstDownCrossingQuadratic } from "../physics/timeOfImpact.js";
+import { firstDownCrossingQuadratic } from "../physics/quadraticCrossing.js";
 
 export function axisExit(
   p0: number,
