@@ -207,7 +207,7 @@ export const GRID_MIN_BODIES = 32;
 export const GRID_CELLS_PER_BODY = 3;
 
 /**
- * Calendar event queue (sim/calendarQueue.ts): the bucket width aims at this many queue entries
+ * Calendar event queue (sim/calendarQueue.ts; its width in sim/calendarWidth.ts): the bucket width aims at this many queue entries
  * falling due per bucket (a small front heap, few empty buckets), and the queue rebuilds with a new
  * width when the measured count drifts by more than CALENDAR_REBUILD_FACTOR either way. Only speed
  * depends on them: the pop order is (time, canonical order) whatever the width.
