@@ -17,7 +17,7 @@
 import { arraysFor, type BodyArrays, writeMotionAt } from "../sim/bodyArrays.js";
 import type { TimelineCore } from "./core.js";
 import { type Keyframe, keyframeAtOrBefore, loadMotions } from "./keyframe.js";
-import { orderOf } from "./keyframeDelta.js";
+import { orderOf } from "./keyframeChain.js";
 import { MotionTable, STRIDE } from "./motionTable.js";
 import { K_ACTION } from "./records.js";
 import { applyRecord, requireHeadlessTime } from "./replay.js";

@@ -17,7 +17,8 @@
 import type { ZenoCounters } from "../sim/zenoWatch.js";
 import type { TimelineCore } from "./core.js";
 import { type Keyframe, loadMotions, snapshotMotions, snapshotProps, worldAt } from "./keyframe.js";
-import { deltaSince, mergeById, orderOf } from "./keyframeDelta.js";
+import { orderOf } from "./keyframeChain.js";
+import { deltaSince, mergeById } from "./keyframeDelta.js";
 import { MotionTable } from "./motionTable.js";
 
 /** Records between keyframes: at least this many, so small scenes do not drown in keyframes… */

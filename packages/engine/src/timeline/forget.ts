@@ -19,7 +19,7 @@
 import { show } from "./args.js";
 import type { TimelineCore } from "./core.js";
 import { type Keyframe, keyframeAtOrBefore, loadMotions } from "./keyframe.js";
-import { arraysOf } from "./keyframeDelta.js";
+import { arraysOf } from "./keyframeChain.js";
 
 /** Start of the kept history: keyframes[0]'s time (0 until something is forgotten, and without
  *  history). */

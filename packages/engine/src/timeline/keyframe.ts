@@ -6,13 +6,13 @@
  * future bit for bit (World.restoreBodyMotion: addBodyMotion without the overlap check, since the
  * World's own motions may hold a pressed pair's overlap). stateAt(t) = the last keyframe at or
  * before t + the records up to t. A keyframe after a group of actions may be a delta of the one
- * before it (keyframeDelta.ts): read its order and arrays through orderOf and arraysOf.
+ * before it (keyframeDelta.ts): read its order and arrays through orderOf and arraysOf (keyframeChain.ts).
  */
 import type { Vec2 } from "../scene/types.js";
 import type { LineState, PointState } from "../sim/types.js";
 import { World } from "../sim/world.js";
 import type { ZenoCounters } from "../sim/zenoWatch.js";
-import { arraysOf, loadDelta, orderOf } from "./keyframeDelta.js";
+import { arraysOf, loadDelta, orderOf } from "./keyframeChain.js";
 import { type MotionTable, STRIDE } from "./motionTable.js";
 import type { TimelineCounts } from "./types.js";
 
@@ -120,18 +120,25 @@ export function liveNumber(kf: Keyframe, ids: readonly string[], id: string): nu
 
 /** Load a keyframe's motions into `table` (made large enough for kf.bodyCount bodies). */
 export function loadMotions(kf: Keyframe, table: MotionTable): void {
-  if (kf.full === null) {
-    loadDelta(kf, table, (k) => loadMotions(k, table));
-    return;
-  }
+  if (kf.full === null) loadDelta(kf, table, (full, marks, mark) => loadFull(full, table, marks, mark));
+  else loadFull(kf, table, NO_MARKS, 0);
+}
+
+const NO_MARKS = new Uint32Array(0);
+
+/** Load a full keyframe's bodies into `table`, but those marked (marks[n] === mark, mark > 0: a
+ *  delta's row loaded them already). */
+function loadFull(kf: Keyframe, table: MotionTable, marks: Uint32Array, mark: number): void {
   table.ensure(kf.bodyCount);
-  const { order, motions: m, props: p } = kf.full;
+  const { order, motions: m, props: p } = kf.full as KeyframeArrays;
   const [gx, gy] = kf.gravity;
   for (let k = 0; k < order.length; k++) {
+    const n = order[k] as number;
+    if (mark !== 0 && marks[n] === mark) continue;
     const q = k * KF_MOTION;
-    table.setProps(order[k] as number, p[3 * k] as number, p[3 * k + 1] as number, p[3 * k + 2] as number);
+    table.setProps(n, p[3 * k] as number, p[3 * k + 1] as number, p[3 * k + 2] as number);
     table.start(
-      order[k] as number,
+      n,
       m[q] as number,
       m[q + 1] as number,
       m[q + 2] as number,

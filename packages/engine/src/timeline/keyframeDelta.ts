@@ -16,16 +16,12 @@
  *   full loads, and its order a sort of at most that many ids (stateAt stays bounded; a scene built
  *   in one group, fromScene's, gets a full keyframe: its reads sort nothing). A removed body's
  *   number is in its action's record (actionGroup.ts).
- * - loadDelta(kf, table): a keyframe's motions, its chain's full keyframe loaded and each delta's rows
- *   after it, the same numbers the full keyframe of that point gives (each row is loaded as a full
- *   keyframe loads it).
- * - orderOf(kf, ids), arraysOf(kf, ids): the live order, and the full keyframe's arrays, of any
- *   keyframe (the last one asked for kept: a reader asks the same keyframe again and again).
+ * Reading a delta (its motions, its order, the arrays a full keyframe would hold): keyframeChain.ts.
  */
 import type { Action } from "../scene/types.js";
 import type { TimelineCore } from "./core.js";
-import type { Keyframe, KeyframeArrays, KeyframeDelta } from "./keyframe.js";
-import { MotionTable, STRIDE } from "./motionTable.js";
+import type { Keyframe, KeyframeDelta } from "./keyframe.js";
+import { STRIDE } from "./motionTable.js";
 import { K_ACTION, K_BODY_BODY } from "./records.js";
 
 /** Numbers per row of a delta: t0, x0, y0, vx0, vy0, r, m, mu. */
@@ -109,80 +105,4 @@ export function deltaSince(c: TimelineCore, prev: Keyframe): KeyframeDelta | nul
     removed: Uint32Array.from(removed),
     chainRows,
   };
-}
-
-/** The chain of `kf` from its full keyframe on (full first). */
-function chainOf(kf: Keyframe): Keyframe[] {
-  const chain = [kf];
-  for (let k = kf; k.delta !== null; k = k.delta.prev) chain.push(k.delta.prev);
-  return chain.reverse();
-}
-
-/** Load a delta keyframe's motions into `table` (see the header; loadFull loads a full one). */
-export function loadDelta(kf: Keyframe, table: MotionTable, loadFull: (k: Keyframe) => void): void {
-  const chain = chainOf(kf);
-  loadFull(chain[0] as Keyframe);
-  table.ensure(kf.bodyCount);
-  const [gx, gy] = kf.gravity;
-  for (let c = 1; c < chain.length; c++) {
-    const { nums, rows } = (chain[c] as Keyframe).delta as KeyframeDelta;
-    for (let k = 0; k < nums.length; k++) {
-      const n = nums[k] as number;
-      const q = k * DELTA_ROW;
-      table.setProps(n, rows[q + 5] as number, rows[q + 6] as number, rows[q + 7] as number);
-      const r = (j: number) => rows[q + j] as number;
-      table.start(n, r(0), r(1), r(2), r(3), r(4), kf.g, gx, gy);
-    }
-  }
-}
-
-/** The last keyframe whose order or arrays were asked for, and them. */
-let cached: { kf: Keyframe | null; order: Uint32Array; arrays: KeyframeArrays | null } = {
-  kf: null,
-  order: new Uint32Array(0),
-  arrays: null,
-};
-
-/** Live body numbers of `kf` sorted by id (`ids[n]` names body n, as for worldAt). */
-export function orderOf(kf: Keyframe, ids: readonly string[]): Uint32Array {
-  if (kf.full !== null) return kf.full.order;
-  if (cached.kf === kf) return cached.order;
-  const chain = chainOf(kf);
-  const added: number[] = [];
-  const removed = new Set<number>();
-  for (let c = 1; c < chain.length; c++) {
-    const d = (chain[c] as Keyframe).delta as KeyframeDelta;
-    for (const n of d.added) added.push(n);
-    for (const n of d.removed) removed.add(n);
-  }
-  // a body one delta added and a later one removed is in the first's `added` and the later's `removed`
-  const base = ((chain[0] as Keyframe).full as KeyframeArrays).order;
-  const kept = removed.size === 0 ? base : base.filter((n) => !removed.has(n));
-  const order = mergeById(kept, removed.size === 0 ? added : added.filter((n) => !removed.has(n)), ids);
-  cached = { kf, order, arrays: null };
-  return order;
-}
-
-/** The arrays a full keyframe of `kf`'s point holds (see the header). */
-export function arraysOf(
-  kf: Keyframe,
-  ids: readonly string[],
-  load: (k: Keyframe, t: MotionTable) => void,
-): KeyframeArrays {
-  if (kf.full !== null) return kf.full;
-  if (cached.kf === kf && cached.arrays !== null) return cached.arrays;
-  const order = orderOf(kf, ids);
-  const table = new MotionTable(Math.max(16, kf.bodyCount));
-  load(kf, table);
-  const motions = new Float64Array(order.length * 5);
-  const props = new Float64Array(order.length * 3);
-  const d = table.data;
-  order.forEach((n, k) => {
-    const o = n * STRIDE;
-    for (let j = 0; j < 5; j++) motions[5 * k + j] = d[o + j] as number;
-    for (let j = 0; j < 3; j++) props[3 * k + j] = d[o + 8 + j] as number;
-  });
-  const arrays = { order, props, motions };
-  cached = { kf, order, arrays };
-  return arrays;
 }

@@ -11,7 +11,7 @@ import type { Action } from "../scene/types.js";
 import { lineParameter, makeLine, parameterOnLine } from "../sim/obstacles.js";
 import type { TimelineCore } from "./core.js";
 import { type Keyframe, keyframeAtOrBefore, loadMotions } from "./keyframe.js";
-import { orderOf } from "./keyframeDelta.js";
+import { orderOf } from "./keyframeChain.js";
 import type { MotionTable } from "./motionTable.js";
 import { K_ACTION, K_BODY_BODY, K_BODY_LINE, K_BODY_POINT, KIND_NAMES, type Records } from "./records.js";
 import type { LogEvent, SceneState } from "./types.js";

@@ -1,0 +1,246 @@
+/**
+ * Reading delta keyframes (keyframeDelta.ts makes them). A delta keyframe stands for the full
+ * keyframe of its point: the chain of deltas back to the last full keyframe (its *chain*; depth 0 is
+ * the full one, depth d the d-th delta after it) applied in order. What a read of a delta needs of
+ * its chain is kept in a ChainIndex, built once per chain and extended as deltas are added to it
+ * (the CHAIN_INDEXES last used are kept: a reader keeps asking the same chain or the next one):
+ * - `members`, the chain's keyframes by depth: a read walks an array, not the `prev` links;
+ * - `order`, every body number the chain ever holds (the full keyframe's and every delta's `added`)
+ *   sorted by id, each delta's `added` merged in once, and per body number the depth it joined at
+ *   (`born`) and the depth it was removed at (`died`). The order of a keyframe at depth d is then
+ *   mapOrder(d): the chain order filtered to born <= d < died, one pass with no id comparison (it
+ *   was a sort of every body added since the full keyframe, at every read).
+ * Reading the motions (loadDelta) walks the deltas from the keyframe back to the full one and loads
+ * each body's newest row only (a body a hundred deltas touched was loaded a hundred times), then the
+ * full keyframe's bodies no row covered: the same numbers as loading every row in order, since a
+ * row's load overwrites everything the previous one wrote.
+ *
+ * - orderOf(kf, ids), arraysOf(kf, ids, load): the live order, and the arrays a full keyframe of
+ *   the point would hold, of any keyframe (the last one asked for kept).
+ * - loadDelta(kf, table, loadFull): a delta keyframe's motions (loadFull loads a full keyframe's).
+ * - patchDelta(kf, table): a table holding the motions of kf's `prev` (plus any records replayed
+ *   since: every body they touched has a row in kf) becomes kf's, by loading kf's own rows only.
+ */
+import type { Keyframe, KeyframeArrays, KeyframeDelta } from "./keyframe.js";
+import { DELTA_ROW, mergeById } from "./keyframeDelta.js";
+import { MotionTable, STRIDE } from "./motionTable.js";
+
+/** Chain indexes kept (the last used): a reader scrubbing over one chain, a path crossing into the
+ *  next, an edit's branch beside the history it replaces. Each holds 12 bytes per body. */
+const CHAIN_INDEXES = 4;
+/** `died` of a body never removed in the chain. */
+const NEVER = 0x7fffffff;
+
+class ChainIndex {
+  readonly members: Keyframe[];
+  readonly depth = new Map<Keyframe, number>();
+  /** the chain order (see the header) of the members up to depth `orderedTo`, made on demand */
+  private order: Uint32Array | null = null;
+  private orderedTo = 0;
+  private born = new Int32Array(0);
+  private died = new Int32Array(0);
+
+  constructor(members: readonly Keyframe[]) {
+    this.members = [];
+    this.extend(members);
+  }
+
+  get tip(): number {
+    return this.members.length - 1;
+  }
+
+  /** Append `more` (each the `prev` of the next, the first one's the tip's successor). */
+  extend(more: readonly Keyframe[]): void {
+    for (const kf of more) {
+      this.depth.set(kf, this.members.length);
+      this.members.push(kf);
+    }
+  }
+
+  /** The bodies live at depth d, sorted by id (see the header). */
+  mapOrder(d: number, ids: readonly string[]): Uint32Array {
+    this.mergeAdded(ids);
+    const { born, died } = this;
+    const order = this.order as Uint32Array;
+    const out = new Uint32Array(order.length);
+    let count = 0;
+    for (let k = 0; k < order.length; k++) {
+      const n = order[k] as number;
+      if ((born[n] as number) <= d && (died[n] as number) > d) out[count++] = n;
+    }
+    return count === out.length ? out : out.slice(0, count);
+  }
+
+  /** Bring `order`, `born` and `died` up to the tip: one merge of every body added since. */
+  private mergeAdded(ids: readonly string[]): void {
+    if (this.order !== null && this.orderedTo === this.tip) return;
+    const bodyCount = (this.members[this.tip] as Keyframe).bodyCount;
+    if (bodyCount > this.born.length) {
+      const born = new Int32Array(bodyCount);
+      const died = new Int32Array(bodyCount).fill(NEVER);
+      born.set(this.born);
+      died.set(this.died);
+      this.born = born;
+      this.died = died;
+    }
+    if (this.order === null) {
+      this.order = ((this.members[0] as Keyframe).full as KeyframeArrays).order;
+      for (const n of this.order) this.born[n] = 0;
+    }
+    const added: number[] = [];
+    for (let d = this.orderedTo + 1; d <= this.tip; d++) {
+      const delta = (this.members[d] as Keyframe).delta as KeyframeDelta;
+      for (const n of delta.added) {
+        this.born[n] = d;
+        added.push(n);
+      }
+      for (const n of delta.removed) this.died[n] = d;
+    }
+    this.orderedTo = this.tip;
+    if (added.length > 0) this.order = mergeById(this.order, added, ids);
+  }
+}
+
+/** The indexes last used, the most recent last. */
+const indexes: ChainIndex[] = [];
+
+/** The index of `kf`'s chain (a delta keyframe) and kf's depth in it. */
+function indexOf(kf: Keyframe): { index: ChainIndex; d: number } {
+  for (let i = indexes.length - 1; i >= 0; i--) {
+    const index = indexes[i] as ChainIndex;
+    const d = index.depth.get(kf);
+    if (d === undefined) continue;
+    if (i !== indexes.length - 1) indexes.push(...indexes.splice(i, 1));
+    return { index, d };
+  }
+  // walk back to a keyframe an index knows, or to the full keyframe
+  const newer: Keyframe[] = [];
+  let k = kf;
+  let known: { index: ChainIndex; at: number } | null = null;
+  while (k.delta !== null && known === null) {
+    newer.push(k);
+    k = k.delta.prev;
+    for (const index of indexes) {
+      const at = index.depth.get(k);
+      if (at !== undefined) known = { index, at };
+    }
+  }
+  newer.reverse();
+  let index: ChainIndex;
+  if (known !== null && known.at === known.index.tip) {
+    index = known.index;
+    index.extend(newer);
+    indexes.splice(indexes.indexOf(index), 1);
+  } else {
+    // a new chain, or a branch off a known one (an edit in the past cut the chain and grew another)
+    const base = known === null ? [k] : known.index.members.slice(0, known.at + 1);
+    index = new ChainIndex(base.concat(newer));
+    if (indexes.length === CHAIN_INDEXES) indexes.shift();
+  }
+  indexes.push(index);
+  return { index, d: index.tip }; // (kf is the newest member)
+}
+
+/** Body numbers marked during one load (marks[n] === mark): the rows already loaded. */
+let marks = new Uint32Array(0);
+let mark = 0;
+
+function newMarks(bodyCount: number): number {
+  if (marks.length < bodyCount || mark === 0xffffffff) {
+    marks = new Uint32Array(Math.max(bodyCount, 2 * marks.length));
+    mark = 0;
+  }
+  return ++mark;
+}
+
+/** Load row k of `delta` into `table` (as a full keyframe loads a body). */
+function loadRow(delta: KeyframeDelta, k: number, table: MotionTable, kf: Keyframe): void {
+  const { nums, rows } = delta;
+  const n = nums[k] as number;
+  const q = k * DELTA_ROW;
+  table.setProps(n, rows[q + 5] as number, rows[q + 6] as number, rows[q + 7] as number);
+  const r = (j: number) => rows[q + j] as number;
+  table.start(n, r(0), r(1), r(2), r(3), r(4), kf.g, kf.gravity[0], kf.gravity[1]);
+}
+
+/** Load a delta keyframe's motions into `table` (see the header; loadFull loads a full keyframe
+ *  into it, but the bodies marked: marks[n] === mark). */
+export function loadDelta(
+  kf: Keyframe,
+  table: MotionTable,
+  loadFull: (full: Keyframe, marks: Uint32Array, mark: number) => void,
+): void {
+  const { index, d } = indexOf(kf);
+  table.ensure(kf.bodyCount);
+  const m = newMarks(kf.bodyCount);
+  for (let j = d; j >= 1; j--) {
+    const delta = (index.members[j] as Keyframe).delta as KeyframeDelta;
+    const nums = delta.nums;
+    for (let k = 0; k < nums.length; k++) {
+      const n = nums[k] as number;
+      if (marks[n] === m) continue;
+      marks[n] = m;
+      loadRow(delta, k, table, kf);
+    }
+  }
+  loadFull(index.members[0] as Keyframe, marks, m);
+}
+
+/** Turn `table`, holding the motions of `kf.delta.prev` (see the header), into kf's. */
+export function patchDelta(kf: Keyframe, table: MotionTable): void {
+  const delta = kf.delta as KeyframeDelta;
+  table.ensure(kf.bodyCount);
+  for (let k = 0; k < delta.nums.length; k++) loadRow(delta, k, table, kf);
+}
+
+/** Row of body n in `kf`'s own delta, or -1. */
+export function rowOf(kf: Keyframe, n: number): number {
+  return (kf.delta as KeyframeDelta).nums.indexOf(n);
+}
+
+/** Load row k of kf's own delta into `table`. */
+export function loadOwnRow(kf: Keyframe, k: number, table: MotionTable): void {
+  table.ensure(kf.bodyCount);
+  loadRow(kf.delta as KeyframeDelta, k, table, kf);
+}
+
+/** The last keyframe whose order or arrays were asked for, and them. */
+let cached: { kf: Keyframe | null; order: Uint32Array; arrays: KeyframeArrays | null } = {
+  kf: null,
+  order: new Uint32Array(0),
+  arrays: null,
+};
+
+/** Live body numbers of `kf` sorted by id (`ids[n]` names body n, as for worldAt). */
+export function orderOf(kf: Keyframe, ids: readonly string[]): Uint32Array {
+  if (kf.full !== null) return kf.full.order;
+  if (cached.kf === kf) return cached.order;
+  const { index, d } = indexOf(kf);
+  const order = index.mapOrder(d, ids);
+  cached = { kf, order, arrays: null };
+  return order;
+}
+
+/** The arrays a full keyframe of `kf`'s point holds. */
+export function arraysOf(
+  kf: Keyframe,
+  ids: readonly string[],
+  load: (k: Keyframe, t: MotionTable) => void,
+): KeyframeArrays {
+  if (kf.full !== null) return kf.full;
+  if (cached.kf === kf && cached.arrays !== null) return cached.arrays;
+  const order = orderOf(kf, ids);
+  const table = new MotionTable(Math.max(16, kf.bodyCount));
+  load(kf, table);
+  const motions = new Float64Array(order.length * 5);
+  const props = new Float64Array(order.length * 3);
+  const d = table.data;
+  order.forEach((n, k) => {
+    const o = n * STRIDE;
+    for (let j = 0; j < 5; j++) motions[5 * k + j] = d[o + j] as number;
+    for (let j = 0; j < 3; j++) props[3 * k + j] = d[o + 8 + j] as number;
+  });
+  const arrays = { order, props, motions };
+  cached = { kf, order, arrays };
+  return arrays;
+}
