@@ -14,6 +14,7 @@
 import type { TimelineCore } from "./core.js";
 import { detailOf } from "./eventDetail.js";
 import { type Keyframe, keyframeAtRecord, loadMotions } from "./keyframe.js";
+import { patchDelta } from "./keyframeChain.js";
 import { MotionTable } from "./motionTable.js";
 import { K_ACTION } from "./records.js";
 import { applyRecord, describe } from "./replay.js";
@@ -67,8 +68,10 @@ export class LogCursor {
   private sync(core: TimelineCore): Keyframe {
     const kfs = core.keyframes;
     while (this.k + 1 < kfs.length && (kfs[this.k + 1] as Keyframe).record === this.next) {
-      this.k++;
-      loadMotions(kfs[this.k] as Keyframe, this.table);
+      const kf = kfs[++this.k] as Keyframe;
+      // a delta of the keyframe the table holds (replayed since): its own rows (motionCursor.ts)
+      if (kf.delta?.prev === kfs[this.k - 1]) patchDelta(kf, this.table);
+      else loadMotions(kf, this.table);
     }
     return kfs[this.k] as Keyframe;
   }
