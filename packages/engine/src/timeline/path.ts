@@ -17,11 +17,21 @@
  * not exist then (not yet added, or removed at T).
  *
  * Cost: one pass over the records from the last keyframe at or before `from` to `to`, touching only
- * the records of that body and the keyframes taken after actions (no other body is replayed).
+ * the records of that body and the keyframes taken after actions (no other body is replayed); a
+ * keyframe that is a delta of the one before (keyframeDelta.ts) is read for this body alone (its
+ * added, removed and own rows), not loaded whole: a history built one action per instant holds one
+ * per instant.
  */
 import type { BodyMotion } from "../sim/types.js";
 import type { TimelineCore } from "./core.js";
-import { type Keyframe, keyframeAtOrBefore, liveNumber, loadMotions } from "./keyframe.js";
+import {
+  type Keyframe,
+  type KeyframeDelta,
+  keyframeAtOrBefore,
+  liveNumber,
+  loadMotions,
+} from "./keyframe.js";
+import { loadOwnRow, rowOf } from "./keyframeChain.js";
 import { MotionTable, STRIDE } from "./motionTable.js";
 import { K_ACTION, K_BODY_BODY } from "./records.js";
 import { applyRecord } from "./replay.js";
@@ -66,6 +76,25 @@ function sameMotion(table: MotionTable, n: number, row: Float64Array): boolean {
   return true;
 }
 
+/**
+ * What delta keyframe `kf` says of body `id`, numbered n (null: not live) at the keyframe before
+ * it: its number after (removed: null; added: the new number) and its row in kf's own delta (-1:
+ * none, so its motion is unchanged), or null when the delta cannot say (a body added without a row
+ * never occurs: loading the whole keyframe then answers).
+ */
+function ownChange(
+  kf: Keyframe,
+  ids: readonly string[],
+  id: string,
+  n: number | null,
+): { after: number | null; row: number } | null {
+  const { added, removed } = kf.delta as KeyframeDelta;
+  let after = n !== null && removed.includes(n) ? null : n;
+  if (after === null) for (const m of added) if (ids[m] === id) after = m;
+  const row = after === null ? -1 : rowOf(kf, after);
+  return after !== null && after !== n && row < 0 ? null : { after, row };
+}
+
 /** The pieces of body `id` over [from, to] (historyStart <= from <= to <= horizon), with history. */
 export function bodyPath(core: TimelineCore, id: string, from: number, to: number): PathPiece[] {
   const kfs = core.keyframes;
@@ -89,19 +118,24 @@ export function bodyPath(core: TimelineCore, id: string, from: number, to: numbe
       (kfs[k + 1] as Keyframe).record === i &&
       (kfs[k + 1] as Keyframe).time <= to
     ) {
+      const prev = kfs[k] as Keyframe;
       kf = kfs[++k] as Keyframe;
       if (!kf.afterActions) continue;
+      // a delta of the keyframe before (whose motion of this body the table holds): its own rows
+      const own = kf.delta?.prev === prev ? ownChange(kf, core.bodyIds, id, n) : null;
+      if (own !== null && own.after === n && own.row < 0) continue; // not touched
       if (n !== null) saved.set(table.data.subarray(n * STRIDE, n * STRIDE + 8));
       const before = n;
+      const load = () => (own === null ? loadMotions(kf, table) : loadOwnRow(kf, own.row, table));
       table.ensure(kf.bodyCount);
-      loadMotions(kf, table);
-      const after = liveNumber(kf, core.bodyIds, id);
+      load();
+      const after = own === null ? liveNumber(kf, core.bodyIds, id) : own.after;
       if (after === before && after !== null && sameMotion(table, after, saved)) continue;
       if (before !== null) {
         // close with the motion it had: put it back for a moment
         table.data.set(saved, before * STRIDE);
         close(kf.time);
-        if (after !== null) loadMotions(kf, table);
+        if (after !== null) load();
       }
       n = after;
       start = Math.max(kf.time, from);
