@@ -17,7 +17,7 @@ import { historyStart } from "./forget.js";
 import { keptIndex, keptTime } from "./kept.js";
 import { keyframeBytes } from "./keyframe.js";
 import { LogCursor } from "./logCursor.js";
-import { MotionTable } from "./motionTable.js";
+import { MotionCursor } from "./motionCursor.js";
 import { bodyPath, headlessBodyPath, type PathPiece } from "./path.js";
 import { K_ACTION } from "./records.js";
 import { headlessStateAt, stateAt } from "./replay.js";
@@ -31,8 +31,8 @@ import type { EventDetail, LogEvent, SceneState, TimelineCounts } from "./types.
 export class TimelineReader {
   /** @internal */
   protected core: TimelineCore;
-  /** @internal */
-  protected readonly scratch = new MotionTable();
+  /** Where the last stateAt replay stopped: reading forwards replays each record once. */
+  private readonly states = new MotionCursor();
   /** Where the last bodyArraysAt replay stopped: reading forwards replays each record once. */
   private readonly arrays = new ArraysCursor();
   /** Where the last log read stopped: reading the log in order replays each record once. */
@@ -71,7 +71,7 @@ export class TimelineReader {
   stateAt(t: number): SceneState {
     const c = this.core;
     const at = stateTime(t, c.horizon, historyStart(c));
-    return c.history ? stateAt(c, at, this.scratch) : headlessStateAt(c, at);
+    return c.history ? stateAt(c, at, this.states) : headlessStateAt(c, at);
   }
 
   /**

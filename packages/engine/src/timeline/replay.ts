@@ -10,8 +10,9 @@ import { discDiscResponse, impulseMagnitude, reflectResponse } from "../physics/
 import type { Action } from "../scene/types.js";
 import { lineParameter, makeLine, parameterOnLine } from "../sim/obstacles.js";
 import type { TimelineCore } from "./core.js";
-import { type Keyframe, keyframeAtOrBefore, loadMotions } from "./keyframe.js";
+import type { Keyframe } from "./keyframe.js";
 import { orderOf } from "./keyframeChain.js";
+import type { MotionCursor } from "./motionCursor.js";
 import type { MotionTable } from "./motionTable.js";
 import { K_ACTION, K_BODY_BODY, K_BODY_LINE, K_BODY_POINT, KIND_NAMES, type Records } from "./records.js";
 import type { LogEvent, SceneState } from "./types.js";
@@ -31,16 +32,10 @@ export function applyRecord(records: Records, i: number, table: MotionTable, kf:
     table.rebase(records.b[i] as number, t, v[o + 2] as number, v[o + 3] as number, kf.g, gx, gy);
 }
 
-/** The exact state at time t (0 <= t <= horizon), using `scratch` as work space. */
-export function stateAt(core: TimelineCore, t: number, scratch: MotionTable): SceneState {
-  const kfs = core.keyframes;
-  const kf = kfs[Math.max(0, keyframeAtOrBefore(kfs, t))] as Keyframe;
-  loadMotions(kf, scratch);
-  const rec = core.records;
-  for (let i = kf.record; i < rec.length && (rec.time[i] as number) <= t; i++) {
-    if (rec.kind[i] === K_ACTION) break; // cannot happen: a keyframe follows every action group
-    applyRecord(rec, i, scratch, kf);
-  }
+/** The exact state at time t (0 <= t <= horizon), the motions found by `cursor` (motionCursor.ts). */
+export function stateAt(core: TimelineCore, t: number, cursor: MotionCursor): SceneState {
+  const kf = cursor.seek(core, t);
+  const scratch = cursor.table;
   const ids = core.bodyIds;
   const bodies = Array.from(orderOf(kf, ids), (n) => scratch.state(n, ids[n] as string, t));
   // copies: the keyframe's own lists rebuild Worlds (an edit in the past), so they must not be handed out
