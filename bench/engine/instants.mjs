@@ -9,7 +9,13 @@
  * largest N to the smallest says how it scales (1 = linear; it was about N_max / N_min before the
  * scene check asked the World for the bodies near a disc and the keyframe after an instant became
  * a delta, session 26). Each time is the median of `runs` fresh builds.
- * About 10 s (4 s with --quick). `node bench/engine/instants.mjs [--quick]` runs it alone.
+ * Then reads over such a history (the thrown scene, with history, N = 2,000 and 8,000; quick: 2,000),
+ * where every instant's keyframe is a delta of the one before (keyframeChain.ts): stateAt and
+ * bodyArraysAt(t, into) at `reads` times spread over it, backwards (each read loads its keyframe)
+ * and forwards (playback), and path() of three discs over the whole history; each figure is the
+ * median of `passes` passes' times per call, the ways alternating (readWays gives them, for
+ * comparing two builds in one process).
+ * About 20 s (6 s with --quick). `node bench/engine/instants.mjs [--quick]` runs it alone.
  */
 import { fileURLToPath } from "node:url";
 import { loadEngine } from "../lib/engine.mjs";
@@ -49,6 +55,58 @@ function build(engine, scene, n, history, runs) {
   return { ms: median(times), events: last.counts() };
 }
 
+/** A history of n thrown discs built one per instant and the reads timed on it (see the header):
+ *  { tl, ways: [{ name, order, calls, run }] }, run() making `calls` calls. */
+export function readWays(engine, n, reads) {
+  const rand = lcg(7);
+  const tl = new engine.Timeline({ g: 9.81, history: true });
+  for (let i = 0; i < n; i++) tl.apply(discAction("thrown", i, n, i * 0.01, rand));
+  const h = tl.horizon;
+  const forwards = Array.from({ length: reads }, (_, k) => (h * (k + 0.5)) / reads);
+  const backwards = [...forwards].reverse();
+  const ids = [0, n >> 1, n - 1].map((i) => `d${i}`);
+  let into;
+  const way = (name, order, times, read) => ({
+    name,
+    order,
+    calls: times.length,
+    run: () => {
+      for (const t of times) read(t);
+    },
+  });
+  return {
+    tl,
+    ways: [
+      way("stateAt", "backwards", backwards, (t) => tl.stateAt(t)),
+      way("stateAt", "forwards", forwards, (t) => tl.stateAt(t)),
+      way("bodyArraysAt", "backwards", backwards, (t) => (into = tl.bodyArraysAt(t, into))),
+      way("bodyArraysAt", "forwards", forwards, (t) => (into = tl.bodyArraysAt(t, into))),
+      way("path", "whole history", ids, (id) => tl.path(id)),
+    ],
+  };
+}
+
+/** Milliseconds per call of each of readWays' ways at each N (see the header). */
+function readRows(engine, sizes, reads, passes) {
+  return sizes.map((n) => {
+    const { tl, ways } = readWays(engine, n, reads);
+    const times = ways.map(() => []);
+    for (let p = -1; p < passes; p++)
+      ways.forEach((w, k) => {
+        gc();
+        const a = nowNs();
+        w.run();
+        if (p >= 0) times[k].push((nowNs() - a) / 1e6 / w.calls); // pass -1 warms up
+      });
+    return {
+      n,
+      events: tl.eventCount,
+      historyBytes: tl.historyBytes(),
+      ways: ways.map((w, k) => ({ name: w.name, order: w.order, ms: median(times[k]) })),
+    };
+  });
+}
+
 export function instants({ quick, engine, log }) {
   try {
     const sizes = quick ? [1000, 2000, 4000] : [1000, 2000, 4000, 8000];
@@ -71,7 +129,13 @@ export function instants({ quick, engine, log }) {
           `  one per instant, ${scene}, history ${history}: ${row.points.map((p) => `N=${p.n} ${p.ms.toFixed(0)} ms`).join(", ")} (per apply ×${row.scaling.toFixed(2)} from N=${first.n} to ${lastPoint.n})`,
         );
       }
-    return { runs, dt: 0.01, rows };
+    const reads = { count: 40, passes: quick ? 3 : 5 };
+    reads.rows = readRows(engine, quick ? [2000] : [2000, 8000], reads.count, reads.passes);
+    for (const r of reads.rows)
+      log(
+        `  reads over one per instant, N=${r.n}: ${r.ways.map((w) => `${w.name} ${w.order} ${w.ms.toFixed(3)} ms`).join(", ")}`,
+      );
+    return { runs, dt: 0.01, rows, reads };
   } catch (e) {
     log(`  one per instant: ERROR ${e.message}`);
     return { error: String(e.message ?? e) };

@@ -12,7 +12,8 @@
  *   boards of 1,000 and 5,000 pegs; with and without the grid.
  * - timeline: stateAt latency and history bytes per event, when the engine exports Timeline.
  * - bulkReads (bulkReads.mjs): every body of 20,000 read as objects and as arrays (BodyArrays).
- * - instants (instants.mjs): 1,000 to 8,000 discs applied one per call at successive instants.
+ * - instants (instants.mjs): 1,000 to 8,000 discs applied one per call at successive instants, and
+ *   stateAt, bodyArraysAt and path() over such a history (N = 2,000 and 8,000).
  */
 
 import { lcg } from "../lib/lcg.mjs";

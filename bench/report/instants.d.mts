@@ -5,7 +5,22 @@ export interface InstantsRow {
   points: { n: number; ms: number; usPerApply?: number; collisions?: number; stops?: number }[];
   scaling: number;
 }
+/** Reads over a history built one disc per instant: ms per call of each way at one N. */
+export interface InstantReadsRow {
+  n: number;
+  events: number;
+  historyBytes: number;
+  ways: { name: string; order: string; ms: number }[];
+}
 export function instantsBlock(
-  e: { instants?: { runs?: number; dt?: number; rows?: InstantsRow[]; error?: string } },
+  e: {
+    instants?: {
+      runs?: number;
+      dt?: number;
+      rows?: InstantsRow[];
+      reads?: { count: number; passes: number; rows: InstantReadsRow[] };
+      error?: string;
+    };
+  },
   out: string[],
 ): void;

@@ -3,8 +3,10 @@
  * to build a scene of N discs with Timeline.apply, one disc per call at t = 0, 0.01, 0.02, ..., per
  * scene (at rest, or thrown under friction) and with or without history, and how the time per apply
  * grows from the smallest N to the largest (1: linear).
+ * Then the reads over such a history (thrown discs, with history): stateAt, bodyArraysAt and path()
+ * per N, with the history's bytes.
  * instantsBlock(engineResults, out) appends markdown lines to `out`; a run from before these rows
- * existed gets nothing.
+ * existed gets nothing (and one from before the reads, no reads table).
  */
 import { int, ms, sig, table } from "./format.mjs";
 
@@ -33,6 +35,24 @@ export function instantsBlock(e, out) {
         r.history ? "yes" : "no",
         ...r.points.map((p) => ms(p.ms * 1e6)),
         `${sig(r.scaling)}×`,
+      ]),
+    ),
+  );
+  out.push("");
+  const reads = b.reads;
+  if (!reads?.rows?.length) return;
+  const ways = reads.rows[0].ways;
+  out.push(
+    `Reads over such a history (discs thrown under friction, with history: a keyframe per instant, most of them deltas of the one before): \`stateAt\` and \`bodyArraysAt(t, into)\` at ${reads.count} times spread over it, backwards (each read loads its keyframe) and forwards (playback), and \`path(id)\` of three discs over the whole history; time per call, the median of ${reads.passes} passes.\n`,
+  );
+  out.push(
+    table(
+      ["N", "events", "history", ...ways.map((w) => `${w.name}, ${w.order}`)],
+      reads.rows.map((r) => [
+        int(r.n),
+        int(r.events),
+        `${sig(r.historyBytes / 1e6)} MB`,
+        ...r.ways.map((w) => ms(w.ms * 1e6)),
       ]),
     ),
   );

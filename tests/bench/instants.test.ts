@@ -36,6 +36,35 @@ describe("one action per instant in the report", () => {
     expect(text).toContain("| discs thrown under friction | no | 177 ms | 515 ms | 0.364× |");
   });
 
+  it("gives the reads over such a history per N, and no reads table for a run without them", () => {
+    const row = { scene: "thrown" as const, history: true, points: [{ n: 2000, ms: 300 }], scaling: 1 };
+    const reads = {
+      count: 40,
+      passes: 5,
+      rows: [
+        {
+          n: 2000,
+          events: 3943,
+          historyBytes: 1251891,
+          ways: [
+            { name: "stateAt", order: "backwards", ms: 0.2123 },
+            { name: "path", order: "whole history", ms: 1.007 },
+          ],
+        },
+      ],
+    };
+    const out: string[] = [];
+    instantsBlock({ instants: { runs: 3, dt: 0.01, rows: [row], reads } }, out);
+    const text = out.join("\n");
+    expect(text).toContain("at 40 times spread over it");
+    expect(text).toContain("the median of 5 passes");
+    expect(text).toContain("| N | events | history | stateAt, backwards | path, whole history |");
+    expect(text).toContain("| 2,000 | 3,943 | 1.25 MB | 0.212 ms | 1.01 ms |");
+    const without: string[] = [];
+    instantsBlock({ instants: { runs: 3, dt: 0.01, rows: [row] } }, without);
+    expect(without.join("\n")).not.toContain("Reads over such a history");
+  });
+
   it("says an error, and gives nothing for a run without the rows", () => {
     const failed: string[] = [];
     instantsBlock({ instants: { error: "body d3 would overlap body d0" } }, failed);
