@@ -45,6 +45,16 @@ export class BroadPhase extends SimState {
     (target as BroadPhase).gridForObstacles = this.gridForObstacles;
   }
 
+  /**
+   * Size the grid's and the queue's slot ranges to the body store's capacity (after it grew or was
+   * trimmed): every per-slot array of the World is then as long as the store's.
+   */
+  protected followStore(): void {
+    const capacity = this.store.capacity;
+    if (this.grid.slotCapacity !== capacity) this.grid.resize(capacity);
+    if (this.heap.slotCapacity !== capacity) this.heap.resize(capacity);
+  }
+
   /** The level-0 cells the segment (x1, y1)-(x2, y2) (a point: both ends equal) is registered in. */
   protected cellsOfObstacle(x1: number, y1: number, x2: number, y2: number): number[] {
     const pairs: number[] = [];
@@ -82,8 +92,7 @@ export class BroadPhase extends SimState {
     }
     const n = radii.length;
     this.gridBodies = n;
-    this.grid.reserve(b.capacity);
-    this.heap.reserve(b.capacity);
+    this.followStore();
     this.gridForObstacles = false;
     if (n === 0 || !this.opt.broadPhase) this.grid.reset(0, 0, 1, 1, 1);
     else {

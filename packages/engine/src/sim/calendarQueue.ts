@@ -13,27 +13,45 @@
  *
  * The width adapts, without changing the pop order (calendarWidth.ts: when to rebuild, and with
  * what width). The buckets and the window are calendarBuckets.ts's; this class adds growing,
- * copying and the rebuild. (Split so, the gas counts the same instructions per collision as the
+ * copying, re-sizing the slot range and the rebuild. (Split so, the gas counts the same instructions per collision as the
  * queue in one file: docs/engine-throughput.md, session 26.)
  */
 import { ABSENT, CalendarBuckets } from "./calendarBuckets.js";
 import { bucketWidth, ringLength } from "./calendarWidth.js";
 
 export class CalendarQueue extends CalendarBuckets {
-  /** Grow the slot range to at least `capacity`. */
+  /** Grow the slot range to at least `capacity` (doubling: for a caller adding one slot at a time). */
   reserve(capacity: number): void {
-    if (capacity <= this.loc.length) return;
-    const cap = Math.max(capacity, this.loc.length * 2);
-    const grow = <T extends Float64Array | Int32Array>(a: T, fill: number): T => {
-      const b = (a instanceof Float64Array ? new Float64Array(cap) : new Int32Array(cap).fill(fill)) as T;
-      b.set(a);
+    if (capacity > this.loc.length) this.resize(Math.max(capacity, this.loc.length * 2));
+  }
+
+  /** Number of slots it can hold (0 .. slotCapacity - 1). */
+  get slotCapacity(): number {
+    return this.loc.length;
+  }
+
+  /**
+   * Set the slot range to exactly 0 .. capacity - 1 (the World's body store's capacity), keeping
+   * every queued entry, its key and its place: a queued slot must be below `capacity` (a RangeError
+   * otherwise, and nothing changes). The pop order is unchanged.
+   */
+  resize(capacity: number): void {
+    for (let s = capacity; s < this.loc.length; s++)
+      if (this.loc[s] !== ABSENT)
+        throw new RangeError(`event queue: slot ${s} is queued, beyond the new range ${capacity}`);
+    this.front.resize(capacity);
+    const keep = Math.min(capacity, this.loc.length);
+    const sized = <T extends Float64Array | Int32Array>(a: T, fill: number): T => {
+      const b = (
+        a instanceof Float64Array ? new Float64Array(capacity) : new Int32Array(capacity).fill(fill)
+      ) as T;
+      b.set(a.subarray(0, keep));
       return b;
     };
-    this.key = grow(this.key, 0);
-    this.loc = grow(this.loc, ABSENT);
-    this.next = grow(this.next, -1);
-    this.prev = grow(this.prev, -1);
-    this.front.reserve(cap);
+    this.key = sized(this.key, 0);
+    this.loc = sized(this.loc, ABSENT);
+    this.next = sized(this.next, -1);
+    this.prev = sized(this.prev, -1);
   }
 
   /** Bucket width, ring length and rebuilds so far (for tests and benchmarks; never affects the order). */

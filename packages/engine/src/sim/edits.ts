@@ -123,8 +123,7 @@ export class Edits extends Placement {
   ): void {
     const b = this.store;
     const s = b.allocate(id);
-    this.grid.reserve(b.capacity);
-    this.heap.reserve(b.capacity);
+    this.followStore();
     b.r[s] = r;
     b.m[s] = m;
     b.mu[s] = mu;

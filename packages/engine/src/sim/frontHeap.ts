@@ -2,8 +2,14 @@
  * The calendar queue's front (calendarQueue.ts): a binary min-heap of slots ordered by key, exact
  * ties by the caller's canonical order, so the order never depends on insertion order. It holds
  * the entries of the current bucket only, a handful, so a binary heap is the cheapest choice.
- * Each slot's heap position is kept (`pos`) for O(log n) update and removal.
+ * Each slot's heap position is kept (`pos`, one entry per slot of the queue's range) for O(log n)
+ * update and removal; the heap itself (`slots`, `keys`) is sized to the entries it has held, at
+ * least FRONT_START, doubled when full: a handful, not one per slot.
  */
+
+/** Entries the heap's arrays start with (a gas's front holds a few; 12 bytes each). */
+const FRONT_START = 16;
+
 export class FrontHeap {
   /** Slots and their keys in heap order; n entries (`declare`: never undefined, see bodyStore.ts). */
   declare slots: Int32Array;
@@ -14,38 +20,55 @@ export class FrontHeap {
   /** `declare`d: set only in the constructor, never undefined first (see bodyStore.ts). */
   declare private readonly tieLess: (a: number, b: number) => boolean;
 
+  /** A heap for slots 0 .. capacity - 1. */
   constructor(capacity: number, tieLess: (a: number, b: number) => boolean) {
-    this.slots = new Int32Array(capacity);
-    this.keys = new Float64Array(capacity);
+    this.slots = new Int32Array(FRONT_START);
+    this.keys = new Float64Array(FRONT_START);
     this.pos = new Int32Array(capacity).fill(-1);
     this.tieLess = tieLess;
   }
 
-  /** Grow the slot range to `capacity` (at least the current one). */
-  reserve(capacity: number): void {
-    const slots = new Int32Array(capacity);
-    slots.set(this.slots);
-    const keys = new Float64Array(capacity);
-    keys.set(this.keys);
+  /** Number of slots it can hold (0 .. slotCapacity - 1). */
+  get slotCapacity(): number {
+    return this.pos.length;
+  }
+
+  /**
+   * Set the slot range to 0 .. capacity - 1, keeping every entry; a slot in the heap must be below
+   * `capacity` (a RangeError otherwise, and nothing changes).
+   */
+  resize(capacity: number): void {
+    for (let i = 0; i < this.n; i++)
+      if ((this.slots[i] as number) >= capacity)
+        throw new RangeError(`front heap: slot ${this.slots[i]} is queued, beyond the new range ${capacity}`);
     const pos = new Int32Array(capacity).fill(-1);
-    pos.set(this.pos);
-    this.slots = slots;
-    this.keys = keys;
+    pos.set(this.pos.subarray(0, Math.min(capacity, this.pos.length)));
     this.pos = pos;
   }
 
   /** A copy with another tie-break function. */
   cloneWith(tieLess: (a: number, b: number) => boolean): FrontHeap {
-    const h = new FrontHeap(this.pos.length, tieLess);
-    h.slots.set(this.slots);
-    h.keys.set(this.keys);
-    h.pos.set(this.pos);
+    const h = new FrontHeap(0, tieLess);
+    h.slots = this.slots.slice();
+    h.keys = this.keys.slice();
+    h.pos = this.pos.slice();
     h.n = this.n;
     return h;
   }
 
   push(slot: number, key: number): void {
+    if (this.n === this.slots.length) this.growEntries();
     this.up(this.n++, slot, key);
+  }
+
+  /** Double the heap's arrays (kept apart from push, which V8 then still inlines). */
+  private growEntries(): void {
+    const slots = new Int32Array(2 * this.slots.length);
+    slots.set(this.slots);
+    const keys = new Float64Array(2 * this.keys.length);
+    keys.set(this.keys);
+    this.slots = slots;
+    this.keys = keys;
   }
 
   /** Remove a slot that is in the heap. */

@@ -60,23 +60,34 @@ export class Grid extends GridObstacles {
     this.memberPos = new Int32Array(slotCapacity);
   }
 
-  reserve(capacity: number): void {
-    if (capacity <= this.next.length) return;
-    const cap = Math.max(capacity, this.next.length * 2);
-    const grow = (a: Int32Array): Int32Array => {
-      const b = new Int32Array(cap).fill(-1);
-      b.set(a);
+  /** Number of slots it can hold (0 .. slotCapacity - 1). */
+  get slotCapacity(): number {
+    return this.next.length;
+  }
+
+  /**
+   * Set the slot range to exactly 0 .. capacity - 1 (the World's body store's capacity), keeping
+   * every registered slot where it is: a registered slot must be below `capacity` (a RangeError
+   * otherwise, and nothing changes).
+   */
+  resize(capacity: number): void {
+    for (let s = capacity; s < this.cellOf.length; s++)
+      if ((this.cellOf[s] as number) >= 0)
+        throw new RangeError(`grid: slot ${s} is registered, beyond the new range ${capacity}`);
+    const keep = Math.min(capacity, this.next.length);
+    const sized = (a: Int32Array, fill: number): Int32Array => {
+      const b = new Int32Array(capacity);
+      if (fill !== 0) b.fill(fill);
+      b.set(a.subarray(0, keep));
       return b;
     };
-    this.next = grow(this.next);
-    this.prev = grow(this.prev);
-    this.cellOf = grow(this.cellOf);
-    const lv = new Int8Array(cap);
-    lv.set(this.levelOf);
+    this.next = sized(this.next, -1);
+    this.prev = sized(this.prev, -1);
+    this.cellOf = sized(this.cellOf, -1);
+    this.memberPos = sized(this.memberPos, 0);
+    const lv = new Int8Array(capacity);
+    lv.set(this.levelOf.subarray(0, keep));
     this.levelOf = lv;
-    const mp = new Int32Array(cap);
-    mp.set(this.memberPos);
-    this.memberPos = mp;
   }
 
   /**

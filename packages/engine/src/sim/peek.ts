@@ -33,7 +33,8 @@ export class PeekLog {
 
   /** Start a look-ahead over slots 0 .. capacity - 1 (the log must be empty). */
   begin(capacity: number): void {
-    if (this.mark.length < capacity) this.mark = new Int32Array(capacity);
+    // Sized to the store (which a trim may shrink): a fresh array holds no mark of this epoch (>= 1).
+    if (this.mark.length !== capacity) this.mark = new Int32Array(capacity);
     this.epoch++;
     if (this.epoch === 0x7fffffff) {
       this.mark.fill(0);
