@@ -3,10 +3,32 @@
  * physics/motion.ts) as one record of 8 doubles in `mot` (t0, x0, y0, vx0, vy0, ax, ay, tEnd: a
  * pair test reads both bodies' motions, and one cache line each is fewer misses in large scenes
  * than eight arrays), and its properties and next predicted event in one array per field. Slots of
- * removed bodies are reused; `version` only ever grows, so a prediction made against an older
- * version of a partner is recognised as stale.
+ * removed bodies are reused; a slot's `version` only ever grows, even across a trim, so a prediction
+ * (or a memo) made against an older version of a partner is recognised as stale.
+ *
+ * Capacity: the per-slot arrays grow by GROWTH when full. `trim` gives back the unused slots (the
+ * free slots at the end, then the arrays shrunk to the slots in use) where the World rebuilds its
+ * grid and predicts every body anyway (its prepare step, O(n) already); removals alone make the
+ * next advance do so once the capacity is more than TRIM_AFTER times the slots in use (`trimDue`).
+ * A live body never changes slot. The grid and the event queue are sized to `capacity` and follow
+ * it (broadPhase.ts fitSlots). These sizing constants live here, not in tolerances.ts: they change
+ * memory and copying, never a result.
  */
 import { idOrderKey } from "./idOrder.js";
+
+/**
+ * Factor the per-slot arrays grow by when full: 1.5, not 2, so that a growth leaves a third of them
+ * unused, not half, until the next trim (amortised cost: each slot copied about twice, not once).
+ */
+export const GROWTH = 1.5;
+/** Fewest slots the arrays hold: a small world is not reallocated at each of its first bodies. */
+export const MIN_SLOTS = 16;
+/**
+ * Removals alone make a trim due (and with it a grid rebuild and every body predicted again, O(n))
+ * once the capacity is more than TRIM_AFTER times the slots in use: at least a third of the slots
+ * were given up since the arrays were last sized, which pays for it (O(1) per removal).
+ */
+export const TRIM_AFTER = 1.5;
 
 /** Internal event kinds of a body's next event. Ranks give the canonical order of simultaneous events. */
 export const EV_NONE = 0;
@@ -41,6 +63,8 @@ export class BodyStore {
   /** Id of each live slot; undefined for free slots. */
   ids: (string | undefined)[] = [];
   private free: number[] = [];
+  /** Version a slot starts from when it is first taken since a trim dropped it (see `trim`). */
+  private versionFloor = 0;
   /** Current motion, 8 doubles per slot (one cache line): t0, x0, y0, vx0, vy0, ax, ay, tEnd. */
   declare mot: Float64Array;
   declare r: Float64Array;
@@ -89,7 +113,8 @@ export class BodyStore {
   /** Take a free slot for a new body (growing the arrays when full). */
   allocate(id: string): number {
     const slot = this.free.length > 0 ? (this.free.pop() as number) : this.count++;
-    if (slot >= this.capacity) this.grow(Math.max(16, this.capacity * 2));
+    if (slot >= this.capacity) this.resize(Math.max(MIN_SLOTS, Math.ceil(this.capacity * GROWTH)));
+    if ((this.version[slot] as number) < this.versionFloor) this.version[slot] = this.versionFloor;
     this.ids[slot] = id;
     this.idKey[slot] = idOrderKey(id);
     return slot;
@@ -107,18 +132,57 @@ export class BodyStore {
     return this.count;
   }
 
-  private grow(capacity: number): void {
+  /** One past the last live slot (0 when there is none): the slots a trim keeps. */
+  usedSlots(): number {
+    let used = this.count;
+    while (used > 0 && this.ids[used - 1] === undefined) used--;
+    return used;
+  }
+
+  /** Whether removals left the capacity more than TRIM_AFTER times the slots in use. */
+  trimDue(): boolean {
+    // The live bodies first (O(1)): no trim is due while they alone fill the bound.
+    if (this.capacity <= TRIM_AFTER * Math.max(MIN_SLOTS, this.count - this.free.length)) return false;
+    return this.capacity > TRIM_AFTER * Math.max(MIN_SLOTS, this.usedSlots());
+  }
+
+  /**
+   * Give back the unused slots: the free slots at the end are dropped (slotCount becomes
+   * usedSlots()), then the arrays shrink to slotCount (at least MIN_SLOTS). Live bodies keep their
+   * slots; the free slots before the last live one stay free, in the same order. Whether the
+   * capacity changed (the grid and the queue then follow it). Every prediction must be made again
+   * after a trim (World's prepare does): a prediction may name a dropped slot.
+   */
+  trim(): boolean {
+    const used = this.usedSlots();
+    if (used < this.count) {
+      // The dropped slots' versions go with them: a slot taken again later starts above all of them.
+      for (let s = used; s < this.count; s++)
+        this.versionFloor = Math.max(this.versionFloor, (this.version[s] as number) + 1);
+      this.free = this.free.filter((s) => s < used);
+      this.ids.length = used;
+      this.count = used;
+    }
+    const capacity = Math.max(MIN_SLOTS, used);
+    if (capacity >= this.capacity) return false;
+    this.resize(capacity);
+    return true;
+  }
+
+  /** Reallocate the per-slot arrays to `capacity` slots (at least slotCount), keeping slots below it. */
+  private resize(capacity: number): void {
+    const keep = Math.min(capacity, this.capacity);
     for (const f of F64_FIELDS) {
       const a = new Float64Array(capacity);
-      a.set(this[f]);
+      a.set(this[f].subarray(0, keep));
       this[f] = a;
     }
     const mot = new Float64Array(capacity * 8);
-    mot.set(this.mot);
+    mot.set(this.mot.subarray(0, keep * 8));
     this.mot = mot;
     for (const f of I32_FIELDS) {
       const a = new Int32Array(capacity);
-      a.set(this[f]);
+      a.set(this[f].subarray(0, keep));
       this[f] = a;
     }
     this.capacity = capacity;
@@ -132,6 +196,7 @@ export class BodyStore {
     s.count = this.count;
     s.ids = this.ids.slice();
     s.free = this.free.slice();
+    s.versionFloor = this.versionFloor;
     for (const f of F64_FIELDS) s[f] = this[f].slice();
     for (const f of I32_FIELDS) s[f] = this[f].slice();
     s.mot = this.mot.slice();

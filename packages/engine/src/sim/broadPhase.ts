@@ -55,6 +55,15 @@ export class BroadPhase extends SimState {
     if (this.heap.slotCapacity !== capacity) this.heap.resize(capacity);
   }
 
+  /**
+   * Give back the slots the bodies no longer use (bodyStore.ts `trim`) and size the grid and the
+   * queue to match. Only where every prediction is made again next (World's prepare step, before
+   * the grid is rebuilt): a slot dropped here and taken again later is another body.
+   */
+  protected fitSlots(): void {
+    if (this.store.trim()) this.followStore();
+  }
+
   /** The level-0 cells the segment (x1, y1)-(x2, y2) (a point: both ends equal) is registered in. */
   protected cellsOfObstacle(x1: number, y1: number, x2: number, y2: number): number[] {
     const pairs: number[] = [];

@@ -292,7 +292,8 @@ export class World extends Edits {
   }
 
   private prepare(): void {
-    if (!this.dirty) return;
+    if (!this.dirty && !this.store.trimDue()) return; // removals alone may call for a trim (bodyStore.ts)
+    this.fitSlots();
     this.rebuildGrid();
     this.predictAll();
   }
