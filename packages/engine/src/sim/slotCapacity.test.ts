@@ -1,10 +1,11 @@
 // Slot capacity (bodyStore.ts): the per-slot arrays grow by GROWTH from MIN_SLOTS, a trim gives back
-// the free slots at the end and shrinks the arrays to the slots in use, live bodies keep their
+// the free slots at the end and shrinks the arrays to the slots in use plus TRIM_SLACK (so that a
+// body added after each advance does not regrow them every time), live bodies keep their
 // slots, a dropped slot taken again is a new body (its version above every earlier one), and the
 // grid and the event queue follow the store. A World trimmed and grown again simulates bit for bit
 // as one that never trimmed. (The resizes of the queue, its front heap and the grid: slotResize.test.ts.)
 import { describe, expect, it } from "vitest";
-import { BodyStore, GROWTH, MIN_SLOTS, TRIM_AFTER } from "./bodyStore.js";
+import { BodyStore, GROWTH, MIN_SLOTS, TRIM_AFTER, TRIM_SLACK, trimmedCapacity } from "./bodyStore.js";
 import type { CalendarQueue } from "./calendarQueue.js";
 import type { Grid } from "./grid.js";
 import { World } from "./world.js";
@@ -26,7 +27,7 @@ function filled(n: number): BodyStore {
 
 describe("BodyStore capacity", () => {
   it("starts at MIN_SLOTS and grows by GROWTH (rounded up) when full, never below the slots taken", () => {
-    expect([GROWTH, MIN_SLOTS, TRIM_AFTER]).toEqual([1.5, 16, 1.5]);
+    expect([GROWTH, MIN_SLOTS, TRIM_AFTER, TRIM_SLACK]).toEqual([1.5, 16, 1.5, 1 / 16]);
     const b = new BodyStore();
     const seen = [b.capacity];
     for (let k = 0; k < 300; k++) {
@@ -40,27 +41,32 @@ describe("BodyStore capacity", () => {
     expect(b.evKind.length).toBe(413);
   });
 
-  it("trim drops the free slots at the end only, keeps every live slot's fields, and shrinks to the slots in use", () => {
+  it("trim drops the free slots at the end only, keeps every live slot's fields, and shrinks to the slots in use plus the slack", () => {
     const b = filled(100); // capacity 122
     for (let s = 99; s >= 40; s--) b.release(s);
     b.release(10);
     expect(b.usedSlots()).toBe(40);
     expect(b.trimDue()).toBe(true); // 122 > 1.5 * 40
     expect(b.trim()).toBe(true);
+    expect(trimmedCapacity(40)).toBe(43); // 40 + ceil(40 / 16)
     expect([b.slotCount, b.capacity, b.r.length, b.mot.length, b.crossDir.length]).toEqual([
-      40, 40, 40, 320, 40,
+      40, 43, 43, 344, 43,
     ]);
+    expect(b.trim()).toBe(false); // within the slack: nothing to give back
     for (let s = 0; s < 40; s++) {
       expect(b.ids[s]).toBe(s === 10 ? undefined : `b${s}`);
       if (s !== 10) expect(b.r[s]).toBe(s);
     }
-    // Slot 10 is still free and taken first; then a new slot at the end, which grows the arrays.
+    // Slot 10 is still free and taken first; then new slots at the end fill the slack without a
+    // reallocation, and the one after it grows the arrays.
     expect(b.allocate("new1")).toBe(10);
-    expect(b.capacity).toBe(40);
-    expect(b.allocate("new2")).toBe(40);
-    expect(b.capacity).toBe(60);
-    expect(b.trim()).toBe(true); // at a World's prepare: back to the 41 slots in use
-    expect(b.capacity).toBe(41);
+    for (let k = 0; k < 3; k++) expect(b.allocate(`new${2 + k}`)).toBe(40 + k);
+    expect(b.capacity).toBe(43);
+    expect(b.allocate("new5")).toBe(43);
+    expect(b.capacity).toBe(65); // ceil(43 * 1.5)
+    expect(b.trim()).toBe(true); // at a World's prepare: back to the 44 slots in use plus the slack
+    expect(b.capacity).toBe(trimmedCapacity(44));
+    expect(b.capacity).toBe(47);
     expect(b.trim()).toBe(false);
   });
 
@@ -86,7 +92,7 @@ describe("BodyStore capacity", () => {
     for (let s = 0; s < 90; s++) c.release(s);
     expect(c.trimDue()).toBe(false);
     expect(c.trim()).toBe(true);
-    expect([c.slotCount, c.capacity]).toEqual([100, 100]);
+    expect([c.slotCount, c.capacity]).toEqual([100, 107]); // 122 down to 100 + ceil(100 / 16)
     expect(c.allocate("low")).toBe(89); // the free slots below stay free, the last freed first
   });
 
@@ -99,7 +105,7 @@ describe("BodyStore capacity", () => {
     const before = b.version[99] as number; // 3 releases
     for (let s = 99; s >= 40; s--) b.release(s);
     b.trim();
-    expect(b.capacity).toBe(40);
+    expect(b.capacity).toBe(43);
     for (let k = 40; k < 100; k++) b.allocate(`c${k}`);
     expect(b.version[99] as number).toBeGreaterThan(before + 1);
     // The copy carries the floor too.
@@ -153,9 +159,9 @@ describe("a World's slots", () => {
     for (let k = 0; k < 100; k++) w.addBody(`b${k}`, disc(k));
     const { store, grid, heap } = parts(w);
     expect([store.capacity, grid.slotCapacity, heap.slotCapacity]).toEqual([122, 122, 122]);
-    w.advance({ maxEvents: 0 }); // prepared: trimmed to the 100 slots in use
+    w.advance({ maxEvents: 0 }); // prepared: trimmed to the 100 slots in use plus the slack
     const p = parts(w);
-    expect([p.store.capacity, p.grid.slotCapacity, p.heap.slotCapacity]).toEqual([100, 100, 100]);
+    expect([p.store.capacity, p.grid.slotCapacity, p.heap.slotCapacity]).toEqual([107, 107, 107]);
     expect(p.heap.size).toBe(100);
   });
 
@@ -163,16 +169,17 @@ describe("a World's slots", () => {
     const w = boxWorld();
     for (let k = 0; k < 100; k++) w.addBody(`b${k}`, disc(k));
     w.advance({ maxEvents: 0 });
-    for (let k = 99; k >= 67; k--) w.removeBody(`b${k}`);
+    expect(parts(w).store.capacity).toBe(107);
+    for (let k = 99; k >= 72; k--) w.removeBody(`b${k}`);
     w.advance({ maxEvents: 0 });
-    expect(parts(w).store.capacity).toBe(100); // 67 in use: 100 <= 1.5 * 67, not due
-    w.removeBody("b66");
+    expect(parts(w).store.capacity).toBe(107); // 72 in use: 107 <= 1.5 * 72, not due
+    w.removeBody("b71");
     w.advance({ maxEvents: 0 });
-    const p = parts(w);
+    const p = parts(w); // 71 in use: 107 > 1.5 * 71, trimmed to 71 + ceil(71 / 16)
     expect([p.store.capacity, p.grid.slotCapacity, p.heap.slotCapacity, p.heap.size]).toEqual([
-      66, 66, 66, 66,
+      76, 76, 76, 71,
     ]);
-    for (let k = 66; k < 100; k++) w.addBody(`b${k}`, disc(k));
+    for (let k = 71; k < 100; k++) w.addBody(`b${k}`, disc(k));
     expect(w.bodyCount).toBe(100);
     const r = w.advance({ maxEvents: 500 });
     expect(r.events).toBe(500);
@@ -192,7 +199,7 @@ describe("a World's slots", () => {
     for (let k = 0; k < 40; k++) trimmed.addBody(`x${BASE + k}`, { ...disc(BASE + k), vx: 1, vy: 1 });
     for (let k = 0; k < 40; k++) trimmed.removeBody(`x${BASE + k}`);
     trimmed.advance({ maxEvents: 0 });
-    expect(parts(trimmed).store.capacity).toBe(BASE);
+    expect(parts(trimmed).store.capacity).toBe(trimmedCapacity(BASE)); // 55
     for (let k = BASE; k < BASE + 30; k++) trimmed.addBody(`x${k}`, disc(k)); // the same ids, re-added
     // Reused: the same removals with no advance between, so the 30 take freed slots, not new ones.
     const reused = boxWorld();
@@ -202,7 +209,7 @@ describe("a World's slots", () => {
     for (let k = BASE; k < BASE + 30; k++) reused.addBody(`x${k}`, disc(k));
     for (const w of [never, trimmed, reused]) expect(w.advance({ maxEvents: 3000 }).events).toBe(3000);
     expect(parts(never).store.capacity).toBe(81);
-    expect(parts(trimmed).store.capacity).toBe(81);
+    expect(parts(trimmed).store.capacity).toBe(83); // 55 grown by 1.5; 81 in use, within the slack
     expect(fingerprint(trimmed)).toBe(fingerprint(never));
     expect(fingerprint(reused)).toBe(fingerprint(never));
     expect(never.counts.bodyBody).toBeGreaterThan(1000);
