@@ -117,7 +117,9 @@ describe("Editor over the worker protocol", () => {
     const ids = h.client.getSnapshot().doc!.actions.map((a) => ("id" in a ? a.id : ""));
     expect(ids).toContain("cue");
     expect(ids).not.toContain("striker");
-    expect(await h.editor.rename("body", "cue", "c1")).toMatch(/already used/);
+    expect(await h.editor.rename("body", "cue", "c1")).toBe(
+      'cue id: must not be the id of another body (got "c1")',
+    );
   });
 
   it("a cue strike gives a velocity away from the click point", async () => {

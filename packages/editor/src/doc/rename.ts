@@ -1,6 +1,10 @@
 /**
  * Renaming a body, line or point everywhere in a scene's action list (a rename is an edit of the
- * whole history: the object keeps one id from its creation on). Pure; refuses an id already in use.
+ * whole history: the object keeps one id from its creation on). Pure; refuses an empty id and an id
+ * another object of the kind has, in the form of the engine's refusals (sim/refusalText.ts):
+ * `label: must … (got "id")`, the label the id cell's (`b1 id`), the id typed in double quotes with
+ * JSON escapes as the engine quotes ids (the refusal said `b1 id: "b2" is already used by another
+ * body`, quoted by hand and before the reason: an id with a quote in it read ambiguously).
  */
 import type { Action, SceneFile } from "../engineTypes";
 
@@ -31,11 +35,17 @@ export function kindOfType(type: string): ObjectKind | null {
 /** The scene with `from` renamed to `to` for objects of `kind`; throws a message when refused. */
 export function renameObject(scene: SceneFile, kind: ObjectKind, from: string, to: string): SceneFile {
   // named as the other cells' refusals are: the object, then the column (audit of session 20)
-  if (to === "") throw new Error(`${from} id: must not be empty`);
+  const label = `${from} id`;
+  if (to === "") throw new Error(refusedId(label, "must not be empty", to));
   if (to !== from && scene.actions.some((a) => kindOf(a) === kind && "id" in a && a.id === to))
-    throw new Error(`${from} id: "${to}" is already used by another ${kind}`);
+    throw new Error(refusedId(label, `must not be the id of another ${kind}`, to));
   const actions = scene.actions.map((a) =>
     kindOf(a) === kind && "id" in a && a.id === from ? { ...a, id: to } : a,
   );
   return { ...scene, actions };
+}
+
+/** `label: reason (got "id")`: an id is text whatever it looks like, so always quoted (as `12`, `"12"`). */
+function refusedId(label: string, reason: string, id: string): string {
+  return `${label}: ${reason} (got ${JSON.stringify(id)})`;
 }
