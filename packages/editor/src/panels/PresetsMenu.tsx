@@ -13,6 +13,7 @@ import { useEditor } from "../EditorContext";
 import type { Editor } from "../editor";
 import { buildPreset, GALPERIN_ID, PRESETS, presetFileName } from "../presets";
 import { formatNumber, parseNumber } from "./EditableCell";
+import { afterPointerRelease } from "./pointerRelease";
 import { refusedTyped } from "./typedRefusal";
 
 /** Resolves once the editor's worker runs no computation (done, cancelled or stopped). */
@@ -52,9 +53,14 @@ export function PresetsMenu() {
   const checkDigits = (): number | null => {
     const n = readDigits(digits);
     if (typeof n === "number") {
-      if (refusal !== null && editor.ui.getState().message?.text === refusal)
-        editor.ui.setState({ message: null });
-      setRefusal(null);
+      // not under a pointer pressing Load preset: the refusal beside the field going moved the
+      // header's presets back onto its first line in a 1280 px window, away from the pointer, and
+      // the press made no click (pointerRelease.ts)
+      afterPointerRelease(() => {
+        if (refusal !== null && editor.ui.getState().message?.text === refusal)
+          editor.ui.setState({ message: null });
+        setRefusal((r) => (r === refusal ? null : r));
+      });
       return n;
     }
     setRefusal(n);

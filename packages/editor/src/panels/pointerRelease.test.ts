@@ -3,6 +3,18 @@ import { describe, expect, it, vi } from "vitest";
 import { afterPointerRelease } from "./pointerRelease";
 
 describe("afterPointerRelease", () => {
+  // first in this file: no call was made before the press (the blur of a field, made by the press,
+  // is what calls it first)
+  it("follows a press made before its first call", async () => {
+    window.dispatchEvent(new Event("pointerdown"));
+    const later = vi.fn();
+    afterPointerRelease(later);
+    expect(later).not.toHaveBeenCalled();
+    window.dispatchEvent(new Event("pointerup"));
+    await new Promise((r) => setTimeout(r, 0));
+    expect(later).toHaveBeenCalledTimes(1);
+  });
+
   it("runs at once with no pointer pressed, else after the release's click", async () => {
     const now = vi.fn();
     afterPointerRelease(now);

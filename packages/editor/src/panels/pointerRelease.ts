@@ -4,7 +4,9 @@
  * button elsewhere blurs it) takes its refusal down; done at once, the panel's layout moved under
  * the pointer between the press and the release, and the button pressed (Compute under Seconds
  * ahead's refusal, Load preset beside the digits' one) got no click (e2e, session 26). The pressed
- * state is followed by listeners on the window, installed at the first call.
+ * state is followed by listeners on the window, installed when the module loads: installed at the
+ * first call, they missed the press whose blur made that call (the first refusal taken down on
+ * leaving a field, as the digits' by pressing Load preset, still moved the button away).
  */
 
 let pressed = false;
@@ -34,6 +36,8 @@ function install(): void {
   window.addEventListener("pointerup", release, true);
   window.addEventListener("pointercancel", release, true);
 }
+
+install();
 
 export function afterPointerRelease(fn: () => void): void {
   install();
