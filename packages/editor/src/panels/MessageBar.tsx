@@ -1,18 +1,46 @@
 /**
  * The last message (a refused edit or paste, or a notice), with a close button. It sits in a slot
- * of the header one line high, whatever its length: a message that needs more lines hangs over the
- * top of the stage until it is dismissed or replaced, so showing one never moves the canvas.
+ * of the header one line high, whatever its length, so showing, replacing or dismissing one never
+ * moves the stage (its toolbar and canvas) at any window width. In a wide window a message that
+ * needs more lines hangs over the top of the stage until it is dismissed or replaced. In a window
+ * up to 1000 px wide (styles/layout.css) the stage's toolbar sits right under the slot, which is
+ * narrow there, so a long message is cut to its line (an ellipsis) and a More button shows it whole,
+ * hanging over the stage, until Less, ✕ or the next message; screen readers read it whole either way.
+ * (Below 1000 px it once took its lines in the header instead, which moved the stage down by a line
+ * or more for any message longer than the slot: at 900 px a refusal of 90 characters moved the
+ * canvas 6 px, a long one 51 px; at 700 px even `x: must be a number (got "abc")` did.)
  */
+import { useRef, useState } from "react";
 import { useEditor, useUi } from "../EditorContext";
+import type { Message } from "../store/uiStore";
+import { useTextCut } from "./useTextCut";
 
 export function MessageBar() {
   const editor = useEditor();
   const message = useUi((s) => s.message);
+  /** The message shown whole (More pressed); any other message is shown on its line first. */
+  const [openFor, setOpenFor] = useState<Message | null>(null);
+  const open = message !== null && openFor === message;
+  const textRef = useRef<HTMLSpanElement>(null);
+  const cut = useTextCut(textRef, message?.text);
   return (
     <div className="message-slot">
       {message && (
-        <div className={`message ${message.tone}`} role={message.tone === "error" ? "alert" : "status"}>
-          <span>{message.text}</span>
+        <div
+          className={`message ${message.tone}${open ? " open" : ""}`}
+          role={message.tone === "error" ? "alert" : "status"}
+        >
+          <span ref={textRef}>{message.text}</span>
+          {(cut || open) && (
+            <button
+              type="button"
+              className="message-more"
+              aria-expanded={open}
+              onClick={() => setOpenFor(open ? null : message)}
+            >
+              {open ? "Less" : "More"}
+            </button>
+          )}
           <button
             type="button"
             aria-label="Dismiss message"

@@ -90,6 +90,8 @@ export function PresetsMenu() {
             value={digits}
             aria-invalid={refusal !== null}
             aria-describedby={refusal === null ? undefined : refusalId}
+            // the refusal beside the field is not drawn in a narrow window (styles/layout.css)
+            title={refusal ?? undefined}
             onChange={(e) => setDigits(e.target.value)}
             onBlur={() => void checkDigits()}
           />
