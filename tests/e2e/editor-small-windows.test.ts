@@ -3,7 +3,8 @@
  * and can be dismissed; at 800 x 600 it keeps to its line in the header and the toolbar stays usable:
  * editor-narrow-messages.test.ts measures the stage for every kind of message at 700 and 900 px),
  * and small windows (1024 x 700 down to 390 x 844) keep the canvas, the Time slider and every time
- * and speed control usable, nothing overflowing sideways.
+ * and speed control usable, nothing overflowing sideways; from 700 to 900 px the Time slider widens
+ * with the window (Speed goes under Time rather than squeeze it).
  */
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -148,6 +149,26 @@ describe("messages and small windows", () => {
         await page.evaluate(() => window.scrollTo(0, 0));
         await screenshot(page, `13-window-${width}x${height}`);
       }
+    } finally {
+      await page.setViewportSize({ width: 1400, height: 900 });
+    }
+  });
+});
+
+describe("the Time slider in a stacked window", () => {
+  it("from 700 to 900 px it widens with the window: Speed does not squeeze it (it was 766 px at 800, 412 at 850)", async () => {
+    try {
+      let last = 0;
+      for (let width = 700; width <= 900; width += 25) {
+        await page.setViewportSize({ width, height: 700 });
+        const slider = () => page.getByRole("slider", { name: "Time" }).boundingBox();
+        await poll(async () => (await slider())!.width).toBeGreaterThan(last);
+        const now = (await slider())!.width;
+        // the whole line but the panel's and the bar's margins
+        expect(now, `${width} px`).toBeGreaterThanOrEqual(width - 50);
+        last = now;
+      }
+      await screenshot(page, "13-window-900-time-bar");
     } finally {
       await page.setViewportSize({ width: 1400, height: 900 });
     }
