@@ -25,7 +25,9 @@ export class ChapgameError extends Error {
 export class SimulationError extends Error {
   readonly time: number;
   /** What the failing event involved, when one contact is to blame: the body (or the two bodies, in
-   *  id order), then the line or point; [] for a Zeno state of many events. */
+   *  id order), then the line or point. For a Zeno state, who it caught (zenoAdvice.ts): the bodies,
+   *  then the lines and points they touch (a crush: the crushed discs, the crusher, then the sides);
+   *  [] only when the watch was not told (a ZenoWatch used alone). */
   readonly ids: readonly string[];
   constructor(message: string, time: number, ids: readonly string[] = []) {
     super(message);

@@ -37,7 +37,14 @@ function reported(
       `^${bodies} (is|are) crushed in line between the immovable body "${p}" and ${end}, which close on (it|them) by t=\\S+: infinitely many collisions before then`,
     ),
   );
-  expect((error as SimulationError).ids).toEqual([]);
+  // ids: the row from P to the end, P, then the end; the message ends in what to do
+  const quoted = (text: string) => [...text.matchAll(/"([^"]*)"/g)].map((m) => m[1]);
+  expect((error as SimulationError).ids).toEqual([...quoted(bodies), p, ...quoted(end)]);
+  expect((error as Error).message).toMatch(
+    new RegExp(
+      `: to go on, stop the immovable body "${p}" \\(or turn it away\\) before t=\\S+, give it a finite mass, or remove ${end}$`,
+    ),
+  );
   return { events, error: error as SimulationError };
 }
 

@@ -15,8 +15,9 @@
  * - the row's stretch of L keeps clear of every other line, point and immovable disc, and P's path
  *   meets none (pathClear): nothing else changes P's motion, or knocks a disc of the row off L.
  *
- * The report is a SimulationError at the event's time with ids [] (a Zeno state of many events),
- * thrown before anything is counted or changed, so the same event throws again.
+ * The report is a SimulationError at the event's time naming the row, P and the end, and what to do
+ * (zenoAdvice.ts); its ids are the row (from P to the end), P, then the end. It is thrown before
+ * anything is counted or changed, so the same event throws again.
  */
 import { ZENO_TRAP_SCALE, ZENO_TRAP_SLACK } from "../tolerances.js";
 import { CellCrossings } from "./cellCrossings.js";
@@ -25,6 +26,7 @@ import { footOf, type LineDisc, lineAxis, lineCloses, onLine, orderedSum } from 
 import { length, triangleCoreDistance } from "./pocketGeometry.js";
 import { quoteId } from "./refusalText.js";
 import { before, fill, named, type Side, scratch } from "./trapSides.js";
+import { bodiesNamed, crushAdvice } from "./zenoAdvice.js";
 
 const INF = Number.POSITIVE_INFINITY;
 
@@ -33,13 +35,6 @@ export const hull: Float64Array = new Float64Array(6);
 /** The stretch of line the row keeps to, and it as a flat triangle. */
 const corridor = new Float64Array(4);
 const strip = new Float64Array(6);
-
-/** "body "a"", or "bodies "a", "b" and "c"". */
-function bodiesNamed(ids: readonly string[]): string {
-  const q = ids.map(quoteId);
-  if (q.length === 1) return `body ${q[0] as string}`;
-  return `bodies ${q.slice(0, -1).join(", ")} and ${q[q.length - 1] as string}`;
-}
 
 export class LineWatch extends CellCrossings {
   /**
@@ -103,9 +98,11 @@ export class LineWatch extends CellCrossings {
     const at = (s: number): number => side * (k === 0 ? this.xAt(s, t) : this.yAt(s, t));
     row.sort((u, v) => at(v) - at(u));
     const ids = row.map((s) => b.ids[s] as string);
+    const crusher = b.ids[p] as string;
     throw new SimulationError(
-      `${bodiesNamed(ids)} ${ids.length === 1 ? "is" : "are"} crushed in line between the immovable body ${quoteId(b.ids[p] as string)} and ${named(end)}, which close on ${ids.length === 1 ? "it" : "them"} by t=${tStar}: infinitely many collisions before then (a Zeno state: a disc crushed by an immovable body), which the exact model cannot pass`,
+      `${bodiesNamed(ids)} ${ids.length === 1 ? "is" : "are"} crushed in line between the immovable body ${quoteId(crusher)} and ${named(end)}, which close on ${ids.length === 1 ? "it" : "them"} by t=${tStar}: infinitely many collisions before then (a Zeno state: a disc crushed by an immovable body), which the exact model cannot pass: ${crushAdvice([crusher], [named(end)], tStar)}`,
       t,
+      [...ids, crusher, end.id],
     );
   }
 

@@ -8,7 +8,7 @@
  * It is told every stop: the body's id and whether it stopped exactly where its motion started (a
  * micro-stop). It keeps the streaks of consecutive micro-stops of up to ZENO_PUSH_BODIES bodies; a
  * stop that moved the body ends its streak, and so does an edit of the body (`forget`). A streak
- * longer than ZENO_PUSH_STREAK throws a SimulationError naming the body. Ordinary scenes have
+ * longer than ZENO_PUSH_STREAK throws a SimulationError naming the body and what to do (zenoAdvice.ts). Ordinary scenes have
  * micro-stops too (a ball nudged by a rounding-size impulse in a break: 6 of 47 events), but not
  * 100,000 of one ball without it moving or being edited in between.
  *
@@ -17,7 +17,7 @@
  */
 import { ZENO_PUSH_BODIES, ZENO_PUSH_STREAK } from "../tolerances.js";
 import { SimulationError } from "./errors.js";
-import { quoteId } from "./refusalText.js";
+import { pushReport } from "./zenoAdvice.js";
 
 /** Streaks as saved: [body id, consecutive micro-stops] per watched body. */
 export type PushStreaks = readonly (readonly [string, number])[];
@@ -34,12 +34,7 @@ export class PushWatch {
     if (!unmoved) return;
     const k = this.ids.indexOf(id);
     const n = k >= 0 ? (this.counts[k] as number) + 1 : 1;
-    if (n > ZENO_PUSH_STREAK)
-      throw new SimulationError(
-        `body ${quoteId(id)} stopped ${n} times in a row where it had been set in motion, not moving by one rounding unit (to t=${time}): a disc pushed along against friction by another (a sustained push), which the model of elastic impulses and sliding friction resolves only by ever more collisions`,
-        time,
-        [id],
-      );
+    if (n > ZENO_PUSH_STREAK) throw new SimulationError(pushReport(id, n, time), time, [id]);
   }
 
   /** Count the stop of body `id` at `time`; `unmoved`: it stopped where its motion started. */

@@ -129,7 +129,13 @@ describe(`a disc crushed into a corner by an immovable disc is reported within $
       /^body "d" is shut in by the immovable body "p", line "(floor|wall)" and line "(floor|wall)", which close on it by t=\S+: infinitely many collisions before then \(a Zeno state: a disc crushed by an immovable body\)/,
     );
     expect(e.message).toMatch(/"floor".*"wall"|"wall".*"floor"/);
-    expect(e.ids).toEqual([]);
+    // ids: the disc, the crusher, then the sides in the order the message names them; then what to do
+    const sides = [...e.message.matchAll(/line "(\w+)"/g)].map((m) => m[1]);
+    expect(e.ids).toEqual(["d", "p", ...sides.slice(0, 2)]);
+    expect([...e.ids].sort()).toEqual(["d", "floor", "p", "wall"]);
+    expect(e.message).toMatch(
+      /: to go on, stop the immovable body "p" \(or turn it away\) before t=\S+, give it a finite mass, or remove one of line "(floor|wall)" and line "(floor|wall)"$/,
+    );
     expect(events).toBeLessThanOrEqual(BOUND);
     // Met just before the crush (within a thousandth of its time), where the World stopped.
     expect(e.time).toBe(w.time);
@@ -152,6 +158,9 @@ describe(`other pockets an immovable disc closes on a disc are reported within $
     expect((error as Error).message).toMatch(
       /^body "d" is shut in by the immovable body "P", the immovable body "[LR]" and the immovable body "[LR]"/,
     );
+    // the immovable sides are bodies: named after the disc and the crusher
+    expect([...(error as SimulationError).ids.slice(2)].sort()).toEqual(["L", "R"]);
+    expect((error as SimulationError).ids.slice(0, 2)).toEqual(["d", "P"]);
     expect(events).toBeLessThanOrEqual(BOUND);
     // The pocket closes when P's centre is 1.5 above the wedged spot (0, 0.9): at t = 3.6.
     expect(w.time).toBeLessThan(3.6);
@@ -197,7 +206,11 @@ describe("a disc crushed in line (all on one line parallel to an axis; rows of d
         `^body "\\w+" is crushed in line between the immovable body "\\w+" and ${end}, which close on it by t=`,
       ),
     );
-    expect((error as SimulationError).ids).toEqual([]);
+    // ids: the disc, the crusher, then the end
+    const [disc, crusher] = [...(error as Error).message.matchAll(/"(\w+)"/g)].map((m) => m[1]);
+    const endId = /"(\w+)"/.exec(end)?.[1];
+    expect((error as SimulationError).ids).toEqual([disc, crusher, endId]);
+    expect((error as Error).message).toMatch(`or remove ${end}`);
     return events;
   }
 

@@ -12,8 +12,10 @@
  * t* meets no obstacle and no immovable disc: nothing else can change P's motion (finite discs do
  * not); and no other immovable disc can reach P's path or a side of the pocket before t*
  * (moversClear: without gravity, by a bound on their speeds; under gravity none may move). The
- * report is a SimulationError at the event's time with ids [] (a Zeno state of many events), thrown
- * before anything is counted or changed, so the same event throws again. When no pocket is proven,
+ * report is a SimulationError at the event's time naming the disc, the crusher and the sides, and
+ * what to do (zenoAdvice.ts); its ids are the disc, the crusher, the immovable discs among the sides,
+ * then the lines and points among them, in the order the message names them. It is thrown before
+ * anything is counted or changed, so the same event throws again. When no pocket is proven,
  * a crush in line is tried (lineWatch.ts: d and P on one axis-parallel line, pressing the row of
  * discs on it against a still end).
  */
@@ -25,6 +27,7 @@ import { pocketCloses } from "./pocket.js";
 import { coreDistance, length, triangleCoreDistance } from "./pocketGeometry.js";
 import { quoteId } from "./refusalText.js";
 import { before, fill, named, type Side, scratch } from "./trapSides.js";
+import { crushAdvice } from "./zenoAdvice.js";
 
 const INF = Number.POSITIVE_INFINITY;
 
@@ -74,9 +77,14 @@ export class TrapWatch extends LineWatch {
       if (Number.isNaN(tStar) || !this.pathClear(p, R, ZENO_TRAP_SLACK * r)) continue;
       if (!this.moversClear(p, chain, tStar - t, ZENO_TRAP_SLACK * r)) continue;
       const names = chain.map(named);
+      const crusher = b.ids[p] as string;
+      const ids = [b.ids[d] as string, crusher];
+      for (const side of chain) if (side.rank === 2) ids.push(side.id);
+      for (const side of chain) if (side.rank !== 2) ids.push(side.id);
       throw new SimulationError(
-        `body ${quoteId(b.ids[d] as string)} is shut in by the immovable body ${quoteId(b.ids[p] as string)}, ${names.slice(0, -1).join(", ")} and ${names[names.length - 1] as string}, which close on it by t=${tStar}: infinitely many collisions before then (a Zeno state: a disc crushed by an immovable body), which the exact model cannot pass`,
+        `body ${quoteId(b.ids[d] as string)} is shut in by the immovable body ${quoteId(crusher)}, ${names.slice(0, -1).join(", ")} and ${names[names.length - 1] as string}, which close on it by t=${tStar}: infinitely many collisions before then (a Zeno state: a disc crushed by an immovable body), which the exact model cannot pass: ${crushAdvice([crusher], names, tStar)}`,
         t,
+        ids,
       );
     }
     this.guardLineCrush(d, p);

@@ -5,12 +5,16 @@
  * tried by the trap watch (trapWatch.ts), which proves a crush geometrically. Here the World tells
  * them what they cannot see for themselves: whether an immovable body moves, whether a stopping
  * body moved at all, the masses of the bodies in the event (a long burst at one instant among very
- * different masses is finite), and which bodies the event is about (for the message).
+ * different masses is finite), and, for a report only, who the Zeno state caught (zenoCaught.ts:
+ * the event's bodies and its line or point, named, and the bodies and obstacles touching them).
  */
 import { ZENO_TRAP_EVERY, ZENO_TRAP_TRIES } from "../tolerances.js";
-import { EV_BODY, EV_STOP } from "./bodyStore.js";
+import { EV_BODY, EV_LINE, EV_STOP } from "./bodyStore.js";
+import type { Line, Point } from "./obstacles.js";
 import { quoteId } from "./refusalText.js";
 import { TrapWatch } from "./trapWatch.js";
+import type { ZenoCulprits } from "./zenoAdvice.js";
+import { type CaughtView, caught } from "./zenoCaught.js";
 
 export class ZenoGuard extends TrapWatch {
   /**
@@ -34,7 +38,7 @@ export class ZenoGuard extends TrapWatch {
       before,
       Math.max(1, b.slotCount),
       this.pumps,
-      this.describeGuarded,
+      this.culprits,
       kind === EV_STOP ? Number.POSITIVE_INFINITY : (b.m[s] as number),
       kind === EV_BODY ? (b.m[b.evOther[s] as number] as number) : Number.POSITIVE_INFINITY,
     );
@@ -49,16 +53,35 @@ export class ZenoGuard extends TrapWatch {
 
   private readonly pumps = (): boolean => this.pumpsEnergy();
 
-  /** Slot of the event being counted, and its description for a Zeno message (no allocation per event). */
+  /** Slot of the event being counted, for a Zeno report (no allocation per event). */
   private guarded = -1;
-  private readonly describeGuarded = (): string => {
+
+  /** Who the Zeno state met at the guarded event caught (zenoCaught.ts); called only to report it. */
+  private readonly culprits = (since: number): ZenoCulprits => {
     const b = this.store;
     const s = this.guarded;
     const kind = b.evKind[s] as number;
+    const other = b.evOther[s] as number;
     const id = quoteId(b.ids[s] as string);
-    if (kind === EV_BODY) return `${id} and ${quoteId(b.ids[b.evOther[s] as number] as string)}`;
-    if (kind === EV_STOP) return `${id} stopping`;
-    return `${id} and an obstacle`;
+    const view: CaughtView = {
+      store: b,
+      lines: this.lineList,
+      points: this.pointList,
+      x: (q) => this.xAt(q, this.now),
+      y: (q) => this.yAt(q, this.now),
+      moving: (q) => this.isMoving(q),
+    };
+    if (kind === EV_BODY)
+      return caught(
+        view,
+        { slots: [s, other], obstacle: null, last: `${id} and ${quoteId(b.ids[other] as string)}` },
+        since,
+      );
+    if (kind === EV_STOP) return caught(view, { slots: [s], obstacle: null, last: `${id} stopping` }, since);
+    const line = kind === EV_LINE;
+    const obstacle = line ? (this.lineList[other] as Line).id : (this.pointList[other] as Point).id;
+    const last = `${id} and ${line ? "line" : "point"} ${quoteId(obstacle)}`;
+    return caught(view, { slots: [s], obstacle: { line, id: obstacle }, last }, since);
   };
 
   /**

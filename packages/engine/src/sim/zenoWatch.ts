@@ -39,6 +39,7 @@ import {
 } from "../tolerances.js";
 import { SimulationError } from "./errors.js";
 import { type PushStreaks, PushWatch } from "./pushWatch.js";
+import { convergingReport, culpritIds, sameInstantReport, type ZenoCulprits } from "./zenoAdvice.js";
 
 const INF = Number.POSITIVE_INFINITY;
 /** save() packs the two counts into one number: sameTimeCount + windowCount * COUNT_SPLIT. */
@@ -94,14 +95,16 @@ export class ZenoWatch {
    * Count an event at `time`, the World's time before it being `before`, in a world of `n` body
    * slots, between bodies of masses `ma` and `mb` (Infinity for an obstacle, a stop's second body
    * or an immovable body); throw if it reveals a Zeno state. `pumpsEnergy` is asked only at the end
-   * of a window that completes a converging run. `what` describes the event, for the message only.
+   * of a window that completes a converging run. `culprits` names who is caught, for the report
+   * only (its message and ids: zenoAdvice.ts), given the time since which they have events: the
+   * instant, or the start of the last window.
    */
   check(
     time: number,
     before: number,
     n: number,
     pumpsEnergy: () => boolean,
-    what?: () => string,
+    culprits?: (since: number) => ZenoCulprits,
     ma = INF,
     mb = INF,
   ): void {
@@ -125,9 +128,11 @@ export class ZenoWatch {
       sameTime > plain &&
       (since > plain || sameTime > simultaneousLimitWithSpread(n, hi > lo ? Math.sqrt(hi / lo) : 1))
     ) {
+      const c = culprits?.(time);
       throw new SimulationError(
-        `more than ${sameTime} events at the same instant t=${time}${what === undefined ? "" : ` (the last: ${what()})`}: a Zeno state (resting contact, two discs pressed together, or an inelastic collapse) that the exact model cannot resolve`,
+        sameInstantReport(sameTime, time, c),
         time,
+        c === undefined ? [] : culpritIds(c),
       );
     }
     this.massLo = lo;
@@ -144,9 +149,11 @@ export class ZenoWatch {
     if (this.windowStart === -INF) this.runStart = time;
     else if (!(progress <= ZENO_SHRINK * this.lastProgress)) this.runStart = this.windowStart;
     else if (progress <= ZENO_STREAK_PROGRESS * (this.windowStart - this.runStart) && pumpsEnergy()) {
+      const c = culprits?.(this.windowStart);
       throw new SimulationError(
-        `${w} events in ${progress} (to t=${time}), each window of ${w} events shorter than the one before since t=${this.runStart}: events accumulate at a finite time (a Zeno state, e.g. a disc crushed by an immovable body), which the exact model cannot pass`,
+        convergingReport(w, progress, time, this.runStart, c),
         time,
+        c === undefined ? [] : culpritIds(c),
       );
     }
     this.sameTimeCount = sameTime;
