@@ -136,11 +136,11 @@ describe("parseArgs", () => {
     [["--versio"], "unknown option --versio before a command: the command comes first (simulate, state"],
     [["--until-time", "5", "s.json"], "unknown option --until-time before a command"],
     [["simulate"], "simulate: missing SCENE file (a scene file's name, or - to read standard input)"],
-    [["simulate", "a", "b"], "one SCENE file expected"],
+    [["simulate", "a", "b"], "simulate: takes one SCENE file (got 2 arguments)"],
     [["simulate", "a", "--at", "1"], "unknown option --at for simulate"],
     [["state", "a"], "state: --at T is required"],
     [["state", "a", "--at"], "--at needs a value"],
-    [["state", "a", "--at", "-1"], '--at: must be a non-negative number, got "-1"'],
+    [["state", "a", "--at", "-1"], '--at: must be a non-negative number (got "-1")'],
     [["simulate", "a", "--until-time", "soon"], "--until-time: must be a non-negative number"],
     [["simulate", "a", "--max-events", "1.5"], "--max-events: must be a non-negative integer"],
     [["simulate", "a", "--events=yes"], "--events takes no value"],
@@ -152,16 +152,16 @@ describe("parseArgs", () => {
     // (review of session 25: a user asking for no limit was not told how; --max-events says so)
     [
       ["simulate", "a", "--until-time", "Infinity"],
-      '--until-time: must be a finite number, got "Infinity" (for no limit, leave it out)',
+      '--until-time: must be a finite number (got "Infinity"): for no limit, leave it out',
     ],
     [
       ["simulate", "a", "--until-time=1e999"],
-      '--until-time: must be a finite number, got "1e999" (for no limit, leave it out)',
+      '--until-time: must be a finite number (got "1e999"): for no limit, leave it out',
     ],
     // --at and --to have no "no limit": no hint there
-    [["state", "a", "--at", "Infinity"], /^--at: must be a finite number, got "Infinity"$/],
-    [["path", "a", "--id", "b", "--to", "1e999"], /^--to: must be a finite number, got "1e999"$/],
-    [["state", "a", "--at=1e400"], '--at: must be a finite number, got "1e400"'],
+    [["state", "a", "--at", "Infinity"], /^--at: must be a finite number \(got "Infinity"\)$/],
+    [["path", "a", "--id", "b", "--to", "1e999"], /^--to: must be a finite number \(got "1e999"\)$/],
+    [["state", "a", "--at=1e400"], '--at: must be a finite number (got "1e400")'],
     // regression: a count beyond 2^53 was refused as "must be a non-negative integer"
     [
       ["simulate", "a", "--max-events", "1e21"],
@@ -170,31 +170,31 @@ describe("parseArgs", () => {
     // review of session 26: "must be a non-negative integer" did not say what was wrong with 0x10
     [
       ["simulate", "a", "--max-events", "0x10"],
-      '--max-events: must be a whole number written in decimal (1000, 1e6), got "0x10"',
+      '--max-events: must be a whole number written in decimal (1000, 1e6) (got "0x10")',
     ],
-    [["simulate", "a", "--max-events", "-0"], '--max-events: must be a non-negative integer, got "-0"'],
+    [["simulate", "a", "--max-events", "-0"], '--max-events: must be a non-negative integer (got "-0")'],
     [["simulate", "a", "--max-events", "2.5e0"], "--max-events: must be a non-negative integer"],
     // regression (acceptance audit): times took Number()'s other notations, counts did not
     // (review of session 26: refused as "must be a non-negative number", which 0x10 is)
     [
       ["simulate", "a", "--until-time", "0x10"],
-      '--until-time: must be a number written in decimal (12.5, 1e-3), got "0x10"',
+      '--until-time: must be a number written in decimal (12.5, 1e-3) (got "0x10")',
     ],
-    [["state", "a", "--at", "0b11"], '--at: must be a number written in decimal (12.5, 1e-3), got "0b11"'],
-    [["state", "a", "--at", "1_000"], '--at: must be a non-negative number, got "1_000"'],
-    [["state", "a", "--at", "-0x10"], '--at: must be a non-negative number, got "-0x10"'],
-    [["state", "a", "--at="], '--at: must be a non-negative number, got ""'],
+    [["state", "a", "--at", "0b11"], '--at: must be a number written in decimal (12.5, 1e-3) (got "0b11")'],
+    [["state", "a", "--at", "1_000"], '--at: must be a non-negative number (got "1_000")'],
+    [["state", "a", "--at", "-0x10"], '--at: must be a non-negative number (got "-0x10")'],
+    [["state", "a", "--at="], '--at: must be a non-negative number (got "")'],
     // regression: an option was taken for the value of the one before it
     [["simulate", "a", "--until-time", "--events"], "--until-time needs a value"],
-    [["--version", "extra"], '--version takes no arguments, got "extra"'],
+    [["--version", "extra"], '--version: takes no arguments (got "extra")'],
     [["check", "a", "--events"], "unknown option --events for check (options: --compact, --progress)"],
     [["check"], "check: missing SCENE file"],
     [["path", "a", "--to", "1"], "path: --id ID is required"],
     [["path", "a", "--id", "b"], "path: --to T is required"],
-    [["path", "a", "--id=", "--to", "1"], "--id: must be a body's id, got an empty string"],
-    [["path", "a", "--id", "b", "--to", "1", "--from", "2"], "--from (2) must not be after --to (1)"],
+    [["path", "a", "--id=", "--to", "1"], '--id: must be a body\'s id (got "")'],
+    [["path", "a", "--id", "b", "--to", "1", "--from", "2"], "--from: must not be after --to (1) (got 2)"],
     [["path", "a", "--id", "b", "--to", "1", "--events"], "unknown option --events for path"],
-    [["path", "a", "--id", "b", "--to", "-1"], '--to: must be a non-negative number, got "-1"'],
+    [["path", "a", "--id", "b", "--to", "-1"], '--to: must be a non-negative number (got "-1")'],
   ];
   for (const [argv, msg] of bad)
     it(`refuses ${JSON.stringify(argv)}`, () => {

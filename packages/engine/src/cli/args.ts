@@ -113,24 +113,30 @@ updating line, when stderr is a terminal. The result on stdout is the same with 
 Exit status: 0 success, 2 invalid input or a scene that cannot be continued, 1 internal error or
 a result that could not be written, 130 or 143 interrupted (SIGINT, SIGTERM).`;
 
+/** A value typed on the command line as a refusal names it: quoted with JSON escapes, as the
+ *  editor names what was typed (`(got "abc")`; the engine's form, sim/refusalText.ts). */
+function typed(v: string): string {
+  return JSON.stringify(v.length > 40 ? `${v.slice(0, 40)}…` : v);
+}
+
 /** A time as written in decimal (12.5, .5, 3., 1e-3); Number() alone also takes 0x10 and 0b11. */
 const DECIMAL_TIME = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
 
 /** For a bound that may be left out (--until-time), an infinite value's refusal says so, as
  *  --max-events's does: a user asking for no limit learns how to get one. */
-const NO_LIMIT_HINT = " (for no limit, leave it out)";
+const NO_LIMIT_HINT = ": for no limit, leave it out";
 
 function time(name: string, v: string, hint = ""): number {
   const t = Number(v);
   if (/^[+-]?infinity$/i.test(v.trim()))
-    throw new UsageError(`${name}: must be a finite number, got "${v}"${hint}`);
+    throw new UsageError(`${name}: must be a finite number (got ${typed(v)})${hint}`);
   if (!DECIMAL_TIME.test(v.trim()) && /^\+?\d/.test(v.trim()) && t >= 0)
     // 0x10, 0b11, 1_000: a number to Number() or to a reader, but not a time as the CLI reads one
     // (review of session 26: "must be a non-negative number" did not say what was wrong with 0x10)
-    throw new UsageError(`${name}: must be a number written in decimal (12.5, 1e-3), got "${v}"`);
+    throw new UsageError(`${name}: must be a number written in decimal (12.5, 1e-3) (got ${typed(v)})`);
   if (!DECIMAL_TIME.test(v.trim()) || t < 0)
-    throw new UsageError(`${name}: must be a non-negative number, got "${v}"`);
-  if (!Number.isFinite(t)) throw new UsageError(`${name}: must be a finite number, got "${v}"${hint}`);
+    throw new UsageError(`${name}: must be a non-negative number (got ${typed(v)})`);
+  if (!Number.isFinite(t)) throw new UsageError(`${name}: must be a finite number (got ${typed(v)})${hint}`);
   return t;
 }
 
@@ -141,12 +147,12 @@ const DECIMAL = /^\+?\d+(\.\d+)?(e\+?\d+)?$/i;
 function count(name: string, v: string): number {
   const n = Number(v);
   if (!DECIMAL.test(v.trim()) && /^\+?\d/.test(v.trim()) && Number.isInteger(n) && n >= 0)
-    throw new UsageError(`${name}: must be a whole number written in decimal (1000, 1e6), got "${v}"`);
+    throw new UsageError(`${name}: must be a whole number written in decimal (1000, 1e6) (got ${typed(v)})`);
   if (!DECIMAL.test(v.trim()) || !Number.isInteger(n))
-    throw new UsageError(`${name}: must be a non-negative integer, got "${v}"`);
+    throw new UsageError(`${name}: must be a non-negative integer (got ${typed(v)})`);
   if (!Number.isSafeInteger(n))
     throw new UsageError(
-      `${name}: must be an integer from 0 to ${Number.MAX_SAFE_INTEGER}, got "${v}" (for no limit, leave it out)`,
+      `${name}: must be an integer from 0 to ${Number.MAX_SAFE_INTEGER} (got ${typed(v)}): for no limit, leave it out`,
     );
   return n;
 }
@@ -169,7 +175,8 @@ export function parseArgs(argv: readonly string[]): Command {
   const options = endOfOptions < 0 ? argv : argv.slice(0, endOfOptions);
   if (asksHelp(options) || argv[0] === "help") return { command: "help" };
   if (argv[0] === "--version" || argv[0] === "-V") {
-    if (argv.length > 1) throw new UsageError(`${argv[0]} takes no arguments, got "${argv[1]}"`);
+    if (argv.length > 1)
+      throw new UsageError(`${argv[0]}: takes no arguments (got ${typed(argv[1] as string)})`);
     return { command: "version" };
   }
   const [cmd, ...rest] = argv;
@@ -221,7 +228,7 @@ export function parseArgs(argv: readonly string[]): Command {
   if (positional.length === 0)
     throw new UsageError(`${cmd}: missing SCENE file (a scene file's name, or - to read standard input)`);
   if (positional.length > 1)
-    throw new UsageError(`${cmd}: one SCENE file expected, got ${positional.length} arguments`);
+    throw new UsageError(`${cmd}: takes one SCENE file (got ${positional.length} arguments)`);
   const scene = positional[0] as string;
   const events = opts.has("--events");
   const progress = opts.has("--progress");
@@ -235,7 +242,7 @@ export function parseArgs(argv: readonly string[]): Command {
   if (cmd === "path") {
     const id = opts.get("--id");
     if (id === undefined) throw new UsageError("path: --id ID is required");
-    if (id === "") throw new UsageError("--id: must be a body's id, got an empty string");
+    if (id === "") throw new UsageError('--id: must be a body\'s id (got "")');
     const to = opts.get("--to");
     if (to === undefined) throw new UsageError("path: --to T is required");
     const from = opts.get("--from");
@@ -246,7 +253,7 @@ export function parseArgs(argv: readonly string[]): Command {
       from: from === undefined ? 0 : time("--from", from as string),
       to: time("--to", to as string),
     };
-    if (c.from > c.to) throw new UsageError(`--from (${c.from}) must not be after --to (${c.to})`);
+    if (c.from > c.to) throw new UsageError(`--from: must not be after --to (${c.to}) (got ${c.from})`);
     if (compact) c.compact = true;
     if (progress) c.progress = true;
     return c;

@@ -65,7 +65,7 @@ describe("path: a body's exact pieces", () => {
     // an error about the arguments alone names no file
     const args = io({ "rest.json": sceneText(RESTS_AT_5) });
     expect(runCli(["path", "rest.json", "--id", "ball", "--from", "5", "--to", "4"], args.cli)).toBe(2);
-    expect(args.out.stderr).toBe("chapgame: --from (5) must not be after --to (4)\n");
+    expect(args.out.stderr).toBe("chapgame: --from: must not be after --to (4) (got 5)\n");
   });
 
   it("path of a body the scene adds only after --to prints no piece, exit 0 (it was an internal error, exit 1)", () => {
