@@ -48,7 +48,9 @@ describe("exactPolySign", () => {
   });
   it("refuses non-finite input, naming the field", () => {
     expect(() => exactPolySign([1, Number.NaN], 1)).toThrow(/coeffs\[1\]/);
-    expect(() => exactPolySign([1, 2], Number.POSITIVE_INFINITY)).toThrow(/x must be a finite number/);
+    expect(() => exactPolySign([1, 2], Number.POSITIVE_INFINITY)).toThrow(
+      /^x: must be a finite number \(got Infinity\)$/,
+    );
   });
 });
 

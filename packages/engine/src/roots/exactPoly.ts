@@ -55,7 +55,7 @@ interface Dyadic {
 }
 
 function toDyadic(x: number, field: string): Dyadic {
-  if (!Number.isFinite(x)) throw new RangeError(`${field} must be a finite number, got ${x}`);
+  if (!Number.isFinite(x)) throw new RangeError(`${field}: must be a finite number (got ${x})`);
   if (x === 0) return { m: 0n, e: 0 };
   f64[0] = x;
   const hi = u32[HI] as number;

@@ -304,27 +304,31 @@ describe("realRoots: input validation", () => {
     for (const bad of [5, null, undefined, {}, true]) {
       expect(() => realRoots(bad as unknown as number[], 0, 1)).toThrow(RangeError);
       expect(() => realRoots(bad as unknown as number[], 0, 1)).toThrow(
-        /realRoots: coeffs must be an array-like/,
+        /^realRoots\(coeffs\): must be an array-like of finite numbers \(got /,
       );
     }
-    expect(() => realRoots({ length: -1 } as unknown as number[], 0, 1)).toThrow(/coeffs must be/);
+    expect(() => realRoots({ length: -1 } as unknown as number[], 0, 1)).toThrow(
+      /^realRoots\(coeffs\): must be/,
+    );
   });
 
   it("refuses non-finite coefficients, naming the field", () => {
-    expect(() => realRoots([1, Number.NaN, 2], 0, 1)).toThrow(/coeffs\[1\] must be a finite number/);
+    expect(() => realRoots([1, Number.NaN, 2], 0, 1)).toThrow(
+      /^realRoots\(coeffs\[1\]\): must be a finite number \(got NaN\)$/,
+    );
     expect(() => realRoots([1, 2, Number.POSITIVE_INFINITY], 0, 1)).toThrow(/coeffs\[2\]/);
   });
   it("says the type of a value that is not a number (a string \"1\" read as 'got 1', like a valid number)", () => {
     expect(() => realRoots(["1", "-1"] as unknown as number[], 0, 2)).toThrow(
-      'realRoots: coeffs[0] must be a finite number, got string "1"',
+      'realRoots(coeffs[0]): must be a finite number (got string "1")',
     );
     expect(() => realRoots([1, 2], "0" as unknown as number, 1)).toThrow(
-      'lo must be a number, got string "0"',
+      'realRoots(lo): must be a number (got string "0")',
     );
   });
   it("refuses NaN ends, naming them", () => {
-    expect(() => realRoots([1, 2], Number.NaN, 1)).toThrow(/lo must be a number/);
-    expect(() => realRoots([1, 2], 0, Number.NaN)).toThrow(/hi must be a number/);
+    expect(() => realRoots([1, 2], Number.NaN, 1)).toThrow(/^realRoots\(lo\): must be a number \(got NaN\)$/);
+    expect(() => realRoots([1, 2], 0, Number.NaN)).toThrow(/^realRoots\(hi\): must be a number \(got NaN\)$/);
   });
   it("accepts any array-like (Float64Array) and leaves it untouched", () => {
     const c = new Float64Array([24, -50, 35, -10, 1]);

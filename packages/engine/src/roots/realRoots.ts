@@ -105,18 +105,18 @@ function general(coeffs: ArrayLike<number>, lo: number, hi: number, out: number[
   const len = coeffs === null || coeffs === undefined ? undefined : coeffs.length;
   if (typeof len !== "number" || !(len >= 0 && len <= Number.MAX_SAFE_INTEGER && Math.floor(len) === len))
     throw new RangeError(
-      `realRoots: coeffs must be an array-like of finite numbers, got ${describe(coeffs)}`,
+      `realRoots(coeffs): must be an array-like of finite numbers (got ${describe(coeffs)})`,
     );
   if (typeof lo !== "number" || Number.isNaN(lo))
-    throw new RangeError(`realRoots: lo must be a number, got ${describe(lo)}`);
+    throw new RangeError(`realRoots(lo): must be a number (got ${describe(lo)})`);
   if (typeof hi !== "number" || Number.isNaN(hi))
-    throw new RangeError(`realRoots: hi must be a number, got ${describe(hi)}`);
+    throw new RangeError(`realRoots(hi): must be a number (got ${describe(hi)})`);
   let n = -1;
   let maxAbs = 0;
   for (let i = 0; i < len; i++) {
     const c = coeffs[i] as number;
     if (typeof c !== "number" || !(c - c === 0)) {
-      throw new RangeError(`realRoots: coeffs[${i}] must be a finite number, got ${describe(c)}`);
+      throw new RangeError(`realRoots(coeffs[${i}]): must be a finite number (got ${describe(c)})`);
     }
     if (c !== 0) {
       n = i;

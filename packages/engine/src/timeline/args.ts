@@ -2,17 +2,15 @@
  * Checks of the Timeline methods' arguments, each naming the method and the argument:
  * - edits (prolong's until, prolongSlice's budget, setActions' list) throw a SceneError with the
  *   argument's name as its path, like the fields of an action;
- * - readings (a time, an index) throw a RangeError `method: name must be …, got X`.
+ * - readings (a time, an index) throw a RangeError in the engine's form, the method and the
+ *   argument as the path: `stateAt(t): must be … (got X)`, then `: why` when there is more to say
+ *   (the value named as every refusal names it: sim/refusalText.ts).
  * Each returns the value to use (a time of -0 becomes 0, as in scene files).
  */
 import { SceneError } from "../scene/errors.js";
 import { count, isObject, nonNegative, onlyKeys, refuse } from "../scene/fields.js";
 import type { Until } from "../scene/types.js";
-
-/** A value as an error message shows it: a string quoted (so "3" is not read as the number 3). */
-export function show(v: unknown): string {
-  return typeof v === "string" ? JSON.stringify(v) : String(v);
-}
+import { given } from "../sim/refusalText.js";
 
 /** Validates apply's options: keepHorizon (default true) and checkLater (default true; false only
  *  with keepHorizon false). SceneError naming `options.<field>`. */
@@ -62,32 +60,32 @@ export function checkActionList(actions: unknown): readonly unknown[] {
  *  naming the method and the argument. */
 export function timeArg(method: string, name: string, t: number): number {
   if (typeof t !== "number" || Number.isNaN(t))
-    throw new RangeError(`${method}: ${name} must be a number, got ${show(t)}`);
+    throw new RangeError(`${method}(${name}): must be a number (got ${given(t)})`);
   return t;
 }
 
 /** stateAt's time (or `method`'s argument `name`): a number in [start, horizon] (-0 read as 0; start
- *  is the start of the kept history, 0 until forgetBefore); else a RangeError. `before` says why a
- *  time in [0, start) is refused: by default the history there was forgotten; path's `to` gives
- *  its own reason (start is its `from` then), and so does a timeline without history. */
+ *  is the earliest readable time: 0, the start of the kept history after forgetBefore, the last
+ *  logged entry without history); else a RangeError. `before` says why a time in [0, start) is
+ *  refused (kept.ts's earliestReadable; path's `to` gives its own reason, start is its `from` then). */
 export function stateTime(
   t: unknown,
   horizon: number,
   start = 0,
   method = "stateAt",
   name = "t",
-  before = "the history before it was forgotten (forgetBefore)",
+  before = "",
 ): number {
   if (typeof t !== "number" || !(t >= start && t <= horizon)) {
     // Beyond the horizon is not computed yet, even when nothing more will happen (prolong said idle).
     const hint =
       typeof t === "number" && t > horizon && t < Number.POSITIVE_INFINITY
         ? `: the history is computed up to ${horizon}, call prolongTo(${t}) first`
-        : typeof t === "number" && t >= 0 && t < start
+        : typeof t === "number" && t >= 0 && t < start && before !== ""
           ? `: ${before}`
           : "";
     throw new RangeError(
-      `${method}: ${name} must be a number in [${start}, ${horizon}], got ${show(t)}${hint}`,
+      `${method}(${name}): must be a number in [${start}, ${horizon}] (got ${given(t)})${hint}`,
     );
   }
   return t === 0 ? 0 : t;
@@ -96,15 +94,15 @@ export function stateTime(
 /** eventRange's indices: whole numbers >= 0; the end may be Infinity (to the end of the log). */
 export function indexRange(start: unknown, end: unknown): [number, number] {
   const whole = (i: unknown) => typeof i === "number" && Number.isInteger(i) && i >= 0;
-  if (!whole(start)) throw new RangeError(`eventRange: start must be an integer >= 0, got ${show(start)}`);
+  if (!whole(start)) throw new RangeError(`eventRange(start): must be an integer >= 0 (got ${given(start)})`);
   if (!(whole(end) || end === Number.POSITIVE_INFINITY))
-    throw new RangeError(`eventRange: end must be an integer >= 0 or Infinity, got ${show(end)}`);
+    throw new RangeError(`eventRange(end): must be an integer >= 0 or Infinity (got ${given(end)})`);
   return [start as number, end as number];
 }
 
 /** An index into the log: a whole number in [0, count); else a RangeError naming `method`. */
 export function eventIndex(method: string, i: unknown, count: number): number {
   if (!(typeof i === "number" && Number.isInteger(i) && i >= 0 && i < count))
-    throw new RangeError(`${method}: index must be an integer in [0, ${count}), got ${show(i)}`);
+    throw new RangeError(`${method}(index): must be an integer in [0, ${count}) (got ${given(i)})`);
   return i;
 }

@@ -127,10 +127,10 @@ describe("Timeline.bodyArraysAt refuses what stateAt refuses", () => {
       for (const t of times) {
         const expected = thrown(() => tl.stateAt(t));
         expect(expected, `${name}, t = ${t}`).toBeInstanceOf(RangeError);
-        expect(expected.message).toMatch(/^stateAt: /);
+        expect(expected.message).toMatch(/^stateAt\(t\): /);
         const got = thrown(() => tl.bodyArraysAt(t, into));
         expect(got).toBeInstanceOf(RangeError);
-        expect(got.message).toBe(expected.message.replace(/^stateAt: /, "bodyArraysAt: "));
+        expect(got.message).toBe(expected.message.replace(/^stateAt\(t\): /, "bodyArraysAt(t): "));
       }
       expect(ARRAY_FIELDS.map((f) => Array.from(into[f]))).toStrictEqual(snapshot);
       expect(into.time).toBe(tl.horizon);
@@ -143,7 +143,7 @@ describe("Timeline.bodyArraysAt refuses what stateAt refuses", () => {
     for (const into of [null, 0, "into", {}, { ...good, ids: null }, { ...good, m: new Float32Array(3) }]) {
       const got = thrown(() => tl.bodyArraysAt(1, into as unknown as BodyArrays));
       expect(got).toBeInstanceOf(RangeError);
-      expect(got.message).toMatch(/^bodyArraysAt: into must be a previous result/);
+      expect(got.message).toMatch(/^bodyArraysAt\(into\): must be a previous result/);
     }
   });
 });

@@ -13,14 +13,20 @@ import { Timeline } from "./timeline.js";
 describe("Timeline as a debugger's back end", () => {
   it("stateAt refuses a time that is not a number (null gave the state at 0, '3' a state whose time was a string)", () => {
     const tl = wallAndHeavyDisc();
-    for (const t of [null, "3", undefined, Number.NaN, [1]])
-      expect(() => tl.stateAt(t as unknown as number)).toThrow(
-        `stateAt: t must be a number in [0, 20], got ${typeof t === "string" ? `"${t}"` : String(t)}`,
-      );
+    // each named as every refusal names a value (an array of one number read as "got 1" before)
+    const named: [unknown, string][] = [
+      [null, "null"],
+      ["3", 'the string "3"'],
+      [undefined, "undefined"],
+      [Number.NaN, "NaN"],
+      [[1], "an array of 1"],
+    ];
+    for (const [t, got] of named)
+      expect(() => tl.stateAt(t as number)).toThrow(`stateAt(t): must be a number in [0, 20] (got ${got})`);
     expect(() => tl.stateAt(20.000001)).toThrow(RangeError);
     // Past the horizon, the message says how to get there (after an idle prolong it read like a dead end).
     expect(() => tl.stateAt(25)).toThrow(
-      "stateAt: t must be a number in [0, 20], got 25: the history is computed up to 20, call prolongTo(25) first",
+      "stateAt(t): must be a number in [0, 20] (got 25): the history is computed up to 20, call prolongTo(25) first",
     );
     expect(() => tl.stateAt(-1)).toThrow(RangeError);
     expect(Object.is(tl.stateAt(-0).time, 0)).toBe(true);
@@ -78,10 +84,10 @@ describe("Timeline as a debugger's back end", () => {
     expect(tl.eventRange(30, Number.POSITIVE_INFINITY)).toEqual(tl.eventRange(30, tl.eventCount));
     expect(tl.eventRange(0, Number.POSITIVE_INFINITY)).toHaveLength(tl.eventCount);
     expect(() => tl.eventRange(Number.POSITIVE_INFINITY, 3)).toThrow(
-      "eventRange: start must be an integer >= 0, got Infinity",
+      "eventRange(start): must be an integer >= 0 (got Infinity)",
     );
     expect(() => tl.eventRange(0, Number.NEGATIVE_INFINITY)).toThrow(
-      "eventRange: end must be an integer >= 0 or Infinity, got -Infinity",
+      "eventRange(end): must be an integer >= 0 or Infinity (got -Infinity)",
     );
   });
 
@@ -107,7 +113,7 @@ describe("Timeline as a debugger's back end", () => {
     );
     expect(Object.isFrozen(found[3])).toBe(true);
     expect(() => tl.eventAction(tl.eventCount)).toThrow(
-      `eventAction: index must be an integer in [0, ${tl.eventCount}), got ${tl.eventCount}`,
+      `eventAction(index): must be an integer in [0, ${tl.eventCount}) (got ${tl.eventCount})`,
     );
     expect(() => tl.eventAction(0.5)).toThrow(RangeError);
   });

@@ -185,7 +185,7 @@ describe("Timeline.eventDetail", () => {
     for (const i of [-1, tl.eventCount, 1.5, Number.NaN, "0"])
       expect(() => tl.eventDetail(i as number)).toThrow(
         new RangeError(
-          `eventDetail: index must be an integer in [0, ${tl.eventCount}), got ${typeof i === "string" ? `"${i}"` : String(i)}`,
+          `eventDetail(index): must be an integer in [0, ${tl.eventCount}) (got ${typeof i === "string" ? `the string "${i}"` : String(i)})`,
         ),
       );
   });
@@ -197,8 +197,12 @@ describe("Timeline.eventDetail", () => {
     twin.prolongTo(tl.horizon);
     tl.forgetBefore(tl.event(2500).time);
     expect(tl.firstEvent).toBeGreaterThan(0);
-    expect(() => tl.eventDetail(tl.firstEvent - 1)).toThrow(/eventDetail: event \d+ was forgotten/);
-    expect(() => tl.eventIndexAt(tl.historyStart - 1e-9)).toThrow(/eventIndexAt: t must be >= /);
+    expect(() => tl.eventDetail(tl.firstEvent - 1)).toThrow(
+      /^eventDetail\(index\): must be at least \d+, the first entry kept \(got \d+\): event \d+ was forgotten/,
+    );
+    expect(() => tl.eventIndexAt(tl.historyStart - 1e-9)).toThrow(
+      /^eventIndexAt\(t\): must be >= \S+ \(got /,
+    );
     expect(tl.eventIndexAt(tl.historyStart)).toBe(tl.firstEvent);
     for (const i of [tl.firstEvent, tl.eventCount - 1])
       expect(tl.eventDetail(i)).toEqual(twin.eventDetail(i));

@@ -21,9 +21,9 @@ describe("Timeline.eventRange", () => {
     expect(tl.eventRange(n - 2, n + 100)).toEqual([tl.event(n - 2), tl.event(n - 1)]);
     expect(tl.eventRange(5, 5)).toEqual([]);
     expect(tl.eventRange(n + 3, n + 9)).toEqual([]);
-    expect(() => tl.eventRange(-1, 3)).toThrow("eventRange: start must be an integer >= 0, got -1");
+    expect(() => tl.eventRange(-1, 3)).toThrow("eventRange(start): must be an integer >= 0 (got -1)");
     expect(() => tl.eventRange(0, 1.5)).toThrow(
-      "eventRange: end must be an integer >= 0 or Infinity, got 1.5",
+      "eventRange(end): must be an integer >= 0 or Infinity (got 1.5)",
     );
     expect(() => tl.eventRange(Number.NaN, 2)).toThrow(RangeError);
   });

@@ -89,24 +89,33 @@ describe("Timeline.forgetBefore", () => {
     tl.forgetBefore(5);
     const first = tl.firstEvent;
     expect(() => tl.event(0)).toThrow(
-      new RangeError(`event: event 0 was forgotten: the log starts at entry ${first} (t = 4)`),
+      new RangeError(
+        `event(index): must be at least ${first}, the first entry kept (got 0): event 0 was forgotten (forgetBefore), the log starts at entry ${first} (t = 4): to keep it, call forgetBefore with an earlier time, or not at all`,
+      ),
     );
     expect(() => tl.event(first - 1)).toThrow(RangeError);
-    expect(() => tl.eventAction(0)).toThrow(/eventAction: event 0 was forgotten/);
-    expect(() => tl.eventRange(0, 10)).toThrow(/eventRange: event 0 was forgotten/);
+    expect(() => tl.eventAction(0)).toThrow(
+      /^eventAction\(index\): must be at least \d+, the first entry kept \(got 0\): event 0 was forgotten/,
+    );
+    expect(() => tl.eventRange(0, 10)).toThrow(
+      /^eventRange\(index\): must be at least \d+, the first entry kept \(got 0\): event 0 was forgotten/,
+    );
+    // the time asked, the earliest readable time and how to keep the history
     expect(() => tl.stateAt(3.9)).toThrow(
-      /stateAt: t must be a number in \[4, 12\], got 3.9: the history before it was forgotten/,
+      new RangeError(
+        `stateAt(t): must be a number in [4, 12] (got 3.9): the history before 4 was forgotten (forgetBefore), so the earliest readable time is 4 (the log starts at entry ${first} (t = 4)): to keep it, call forgetBefore with an earlier time, or not at all`,
+      ),
     );
     expect(() => tl.nextEventTime(3)).toThrow(
-      /nextEventTime: t must be >= 4, got 3: the history before it was forgotten/,
+      /^nextEventTime\(t\): must be >= 4 \(got 3\): the history before 4 was forgotten \(forgetBefore\), so the earliest readable time is 4 .*: to keep it, call forgetBefore with an earlier time, or not at all$/,
     );
     expect(() => tl.nextEventTime(Number.NEGATIVE_INFINITY)).toThrow(RangeError);
-    expect(() => tl.eventsBetween(0, 12)).toThrow(/eventsBetween: t0 must be >= 4/);
+    expect(() => tl.eventsBetween(0, 12)).toThrow(/^eventsBetween\(t0\): must be >= 4 \(got 0\)/);
     expect(tl.prevEventTime(3)).toBeNull();
     expect(tl.prevEventTime(4)).toBeNull();
     expect(tl.eventRange(first, first + 1)).toHaveLength(1);
     // bad indices and times are still told as before
-    expect(() => tl.event(tl.eventCount)).toThrow(/index must be an integer in \[0, /);
+    expect(() => tl.event(tl.eventCount)).toThrow(/^event\(index\): must be an integer in \[0, /);
     expect(() => tl.stateAt(Number.NaN)).toThrow(RangeError);
   });
 
@@ -234,7 +243,9 @@ describe("Timeline.forgetBefore", () => {
   it("checks t: a number in [0, horizon]; before the kept start it changes nothing", () => {
     const tl = box();
     for (const bad of [Number.NaN, -1, 12.5, Number.POSITIVE_INFINITY, "3", undefined])
-      expect(() => tl.forgetBefore(bad as number)).toThrow(/^forgetBefore: t must be a number in \[0, 12\]/);
+      expect(() => tl.forgetBefore(bad as number)).toThrow(
+        /^forgetBefore\(t\): must be a number in \[0, 12\], the computed history \(got /,
+      );
     expect(tl.firstEvent).toBe(0);
     expect(tl.forgetBefore(12)).toBe(8);
     const before = keptFingerprint(tl);

@@ -16,7 +16,7 @@
  * says how many log entries were dropped.
  * What the kept history refuses (reads before it, edits that would change it): kept.ts.
  */
-import { show } from "./args.js";
+import { given } from "../sim/refusalText.js";
 import type { TimelineCore } from "./core.js";
 import { type Keyframe, keyframeAtOrBefore, loadMotions } from "./keyframe.js";
 import { arraysOf } from "./keyframeChain.js";
@@ -31,7 +31,7 @@ export function historyStart(c: TimelineCore): number {
 export function forgetTime(t: unknown, horizon: number): number {
   if (typeof t !== "number" || !(t >= 0 && t <= horizon))
     throw new RangeError(
-      `forgetBefore: t must be a number in [0, ${horizon}] (the computed history), got ${show(t)}`,
+      `forgetBefore(t): must be a number in [0, ${horizon}], the computed history (got ${given(t)})`,
     );
   return t === 0 ? 0 : t;
 }

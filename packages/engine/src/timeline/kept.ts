@@ -17,8 +17,8 @@
  */
 import { SceneError } from "../scene/errors.js";
 import type { Action } from "../scene/types.js";
+import { given } from "../sim/refusalText.js";
 import { firstChange } from "./actionData.js";
-import { show } from "./args.js";
 import type { TimelineCore } from "./core.js";
 import { historyStart } from "./forget.js";
 import type { Keyframe } from "./keyframe.js";
@@ -33,12 +33,35 @@ function logStart(c: TimelineCore): string {
   return `entry ${c.forgotten.records} (t = ${historyStart(c)})`;
 }
 
+/** The earliest time a read accepts: the start of the kept history, or without history the last
+ *  logged entry (only the current motions are known). */
+export function earliestTime(c: TimelineCore): number {
+  return c.history ? historyStart(c) : c.lastLogged;
+}
+
+/** How to keep what forgetBefore drops, for the refusals of reads before it. */
+const KEEP_HISTORY = "to keep it, call forgetBefore with an earlier time, or not at all";
+
+/**
+ * Why a read before the earliest readable time is refused, naming that time and how to keep more:
+ * without history (history: false) only the span since the last logged entry can be read; after
+ * forgetBefore, only the kept history.
+ */
+export function earliestReadable(c: TimelineCore): string {
+  if (!c.history)
+    return `this timeline keeps no history (history: false), so the earliest readable time is ${c.lastLogged}, its last logged event or action: to read earlier times, create the Timeline with history: true (the default)`;
+  const start = historyStart(c);
+  return `the history before ${start} was forgotten (forgetBefore), so the earliest readable time is ${start} (the log starts at ${logStart(c)}): ${KEEP_HISTORY}`;
+}
+
 /** A log index (already checked to be in [0, eventCount)) as an index into core.records; a
  *  RangeError naming `method` when it was forgotten. */
 export function keptIndex(c: TimelineCore, method: string, i: number): number {
   const first = c.forgotten.records;
   if (i < first)
-    throw new RangeError(`${method}: event ${i} was forgotten: the log starts at ${logStart(c)}`);
+    throw new RangeError(
+      `${method}(index): must be at least ${first}, the first entry kept (got ${i}): event ${i} was forgotten (forgetBefore), the log starts at ${logStart(c)}: ${KEEP_HISTORY}`,
+    );
   return i - first;
 }
 
@@ -47,7 +70,7 @@ export function keptIndex(c: TimelineCore, method: string, i: number): number {
 export function keptTime(c: TimelineCore, method: string, name: string, t: number): number {
   if (forgot(c) && t < historyStart(c))
     throw new RangeError(
-      `${method}: ${name} must be >= ${historyStart(c)}, got ${show(t)}: the history before it was forgotten (the log starts at ${logStart(c)})`,
+      `${method}(${name}): must be >= ${historyStart(c)} (got ${given(t)}): ${earliestReadable(c)}`,
     );
   return t;
 }

@@ -161,10 +161,12 @@ describe("Timeline.path", () => {
   it("refuses an unknown id and a time outside [historyStart, horizon] or before `from`, naming it", () => {
     const tl = Timeline.fromScene(scene([disc("b", 0, 0, [1, 0])], 0));
     tl.prolongTo(5);
-    expect(() => tl.path("nobody")).toThrow('path: id must name a body of this timeline, got "nobody"');
-    expect(() => tl.path("b", -1)).toThrow("path: from must be a number in [0, 5], got -1");
-    expect(() => tl.path("b", 0, 6)).toThrow("path: to must be a number in [0, 5], got 6");
-    expect(() => tl.path("b", 3, 2)).toThrow("path: to must be a number in [3, 5], got 2");
+    expect(() => tl.path("nobody")).toThrow(
+      'path(id): must name a body of this timeline (got the string "nobody")',
+    );
+    expect(() => tl.path("b", -1)).toThrow("path(from): must be a number in [0, 5] (got -1)");
+    expect(() => tl.path("b", 0, 6)).toThrow("path(to): must be a number in [0, 5] (got 6)");
+    expect(() => tl.path("b", 3, 2)).toThrow("path(to): must be a number in [3, 5] (got 2)");
     expect(() => tl.path("b", Number.NaN)).toThrow(RangeError);
   });
 
@@ -180,25 +182,25 @@ describe("Timeline.path", () => {
       return "no error";
     };
     expect(reason(() => tl.path("b", 3, 2))).toBe(
-      "path: to must be a number in [3, 5], got 2: to must not be before from (3)",
+      "path(to): must be a number in [3, 5] (got 2): to must not be before from (3)",
     );
     const headless = Timeline.fromScene(scene([disc("b", 0, 0, [1, 0])], 0), { history: false });
     headless.apply({ time: 2, type: "giveVelocity", id: "b", v: [0, 1] });
     headless.prolongTo(5);
     const keepsNone =
-      "this timeline keeps no history: a path starts at its last logged entry at the earliest";
+      "this timeline keeps no history (history: false), so the earliest readable time is 2, its last logged event or action: to read earlier times, create the Timeline with history: true (the default)";
     expect(reason(() => headless.path("b", 1))).toBe(
-      `path: from must be a number in [2, 5], got 1: ${keepsNone}`,
+      `path(from): must be a number in [2, 5] (got 1): ${keepsNone}`,
     );
     // review: a to after the last entry but before from is refused as before from
     expect(reason(() => headless.path("b", 3, 2.5))).toBe(
-      "path: to must be a number in [3, 5], got 2.5: to must not be before from (3)",
+      "path(to): must be a number in [3, 5] (got 2.5): to must not be before from (3)",
     );
     expect(reason(() => headless.path("b", 4, 3))).toBe(
-      "path: to must be a number in [4, 5], got 3: to must not be before from (4)",
+      "path(to): must be a number in [4, 5] (got 3): to must not be before from (4)",
     );
     expect(reason(() => headless.path("b", 2, 1))).toBe(
-      `path: to must be a number in [2, 5], got 1: ${keepsNone}`,
+      `path(to): must be a number in [2, 5] (got 1): ${keepsNone}`,
     );
   });
 });

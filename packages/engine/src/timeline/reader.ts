@@ -10,11 +10,12 @@
  */
 import type { Action } from "../scene/types.js";
 import { type BodyArrays, intoProblem } from "../sim/bodyArrays.js";
+import { given } from "../sim/refusalText.js";
 import { eventIndex, indexRange, stateTime, timeArg } from "./args.js";
 import { ArraysCursor } from "./bodyArrays.js";
 import type { TimelineCore } from "./core.js";
 import { historyStart } from "./forget.js";
-import { keptIndex, keptTime } from "./kept.js";
+import { earliestReadable, earliestTime, keptIndex, keptTime } from "./kept.js";
 import { keyframeBytes } from "./keyframe.js";
 import { LogCursor } from "./logCursor.js";
 import { MotionCursor } from "./motionCursor.js";
@@ -70,7 +71,7 @@ export class TimelineReader {
    *  non-number) throws RangeError. */
   stateAt(t: number): SceneState {
     const c = this.core;
-    const at = stateTime(t, c.horizon, historyStart(c));
+    const at = stateTime(t, c.horizon, earliestTime(c), "stateAt", "t", earliestReadable(c));
     return c.history ? stateAt(c, at, this.states) : headlessStateAt(c, at);
   }
 
@@ -87,9 +88,9 @@ export class TimelineReader {
    */
   bodyArraysAt(t: number, into?: BodyArrays): BodyArrays {
     const c = this.core;
-    const at = stateTime(t, c.horizon, historyStart(c), "bodyArraysAt");
+    const at = stateTime(t, c.horizon, earliestTime(c), "bodyArraysAt", "t", earliestReadable(c));
     const problem = intoProblem(into);
-    if (problem !== null) throw new RangeError(`bodyArraysAt: into ${problem}`);
+    if (problem !== null) throw new RangeError(`bodyArraysAt(into): ${problem}`);
     return this.arrays.read(c, at, into);
   }
 
@@ -110,16 +111,12 @@ export class TimelineReader {
   path(id: string, from: number = this.historyStart, to: number = this.core.horizon): PathPiece[] {
     const c = this.core;
     if (typeof id !== "string" || !c.bodyIds.includes(id))
-      throw new RangeError(
-        `path: id must name a body of this timeline, got ${JSON.stringify(id) ?? String(id)}`,
-      );
-    const start = c.history ? historyStart(c) : c.lastLogged;
-    const early = c.history
-      ? undefined
-      : "this timeline keeps no history: a path starts at its last logged entry at the earliest";
+      throw new RangeError(`path(id): must name a body of this timeline (got ${given(id)})`);
+    const start = earliestTime(c);
+    const early = earliestReadable(c);
     const t0 = stateTime(from, c.horizon, start, "path", "from", early);
-    // a to before from is that, with or without history; before the last entry only when from is there
-    const before = early !== undefined && t0 === start ? early : `to must not be before from (${t0})`;
+    // a to before from is that, with or without history; before the start only when from is there
+    const before = t0 === start ? early : `to must not be before from (${t0})`;
     const t1 = stateTime(to, c.horizon, t0, "path", "to", before);
     return c.history ? bodyPath(c, id, t0, t1) : headlessBodyPath(c, id, t0, t1);
   }

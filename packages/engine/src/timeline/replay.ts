@@ -10,6 +10,7 @@ import { discDiscResponse, impulseMagnitude, reflectResponse } from "../physics/
 import type { Action } from "../scene/types.js";
 import { lineParameter, makeLine, parameterOnLine } from "../sim/obstacles.js";
 import type { TimelineCore } from "./core.js";
+import { earliestReadable } from "./kept.js";
 import type { Keyframe } from "./keyframe.js";
 import { orderOf } from "./keyframeChain.js";
 import type { MotionCursor } from "./motionCursor.js";
@@ -57,11 +58,12 @@ export function headlessStateAt(core: TimelineCore, t: number): SceneState {
   return { time: t, g: w.g, gravity: w.gravity, bodies: w.bodies(t), lines: w.lines(), points: w.points() };
 }
 
-/** Throws `method`'s RangeError for a t before the last logged entry of a timeline without history. */
+/** Throws `method`'s RangeError for a t before the last logged entry of a timeline without history
+ *  (the readers check it first, through stateTime: this guards the reads themselves). */
 export function requireHeadlessTime(core: TimelineCore, t: number, method: string): void {
   if (t < core.lastLogged)
     throw new RangeError(
-      `${method}: this timeline keeps no history: t must be in [${core.lastLogged}, ${core.horizon}]`,
+      `${method}(t): must be a number in [${core.lastLogged}, ${core.horizon}] (got ${t}): ${earliestReadable(core)}`,
     );
 }
 

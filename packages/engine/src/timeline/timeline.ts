@@ -19,6 +19,7 @@ import { nonNegative } from "../scene/fields.js";
 import { applyOrder, parseScene } from "../scene/parse.js";
 import type { Action, SceneFile, Until } from "../scene/types.js";
 import { SimulationError } from "../sim/errors.js";
+import { given } from "../sim/refusalText.js";
 import { copyAction, freezeAction, sameUntil } from "./actionData.js";
 import { checkActionList, checkApplyOptions, checkBudget, checkUntil } from "./args.js";
 import { TimelineCore } from "./core.js";
@@ -298,7 +299,8 @@ export class Timeline extends TimelineReader {
    *  listener that throws does not stop the others; its error is rethrown after them. A listener
    *  that is not a function throws TypeError. */
   subscribe(listener: () => void): () => void {
-    if (typeof listener !== "function") throw new TypeError("subscribe: listener must be a function");
+    if (typeof listener !== "function")
+      throw new TypeError(`subscribe(listener): must be a function (got ${given(listener)})`);
     this.listeners.add(listener);
     return () => {
       this.listeners.delete(listener);
