@@ -16,7 +16,7 @@ export function requireStarted(b: BodyStore, s: number, t: number): void {
   if (!(t >= (b.mot[s * 8 + 0] as number)))
     throw new ChapgameError(
       "t",
-      `must be a time at or after body ${quoteId(b.ids[s] as string)}'s last event or edit (t0 = ${b.mot[s * 8 + 0]}; got ${given(t)}): earlier states are not kept by a World (a Timeline keeps them)`,
+      `must be a time at or after body ${quoteId(b.ids[s] as string)}'s last event or edit, t0 = ${b.mot[s * 8 + 0]} (got ${given(t)}): earlier states are not kept by a World (a Timeline keeps them)`,
     );
 }
 

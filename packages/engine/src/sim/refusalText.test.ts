@@ -99,7 +99,7 @@ describe("the World's refusals say what was given and quote ids as the scene's d
       [
         () => w.body("a", -1),
         "t",
-        `must be a time at or after body "a"'s last event or edit (t0 = 0; got -1): earlier states are not kept by a World (a Timeline keeps them)`,
+        `must be a time at or after body "a"'s last event or edit, t0 = 0 (got -1): earlier states are not kept by a World (a Timeline keeps them)`,
       ],
       [() => w.body("zz"), "id", 'no body with id "zz"'],
       [() => w.bodyArrays(0, 5 as never), "into", "must be a previous result or undefined (got 5)"],

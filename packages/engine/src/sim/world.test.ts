@@ -210,7 +210,7 @@ describe("body(id, t) keeps to the current motion", () => {
     w.advance({ untilTime: 12 });
     expect(w.motion("a").t0).toBe(9);
     expect(() => w.body("a", 5)).toThrow(
-      /^t: must be a time at or after body "a"'s last event or edit \(t0 = 9; got 5\)/,
+      /^t: must be a time at or after body "a"'s last event or edit, t0 = 9 \(got 5\)/,
     );
     expect(() => w.bodies(8.5)).toThrow(ChapgameError);
     expect(() => w.body("a", Number.NaN)).toThrow(ChapgameError);
