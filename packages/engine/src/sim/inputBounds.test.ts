@@ -87,3 +87,33 @@ describe("masses are within [MASS_MIN, MASS_MAX], or Infinity", () => {
     expect([w.body("a").vx, w.body("b").vx]).toEqual([-1, 1]);
   });
 });
+
+// A World's clock is a coordinate: a negative start time is legitimate (the Zeno watch's verdicts
+// are checked for scenes shifted in time, adversarialZeno.test.ts), unlike a Timeline's actions,
+// whose clock starts at 0. The same scene started at -8 (an exact shift: every time is a multiple
+// of 1/2 there) gives the same events, 8 earlier, and the same states.
+describe("the World's time option may be negative", () => {
+  function run(t0: number): { events: [string, number][]; x: number; vx: number } {
+    const w = new World({ g: 0, time: t0 });
+    w.addLine("wall", [0, -5], [0, 5], "line");
+    w.addBody("a", { x: 5, y: 0, r: 1, m: 1, vx: -2 });
+    w.addBody("b", { x: 9, y: 0, r: 1, m: 1, vx: -1 });
+    const events: [string, number][] = [];
+    w.advance({ untilTime: t0 + 10 }, (e) => events.push([e.kind, e.time - t0]));
+    return { events, x: w.body("a").x, vx: w.body("a").vx };
+  }
+  it("runs a scene started at t = -8 as the one started at 0, shifted", () => {
+    const shifted = run(-8);
+    expect(shifted).toEqual(run(0));
+    expect(shifted.events[0]).toEqual(["bodyLine", 2]);
+    expect(shifted.events.length).toBeGreaterThan(2);
+  });
+  it("reads and edits at negative times, and advances across 0", () => {
+    const w = new World({ g: 0, time: -3 });
+    w.addBody("a", { x: 0, y: 0, r: 1, m: 1, vx: 1 });
+    expect(w.body("a", -1).x).toBe(2);
+    w.advance({ untilTime: 2 });
+    expect(w.time).toBe(2);
+    expect(w.body("a").x).toBe(5);
+  });
+});

@@ -214,7 +214,8 @@ export interface WorldOptions {
   gravity?: Vec2 | undefined;
   /**
    * Starting time of the World's clock (default 0; at most TIME_MAX, 1e30, in size: the world may
-   * then advance past it). Times are doubles: keep
+   * then advance past it). It may be negative: the clock is a coordinate, and a scene started at
+   * t0 runs as the one started at 0, shifted by t0 (a Timeline's clock starts at 0). Times are doubles: keep
    * them near 0 (seconds since the level started, not since 1970), since an event at time T is only
    * located to within ulp(T).
    */
