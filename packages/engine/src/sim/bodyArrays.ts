@@ -95,6 +95,7 @@ export function arraysFor(
 }
 
 /**
+ * @internal (the World's own cache, left out of the shipped types with its ReadonlyMap.)
  * The live slots of a BodyStore in id order, with their ids, kept between reads: sorting 20,000
  * ids costs more than reading their states. Checked at each read against the store (one array read
  * and one string comparison per body), so no edit needs to tell it; rebuilt when bodies were added,

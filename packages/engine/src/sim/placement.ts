@@ -32,7 +32,8 @@ type DiscVisit = (id: string, x: number, y: number, r: number) => void;
 const LINEAR_SCAN_BODIES = 64;
 
 export class Placement extends ObstacleUpkeep {
-  /** Slot of each body id. */
+  /** @internal Slot of each body id (not in the shipped types: its Map would ask a consumer's
+   *  compiler for lib es2015, and it is the World's own bookkeeping, not an API). */
   protected index = new Map<string, number>();
   /** The lines and the points by place, built when a disc is first checked (a copy starts without). */
   private lineCells: ObstacleCells<Line> | null = null;

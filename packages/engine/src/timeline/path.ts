@@ -95,7 +95,9 @@ function ownChange(
   return after !== null && after !== n && row < 0 ? null : { after, row };
 }
 
-/** The pieces of body `id` over [from, to] (historyStart <= from <= to <= horizon), with history. */
+/** @internal The pieces of body `id` over [from, to] (historyStart <= from <= to <= horizon), with
+ *  history. Left out of the shipped types, as headlessBodyPath is: they are Timeline.path's
+ *  machinery, and their TimelineCore would bring its Maps into a consumer's compiler. */
 export function bodyPath(core: TimelineCore, id: string, from: number, to: number): PathPiece[] {
   const kfs = core.keyframes;
   const rec = core.records;
@@ -159,9 +161,9 @@ export function bodyPath(core: TimelineCore, id: string, from: number, to: numbe
   return out;
 }
 
-/** The pieces of body `id` over [from, to] of a timeline without history: only its current motion
- *  (the span since the last logged entry; the caller checked lastLogged <= from <= to); a span of
- *  no length gives that motion too, as one piece from = until. */
+/** @internal The pieces of body `id` over [from, to] of a timeline without history: only its
+ *  current motion (the span since the last logged entry; the caller checked lastLogged <= from <=
+ *  to); a span of no length gives that motion too, as one piece from = until. */
 export function headlessBodyPath(core: TimelineCore, id: string, from: number, to: number): PathPiece[] {
   const w = core.world;
   if (!w.hasBody(id)) return [];
