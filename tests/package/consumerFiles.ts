@@ -94,6 +94,38 @@ headless.prolong({ time: form.seconds, events: 5 });
 export const out = [cue.x + cue.vx, roots, tl.horizon, kinds, err, headless, own];
 `;
 
+/**
+ * A consumer on an old or default configuration (lib es5: no Map, no Symbol, no console without
+ * dom): reads states, arrays, paths, the log and an event's detail through the exported types, so
+ * the program reaches every declaration a user of World and Timeline does. Its own code is ES5.
+ */
+export const es5Consumer = `import { ChapgameError, Timeline, World, parseScene, presets, realRoots } from "@chapgame/engine";
+import type { BodyArrays, EventDetail, LogEvent, PathPiece, SceneFile, SceneState, WorldEvent } from "@chapgame/engine";
+
+const world = new World({ g: 0 });
+world.addLine("wall", [0, -10], [0, 10], "line");
+world.addBody("small", { x: 5, y: 0, r: 1, m: 1 });
+world.addBody("big", { x: 10, y: 0, r: 1, m: 100, vx: -1 });
+const seen: WorldEvent[] = [];
+world.advance({ maxEvents: 10 }, (e) => {
+  seen.push(e);
+});
+const arrays: BodyArrays = world.bodyArrays(world.time);
+const scene: SceneFile = parseScene(
+  '{"format":"chapgame","version":1,"actions":[{"time":0,"type":"addBody","id":"a","x":0,"y":0,"r":1,"m":1,"v":[1,0]}]}',
+);
+const tl = Timeline.fromScene(scene);
+tl.prolong({ time: 5 });
+const state: SceneState = tl.stateAt(2);
+const again: BodyArrays = tl.bodyArraysAt(3, arrays);
+const path: PathPiece[] = tl.path("a");
+const log: LogEvent[] = tl.eventsBetween(0, tl.horizon);
+const detail: EventDetail | null = tl.eventCount > 0 ? tl.eventDetail(0) : null;
+const err: Error & { path: string } = new ChapgameError("body.r", "must be positive");
+export const out = [seen.length, arrays.x[0], state.bodies.length, again.count, path, log, detail, err,
+  realRoots([6, -5, 1], -10, 10), presets.length];
+`;
+
 /** Misuse: a string radius. Must fail to type-check (TS2322), or the types are not being read. */
 export const misuse = `import { World } from "@chapgame/engine";
 new World({ g: 0 }).addBody("a", { x: 0, y: 0, r: "1", m: 1 });
