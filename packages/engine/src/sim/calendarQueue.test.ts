@@ -4,6 +4,7 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import { CalendarQueue } from "./calendarQueue.js";
+import { drain } from "./testSupport.js";
 
 const SEED = Number(process.env.FC_SEED ?? 20261122);
 
@@ -20,16 +21,6 @@ function modelMin(model: Map<number, number>): number {
       bestKey = k;
     }
   return best;
-}
-
-function drain(q: CalendarQueue): number[] {
-  const out: number[] = [];
-  while (q.size > 0) {
-    const s = q.peek();
-    out.push(s);
-    q.remove(s);
-  }
-  return out;
 }
 
 function expectedOrder(model: Map<number, number>): number[] {

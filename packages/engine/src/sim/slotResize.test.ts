@@ -7,21 +7,12 @@ import { describe, expect, it } from "vitest";
 import { CalendarQueue } from "./calendarQueue.js";
 import { FrontHeap } from "./frontHeap.js";
 import { Grid } from "./grid.js";
+import { drain } from "./testSupport.js";
 
 const SEED = Number(process.env.FC_SEED ?? 20261124);
 
 /** Tie order of the tests: smaller slot first. */
 const tieLess = (a: number, b: number): boolean => a < b;
-
-function drain(q: CalendarQueue): number[] {
-  const out: number[] = [];
-  while (q.size > 0) {
-    const s = q.peek();
-    out.push(s);
-    q.remove(s);
-  }
-  return out;
-}
 
 function expectedOrder(model: Map<number, number>): number[] {
   return [...model.entries()].sort((a, b) => a[1] - b[1] || a[0] - b[0]).map(([s]) => s);

@@ -1,9 +1,10 @@
 /**
  * Helpers for the World's tests (not built, not packed): the totals a collision must keep, the
  * break of a rack of touching discs (a scene that found several rounding defects), and a pit an
- * immovable disc passes over (the trap watch's tests).
+ * immovable disc passes over (the trap watch's tests), and the pop order of an event queue.
  */
 import fc from "fast-check";
+import type { CalendarQueue } from "./calendarQueue.js";
 import type { BodyState } from "./types.js";
 import { World } from "./world.js";
 
@@ -117,3 +118,14 @@ export const placementPointStep = fc.record({
   id: fc.integer({ min: 0, max: 47 }),
   place: placementPlace,
 });
+
+/** Pop every slot of the queue, earliest first (peek, then remove): its whole pop order. */
+export function drain(q: CalendarQueue): number[] {
+  const out: number[] = [];
+  while (q.size > 0) {
+    const s = q.peek();
+    out.push(s);
+    q.remove(s);
+  }
+  return out;
+}
