@@ -1,7 +1,8 @@
 /**
- * The editor's layout: header (scene actions: Undo, Redo, Save file, Load file; the scene's title; presets, message,
- * newer work in another tab), canvas with its toolbar, side panels (the Event log, then the details
- * of its selected entry), time bar, the drop indicator (a scene file dropped anywhere opens) and
+ * The editor's layout: header (scene actions: Undo, Redo, Save file, Load file; the scene's title;
+ * presets, message), canvas with its toolbar and the persistent notices hanging over its top (newer
+ * work in another tab, a refused autosaved scene), side panels (the Event log, then the details of
+ * its selected entry), time bar, the drop indicator (a scene file dropped anywhere opens) and
  * the Keyboard shortcuts dialog. In a narrow window the header and the stage fill the screen, so the
  * time bar is in view without scrolling (at 800 x 600 too), and the side panels follow.
  */
@@ -14,14 +15,13 @@ import { FileDrop } from "./panels/FileDrop";
 import { GlobalsPanel } from "./panels/GlobalsPanel";
 import { LinesTable } from "./panels/LinesTable";
 import { MessageBar } from "./panels/MessageBar";
-import { NewerWorkNotice } from "./panels/NewerWorkNotice";
 import { PointsTable } from "./panels/PointsTable";
 import { PresetsMenu } from "./panels/PresetsMenu";
-import { RefusedSceneNotice } from "./panels/RefusedSceneNotice";
 import { SceneActions } from "./panels/SceneActions";
 import { SceneTitle } from "./panels/SceneTitle";
 import { ShortcutHelp } from "./panels/ShortcutHelp";
 import { SpeedPanel } from "./panels/SpeedPanel";
+import { StageNotices } from "./panels/StageNotices";
 import { StatePanel } from "./panels/StatePanel";
 import { StatsPanel } from "./panels/StatsPanel";
 import { TimePanel } from "./panels/TimePanel";
@@ -38,11 +38,10 @@ export function App() {
           <SceneTitle />
           <PresetsMenu />
           <MessageBar />
-          <NewerWorkNotice />
-          <RefusedSceneNotice />
         </header>
         <main className="stage">
           <Toolbar />
+          <StageNotices />
           <SceneCanvas />
           <div className="timebar">
             <TimePanel />

@@ -1,7 +1,7 @@
 /**
- * The notice that another tab saved newer work than this tab's (autosave.ts): not a modal, it sits
- * under the header until the reader opens that work (one undo step over this tab's scene) or
- * dismisses it (that tab is not announced again until this one reloads).
+ * The notice that another tab saved newer work than this tab's (autosave.ts): not a modal, it hangs
+ * over the top of the canvas (StageNotices.tsx) until the reader opens that work (one undo step over
+ * this tab's scene) or dismisses it (that tab is not announced again until this one reloads).
  */
 
 import { useEditor, useUi } from "../EditorContext";

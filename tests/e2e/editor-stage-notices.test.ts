@@ -1,0 +1,130 @@
+/**
+ * End-to-end, in Debian's Chromium: the persistent notices (newer work saved in another tab, this
+ * tab's autosaved scene refused at start) never move the stage (its toolbar, canvas and time bar):
+ * one or both at once, they hang over the top of the canvas under the toolbar, whose buttons stay
+ * usable as theirs do, at 700, 1280 and 1600 px. Each took a header line of its own, moving the
+ * stage down 39 px or more at every width.
+ */
+import type { Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { openEditor, type Session, screenshot } from "./harness.js";
+
+const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
+
+let s: Session;
+let page: Page;
+
+beforeAll(async () => {
+  s = await openEditor();
+  page = s.page;
+});
+
+afterAll(async () => {
+  await s?.close();
+});
+
+/** The stage's and the canvas's boxes in the page, as one string to compare ("x y width height" each). */
+function stageBoxes(): Promise<string> {
+  return page.evaluate(() => {
+    const box = (el: Element | null) => {
+      const r = el!.getBoundingClientRect();
+      return `${r.x + window.scrollX} ${r.y + window.scrollY} ${r.width} ${r.height}`;
+    };
+    return `stage ${box(document.querySelector("main.stage"))}, canvas ${box(document.querySelector("[data-testid=scene-canvas]"))}`;
+  });
+}
+
+/** Shows (or with null takes down) the notices as the editor does (autosave.ts, boot.ts). */
+const setNotices = (newer: boolean, refused: boolean) =>
+  page.evaluate(
+    ([newer, refused]) => {
+      type Ui = { ui: { setState(s: Record<string, unknown>): void } };
+      (window as unknown as { chapgame: Ui }).chapgame.ui.setState({
+        newerWork: newer ? { tab: "other-tab", savedAt: Date.UTC(2026, 0, 2, 15, 4) } : null,
+        refusedScene: refused
+          ? {
+              reason:
+                "bodies[0].r: must be a positive number (got -1); the scene file says so at line 12 of 80",
+              text: '{"bodies":[{"id":"a","r":-1}]}',
+              tab: null,
+            }
+          : null,
+      });
+    },
+    [newer, refused] as const,
+  );
+
+const NEWER = () => page.getByRole("status", { name: "Newer work in another tab" });
+const REFUSED = () => page.getByRole("alert", { name: "Autosaved scene refused" });
+
+/** Whether the button's centre is in the window and the button itself is there (nothing covers it). */
+function uncovered(name: string, within?: ReturnType<typeof NEWER>): Promise<boolean> {
+  return (within ?? page).getByRole("button", { name, exact: true }).evaluate((el) => {
+    const r = el.getBoundingClientRect();
+    const x = r.x + r.width / 2;
+    const y = r.y + r.height / 2;
+    if (x < 0 || y < 0 || x > window.innerWidth || y > window.innerHeight) return false;
+    return el.contains(document.elementFromPoint(x, y));
+  });
+}
+
+/** The bottom of the stage's toolbar and the top of the highest notice (Infinity: none). */
+function toolbarAndNotices(): Promise<[number, number]> {
+  return page.evaluate(() => {
+    const toolbar = document.querySelector(".toolbar")!.getBoundingClientRect();
+    const tops = Array.from(document.querySelectorAll(".stage-notices > *")).map(
+      (n) => n.getBoundingClientRect().top,
+    );
+    return [toolbar.bottom, Math.min(Infinity, ...tops)];
+  });
+}
+
+describe("the persistent notices", () => {
+  it("at 700, 1280 and 1600 px they hang over the canvas under the toolbar: the stage never moves, every button stays usable", async () => {
+    try {
+      for (const [width, height] of [
+        [700, 800],
+        [1280, 800],
+        [1600, 900],
+      ] as const) {
+        const at = `${width} x ${height}`;
+        await page.setViewportSize({ width, height });
+        await setNotices(false, false);
+        await poll(() => NEWER().count()).toBe(0);
+        const before = await stageBoxes();
+        for (const [newer, refused, name] of [
+          [true, false, "newer"],
+          [false, true, "refused"],
+          [true, true, "both"],
+        ] as const) {
+          await setNotices(newer, refused);
+          await poll(async () => (await NEWER().count()) + (await REFUSED().count())).toBe(
+            Number(newer) + Number(refused),
+          );
+          expect(await stageBoxes(), `${at}: ${name}`).toBe(before);
+          const [toolbarBottom, noticeTop] = await toolbarAndNotices();
+          expect(noticeTop, `${at}: ${name} under the toolbar`).toBeGreaterThanOrEqual(toolbarBottom);
+          for (const tool of ["Move", "Point", "Fit", "Keyboard shortcuts"])
+            expect(await uncovered(tool), `${at}: ${name}, ${tool}`).toBe(true);
+          if (newer)
+            for (const b of ["Open it", "Dismiss"])
+              expect(await uncovered(b, NEWER()), `${at}: ${b}`).toBe(true);
+          if (refused)
+            for (const b of ["Save it as a file", "Dismiss"])
+              expect(await uncovered(b, REFUSED()), `${at}: ${b}`).toBe(true);
+          await screenshot(page, `stage-notices-${name}-${width}`);
+        }
+        // dismissed one after the other, by their own buttons: the stage stays
+        await NEWER().getByRole("button", { name: "Dismiss" }).click();
+        await poll(() => NEWER().count()).toBe(0);
+        expect(await stageBoxes(), `${at}: newer work dismissed`).toBe(before);
+        await REFUSED().getByRole("button", { name: "Dismiss" }).click();
+        await poll(() => REFUSED().count()).toBe(0);
+        expect(await stageBoxes(), `${at}: refused scene dismissed`).toBe(before);
+      }
+    } finally {
+      await setNotices(false, false);
+      await page.setViewportSize({ width: 1400, height: 900 });
+    }
+  });
+});
