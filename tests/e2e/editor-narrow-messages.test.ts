@@ -95,8 +95,10 @@ describe("messages never move the stage", () => {
         // the digits of π refused: in the message bar and beside its field at once
         await page.getByRole("combobox", { name: "Preset" }).selectOption("galperin");
         await setMessage(null);
-        // choosing Galperin's billiard shows its digits field (at 700 px the header takes a line more)
+        // choosing Galperin's billiard shows its digits field (the header keeps its lines:
+        // editor-preset-header.test.ts)
         const galperin = await stageBoxes();
+        expect(galperin, `${at}: Galperin chosen`).toBe(before);
         const digits = page.getByRole("spinbutton", { name: "Digits of π" });
         await digits.fill("9");
         await digits.blur();

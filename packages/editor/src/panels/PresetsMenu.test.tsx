@@ -71,6 +71,24 @@ describe("Presets menu: digits of π", () => {
   });
 });
 
+describe("Presets menu: the digits field's place", () => {
+  it("is kept for every preset, but only Galperin's billiard's field can be reached, read or typed in", () => {
+    const { field } = setup();
+    const select = screen.getByRole("combobox", { name: "Preset" });
+    expect(field.closest("label")!.style.visibility).toBe("");
+    fireEvent.change(select, { target: { value: "originalDemo" } });
+    // the same field, not drawn (its place kept: choosing a preset never re-wraps the header)
+    expect(field.isConnected).toBe(true);
+    expect(field.closest("label")!.style.visibility).toBe("hidden");
+    expect(screen.queryByRole("spinbutton", { name: "Digits of π" })).toBeNull();
+    // the closed list's tooltip names the chosen preset whole (a narrow window cuts it)
+    expect(select.title).toBe("The original's sample (friction)");
+    fireEvent.change(select, { target: { value: "galperin" } });
+    expect(screen.getByRole("spinbutton", { name: "Digits of π" })).toBe(field);
+    expect(select.title).toBe("Galperin's π billiard");
+  });
+});
+
 describe("Presets menu: loading", () => {
   it("a loaded preset is reproducible (autosave keeps the scene it replaced) and says Undo goes back", async () => {
     const infos: string[] = [];

@@ -71,7 +71,13 @@ export function PresetsMenu() {
     <div className="presets">
       <label>
         Preset{" "}
-        <select aria-label="Preset" value={id} onChange={(e) => setId(e.target.value)}>
+        <select
+          aria-label="Preset"
+          value={id}
+          // the chosen title whole: a narrow window cuts it in the closed list (styles/layout.css)
+          title={entry?.name}
+          onChange={(e) => setId(e.target.value)}
+        >
           {PRESETS.map((p) => (
             <option key={p.id} value={p.id}>
               {p.name}
@@ -79,24 +85,26 @@ export function PresetsMenu() {
           ))}
         </select>
       </label>
-      {entry?.takesDigits && (
-        <label>
-          digits{" "}
-          <input
-            aria-label={DIGITS_LABEL}
-            type="number"
-            min={1}
-            max={MAX_DIGITS}
-            value={digits}
-            aria-invalid={refusal !== null}
-            aria-describedby={refusal === null ? undefined : refusalId}
-            // the refusal beside the field is not drawn in a narrow window (styles/layout.css)
-            title={refusal ?? undefined}
-            onChange={(e) => setDigits(e.target.value)}
-            onBlur={() => void checkDigits()}
-          />
-        </label>
-      )}
+      {/* its place is kept for every preset, so that choosing one never changes how the header
+          wraps (with Galperin's billiard it once put the message slot on a line of its own at 700 px,
+          the header 37 px higher, the stage moved down); for a preset without digits it is neither
+          drawn, focusable nor read, and its place is after Load preset, not a gap before it */}
+      <label style={entry?.takesDigits ? undefined : { visibility: "hidden", order: 1 }}>
+        digits{" "}
+        <input
+          aria-label={DIGITS_LABEL}
+          type="number"
+          min={1}
+          max={MAX_DIGITS}
+          value={digits}
+          aria-invalid={refusal !== null}
+          aria-describedby={refusal === null ? undefined : refusalId}
+          // the refusal beside the field is not drawn in a narrow window (styles/layout.css)
+          title={refusal ?? undefined}
+          onChange={(e) => setDigits(e.target.value)}
+          onBlur={() => void checkDigits()}
+        />
+      </label>
       <button
         type="button"
         onClick={() => {

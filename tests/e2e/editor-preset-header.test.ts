@@ -1,0 +1,76 @@
+/**
+ * End-to-end, in Debian's Chromium: choosing a preset in the Preset list never changes the header's
+ * height nor moves the stage (its toolbar, canvas and time bar), from 390 to 1920 px wide, and
+ * nothing overflows sideways with Galperin's digits field shown. At 700 px that field once put the
+ * message slot on a line of its own (header 79 -> 116 px, the canvas 37 px lower).
+ */
+import type { Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { openEditor, type Session, screenshot } from "./harness.js";
+
+const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
+
+let s: Session;
+let page: Page;
+
+beforeAll(async () => {
+  s = await openEditor();
+  page = s.page;
+});
+
+afterAll(async () => {
+  await s?.close();
+});
+
+/** The stage's and the canvas's boxes in the page, as one string to compare ("x y width height" each). */
+function stageBoxes(): Promise<string> {
+  return page.evaluate(() => {
+    const box = (el: Element | null) => {
+      const r = el!.getBoundingClientRect();
+      return `${r.x + window.scrollX} ${r.y + window.scrollY} ${r.width} ${r.height}`;
+    };
+    return `stage ${box(document.querySelector("main.stage"))}, canvas ${box(document.querySelector("[data-testid=scene-canvas]"))}`;
+  });
+}
+
+describe("the Preset list", () => {
+  it("choosing any preset keeps the header's height and the stage's box from 390 to 1920 px", async () => {
+    const presets = page.getByRole("combobox", { name: "Preset" });
+    const ids = await presets
+      .locator("option")
+      .evaluateAll((os) => os.map((o) => (o as HTMLOptionElement).value));
+    expect(ids).toContain("galperin");
+    const header = async () => (await page.locator("header.header").boundingBox())!.height;
+    try {
+      for (const [width, height] of [
+        [390, 844],
+        [700, 800],
+        [800, 600],
+        [1000, 700],
+        [1280, 800],
+        [1400, 900],
+        [1920, 1080],
+      ] as const) {
+        await page.setViewportSize({ width, height });
+        await presets.selectOption("originalDemo");
+        await poll(() => page.getByRole("spinbutton", { name: "Digits of π" }).count()).toBe(0);
+        const before = [await header(), await stageBoxes()];
+        for (const id of ids) {
+          await presets.selectOption(id);
+          expect([await header(), await stageBoxes()], `${width} x ${height}: ${id}`).toEqual(before);
+        }
+        // Galperin's digits field is there, and nothing overflows sideways
+        await presets.selectOption("galperin");
+        await page.getByRole("spinbutton", { name: "Digits of π" }).waitFor();
+        expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(width);
+        if (width === 700) await screenshot(page, "preset-header-galperin-700");
+      }
+      // the header at 700 px is its two lines (the message slot beside the presets), as before Galperin
+      await page.setViewportSize({ width: 700, height: 800 });
+      await poll(header).toBeLessThan(100);
+    } finally {
+      await presets.selectOption("originalDemo");
+      await page.setViewportSize({ width: 1400, height: 900 });
+    }
+  });
+});
