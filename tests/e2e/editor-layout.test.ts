@@ -2,7 +2,8 @@
  * End-to-end, in Debian's Chromium: the page at the edges of window sizes. On a wide window
  * (1920 x 1080, 2560 x 1440) every panel keeps a panel's width: the Speed panel once stretched
  * 650 px and more across the time bar, its buttons at one end; only the Time panel, whose slider
- * gains from it, takes the rest of the line. On a phone on its side (844 x 390, 740 x 360, 667 x 375)
+ * gains from it, takes the rest of the line. From 1280 to 1920 px the Time slider spans the stage
+ * (Speed under Time): beside Time, Speed squeezed it to 407 px at 1400, 582 at 1600, 902 at 1920. On a phone on its side (844 x 390, 740 x 360, 667 x 375)
  * the page fits the window and never scrolls, nor does the stage inside itself: the canvas shrinks,
  * the time bar stays in view and the side panels scroll inside their column (the page once scrolled
  * to 1,584 px, the time bar half below the fold; at 667 x 375 the stage scrolled 32 px inside itself,
@@ -82,10 +83,13 @@ describe("wide windows", () => {
         await poll(async () => (await panelBox("Time")).width).toBeGreaterThan(width / 3);
         const speed = await panelBox("Speed");
         const time = await panelBox("Time");
-        // no wider than its controls and a margin, beside Time on the same line
+        // no wider than its controls and a margin; beside Time only where Time keeps three quarters
+        // of the line (2560 px), else under it
         expect(speed.width, `${width} x ${height}`).toBeLessThanOrEqual(speed.controls + 64);
-        expect(speed.left).toBeGreaterThan(time.left + time.width - 1);
-        expect(time.width).toBeGreaterThan(2 * speed.width);
+        if (width === 2560) {
+          expect(speed.left).toBeGreaterThan(time.left + time.width - 1);
+          expect(time.width).toBeGreaterThan(3 * speed.width);
+        } else expect(speed.left).toBe(time.left);
         for (const title of [
           "Calculation",
           "Bodies",
@@ -98,6 +102,45 @@ describe("wide windows", () => {
         ])
           expect((await panelBox(title)).width, title).toBeLessThanOrEqual(560);
         await screenshot(page, `layout-wide-${width}x${height}`);
+      }
+    } finally {
+      await page.setViewportSize({ width: 1400, height: 900 });
+    }
+  });
+});
+
+describe("the Time slider in a wide window", () => {
+  it("from 1280 to 1920 px it spans the stage, Speed under Time, and nothing overflows", async () => {
+    try {
+      let last = 0;
+      for (const width of [1280, 1400, 1600, 1760, 1920]) {
+        await page.setViewportSize({ width, height: 900 });
+        const slider = async () => (await page.getByRole("slider", { name: "Time" }).boundingBox())!.width;
+        await poll(slider).toBeGreaterThan(last);
+        const now = await slider();
+        const stage = (await page.locator("main.stage").boundingBox())!;
+        // the stage's whole width but the panel's and the bar's margins; the side column takes 40 %
+        // of the window up to 1400 px (560 px wider), so that is 57 % of the window there, 69 % at 1920
+        expect(now, `${width} px`).toBeGreaterThanOrEqual(stage.width - 40);
+        expect(now, `${width} px`).toBeGreaterThanOrEqual(0.55 * width);
+        const speed = await panelBox("Speed");
+        const time = await panelBox("Time");
+        expect(speed.left, `${width} px: Speed under Time`).toBe(time.left);
+        // nothing overflows: no sideways scrolling, the stage's panels and buttons inside the stage
+        expect((await pageScroll())[0][0]).toBeLessThanOrEqual(width);
+        const outside = await page.evaluate(() => {
+          const r = document.querySelector("main.stage")!.getBoundingClientRect();
+          return Array.from(
+            document.querySelectorAll("main.stage .panel, main.stage button, main.stage input"),
+          )
+            .map((e) => e.getBoundingClientRect())
+            .filter((b) => b.left < r.left - 0.5 || b.right > r.right + 0.5).length;
+        });
+        expect(outside, `${width} px`).toBe(0);
+        for (const name of ["Play", "Next event", "+0.1: faster"])
+          expect(await inView(name), name).toBe(true);
+        last = now;
+        await screenshot(page, `layout-time-slider-${width}`);
       }
     } finally {
       await page.setViewportSize({ width: 1400, height: 900 });
