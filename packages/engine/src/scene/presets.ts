@@ -2,8 +2,11 @@
  * Preset scenes (scene file v1), written once and used by the tests, the benchmarks and the editor's
  * preset menu. Each function returns a fresh SceneFile; `presets` lists them for UIs. Reference values
  * for several of them are in /work/shared/reference-cases.md. Randomized presets use a seeded LCG
- * (deterministic, no Math.random).
+ * (deterministic, no Math.random). Bad arguments get a RangeError in the engine's form, the function and
+ * the argument as the path and the value as every refusal names it (sim/refusalText.ts):
+ * `galperin(digits): must be an integer in 1…9 (got 12)`.
  */
+import { given, unknownField } from "../sim/refusalText.js";
 import type { Action, LineKind, SceneFile, Vec2 } from "./types.js";
 
 function scene(actions: Action[], g = 9.81, gravity: Vec2 = [0, 0]): SceneFile {
@@ -45,7 +48,7 @@ export function originalDemo(): SceneFile {
  *  100^(digits−1) at x = 10 moving at (−1, 0). The collision count is the first `digits` digits of π. */
 export function galperin(digits: number): SceneFile {
   if (!Number.isInteger(digits) || digits < 1 || digits > 9)
-    throw new RangeError("galperin: digits must be 1…9");
+    throw new RangeError(`galperin(digits): must be an integer in 1…9 (got ${given(digits)})`);
   let big = 1;
   for (let i = 1; i < digits; i++) big *= 100;
   return scene([
@@ -134,6 +137,11 @@ export interface GasOptions {
 }
 
 const GAS_OPTIONS = ["n", "packing", "seed"];
+
+/** dilutedGas's refusal of `path` (`options.n`, …): `dilutedGas(options.n): must be … (got -3)`. */
+function refuseGas(path: string, reason: string, v: unknown): RangeError {
+  return new RangeError(`dilutedGas(${path}): ${reason} (got ${given(v)})`);
+}
 const SEED_MAX = 2 ** 32 - 1;
 
 /** A dilute gas: n discs without friction on a jittered grid (no overlaps) in a square box of four
@@ -141,23 +149,27 @@ const SEED_MAX = 2 ** 32 - 1;
  *  options that are not an object, an unknown option, or a value out of its range (a seed the
  *  generator would change: a fraction, NaN, a negative number, 2^32 or more). */
 export function dilutedGas(options: GasOptions): SceneFile {
-  if (typeof options !== "object" || options === null)
-    throw new RangeError("dilutedGas: options must be an object { n, packing, seed }");
+  if (typeof options !== "object" || options === null || Array.isArray(options))
+    throw refuseGas("options", "must be an object { n, packing, seed }", options);
   for (const key of Object.keys(options))
     if (!GAS_OPTIONS.includes(key))
-      throw new RangeError(`dilutedGas: unknown option "${key}" (known: ${GAS_OPTIONS.join(", ")})`);
+      throw new RangeError(`dilutedGas(options.${key}): ${unknownField(GAS_OPTIONS)}`);
   const { n, packing, seed = 1 } = options;
-  if (!Number.isInteger(n) || n < 1) throw new RangeError("dilutedGas: n must be a positive integer");
-  if (!(packing > 0 && packing <= 0.5)) throw new RangeError("dilutedGas: packing must be in (0, 0.5]");
+  if (!Number.isInteger(n) || n < 1) throw refuseGas("options.n", "must be a positive integer", n);
+  if (!(packing > 0 && packing <= 0.5))
+    throw refuseGas("options.packing", "must be a number in (0, 0.5]", packing);
   if (!Number.isInteger(seed) || seed < 0 || seed > SEED_MAX)
-    throw new RangeError(
-      `dilutedGas: seed must be a whole number from 0 to ${SEED_MAX} (got ${typeof seed === "string" ? JSON.stringify(seed) : String(seed)})`,
-    );
+    throw refuseGas("options.seed", `must be a whole number from 0 to ${SEED_MAX}`, seed);
   const r = 1;
   const side = Math.sqrt((n * Math.PI * r * r) / packing);
   const k = Math.ceil(Math.sqrt(n));
   const cell = side / k;
-  if (cell < 2.2 * r) throw new RangeError("dilutedGas: packing too high for a grid start with this n");
+  if (cell < 2.2 * r) {
+    // The largest packing whose box still has cells 2.2 r wide, rounded down so that the value shown passes.
+    const narrowestSide = 2.2 * r * k;
+    const most = Math.floor(((n * Math.PI * r * r) / (narrowestSide * narrowestSide)) * 1000) / 1000;
+    throw refuseGas("options.packing", `must be at most ${most} for a grid start of ${n} discs`, packing);
+  }
   const jitter = 0.45 * (cell - 2 * r);
   let state = seed >>> 0;
   const rand = () => {
