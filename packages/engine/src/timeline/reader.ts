@@ -4,7 +4,8 @@
  * KEYFRAME_RECORDS_PER_BODY × bodies) records replayed, one closed-form evaluation per body, so its
  * cost does not grow with the length of the history; bodyArraysAt: the bodies the same way, as
  * arrays, going on from its last read when it can: bodyArrays.ts), the event log by time or by
- * index, counts and storage. Timeline extends it with the changes (apply, setActions, prolong) and observers.
+ * index, counts and storage. TimelineObservers (observers.ts) extends it with the subscribers, and
+ * Timeline extends that with the changes (apply, setActions, prolong).
  * After forgetBefore the kept history starts at `historyStart` (log entry `firstEvent`); entries keep
  * their global numbers (core.records holds entries firstEvent…): what is refused then is kept.ts.
  */

@@ -8,7 +8,8 @@
  *   one: restartPoint.ts), replays to it, applies it and recomputes up to the old horizon: the result is identical to building from scratch (the World
  *   is deterministic and splitting a computation changes nothing). On any error nothing changes.
  * - The work of apply and setActions on the core: edits.ts (and undo.ts, headlessInstant.ts).
- * - Reading (stateAt, the log, counts): reader.ts, which this class extends.
+ * - Reading (stateAt, the log, counts): reader.ts; observing (subscribe, getSnapshot): observers.ts.
+ *   This class extends TimelineObservers, which extends TimelineReader.
  * - Storage: see records.ts (49 bytes per event) and keyframe.ts.
  * - history: false keeps no log and no keyframes (headless runs); then only the horizon can be read.
  * - forgetBefore(t) drops the start of the history (forget.ts; what the kept part still answers and
@@ -19,7 +20,6 @@ import { nonNegative } from "../scene/fields.js";
 import { applyOrder, parseScene } from "../scene/parse.js";
 import type { Action, SceneFile, Until } from "../scene/types.js";
 import { SimulationError } from "../sim/errors.js";
-import { given } from "../sim/refusalText.js";
 import { copyAction, freezeAction, sameUntil } from "./actionData.js";
 import { checkActionList, checkApplyOptions, checkBudget, checkUntil } from "./args.js";
 import { TimelineCore } from "./core.js";
@@ -27,9 +27,8 @@ import { actionsOnCore, applyToCore } from "./edits.js";
 import { forgetBefore, forgetTime } from "./forget.js";
 import { type Goal, goalFrom } from "./goals.js";
 import type { HeadlessInstant } from "./headlessInstant.js";
-import { notifyAll } from "./listeners.js";
+import { TimelineObservers } from "./observers.js";
 import { type CheckedOptions, checkOptions, checkSceneOptions } from "./options.js";
-import { TimelineReader } from "./reader.js";
 import type { ApplyOptions, ProlongResult, TimelineOptions } from "./types.js";
 
 const INF = Number.POSITIVE_INFINITY;
@@ -60,10 +59,8 @@ const INF = Number.POSITIVE_INFINITY;
  * tl.prolong({ time: 10 });        // horizon 10: a collision at t = 3
  * tl.stateAt(2).bodies;            // exact state at t = 2
  */
-export class Timeline extends TimelineReader {
+export class Timeline extends TimelineObservers {
   private readonly options: CheckedOptions;
-  private revision = 0;
-  private readonly listeners = new Set<() => void>();
   private slice: { until: Until; goal: Goal } | null = null;
   /** without history: the instant at the horizon, so an action there joins its group (headlessInstant.ts) */
   private instant: HeadlessInstant | null = null;
@@ -146,11 +143,10 @@ export class Timeline extends TimelineReader {
 
   // ---- changes ----------------------------------------------------------------------------------
 
-  /** A new revision; every listener is told (listeners.ts). */
+  /** A new revision: the actions view is made again when read, and every listener is told. */
   private changed(): void {
-    this.revision++;
     this.actionsView = null;
-    notifyAll(this.listeners);
+    this.notifyChange();
   }
 
   /** Validate and apply one action at its time (absolute, >= 0; see the header). Throws SceneError
@@ -291,24 +287,5 @@ export class Timeline extends TimelineReader {
     const { start, dropped } = forgetBefore(this.core, forgetTime(t, this.core.horizon));
     if (dropped) this.changed();
     return start;
-  }
-
-  // ---- observing --------------------------------------------------------------------------------
-
-  /** Call `listener` after every change (apply, setActions, prolong). Returns the unsubscribe. A
-   *  listener that throws does not stop the others; its error is rethrown after them. A listener
-   *  that is not a function throws TypeError. */
-  subscribe(listener: () => void): () => void {
-    if (typeof listener !== "function")
-      throw new TypeError(`subscribe(listener): must be a function (got ${given(listener)})`);
-    this.listeners.add(listener);
-    return () => {
-      this.listeners.delete(listener);
-    };
-  }
-
-  /** Revision number: changes on every change. */
-  getSnapshot(): number {
-    return this.revision;
   }
 }
