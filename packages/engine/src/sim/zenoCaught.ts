@@ -6,7 +6,11 @@
  * window of converging events) and that touches one already caught, within what a contact allows
  * (contactResolved: CONTACT_UNRESOLVED_FRACTION of the contact distance), joins them, up to
  * CAUGHT_MAX bodies; then every line and point that a finite body caught touches the same way.
- * A body at rest far away, or one that has not moved since, is not named.
+ * A body at rest far away, or one that has not moved since, is not named. An edit changes a motion
+ * too, so a body added or set at that instant touching one caught is named though it took part in no
+ * event: the World keeps no per-body record of events (one would cost every event a write), and a
+ * record of edits would have to travel in the Timeline's keyframes for a World rebuilt from one to
+ * name the same bodies.
  */
 import { contactResolved } from "../physics/resolution.js";
 import type { BodyStore } from "./bodyStore.js";
