@@ -85,4 +85,24 @@ describe("optional fields given as undefined", () => {
       dilutedGas({ n: 20, packing: 0.1, seed: 1 }),
     );
   });
+
+  // types.ts keeps an addBody's mu and v optional, since Action is also what a program writes (the
+  // Config above); what the engine returns always has them, as types.ts and scene-format.md say.
+  it("every addBody the engine returns has mu and v, though the type leaves them optional", () => {
+    const written: Action = { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 };
+    const filled = { ...written, mu: 0, v: [0, 0] };
+    const scene: SceneFile = { format: "chapgame", version: 1, g: 0, gravity: [0, 0], actions: [written] };
+    expect(parseScene(scene).actions).toEqual([filled]);
+    expect(parseScene(serializeScene(scene)).actions).toEqual([filled]);
+    expect(checkAction(written, "action")).toEqual(filled);
+    const tl = new Timeline({ g: 0 });
+    tl.apply({ ...written, id: "b", x: 5, mu: undefined, v: undefined });
+    tl.setActions([...tl.actions, { ...written, time: 1 }]);
+    expect(tl.actions).toEqual([
+      { ...filled, id: "b", x: 5 },
+      { ...filled, time: 1 },
+    ]);
+    expect(tl.toScene().actions).toEqual(tl.actions);
+    expect(Timeline.fromScene(scene).actions).toEqual([filled]);
+  });
 });

@@ -46,9 +46,12 @@ export type Action = {
       r: number;
       /** Mass: 1e-40 to 1e40, or Infinity (immovable by collisions; written "Infinity" in JSON). */
       m: number;
-      /** Friction coefficient (default 0); must be 0 under a non-zero gravity field. */
+      /** Friction coefficient (default 0); must be 0 under a non-zero gravity field. Optional to
+       *  write; every addBody the engine returns (parseScene, checkAction, Timeline.actions,
+       *  toScene) has it, the default filled in. */
       mu?: number | undefined;
-      /** Velocity [vx, vy] (default [0, 0]); each component 0 or at least 1e-30 in size. */
+      /** Velocity [vx, vy] (default [0, 0]); each component 0 or at least 1e-30 in size. Optional
+       *  to write; every addBody the engine returns has it, as `mu`. */
       v?: Vec2 | undefined;
     }
   | {
