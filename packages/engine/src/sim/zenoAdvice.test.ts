@@ -27,12 +27,30 @@ describe("names in reports", () => {
     expect(listed(['"a"', '"b"', '"c"'])).toBe('"a", "b" and "c"');
     const many = Array.from({ length: 12 }, (_, i) => `"b${i}"`);
     expect(listed(many)).toBe(`${many.slice(0, 10).join(", ")} and 2 more`);
+    expect(listed(many, true)).toBe(`${many.slice(0, 10).join(", ")} and at least 2 more`);
     expect(bodiesNamed(["p"], "immovable")).toBe('immovable body "p"');
     expect(bodiesNamed(["a", "b"])).toBe('bodies "a" and "b"');
   });
 });
 
 describe("a jam: many events at one instant", () => {
+  it("a row of 80 touching discs between two immovable ones: the search stops at 64 and the report says at least", () => {
+    const w = new World({ g: 0 });
+    w.addBody("L", { x: 0, y: 0, r: 1, m: INF });
+    for (let k = 0; k < 80; k++)
+      w.addBody(`d${String(k).padStart(2, "0")}`, { x: 2 + 2 * k, y: 0, r: 1, m: 1, vx: k === 0 ? 1 : 0 });
+    w.addBody("R", { x: 162, y: 0, r: 1, m: INF });
+    const e = thrown(() => w.advance({}));
+    expect(e.ids.length).toBe(64); // CAUGHT_MAX bodies, no line or point here
+    expect(e.message).toMatch(
+      /at the same instant t=0 among bodies "L", "d00", .* and at least 54 more \(the last: /,
+    );
+    expect(e.message).toMatch(
+      /: to go on, place bodies "L", .* and at least 54 more a little apart from each other/,
+    );
+    expect(e.message).not.toMatch(/ and 54 more/);
+  });
+
   it("a disc between two immovable discs: the three named, the bystander not; give them a finite mass", () => {
     const w = new World({ g: 0 });
     w.addBody("L", { x: 0, y: 0, r: 1, m: INF });

@@ -32,21 +32,24 @@ export interface ZenoCulprits {
   readonly obstacles: readonly string[];
   /** The ids of those obstacles, in the same order. */
   readonly obstacleIds: readonly string[];
+  /** Whether the search stopped at its bound (zenoCaught.ts CAUGHT_MAX): more bodies may be caught. */
+  readonly bodiesBounded?: boolean;
 }
 
-/** `"a", "b" and "c"`, the first NAMES_SHOWN and how many more. */
-export function listed(quoted: readonly string[]): string {
+/** `"a", "b" and "c"`, the first NAMES_SHOWN and how many more ("at least" when `bounded`: the
+ *  list itself stopped at a bound, so there may be more than it holds). */
+export function listed(quoted: readonly string[], bounded = false): string {
   const shown = quoted.slice(0, NAMES_SHOWN);
   const more = quoted.length - shown.length;
-  if (more > 0) return `${shown.join(", ")} and ${more} more`;
+  if (more > 0) return `${shown.join(", ")} and ${bounded ? "at least " : ""}${more} more`;
   if (shown.length <= 1) return shown.join("");
   return `${shown.slice(0, -1).join(", ")} and ${shown[shown.length - 1] as string}`;
 }
 
 /** `body "a"` or `bodies "a", "b" and "c"`; `prefix` qualifies them ("immovable"). */
-export function bodiesNamed(ids: readonly string[], prefix = ""): string {
+export function bodiesNamed(ids: readonly string[], prefix = "", bounded = false): string {
   const kind = ids.length === 1 ? "body" : "bodies";
-  return `${prefix === "" ? "" : `${prefix} `}${kind} ${listed(ids.map(quoteId))}`;
+  return `${prefix === "" ? "" : `${prefix} `}${kind} ${listed(ids.map(quoteId), bounded)}`;
 }
 
 /** The report's ids: the bodies, then the obstacles. */
@@ -58,7 +61,7 @@ export function culpritIds(c: ZenoCulprits): string[] {
 function among(c: ZenoCulprits): string {
   if (c.bodies.length === 0) return "";
   const against = c.obstacles.length === 0 ? "" : ` against ${listed(c.obstacles)}`;
-  return ` among ${bodiesNamed(c.bodies)}${against}`;
+  return ` among ${bodiesNamed(c.bodies, "", c.bodiesBounded === true)}${against}`;
 }
 
 /** The same-instant report (zenoWatch.ts): `count` events at `time`. */
@@ -71,7 +74,7 @@ export function sameInstantReport(count: number, time: number, c: ZenoCulprits |
   const apart = each !== "" && walls !== "" ? `${each} and ${walls}` : each + walls;
   const finite =
     c.immovable.length === 0 ? "" : `, or give the ${bodiesNamed(c.immovable, "immovable")} a finite mass`;
-  return `${state}: to go on, place ${bodiesNamed(c.bodies)} a little apart ${apart} so that they do not touch at t=${time}${finite}`;
+  return `${state}: to go on, place ${bodiesNamed(c.bodies, "", c.bodiesBounded === true)} a little apart ${apart} so that they do not touch at t=${time}${finite}`;
 }
 
 /** The advice of a crush by the moving immovable `crushers` against `sides` (named), before `by`. */

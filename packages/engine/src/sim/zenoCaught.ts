@@ -5,7 +5,8 @@
  * point), every body whose motion changed at or after `since` (the instant, or the start of the last
  * window of converging events) and that touches one already caught, within what a contact allows
  * (contactResolved: CONTACT_UNRESOLVED_FRACTION of the contact distance), joins them, up to
- * CAUGHT_MAX bodies; then every line and point that a finite body caught touches the same way.
+ * CAUGHT_MAX bodies (a report then says "at least" of the bodies it does not list: its ids hold
+ * those CAUGHT_MAX); then every line and point that a finite body caught touches the same way.
  * A body at rest far away, or one that has not moved since, is not named. An edit changes a motion
  * too, so a body added or set at that instant touching one caught is named though it took part in no
  * event: the World keeps no per-body record of events (one would cost every event a write), and a
@@ -90,5 +91,6 @@ export function caught(v: CaughtView, seed: CaughtSeed, since: number): ZenoCulp
       ...pointIds.map((id) => `point ${quoteId(id)}`),
     ],
     obstacleIds: [...lineIds, ...pointIds],
+    bodiesBounded: slots.length >= CAUGHT_MAX,
   };
 }
