@@ -13,6 +13,7 @@ import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { openEditor, type Session, screenshot } from "./harness.js";
 import { loadPresetOn } from "./presets.js";
+import { buttonUncovered } from "./stageProbes.js";
 
 const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
 
@@ -46,15 +47,7 @@ function panelBox(title: string): Promise<{ width: number; left: number; control
 }
 
 /** Whether the element's centre is in the window and the element itself is there (nothing covers it). */
-function inView(name: string): Promise<boolean> {
-  return page.getByRole("button", { name, exact: true }).evaluate((el) => {
-    const r = el.getBoundingClientRect();
-    const x = r.x + r.width / 2;
-    const y = r.y + r.height / 2;
-    if (x < 0 || y < 0 || x > window.innerWidth || y > window.innerHeight) return false;
-    return el.contains(document.elementFromPoint(x, y));
-  });
-}
+const inView = (name: string) => buttonUncovered(page, name);
 
 /** The stage's (toolbar, canvas, time bar) scroll height and client height. */
 function stageScroll(): Promise<[number, number]> {

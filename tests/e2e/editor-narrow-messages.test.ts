@@ -10,6 +10,7 @@
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { openEditor, type Session, screenshot } from "./harness.js";
+import { stageBoxes as probeStageBoxes } from "./stageProbes.js";
 
 const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
 
@@ -27,15 +28,7 @@ afterAll(async () => {
 
 /** The stage's and the canvas's boxes in the page (not the window: it scrolls to a table's cell
  *  below the stage), as one string to compare ("x y width height" each). */
-async function stageBoxes(): Promise<string> {
-  return page.evaluate(() => {
-    const box = (el: Element | null) => {
-      const r = el!.getBoundingClientRect();
-      return `${r.x + window.scrollX} ${r.y + window.scrollY} ${r.width} ${r.height}`;
-    };
-    return `stage ${box(document.querySelector("main.stage"))}, canvas ${box(document.querySelector("[data-testid=scene-canvas]"))}`;
-  });
-}
+const stageBoxes = () => probeStageBoxes(page);
 
 type Tone = "error" | "info";
 /** Shows `text` in the message bar as the editor does (null: takes the message down). */

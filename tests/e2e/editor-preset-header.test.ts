@@ -7,6 +7,7 @@
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { openEditor, type Session, screenshot } from "./harness.js";
+import { stageBoxes as probeStageBoxes } from "./stageProbes.js";
 
 const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
 
@@ -23,15 +24,7 @@ afterAll(async () => {
 });
 
 /** The stage's and the canvas's boxes in the page, as one string to compare ("x y width height" each). */
-function stageBoxes(): Promise<string> {
-  return page.evaluate(() => {
-    const box = (el: Element | null) => {
-      const r = el!.getBoundingClientRect();
-      return `${r.x + window.scrollX} ${r.y + window.scrollY} ${r.width} ${r.height}`;
-    };
-    return `stage ${box(document.querySelector("main.stage"))}, canvas ${box(document.querySelector("[data-testid=scene-canvas]"))}`;
-  });
-}
+const stageBoxes = () => probeStageBoxes(page);
 
 describe("the Preset list", () => {
   it("choosing any preset keeps the header's height and the stage's box from 390 to 1920 px", async () => {

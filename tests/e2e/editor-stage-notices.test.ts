@@ -8,6 +8,7 @@
 import type { Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { openEditor, type Session, screenshot } from "./harness.js";
+import { buttonUncovered, stageBoxes as probeStageBoxes } from "./stageProbes.js";
 
 const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
 
@@ -24,15 +25,7 @@ afterAll(async () => {
 });
 
 /** The stage's and the canvas's boxes in the page, as one string to compare ("x y width height" each). */
-function stageBoxes(): Promise<string> {
-  return page.evaluate(() => {
-    const box = (el: Element | null) => {
-      const r = el!.getBoundingClientRect();
-      return `${r.x + window.scrollX} ${r.y + window.scrollY} ${r.width} ${r.height}`;
-    };
-    return `stage ${box(document.querySelector("main.stage"))}, canvas ${box(document.querySelector("[data-testid=scene-canvas]"))}`;
-  });
-}
+const stageBoxes = () => probeStageBoxes(page);
 
 /** Shows (or with null takes down) the notices as the editor does (autosave.ts, boot.ts). */
 const setNotices = (newer: boolean, refused: boolean) =>
@@ -58,15 +51,7 @@ const NEWER = () => page.getByRole("status", { name: "Newer work in another tab"
 const REFUSED = () => page.getByRole("alert", { name: "Autosaved scene refused" });
 
 /** Whether the button's centre is in the window and the button itself is there (nothing covers it). */
-function uncovered(name: string, within?: ReturnType<typeof NEWER>): Promise<boolean> {
-  return (within ?? page).getByRole("button", { name, exact: true }).evaluate((el) => {
-    const r = el.getBoundingClientRect();
-    const x = r.x + r.width / 2;
-    const y = r.y + r.height / 2;
-    if (x < 0 || y < 0 || x > window.innerWidth || y > window.innerHeight) return false;
-    return el.contains(document.elementFromPoint(x, y));
-  });
-}
+const uncovered = (name: string, within?: ReturnType<typeof NEWER>) => buttonUncovered(within ?? page, name);
 
 /** The bottom of the stage's toolbar and the top of the highest notice (Infinity: none). */
 function toolbarAndNotices(): Promise<[number, number]> {
