@@ -4,10 +4,10 @@
  * to a temporary directory.
  */
 import { execFileSync, spawnSync } from "node:child_process";
-import { existsSync, mkdtempSync, readdirSync, statSync, writeFileSync } from "node:fs";
+import { existsSync, mkdtempSync, readdirSync, rmSync, statSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
-import { beforeAll, describe, expect, it } from "vitest";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import {
   galperin,
   newtonsCradle,
@@ -18,6 +18,7 @@ import {
 const root = resolve(import.meta.dirname, "../..");
 const bin = join(root, "packages/engine/dist/cli/main.js");
 const dir = mkdtempSync(join(tmpdir(), "chapgame-cli-"));
+afterAll(() => rmSync(dir, { recursive: true, force: true }));
 
 function file(name: string, text: string): string {
   const p = join(dir, name);

@@ -4,15 +4,26 @@
  * does not keep up (the bin must wait for it, not hold the output in memory: read from Linux's /proc).
  */
 import { execFileSync, spawn } from "node:child_process";
-import { existsSync, mkdtempSync, readdirSync, readFileSync, statSync, writeFileSync } from "node:fs";
+import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
-import { beforeAll, expect, it } from "vitest";
+import { afterAll, beforeAll, expect, it } from "vitest";
 import { dilutedGas } from "../scene/presets.js";
 import { serializeScene } from "../scene/serialize.js";
 
 const pkg = resolve(import.meta.dirname, "../..");
 const bin = join(pkg, "dist/cli/main.js");
+
+/** The temporary directories this file made; removed after its tests, so runs leave nothing in /tmp. */
+const made: string[] = [];
+function tempDir(): string {
+  const dir = mkdtempSync(join(tmpdir(), "chapgame-main-"));
+  made.push(dir);
+  return dir;
+}
+afterAll(() => {
+  for (const dir of made) rmSync(dir, { recursive: true, force: true });
+});
 
 function newest(dir: string): number {
   let t = 0;
@@ -34,7 +45,7 @@ beforeAll(() => {
 });
 
 it("a reader that closes standard output early (| head) ends the run quietly, without a stack trace", async () => {
-  const dir = mkdtempSync(join(tmpdir(), "chapgame-main-"));
+  const dir = tempDir();
   const scene = join(dir, "gas.json");
   writeFileSync(scene, serializeScene(dilutedGas({ n: 200, packing: 0.2 })));
   // about 2 MB of JSON: far more than a pipe holds, so writing continues after the reader is gone
@@ -61,7 +72,7 @@ function usage(pid: number): [number, number] {
 
 it("a reader that does not keep up makes the bin wait, not hold the output in memory (2 GB for 2M events)", async () => {
   expect(existsSync("/proc/self/status"), "this test reads Linux's /proc").toBe(true);
-  const dir = mkdtempSync(join(tmpdir(), "chapgame-main-"));
+  const dir = tempDir();
   const scene = join(dir, "gas.json");
   writeFileSync(scene, serializeScene(dilutedGas({ n: 200, packing: 0.2 })));
   const child = spawn("node", [bin, "simulate", scene, "--max-events", "1000000", "--events"], {
@@ -93,7 +104,7 @@ it("a reader that does not keep up makes the bin wait, not hold the output in me
 }, 120_000);
 
 it("a result that cannot be written (a full disk: Linux's /dev/full) exits 1 saying so, not as an internal error", () => {
-  const dir = mkdtempSync(join(tmpdir(), "chapgame-main-"));
+  const dir = tempDir();
   const scene = join(dir, "gas.json");
   writeFileSync(scene, serializeScene(dilutedGas({ n: 20, packing: 0.2 })));
   let status: number | null = 0;
@@ -140,7 +151,7 @@ function interrupted(
 
 it("Ctrl-C (SIGINT) during a run without a bound prints the result so far, reason interrupted, and exits 130", async () => {
   // Audit: runCli was synchronous, so SIGINT killed the bin and the user got nothing.
-  const dir = mkdtempSync(join(tmpdir(), "chapgame-main-"));
+  const dir = tempDir();
   const scene = join(dir, "gas.json");
   writeFileSync(scene, serializeScene(dilutedGas({ n: 200, packing: 0.2 }))); // never rests
   const r = await interrupted(["simulate", scene, "--compact"], "SIGINT");
@@ -162,7 +173,7 @@ it("Ctrl-C (SIGINT) during a run without a bound prints the result so far, reaso
 }, 60_000);
 
 it("SIGTERM during state --at T prints the bodies where the computation got to and exits 143", async () => {
-  const dir = mkdtempSync(join(tmpdir(), "chapgame-main-"));
+  const dir = tempDir();
   const scene = join(dir, "gas.json");
   writeFileSync(scene, serializeScene(dilutedGas({ n: 200, packing: 0.2 })));
   const r = await interrupted(["state", scene, "--at", "1e12"], "SIGTERM");
