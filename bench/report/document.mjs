@@ -79,5 +79,10 @@ export function headlineFile(results, head) {
 
 /** The README's block between the bench-headline markers (the same headline, with the run's date). */
 export function readmeBlock(results, head) {
-  return `${head}\n\nMachine: ${results.machine.cpu}, ${results.machine.cores} cores, Node ${results.machine.node}${results.quick ? " (quick run)" : ""}; ${results.date}.${speedProbeNote(results)} Details: [docs/benchmarks.md](docs/benchmarks.md).`;
+  return `${head}\n\nMachine: ${results.machine.cpu}, ${results.machine.cores} cores, Node ${results.machine.node}${results.quick ? " (quick run)" : ""}; ${results.date}${runLength(results)}.${speedProbeNote(results)} Details: [docs/benchmarks.md](docs/benchmarks.md).`;
+}
+
+/** ", the run took N s" from the run's own clock (runs that did not record it: nothing). */
+function runLength(results) {
+  return typeof results.seconds === "number" ? `, the run took ${Math.round(results.seconds)} s` : "";
 }
