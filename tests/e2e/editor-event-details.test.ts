@@ -7,28 +7,16 @@
  * the engine logs them.
  */
 import { newtonsCradle, originalDemo, Timeline } from "@chapgame/engine";
-import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { openEditor, type Session, screenshot } from "./harness.js";
+import { describe, expect, it } from "vitest";
+import { editorForFile, poll } from "./editorForFile.js";
+import { screenshot } from "./harness.js";
 import { loadPresetOn } from "./presets.js";
 
-const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
-
-let s: Session;
-let page: Page;
-
-beforeAll(async () => {
-  s = await openEditor();
-  page = s.page;
-});
-
-afterAll(async () => {
-  await s?.close();
-});
+const editor = editorForFile();
 
 /** Each row of the velocities table: its cells' text and title (the full value). */
 function velocityCells(): Promise<{ text: string; title: string }[][]> {
-  return page
+  return editor.page
     .getByRole("region", { name: "Event details" })
     .getByRole("table", { name: "Velocities before and after" })
     .locator("tbody tr")
@@ -55,9 +43,9 @@ describe("Event details", () => {
     expect(d.time).toBeCloseTo(100 - Math.sqrt(9700), 12);
     expect(b?.before?.vx).toBeCloseTo(-Math.sqrt(9700), 12);
 
-    const details = page.getByRole("region", { name: "Event details" });
+    const details = editor.page.getByRole("region", { name: "Event details" });
     await details.getByText("Select an entry of the Event log to see its details.").waitFor();
-    const row = page
+    const row = editor.page
       .getByRole("table", { name: "Event log" })
       .getByRole("row")
       .filter({ hasText: "body–body" });
@@ -83,9 +71,9 @@ describe("Event details", () => {
     await expect.poll(() => details.locator("dd").nth(2).textContent()).toBe("A, B");
     // a participant selects its body
     await details.getByRole("button", { name: "B", exact: true }).click();
-    const selected = page.getByRole("table", { name: "Bodies" }).locator("tr.selected");
+    const selected = editor.page.getByRole("table", { name: "Bodies" }).locator("tr.selected");
     await poll(() => selected.getByLabel("B x", { exact: true }).count()).toBe(1);
-    await screenshot(page, "event-details");
+    await screenshot(editor.page, "event-details");
   });
 
   it("Next entry steps through a Newton's cradle's simultaneous collisions one by one", async () => {
@@ -93,9 +81,9 @@ describe("Event details", () => {
     tl.prolongTo(10);
     const chain = tl.eventsBetween(1, 1).filter((e) => e.type === "bodyBody");
     expect(chain.length).toBeGreaterThan(2);
-    await loadPresetOn(page, "Newton's cradle", "striker");
-    const details = page.getByRole("region", { name: "Event details" });
-    await page
+    await loadPresetOn(editor.page, "Newton's cradle", "striker");
+    const details = editor.page.getByRole("region", { name: "Event details" });
+    await editor.page
       .getByRole("table", { name: "Event log" })
       .getByRole("row")
       .filter({ hasText: "body–body" })
@@ -110,7 +98,7 @@ describe("Event details", () => {
       shown.push(await participants());
     }
     expect(shown).toEqual(chain.map((e) => e.ids.join(", ")));
-    expect(await page.getByRole("slider", { name: "Time" }).inputValue()).toBe("1");
+    expect(await editor.page.getByRole("slider", { name: "Time" }).inputValue()).toBe("1");
     await details.getByRole("button", { name: "◀ Previous entry" }).click();
     await poll(participants).toBe(chain[chain.length - 2]!.ids.join(", "));
   });

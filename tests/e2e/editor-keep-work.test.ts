@@ -7,20 +7,17 @@
  */
 import { writeFileSync } from "node:fs";
 import { join } from "node:path";
-import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { ARTIFACTS, openEditor, type Session, screenshot } from "./harness.js";
+import { describe, expect, it } from "vitest";
+import { editorForFile, poll } from "./editorForFile.js";
+import { ARTIFACTS, screenshot } from "./harness.js";
 
-const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
+const editor = editorForFile();
 
-let s: Session;
-let page: Page;
-
-const bodies = () => page.getByRole("table", { name: "Bodies" });
+const bodies = () => editor.page.getByRole("table", { name: "Bodies" });
 const cell = (name: string) => bodies().getByLabel(name, { exact: true });
 const cellText = (name: string) =>
   cell(name).evaluate((el) => (el instanceof HTMLInputElement ? el.value : el.textContent));
-const message = () => page.locator(".message").textContent();
+const message = () => editor.page.locator(".message").textContent();
 
 async function editCell(name: string, text: string) {
   await cell(name).click();
@@ -30,9 +27,9 @@ async function editCell(name: string, text: string) {
 }
 
 async function open(url: string) {
-  await page.goto("about:blank");
-  await page.goto(url);
-  await page.getByRole("slider", { name: "Time" }).waitFor();
+  await editor.page.goto("about:blank");
+  await editor.page.goto(url);
+  await editor.page.getByRole("slider", { name: "Time" }).waitFor();
 }
 
 /** A share link's code, made the way the editor makes it (base64url of the scene's JSON). */
@@ -48,35 +45,26 @@ const LONELY = {
   actions: [{ time: 0, type: "addBody", id: "lonely", x: 0, y: 0, r: 1, m: 1 }],
 };
 
-beforeAll(async () => {
-  s = await openEditor();
-  page = s.page;
-});
-
-afterAll(async () => {
-  await s?.close();
-});
-
 describe("keeping work", () => {
   it("an edit survives a reload that comes right after it (autosave flushed when the page goes)", async () => {
     await poll(() => bodies().getByRole("row").count()).toBeGreaterThan(1);
     const first = (await bodies().getByRole("button", { name: / m$/ }).first().getAttribute("aria-label"))!;
     await editCell(first, "7");
     await poll(() => cellText(first)).toBe("7");
-    await page.reload(); // well within the autosave's 300 ms of quiet
-    await page.getByRole("slider", { name: "Time" }).waitFor();
+    await editor.page.reload(); // well within the autosave's 300 ms of quiet
+    await editor.page.getByRole("slider", { name: "Time" }).waitFor();
     await poll(() => cellText(first)).toBe("7");
   });
 
   it("a reload goes back to the time the tab was at, computed again when past the horizon", async () => {
-    const field = page.getByRole("textbox", { name: "Time (s)" });
-    const slider = page.getByRole("slider", { name: "Time" });
+    const field = editor.page.getByRole("textbox", { name: "Time (s)" });
+    const slider = editor.page.getByRole("slider", { name: "Time" });
     const horizon = Number(await slider.getAttribute("max"));
     const far = horizon + 7.5;
     await field.fill(String(far));
     await field.press("Enter");
     await poll(async () => Number(await slider.inputValue())).toBe(far);
-    await page.reload();
+    await editor.page.reload();
     await slider.waitFor();
     await poll(async () => Number(await slider.inputValue())).toBe(far);
     await field.fill("0");
@@ -86,25 +74,25 @@ describe("keeping work", () => {
   it("Clear then a reload: Undo still brings the cleared scene back", async () => {
     const before = await bodies().getByRole("row").count();
     expect(before).toBeGreaterThan(1);
-    await page.getByRole("button", { name: "Clear" }).click();
+    await editor.page.getByRole("button", { name: "Clear" }).click();
     await poll(message).toMatch(/^Cleared the scene\. Undo brings it back\./);
     await poll(() => bodies().getByRole("row").count()).toBe(1);
-    await page.reload();
-    await page.getByRole("slider", { name: "Time" }).waitFor();
+    await editor.page.reload();
+    await editor.page.getByRole("slider", { name: "Time" }).waitFor();
     await poll(() => bodies().getByRole("row").count()).toBe(1);
     await poll(message).toMatch(/^Restored the autosaved scene\. Undo brings back the scene it replaced/);
-    await page.getByRole("button", { name: "Undo" }).click();
+    await editor.page.getByRole("button", { name: "Undo" }).click();
     await poll(() => bodies().getByRole("row").count()).toBe(before);
   });
 
   it("opening a shared link keeps the scene one was working on: Undo brings it back", async () => {
     const before = await bodies().getByRole("row").count();
-    await open(`${s.url}#scene=${shareCode(LONELY)}`);
+    await open(`${editor.session.url}#scene=${shareCode(LONELY)}`);
     await poll(() => bodies().getByRole("row").count()).toBe(2);
     expect(await cellText("lonely x")).toBe("0");
     await poll(message).toMatch(/shared/i);
-    await screenshot(page, "12-shared-link-opened");
-    await page.getByRole("button", { name: "Undo" }).click();
+    await screenshot(editor.page, "12-shared-link-opened");
+    await editor.page.getByRole("button", { name: "Undo" }).click();
     await poll(() => bodies().getByRole("row").count()).toBe(before);
     await poll(() => cell("lonely x").count()).toBe(0);
   });
@@ -112,13 +100,13 @@ describe("keeping work", () => {
   it("a shared link opened in the tab already open (only the hash changes) loads at once; Undo goes back", async () => {
     const before = await bodies().getByRole("row").count();
     expect(before).not.toBe(2);
-    await page.evaluate((code) => {
+    await editor.page.evaluate((code) => {
       window.location.hash = `scene=${code}`;
     }, shareCode(LONELY));
     await poll(() => bodies().getByRole("row").count()).toBe(2);
     await poll(message).toMatch(/^Opened the shared scene/);
-    await poll(() => new URL(page.url()).hash).toBe("");
-    await page.getByRole("button", { name: "Undo" }).click();
+    await poll(() => new URL(editor.page.url()).hash).toBe("");
+    await editor.page.getByRole("button", { name: "Undo" }).click();
     await poll(() => bodies().getByRole("row").count()).toBe(before);
   });
 
@@ -126,27 +114,27 @@ describe("keeping work", () => {
     const first = (await bodies().getByRole("button", { name: / m$/ }).first().getAttribute("aria-label"))!;
     for (const [i, clipboard] of [true, false].entries()) {
       if (!clipboard)
-        await page.evaluate(() => {
+        await editor.page.evaluate(() => {
           navigator.clipboard.writeText = () => Promise.reject(new Error("no clipboard"));
         });
-      await page.getByRole("button", { name: "Share link" }).click();
+      await editor.page.getByRole("button", { name: "Share link" }).click();
       await poll(message).toMatch(clipboard ? /^Link copied/ : /address bar/);
       const m = String(11 + i);
       await editCell(first, m);
       await poll(() => cellText(first)).toBe(m);
-      await poll(() => new URL(page.url()).hash).toBe("");
-      await page.reload();
-      await page.getByRole("slider", { name: "Time" }).waitFor();
+      await poll(() => new URL(editor.page.url()).hash).toBe("");
+      await editor.page.reload();
+      await editor.page.getByRole("slider", { name: "Time" }).waitFor();
       await poll(() => cellText(first)).toBe(m);
     }
   });
 
   it("a broken shared link says so in plain words, leaves the address bar, and keeps the scene", async () => {
     const before = await bodies().getByRole("row").count();
-    await open(`${s.url}#scene=abc%25%25`);
+    await open(`${editor.session.url}#scene=abc%25%25`);
     await poll(message).toMatch(/^Shared link: /);
     expect(await message()).not.toMatch(/atob|Failed to execute/);
-    expect(new URL(page.url()).hash).toBe("");
+    expect(new URL(editor.page.url()).hash).toBe("");
     expect(await bodies().getByRole("row").count()).toBe(before);
   });
 
@@ -154,7 +142,7 @@ describe("keeping work", () => {
     const before = await bodies().getByRole("row").count();
     const file = join(ARTIFACTS, "broken-field.chapgame.json");
     writeFileSync(file, JSON.stringify({ ...LONELY, actions: [{ ...LONELY.actions[0], r: "big" }] }));
-    await page.getByLabel("Scene file").setInputFiles(file);
+    await editor.page.getByLabel("Scene file").setInputFiles(file);
     await poll(message).toMatch(/broken-field\.chapgame\.json: actions\[0\]\.r: /);
     expect(await bodies().getByRole("row").count()).toBe(before);
   });

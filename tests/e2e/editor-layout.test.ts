@@ -9,30 +9,19 @@
  * to 1,584 px, the time bar half below the fold; at 667 x 375 the stage scrolled 32 px inside itself,
  * its canvas 96 px high).
  */
-import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { openEditor, type Session, screenshot } from "./harness.js";
+import { describe, expect, it } from "vitest";
+import { editorForFile, poll } from "./editorForFile.js";
+import { screenshot } from "./harness.js";
 import { loadPresetOn } from "./presets.js";
 import { buttonUncovered } from "./stageProbes.js";
 
-const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
-
-let s: Session;
-let page: Page;
-
-beforeAll(async () => {
-  s = await openEditor();
-  page = s.page;
-  await loadPresetOn(page, "Billiards break", "ball15");
-});
-
-afterAll(async () => {
-  await s?.close();
+const editor = editorForFile({
+  afterOpen: (session) => loadPresetOn(session.page, "Billiards break", "ball15"),
 });
 
 /** A panel's box and the extent of its controls (from the first one's left to the last one's right). */
 function panelBox(title: string): Promise<{ width: number; left: number; controls: number }> {
-  return page.evaluate((t) => {
+  return editor.page.evaluate((t) => {
     const panel = Array.from(document.querySelectorAll<HTMLElement>(".panel")).find(
       (p) => p.querySelector("h2")?.textContent?.trim().startsWith(t) === true,
     )!;
@@ -47,16 +36,16 @@ function panelBox(title: string): Promise<{ width: number; left: number; control
 }
 
 /** Whether the element's centre is in the window and the element itself is there (nothing covers it). */
-const inView = (name: string) => buttonUncovered(page, name);
+const inView = (name: string) => buttonUncovered(editor.page, name);
 
 /** The stage's (toolbar, canvas, time bar) scroll height and client height. */
 function stageScroll(): Promise<[number, number]> {
-  return page.locator(".stage").evaluate((el) => [el.scrollHeight, el.clientHeight]);
+  return editor.page.locator(".stage").evaluate((el) => [el.scrollHeight, el.clientHeight]);
 }
 
 /** The page's scroll sizes and client sizes ([scrollWidth, scrollHeight], [clientWidth, clientHeight]). */
 function pageScroll(): Promise<[number[], number[]]> {
-  return page.evaluate(() => {
+  return editor.page.evaluate(() => {
     const e = document.scrollingElement!;
     return [
       [e.scrollWidth, e.scrollHeight],
@@ -72,7 +61,7 @@ describe("wide windows", () => {
         [1920, 1080],
         [2560, 1440],
       ] as const) {
-        await page.setViewportSize({ width, height });
+        await editor.page.setViewportSize({ width, height });
         await poll(async () => (await panelBox("Time")).width).toBeGreaterThan(width / 3);
         const speed = await panelBox("Speed");
         const time = await panelBox("Time");
@@ -94,10 +83,10 @@ describe("wide windows", () => {
           "State",
         ])
           expect((await panelBox(title)).width, title).toBeLessThanOrEqual(560);
-        await screenshot(page, `layout-wide-${width}x${height}`);
+        await screenshot(editor.page, `layout-wide-${width}x${height}`);
       }
     } finally {
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 });
@@ -107,11 +96,12 @@ describe("the Time slider in a wide window", () => {
     try {
       let last = 0;
       for (const width of [1280, 1400, 1600, 1760, 1920]) {
-        await page.setViewportSize({ width, height: 900 });
-        const slider = async () => (await page.getByRole("slider", { name: "Time" }).boundingBox())!.width;
+        await editor.page.setViewportSize({ width, height: 900 });
+        const slider = async () =>
+          (await editor.page.getByRole("slider", { name: "Time" }).boundingBox())!.width;
         await poll(slider).toBeGreaterThan(last);
         const now = await slider();
-        const stage = (await page.locator("main.stage").boundingBox())!;
+        const stage = (await editor.page.locator("main.stage").boundingBox())!;
         // the stage's whole width but the panel's and the bar's margins; the side column takes 40 %
         // of the window up to 1400 px (560 px wider), so that is 57 % of the window there, 69 % at 1920
         expect(now, `${width} px`).toBeGreaterThanOrEqual(stage.width - 40);
@@ -121,7 +111,7 @@ describe("the Time slider in a wide window", () => {
         expect(speed.left, `${width} px: Speed under Time`).toBe(time.left);
         // nothing overflows: no sideways scrolling, the stage's panels and buttons inside the stage
         expect((await pageScroll())[0][0]).toBeLessThanOrEqual(width);
-        const outside = await page.evaluate(() => {
+        const outside = await editor.page.evaluate(() => {
           const r = document.querySelector("main.stage")!.getBoundingClientRect();
           return Array.from(
             document.querySelectorAll("main.stage .panel, main.stage button, main.stage input"),
@@ -133,10 +123,10 @@ describe("the Time slider in a wide window", () => {
         for (const name of ["Play", "Next event", "+0.1: faster"])
           expect(await inView(name), name).toBe(true);
         last = now;
-        await screenshot(page, `layout-time-slider-${width}`);
+        await screenshot(editor.page, `layout-time-slider-${width}`);
       }
     } finally {
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 });
@@ -149,7 +139,7 @@ describe("a phone on its side", () => {
         [740, 360],
         [667, 375],
       ] as const) {
-        await page.setViewportSize({ width, height });
+        await editor.page.setViewportSize({ width, height });
         const at = `${width} x ${height}`;
         await poll(pageScroll).toEqual([
           [width, height],
@@ -157,24 +147,26 @@ describe("a phone on its side", () => {
         ]);
         const [scrollHeight, clientHeight] = await stageScroll();
         expect(scrollHeight, at).toBeLessThanOrEqual(clientHeight);
-        const canvas = (await page.getByTestId("scene-canvas").boundingBox())!;
+        const canvas = (await editor.page.getByTestId("scene-canvas").boundingBox())!;
         expect(canvas.height, at).toBeGreaterThanOrEqual(150);
         expect(canvas.width, at).toBeGreaterThanOrEqual(400);
         // zoomed, the Time panel says which part of the history it shows: still no inner scroll
-        await page.getByRole("button", { name: "Zoom in", exact: true }).click();
-        await page.getByLabel("Time range shown").waitFor();
+        await editor.page.getByRole("button", { name: "Zoom in", exact: true }).click();
+        await editor.page.getByLabel("Time range shown").waitFor();
         const [zoomedScroll, zoomedClient] = await stageScroll();
         expect(zoomedScroll, `${at}, zoomed`).toBeLessThanOrEqual(zoomedClient);
-        expect((await page.getByTestId("scene-canvas").boundingBox())!.height).toBeGreaterThanOrEqual(120);
-        await page.getByRole("button", { name: "Whole history", exact: true }).click();
-        const slider = (await page.getByRole("slider", { name: "Time" }).boundingBox())!;
+        expect((await editor.page.getByTestId("scene-canvas").boundingBox())!.height).toBeGreaterThanOrEqual(
+          120,
+        );
+        await editor.page.getByRole("button", { name: "Whole history", exact: true }).click();
+        const slider = (await editor.page.getByRole("slider", { name: "Time" }).boundingBox())!;
         expect(slider.y + slider.height, at).toBeLessThanOrEqual(height);
         for (const name of ["Play", "Next event", "Previous event", "Undo", "Fit"])
           expect(await inView(name), `${name} at ${at}`).toBe(true);
         // the last panel is reached by scrolling the side column, not the page
-        const side = page.locator(".side");
+        const side = editor.page.locator(".side");
         expect(await side.evaluate((el) => el.scrollHeight > el.clientHeight)).toBe(true);
-        await page.getByRole("button", { name: "Share link" }).scrollIntoViewIfNeeded();
+        await editor.page.getByRole("button", { name: "Share link" }).scrollIntoViewIfNeeded();
         expect(await inView("Share link"), at).toBe(true);
         expect(await side.evaluate((el) => el.scrollTop)).toBeGreaterThan(0);
         expect(await pageScroll()).toEqual([
@@ -182,25 +174,25 @@ describe("a phone on its side", () => {
           [width, height],
         ]);
         // a message takes its lines above the side panels: the page still fits
-        await page.evaluate(() => {
+        await editor.page.evaluate(() => {
           type Ui = { ui: { setState(s: { message: { text: string; tone: "info" } | null }): void } };
           const text = "Loaded the preset Bouncing balls (gravity). Undo returns to the scene you had.";
           (window as unknown as { chapgame: Ui }).chapgame.ui.setState({ message: { text, tone: "info" } });
         });
-        await poll(() => page.getByRole("status").filter({ hasText: "Undo returns" }).count()).toBe(1);
+        await poll(() => editor.page.getByRole("status").filter({ hasText: "Undo returns" }).count()).toBe(1);
         expect(await pageScroll()).toEqual([
           [width, height],
           [width, height],
         ]);
         expect(await inView("Play"), at).toBe(true);
-        await screenshot(page, `layout-landscape-${width}x${height}`);
-        await page.getByRole("button", { name: "Dismiss message" }).click();
+        await screenshot(editor.page, `layout-landscape-${width}x${height}`);
+        await editor.page.getByRole("button", { name: "Dismiss message" }).click();
         await side.evaluate((el) => {
           el.scrollTop = 0;
         });
       }
     } finally {
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 });

@@ -7,33 +7,21 @@
  * Up to 1000 px a message once took its lines in the header, moving the stage down by a line or more
  * (at 900 px a refusal of 90 characters by 6 px, a long one by 51 px; at 700 px a refusal of 30).
  */
-import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { openEditor, type Session, screenshot } from "./harness.js";
+import { describe, expect, it } from "vitest";
+import { editorForFile, poll } from "./editorForFile.js";
+import { screenshot } from "./harness.js";
 import { stageBoxes as probeStageBoxes } from "./stageProbes.js";
 
-const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
-
-let s: Session;
-let page: Page;
-
-beforeAll(async () => {
-  s = await openEditor();
-  page = s.page;
-});
-
-afterAll(async () => {
-  await s?.close();
-});
+const editor = editorForFile();
 
 /** The stage's and the canvas's boxes in the page (not the window: it scrolls to a table's cell
  *  below the stage), as one string to compare ("x y width height" each). */
-const stageBoxes = () => probeStageBoxes(page);
+const stageBoxes = () => probeStageBoxes(editor.page);
 
 type Tone = "error" | "info";
 /** Shows `text` in the message bar as the editor does (null: takes the message down). */
 const setMessage = (text: string | null, tone: Tone = "error") =>
-  page.evaluate(
+  editor.page.evaluate(
     ([t, tone]) => {
       type Ui = { ui: { setState(s: { message: { text: string; tone: Tone } | null }): void } };
       (window as unknown as { chapgame: Ui }).chapgame.ui.setState({
@@ -43,7 +31,7 @@ const setMessage = (text: string | null, tone: Tone = "error") =>
     [text, tone] as const,
   );
 
-const shownMessage = () => page.locator(".message > span").textContent();
+const shownMessage = () => editor.page.locator(".message > span").textContent();
 const LONG = `${"A refused edit whose explanation runs over several lines of the header. ".repeat(6)}end`;
 const WIDTHS = [
   [700, 800],
@@ -55,8 +43,8 @@ describe("messages never move the stage", () => {
   it("at 700, 900 and 1280 px: refusals, notices, long ones, two at once and those of a computation", async () => {
     try {
       for (const [width, height] of WIDTHS) {
-        await page.setViewportSize({ width, height });
-        await page.getByRole("combobox", { name: "Preset" }).selectOption("originalDemo");
+        await editor.page.setViewportSize({ width, height });
+        await editor.page.getByRole("combobox", { name: "Preset" }).selectOption("originalDemo");
         await setMessage(null);
         const at = `${width} x ${height}`;
         const before = await stageBoxes();
@@ -69,39 +57,39 @@ describe("messages never move the stage", () => {
           await poll(shownMessage).toBe(text);
           expect(await stageBoxes(), `${at}: ${text.slice(0, 30)}`).toBe(before);
         }
-        await screenshot(page, `narrow-message-long-${width}`);
-        await page.getByRole("button", { name: "Dismiss message" }).click();
+        await screenshot(editor.page, `narrow-message-long-${width}`);
+        await editor.page.getByRole("button", { name: "Dismiss message" }).click();
         expect(await stageBoxes(), `${at}: dismissed`).toBe(before);
 
         // a rename refused in the Bodies table (beside the cell and in the message bar)
-        const bodies = page.getByRole("table", { name: "Bodies" });
+        const bodies = editor.page.getByRole("table", { name: "Bodies" });
         await bodies.getByLabel("A id", { exact: true }).click();
         const cell = bodies.getByRole("textbox", { name: "A id", exact: true });
         await cell.fill("B");
         await cell.press("Enter");
         await poll(shownMessage).toBe('A id: must not be the id of another body (got "B")');
         expect(await stageBoxes(), `${at}: rename refused`).toBe(before);
-        await screenshot(page, `narrow-message-rename-${width}`);
+        await screenshot(editor.page, `narrow-message-rename-${width}`);
         await cell.press("Escape");
         await setMessage(null);
 
         // the digits of π refused: in the message bar and beside its field at once
-        await page.getByRole("combobox", { name: "Preset" }).selectOption("galperin");
+        await editor.page.getByRole("combobox", { name: "Preset" }).selectOption("galperin");
         await setMessage(null);
         // choosing Galperin's billiard shows its digits field (the header keeps its lines:
         // editor-preset-header.test.ts)
         const galperin = await stageBoxes();
         expect(galperin, `${at}: Galperin chosen`).toBe(before);
-        const digits = page.getByRole("spinbutton", { name: "Digits of π" });
+        const digits = editor.page.getByRole("spinbutton", { name: "Digits of π" });
         await digits.fill("9");
         await digits.blur();
         await poll(shownMessage).toBe("Digits of π: must be a whole number from 1 to 7 (got 9)");
         expect(await stageBoxes(), `${at}: digits refused`).toBe(galperin);
-        await screenshot(page, `narrow-message-digits-${width}`);
+        await screenshot(editor.page, `narrow-message-digits-${width}`);
 
         // loaded and computed: its notice changes while the worker computes, the stage stays
         await digits.fill("5");
-        await page.getByRole("button", { name: "Load preset" }).click();
+        await editor.page.getByRole("button", { name: "Load preset" }).click();
         const seen = new Set<string>();
         await poll(async () => {
           seen.add(await stageBoxes());
@@ -110,43 +98,43 @@ describe("messages never move the stage", () => {
         seen.add(await stageBoxes());
         expect([...seen], `${at}: preset loaded and computed`).toEqual([galperin]);
         // back to the sample (its discs A and B) for the next width
-        await page.getByRole("button", { name: "Undo", exact: true }).click();
+        await editor.page.getByRole("button", { name: "Undo", exact: true }).click();
         await bodies.getByLabel("A id", { exact: true }).waitFor();
         await setMessage(null);
       }
     } finally {
-      await page.getByRole("combobox", { name: "Preset" }).selectOption("originalDemo");
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await editor.page.getByRole("combobox", { name: "Preset" }).selectOption("originalDemo");
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 
   it("up to 1000 px a long message keeps to its line, More shows it whole over the stage, Less and ✕ take it back", async () => {
-    await page.setViewportSize({ width: 900, height: 700 });
+    await editor.page.setViewportSize({ width: 900, height: 700 });
     try {
       await setMessage(null);
       const before = await stageBoxes();
       await setMessage(LONG);
-      const alert = page.locator(".message");
+      const alert = editor.page.locator(".message");
       await poll(shownMessage).toBe(LONG);
-      const more = page.getByRole("button", { name: "More" });
+      const more = editor.page.getByRole("button", { name: "More" });
       await more.waitFor();
       expect(await more.getAttribute("aria-expanded")).toBe("false");
       expect((await alert.boundingBox())!.height).toBeLessThanOrEqual(30);
       const uncovered = (name: string) =>
-        page.getByRole("button", { name, exact: true }).evaluate((el) => {
+        editor.page.getByRole("button", { name, exact: true }).evaluate((el) => {
           const r = el.getBoundingClientRect();
           return el.contains(document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2));
         });
       for (const name of ["Fit", "Point", "More", "Dismiss message"])
         expect(await uncovered(name), name).toBe(true);
       await more.click();
-      const less = page.getByRole("button", { name: "Less" });
+      const less = editor.page.getByRole("button", { name: "Less" });
       expect(await less.getAttribute("aria-expanded")).toBe("true");
       // whole, over the stage: the stage has not moved
       await poll(async () => (await alert.boundingBox())!.height).toBeGreaterThan(60);
       expect(await stageBoxes()).toBe(before);
       for (const name of ["Less", "Dismiss message"]) expect(await uncovered(name), name).toBe(true);
-      await screenshot(page, "narrow-message-more-900");
+      await screenshot(editor.page, "narrow-message-more-900");
       await less.click();
       await poll(async () => (await alert.boundingBox())!.height).toBeLessThanOrEqual(30);
       expect(await uncovered("Fit")).toBe(true);
@@ -155,11 +143,11 @@ describe("messages never move the stage", () => {
       await setMessage(`${LONG} again`);
       await poll(() => more.getAttribute("aria-expanded")).toBe("false");
       await setMessage("Short.");
-      await poll(() => page.getByRole("button", { name: /^(More|Less)$/ }).count()).toBe(0);
-      await page.getByRole("button", { name: "Dismiss message" }).click();
+      await poll(() => editor.page.getByRole("button", { name: /^(More|Less)$/ }).count()).toBe(0);
+      await editor.page.getByRole("button", { name: "Dismiss message" }).click();
       expect(await stageBoxes()).toBe(before);
     } finally {
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 });

@@ -4,36 +4,24 @@
  * nothing overflows sideways with Galperin's digits field shown. At 700 px that field once put the
  * message slot on a line of its own (header 79 -> 116 px, the canvas 37 px lower).
  */
-import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { openEditor, type Session, screenshot } from "./harness.js";
+import { describe, expect, it } from "vitest";
+import { editorForFile, poll } from "./editorForFile.js";
+import { screenshot } from "./harness.js";
 import { stageBoxes as probeStageBoxes } from "./stageProbes.js";
 
-const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
-
-let s: Session;
-let page: Page;
-
-beforeAll(async () => {
-  s = await openEditor();
-  page = s.page;
-});
-
-afterAll(async () => {
-  await s?.close();
-});
+const editor = editorForFile();
 
 /** The stage's and the canvas's boxes in the page, as one string to compare ("x y width height" each). */
-const stageBoxes = () => probeStageBoxes(page);
+const stageBoxes = () => probeStageBoxes(editor.page);
 
 describe("the Preset list", () => {
   it("choosing any preset keeps the header's height and the stage's box from 390 to 1920 px", async () => {
-    const presets = page.getByRole("combobox", { name: "Preset" });
+    const presets = editor.page.getByRole("combobox", { name: "Preset" });
     const ids = await presets
       .locator("option")
       .evaluateAll((os) => os.map((o) => (o as HTMLOptionElement).value));
     expect(ids).toContain("galperin");
-    const header = async () => (await page.locator("header.header").boundingBox())!.height;
+    const header = async () => (await editor.page.locator("header.header").boundingBox())!.height;
     try {
       for (const [width, height] of [
         [390, 844],
@@ -44,9 +32,9 @@ describe("the Preset list", () => {
         [1400, 900],
         [1920, 1080],
       ] as const) {
-        await page.setViewportSize({ width, height });
+        await editor.page.setViewportSize({ width, height });
         await presets.selectOption("originalDemo");
-        await poll(() => page.getByRole("spinbutton", { name: "Digits of π" }).count()).toBe(0);
+        await poll(() => editor.page.getByRole("spinbutton", { name: "Digits of π" }).count()).toBe(0);
         const before = [await header(), await stageBoxes()];
         for (const id of ids) {
           await presets.selectOption(id);
@@ -54,16 +42,18 @@ describe("the Preset list", () => {
         }
         // Galperin's digits field is there, and nothing overflows sideways
         await presets.selectOption("galperin");
-        await page.getByRole("spinbutton", { name: "Digits of π" }).waitFor();
-        expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(width);
-        if (width === 700) await screenshot(page, "preset-header-galperin-700");
+        await editor.page.getByRole("spinbutton", { name: "Digits of π" }).waitFor();
+        expect(await editor.page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(
+          width,
+        );
+        if (width === 700) await screenshot(editor.page, "preset-header-galperin-700");
       }
       // the header at 700 px is its two lines (the message slot beside the presets), as before Galperin
-      await page.setViewportSize({ width: 700, height: 800 });
+      await editor.page.setViewportSize({ width: 700, height: 800 });
       await poll(header).toBeLessThan(100);
     } finally {
       await presets.selectOption("originalDemo");
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 });

@@ -6,42 +6,30 @@
  * dropping it), and so does the header's digits of π field. Every refusal of typed text reads as
  * the engine's, `label: reason (got …)`.
  */
-import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { openEditor, type Session, screenshot } from "./harness.js";
-
-const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
+import { describe, expect, it } from "vitest";
+import { editorForFile, poll } from "./editorForFile.js";
+import { screenshot } from "./harness.js";
 
 /** The part of the page's `window.chapgame` (the Editor) read here. */
 type CalcWindow = { chapgame: { ui: { getState(): { calc: { seconds: number } } } } };
 
-let s: Session;
-let page: Page;
+const editor = editorForFile();
 
-const message = () => page.locator(".message > span").textContent();
-const button = (name: string) => page.getByRole("button", { name, exact: true });
+const message = () => editor.page.locator(".message > span").textContent();
+const button = (name: string) => editor.page.getByRole("button", { name, exact: true });
 
 /** The text of the refusal the field describes itself with (aria-describedby), or null. */
 const besideOf = (name: string) =>
-  page.getByRole("textbox", { name, exact: true }).evaluate((el) => {
+  editor.page.getByRole("textbox", { name, exact: true }).evaluate((el) => {
     const id = el.getAttribute("aria-describedby");
     return id === null ? null : (document.getElementById(id)?.textContent ?? null);
   });
 
 async function type(name: string, text: string): Promise<void> {
-  const field = page.getByRole("textbox", { name, exact: true });
+  const field = editor.page.getByRole("textbox", { name, exact: true });
   await field.fill(text);
   await field.press("Enter");
 }
-
-beforeAll(async () => {
-  s = await openEditor();
-  page = s.page;
-});
-
-afterAll(async () => {
-  await s?.close();
-});
 
 describe("refused typed values", () => {
   it("the Time, Speed, Calculation and window width fields keep refused text beside its refusal", async () => {
@@ -71,7 +59,7 @@ describe("refused typed values", () => {
     ];
     for (const c of cases) {
       await type(c.name, c.text);
-      const field = page.getByRole("textbox", { name: c.name, exact: true });
+      const field = editor.page.getByRole("textbox", { name: c.name, exact: true });
       // the text stays where it was typed, the field marked invalid, its refusal beside it and in
       // the message bar
       await poll(() => field.inputValue()).toBe(c.text);
@@ -84,48 +72,49 @@ describe("refused typed values", () => {
         expect(await message()).toMatch(c.refusal);
       }
       // leaving the field keeps it too
-      await page.getByRole("heading", { name: "Bodies" }).click();
+      await editor.page.getByRole("heading", { name: "Bodies" }).click();
       expect(await field.inputValue()).toBe(c.text);
     }
-    await screenshot(page, "refused-fields");
+    await screenshot(editor.page, "refused-fields");
   });
 
   it("a correction applies and takes the refusal down; Escape drops the text", async () => {
     await type("Time (s)", "1.5");
-    await poll(() => page.getByRole("slider", { name: "Time" }).inputValue()).toBe("1.5");
+    await poll(() => editor.page.getByRole("slider", { name: "Time" }).inputValue()).toBe("1.5");
     await poll(() => besideOf("Time (s)")).toBeNull();
     await type("Speed", "0.5");
-    await poll(() => page.getByRole("textbox", { name: "Speed" }).inputValue()).toBe("0.5");
+    await poll(() => editor.page.getByRole("textbox", { name: "Speed" }).inputValue()).toBe("0.5");
     expect(await besideOf("Speed")).toBeNull();
     await type("Seconds ahead", "12");
     expect(
-      await page.evaluate(() => (window as unknown as CalcWindow).chapgame.ui.getState().calc.seconds),
+      await editor.page.evaluate(() => (window as unknown as CalcWindow).chapgame.ui.getState().calc.seconds),
     ).toBe(12);
     expect(await besideOf("Seconds ahead")).toBeNull();
-    const events = page.getByRole("textbox", { name: "Events ahead" });
+    const events = editor.page.getByRole("textbox", { name: "Events ahead" });
     await events.press("Escape");
     await poll(() => besideOf("Events ahead")).toBeNull();
     expect(await events.inputValue()).toMatch(/^\d+$/);
-    const width = page.getByRole("textbox", { name: "Window width (s)" });
+    const width = editor.page.getByRole("textbox", { name: "Window width (s)" });
     await width.press("Escape");
     expect(Number(await width.inputValue())).toBeGreaterThan(0);
-    expect(await page.locator(".message").count()).toBe(0);
+    expect(await editor.page.locator(".message").count()).toBe(0);
   });
 
   it("a correction applied by pressing Compute computes: the refusal going does not move Compute away", async () => {
     await type("Seconds ahead", "later");
     await poll(() => besideOf("Seconds ahead")).toMatch(/^Seconds ahead: must be a positive finite number/);
-    const horizon = () => page.getByRole("region", { name: "Calculation" }).locator(".horizon").textContent();
+    const horizon = () =>
+      editor.page.getByRole("region", { name: "Calculation" }).locator(".horizon").textContent();
     const before = Number(await horizon());
-    await page.getByRole("textbox", { name: "Seconds ahead" }).fill("3");
+    await editor.page.getByRole("textbox", { name: "Seconds ahead" }).fill("3");
     await button("Compute").click();
     await poll(async () => Number(await horizon())).toBe(before + 3);
     await poll(() => besideOf("Seconds ahead")).toBeNull();
   });
 
   it("Galperin's digits of π not from 1 to 7 are refused beside the field and nothing is loaded", async () => {
-    await page.getByRole("combobox", { name: "Preset" }).selectOption("galperin");
-    const digits = page.getByRole("spinbutton", { name: "Digits of π" });
+    await editor.page.getByRole("combobox", { name: "Preset" }).selectOption("galperin");
+    const digits = editor.page.getByRole("spinbutton", { name: "Digits of π" });
     await digits.fill("9");
     await button("Load preset").click();
     const refusal = "Digits of π: must be a whole number from 1 to 7 (got 9)";
@@ -136,10 +125,10 @@ describe("refused typed values", () => {
         (el) => document.getElementById(el.getAttribute("aria-describedby") ?? "")?.textContent,
       ),
     ).toBe(refusal);
-    await screenshot(page, "refused-digits");
+    await screenshot(editor.page, "refused-digits");
     // nothing was loaded: the scene is still the start's (its disc A)
     const discA = () =>
-      page.getByRole("table", { name: "Bodies" }).getByLabel("A x", { exact: true }).count();
+      editor.page.getByRole("table", { name: "Bodies" }).getByLabel("A x", { exact: true }).count();
     expect(await discA()).toBe(1);
     await digits.fill("2");
     await button("Load preset").click();
@@ -150,7 +139,7 @@ describe("refused typed values", () => {
   });
 
   it("a table cell's text that is not a number is refused as the engine's refusals read, and kept", async () => {
-    const bodies = page.getByRole("table", { name: "Bodies" });
+    const bodies = editor.page.getByRole("table", { name: "Bodies" });
     const name = (await bodies.getByRole("button", { name: / x$/ }).first().getAttribute("aria-label"))!;
     await bodies.getByLabel(name, { exact: true }).click();
     const input = bodies.getByRole("textbox", { name, exact: true });
@@ -173,8 +162,8 @@ describe("refused typed values", () => {
     );
     expect(await rInput.inputValue()).toBe("-1");
     // the time moving on keeps the text typed (it closed the cell), and says where Enter applies it
-    const t0 = await page.getByRole("slider", { name: "Time" }).inputValue();
-    await page.getByRole("button", { name: "+1 s: forward 1 second" }).click();
+    const t0 = await editor.page.getByRole("slider", { name: "Time" }).inputValue();
+    await editor.page.getByRole("button", { name: "+1 s: forward 1 second" }).click();
     await poll(() => bodies.locator(".cell-error").textContent()).toBe(
       `${r}: refused at t = ${t0} s; the time is now ${Number(t0) + 1} s, where Enter applies it (Escape drops it)`,
     );

@@ -8,17 +8,14 @@
  * not to be in the file. The Add body / Add line / Add point buttons say what they added where, or why they
  * added nothing.
  */
-import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { openEditor, type Session, screenshot } from "./harness.js";
+import { describe, expect, it } from "vitest";
+import { editorForFile, poll } from "./editorForFile.js";
+import { screenshot } from "./harness.js";
 
-const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
+const editor = editorForFile();
 
-let s: Session;
-let page: Page;
-
-const message = () => page.locator(".message > span").textContent();
-const button = (name: string) => page.getByRole("button", { name, exact: true });
+const message = () => editor.page.locator(".message > span").textContent();
+const button = (name: string) => editor.page.getByRole("button", { name, exact: true });
 
 const BILLIARDS = {
   format: "chapgame",
@@ -41,7 +38,7 @@ type SavePage = {
 
 /** Replaces the browser's save dialog by a stand-in that records what it is asked and written. */
 async function standInDialog() {
-  await page.evaluate(() => {
+  await editor.page.evaluate(() => {
     const w = window as unknown as SavePage & { showSaveFilePicker: unknown };
     w.asked = [];
     w.written = [];
@@ -66,28 +63,19 @@ async function standInDialog() {
 }
 
 const saved = () =>
-  page.evaluate(() => {
+  editor.page.evaluate(() => {
     const w = window as unknown as SavePage;
     return { asked: w.asked, written: w.written.map((f) => f.name), text: w.written.at(-1)?.text ?? "" };
   });
 
 async function openFile(name: string, scene: unknown) {
-  await page.getByLabel("Scene file").setInputFiles({
+  await editor.page.getByLabel("Scene file").setInputFiles({
     name,
     mimeType: "application/json",
     buffer: Buffer.from(JSON.stringify(scene)),
   });
   await poll(message).toBe(`Opened ${name}. Undo returns to the scene you had before.`);
 }
-
-beforeAll(async () => {
-  s = await openEditor();
-  page = s.page;
-});
-
-afterAll(async () => {
-  await s?.close();
-});
 
 describe("Save file", () => {
   it("suggests the opened file's name, then the name picked; Undo of the open goes back to the name before", async () => {
@@ -99,18 +87,18 @@ describe("Save file", () => {
     expect(first.asked).toEqual(["billiards.chapgame.json"]);
     expect(JSON.parse(first.text)).toMatchObject({ format: "chapgame", actions: BILLIARDS.actions });
     // the user names it otherwise in the dialog: Ctrl+S then suggests that name
-    await page.evaluate(() => {
+    await editor.page.evaluate(() => {
       (window as unknown as SavePage).pick = "break-shot.chapgame.json";
     });
     await button("Save file").click();
     await poll(message).toBe("Saved the scene as break-shot.chapgame.json.");
-    await page.evaluate(() => {
+    await editor.page.evaluate(() => {
       (window as unknown as SavePage).pick = null;
     });
-    await page.keyboard.press("Control+s");
+    await editor.page.keyboard.press("Control+s");
     await poll(message).toBe("Saved the scene as break-shot.chapgame.json.");
     expect((await saved()).asked.at(-1)).toBe("break-shot.chapgame.json");
-    await screenshot(page, "save-named");
+    await screenshot(editor.page, "save-named");
     // Undo of the open: the scene before it is the start's preset, saved under the preset's name
     await button("Undo").click();
     await poll(message).toMatch(/^Undone: the scene loaded over yours/);
@@ -120,19 +108,19 @@ describe("Save file", () => {
 
   it("a reload keeps the name the scene came from", async () => {
     await openFile("billiards.chapgame.json", BILLIARDS);
-    await page.reload();
-    await page.getByRole("table", { name: "Bodies" }).getByLabel("red x", { exact: true }).waitFor();
+    await editor.page.reload();
+    await editor.page.getByRole("table", { name: "Bodies" }).getByLabel("red x", { exact: true }).waitFor();
     await standInDialog();
     await button("Save file").click();
     await poll(message).toBe("Saved the scene as billiards.chapgame.json.");
   });
 
   it("Ctrl+S in a cell with a value typed says that value is not in the file", async () => {
-    const bodies = page.getByRole("table", { name: "Bodies" });
+    const bodies = editor.page.getByRole("table", { name: "Bodies" });
     await bodies.getByLabel("red x", { exact: true }).click();
     const input = bodies.getByRole("textbox", { name: "red x", exact: true });
     await input.fill("12");
-    await page.keyboard.press("Control+s");
+    await editor.page.keyboard.press("Control+s");
     await poll(message).toBe(
       "Saved the scene as billiards.chapgame.json. The value typed in red x is not in it: press Enter there, then save again.",
     );
@@ -143,10 +131,10 @@ describe("Save file", () => {
 
   it("downloads the scene under its name where the browser has no save dialog", async () => {
     await openFile("billiards.chapgame.json", BILLIARDS);
-    await page.evaluate(() => {
+    await editor.page.evaluate(() => {
       (window as unknown as { showSaveFilePicker: unknown }).showSaveFilePicker = undefined;
     });
-    const [download] = await Promise.all([page.waitForEvent("download"), button("Save file").click()]);
+    const [download] = await Promise.all([editor.page.waitForEvent("download"), button("Save file").click()]);
     expect(download.suggestedFilename()).toBe("billiards.chapgame.json");
     await poll(message).toBe("Saved the scene as billiards.chapgame.json (in the browser's downloads).");
   });
@@ -164,9 +152,9 @@ describe("Add buttons", () => {
     );
     await button("Add point").click();
     await poll(message).toMatch(/^Added point "p1" at \(-?[\d.]+, -?[\d.]+\)\.$/);
-    await screenshot(page, "add-buttons");
+    await screenshot(editor.page, "add-buttons");
     // the view inside one huge disc: no free place near the centre
-    await page.evaluate(async () => {
+    await editor.page.evaluate(async () => {
       const ed = (window as unknown as { chapgame: { loadScene(s: unknown): Promise<string | null> } })
         .chapgame;
       await ed.loadScene({
@@ -175,8 +163,8 @@ describe("Add buttons", () => {
         actions: [{ time: 0, type: "addBody", id: "big", x: 0, y: 0, r: 1e6, m: 1 }],
       });
     });
-    await page.getByRole("table", { name: "Bodies" }).getByLabel("big x", { exact: true }).waitFor();
-    await page.evaluate(() => {
+    await editor.page.getByRole("table", { name: "Bodies" }).getByLabel("big x", { exact: true }).waitFor();
+    await editor.page.evaluate(() => {
       const ed = (window as unknown as { chapgame: { ui: { setState(p: object): void } } }).chapgame;
       ed.ui.setState({ view: { cx: 0, cy: 0, scale: 20 } });
     });
@@ -184,6 +172,6 @@ describe("Add buttons", () => {
     await poll(message).toBe(
       'Add body: nothing added: no free place for a new disc of radius 1 within 100 of the centre of the view (0, 0) (body "big" is there). Zoom out or pan to an emptier part of the scene, then press Add body again.',
     );
-    expect(await page.locator(".message").getAttribute("role")).toBe("alert");
+    expect(await editor.page.locator(".message").getAttribute("role")).toBe("alert");
   });
 });

@@ -6,35 +6,23 @@
  * and speed control usable, nothing overflowing sideways; from 700 to 900 px the Time slider widens
  * with the window (Speed goes under Time rather than squeeze it).
  */
-import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { openEditor, type Session, screenshot } from "./harness.js";
+import { describe, expect, it } from "vitest";
+import { editorForFile, poll } from "./editorForFile.js";
+import { screenshot } from "./harness.js";
 import { loadPresetOn } from "./presets.js";
 
-const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
-
-let s: Session;
-let page: Page;
+const editor = editorForFile();
 
 /** Loads a preset and waits until its body `id` is in the Bodies table at t = 0. */
-const loadPreset = (title: string, id: string) => loadPresetOn(page, title, id);
-
-beforeAll(async () => {
-  s = await openEditor();
-  page = s.page;
-});
-
-afterAll(async () => {
-  await s?.close();
-});
+const loadPreset = (title: string, id: string) => loadPresetOn(editor.page, title, id);
 
 describe("messages and small windows", () => {
   it("a message, however long, never moves the canvas; a long one hangs over the stage and can be dismissed", async () => {
-    await page.setViewportSize({ width: 1280, height: 800 });
+    await editor.page.setViewportSize({ width: 1280, height: 800 });
     try {
-      const canvasTop = async () => (await page.getByTestId("scene-canvas").boundingBox())!.y;
+      const canvasTop = async () => (await editor.page.getByTestId("scene-canvas").boundingBox())!.y;
       const setMessage = (text: string | null) =>
-        page.evaluate((t) => {
+        editor.page.evaluate((t) => {
           type Ui = { ui: { setState(s: { message: { text: string; tone: "error" } | null }): void } };
           (window as unknown as { chapgame: Ui }).chapgame.ui.setState({
             message: t === null ? null : { text: t, tone: "error" },
@@ -46,13 +34,13 @@ describe("messages and small windows", () => {
       expect(await canvasTop()).toBe(before);
       const long = `${"A refused edit whose explanation runs over several lines of the header. ".repeat(8)}end`;
       await setMessage(long);
-      const alert = page.getByRole("alert");
+      const alert = editor.page.getByRole("alert");
       await poll(async () => (await alert.textContent())?.includes("end")).toBe(true);
       expect(await canvasTop()).toBe(before);
       // it hangs below the header's row, over the stage, and its ✕ is on top and works
       expect((await alert.boundingBox())!.height).toBeGreaterThan(40);
-      await screenshot(page, "14-long-message");
-      const dismiss = page.getByRole("button", { name: "Dismiss message" });
+      await screenshot(editor.page, "14-long-message");
+      const dismiss = editor.page.getByRole("button", { name: "Dismiss message" });
       const onTop = await dismiss.evaluate((el) => {
         const r = el.getBoundingClientRect();
         return el.contains(document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2));
@@ -62,38 +50,42 @@ describe("messages and small windows", () => {
       await poll(() => alert.count()).toBe(0);
       expect(await canvasTop()).toBe(before);
     } finally {
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 
   it("in an 800 x 600 window a long message keeps to its line in the header: the toolbar stays usable", async () => {
-    await page.setViewportSize({ width: 800, height: 600 });
+    await editor.page.setViewportSize({ width: 800, height: 600 });
     try {
       const long = `${"A refused edit whose explanation runs over several lines of the header. ".repeat(4)}end`;
-      await page.evaluate((t) => {
+      await editor.page.evaluate((t) => {
         type Ui = { ui: { setState(s: { message: { text: string; tone: "error" } | null }): void } };
         (window as unknown as { chapgame: Ui }).chapgame.ui.setState({ message: { text: t, tone: "error" } });
       }, long);
-      await poll(async () => (await page.getByRole("alert").textContent())?.includes("end")).toBe(true);
-      const canvasTop = (await page.getByTestId("scene-canvas").boundingBox())!.y;
-      await page.getByRole("button", { name: "More" }).waitFor();
-      expect((await page.getByRole("alert").boundingBox())!.height).toBeLessThanOrEqual(30);
+      await poll(async () => (await editor.page.getByRole("alert").textContent())?.includes("end")).toBe(
+        true,
+      );
+      const canvasTop = (await editor.page.getByTestId("scene-canvas").boundingBox())!.y;
+      await editor.page.getByRole("button", { name: "More" }).waitFor();
+      expect((await editor.page.getByRole("alert").boundingBox())!.height).toBeLessThanOrEqual(30);
       for (const name of ["Fit", "Delete", "Point", "More"]) {
         // the toolbar's Delete names what it removes ("Delete: body b1") when something is selected
         const button =
           name === "Delete"
-            ? page.getByRole("toolbar", { name: "Tools" }).getByRole("button", { name: /^Delete(: |$)/ })
-            : page.getByRole("button", { name, exact: true });
+            ? editor.page
+                .getByRole("toolbar", { name: "Tools" })
+                .getByRole("button", { name: /^Delete(: |$)/ })
+            : editor.page.getByRole("button", { name, exact: true });
         const reachable = await button.evaluate((el) => {
           const r = el.getBoundingClientRect();
           return el.contains(document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2));
         });
         expect(reachable, `${name} is not covered`).toBe(true);
       }
-      await page.getByRole("button", { name: "Dismiss message" }).click();
-      expect((await page.getByTestId("scene-canvas").boundingBox())!.y).toBe(canvasTop);
+      await editor.page.getByRole("button", { name: "Dismiss message" }).click();
+      expect((await editor.page.getByTestId("scene-canvas").boundingBox())!.y).toBe(canvasTop);
     } finally {
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 
@@ -105,15 +97,17 @@ describe("messages and small windows", () => {
         [800, 600],
         [390, 844],
       ] as const) {
-        await page.setViewportSize({ width, height });
+        await editor.page.setViewportSize({ width, height });
         // the scene is fitted again to the smaller canvas (the view was never moved by hand)
         await poll(() => bodiesOutsideCanvas()).toBe(0);
         // no sideways scrolling (at 390 px the Speed panel was once 4 px too wide)
-        expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(width);
-        const canvas = (await page.getByTestId("scene-canvas").boundingBox())!;
+        expect(await editor.page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(
+          width,
+        );
+        const canvas = (await editor.page.getByTestId("scene-canvas").boundingBox())!;
         expect(canvas.width).toBeGreaterThanOrEqual(300);
         expect(canvas.height).toBeGreaterThanOrEqual(200);
-        const slider = (await page.getByRole("slider", { name: "Time" }).boundingBox())!;
+        const slider = (await editor.page.getByRole("slider", { name: "Time" }).boundingBox())!;
         expect(slider.width).toBeGreaterThanOrEqual(250);
         for (const name of [
           "−1 s: back 1 second",
@@ -126,8 +120,10 @@ describe("messages and small windows", () => {
           // the toolbar's Delete names what it removes ("Delete: body b1") when something is selected
           const button =
             name === "Delete"
-              ? page.getByRole("toolbar", { name: "Tools" }).getByRole("button", { name: /^Delete(: |$)/ })
-              : page.getByRole("button", { name, exact: true });
+              ? editor.page
+                  .getByRole("toolbar", { name: "Tools" })
+                  .getByRole("button", { name: /^Delete(: |$)/ })
+              : editor.page.getByRole("button", { name, exact: true });
           await button.scrollIntoViewIfNeeded();
           const box = (await button.boundingBox())!;
           expect(box.x).toBeGreaterThanOrEqual(0);
@@ -141,16 +137,18 @@ describe("messages and small windows", () => {
           expect(onTop).toBe(true);
         }
         // nor with the longest header (Galperin's digits field shown next to the presets list)
-        const presets = page.getByRole("combobox", { name: "Preset" });
+        const presets = editor.page.getByRole("combobox", { name: "Preset" });
         const chosen = await presets.inputValue();
         await presets.selectOption("galperin");
-        expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(width);
+        expect(await editor.page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(
+          width,
+        );
         await presets.selectOption(chosen);
-        await page.evaluate(() => window.scrollTo(0, 0));
-        await screenshot(page, `13-window-${width}x${height}`);
+        await editor.page.evaluate(() => window.scrollTo(0, 0));
+        await screenshot(editor.page, `13-window-${width}x${height}`);
       }
     } finally {
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 });
@@ -160,24 +158,24 @@ describe("the Time slider in a stacked window", () => {
     try {
       let last = 0;
       for (let width = 700; width <= 900; width += 25) {
-        await page.setViewportSize({ width, height: 700 });
-        const slider = () => page.getByRole("slider", { name: "Time" }).boundingBox();
+        await editor.page.setViewportSize({ width, height: 700 });
+        const slider = () => editor.page.getByRole("slider", { name: "Time" }).boundingBox();
         await poll(async () => (await slider())!.width).toBeGreaterThan(last);
         const now = (await slider())!.width;
         // the whole line but the panel's and the bar's margins
         expect(now, `${width} px`).toBeGreaterThanOrEqual(width - 50);
         last = now;
       }
-      await screenshot(page, "13-window-900-time-bar");
+      await screenshot(editor.page, "13-window-900-time-bar");
     } finally {
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 });
 
 /** How many discs the canvas draws (wholly or partly) outside its own box at the current view. */
 function bodiesOutsideCanvas(): Promise<number> {
-  return page.evaluate(() => {
+  return editor.page.evaluate(() => {
     type Editor = {
       ui: { getState(): { view: { cx: number; cy: number; scale: number } } };
       client: { latestFrame: { ids: string[]; data: Float64Array } | null };

@@ -5,31 +5,19 @@
  * usable as theirs do, at 700, 1280 and 1600 px. Each took a header line of its own, moving the
  * stage down 39 px or more at every width.
  */
-import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { openEditor, type Session, screenshot } from "./harness.js";
+import { describe, expect, it } from "vitest";
+import { editorForFile, poll } from "./editorForFile.js";
+import { screenshot } from "./harness.js";
 import { buttonUncovered, stageBoxes as probeStageBoxes } from "./stageProbes.js";
 
-const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
-
-let s: Session;
-let page: Page;
-
-beforeAll(async () => {
-  s = await openEditor();
-  page = s.page;
-});
-
-afterAll(async () => {
-  await s?.close();
-});
+const editor = editorForFile();
 
 /** The stage's and the canvas's boxes in the page, as one string to compare ("x y width height" each). */
-const stageBoxes = () => probeStageBoxes(page);
+const stageBoxes = () => probeStageBoxes(editor.page);
 
 /** Shows (or with null takes down) the notices as the editor does (autosave.ts, boot.ts). */
 const setNotices = (newer: boolean, refused: boolean) =>
-  page.evaluate(
+  editor.page.evaluate(
     ([newer, refused]) => {
       type Ui = { ui: { setState(s: Record<string, unknown>): void } };
       (window as unknown as { chapgame: Ui }).chapgame.ui.setState({
@@ -47,15 +35,16 @@ const setNotices = (newer: boolean, refused: boolean) =>
     [newer, refused] as const,
   );
 
-const NEWER = () => page.getByRole("status", { name: "Newer work in another tab" });
-const REFUSED = () => page.getByRole("alert", { name: "Autosaved scene refused" });
+const NEWER = () => editor.page.getByRole("status", { name: "Newer work in another tab" });
+const REFUSED = () => editor.page.getByRole("alert", { name: "Autosaved scene refused" });
 
 /** Whether the button's centre is in the window and the button itself is there (nothing covers it). */
-const uncovered = (name: string, within?: ReturnType<typeof NEWER>) => buttonUncovered(within ?? page, name);
+const uncovered = (name: string, within?: ReturnType<typeof NEWER>) =>
+  buttonUncovered(within ?? editor.page, name);
 
 /** The bottom of the stage's toolbar and the top of the highest notice (Infinity: none). */
 function toolbarAndNotices(): Promise<[number, number]> {
-  return page.evaluate(() => {
+  return editor.page.evaluate(() => {
     const toolbar = document.querySelector(".toolbar")!.getBoundingClientRect();
     const tops = Array.from(document.querySelectorAll(".stage-notices > *")).map(
       (n) => n.getBoundingClientRect().top,
@@ -73,7 +62,7 @@ describe("the persistent notices", () => {
         [1600, 900],
       ] as const) {
         const at = `${width} x ${height}`;
-        await page.setViewportSize({ width, height });
+        await editor.page.setViewportSize({ width, height });
         await setNotices(false, false);
         await poll(() => NEWER().count()).toBe(0);
         const before = await stageBoxes();
@@ -97,7 +86,7 @@ describe("the persistent notices", () => {
           if (refused)
             for (const b of ["Save it as a file", "Dismiss"])
               expect(await uncovered(b, REFUSED()), `${at}: ${b}`).toBe(true);
-          await screenshot(page, `stage-notices-${name}-${width}`);
+          await screenshot(editor.page, `stage-notices-${name}-${width}`);
         }
         // dismissed one after the other, by their own buttons: the stage stays
         await NEWER().getByRole("button", { name: "Dismiss" }).click();
@@ -109,7 +98,7 @@ describe("the persistent notices", () => {
       }
     } finally {
       await setNotices(false, false);
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 });

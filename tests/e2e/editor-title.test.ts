@@ -4,24 +4,21 @@
  * (autosave), and names the file Save suggests for a preset's scene (a file of the author's keeps
  * its name). The browser's save dialog is replaced by a recording stand-in, as in editor-save.
  */
-import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { openEditor, type Session, screenshot } from "./harness.js";
+import { describe, expect, it } from "vitest";
+import { editorForFile, poll } from "./editorForFile.js";
+import { screenshot } from "./harness.js";
 
-const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
+const editor = editorForFile();
 
-let s: Session;
-let page: Page;
-
-const message = () => page.locator(".message > span").textContent();
-const button = (name: string) => page.getByRole("button", { name, exact: true });
-const title = () => page.getByRole("textbox", { name: "Scene title" });
+const message = () => editor.page.locator(".message > span").textContent();
+const button = (name: string) => editor.page.getByRole("button", { name, exact: true });
+const title = () => editor.page.getByRole("textbox", { name: "Scene title" });
 
 type SavePage = { asked: string[]; written: string[] };
 
 /** Replaces the browser's save dialog by a stand-in recording the names asked and the texts written. */
 async function standInDialog() {
-  await page.evaluate(() => {
+  await editor.page.evaluate(() => {
     const w = window as unknown as SavePage & { showSaveFilePicker: unknown };
     w.asked = [];
     w.written = [];
@@ -44,19 +41,10 @@ async function standInDialog() {
 }
 
 const lastSaved = () =>
-  page.evaluate(() => {
+  editor.page.evaluate(() => {
     const w = window as unknown as SavePage;
     return { name: w.asked.at(-1), text: w.written.at(-1) ?? "" };
   });
-
-beforeAll(async () => {
-  s = await openEditor();
-  page = s.page;
-});
-
-afterAll(async () => {
-  await s?.close();
-});
 
 describe("the scene's title", () => {
   it("typed in the header, it is saved in the file and names it; Undo and Redo take it back and forth", async () => {
@@ -68,7 +56,7 @@ describe("the scene's title", () => {
       'Titled the scene "Two discs, one push": Save file suggests two-discs-one-push.chapgame.json. Undo takes it back.',
     );
     expect(await title().getAttribute("title")).toBe("Save file suggests two-discs-one-push.chapgame.json");
-    await screenshot(page, "scene-title");
+    await screenshot(editor.page, "scene-title");
     await standInDialog();
     await button("Save file").click();
     await poll(message).toBe("Saved the scene as two-discs-one-push.chapgame.json.");
@@ -83,8 +71,8 @@ describe("the scene's title", () => {
   });
 
   it("a reload keeps the title (autosave)", async () => {
-    await page.reload();
-    await page.getByRole("slider", { name: "Time" }).waitFor();
+    await editor.page.reload();
+    await editor.page.getByRole("slider", { name: "Time" }).waitFor();
     await poll(() => title().inputValue()).toBe("Two discs, one push");
   });
 
@@ -95,14 +83,14 @@ describe("the scene's title", () => {
       actions: [{ time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 }],
       meta: { title: "From disk", view: { zoom: 3 } },
     };
-    await page.getByLabel("Scene file").setInputFiles({
+    await editor.page.getByLabel("Scene file").setInputFiles({
       name: "disk.chapgame.json",
       mimeType: "application/json",
       buffer: Buffer.from(JSON.stringify(scene)),
     });
     await poll(() => title().inputValue()).toBe("From disk");
     await title().click();
-    await page.getByRole("heading", { name: "Bodies" }).click();
+    await editor.page.getByRole("heading", { name: "Bodies" }).click();
     await poll(message).toBe("Opened disk.chapgame.json. Undo returns to the scene you had before.");
     await title().fill("Renamed on screen");
     await title().press("Tab");
@@ -110,7 +98,7 @@ describe("the scene's title", () => {
       'Titled the scene "Renamed on screen": Save file suggests disk.chapgame.json (the scene\'s own file). Undo takes it back.',
     );
     await standInDialog();
-    await page.keyboard.press("Control+s");
+    await editor.page.keyboard.press("Control+s");
     await poll(message).toBe("Saved the scene as disk.chapgame.json.");
     // the rest of meta is kept as it was
     expect(JSON.parse((await lastSaved()).text).meta).toEqual({

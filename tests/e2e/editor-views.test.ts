@@ -4,22 +4,19 @@
  * Messages and small windows: editor-small-windows.test.ts; the Time slider's own tests:
  * editor-time-slider.test.ts.
  */
-import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { openEditor, type Session, screenshot, scrubTo, waitFor } from "./harness.js";
+import { describe, expect, it } from "vitest";
+import { editorForFile, poll } from "./editorForFile.js";
+import { screenshot, scrubTo, waitFor } from "./harness.js";
 import { loadPresetOn } from "./presets.js";
 
-const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
-
-let s: Session;
-let page: Page;
+const editor = editorForFile();
 
 /** Loads a preset and waits until its body `id` is in the Bodies table at t = 0. */
-const loadPreset = (title: string, id: string) => loadPresetOn(page, title, id);
+const loadPreset = (title: string, id: string) => loadPresetOn(editor.page, title, id);
 
 /** The times of the Event log rows that lie wholly inside its scrolled view. */
 function visibleLogTimes(): Promise<number[]> {
-  return page.evaluate(() => {
+  return editor.page.evaluate(() => {
     const box = document.querySelector(".table-scroll.log")!;
     const view = box.getBoundingClientRect();
     const head = box.querySelector("thead")!.getBoundingClientRect().height;
@@ -32,25 +29,16 @@ function visibleLogTimes(): Promise<number[]> {
   });
 }
 
-beforeAll(async () => {
-  s = await openEditor();
-  page = s.page;
-});
-
-afterAll(async () => {
-  await s?.close();
-});
-
 describe("editor views", () => {
   it("the Event log scrolls to the current time (the events just before and after it are in view)", async () => {
     await loadPreset("Billiards break", "ball15");
     // the break has dozens of events in its first half second: at t = 1.6 they are all past
-    await scrubTo(page, 1.6);
+    await scrubTo(editor.page, 1.6);
     await poll(async () => {
       const times = await visibleLogTimes();
       return times.some((x) => x <= 1.6) && times.some((x) => x > 1.6);
     }).toBe(true);
-    await scrubTo(page, 0.16);
+    await scrubTo(editor.page, 0.16);
     await poll(async () => {
       const times = await visibleLogTimes();
       return times.some((x) => x <= 0.16) && times.some((x) => x > 0.16);
@@ -58,30 +46,30 @@ describe("editor views", () => {
     // a click on a row jumps to its time, and that row stays in view (the log then reads the
     // events around the new time: the row moves within its page, the view must follow it)
     await loadPreset("Bouncing balls", "ball1");
-    await scrubTo(page, 6);
+    await scrubTo(editor.page, 6);
     await poll(async () => (await visibleLogTimes()).some((x) => x > 6)).toBe(true);
-    const row = page
+    const row = editor.page
       .getByRole("table", { name: "Event log" })
       .getByRole("row")
       .filter({ hasText: "body–body" });
     const target = Number(await row.first().locator("td").first().textContent());
     await row.first().click();
     const shownTime = async () =>
-      Number(Number(await page.getByRole("slider", { name: "Time" }).inputValue()).toPrecision(6));
+      Number(Number(await editor.page.getByRole("slider", { name: "Time" }).inputValue()).toPrecision(6));
     await poll(shownTime).toBe(target);
     await poll(async () => (await visibleLogTimes()).includes(target)).toBe(true);
-    await screenshot(page, "11-event-log-follows-time");
+    await screenshot(editor.page, "11-event-log-follows-time");
   });
 
   it("every column of the Bodies table, the row's delete button included, is in view with a heavy disc", async () => {
-    const select = page.getByRole("combobox", { name: "Preset" });
+    const select = editor.page.getByRole("combobox", { name: "Preset" });
     await select.selectOption("galperin");
-    await page.getByRole("spinbutton", { name: "Digits of π" }).fill("7");
-    await page.getByRole("button", { name: "Load preset" }).click();
-    const table = page.getByRole("table", { name: "Bodies" });
+    await editor.page.getByRole("spinbutton", { name: "Digits of π" }).fill("7");
+    await editor.page.getByRole("button", { name: "Load preset" }).click();
+    const table = editor.page.getByRole("table", { name: "Bodies" });
     await poll(() => table.getByLabel("big m", { exact: true }).textContent()).toBe("1e+12");
     const inView = async (names: string[]) => {
-      const scroller = (await page.locator(".table-scroll").first().boundingBox())!;
+      const scroller = (await editor.page.locator(".table-scroll").first().boundingBox())!;
       for (const name of names) {
         const cell = table.getByLabel(name, { exact: true });
         const box = (await cell.boundingBox())!;
@@ -97,18 +85,18 @@ describe("editor views", () => {
     await inView(["big m", "big mu", "Delete big"]);
     // the billiards break at 1.6 s: wide values (-346.202, 380.279) in the velocity columns
     await loadPreset("Billiards break", "ball15");
-    await scrubTo(page, 1.6);
+    await scrubTo(editor.page, 1.6);
     await poll(() => table.getByLabel("ball15 vx", { exact: true }).textContent()).toMatch(/^-\d{3}\./);
     // (columns are as wide as their widest value: any row in view shows whether they fit)
     await inView(["ball1 mu", "Delete ball1"]);
     // 200 discs of six-digit values in a 1280 × 800 window (the delete column covered m and μ)
-    await page.setViewportSize({ width: 1280, height: 800 });
+    await editor.page.setViewportSize({ width: 1280, height: 800 });
     try {
       await loadPreset("Dilute gas", "d0");
       await inView(["d0 x", "d0 vx", "d0 vy", "d0 speed", "d0 r", "d0 m", "d0 mu", "Delete d0"]);
       // narrower than its columns (a 400 px window), the table scrolls sideways to every column
-      await page.setViewportSize({ width: 400, height: 800 });
-      const scroller = page.locator(".table-scroll").first();
+      await editor.page.setViewportSize({ width: 400, height: 800 });
+      const scroller = editor.page.locator(".table-scroll").first();
       await poll(() => scroller.evaluate((el) => el.scrollWidth > el.clientWidth)).toBe(true);
       await scroller.evaluate((el) => {
         // the panels are below the stage in a narrow window: the page scrolls to the table
@@ -120,14 +108,14 @@ describe("editor views", () => {
         el.scrollLeft = 0;
       });
     } finally {
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 
   it("a body selected from the Event log is scrolled into view in the Bodies table, the focus left on the log", async () => {
     await loadPreset("Dilute gas", "d0");
-    const bodies = page.getByRole("table", { name: "Bodies" });
-    const box = page.locator(".table-scroll").first();
+    const bodies = editor.page.getByRole("table", { name: "Bodies" });
+    const box = editor.page.locator(".table-scroll").first();
     /** Whether the selected body's row is rendered and wholly inside the scroll box, under its head. */
     const selectedInView = () =>
       box.evaluate((el) => {
@@ -139,15 +127,17 @@ describe("editor views", () => {
         return r.top >= v.top + head - 1 && r.bottom <= v.top + el.clientHeight + 1;
       });
     // a history long enough for d150 to collide, then back to its start
-    const field = page.getByRole("textbox", { name: "Time (s)" });
+    const field = editor.page.getByRole("textbox", { name: "Time (s)" });
     await field.fill("300");
     await field.press("Enter");
-    await poll(async () => Number(await page.getByRole("slider", { name: "Time" }).inputValue())).toBe(300);
-    await scrubTo(page, 0);
+    await poll(async () => Number(await editor.page.getByRole("slider", { name: "Time" }).inputValue())).toBe(
+      300,
+    );
+    await scrubTo(editor.page, 0);
     // d150 is past the 60 rows listed: its event's first participant (listed at the end when it is
     // the selection, or far down the first 60) is out of the table's view
-    await page.getByRole("textbox", { name: "Filter by body" }).fill("d150");
-    const rows = page.getByRole("table", { name: "Event log" }).getByRole("row");
+    await editor.page.getByRole("textbox", { name: "Filter by body" }).fill("d150");
+    const rows = editor.page.getByRole("table", { name: "Event log" }).getByRole("row");
     const first = rows.filter({ hasText: "body–body" }).first();
     const participants = first.locator("td").nth(2);
     await poll(async () =>
@@ -159,11 +149,11 @@ describe("editor views", () => {
     const time = (await first.locator("td").first().textContent())!;
     const listed = (await participants.textContent())!;
     const ids = listed.split(", ");
-    const event = rows.filter({ has: page.getByRole("cell", { name: time, exact: true }) }).filter({
-      has: page.getByRole("cell", { name: listed, exact: true }),
+    const event = rows.filter({ has: editor.page.getByRole("cell", { name: time, exact: true }) }).filter({
+      has: editor.page.getByRole("cell", { name: listed, exact: true }),
     });
     await event.click();
-    const chosen = await page.evaluate(() => {
+    const chosen = await editor.page.evaluate(() => {
       const ed = (
         window as unknown as { chapgame: { ui: { getState(): { selection: { id: string } | null } } } }
       ).chapgame;
@@ -174,24 +164,26 @@ describe("editor views", () => {
     expect(await bodies.getByRole("row", { selected: true }).count()).toBe(1);
     // the focus stays on the log's row
     expect(
-      await page.evaluate(() => document.activeElement?.closest("table")?.getAttribute("aria-label")),
+      await editor.page.evaluate(() => document.activeElement?.closest("table")?.getAttribute("aria-label")),
     ).toBe("Event log");
     // a refresh of the rows does not scroll back: the reader's scroll is kept
     await box.evaluate((el) => {
       el.scrollTop = 0;
     });
-    await scrubTo(page, 0.5);
+    await scrubTo(editor.page, 0.5);
     await poll(() => bodies.getByLabel("d0 x", { exact: true }).count()).toBe(1);
-    await page.waitForTimeout(300);
+    await editor.page.waitForTimeout(300);
     expect(await box.evaluate((el) => el.scrollTop)).toBe(0);
-    await page.getByRole("textbox", { name: "Filter by body" }).fill("");
+    await editor.page.getByRole("textbox", { name: "Filter by body" }).fill("");
   });
 
   it("dragging a moving disc pauses playback and drops the disc where it is let go", async () => {
     await loadPreset("Newton's cradle", "striker");
-    await page.getByRole("button", { name: "Play", exact: true }).click();
-    await waitFor(async () => Number(await page.getByRole("slider", { name: "Time" }).inputValue()) > 0.3);
-    const at = await page.evaluate(() => {
+    await editor.page.getByRole("button", { name: "Play", exact: true }).click();
+    await waitFor(
+      async () => Number(await editor.page.getByRole("slider", { name: "Time" }).inputValue()) > 0.3,
+    );
+    const at = await editor.page.evaluate(() => {
       type Editor = {
         ui: { getState(): { t: number; view: { cx: number; cy: number; scale: number } } };
         client: { latestFrame: { ids: string[]; data: Float64Array } | null };
@@ -209,18 +201,18 @@ describe("editor views", () => {
         t,
       };
     });
-    await page.getByRole("button", { name: "Move", exact: true }).click();
-    await page.mouse.move(at.sx, at.sy);
-    await page.mouse.down();
-    const pressedAt = Number(await page.getByRole("slider", { name: "Time" }).inputValue());
-    await page.mouse.move(at.sx, at.sy - 80, { steps: 8 });
-    await page.waitForTimeout(300);
-    await page.mouse.up();
-    expect(await page.getByRole("button", { name: "Play", exact: true }).count()).toBe(1);
-    expect(Number(await page.getByRole("slider", { name: "Time" }).inputValue())).toBe(pressedAt);
+    await editor.page.getByRole("button", { name: "Move", exact: true }).click();
+    await editor.page.mouse.move(at.sx, at.sy);
+    await editor.page.mouse.down();
+    const pressedAt = Number(await editor.page.getByRole("slider", { name: "Time" }).inputValue());
+    await editor.page.mouse.move(at.sx, at.sy - 80, { steps: 8 });
+    await editor.page.waitForTimeout(300);
+    await editor.page.mouse.up();
+    expect(await editor.page.getByRole("button", { name: "Play", exact: true }).count()).toBe(1);
+    expect(Number(await editor.page.getByRole("slider", { name: "Time" }).inputValue())).toBe(pressedAt);
     await poll(async () =>
       Number(
-        await page
+        await editor.page
           .getByRole("table", { name: "Bodies" })
           .getByLabel("striker y", { exact: true })
           .textContent(),
