@@ -68,7 +68,7 @@ describe("Event details", () => {
       ],
     ]);
     expect(await details.locator("dd").first().getAttribute("title")).toBe(String(d.time));
-    await expect.poll(() => details.locator("dd").nth(2).textContent()).toBe("A, B");
+    await poll(() => details.locator("dd").nth(2).textContent()).toBe("A, B");
     // a participant selects its body
     await details.getByRole("button", { name: "B", exact: true }).click();
     const selected = editor.page.getByRole("table", { name: "Bodies" }).locator("tr.selected");
