@@ -2,8 +2,11 @@
  * The last message (a refused edit or paste, or a notice), with a close button. It sits in a slot
  * of the header one line high, whatever its length, so showing, replacing or dismissing one never
  * moves the stage (its toolbar and canvas) at any window width. In a wide window a message that
- * needs more lines hangs over the top of the stage until it is dismissed or replaced. In a window
- * up to 1000 px wide (styles/layout.css) the stage's toolbar sits right under the slot, which is
+ * needs more lines hangs down from the slot until it is dismissed or replaced; from 1001 px the slot
+ * takes only what the header's line leaves, and where that is too narrow the message hangs under the
+ * header over the top of the side column (styles/message.css: the slot once took a line of its own
+ * there, empty, 37 px of canvas from 1127 to 1382 px). In a window
+ * up to 1000 px wide (styles/message.css) the stage's toolbar sits right under the slot, which is
  * narrow there, so a long message is cut to its line (an ellipsis) and a More button shows it whole,
  * hanging over the stage, until Less, ✕ or the next message; screen readers read it whole either way.
  * (Below 1000 px it once took its lines in the header instead, which moved the stage down by a line

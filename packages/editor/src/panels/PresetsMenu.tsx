@@ -74,7 +74,7 @@ export function PresetsMenu() {
         <select
           aria-label="Preset"
           value={id}
-          // the chosen title whole: a narrow window cuts it in the closed list (styles/layout.css)
+          // the chosen title whole: a narrow window cuts it in the closed list (styles/header.css)
           title={entry?.name}
           onChange={(e) => setId(e.target.value)}
         >
@@ -99,7 +99,7 @@ export function PresetsMenu() {
           value={digits}
           aria-invalid={refusal !== null}
           aria-describedby={refusal === null ? undefined : refusalId}
-          // the refusal beside the field is not drawn in a narrow window (styles/layout.css)
+          // the refusal beside the field is not drawn: the message bar shows it (styles/header.css)
           title={refusal ?? undefined}
           onChange={(e) => setDigits(e.target.value)}
           onBlur={() => void checkDigits()}
