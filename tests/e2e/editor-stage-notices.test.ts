@@ -8,6 +8,7 @@
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
 import { screenshot } from "./harness.js";
+import { newerNotice, refusedNotice, setNotices as showNotices } from "./notices.js";
 import { buttonUncovered, stageBoxes as probeStageBoxes } from "./stageProbes.js";
 
 const editor = editorForFile();
@@ -15,28 +16,11 @@ const editor = editorForFile();
 /** The stage's and the canvas's boxes in the page, as one string to compare ("x y width height" each). */
 const stageBoxes = () => probeStageBoxes(editor.page);
 
-/** Shows (or with null takes down) the notices as the editor does (autosave.ts, boot.ts). */
-const setNotices = (newer: boolean, refused: boolean) =>
-  editor.page.evaluate(
-    ([newer, refused]) => {
-      type Ui = { ui: { setState(s: Record<string, unknown>): void } };
-      (window as unknown as { chapgame: Ui }).chapgame.ui.setState({
-        newerWork: newer ? { tab: "other-tab", savedAt: Date.UTC(2026, 0, 2, 15, 4) } : null,
-        refusedScene: refused
-          ? {
-              reason:
-                "bodies[0].r: must be a positive number (got -1); the scene file says so at line 12 of 80",
-              text: '{"bodies":[{"id":"a","r":-1}]}',
-              tab: null,
-            }
-          : null,
-      });
-    },
-    [newer, refused] as const,
-  );
+/** Shows (or with false takes down) the notices as the editor does (autosave.ts, boot.ts). */
+const setNotices = (newer: boolean, refused: boolean) => showNotices(editor.page, newer, refused);
 
-const NEWER = () => editor.page.getByRole("status", { name: "Newer work in another tab" });
-const REFUSED = () => editor.page.getByRole("alert", { name: "Autosaved scene refused" });
+const NEWER = () => newerNotice(editor.page);
+const REFUSED = () => refusedNotice(editor.page);
 
 /** Whether the button's centre is in the window and the button itself is there (nothing covers it). */
 const uncovered = (name: string, within?: ReturnType<typeof NEWER>) =>

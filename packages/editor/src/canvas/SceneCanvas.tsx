@@ -12,7 +12,8 @@
  * by its keys. A mouse press does not focus it (the focus leaves the field it was in, as before it was
  * focusable), so ←/→ still step through events after a click on a disc. Focused from the keyboard
  * with a tool that adds, it marks the centre of the view, where Enter adds (centreMarker.ts).
- * Any view change but the canvas's own fit (a drag, the wheel, a key) ends the fitted view.
+ * Any view change but the canvas's own fit (a drag, the wheel, a key) ends the fitted view. Fit
+ * leaves out the strip the persistent notices cover (ui.noticesCover), refitted as they come and go.
  */
 import { useEffect, useRef } from "react";
 import { useEditor, useUi } from "../EditorContext";
@@ -113,6 +114,8 @@ export function SceneCanvas() {
     let fittedView: View | null = null;
     const unsubUi = ui.subscribe((s, p) => {
       if (s.fitRequest !== p.fitRequest) fitPending = true;
+      // a notice shown or dismissed over a fitted view: fitted again around the strip it covers
+      if (s.noticesCover !== p.noticesCover && fitted) fitPending = true;
       if (s.view !== p.view && s.view !== fittedView) {
         fitted = false;
         // A view the reader sets before the fit's frame arrives wins over that fit (a zoom right
@@ -138,7 +141,7 @@ export function SceneCanvas() {
       if (fitPending && base && client.hasFrame(s.t)) {
         fitPending = false;
         fitted = true;
-        fittedView = fitFrame(base, size);
+        fittedView = fitFrame(base, size, s.noticesCover);
         ui.setState({ view: fittedView });
         return;
       }

@@ -1,7 +1,7 @@
 import { presets, type SceneFile, Timeline } from "@chapgame/engine";
 import { describe, expect, it } from "vitest";
 import { packFrame } from "../remote/packFrame";
-import { FIT_MIN_RADII, fitFrame } from "./fitScene";
+import { FIT_MAX_COVERED, FIT_MIN_RADII, fitFrame } from "./fitScene";
 import { frameBounds } from "./hitTest";
 import { fit, toScreen } from "./viewTransform";
 
@@ -76,5 +76,27 @@ describe("fit to scene", () => {
       if (p.id === "originalDemo") expect(fitFrame(f, size)).toEqual({ ...before, scale: 752 / 1000 });
       else expect(fitFrame(f, size), p.id).toEqual(before);
     }
+  });
+
+  it("a strip covered at the canvas's top (the notices) is left out: the scene fits in the rest, centred there", () => {
+    // a tall scene (a column of discs), so that the height sets the scale
+    const f = frameOf([disc("top", 0, 300, 5), disc("mid", 0, 0, 5), disc("bottom", 0, -300, 5)]);
+    for (const covered of [0, 40, 150]) {
+      const v = fitFrame(f, size, covered);
+      const [, top] = toScreen(v, size, 0, 305);
+      const [, bottom] = toScreen(v, size, 0, -305);
+      expect(top, `${covered} px covered`).toBeCloseTo(covered + 24, 9);
+      expect(bottom, `${covered} px covered`).toBeCloseTo(576, 9);
+      expect(v.scale).toBeCloseTo((600 - covered - 48) / 610, 12);
+    }
+    expect(fitFrame(f, size, 0)).toEqual(fitFrame(f, size));
+  });
+
+  it("a strip covering more than half the canvas is left out only up to half", () => {
+    const f = frameOf([disc("top", 0, 300, 5), disc("bottom", 0, -300, 5)]);
+    const half = FIT_MAX_COVERED * size.height;
+    expect(fitFrame(f, size, 500)).toEqual(fitFrame(f, size, half));
+    const [, top] = toScreen(fitFrame(f, size, 500), size, 0, 305);
+    expect(top).toBeCloseTo(half + 24, 9);
   });
 });

@@ -8,7 +8,9 @@
  * to their bounds, not shrunk to a fifth of the view. A scene of lines and points only is fitted to
  * their bounds (points and lines keep their pixel size at any zoom; a lone point keeps the default
  * scale), and an empty scene gets the default view. A body far from the rest stays in view (drawn at
- * least as a dot): Fit shows everything, it never drops an outlier.
+ * least as a dot): Fit shows everything, it never drops an outlier. While the persistent notices
+ * hang over the canvas's top (StageNotices.tsx), Fit leaves that strip out, up to half the canvas:
+ * the scene is fitted into what is left in view (a fitted scene was partly under a notice).
  */
 import { F_R, FRAME_STRIDE, type Frame } from "../remote/protocol";
 import type { View } from "../store/uiStore";
@@ -28,6 +30,14 @@ export function fitMinExtent(f: Frame | null): number {
   return FIT_MIN_RADII * radii[(n - 1) >> 1]!;
 }
 
-export function fitFrame(f: Frame | null, size: Size): View {
-  return fit(frameBounds(f), size, undefined, fitMinExtent(f));
+/** The most of the canvas's height that Fit leaves out for a strip covered at its top: a scene is
+ *  never fitted into less than the other half (what a notice covers beyond that, in a window too
+ *  short for it, is the reader's to dismiss). */
+export const FIT_MAX_COVERED = 0.5;
+
+/** The view that fits frame `f` into a canvas of `size` whose top `coveredTop` CSS pixels are
+ *  covered (the persistent notices; 0: none). */
+export function fitFrame(f: Frame | null, size: Size, coveredTop = 0): View {
+  const covered = Math.min(Math.max(coveredTop, 0), FIT_MAX_COVERED * size.height);
+  return fit(frameBounds(f), size, undefined, fitMinExtent(f), covered);
 }

@@ -47,14 +47,16 @@ export interface Bounds {
 /**
  * The view that shows `b` whole with `margin` CSS pixels around it. The view spans at least
  * `minExtent` world units along its longer side (so one small disc is not blown up to fill it);
- * a point with no minimum extent gets a default scale, and no bounds the default view.
+ * a point with no minimum extent gets a default scale, and no bounds the default view. The top
+ * `coveredTop` CSS pixels of the canvas are left out (something hangs over them): `b` is fitted
+ * into the rest, centred there.
  */
-export function fit(b: Bounds | null, size: Size, margin = 24, minExtent = 0): View {
+export function fit(b: Bounds | null, size: Size, margin = 24, minExtent = 0, coveredTop = 0): View {
   if (!b || !Number.isFinite(b.minX + b.maxX + b.minY + b.maxY)) return { cx: 0, cy: 0, scale: 1 };
   const w = Math.max(b.maxX - b.minX, 0);
   const h = Math.max(b.maxY - b.minY, 0);
   const availW = Math.max(size.width - 2 * margin, 1);
-  const availH = Math.max(size.height - 2 * margin, 1);
+  const availH = Math.max(size.height - coveredTop - 2 * margin, 1);
   let scale = Math.min(
     w > 0 ? availW / w : Number.POSITIVE_INFINITY,
     h > 0 ? availH / h : Number.POSITIVE_INFINITY,
@@ -62,7 +64,9 @@ export function fit(b: Bounds | null, size: Size, margin = 24, minExtent = 0): V
   if (minExtent > 0) scale = Math.min(scale, Math.max(availW, availH) / minExtent);
   if (!Number.isFinite(scale)) scale = 1;
   scale = Math.min(MAX_SCALE, Math.max(MIN_SCALE, scale));
-  return { cx: (b.minX + b.maxX) / 2, cy: (b.minY + b.maxY) / 2, scale };
+  // the bounds' centre at the centre of the uncovered part, coveredTop / 2 below the canvas's
+  const cy = (b.minY + b.maxY) / 2 + (coveredTop > 0 ? coveredTop / 2 / scale : 0);
+  return { cx: (b.minX + b.maxX) / 2, cy, scale };
 }
 
 /** Grows bounds to include a point (null bounds start from the point). */

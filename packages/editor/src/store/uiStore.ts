@@ -46,6 +46,9 @@ export interface UiState {
   view: View;
   /** Bumped to ask the canvas to fit the view to the scene. */
   fitRequest: number;
+  /** CSS pixels of the canvas's top that the persistent notices hang over (StageNotices.tsx
+   *  measures it; 0 while none is shown): Fit leaves that strip out (canvas/fitScene.ts). */
+  noticesCover: number;
   trails: boolean;
   /** The Path view: the selected body's whole computed path drawn on the canvas (canvas/pathView.ts). */
   path: boolean;
@@ -80,6 +83,7 @@ export const initialUiState: UiState = {
   tool: "move",
   view: { cx: 0, cy: 0, scale: 1 },
   fitRequest: 0,
+  noticesCover: 0,
   trails: false,
   path: false,
   pathShown: null,
