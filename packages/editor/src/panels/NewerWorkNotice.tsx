@@ -6,6 +6,7 @@
 
 import { useEditor, useUi } from "../EditorContext";
 import { clockTime, openNewerWork } from "../newerWork";
+import { NoticeText } from "./NoticeText";
 
 export function NewerWorkNotice() {
   const editor = useEditor();
@@ -13,7 +14,7 @@ export function NewerWorkNotice() {
   if (!newer) return null;
   return (
     <div className="newer-work" role="status" aria-label="Newer work in another tab">
-      <span>Another editor tab saved a newer scene at {clockTime(newer.savedAt)}.</span>
+      <NoticeText text={`Another editor tab saved a newer scene at ${clockTime(newer.savedAt)}.`} />
       <button type="button" onClick={() => void openNewerWork(editor, window.localStorage, newer.tab)}>
         Open it
       </button>

@@ -8,6 +8,7 @@
 
 import { dropRefused } from "../doc/refusedScene";
 import { useEditor, useUi } from "../EditorContext";
+import { NoticeText } from "./NoticeText";
 import { downloadText } from "./sceneFile";
 
 /** The downloaded file's name. */
@@ -20,12 +21,13 @@ export function RefusedSceneNotice({ local = window.localStorage }: { local?: St
   const kept = refused.tab !== null;
   return (
     <div className="newer-work" role="alert" aria-label="Autosaved scene refused">
-      <span>
-        This tab's autosaved scene could not be opened: {refused.reason}.
-        {kept
-          ? " The refused scene is kept until you dismiss this notice."
-          : " It could not be kept in this browser's storage: save it now, or it goes with this page."}
-      </span>
+      <NoticeText
+        text={`This tab's autosaved scene could not be opened: ${refused.reason}.${
+          kept
+            ? " The refused scene is kept until you dismiss this notice."
+            : " It could not be kept in this browser's storage: save it now, or it goes with this page."
+        }`}
+      />
       <button type="button" onClick={() => downloadText(refused.text, REFUSED_NAME)}>
         Save it as a file
       </button>
