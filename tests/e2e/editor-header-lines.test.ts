@@ -8,28 +8,16 @@
  * not 42, and the canvas 37 px lower. The digits' refusal beside its field (Galperin's billiard) once
  * took a header line too, moving the stage 42 px at 1001 and 1400 to 1700 px.
  */
-import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { openEditor, type Session, screenshot } from "./harness.js";
+import { describe, expect, it } from "vitest";
+import { editorForFile, poll } from "./editorForFile.js";
+import { screenshot } from "./harness.js";
 import { buttonUncovered, stageBoxes } from "./stageProbes.js";
 
-const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
-
-let s: Session;
-let page: Page;
-
-beforeAll(async () => {
-  s = await openEditor();
-  page = s.page;
-});
-
-afterAll(async () => {
-  await s?.close();
-});
+const editor = editorForFile();
 
 /** Shows `text` in the message bar as the editor does (null: takes the message down). */
 const setMessage = (text: string | null) =>
-  page.evaluate((t) => {
+  editor.page.evaluate((t) => {
     type Ui = { ui: { setState(s: { message: { text: string; tone: "error" } | null }): void } };
     (window as unknown as { chapgame: Ui }).chapgame.ui.setState({
       message: t === null ? null : { text: t, tone: "error" },
@@ -41,7 +29,7 @@ const LONG = `${"A refused edit whose explanation runs over several lines of the
 /** The header's lines, top to bottom, each as the class names (or tags) of the items on it, and the
  *  boxes of the header, the toolbar, the canvas and the side column (top, bottom, left, right). */
 function headerLayout() {
-  return page.evaluate(() => {
+  return editor.page.evaluate(() => {
     const header = document.querySelector("header.header")!;
     const lines = new Map<number, string[]>();
     for (const item of Array.from(header.children)) {
@@ -68,7 +56,7 @@ describe("the header's lines", () => {
   it("from 1000 to 1920 px every line holds a control; from 1100 px the header is one line and the canvas right under it", async () => {
     try {
       for (const width of [1000, 1027, 1100, 1200, 1280, 1382, 1399, 1400, 1920]) {
-        await page.setViewportSize({ width, height: 900 });
+        await editor.page.setViewportSize({ width, height: 900 });
         await setMessage(null);
         const at = `${width} px`;
         const l = await headerLayout();
@@ -82,27 +70,27 @@ describe("the header's lines", () => {
         // the stage starts under the header, the canvas under the toolbar: no gap lost between
         expect(l.toolbar.top, at).toBe(l.header.bottom);
         expect(l.canvas.top, at).toBe(l.toolbar.bottom);
-        await screenshot(page, `header-lines-${width}`);
+        await screenshot(editor.page, `header-lines-${width}`);
       }
     } finally {
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 
   it("a message, short or long, never moves the stage; where the slot is narrow it hangs over the side column, not the toolbar", async () => {
     try {
       for (const width of [1001, 1100, 1200, 1280, 1399, 1400, 1920]) {
-        await page.setViewportSize({ width, height: 900 });
+        await editor.page.setViewportSize({ width, height: 900 });
         await setMessage(null);
         const at = `${width} px`;
-        const before = await stageBoxes(page);
+        const before = await stageBoxes(editor.page);
         const l = await headerLayout();
         for (const text of ['x: must be a number (got "abc")', LONG]) {
           await setMessage(text);
-          const message = page.getByRole("alert");
+          const message = editor.page.getByRole("alert");
           await poll(() => message.textContent()).toContain(text.slice(-3));
-          expect(await stageBoxes(page), `${at}: ${text.slice(0, 20)}`).toBe(before);
-          expect(await buttonUncovered(page, "Dismiss message"), `${at}: ✕`).toBe(true);
+          expect(await stageBoxes(editor.page), `${at}: ${text.slice(0, 20)}`).toBe(before);
+          expect(await buttonUncovered(editor.page, "Dismiss message"), `${at}: ✕`).toBe(true);
           const m = (await message.boundingBox())!;
           expect(m.x + m.width, at).toBeLessThanOrEqual(width);
           // on the header's line (a long one hangs down from it), or under the header over the side
@@ -112,33 +100,33 @@ describe("the header's lines", () => {
             expect(m.x, `${at}: under the header, over the side column`).toBeGreaterThanOrEqual(l.side.left);
           if (text !== LONG || m.x >= l.side.left)
             for (const name of ["Move", "Point", "Fit", "Keyboard shortcuts"])
-              expect(await buttonUncovered(page, name), `${at}: ${name}`).toBe(true);
+              expect(await buttonUncovered(editor.page, name), `${at}: ${name}`).toBe(true);
         }
-        await screenshot(page, `header-lines-message-${width}`);
-        await page.getByRole("button", { name: "Dismiss message" }).click();
-        expect(await stageBoxes(page), `${at}: dismissed`).toBe(before);
+        await screenshot(editor.page, `header-lines-message-${width}`);
+        await editor.page.getByRole("button", { name: "Dismiss message" }).click();
+        expect(await stageBoxes(editor.page), `${at}: dismissed`).toBe(before);
       }
     } finally {
       await setMessage(null);
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 
   it("the digits of π refused never move the stage (the refusal beside the field took a header line)", async () => {
-    const presets = page.getByRole("combobox", { name: "Preset" });
-    const digits = page.getByRole("spinbutton", { name: "Digits of π" });
+    const presets = editor.page.getByRole("combobox", { name: "Preset" });
+    const digits = editor.page.getByRole("spinbutton", { name: "Digits of π" });
     try {
       for (const width of [1001, 1200, 1400, 1600, 1920]) {
-        await page.setViewportSize({ width, height: 900 });
+        await editor.page.setViewportSize({ width, height: 900 });
         await presets.selectOption("galperin");
         await digits.fill("4");
         await digits.blur();
         await setMessage(null);
-        const before = await stageBoxes(page);
+        const before = await stageBoxes(editor.page);
         await digits.fill("9");
         await digits.blur();
-        await poll(() => page.getByRole("alert").textContent()).toContain("(got 9)");
-        expect(await stageBoxes(page), `${width} px`).toBe(before);
+        await poll(() => editor.page.getByRole("alert").textContent()).toContain("(got 9)");
+        expect(await stageBoxes(editor.page), `${width} px`).toBe(before);
         // the field is marked and described by the refusal (for screen readers)
         expect(await digits.getAttribute("aria-invalid")).toBe("true");
         expect(await digits.getAttribute("title")).toContain("(got 9)");
@@ -148,7 +136,7 @@ describe("the header's lines", () => {
       await digits.blur();
       await presets.selectOption("originalDemo");
       await setMessage(null);
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 });

@@ -6,29 +6,17 @@
  * and by a notice coming over a fitted view; dismissed, the view is fitted to the whole canvas again.
  * Fit once ignored them: the top rows of discs were under the notices.
  */
-import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { openEditor, type Session, screenshot } from "./harness.js";
+import { describe, expect, it } from "vitest";
+import { editorForFile, poll } from "./editorForFile.js";
+import { screenshot } from "./harness.js";
 import { noticesBottom, setNotices } from "./notices.js";
 
-const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
-
-let s: Session;
-let page: Page;
-
-beforeAll(async () => {
-  s = await openEditor({ width: 1280, height: 800 });
-  page = s.page;
-});
-
-afterAll(async () => {
-  await s?.close();
-});
+const editor = editorForFile({ width: 1280, height: 800 });
 
 /** The top of the highest disc drawn, in CSS px below the canvas's top (the view and the latest
  *  frame, as the canvas draws them; NaN before a frame). */
 function discsTop(): Promise<number> {
-  return page.evaluate(() => {
+  return editor.page.evaluate(() => {
     type Editor = {
       ui: { getState(): { view: { cy: number; scale: number } } };
       client: { latestFrame: { ids: string[]; data: Float64Array } | null };
@@ -48,7 +36,7 @@ function discsTop(): Promise<number> {
   });
 }
 
-const fit = () => page.getByRole("button", { name: "Fit", exact: true }).click();
+const fit = () => editor.page.getByRole("button", { name: "Fit", exact: true }).click();
 
 /** A column of nine discs at rest, 600 units high: the height sets a fitted view's scale. */
 const COLUMN = {
@@ -69,17 +57,17 @@ const COLUMN = {
 
 /** Loads the column through the page's editor (fitted, like a preset or a file). */
 async function loadColumn(): Promise<void> {
-  await page.evaluate(async (sc) => {
+  await editor.page.evaluate(async (sc) => {
     type PageEditor = { loadScene(scene: unknown): Promise<string | null> };
     await (window as unknown as { chapgame: PageEditor }).chapgame.loadScene(sc);
   }, COLUMN);
-  await page.getByRole("table", { name: "Bodies" }).getByLabel("c8 x", { exact: true }).waitFor();
+  await editor.page.getByRole("table", { name: "Bodies" }).getByLabel("c8 x", { exact: true }).waitFor();
 }
 
 describe("Fit and the persistent notices", () => {
   it("a fitted scene's discs are never under the notices: Fit, a scene loaded, a notice coming and going", async () => {
     try {
-      await setNotices(page, false, false);
+      await setNotices(editor.page, false, false);
       await loadColumn();
       await fit();
       // fitted to the whole canvas, the top disc is 24 px from its top: where the notices hang
@@ -89,9 +77,9 @@ describe("Fit and the persistent notices", () => {
         [false, true, "refused"],
         [true, true, "both"],
       ] as const) {
-        await setNotices(page, newer, refused);
-        await poll(() => noticesBottom(page)).toBeGreaterThan(20);
-        const covered = await noticesBottom(page);
+        await setNotices(editor.page, newer, refused);
+        await poll(() => noticesBottom(editor.page)).toBeGreaterThan(20);
+        const covered = await noticesBottom(editor.page);
         // a notice coming over the fitted view fits it again, below the notice
         await expect
           .poll(discsTop, { timeout: 15_000, interval: 50, message: `${name}: fitted again` })
@@ -100,17 +88,17 @@ describe("Fit and the persistent notices", () => {
         await poll(discsTop).toBeGreaterThanOrEqual(covered);
         // the fit's margin below them: the rest of the canvas is used
         expect(await discsTop(), name).toBeCloseTo(covered + 24, 0);
-        await screenshot(page, `notices-fit-${name}`);
+        await screenshot(editor.page, `notices-fit-${name}`);
       }
       // a scene loaded while the notices are shown is fitted below them
       await loadColumn();
-      const covered = await noticesBottom(page);
+      const covered = await noticesBottom(editor.page);
       await poll(discsTop).toBeGreaterThanOrEqual(covered);
       // dismissed: the fitted view takes the whole canvas again
-      await setNotices(page, false, false);
+      await setNotices(editor.page, false, false);
       await poll(discsTop).toBeCloseTo(24, 0);
     } finally {
-      await setNotices(page, false, false);
+      await setNotices(editor.page, false, false);
     }
   });
 
@@ -118,18 +106,18 @@ describe("Fit and the persistent notices", () => {
     try {
       await fit();
       await poll(discsTop).toBeCloseTo(24, 0);
-      const canvas = (await page.getByTestId("scene-canvas").boundingBox())!;
-      await page.mouse.move(canvas.x + canvas.width / 2, canvas.y + canvas.height / 2);
-      await page.mouse.wheel(0, -200);
+      const canvas = (await editor.page.getByTestId("scene-canvas").boundingBox())!;
+      await editor.page.mouse.move(canvas.x + canvas.width / 2, canvas.y + canvas.height / 2);
+      await editor.page.mouse.wheel(0, -200);
       // zoomed in around the centre: the top discs go above the canvas
       await poll(discsTop).toBeLessThan(0);
       const zoomed = await discsTop();
-      await setNotices(page, true, true);
-      await poll(() => noticesBottom(page)).toBeGreaterThan(20);
-      await page.waitForTimeout(300);
+      await setNotices(editor.page, true, true);
+      await poll(() => noticesBottom(editor.page)).toBeGreaterThan(20);
+      await editor.page.waitForTimeout(300);
       expect(await discsTop()).toBe(zoomed);
     } finally {
-      await setNotices(page, false, false);
+      await setNotices(editor.page, false, false);
     }
   });
 });

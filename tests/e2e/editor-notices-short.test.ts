@@ -7,29 +7,17 @@
  * still uncovered. Whole, two notices once left 69 px of a 215 px canvas at 700 x 420 (54 of 185 at
  * 844 x 390).
  */
-import type { Page } from "playwright-core";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { openEditor, type Session, screenshot } from "./harness.js";
+import { describe, expect, it } from "vitest";
+import { editorForFile, poll } from "./editorForFile.js";
+import { screenshot } from "./harness.js";
 import { newerNotice, noticesBottom, refusedNotice, setNotices } from "./notices.js";
 import { buttonUncovered } from "./stageProbes.js";
 
-const poll = <T>(fn: () => T | Promise<T>) => expect.poll(fn, { timeout: 15_000, interval: 50 });
-
-let s: Session;
-let page: Page;
-
-beforeAll(async () => {
-  s = await openEditor();
-  page = s.page;
-});
-
-afterAll(async () => {
-  await s?.close();
-});
+const editor = editorForFile();
 
 /** The page's scroll height against the window's, and the stage's scroll height against its own. */
 function scrolls(): Promise<{ page: [number, number]; stage: [number, number] }> {
-  return page.evaluate(() => {
+  return editor.page.evaluate(() => {
     const e = document.scrollingElement!;
     const st = document.querySelector("main.stage")!;
     return { page: [e.scrollHeight, e.clientHeight], stage: [st.scrollHeight, st.clientHeight] };
@@ -38,7 +26,7 @@ function scrolls(): Promise<{ page: [number, number]; stage: [number, number] }>
 
 /** Whether the Time slider's thumb end and middle are in the window and uncovered. */
 function sliderUncovered(): Promise<boolean> {
-  return page.getByRole("slider", { name: "Time" }).evaluate((el) => {
+  return editor.page.getByRole("slider", { name: "Time" }).evaluate((el) => {
     const r = el.getBoundingClientRect();
     const y = r.y + r.height / 2;
     if (r.bottom > window.innerHeight) return false;
@@ -55,39 +43,39 @@ describe("the persistent notices in a short window", () => {
         [700, 420],
         [667, 375],
       ] as const) {
-        await page.setViewportSize({ width, height });
+        await editor.page.setViewportSize({ width, height });
         for (const [newer, refused, name] of [
           [true, false, "newer"],
           [false, true, "refused"],
           [true, true, "both"],
         ] as const) {
           const at = `${width} x ${height}, ${name}`;
-          await setNotices(page, newer, refused);
+          await setNotices(editor.page, newer, refused);
           await poll(
-            async () => (await newerNotice(page).count()) + (await refusedNotice(page).count()),
+            async () => (await newerNotice(editor.page).count()) + (await refusedNotice(editor.page).count()),
           ).toBe(Number(newer) + Number(refused));
           const sc = await scrolls();
-          expect(sc.page[0], `${at}: the page fits`).toBeLessThanOrEqual(sc.page[1]);
+          expect(sc.page[0], `${at}: the editor.page fits`).toBeLessThanOrEqual(sc.page[1]);
           expect(sc.stage[0], `${at}: the stage fits`).toBeLessThanOrEqual(sc.stage[1]);
-          const canvas = (await page.getByTestId("scene-canvas").boundingBox())!.height;
-          const covered = await noticesBottom(page);
+          const canvas = (await editor.page.getByTestId("scene-canvas").boundingBox())!.height;
+          const covered = await noticesBottom(editor.page);
           expect(canvas - covered, `${at}: canvas left`).toBeGreaterThanOrEqual(Math.max(90, canvas / 2));
           for (const tool of ["Move", "Fit", "Keyboard shortcuts", "Play", "Undo"])
-            expect(await buttonUncovered(page, tool), `${at}: ${tool}`).toBe(true);
+            expect(await buttonUncovered(editor.page, tool), `${at}: ${tool}`).toBe(true);
           expect(await sliderUncovered(), `${at}: Time slider`).toBe(true);
           if (newer)
             for (const b of ["Open it", "Dismiss"])
-              expect(await buttonUncovered(newerNotice(page), b), `${at}: ${b}`).toBe(true);
+              expect(await buttonUncovered(newerNotice(editor.page), b), `${at}: ${b}`).toBe(true);
           if (refused)
             for (const b of ["Save it as a file", "Dismiss"])
-              expect(await buttonUncovered(refusedNotice(page), b), `${at}: ${b}`).toBe(true);
+              expect(await buttonUncovered(refusedNotice(editor.page), b), `${at}: ${b}`).toBe(true);
           // each notice on one line: its buttons no higher than one
-          for (const b of await page.locator(".stage-notices button").all())
+          for (const b of await editor.page.locator(".stage-notices button").all())
             expect((await b.boundingBox())!.height, `${at}: a button on one line`).toBeLessThan(30);
-          await screenshot(page, `notices-short-${name}-${width}x${height}`);
+          await screenshot(editor.page, `notices-short-${name}-${width}x${height}`);
         }
         // both shown: the refused scene's notice, cut, shown whole by More, then back by Less
-        const notice = refusedNotice(page);
+        const notice = refusedNotice(editor.page);
         const more = notice.getByRole("button", { name: "More" });
         await more.waitFor();
         const text = notice.locator(".notice-text");
@@ -101,15 +89,15 @@ describe("the persistent notices in a short window", () => {
         for (const b of ["Less", "Save it as a file", "Dismiss"])
           expect(await buttonUncovered(notice, b), `${width} x ${height} opened: ${b}`).toBe(true);
         expect(await sliderUncovered(), `${width} x ${height} opened: Time slider`).toBe(true);
-        expect(await buttonUncovered(page, "Play"), `${width} x ${height} opened: Play`).toBe(true);
-        await screenshot(page, `notices-short-more-${width}x${height}`);
+        expect(await buttonUncovered(editor.page, "Play"), `${width} x ${height} opened: Play`).toBe(true);
+        await screenshot(editor.page, `notices-short-more-${width}x${height}`);
         await less.click();
         await poll(async () => (await notice.boundingBox())!.height).toBe(oneLine);
-        await setNotices(page, false, false);
+        await setNotices(editor.page, false, false);
       }
     } finally {
-      await setNotices(page, false, false);
-      await page.setViewportSize({ width: 1400, height: 900 });
+      await setNotices(editor.page, false, false);
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 });
