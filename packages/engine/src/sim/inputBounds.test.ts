@@ -4,6 +4,7 @@
 // past TIME_MAX (only given times are bounded), and a Timeline restarts from such a time.
 import { describe, expect, it } from "vitest";
 import { type Keyframe, worldAt } from "../timeline/keyframe.js";
+import { ChainCache } from "../timeline/keyframeChain.js";
 import { MASS_MAX, MASS_MIN, TIME_MAX } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
 import { World } from "./world.js";
@@ -45,7 +46,7 @@ describe("the World's time option is at most TIME_MAX in size", () => {
       delta: null,
       zeno: w.zenoWatch(),
     } as unknown as Keyframe;
-    expect(worldAt(kf, []).time).toBe(4 * TIME_MAX);
+    expect(worldAt(kf, [], new ChainCache()).time).toBe(4 * TIME_MAX);
   });
 });
 

@@ -13,7 +13,6 @@
  */
 import { arraysFor, type BodyArrays, writeMotionAt } from "../sim/bodyArrays.js";
 import type { TimelineCore } from "./core.js";
-import { orderOf } from "./keyframeChain.js";
 import { MotionCursor } from "./motionCursor.js";
 import { STRIDE } from "./motionTable.js";
 import { requireHeadlessTime } from "./replay.js";
@@ -27,7 +26,7 @@ export class ArraysCursor {
       requireHeadlessTime(core, t, "bodyArraysAt");
       return core.world.bodyArrays(t, into);
     }
-    const order = orderOf(this.motions.seek(core, t), core.bodyIds);
+    const order = core.chains.orderOf(this.motions.seek(core, t), core.bodyIds);
     const names = core.bodyIds;
     const n = order.length;
     const idAt = (k: number) => names[order[k] as number] as string;

@@ -1,7 +1,7 @@
 /**
  * ChainIndex: what a read of a delta keyframe needs of its chain (keyframeChain.ts says what a chain
- * is), built once per chain and extended as deltas are added to it; keyframeChain.ts keeps the last
- * few used.
+ * is), built once per chain and extended as deltas are added to it; a ChainCache (keyframeChain.ts)
+ * keeps the last few a Timeline used.
  * - `members`, the chain's keyframes by depth (depth 0 the full keyframe): a read walks an array,
  *   not the `prev` links;
  * - `order`, every body number the chain ever holds (the full keyframe's and every delta's `added`)

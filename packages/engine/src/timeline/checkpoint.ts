@@ -17,7 +17,6 @@
 import type { ZenoCounters } from "../sim/zenoWatch.js";
 import type { TimelineCore } from "./core.js";
 import { type Keyframe, loadMotions, snapshotMotions, snapshotProps, worldAt } from "./keyframe.js";
-import { orderOf } from "./keyframeChain.js";
 import { deltaSince, mergeById } from "./keyframeDelta.js";
 import { MotionTable } from "./motionTable.js";
 
@@ -144,7 +143,7 @@ export function restorePoint(c: TimelineCore, kf: Keyframe, kept: number): void 
   c.view = null;
   // the spare restart point holds while the history up to it is kept (restartPoint.ts)
   if (c.spare !== null && c.spare.record > kf.record) c.spare = null;
-  c.world = kf.world !== undefined ? kf.world.clone() : worldAt(kf, c.bodyIds);
+  c.world = kf.world !== undefined ? kf.world.clone() : worldAt(kf, c.bodyIds, c.chains);
   c.records.length = kf.record;
   c.applied = kf.actionCount;
   c.actEvents.length = kf.actionCount;
@@ -154,14 +153,14 @@ export function restorePoint(c: TimelineCore, kf: Keyframe, kept: number): void 
   c.lineIds.length = kf.lineCount;
   c.pointIds.length = kf.pointCount;
   c.live = new Map();
-  const order = orderOf(kf, c.bodyIds);
+  const order = c.chains.orderOf(kf, c.bodyIds);
   for (const i of order) c.live.set(c.bodyIds[i] as string, i);
   c.sortedLive = order;
   c.liveAdded = [];
   c.lineNums = new Map(kf.lineNums);
   c.pointNums = new Map(kf.pointNums);
   c.table = new MotionTable(Math.max(16, kf.bodyCount));
-  loadMotions(kf, c.table);
+  loadMotions(kf, c.table, c.chains);
   c.atTimeLimit = kf.atTimeLimit;
   c.groupOpen = kf.afterActions;
   c.idle = false;

@@ -25,6 +25,7 @@ import {
 } from "./checkpoint.js";
 import { type Goal, satisfied } from "./goals.js";
 import type { Keyframe } from "./keyframe.js";
+import { ChainCache } from "./keyframeChain.js";
 import { MotionTable } from "./motionTable.js";
 import { K_ACTION, K_BODY_BODY, K_BODY_LINE, K_BODY_POINT, K_STOP, Records } from "./records.js";
 import type { TimelineCounts } from "./types.js";
@@ -76,6 +77,9 @@ export class TimelineCore {
   records = new Records();
   /** the keyframes taken (keyframes: the same, with an owed one taken first) */
   rawKeyframes: Keyframe[] = [];
+  /** the read caches of the delta keyframes' chains (keyframeChain.ts): this core's own, so they go
+   *  with it and no other Timeline's reads evict them; forgetBefore clears them */
+  readonly chains = new ChainCache();
   /** the keyframe owed after the last group of actions, not yet taken (checkpoint.ts) */
   owed: OwedKeyframe | null = null;
   /** A restart point that is not in the keyframe list (restartPoint.ts): the keyframe after the

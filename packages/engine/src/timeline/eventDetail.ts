@@ -66,12 +66,12 @@ function actionBodies(core: TimelineCore, i: number, table: MotionTable, kf: Key
   const after = kfs[keyframeAtRecord(kfs, end)];
   if (after === undefined || after.record !== end || after.time !== t)
     throw new Error(`timeline: no keyframe after the actions at t = ${t} (record ${i})`);
-  const nb = liveNumber(kf, core.bodyIds, id);
-  const na = liveNumber(after, core.bodyIds, id);
+  const nb = liveNumber(kf, core.bodyIds, id, core.chains);
+  const na = liveNumber(after, core.bodyIds, id, core.chains);
   let afterState: BodyState | null = null;
   if (na !== null) {
     const scratch = new MotionTable(Math.max(16, after.bodyCount));
-    loadMotions(after, scratch);
+    loadMotions(after, scratch, core.chains);
     afterState = scratch.state(na, id, t);
   }
   return [{ id, before: nb === null ? null : table.state(nb, id, t), after: afterState }];

@@ -13,13 +13,13 @@
  * action (200 measured for a giveVelocity), which a game applying one action a frame still
  * accumulates (60 actions a second: some 12 KB a second, against megabytes for the history).
  * Totals (counts, eventTotal, the log's global entry numbers) are unchanged: core.forgotten.records
- * says how many log entries were dropped.
+ * says how many log entries were dropped. The core's chain caches (keyframeChain.ts) are emptied:
+ * they know the replaced keyframe objects only, and would keep the forgotten ones reachable.
  * What the kept history refuses (reads before it, edits that would change it): kept.ts.
  */
 import { given } from "../sim/refusalText.js";
 import type { TimelineCore } from "./core.js";
 import { type Keyframe, keyframeAtOrBefore, loadMotions } from "./keyframe.js";
-import { arraysOf } from "./keyframeChain.js";
 
 /** Start of the kept history: keyframes[0]'s time (0 until something is forgotten, and without
  *  history). */
@@ -64,7 +64,7 @@ export function forgetBefore(c: TimelineCore, t: number): { start: number; dropp
     const copy: Keyframe = { ...kf, record: kf.record - n };
     const prev = kf.delta === null ? undefined : moved.get(kf.delta.prev);
     if (kf.delta !== null && prev === undefined) {
-      copy.full = arraysOf(kf, c.bodyIds, loadMotions);
+      copy.full = c.chains.arraysOf(kf, c.bodyIds, (k, t) => loadMotions(k, t, c.chains));
       copy.delta = null;
     } else if (kf.delta !== null) copy.delta = { ...kf.delta, prev: prev as Keyframe };
     moved.set(kf, copy);
@@ -75,5 +75,7 @@ export function forgetBefore(c: TimelineCore, t: number): { start: number; dropp
   c.spare = c.spare !== null && c.spare.record > n ? move(c.spare) : null;
   // a log cursor's replay position (logCursor.ts) names records by their old index: it restarts
   c.rewrites++;
+  // the chain caches know the old keyframe objects only: they could never hit again (keyframeChain.ts)
+  c.chains.clear();
   return { start: cut.time, dropped: true };
 }

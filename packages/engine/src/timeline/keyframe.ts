@@ -6,13 +6,14 @@
  * future bit for bit (World.restoreBodyMotion: addBodyMotion without the overlap check, since the
  * World's own motions may hold a pressed pair's overlap). stateAt(t) = the last keyframe at or
  * before t + the records up to t. A keyframe after a group of actions may be a delta of the one
- * before it (keyframeDelta.ts): read its order and arrays through orderOf and arraysOf (keyframeChain.ts).
+ * before it (keyframeDelta.ts): read its order and arrays through the Timeline's ChainCache
+ * (keyframeChain.ts: TimelineCore.chains), which every function here that may read a delta is given.
  */
 import type { Vec2 } from "../scene/types.js";
 import type { LineState, PointState } from "../sim/types.js";
 import { World } from "../sim/world.js";
 import type { ZenoCounters } from "../sim/zenoWatch.js";
-import { arraysOf, loadDelta, orderOf } from "./keyframeChain.js";
+import type { ChainCache } from "./keyframeChain.js";
 import { type MotionTable, STRIDE } from "./motionTable.js";
 import type { TimelineCounts } from "./types.js";
 
@@ -113,14 +114,20 @@ export function snapshotProps(table: MotionTable, order: Uint32Array): Float64Ar
 }
 
 /** Number of the live body `id` in a keyframe's order (`ids[n]` names body n), or null. */
-export function liveNumber(kf: Keyframe, ids: readonly string[], id: string): number | null {
-  for (const n of orderOf(kf, ids)) if (ids[n] === id) return n;
+export function liveNumber(
+  kf: Keyframe,
+  ids: readonly string[],
+  id: string,
+  chains: ChainCache,
+): number | null {
+  for (const n of chains.orderOf(kf, ids)) if (ids[n] === id) return n;
   return null;
 }
 
 /** Load a keyframe's motions into `table` (made large enough for kf.bodyCount bodies). */
-export function loadMotions(kf: Keyframe, table: MotionTable): void {
-  if (kf.full === null) loadDelta(kf, table, (full, marks, mark) => loadFull(full, table, marks, mark));
+export function loadMotions(kf: Keyframe, table: MotionTable, chains: ChainCache): void {
+  if (kf.full === null)
+    chains.loadDelta(kf, table, (full, marks, mark) => loadFull(full, table, marks, mark));
   else loadFull(kf, table, NO_MARKS, 0);
 }
 
@@ -156,11 +163,11 @@ function loadFull(kf: Keyframe, table: MotionTable, marks: Uint32Array, mark: nu
  * obstacles first, then the bodies in id order, then the Zeno watch. Its future equals the original
  * World's bit for bit.
  */
-export function worldAt(kf: Keyframe, ids: readonly string[]): World {
+export function worldAt(kf: Keyframe, ids: readonly string[], chains: ChainCache): World {
   const w = World.restoredAt(kf.time, kf.g, kf.gravity);
   for (const l of kf.lines) w.addLine(l.id, l.p1, l.p2, l.kind);
   for (const p of kf.points) w.addPoint(p.id, p.p);
-  const { order, motions: m, props: p } = arraysOf(kf, ids, loadMotions);
+  const { order, motions: m, props: p } = chains.arraysOf(kf, ids, (k, t) => loadMotions(k, t, chains));
   for (let k = 0; k < order.length; k++) {
     const q = k * KF_MOTION;
     w.restoreBodyMotion(ids[order[k] as number] as string, {

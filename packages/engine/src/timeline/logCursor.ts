@@ -59,7 +59,7 @@ export class LogCursor {
       this.rewrites = core.rewrites;
       this.k = start;
       this.next = (kfs[start] as Keyframe).record;
-      loadMotions(kfs[start] as Keyframe, this.table);
+      loadMotions(kfs[start] as Keyframe, this.table, core.chains);
     }
     while (this.next < from) this.step(core);
   }
@@ -71,7 +71,7 @@ export class LogCursor {
       const kf = kfs[++this.k] as Keyframe;
       // a delta of the keyframe the table holds (replayed since): its own rows (motionCursor.ts)
       if (kf.delta?.prev === kfs[this.k - 1]) patchDelta(kf, this.table);
-      else loadMotions(kf, this.table);
+      else loadMotions(kf, this.table, core.chains);
     }
     return kfs[this.k] as Keyframe;
   }

@@ -55,7 +55,7 @@ export class MotionCursor {
       this.core = core;
       this.rewrites = core.rewrites;
       this.next = kf.record;
-      loadMotions(kf, this.table);
+      loadMotions(kf, this.table, core.chains);
     }
     this.k = at;
     this.kf = kf;

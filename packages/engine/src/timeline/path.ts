@@ -104,8 +104,8 @@ export function bodyPath(core: TimelineCore, id: string, from: number, to: numbe
   let k = Math.max(0, keyframeAtOrBefore(kfs, from));
   let kf = kfs[k] as Keyframe;
   const table = new MotionTable(Math.max(16, kf.bodyCount));
-  loadMotions(kf, table);
-  let n = liveNumber(kf, core.bodyIds, id);
+  loadMotions(kf, table, core.chains);
+  let n = liveNumber(kf, core.bodyIds, id, core.chains);
   let start = from;
   const saved = new Float64Array(8);
   const out: PathPiece[] = [];
@@ -128,10 +128,11 @@ export function bodyPath(core: TimelineCore, id: string, from: number, to: numbe
       if (own !== null && own.after === n && own.row < 0) continue; // not touched
       if (n !== null) saved.set(table.data.subarray(n * STRIDE, n * STRIDE + 8));
       const before = n;
-      const load = () => (own === null ? loadMotions(kf, table) : loadOwnRow(kf, own.row, table));
+      const load = () =>
+        own === null ? loadMotions(kf, table, core.chains) : loadOwnRow(kf, own.row, table);
       table.ensure(kf.bodyCount);
       load();
-      const after = own === null ? liveNumber(kf, core.bodyIds, id) : own.after;
+      const after = own === null ? liveNumber(kf, core.bodyIds, id, core.chains) : own.after;
       if (after === before && after !== null && sameMotion(table, after, saved)) continue;
       if (before !== null) {
         // close with the motion it had: put it back for a moment

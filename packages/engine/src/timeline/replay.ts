@@ -12,7 +12,6 @@ import { lineParameter, makeLine, parameterOnLine } from "../sim/obstacles.js";
 import type { TimelineCore } from "./core.js";
 import { earliestReadable } from "./kept.js";
 import type { Keyframe } from "./keyframe.js";
-import { orderOf } from "./keyframeChain.js";
 import type { MotionCursor } from "./motionCursor.js";
 import type { MotionTable } from "./motionTable.js";
 import { K_ACTION, K_BODY_BODY, K_BODY_LINE, K_BODY_POINT, KIND_NAMES, type Records } from "./records.js";
@@ -38,7 +37,7 @@ export function stateAt(core: TimelineCore, t: number, cursor: MotionCursor): Sc
   const kf = cursor.seek(core, t);
   const scratch = cursor.table;
   const ids = core.bodyIds;
-  const bodies = Array.from(orderOf(kf, ids), (n) => scratch.state(n, ids[n] as string, t));
+  const bodies = Array.from(core.chains.orderOf(kf, ids), (n) => scratch.state(n, ids[n] as string, t));
   // copies: the keyframe's own lists rebuild Worlds (an edit in the past), so they must not be handed out
   return {
     time: t,
