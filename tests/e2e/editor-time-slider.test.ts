@@ -47,18 +47,28 @@ describe("the Time slider", () => {
     await field.fill("6000");
     await field.press("Enter");
     await expect.poll(async () => (await state()).t, { timeout: 50_000, interval: 100 }).toBe(6000);
-    await field.fill("3");
-    await field.press("Enter");
-    // an edit in the past: the history up to 6000 s is computed again, the time held at 3
-    await editor.page.getByRole("button", { name: "d0 vx", exact: true }).click();
-    await editor.page.getByRole("textbox", { name: "d0 vx", exact: true }).fill("2");
-    await editor.page.keyboard.press("Enter");
-    await poll(async () => (await state()).restoring).toBe(true);
+    // an edit in the past: the history up to 6000 s is computed again, the time held at 3; the click
+    // must land while that recomputation runs, which a loaded machine can miss (the recomputation ends
+    // first): then the edit is made again with another value, up to three times in all
     const box = (await slider.boundingBox())!;
-    // the thumb is about 16 px wide: values span [x + 8, x + width - 8]
-    await editor.page.mouse.click(box.x + 8 + (box.width - 16) * (5700 / 6000), box.y + box.height / 2);
-    const clicked = await state();
-    expect(clicked.restoring, "the recomputation was still under way").toBe(true);
+    let clicked = await state();
+    for (let attempt = 0; attempt < 3; attempt++) {
+      await field.fill("3");
+      await field.press("Enter");
+      await poll(async () => (await state()).t).toBe(3);
+      await editor.page.getByRole("button", { name: "d0 vx", exact: true }).click();
+      await editor.page.getByRole("textbox", { name: "d0 vx", exact: true }).fill(String(2 + attempt));
+      await editor.page.keyboard.press("Enter");
+      await poll(async () => (await state()).restoring).toBe(true);
+      // the thumb is about 16 px wide: values span [x + 8, x + width - 8]
+      await editor.page.mouse.click(box.x + 8 + (box.width - 16) * (5700 / 6000), box.y + box.height / 2);
+      clicked = await state();
+      if (clicked.restoring) break;
+      await expect
+        .poll(async () => (await state()).restoring, { timeout: 50_000, interval: 100 })
+        .toBe(false);
+    }
+    expect(clicked.restoring, "the recomputation was still under way (in one of three tries)").toBe(true);
     expect(Math.abs(clicked.t - 5700)).toBeLessThan(60);
     // past the progress: before the fix the time snapped back to it
     expect(clicked.t).toBeGreaterThan(clicked.horizon);
