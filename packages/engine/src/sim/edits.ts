@@ -1,12 +1,13 @@
 /**
- * The World's edits of bodies and globals (obstacles: placement.ts, obstacleUpkeep.ts), made at the current time.
- * Every edit checks its input first: invalid input throws ChapgameError naming the field, and
- * changes nothing. A body edit re-predicts the body at once unless predictions are out of date;
- * a change of globals marks them out of date (the next advance predicts every body).
+ * The World's edits of bodies and globals (obstacles: obstacleEdits.ts, checked by placement.ts,
+ * kept by obstacleUpkeep.ts), made at the current time. Every edit checks its input first: invalid
+ * input throws ChapgameError naming the field, and changes nothing. A body edit re-predicts the
+ * body at once unless predictions are out of date; a change of globals marks them out of date (the
+ * next advance predicts every body).
  */
 import { type MotionLaw, motionLaw, positionAt } from "../physics/motion.js";
 import { ChapgameError } from "./errors.js";
-import { Placement } from "./placement.js";
+import { ObstacleEdits } from "./obstacleEdits.js";
 import { gravityWithFriction, quoteId, refused } from "./refusalText.js";
 import type { BodyInit, BodyMotionInit, BodyPatch, Vec2 } from "./types.js";
 import {
@@ -28,7 +29,7 @@ import {
 
 const restoredLaw: MotionLaw = { ax: 0, ay: 0, tEnd: Number.POSITIVE_INFINITY };
 
-export class Edits extends Placement {
+export class Edits extends ObstacleEdits {
   // ---- bodies -------------------------------------------------------------------------------
 
   /**

@@ -1,6 +1,6 @@
 /**
- * What an edit of a line or point (placement.ts checks it, then calls these) does to the World's
- * lists, its grid and its predictions.
+ * What an edit of a line or point does to the World's lists, its grid and its predictions
+ * (obstacleEdits.ts calls these once placement.ts has checked the edit).
  *
  * While the predictions are up to date and the grid can keep its layout, the edit is local: a
  * segment or point is registered in, or taken out of, the cells it covers (gridObstacleEdits.ts), and
