@@ -1,31 +1,21 @@
 /**
  * World: the public face of the exact simulation (contract in docs/architecture.md): construction
- * and copies, the queries of bodies at a time, and the run loop (`advance`, `nextEventTime`).
+ * and copies, and the queries of bodies at a time, which hold only up to the next event (a later
+ * time throws ChapgameError naming `t`).
  *
- * Edits (bodies and globals: edits.ts; lines and points: placement.ts) happen at the current
- * time and are validated first: invalid input throws ChapgameError naming the field, and changes
- * nothing. `advance` processes events in time order; events exactly at `untilTime` are
- * processed.
+ * The run loop (`advance`, `nextEventTime`) is runLoop.ts's. Edits (bodies and globals: edits.ts;
+ * lines and points: obstacleEdits.ts, checked by placement.ts) happen at the current time and are
+ * validated first: invalid input throws ChapgameError naming the field, and changes nothing.
  */
 import { type BodyArrays, intoProblem, SortedSlots, writeWorldArrays } from "./bodyArrays.js";
 import { motionOf, stateOf } from "./bodyState.js";
-import { Edits } from "./edits.js";
 import { ChapgameError, SimulationError } from "./errors.js";
 import { refused } from "./refusalText.js";
-import type {
-  AdvanceLimits,
-  AdvanceResult,
-  BodyMotion,
-  BodyState,
-  Vec2,
-  WorldEvent,
-  WorldOptions,
-} from "./types.js";
-import { requireFields, requireFinite } from "./validate.js";
+import { RunLoop } from "./runLoop.js";
+import type { BodyMotion, BodyState, Vec2, WorldOptions } from "./types.js";
+import { requireFinite } from "./validate.js";
 import { checkWorldOptions } from "./worldOptions.js";
 import type { ZenoCounters } from "./zenoWatch.js";
-
-const INF = Number.POSITIVE_INFINITY;
 
 /**
  * The exact simulation at one moving instant: discs, lines, rays, segments and points, a friction
@@ -48,7 +38,7 @@ const INF = Number.POSITIVE_INFINITY;
  * world.addBody("b", { x: 5, y: 0, r: 1, m: 1 });
  * world.advance({ untilTime: 10 }, (e) => console.log(e.kind, e.time)); // bodyBody 3
  */
-export class World extends Edits {
+export class World extends RunLoop {
   /**
    * A World with no bodies or obstacles. Options: `g` (friction field, default 9.81), `gravity`
    * (default [0, 0]), `time` (default 0, at most TIME_MAX in size), `optimizations` (all on).
@@ -169,9 +159,6 @@ export class World extends Edits {
     );
   }
 
-  /** advance is running (its callback may edit the World, not advance it again). */
-  private advancing = false;
-
   /** The bodies in id order, kept between bodyArrays reads. */
   private readonly sorted = new SortedSlots();
 
@@ -186,115 +173,5 @@ export class World extends Edits {
    */
   motion(id: string): BodyMotion {
     return motionOf(this.store, this.slotOf(id));
-  }
-
-  // ---- simulation ---------------------------------------------------------------------------
-
-  /**
-   * Process collisions and stops in time order, calling `onEvent` with each (one reused object: copy
-   * what you keep), until `limits.untilTime` or after `limits.maxEvents` events, whichever comes
-   * first; with neither, until nothing is queued (then `time` is the last event's, or where the
-   * advance started when it processed none). `untilTime` is an ABSOLUTE time on this World's
-   * clock (events exactly at it are processed, then `time` becomes untilTime), unlike
-   * `Timeline.prolong({ time })`, which counts from the horizon (`Timeline.prolongTo(t)` is
-   * absolute). Bad limits throw ChapgameError (`untilTime` NaN or before `time`; `maxEvents` not a
-   * whole number >= 0 or Infinity; `onEvent` not a function) before anything changes. An event the
-   * exact model cannot process throws SimulationError: the events before it stay processed, the
-   * World's time is the failing event's (`error.time`) and advancing again throws the same.
-   * `onEvent` may edit the World (bodies, obstacles, globals): the edit acts as if this advance had
-   * stopped after that event and the edit been made before the next, bit for bit. Calling advance
-   * from `onEvent` throws ChapgameError (path `advance`). An error `onEvent` throws ends the
-   * advance and is passed on, the World left as after that event (processed, counted, `time` at
-   * it; the callback's edits before the throw kept), as maxEvents would leave it.
-   */
-  advance(limits: AdvanceLimits = {}, onEvent?: (e: WorldEvent) => void): AdvanceResult {
-    requireFields("limits", limits, ["untilTime", "maxEvents"]);
-    const untilTime = limits.untilTime ?? INF;
-    const maxEvents = limits.maxEvents ?? INF;
-    if (typeof untilTime !== "number" || Number.isNaN(untilTime))
-      throw refused("untilTime", `must be a number (a time >= the current time ${this.now})`, untilTime);
-    if (untilTime < this.now)
-      throw refused("untilTime", `must be >= the current time ${this.now}`, untilTime);
-    if (
-      typeof maxEvents !== "number" ||
-      !(maxEvents >= 0) ||
-      !(Number.isInteger(maxEvents) || maxEvents === INF)
-    )
-      throw refused("maxEvents", "must be a whole number >= 0, or Infinity", maxEvents);
-    if (onEvent !== undefined && typeof onEvent !== "function")
-      throw refused("onEvent", "must be a function called with each event", onEvent);
-    if (this.advancing)
-      throw new ChapgameError(
-        "advance",
-        "cannot be called from inside advance's onEvent callback: return from it, then advance again",
-      );
-    this.prepare();
-    let events = 0;
-    // The time of the last collision or stop processed (where this advance started: none yet).
-    let lastEventTime = this.now;
-    this.advancing = true;
-    try {
-      // Ends: each step processes a collision or stop (counted), or internal work that leads to
-      // one: a stale prediction (at most one per body event, since a prediction goes stale only
-      // when its partner's motion changed) or a cell crossing (a body crosses finitely many cells
-      // before its next event or untilTime: its path to there is bounded, and the edge cells reach
-      // to infinity, so a body flying off for ever crosses none once it is outside the grid).
-      while (events < maxEvents) {
-        const r = this.stepOnce(untilTime, onEvent);
-        if (r < 0) break;
-        events += r;
-        if (r > 0) lastEventTime = this.now;
-        // The callback edited obstacles or globals: predict again from here, as the next advance
-        // would after an edit between two advances (body edits re-predict their own body at once).
-        if (this.dirty) this.prepare();
-      }
-    } finally {
-      this.advancing = false;
-    }
-    if (events >= maxEvents && maxEvents !== INF) return { events, reason: "events" };
-    if (untilTime !== INF) this.now = untilTime;
-    else if (this.heap.size === 0 && this.now > lastEventTime) this.rewindIdle(lastEventTime);
-    return { events, reason: this.heap.size === 0 ? "idle" : "time" };
-  }
-
-  /**
-   * Time of the next collision or stop, predicted: the future, from this World's current state
-   * (+Infinity when nothing will ever happen). Not to be confused with `Timeline.nextEventTime(t)`,
-   * which looks up the next LOGGED event after t in a computed history and gives null when there
-   * is none. Throws the SimulationError that advancing to it would throw. Changes nothing observable. Costs O(1) per internal item (cell
-   * crossing, stale prediction) before that event, processed in place and undone; only while
-   * predictions are out of date (before the first advance, after an edit of globals or of an
-   * infinite line or ray, or when an edit of segments and points lays the grid out again
-   * (obstacleUpkeep.ts), or after a grid rebuild) does it cost a copy of the world and predicting
-   * every body, as the next advance will.
-   */
-  nextEventTime(): number {
-    if (!this.dirty) return this.peekEventTime();
-    const probe = this.clone();
-    let t = INF;
-    probe.advance({ maxEvents: 1 }, (e) => {
-      t = e.time;
-    });
-    return t;
-  }
-
-  /**
-   * The queue ran empty with no time limit, after internal work (cell crossings, stale predictions)
-   * later than the last event: put the clock back to that event, so that where an unbounded advance
-   * ends does not depend on the grid (a Timeline's horizon is this time, and an action between the
-   * two times is valid). Nothing moves between the two times but free flight, and motions start at
-   * events or edits, so every state holds; the grid lists bodies where the internal work left them,
-   * so the next advance rebuilds it and predicts again (markDirty), as after an obstacle edit.
-   */
-  private rewindIdle(t: number): void {
-    this.now = t;
-    this.markDirty();
-  }
-
-  private prepare(): void {
-    if (!this.dirty && !this.store.trimDue()) return; // removals alone may call for a trim (bodyStore.ts)
-    this.fitSlots();
-    this.rebuildGrid();
-    this.predictAll();
   }
 }
