@@ -10,10 +10,13 @@
  *   list: ordered, every root within 4 ulps of an exact root, no exact sign change missed between
  *   the samples; grazing (double-root) reports are accepted under their own contract
  *   (isGrazingRoot) when `grazingOk`.
+ * - `expectCertified(c, lo, hi, samples = 64)`: realRoots(c, lo, hi), asserted as expectVerified
+ *   does (no grazing reports accepted), and returned.
  */
 
 import fc from "fast-check";
 import { expect } from "vitest";
+import { realRoots } from "./realRoots.js";
 import { isGrazingRoot, verifyRoots } from "./verifyRoots.js";
 
 /** The test runner's process environment and console (the engine's build has neither Node nor DOM types). */
@@ -65,4 +68,11 @@ export function expectVerified(
     expect(check.maxUlps, `worst root ${check.worst}: ${where}`).toBeLessThanOrEqual(4);
   }
   expect(check.missed, `missed sign changes: ${where}`).toEqual([]);
+}
+
+/** Every root within 4 ulps of an exact root, sorted, inside, and no exact sign change missed. */
+export function expectCertified(c: readonly number[], lo: number, hi: number, samples = 64): number[] {
+  const roots = realRoots(c, lo, hi);
+  expectVerified(c, lo, hi, roots, samples);
+  return roots;
 }
