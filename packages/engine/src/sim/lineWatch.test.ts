@@ -7,21 +7,11 @@
 // rest within reach of it) is left to the windows.
 import { describe, expect, it } from "vitest";
 import { SimulationError } from "./errors.js";
+import { runToError } from "./testSupport.js";
 import type { BodyInit } from "./types.js";
 import { World } from "./world.js";
 
 const INF = Number.POSITIVE_INFINITY;
-
-/** Advance until the World throws (or 10 million events): the error and the events before it. */
-function runToError(w: World, maxEvents = 10_000_000): { error: unknown; events: number } {
-  let events = 0;
-  try {
-    w.advance({ maxEvents }, () => events++);
-  } catch (error) {
-    return { error, events };
-  }
-  return { error: null, events };
-}
 
 /** The in-line report naming these bodies (from P to the end), P and the end; its events. */
 function reported(

@@ -1,7 +1,8 @@
 /**
  * Helpers for the World's tests (not built, not packed): the totals a collision must keep, the
- * break of a rack of touching discs (a scene that found several rounding defects), and a pit an
- * immovable disc passes over (the trap watch's tests), and the pop order of an event queue.
+ * break of a rack of touching discs (a scene that found several rounding defects), a pit an
+ * immovable disc passes over, the run to a Zeno report and the bound on its events (the trap and
+ * line watches' tests), and the pop order of an event queue.
  */
 import fc from "fast-check";
 import type { CalendarQueue } from "./calendarQueue.js";
@@ -76,6 +77,20 @@ export function pit(gap: number): World {
   const T = 8;
   w.addBody("p", { x: T, y: apex - 0.5 * g * T * T, r: 1, m: Number.POSITIVE_INFINITY, vx: -1, vy: g * T });
   return w;
+}
+
+/** The bound the trap watch's tests assert on events before a crush is reported (measured: 256 to 2,560). */
+export const TRAP_REPORT_BOUND = 5000;
+
+/** Advance until the World throws (or `maxEvents` events): the error (null if none) and the events before it. */
+export function runToError(w: World, maxEvents = 10_000_000): { error: unknown; events: number } {
+  let events = 0;
+  try {
+    w.advance({ maxEvents }, () => events++);
+  } catch (error) {
+    return { error, events };
+  }
+  return { error: null, events };
 }
 
 // The placement checks' property tests (sim/placementIndex, scene/sceneRulesIndex): the same frames and places.

@@ -6,20 +6,10 @@
 // before it closes must not be reported.
 import { describe, expect, it } from "vitest";
 import { SimulationError } from "./errors.js";
+import { runToError } from "./testSupport.js";
 import { World } from "./world.js";
 
 const INF = Number.POSITIVE_INFINITY;
-
-/** Advance until the World throws (or 4 million events): the error and the events before it. */
-function runToError(w: World): { error: unknown; events: number } {
-  let events = 0;
-  try {
-    w.advance({ maxEvents: 4_000_000 }, () => events++);
-  } catch (error) {
-    return { error, events };
-  }
-  return { error: null, events };
-}
 
 /** A disc in the corner of a floor and a wall, P closing it along the diagonal at speed 1 at t = 3. */
 function corner(): World {
@@ -33,7 +23,7 @@ function corner(): World {
 }
 
 function expectCornerReport(w: World): number {
-  const { error, events } = runToError(w);
+  const { error, events } = runToError(w, 4_000_000);
   expect(error).toBeInstanceOf(SimulationError);
   expect((error as Error).message).toMatch(
     /^body "d" is shut in by the immovable body "p", line "(floor|wall)" and line "(floor|wall)", which close on it by t=/,
@@ -92,7 +82,7 @@ describe("another immovable disc that opens the pocket just before it closes: ne
 
   it("a disc striking a side of the pocket 1e-4 before P would close it", () => {
     // Without the striker: reported (at event 2,305).
-    const { error, events } = runToError(pocket(false));
+    const { error, events } = runToError(pocket(false), 4_000_000);
     expect((error as Error).message).toMatch(/^body "d" is shut in by the immovable body "P"/);
     expect(events).toBeLessThanOrEqual(5000);
     // With it the proof is tried and refused from then on until the strike (at event 10,133): the
