@@ -1,14 +1,15 @@
 /**
  * The state of the event-driven simulation: bodies (their current motions), obstacles, the grid,
- * the event heap, globals and counters; the motion and broad-phase helpers; and the canonical order
- * of simultaneous events. The broad phase (broadPhase.ts), prediction (predictor.ts) and processing
- * (simulator.ts) build on it.
+ * the event heap, globals and counters; and the motion helpers. The canonical order of simultaneous
+ * events, the heap's tie-break, is eventOrder.ts's. The broad phase (broadPhase.ts), prediction
+ * (predictor.ts) and processing (simulator.ts) build on it.
  *
  * Cell crossings never change a motion: the grid only decides which pairs are tested.
  */
 import { type MotionLaw, motionLaw, positionAt, velocityAt } from "../physics/motion.js";
-import { BodyStore, EV_BODY, EV_CROSS, EV_LINE, EV_POINT } from "./bodyStore.js";
+import { BodyStore } from "./bodyStore.js";
 import { CalendarQueue } from "./calendarQueue.js";
+import { eventTieLess } from "./eventOrder.js";
 import { Grid } from "./grid.js";
 import { ObstacleIndex } from "./obstacleIndex.js";
 import type { Line, Point } from "./obstacles.js";
@@ -269,33 +270,8 @@ export class SimState {
 
   // ---- canonical order of simultaneous events -----------------------------------------------
 
-  protected rankOf(s: number): number {
-    const b = this.store;
-    return (b.crossTime[s] as number) <= (b.evTime[s] as number) ? EV_CROSS : (b.evKind[s] as number);
-  }
-
-  /** The two ids that name slot s's next event canonically: [first, second]. */
-  protected eventIds(s: number, rank: number): [string, string] {
-    const b = this.store;
-    const id = b.ids[s] as string;
-    if (rank === EV_BODY) {
-      const other = b.ids[b.evOther[s] as number] as string;
-      return id < other ? [id, other] : [other, id];
-    }
-    if (rank === EV_LINE) return [id, (this.lineList[b.evOther[s] as number] as Line).id];
-    if (rank === EV_POINT) return [id, (this.pointList[b.evOther[s] as number] as Point).id];
-    return [id, ""];
-  }
-
-  /** Heap tie-break for two slots whose next events are at exactly the same time. */
+  /** Heap tie-break for two slots whose next events are at exactly the same time (eventOrder.ts). */
   protected tieLess(a: number, c: number): boolean {
-    const ra = this.rankOf(a);
-    const rc = this.rankOf(c);
-    if (ra !== rc) return ra < rc;
-    const [a1, a2] = this.eventIds(a, ra);
-    const [c1, c2] = this.eventIds(c, rc);
-    if (a1 !== c1) return a1 < c1;
-    if (a2 !== c2) return a2 < c2;
-    return (this.store.evAux[a] as number) < (this.store.evAux[c] as number);
+    return eventTieLess(this.store, this.lineList, this.pointList, a, c);
   }
 }
