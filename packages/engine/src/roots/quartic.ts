@@ -26,18 +26,12 @@
  * (quarticRefine.ts; refineRoot finishes the rare undecided cases, exact fallback included).
  * Loops are bounded (ROOTS_MAX_ITERATIONS, MAX_DEPTH); RootSolverError as newton.ts.
  *
- * Speed notes (V8): doubles pass between the hot path's modules through the typed arrays of
- * quarticRegisters.ts, never as arguments or results of calls V8 does not inline (it boxes those);
- * each module binds the registers and imported constants to module-local consts (an import is a
- * load and a check at every use). Measured on the benchmark's 4000 collision quartics on [0, 10]
- * (perf stat, 24·10⁶ calls minus an empty loop, 5 interleaved runs, load average 2.7–3.2): as one
- * module 875–895 instructions (median 878) and 370–385 cycles (median 375) per call; split as now
- * 878–897 (median 880, +0.3%) and 376–388 cycles (median 382); results bit-identical on 752,010
- * calls (bench set, property-test kinds). Written out rather than shared, because sharing measured
- * more: the de Casteljau halving here, in quarticSigns.ts's quarters and in quarticIsolate.ts
- * (a shared halving storing its halves in a typed array: +2.8% instructions; returning a bit mask
- * with double arguments: not inlined, +10%); quarticRegisters.ts's count of roots as a module
- * variable behind accessor functions (+4%; an object field is level).
+ * Speed notes (V8; measurements in README.md, Speed): doubles pass between the hot path's modules
+ * through the typed arrays of quarticRegisters.ts, never as arguments or results of calls V8 does
+ * not inline (it boxes those); each module binds the registers and imported constants to
+ * module-local consts (an import is a load and a check at every use). The de Casteljau halving is
+ * written out here, in quarticSigns.ts's quarters and in quarticIsolate.ts rather than shared, and
+ * `settle` stays one function, because sharing and splitting measured more.
  */
 
 import { ROOTS_CAUCHY_WIDENING, ROOTS_SUBDIVISION_MARGIN_GROWTH, UNIT_ROUNDOFF } from "../tolerances.js";
