@@ -1,10 +1,11 @@
 /**
  * The fast engine against the all-pairs reference simulator of the engine's tests
  * (packages/engine/test/referenceWorld.ts: every pair recomputed after every event, the seed's
- * method). That file is TypeScript test support, not part of the built package, so it and the
- * engine sources it imports are transpiled (typescript's transpileModule, no type check) into the
- * ignored bench/results/tmp/reference/. Same gas, same number of events; the event sequences are
- * compared too (kind, participants, time to 1e-12 relative).
+ * method; its contact times in referenceTimes.ts). Those files are TypeScript test support, not
+ * part of the built package, so they and the engine sources they import are transpiled
+ * (typescript's transpileModule, no type check) into the ignored bench/results/tmp/reference/.
+ * Same gas, same number of events; the event sequences are compared too (kind, participants, time
+ * to 1e-12 relative).
  */
 import { mkdirSync, readdirSync, readFileSync, statSync, writeFileSync } from "node:fs";
 import { dirname, join, relative } from "node:path";
@@ -28,7 +29,11 @@ function walk(dir, files = []) {
 }
 
 async function loadReference() {
-  const files = [...walk(join(ENGINE, "src")), join(ENGINE, "test", "referenceWorld.ts")];
+  const files = [
+    ...walk(join(ENGINE, "src")),
+    join(ENGINE, "test", "referenceWorld.ts"),
+    join(ENGINE, "test", "referenceTimes.ts"),
+  ];
   for (const f of files) {
     const js = ts.transpileModule(readFileSync(f, "utf8"), {
       compilerOptions: { module: ts.ModuleKind.ESNext, target: ts.ScriptTarget.ES2022 },

@@ -6,13 +6,14 @@
  * kernels' times are checked independently elsewhere: world.prop.test.ts measures the gap at every
  * collision from the states alone (a contact distance scaled by 1 + 1e-6 inside the time-of-impact
  * kernel passed this comparison and failed that check), and the kernels have their own exact tests.
+ * The contact times it recomputes are referenceTimes.ts's; here, the search for the earliest event
+ * (in the World's canonical order of simultaneous events) and its processing.
  */
-import { motionLaw, positionAt, velocityAt } from "../src/physics/motion.js";
+import { motionLaw } from "../src/physics/motion.js";
 import { discDiscResponse, reflectResponse } from "../src/physics/response.js";
-import { discDiscTimeScaled, discLineCrossings } from "../src/physics/timeOfImpact.js";
-import { type Line, lineParameter, makeLine, parameterOnLine } from "../src/sim/obstacles.js";
+import { type Line, makeLine } from "../src/sim/obstacles.js";
 import type { EventKind, Vec2 } from "../src/sim/types.js";
-import { CONTACT_BAND } from "../src/tolerances.js";
+import { type RefBody, refLineTime, refPairTime, refPointTime, refPos, refVelo } from "./referenceTimes.js";
 
 export interface SceneSpec {
   g: number;
@@ -27,21 +28,6 @@ export interface RefEvent {
   kind: EventKind;
   a: string;
   b: string | null;
-}
-
-interface RefBody {
-  id: string;
-  t0: number;
-  x0: number;
-  y0: number;
-  vx: number;
-  vy: number;
-  ax: number;
-  ay: number;
-  tEnd: number;
-  r: number;
-  m: number;
-  mu: number;
 }
 
 const INF = Number.POSITIVE_INFINITY;
@@ -96,99 +82,6 @@ export class ReferenceWorld {
     Object.assign(b, { t0: t, x0: x, y0: y, vx, vy, ax: law.ax, ay: law.ay, tEnd: law.tEnd });
   }
 
-  private pos(b: RefBody, t: number): [number, number] {
-    return [positionAt(b.t0, b.x0, b.vx, b.ax, t), positionAt(b.t0, b.y0, b.vy, b.ay, t)];
-  }
-
-  private velo(b: RefBody, t: number): [number, number] {
-    return [velocityAt(b.t0, b.vx, b.ax, t), velocityAt(b.t0, b.vy, b.ay, t)];
-  }
-
-  private pairTime(s: RefBody, o: RefBody): number {
-    const tb = Math.max(s.t0, o.t0);
-    const [xs, ys] = this.pos(s, tb);
-    const [xo, yo] = this.pos(o, tb);
-    const [vxs, vys] = this.velo(s, tb);
-    const [vxo, vyo] = this.velo(o, tb);
-    const hi = Math.min(s.tEnd, o.tEnd) - tb;
-    const tau = discDiscTimeScaled(
-      xo - xs,
-      yo - ys,
-      vxo - vxs,
-      vyo - vys,
-      o.ax - s.ax,
-      o.ay - s.ay,
-      s.r + o.r,
-      this.time - tb,
-      hi,
-      true,
-      Math.abs(xo - xs) * (Math.abs(vxs) + Math.abs(vxo)) +
-        Math.abs(yo - ys) * (Math.abs(vys) + Math.abs(vyo)),
-      Math.abs(xo - xs) * (Math.abs(s.ax) + Math.abs(o.ax)) +
-        Math.abs(yo - ys) * (Math.abs(s.ay) + Math.abs(o.ay)),
-      Number.NEGATIVE_INFINITY,
-    );
-    return tau === INF ? INF : Math.max(this.time, tb + tau);
-  }
-
-  private pointTime(b: RefBody, px: number, py: number): number {
-    const dx = b.x0 - px;
-    const dy = b.y0 - py;
-    // without friction, a pressed contact within the gap's rounding is resting (CONTACT_BAND)
-    const [x, y] = this.pos(b, this.time);
-    const band =
-      b.mu > 0
-        ? Number.NEGATIVE_INFINITY
-        : 2 * b.r * CONTACT_BAND * (Math.abs(x) + Math.abs(y) + Math.abs(px) + Math.abs(py) + b.r);
-    const tau = discDiscTimeScaled(
-      dx,
-      dy,
-      b.vx,
-      b.vy,
-      b.ax,
-      b.ay,
-      b.r,
-      this.time - b.t0,
-      b.tEnd - b.t0,
-      true,
-      Math.abs(dx * b.vx) + Math.abs(dy * b.vy),
-      Math.abs(dx * b.ax) + Math.abs(dy * b.ay),
-      band,
-    );
-    return tau === INF ? INF : Math.max(this.time, b.t0 + tau);
-  }
-
-  private lineTime(b: RefBody, line: Line): number {
-    const out = new Float64Array(2);
-    const lo = this.time - b.t0;
-    discLineCrossings(
-      b.x0,
-      b.y0,
-      b.vx,
-      b.vy,
-      b.ax,
-      b.ay,
-      line.x1,
-      line.y1,
-      line.nx,
-      line.ny,
-      b.r,
-      lo,
-      b.tEnd - b.t0,
-      out,
-    );
-    let best = INF;
-    for (const tau of out) {
-      if (tau >= best) continue;
-      const tc = Math.max(tau, lo); // a contact under way is now
-      const x = b.x0 + tc * (b.vx + 0.5 * b.ax * tc);
-      const y = b.y0 + tc * (b.vy + 0.5 * b.ay * tc);
-      if (line.kind !== "line" && !parameterOnLine(line.kind, lineParameter(line, x, y))) continue;
-      best = tau;
-    }
-    return best === INF ? INF : Math.max(this.time, b.t0 + best);
-  }
-
   private static before(a: Candidate, b: Candidate): boolean {
     if (a.time !== b.time) return a.time < b.time;
     if (RANK[a.kind] !== RANK[b.kind]) return RANK[a.kind] < RANK[b.kind];
@@ -218,11 +111,11 @@ export class ReferenceWorld {
       for (let j = i + 1; j < bs.length; j++) {
         const o = bs[j] as RefBody;
         const ids: [string, string] = b.id < o.id ? [b.id, o.id] : [o.id, b.id];
-        offer({ time: this.pairTime(b, o), kind: "bodyBody", body: i, other: j, aux: 0, ids });
+        offer({ time: refPairTime(b, o, this.time), kind: "bodyBody", body: i, other: j, aux: 0, ids });
       }
       this.lines.forEach((line, k) => {
         offer({
-          time: this.lineTime(b, line),
+          time: refLineTime(b, line, this.time),
           kind: "bodyLine",
           body: i,
           other: k,
@@ -231,7 +124,7 @@ export class ReferenceWorld {
         });
         if (line.kind !== "line")
           offer({
-            time: this.pointTime(b, line.x1, line.y1),
+            time: refPointTime(b, line.x1, line.y1, this.time),
             kind: "bodyLine",
             body: i,
             other: k,
@@ -240,7 +133,7 @@ export class ReferenceWorld {
           });
         if (line.kind === "segment")
           offer({
-            time: this.pointTime(b, line.x2, line.y2),
+            time: refPointTime(b, line.x2, line.y2, this.time),
             kind: "bodyLine",
             body: i,
             other: k,
@@ -250,7 +143,7 @@ export class ReferenceWorld {
       });
       this.points.forEach((p, k) => {
         offer({
-          time: this.pointTime(b, p.x, p.y),
+          time: refPointTime(b, p.x, p.y, this.time),
           kind: "bodyPoint",
           body: i,
           other: k,
@@ -272,18 +165,18 @@ export class ReferenceWorld {
       const t = c.time;
       this.time = t;
       const b = this.bodies[c.body] as RefBody;
-      const [x, y] = this.pos(b, t);
-      const [vx, vy] = this.velo(b, t);
+      const [x, y] = refPos(b, t);
+      const [vx, vy] = refVelo(b, t);
       if (c.kind === "stop") {
         this.setMotion(b, t, x, y, 0, 0);
         log.push({ time: t, kind: "stop", a: b.id, b: null });
       } else if (c.kind === "bodyBody") {
         const o = this.bodies[c.other] as RefBody;
         const [p, q] = b.id < o.id ? [b, o] : [o, b];
-        const [xp, yp] = this.pos(p, t);
-        const [xq, yq] = this.pos(q, t);
-        const [vxp, vyp] = this.velo(p, t);
-        const [vxq, vyq] = this.velo(q, t);
+        const [xp, yp] = refPos(p, t);
+        const [xq, yq] = refPos(q, t);
+        const [vxp, vyp] = refVelo(p, t);
+        const [vxq, vyq] = refVelo(q, t);
         discDiscResponse(xp, yp, vxp, vyp, p.m, xq, yq, vxq, vyq, q.m, out);
         this.setMotion(p, t, xp, yp, out[0] as number, out[1] as number);
         this.setMotion(q, t, xq, yq, out[2] as number, out[3] as number);
