@@ -5,10 +5,11 @@
  * change of the timeline posts `info` (at most every INFO_EVERY_MS while computing; the revision
  * moves only then, so frames and info always agree). A computation the engine refuses to continue
  * (a Zeno state) ends with the engine's message in `info.stopped`, the history computed so far
- * kept; so does one whose history grows past HISTORY_MAX_BYTES. While a change's later actions are checked (pendingEdit.ts) its restore job runs on: a
- * refusal takes the change back (takeBack), and once the history passes the check the change is
- * answered; a computation asked meanwhile starts once the old history is back (afterRestore).
- * How a request becomes a job (or leaves the running one alone) and the slices' budget: computeJob.ts.
+ * kept; so does one whose history grows past HISTORY_MAX_BYTES. While a change's later actions are
+ * checked (pendingEdit.ts) its restore job runs on: a refusal takes the change back (takeBack), and
+ * once the history passes the check the change is answered; a computation asked meanwhile starts
+ * once the old history is back (afterRestore). How a request becomes a job (or leaves the running
+ * one alone) and the slices' budget: computeJob.ts; the meta kept per timeline: timelineMeta.ts.
  */
 import type { SceneFile, Until } from "../engineTypes";
 import { type Job, nextBudget, planJob, targetOf } from "./computeJob";
@@ -18,6 +19,7 @@ import { PendingEdits } from "./pendingEdit";
 import type { ComputeAsk, HostMessage, TimelineInfo } from "./protocol";
 import { SeriesRecorder } from "./series";
 import type { TimelineLike } from "./timelineLike";
+import { TimelineMetas } from "./timelineMeta";
 
 /**
  * Wall-clock milliseconds one round of slices may take before the host yields to messages (a frame
@@ -53,8 +55,8 @@ export interface HostEnv {
 export class HostCompute {
   protected revision = 0;
   private docRevision = 0;
-  /** The meta set on a timeline since it was made (sceneOf; null: none). */
-  private readonly metas = new WeakMap<TimelineLike, Record<string, unknown> | null>();
+  /** The meta set on each timeline since it was made (timelineMeta.ts). */
+  private readonly metas = new TimelineMetas();
   private sentDocRevision = -1;
   private idle = false;
   private stopped: string | null = null;
@@ -239,26 +241,14 @@ export class HostCompute {
     if (this.job) this.kick();
   }
 
-  /**
-   * The scene of timeline `tl`: its own (Timeline.toScene), with the meta set on it since (op
-   * `meta`: the engine's Timeline keeps the meta of the scene it was made from). Kept per timeline,
-   * so a timeline given back (a change taken back) has its own meta again.
-   */
+  /** The scene of timeline `tl`, with the meta set on it since (timelineMeta.ts). */
   protected sceneOf(tl: TimelineLike): SceneFile {
-    const scene = tl.toScene();
-    if (!this.metas.has(tl)) return scene;
-    const meta = this.metas.get(tl) ?? null;
-    if (meta === null) delete scene.meta;
-    else scene.meta = JSON.parse(JSON.stringify(meta)) as Record<string, unknown>;
-    return scene;
+    return this.metas.sceneOf(tl);
   }
 
   /** Sets the current scene's meta (op `meta`): nothing is recomputed; the scene is sent again. */
   protected setMeta(meta: Record<string, unknown> | null): void {
-    this.metas.set(
-      this.tl,
-      meta === null ? null : (JSON.parse(JSON.stringify(meta)) as Record<string, unknown>),
-    );
+    this.metas.set(this.tl, meta);
     this.docRevision++;
     this.env.post({ type: "info", info: this.info() });
   }
