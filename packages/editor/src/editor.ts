@@ -2,8 +2,9 @@
  * Editor: the one object that turns user intentions into timeline requests. It is built in layers:
  * EditorCompute (editorCompute.ts: the TimelineClient, the UI store, messages, computing ahead),
  * EditorSession (editorSession.ts: the undo history, loading, edits as undo steps; its queue of
- * changes in sceneChanges.ts), EditorUndo (editorUndo.ts: undo and redo, also while an edit is
- * checked), EditorTime (editorTime.ts: the current time, go to, event steps, play and speed) and,
+ * changes in sceneChanges.ts), EditorRewrites (editorRewrites.ts: the scene's meta, rewrites and
+ * renames), EditorUndo (editorUndo.ts: undo and redo, also while an edit is checked), EditorTime
+ * (editorTime.ts: the current time, go to, event steps, play and speed) and,
  * here, the edits at the current time: every edit is an
  * action stamped with the current time (add, move, strike, update, delete, clear), and the removal
  * of one action of any time (an Event-log entry's). An edit of an object (move, velocity, update,

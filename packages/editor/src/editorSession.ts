@@ -1,23 +1,23 @@
 /**
- * EditorSession: the base of EditorUndo and so of Editor (editor.ts) that owns the scene session.
- * Over EditorCompute (editorCompute.ts: the TimelineClient, the UI store (time, speed,
- * selection...), messages, computing ahead) it holds the undo history (whole scenes; only edits are
- * recorded: a drag ends in one action, scrubbing, speed and selection are never recorded). It loads
- * scenes, applies edits as undo steps, undoes and redoes them (editorUndo.ts), computes ahead after
- * each (Calculation settings) and restarts a host that stopped answering. Methods that can fail
- * resolve to the engine's message (null on success) and show it in the UI. Changes of the scene
- * (loads, edits, undo, redo) run strictly one after another; each undoable change gets a ticket when
- * asked (doc/undoIntents.ts), so an Undo asked while it is still queued or checked is bound to it
- * (sceneChanges.ts). An edit, rewrite or rename refused because a later action would become invalid
- * (the engine's path `actions[i]`) also says which action that is (doc/actionRefs.ts). A load that
- * replaces the scene (undoable, not keeping the time: Clear, a preset, an opened scene) is published
- * in `replaced` (the scene before and the one loaded), so autosave can keep the scene taken away,
- * and so is an Undo or Redo of its step (autosave then keeps that scene only while it is done; the
- * steps of such loads: replacementSteps.ts).
+ * EditorSession: the base of EditorRewrites, EditorUndo and so of Editor (editor.ts) that owns the
+ * scene session. Over EditorCompute (editorCompute.ts: the TimelineClient, the UI store (time,
+ * speed, selection...), messages, computing ahead) it holds the undo history (whole scenes; only
+ * edits are recorded: a drag ends in one action, scrubbing, speed and selection are never
+ * recorded). It loads scenes, applies edits as undo steps, undoes and redoes them (editorUndo.ts),
+ * computes ahead after each (Calculation settings) and restarts a host that stopped answering.
+ * Methods that can fail resolve to the engine's message (null on success) and show it in the UI.
+ * Changes of the scene (loads, edits, undo, redo) run strictly one after another; each undoable
+ * change gets a ticket when asked (doc/undoIntents.ts), so an Undo asked while it is still queued
+ * or checked is bound to it (sceneChanges.ts). An edit refused because a later action would become
+ * invalid (the engine's path `actions[i]`) also says which action that is (doc/actionRefs.ts). The
+ * changes of the scene as a whole that keep the time (its meta, a rewrite of its actions, a rename)
+ * are editorRewrites.ts's. A load that replaces the scene (undoable, not keeping the time: Clear, a
+ * preset, an opened scene) is published in `replaced` (the scene before and the one loaded), so
+ * autosave can keep the scene taken away, and so is an Undo or Redo of its step (autosave then
+ * keeps that scene only while it is done; the steps of such loads: replacementSteps.ts).
  */
 
 import { EMPTY_HISTORY, type History, record, takenBack } from "./doc/history";
-import { type ObjectKind, renameObject } from "./doc/rename";
 import type { Intents, Ticket } from "./doc/undoIntents";
 import { EditorCompute } from "./editorCompute";
 import type { Action, SceneFile } from "./engineTypes";
@@ -52,7 +52,7 @@ export interface LoadOptions {
 export class EditorSession extends EditorCompute {
   readonly history: Store<History> = createStore<History>(EMPTY_HISTORY);
   /** The queue of scene changes and the tickets and take-backs of Undo (sceneChanges.ts). */
-  private readonly changes = new SceneChanges(this.client);
+  protected readonly changes = new SceneChanges(this.client);
   /** Undo and Redo as the user asked them, over `history`, while changes are queued (undoIntents.ts). */
   readonly intents: Store<Intents> = this.changes.intents;
   /** The undo steps of loads that replaced the scene (replacementSteps.ts). */
@@ -136,7 +136,7 @@ export class EditorSession extends EditorCompute {
    * refusal says which action the engine's `actions[i]` is (for rewrites of the current scene, whose
    * actions are in the Event log; not for a file, a paste or a preset).
    */
-  private async loadNow(
+  protected async loadNow(
     scene: SceneFile,
     options: LoadOptions,
     naming = false,
@@ -178,7 +178,7 @@ export class EditorSession extends EditorCompute {
   }
 
   /** The rest of loadScene, not queued: computing ahead. */
-  private async afterLoad(loaded: string | null, options: { keepTime?: boolean }): Promise<string | null> {
+  protected async afterLoad(loaded: string | null, options: { keepTime?: boolean }): Promise<string | null> {
     if (loaded !== null) return loaded;
     if (options.keepTime) await this.afterReload();
     else await this.computeAhead();
@@ -217,65 +217,6 @@ export class EditorSession extends EditorCompute {
     if (err !== null) return err;
     await this.ensureAhead();
     return null;
-  }
-
-  /**
-   * Replaces the scene's meta (free data for tools: its title; undefined: none) by `next` of the
-   * scene's when the change's turn comes, as one undo step. Nothing is recomputed (the history does
-   * not depend on it: client.setMeta) and the time stays. `then` runs once it is applied, before the
-   * next change (the file name a title gives).
-   */
-  async changeMeta(
-    next: (doc: SceneFile) => Record<string, unknown> | undefined,
-    then?: () => void,
-  ): Promise<string | null> {
-    return this.changes.ticketed(async () => {
-      const before = this.doc;
-      try {
-        await this.client.setMeta(next(before) ?? null);
-      } catch (e) {
-        return this.fail(e);
-      }
-      this.history.setState(record(this.history.getState(), before));
-      this.names.left(before);
-      then?.();
-      return null;
-    });
-  }
-
-  /**
-   * Replaces the action list as one undo step (renames, removing an action, other whole-scene
-   * rewrites). `scene` may be a function of the current scene, called when the change's turn comes
-   * (after the changes queued before it); one that throws refuses the rewrite with its message.
-   */
-  async rewrite(scene: SceneFile | ((doc: SceneFile) => SceneFile)): Promise<string | null> {
-    const options = { fit: false, keepTime: true };
-    const loaded = await this.changes.ticketed(async (ticket) => {
-      let next: SceneFile;
-      try {
-        next = typeof scene === "function" ? scene(this.doc) : scene;
-      } catch (e) {
-        return this.fail(e);
-      }
-      return this.loadNow(next, options, true, ticket);
-    });
-    return this.afterLoad(loaded, options);
-  }
-
-  /** Renames a body, line or point in the whole action list (one undo step). */
-  async rename(kind: ObjectKind, from: string, to: string): Promise<string | null> {
-    const options = { fit: false, keepTime: true };
-    const loaded = await this.changes.ticketed(async (ticket) => {
-      let scene: SceneFile;
-      try {
-        scene = renameObject(this.doc, kind, from, to);
-      } catch (e) {
-        return this.fail(e);
-      }
-      return this.loadNow(scene, options, true, ticket);
-    });
-    if (loaded === null) this.ui.setState({ selection: { kind, id: to } });
-    return this.afterLoad(loaded, options);
   }
 
   /**

@@ -1,5 +1,6 @@
 /**
- * EditorUndo: Undo and Redo of an Editor (editor.ts), over its EditorSession. Undo undoes the last
+ * EditorUndo: Undo and Redo of an Editor (editor.ts), over its EditorSession (and EditorRewrites,
+ * editorRewrites.ts). Undo undoes the last
  * change the user had asked for when they pressed it, and Redo redoes the last change Undo took
  * (doc/undoIntents.ts): an Undo pressed while that change is still queued or being checked is bound
  * to it. During the check of its later actions the change is taken back at once (as Cancel does)
@@ -18,10 +19,10 @@ import { type History, redo, undo } from "./doc/history";
 import { differsInMetaAlone } from "./doc/sceneTitle";
 import { selectionAfterStep } from "./doc/stepSelection";
 import { redoAsked, redoTurn, type Ticket, undoAsked, undoTurn } from "./doc/undoIntents";
-import { EditorSession } from "./editorSession";
+import { EditorRewrites } from "./editorRewrites";
 import type { SceneFile } from "./engineTypes";
 
-export class EditorUndo extends EditorSession {
+export class EditorUndo extends EditorRewrites {
   /** Scenes in Redo whose later actions were never checked (changes an Undo took back during it). */
   private readonly unchecked = new WeakSet<SceneFile>();
 
