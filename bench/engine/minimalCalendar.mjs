@@ -9,16 +9,15 @@
  * buckets of adaptive width; entries of the current bucket or earlier in a small binary "front"
  * heap; the next ring-length buckets in a ring of doubly linked lists; later ones in an overflow
  * list; rebuilt with a width estimated from the queued keys when the entries loaded per bucket
- * drift from CALENDAR_BUCKET_TARGET by more than CALENDAR_REBUILD_FACTOR (values copied from the
- * engine's tolerances).
+ * drift from their target (when, and with what width: minimalCalendarWidth.mjs, as the engine's
+ * calendarWidth.ts).
  *
  * A factory over typed arrays rather than a class, so that the loop holds its functions in
  * constants and V8 inlines the small ones (set, first, firstKey) into the hot path.
  */
+import { rebuildDue, widthFor } from "./minimalCalendarWidth.mjs";
+
 const INF = Number.POSITIVE_INFINITY;
-/** Copies of packages/engine/src/tolerances.ts (the bench does not import engine internals). */
-const CALENDAR_BUCKET_TARGET = 2;
-const CALENDAR_REBUILD_FACTOR = 4;
 /** Queue location of an item: not queued, in the front heap, in the overflow list (>= 0: ring bucket). */
 const ABSENT = -1;
 const FRONT = -2;
@@ -210,7 +209,7 @@ export function createCalendar(n) {
       cur++;
       advances++;
       if (cur >= ringEnd - ((mask + 1) >> 1)) {
-        if (adaptDue()) {
+        if (rebuildDue(advances, loaded, overScanned, queued)) {
           rebuild();
           continue;
         }
@@ -246,47 +245,7 @@ export function createCalendar(n) {
     }
   }
 
-  function adaptDue() {
-    if (advances < 64) return false;
-    const perBucket = loaded / advances;
-    return (
-      perBucket > CALENDAR_BUCKET_TARGET * CALENDAR_REBUILD_FACTOR ||
-      perBucket < CALENDAR_BUCKET_TARGET / CALENDAR_REBUILD_FACTOR ||
-      overScanned > 8 * queued + 1024
-    );
-  }
-
-  /** The k-th smallest (from 0) of a[0..m), reordering a (Hoare selection). */
-  function select(a, m, k) {
-    let lo = 0;
-    let hi = m - 1;
-    while (lo < hi) {
-      const p = a[(lo + hi) >> 1];
-      let i = lo;
-      let j = hi;
-      while (i <= j) {
-        while (a[i] < p) i++;
-        while (a[j] > p) j--;
-        if (i <= j) {
-          const t = a[i];
-          a[i] = a[j];
-          a[j] = t;
-          i++;
-          j--;
-        }
-      }
-      if (k <= j) hi = j;
-      else if (k >= i) lo = i;
-      else break;
-    }
-    return a[k];
-  }
-
-  /**
-   * Re-place every entry with a width from the queued keys (CALENDAR_BUCKET_TARGET entries per
-   * bucket if the keys are spread like an exponential: median spread 0.69 tau) and a ring of
-   * about two buckets per entry.
-   */
+  /** Re-place every entry with a width from the queued keys (widthFor) and a ring of about two buckets per entry. */
   function rebuild() {
     rebuilds++;
     let m = 0;
@@ -299,8 +258,7 @@ export function createCalendar(n) {
       allKeys[i] = k;
       if (k < lo) lo = k;
     }
-    const spread = m > 0 ? select(allKeys, m, m >> 1) - lo : 0;
-    const nw = (CALENDAR_BUCKET_TARGET * spread) / (0.69 * Math.max(1, m));
+    const nw = widthFor(allKeys, m, lo);
     if (nw > 0 && Number.isFinite(1 / nw)) {
       bw = nw;
       invW = 1 / nw;

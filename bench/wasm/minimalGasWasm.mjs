@@ -1,8 +1,8 @@
 /**
  * The WebAssembly twin of minimalGas.mjs: compiles bench/wasm/assembly/minimalGas.ts (the entry)
- * and the calendar.ts it imports with AssemblyScript (a bench devDependency) in memory, -O3, no
- * runtime GC, and wraps it in the same
- * interface as createMinimalGas: advance(count), time(). Compiling takes about a second; the
+ * and the calendar.ts (with calendarWidth.ts) it imports with AssemblyScript (a bench devDependency)
+ * in memory, -O3, no runtime GC, and wraps it in the same interface as createMinimalGas:
+ * advance(count), time(). Compiling takes about a second; the
  * module is compiled once per process.
  */
 import { readFileSync } from "node:fs";
@@ -12,7 +12,7 @@ import { fileURLToPath } from "node:url";
 const DIR = join(dirname(fileURLToPath(import.meta.url)), "assembly");
 /** The entry file (its exports are the module's) and the files it imports. */
 const ENTRY = "minimalGas.ts";
-const SOURCES = [ENTRY, "calendar.ts"];
+const SOURCES = [ENTRY, "calendar.ts", "calendarWidth.ts"];
 let compiled = null;
 
 async function compile() {

@@ -4,11 +4,12 @@
  * estimates and rebuilds, the same arithmetic in the same order, so items come out in the same
  * (key, item index) order bit for bit. Items 0..n-1, each queued at most once; keys must be >= the
  * key of the last item returned by first(). Module state (one queue per instance); the loop
- * imports reset, setKey, first and firstKey, which Binaryen inlines where they are small.
+ * imports reset, setKey, first and firstKey, which Binaryen inlines where they are small. When to
+ * rebuild and with what width: calendarWidth.ts.
  */
+import { rebuildDue, widthFor } from "./calendarWidth";
+
 const INF: f64 = Infinity;
-const CALENDAR_BUCKET_TARGET: f64 = 2;
-const CALENDAR_REBUILD_FACTOR: f64 = 4;
 const ABSENT: i32 = -1;
 const FRONT: i32 = -2;
 const OVERFLOW: i32 = -3;
@@ -218,7 +219,7 @@ function refill(): bool {
     cur++;
     advances++;
     if (cur >= ringEnd - <f64>((mask + 1) >> 1)) {
-      if (adaptDue()) {
+      if (rebuildDue(advances, loaded, overScanned, queued)) {
         rebuild();
         continue;
       }
@@ -252,40 +253,6 @@ function pullOverflow(): void {
     s = after;
   }
 }
-function adaptDue(): bool {
-  if (advances < 64) return false;
-  const perBucket = <f64>loaded / <f64>advances;
-  return (
-    perBucket > CALENDAR_BUCKET_TARGET * CALENDAR_REBUILD_FACTOR ||
-    perBucket < CALENDAR_BUCKET_TARGET / CALENDAR_REBUILD_FACTOR ||
-    overScanned > 8 * queued + 1024
-  );
-}
-function select(m: i32, k: i32): f64 {
-  const a = allKeys;
-  let lo = 0;
-  let hi = m - 1;
-  while (lo < hi) {
-    const p = unchecked(a[(lo + hi) >> 1]);
-    let i = lo;
-    let j = hi;
-    while (i <= j) {
-      while (unchecked(a[i]) < p) i++;
-      while (unchecked(a[j]) > p) j--;
-      if (i <= j) {
-        const t = unchecked(a[i]);
-        unchecked((a[i] = unchecked(a[j])));
-        unchecked((a[j] = t));
-        i++;
-        j--;
-      }
-    }
-    if (k <= j) hi = j;
-    else if (k >= i) lo = i;
-    else break;
-  }
-  return unchecked(a[k]);
-}
 function rebuild(): void {
   let m = 0;
   for (let i = 0; i < fn; i++) unchecked((allSlots[m++] = unchecked(fslots[i])));
@@ -298,8 +265,7 @@ function rebuild(): void {
     unchecked((allKeys[i] = k));
     if (k < lo) lo = k;
   }
-  const spread: f64 = m > 0 ? select(m, m >> 1) - lo : 0;
-  const nw = (CALENDAR_BUCKET_TARGET * spread) / (0.69 * <f64>max(1, m));
+  const nw = widthFor(allKeys, m, lo);
   if (nw > 0 && 1 / nw < INF) {
     invW = 1 / nw;
   }
