@@ -17,27 +17,23 @@ import { writeFileSync } from "node:fs";
 import { cpus, loadavg } from "node:os";
 import { join } from "node:path";
 import { dilutedGas } from "@chapgame/engine";
-import type { Page } from "playwright-core";
-import { afterAll, beforeAll, it } from "vitest";
-import { ARTIFACTS, openEditor, type Session, screenshot } from "./harness.js";
+import { afterAll, it } from "vitest";
+import { editorForFile } from "./editorForFile.js";
+import { ARTIFACTS, screenshot } from "./harness.js";
 import { assertProductionBuild, loadScene, type PageWindow } from "./pageEditor.js";
 
-let s: Session;
-let page: Page;
+const editor = editorForFile({ width: 1400, height: 900, afterOpen: assertProductionBuild });
 const results: Record<string, unknown> = {};
 
-beforeAll(async () => {
-  s = await openEditor({ width: 1400, height: 900 });
-  page = s.page;
-  assertProductionBuild();
-});
-
-afterAll(async () => {
+afterAll(() => {
   results.machine = { cpus: cpus().length, loadAverage1min: loadavg()[0] };
   writeFileSync(join(ARTIFACTS, "editor-perf.json"), `${JSON.stringify(results, null, 2)}\n`);
   console.log(JSON.stringify(results, null, 2));
-  await s?.close();
 });
+
+/** The page's editor's snapshot of its worker's computation (horizon, events, history size). */
+const snapshot = () =>
+  editor.page.evaluate(() => (window as unknown as PageWindow).chapgame.client.getSnapshot());
 
 /** play: from t = 0; extend: from 2.5 s before the horizon (auto-extend computes while playing). */
 type Mode = "play" | "extend" | "scrub";
@@ -56,7 +52,7 @@ const RUNS = Number(process.env.MEASURE_RUNS ?? 3);
  */
 async function sampleOnce(ms: number, mode: Mode) {
   const load = loadavg()[0];
-  const r = await page.evaluate(
+  const r = await editor.page.evaluate(
     async ({ ms, mode, DROPPED_GAP_MS }) => {
       const w = window as unknown as PageWindow;
       const ed = w.chapgame;
@@ -159,19 +155,19 @@ async function sample(ms: number, mode: Mode) {
 it("plays 2,000 moving discs", async () => {
   const scene = dilutedGas({ n: 2000, packing: 0.1, seed: 7 });
   const computeMs = await loadScene(
-    page,
+    editor.page,
     scene,
     { useTime: true, seconds: 20, useEvents: false, autoExtend: true },
     300_000,
   );
-  const info = await page.evaluate(() => (window as unknown as PageWindow).chapgame.client.getSnapshot());
+  const info = await snapshot();
   results.play2000 = {
     bodies: 2000,
     computeAheadMs: computeMs,
     eventsIn20s: info.eventCount,
     ...(await sample(6000, "play")),
   };
-  await screenshot(page, "perf-2000-discs");
+  await screenshot(editor.page, "perf-2000-discs");
 });
 
 it("plays 2,000 moving discs across the horizon (computing ahead while playing)", async () => {
@@ -181,30 +177,30 @@ it("plays 2,000 moving discs across the horizon (computing ahead while playing)"
 it("plays 20,000 moving discs", async () => {
   const scene = dilutedGas({ n: 20_000, packing: 0.1, seed: 7 });
   const computeMs = await loadScene(
-    page,
+    editor.page,
     scene,
     { useTime: true, seconds: 20, useEvents: false, autoExtend: true },
     600_000,
   );
-  const info = await page.evaluate(() => (window as unknown as PageWindow).chapgame.client.getSnapshot());
+  const info = await snapshot();
   results.play20000 = {
     bodies: 20_000,
     computeAheadMs: computeMs,
     eventsIn20s: info.eventCount,
     ...(await sample(6000, "play")),
   };
-  await screenshot(page, "perf-20000-discs");
+  await screenshot(editor.page, "perf-20000-discs");
 });
 
 it("scrubs a timeline with 10^6 recorded events", async () => {
   const scene = dilutedGas({ n: 1000, packing: 0.3, seed: 3 });
   const computeMs = await loadScene(
-    page,
+    editor.page,
     scene,
     { useTime: false, useEvents: true, events: 1_000_000, autoExtend: false },
     600_000,
   );
-  const info = await page.evaluate(() => (window as unknown as PageWindow).chapgame.client.getSnapshot());
+  const info = await snapshot();
   results.scrub1e6 = {
     bodies: 1000,
     events: info.eventCount,
@@ -212,12 +208,12 @@ it("scrubs a timeline with 10^6 recorded events", async () => {
     computeMs,
     ...(await sample(6000, "scrub")),
   };
-  await screenshot(page, "perf-scrub-1e6");
+  await screenshot(editor.page, "perf-scrub-1e6");
 });
 
 /** A bare page drawing n circles per frame in one path (the machine's ceiling under its current load). */
 async function bareCanvas(n: number) {
-  const other = await s.context.newPage();
+  const other = await editor.session.context.newPage();
   await other.setContent('<canvas id="c" width="1000" height="800"></canvas>');
   const load = loadavg()[0];
   const bare = await other.evaluate(
