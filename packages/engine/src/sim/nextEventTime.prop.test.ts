@@ -14,19 +14,13 @@ import fc from "fast-check";
 import { afterAll, describe, expect, it, type MockInstance, vi } from "vitest";
 import { bits } from "../../test/eventDigest.js";
 import { apply, build, type Op, opArb, sceneArb, sideOf } from "../../test/latticeWorld.js";
+import { seedFor } from "../timeline/testSupport.js";
 import { Simulator } from "./simulator.js";
 import { World } from "./world.js";
 
 const INF = Number.POSITIVE_INFINITY;
 
 const RUNS = Number(process.env.RUNS ?? 100);
-function seedFor(name: string): number {
-  // A fixed default keeps CI reproducible; set FC_SEED to explore others.
-  const seed = Number(process.env.FC_SEED || process.env.SEED || 20261122); // FC_SEED, as every property test (SEED still works)
-  console.log(`${name}: seed ${seed} (set FC_SEED to change)`);
-  return seed;
-}
-
 /** What nextEventTime should answer: the time of the event a copy processes first (or its error). */
 function expectedPeek(w: World): unknown {
   const c = w.clone();

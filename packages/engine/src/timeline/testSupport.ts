@@ -115,10 +115,10 @@ export function expectSameKept(tl: Timeline, twin: Timeline, times: readonly num
   expect(kept).toStrictEqual(all.slice(skipped.length));
 }
 
-/** A property's fast-check seed, printed with `name` (fixed by default so CI is reproducible; set
+/** A property's fast-check seed, printed with `name` (`fixed` by default so CI is reproducible; set
  *  FC_SEED to explore others; SEED still works). */
-export function seedFor(name: string): number {
-  const seed = Number(process.env.FC_SEED || process.env.SEED || 20261122);
+export function seedFor(name: string, fixed = 20261122): number {
+  const seed = Number(process.env.FC_SEED || process.env.SEED || fixed);
   console.log(`${name}: seed ${seed} (set FC_SEED to change)`);
   return seed;
 }
