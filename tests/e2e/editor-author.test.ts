@@ -7,17 +7,10 @@
 import type { JSHandle, Page } from "playwright-core";
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
+import { LONELY } from "./editorScenes.js";
 import { screenshot } from "./harness.js";
 
 const editor = editorForFile();
-
-const LONELY = {
-  format: "chapgame",
-  version: 1,
-  g: 9.81,
-  gravity: [0, 0],
-  actions: [{ time: 0, type: "addBody", id: "lonely", x: 0, y: 0, r: 1, m: 1 }],
-};
 
 type PageEditor = {
   doc: { actions: unknown[] };

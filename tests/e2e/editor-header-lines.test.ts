@@ -11,20 +11,16 @@
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
 import { screenshot } from "./harness.js";
+import { longRefusal, showMessage } from "./messages.js";
 import { buttonUncovered, stageBoxes } from "./stageProbes.js";
+import { forEachWindowSize } from "./windowSize.js";
 
 const editor = editorForFile();
 
 /** Shows `text` in the message bar as the editor does (null: takes the message down). */
-const setMessage = (text: string | null) =>
-  editor.page.evaluate((t) => {
-    type Ui = { ui: { setState(s: { message: { text: string; tone: "error" } | null }): void } };
-    (window as unknown as { chapgame: Ui }).chapgame.ui.setState({
-      message: t === null ? null : { text: t, tone: "error" },
-    });
-  }, text);
+const setMessage = (text: string | null) => showMessage(editor.page, text);
 
-const LONG = `${"A refused edit whose explanation runs over several lines of the header. ".repeat(6)}end`;
+const LONG = longRefusal(6);
 
 /** The header's lines, top to bottom, each as the class names (or tags) of the items on it, and the
  *  boxes of the header, the toolbar, the canvas and the side column (top, bottom, left, right). */
@@ -54,9 +50,10 @@ function headerLayout() {
 
 describe("the header's lines", () => {
   it("from 1000 to 1920 px every line holds a control; from 1100 px the header is one line and the canvas right under it", async () => {
-    try {
-      for (const width of [1000, 1027, 1100, 1200, 1280, 1382, 1399, 1400, 1920]) {
-        await editor.page.setViewportSize({ width, height: 900 });
+    await forEachWindowSize(
+      editor.page,
+      [1000, 1027, 1100, 1200, 1280, 1382, 1399, 1400, 1920].map((width) => [width, 900] as const),
+      async (width) => {
         await setMessage(null);
         const at = `${width} px`;
         const l = await headerLayout();
@@ -71,44 +68,46 @@ describe("the header's lines", () => {
         expect(l.toolbar.top, at).toBe(l.header.bottom);
         expect(l.canvas.top, at).toBe(l.toolbar.bottom);
         await screenshot(editor.page, `header-lines-${width}`);
-      }
-    } finally {
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
-    }
+      },
+    );
   });
 
   it("a message, short or long, never moves the stage; where the slot is narrow it hangs over the side column, not the toolbar", async () => {
     try {
-      for (const width of [1001, 1100, 1200, 1280, 1399, 1400, 1920]) {
-        await editor.page.setViewportSize({ width, height: 900 });
-        await setMessage(null);
-        const at = `${width} px`;
-        const before = await stageBoxes(editor.page);
-        const l = await headerLayout();
-        for (const text of ['x: must be a number (got "abc")', LONG]) {
-          await setMessage(text);
-          const message = editor.page.getByRole("alert");
-          await poll(() => message.textContent()).toContain(text.slice(-3));
-          expect(await stageBoxes(editor.page), `${at}: ${text.slice(0, 20)}`).toBe(before);
-          expect(await buttonUncovered(editor.page, "Dismiss message"), `${at}: ✕`).toBe(true);
-          const m = (await message.boundingBox())!;
-          expect(m.x + m.width, at).toBeLessThanOrEqual(width);
-          // on the header's line (a long one hangs down from it), or under the header over the side
-          // column, never over the stage; a short one, or one over the side column, leaves every
-          // tool uncovered (up to 1026 px the slot is on the presets' line, over the stage's right)
-          if (m.y >= l.header.bottom)
-            expect(m.x, `${at}: under the header, over the side column`).toBeGreaterThanOrEqual(l.side.left);
-          if (text !== LONG || m.x >= l.side.left)
-            for (const name of ["Move", "Point", "Fit", "Keyboard shortcuts"])
-              expect(await buttonUncovered(editor.page, name), `${at}: ${name}`).toBe(true);
-        }
-        await screenshot(editor.page, `header-lines-message-${width}`);
-        await editor.page.getByRole("button", { name: "Dismiss message" }).click();
-        expect(await stageBoxes(editor.page), `${at}: dismissed`).toBe(before);
-      }
+      await forEachWindowSize(
+        editor.page,
+        [1001, 1100, 1200, 1280, 1399, 1400, 1920].map((width) => [width, 900] as const),
+        async (width) => {
+          await setMessage(null);
+          const at = `${width} px`;
+          const before = await stageBoxes(editor.page);
+          const l = await headerLayout();
+          for (const text of ['x: must be a number (got "abc")', LONG]) {
+            await setMessage(text);
+            const message = editor.page.getByRole("alert");
+            await poll(() => message.textContent()).toContain(text.slice(-3));
+            expect(await stageBoxes(editor.page), `${at}: ${text.slice(0, 20)}`).toBe(before);
+            expect(await buttonUncovered(editor.page, "Dismiss message"), `${at}: ✕`).toBe(true);
+            const m = (await message.boundingBox())!;
+            expect(m.x + m.width, at).toBeLessThanOrEqual(width);
+            // on the header's line (a long one hangs down from it), or under the header over the side
+            // column, never over the stage; a short one, or one over the side column, leaves every
+            // tool uncovered (up to 1026 px the slot is on the presets' line, over the stage's right)
+            if (m.y >= l.header.bottom)
+              expect(m.x, `${at}: under the header, over the side column`).toBeGreaterThanOrEqual(
+                l.side.left,
+              );
+            if (text !== LONG || m.x >= l.side.left)
+              for (const name of ["Move", "Point", "Fit", "Keyboard shortcuts"])
+                expect(await buttonUncovered(editor.page, name), `${at}: ${name}`).toBe(true);
+          }
+          await screenshot(editor.page, `header-lines-message-${width}`);
+          await editor.page.getByRole("button", { name: "Dismiss message" }).click();
+          expect(await stageBoxes(editor.page), `${at}: dismissed`).toBe(before);
+        },
+      );
     } finally {
       await setMessage(null);
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 
@@ -116,27 +115,29 @@ describe("the header's lines", () => {
     const presets = editor.page.getByRole("combobox", { name: "Preset" });
     const digits = editor.page.getByRole("spinbutton", { name: "Digits of π" });
     try {
-      for (const width of [1001, 1200, 1400, 1600, 1920]) {
-        await editor.page.setViewportSize({ width, height: 900 });
-        await presets.selectOption("galperin");
-        await digits.fill("4");
-        await digits.blur();
-        await setMessage(null);
-        const before = await stageBoxes(editor.page);
-        await digits.fill("9");
-        await digits.blur();
-        await poll(() => editor.page.getByRole("alert").textContent()).toContain("(got 9)");
-        expect(await stageBoxes(editor.page), `${width} px`).toBe(before);
-        // the field is marked and described by the refusal (for screen readers)
-        expect(await digits.getAttribute("aria-invalid")).toBe("true");
-        expect(await digits.getAttribute("title")).toContain("(got 9)");
-      }
+      await forEachWindowSize(
+        editor.page,
+        [1001, 1200, 1400, 1600, 1920].map((width) => [width, 900] as const),
+        async (width) => {
+          await presets.selectOption("galperin");
+          await digits.fill("4");
+          await digits.blur();
+          await setMessage(null);
+          const before = await stageBoxes(editor.page);
+          await digits.fill("9");
+          await digits.blur();
+          await poll(() => editor.page.getByRole("alert").textContent()).toContain("(got 9)");
+          expect(await stageBoxes(editor.page), `${width} px`).toBe(before);
+          // the field is marked and described by the refusal (for screen readers)
+          expect(await digits.getAttribute("aria-invalid")).toBe("true");
+          expect(await digits.getAttribute("title")).toContain("(got 9)");
+        },
+      );
     } finally {
       await digits.fill("4");
       await digits.blur();
       await presets.selectOption("originalDemo");
       await setMessage(null);
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 });

@@ -9,6 +9,7 @@ import { writeFileSync } from "node:fs";
 import { join } from "node:path";
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
+import { LONELY } from "./editorScenes.js";
 import { ARTIFACTS, screenshot } from "./harness.js";
 
 const editor = editorForFile();
@@ -36,14 +37,6 @@ async function open(url: string) {
 function shareCode(scene: unknown): string {
   return Buffer.from(JSON.stringify(scene), "utf8").toString("base64url");
 }
-
-const LONELY = {
-  format: "chapgame",
-  version: 1,
-  g: 9.81,
-  gravity: [0, 0],
-  actions: [{ time: 0, type: "addBody", id: "lonely", x: 0, y: 0, r: 1, m: 1 }],
-};
 
 describe("keeping work", () => {
   it("an edit survives a reload that comes right after it (autosave flushed when the page goes)", async () => {

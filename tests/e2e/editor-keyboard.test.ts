@@ -8,7 +8,9 @@
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
 import { currentTime, screenshot } from "./harness.js";
+import { LOAD_NOTICE, showMessage } from "./messages.js";
 import { loadPresetOn } from "./presets.js";
+import { forEachWindowSize, withWindowSize } from "./windowSize.js";
 
 const editor = editorForFile({
   afterOpen: (session) => loadPresetOn(session.page, "Bouncing balls", "ball1"),
@@ -120,14 +122,15 @@ describe("buttons pressed from the keyboard keep the focus", () => {
 
 describe("the time bar in view", () => {
   it("at 800 x 600 the Time slider and Play are in view without scrolling; larger windows keep them", async () => {
-    try {
-      for (const [width, height] of [
+    await forEachWindowSize(
+      editor.page,
+      [
         [800, 600],
         [1024, 700],
         [1400, 900],
         [390, 844],
-      ] as const) {
-        await editor.page.setViewportSize({ width, height });
+      ],
+      async (width, height) => {
         await editor.page.evaluate(() => window.scrollTo(0, 0));
         for (const target of [
           editor.page.getByRole("slider", { name: "Time" }),
@@ -142,23 +145,18 @@ describe("the time bar in view", () => {
         expect(c.height, `${width} x ${height}`).toBeGreaterThanOrEqual(200);
         expect(await editor.page.evaluate(() => window.scrollY)).toBe(0);
         if (width === 800) await screenshot(editor.page, "keyboard-800x600");
-      }
-      // a message (one after every load and undo) takes lines in a narrow header: the canvas gives
-      // them up, Play stays in view
-      await editor.page.setViewportSize({ width: 800, height: 600 });
-      await editor.page.evaluate(() => {
-        type Ui = { ui: { setState(s: { message: { text: string; tone: "info" } | null }): void } };
-        const text = "Loaded the preset Bouncing balls (gravity). Undo returns to the scene you had.";
-        (window as unknown as { chapgame: Ui }).chapgame.ui.setState({ message: { text, tone: "info" } });
-      });
+      },
+    );
+    // a message (one after every load and undo) takes lines in a narrow header: the canvas gives
+    // them up, Play stays in view
+    await withWindowSize(editor.page, 800, 600, async () => {
+      await showMessage(editor.page, LOAD_NOTICE, "info");
       await poll(() => editor.page.locator(".message").count()).toBe(1);
       for (const name of ["Play", "Next event"]) {
         const box = (await editor.page.getByRole("button", { name, exact: true }).boundingBox())!;
         expect(box.y + box.height, name).toBeLessThanOrEqual(600);
       }
-    } finally {
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
-    }
+    });
   });
 });
 

@@ -12,8 +12,10 @@
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
 import { screenshot } from "./harness.js";
+import { LOAD_NOTICE, showMessage } from "./messages.js";
 import { loadPresetOn } from "./presets.js";
 import { buttonUncovered } from "./stageProbes.js";
+import { forEachWindowSize } from "./windowSize.js";
 
 const editor = editorForFile({
   afterOpen: (session) => loadPresetOn(session.page, "Billiards break", "ball15"),
@@ -56,12 +58,13 @@ function pageScroll(): Promise<[number[], number[]]> {
 
 describe("wide windows", () => {
   it("the Speed panel keeps a panel's width and Time takes the rest of the line; the side panels keep their column's", async () => {
-    try {
-      for (const [width, height] of [
+    await forEachWindowSize(
+      editor.page,
+      [
         [1920, 1080],
         [2560, 1440],
-      ] as const) {
-        await editor.page.setViewportSize({ width, height });
+      ],
+      async (width, height) => {
         await poll(async () => (await panelBox("Time")).width).toBeGreaterThan(width / 3);
         const speed = await panelBox("Speed");
         const time = await panelBox("Time");
@@ -84,19 +87,18 @@ describe("wide windows", () => {
         ])
           expect((await panelBox(title)).width, title).toBeLessThanOrEqual(560);
         await screenshot(editor.page, `layout-wide-${width}x${height}`);
-      }
-    } finally {
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
-    }
+      },
+    );
   });
 });
 
 describe("the Time slider in a wide window", () => {
   it("from 1280 to 1920 px it spans the stage, Speed under Time, and nothing overflows", async () => {
-    try {
-      let last = 0;
-      for (const width of [1280, 1400, 1600, 1760, 1920]) {
-        await editor.page.setViewportSize({ width, height: 900 });
+    let last = 0;
+    await forEachWindowSize(
+      editor.page,
+      [1280, 1400, 1600, 1760, 1920].map((width) => [width, 900] as const),
+      async (width) => {
         const slider = async () =>
           (await editor.page.getByRole("slider", { name: "Time" }).boundingBox())!.width;
         await poll(slider).toBeGreaterThan(last);
@@ -124,22 +126,21 @@ describe("the Time slider in a wide window", () => {
           expect(await inView(name), name).toBe(true);
         last = now;
         await screenshot(editor.page, `layout-time-slider-${width}`);
-      }
-    } finally {
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
-    }
+      },
+    );
   });
 });
 
 describe("a phone on its side", () => {
   it("the page fits the window, the stage without scrolling inside itself: the canvas shrinks, the time bar is in view, the side panels scroll inside their column", async () => {
-    try {
-      for (const [width, height] of [
+    await forEachWindowSize(
+      editor.page,
+      [
         [844, 390],
         [740, 360],
         [667, 375],
-      ] as const) {
-        await editor.page.setViewportSize({ width, height });
+      ],
+      async (width, height) => {
         const at = `${width} x ${height}`;
         await poll(pageScroll).toEqual([
           [width, height],
@@ -174,11 +175,7 @@ describe("a phone on its side", () => {
           [width, height],
         ]);
         // a message takes its lines above the side panels: the page still fits
-        await editor.page.evaluate(() => {
-          type Ui = { ui: { setState(s: { message: { text: string; tone: "info" } | null }): void } };
-          const text = "Loaded the preset Bouncing balls (gravity). Undo returns to the scene you had.";
-          (window as unknown as { chapgame: Ui }).chapgame.ui.setState({ message: { text, tone: "info" } });
-        });
+        await showMessage(editor.page, LOAD_NOTICE, "info");
         await poll(() => editor.page.getByRole("status").filter({ hasText: "Undo returns" }).count()).toBe(1);
         expect(await pageScroll()).toEqual([
           [width, height],
@@ -190,9 +187,7 @@ describe("a phone on its side", () => {
         await side.evaluate((el) => {
           el.scrollTop = 0;
         });
-      }
-    } finally {
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
-    }
+      },
+    );
   });
 });

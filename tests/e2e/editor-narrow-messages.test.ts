@@ -10,7 +10,9 @@
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
 import { screenshot } from "./harness.js";
-import { stageBoxes as probeStageBoxes } from "./stageProbes.js";
+import { longRefusal, showMessage, type Tone } from "./messages.js";
+import { centreUncovered, stageBoxes as probeStageBoxes } from "./stageProbes.js";
+import { forEachWindowSize, withWindowSize } from "./windowSize.js";
 
 const editor = editorForFile();
 
@@ -18,21 +20,11 @@ const editor = editorForFile();
  *  below the stage), as one string to compare ("x y width height" each). */
 const stageBoxes = () => probeStageBoxes(editor.page);
 
-type Tone = "error" | "info";
 /** Shows `text` in the message bar as the editor does (null: takes the message down). */
-const setMessage = (text: string | null, tone: Tone = "error") =>
-  editor.page.evaluate(
-    ([t, tone]) => {
-      type Ui = { ui: { setState(s: { message: { text: string; tone: Tone } | null }): void } };
-      (window as unknown as { chapgame: Ui }).chapgame.ui.setState({
-        message: t === null ? null : { text: t, tone },
-      });
-    },
-    [text, tone] as const,
-  );
+const setMessage = (text: string | null, tone: Tone = "error") => showMessage(editor.page, text, tone);
 
 const shownMessage = () => editor.page.locator(".message > span").textContent();
-const LONG = `${"A refused edit whose explanation runs over several lines of the header. ".repeat(6)}end`;
+const LONG = longRefusal(6);
 const WIDTHS = [
   [700, 800],
   [900, 700],
@@ -42,8 +34,7 @@ const WIDTHS = [
 describe("messages never move the stage", () => {
   it("at 700, 900 and 1280 px: refusals, notices, long ones, two at once and those of a computation", async () => {
     try {
-      for (const [width, height] of WIDTHS) {
-        await editor.page.setViewportSize({ width, height });
+      await forEachWindowSize(editor.page, WIDTHS, async (width, height) => {
         await editor.page.getByRole("combobox", { name: "Preset" }).selectOption("originalDemo");
         await setMessage(null);
         const at = `${width} x ${height}`;
@@ -101,16 +92,14 @@ describe("messages never move the stage", () => {
         await editor.page.getByRole("button", { name: "Undo", exact: true }).click();
         await bodies.getByLabel("A id", { exact: true }).waitFor();
         await setMessage(null);
-      }
+      });
     } finally {
       await editor.page.getByRole("combobox", { name: "Preset" }).selectOption("originalDemo");
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 
   it("up to 1000 px a long message keeps to its line, More shows it whole over the stage, Less and ✕ take it back", async () => {
-    await editor.page.setViewportSize({ width: 900, height: 700 });
-    try {
+    await withWindowSize(editor.page, 900, 700, async () => {
       await setMessage(null);
       const before = await stageBoxes();
       await setMessage(LONG);
@@ -121,10 +110,7 @@ describe("messages never move the stage", () => {
       expect(await more.getAttribute("aria-expanded")).toBe("false");
       expect((await alert.boundingBox())!.height).toBeLessThanOrEqual(30);
       const uncovered = (name: string) =>
-        editor.page.getByRole("button", { name, exact: true }).evaluate((el) => {
-          const r = el.getBoundingClientRect();
-          return el.contains(document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2));
-        });
+        centreUncovered(editor.page.getByRole("button", { name, exact: true }));
       for (const name of ["Fit", "Point", "More", "Dismiss message"])
         expect(await uncovered(name), name).toBe(true);
       await more.click();
@@ -146,8 +132,6 @@ describe("messages never move the stage", () => {
       await poll(() => editor.page.getByRole("button", { name: /^(More|Less)$/ }).count()).toBe(0);
       await editor.page.getByRole("button", { name: "Dismiss message" }).click();
       expect(await stageBoxes()).toBe(before);
-    } finally {
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
-    }
+    });
   });
 });

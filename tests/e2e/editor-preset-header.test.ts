@@ -8,6 +8,7 @@ import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
 import { screenshot } from "./harness.js";
 import { stageBoxes as probeStageBoxes } from "./stageProbes.js";
+import { forEachWindowSize, withWindowSize } from "./windowSize.js";
 
 const editor = editorForFile();
 
@@ -23,37 +24,38 @@ describe("the Preset list", () => {
     expect(ids).toContain("galperin");
     const header = async () => (await editor.page.locator("header.header").boundingBox())!.height;
     try {
-      for (const [width, height] of [
-        [390, 844],
-        [700, 800],
-        [800, 600],
-        [1000, 700],
-        [1280, 800],
-        [1400, 900],
-        [1920, 1080],
-      ] as const) {
-        await editor.page.setViewportSize({ width, height });
-        await presets.selectOption("originalDemo");
-        await poll(() => editor.page.getByRole("spinbutton", { name: "Digits of π" }).count()).toBe(0);
-        const before = [await header(), await stageBoxes()];
-        for (const id of ids) {
-          await presets.selectOption(id);
-          expect([await header(), await stageBoxes()], `${width} x ${height}: ${id}`).toEqual(before);
-        }
-        // Galperin's digits field is there, and nothing overflows sideways
-        await presets.selectOption("galperin");
-        await editor.page.getByRole("spinbutton", { name: "Digits of π" }).waitFor();
-        expect(await editor.page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(
-          width,
-        );
-        if (width === 700) await screenshot(editor.page, "preset-header-galperin-700");
-      }
+      await forEachWindowSize(
+        editor.page,
+        [
+          [390, 844],
+          [700, 800],
+          [800, 600],
+          [1000, 700],
+          [1280, 800],
+          [1400, 900],
+          [1920, 1080],
+        ],
+        async (width, height) => {
+          await presets.selectOption("originalDemo");
+          await poll(() => editor.page.getByRole("spinbutton", { name: "Digits of π" }).count()).toBe(0);
+          const before = [await header(), await stageBoxes()];
+          for (const id of ids) {
+            await presets.selectOption(id);
+            expect([await header(), await stageBoxes()], `${width} x ${height}: ${id}`).toEqual(before);
+          }
+          // Galperin's digits field is there, and nothing overflows sideways
+          await presets.selectOption("galperin");
+          await editor.page.getByRole("spinbutton", { name: "Digits of π" }).waitFor();
+          expect(await editor.page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(
+            width,
+          );
+          if (width === 700) await screenshot(editor.page, "preset-header-galperin-700");
+        },
+      );
       // the header at 700 px is its two lines (the message slot beside the presets), as before Galperin
-      await editor.page.setViewportSize({ width: 700, height: 800 });
-      await poll(header).toBeLessThan(100);
+      await withWindowSize(editor.page, 700, 800, () => poll(header).toBeLessThan(100));
     } finally {
       await presets.selectOption("originalDemo");
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 });

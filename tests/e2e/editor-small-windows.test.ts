@@ -9,7 +9,10 @@
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
 import { screenshot } from "./harness.js";
+import { longRefusal, showMessage } from "./messages.js";
 import { loadPresetOn } from "./presets.js";
+import { centreUncovered } from "./stageProbes.js";
+import { forEachWindowSize, withWindowSize } from "./windowSize.js";
 
 const editor = editorForFile();
 
@@ -18,22 +21,13 @@ const loadPreset = (title: string, id: string) => loadPresetOn(editor.page, titl
 
 describe("messages and small windows", () => {
   it("a message, however long, never moves the canvas; a long one hangs over the stage and can be dismissed", async () => {
-    await editor.page.setViewportSize({ width: 1280, height: 800 });
-    try {
+    await withWindowSize(editor.page, 1280, 800, async () => {
       const canvasTop = async () => (await editor.page.getByTestId("scene-canvas").boundingBox())!.y;
-      const setMessage = (text: string | null) =>
-        editor.page.evaluate((t) => {
-          type Ui = { ui: { setState(s: { message: { text: string; tone: "error" } | null }): void } };
-          (window as unknown as { chapgame: Ui }).chapgame.ui.setState({
-            message: t === null ? null : { text: t, tone: "error" },
-          });
-        }, text);
-      await setMessage(null);
+      await showMessage(editor.page, null);
       const before = await canvasTop();
-      await setMessage("short");
+      await showMessage(editor.page, "short");
       expect(await canvasTop()).toBe(before);
-      const long = `${"A refused edit whose explanation runs over several lines of the header. ".repeat(8)}end`;
-      await setMessage(long);
+      await showMessage(editor.page, longRefusal(8));
       const alert = editor.page.getByRole("alert");
       await poll(async () => (await alert.textContent())?.includes("end")).toBe(true);
       expect(await canvasTop()).toBe(before);
@@ -41,27 +35,16 @@ describe("messages and small windows", () => {
       expect((await alert.boundingBox())!.height).toBeGreaterThan(40);
       await screenshot(editor.page, "14-long-message");
       const dismiss = editor.page.getByRole("button", { name: "Dismiss message" });
-      const onTop = await dismiss.evaluate((el) => {
-        const r = el.getBoundingClientRect();
-        return el.contains(document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2));
-      });
-      expect(onTop).toBe(true);
+      expect(await centreUncovered(dismiss)).toBe(true);
       await dismiss.click();
       await poll(() => alert.count()).toBe(0);
       expect(await canvasTop()).toBe(before);
-    } finally {
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
-    }
+    });
   });
 
   it("in an 800 x 600 window a long message keeps to its line in the header: the toolbar stays usable", async () => {
-    await editor.page.setViewportSize({ width: 800, height: 600 });
-    try {
-      const long = `${"A refused edit whose explanation runs over several lines of the header. ".repeat(4)}end`;
-      await editor.page.evaluate((t) => {
-        type Ui = { ui: { setState(s: { message: { text: string; tone: "error" } | null }): void } };
-        (window as unknown as { chapgame: Ui }).chapgame.ui.setState({ message: { text: t, tone: "error" } });
-      }, long);
+    await withWindowSize(editor.page, 800, 600, async () => {
+      await showMessage(editor.page, longRefusal(4));
       await poll(async () => (await editor.page.getByRole("alert").textContent())?.includes("end")).toBe(
         true,
       );
@@ -76,28 +59,23 @@ describe("messages and small windows", () => {
                 .getByRole("toolbar", { name: "Tools" })
                 .getByRole("button", { name: /^Delete(: |$)/ })
             : editor.page.getByRole("button", { name, exact: true });
-        const reachable = await button.evaluate((el) => {
-          const r = el.getBoundingClientRect();
-          return el.contains(document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2));
-        });
-        expect(reachable, `${name} is not covered`).toBe(true);
+        expect(await centreUncovered(button), `${name} is not covered`).toBe(true);
       }
       await editor.page.getByRole("button", { name: "Dismiss message" }).click();
       expect((await editor.page.getByTestId("scene-canvas").boundingBox())!.y).toBe(canvasTop);
-    } finally {
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
-    }
+    });
   });
 
   it("small windows keep the canvas, the Time slider and every time and speed control usable; nothing overflows sideways", async () => {
     await loadPreset("Billiards break", "ball15");
-    try {
-      for (const [width, height] of [
+    await forEachWindowSize(
+      editor.page,
+      [
         [1024, 700],
         [800, 600],
         [390, 844],
-      ] as const) {
-        await editor.page.setViewportSize({ width, height });
+      ],
+      async (width, height) => {
         // the scene is fitted again to the smaller canvas (the view was never moved by hand)
         await poll(() => bodiesOutsideCanvas()).toBe(0);
         // no sideways scrolling (at 390 px the Speed panel was once 4 px too wide)
@@ -117,24 +95,14 @@ describe("messages and small windows", () => {
           "Play",
           "+0.1: faster",
         ]) {
-          // the toolbar's Delete names what it removes ("Delete: body b1") when something is selected
-          const button =
-            name === "Delete"
-              ? editor.page
-                  .getByRole("toolbar", { name: "Tools" })
-                  .getByRole("button", { name: /^Delete(: |$)/ })
-              : editor.page.getByRole("button", { name, exact: true });
+          const button = editor.page.getByRole("button", { name, exact: true });
           await button.scrollIntoViewIfNeeded();
           const box = (await button.boundingBox())!;
           expect(box.x).toBeGreaterThanOrEqual(0);
           expect(box.x + box.width).toBeLessThanOrEqual(width);
           // nothing covers it and it is not squeezed onto several lines
           expect(box.height).toBeLessThan(30);
-          const onTop = await button.evaluate((el) => {
-            const r = el.getBoundingClientRect();
-            return el.contains(document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2));
-          });
-          expect(onTop).toBe(true);
+          expect(await centreUncovered(button)).toBe(true);
         }
         // nor with the longest header (Galperin's digits field shown next to the presets list)
         const presets = editor.page.getByRole("combobox", { name: "Preset" });
@@ -146,30 +114,24 @@ describe("messages and small windows", () => {
         await presets.selectOption(chosen);
         await editor.page.evaluate(() => window.scrollTo(0, 0));
         await screenshot(editor.page, `13-window-${width}x${height}`);
-      }
-    } finally {
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
-    }
+      },
+    );
   });
 });
 
 describe("the Time slider in a stacked window", () => {
   it("from 700 to 900 px it widens with the window: Speed does not squeeze it (it was 766 px at 800, 412 at 850)", async () => {
-    try {
-      let last = 0;
-      for (let width = 700; width <= 900; width += 25) {
-        await editor.page.setViewportSize({ width, height: 700 });
-        const slider = () => editor.page.getByRole("slider", { name: "Time" }).boundingBox();
-        await poll(async () => (await slider())!.width).toBeGreaterThan(last);
-        const now = (await slider())!.width;
-        // the whole line but the panel's and the bar's margins
-        expect(now, `${width} px`).toBeGreaterThanOrEqual(width - 50);
-        last = now;
-      }
-      await screenshot(editor.page, "13-window-900-time-bar");
-    } finally {
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
-    }
+    let last = 0;
+    const widths = Array.from({ length: 9 }, (_, i) => [700 + 25 * i, 700] as const); // 700 to 900 px
+    await forEachWindowSize(editor.page, widths, async (width) => {
+      const slider = () => editor.page.getByRole("slider", { name: "Time" }).boundingBox();
+      await poll(async () => (await slider())!.width).toBeGreaterThan(last);
+      const now = (await slider())!.width;
+      // the whole line but the panel's and the bar's margins
+      expect(now, `${width} px`).toBeGreaterThanOrEqual(width - 50);
+      last = now;
+    });
+    await screenshot(editor.page, "13-window-900-time-bar");
   });
 });
 

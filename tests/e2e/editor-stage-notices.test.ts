@@ -10,6 +10,7 @@ import { editorForFile, poll } from "./editorForFile.js";
 import { screenshot } from "./harness.js";
 import { newerNotice, refusedNotice, setNotices as showNotices } from "./notices.js";
 import { buttonUncovered, stageBoxes as probeStageBoxes } from "./stageProbes.js";
+import { forEachWindowSize } from "./windowSize.js";
 
 const editor = editorForFile();
 
@@ -40,49 +41,51 @@ function toolbarAndNotices(): Promise<[number, number]> {
 describe("the persistent notices", () => {
   it("at 700, 1280 and 1600 px they hang over the canvas under the toolbar: the stage never moves, every button stays usable", async () => {
     try {
-      for (const [width, height] of [
-        [700, 800],
-        [1280, 800],
-        [1600, 900],
-      ] as const) {
-        const at = `${width} x ${height}`;
-        await editor.page.setViewportSize({ width, height });
-        await setNotices(false, false);
-        await poll(() => NEWER().count()).toBe(0);
-        const before = await stageBoxes();
-        for (const [newer, refused, name] of [
-          [true, false, "newer"],
-          [false, true, "refused"],
-          [true, true, "both"],
-        ] as const) {
-          await setNotices(newer, refused);
-          await poll(async () => (await NEWER().count()) + (await REFUSED().count())).toBe(
-            Number(newer) + Number(refused),
-          );
-          expect(await stageBoxes(), `${at}: ${name}`).toBe(before);
-          const [toolbarBottom, noticeTop] = await toolbarAndNotices();
-          expect(noticeTop, `${at}: ${name} under the toolbar`).toBeGreaterThanOrEqual(toolbarBottom);
-          for (const tool of ["Move", "Point", "Fit", "Keyboard shortcuts"])
-            expect(await uncovered(tool), `${at}: ${name}, ${tool}`).toBe(true);
-          if (newer)
-            for (const b of ["Open it", "Dismiss"])
-              expect(await uncovered(b, NEWER()), `${at}: ${b}`).toBe(true);
-          if (refused)
-            for (const b of ["Save it as a file", "Dismiss"])
-              expect(await uncovered(b, REFUSED()), `${at}: ${b}`).toBe(true);
-          await screenshot(editor.page, `stage-notices-${name}-${width}`);
-        }
-        // dismissed one after the other, by their own buttons: the stage stays
-        await NEWER().getByRole("button", { name: "Dismiss" }).click();
-        await poll(() => NEWER().count()).toBe(0);
-        expect(await stageBoxes(), `${at}: newer work dismissed`).toBe(before);
-        await REFUSED().getByRole("button", { name: "Dismiss" }).click();
-        await poll(() => REFUSED().count()).toBe(0);
-        expect(await stageBoxes(), `${at}: refused scene dismissed`).toBe(before);
-      }
+      await forEachWindowSize(
+        editor.page,
+        [
+          [700, 800],
+          [1280, 800],
+          [1600, 900],
+        ],
+        async (width, height) => {
+          const at = `${width} x ${height}`;
+          await setNotices(false, false);
+          await poll(() => NEWER().count()).toBe(0);
+          const before = await stageBoxes();
+          for (const [newer, refused, name] of [
+            [true, false, "newer"],
+            [false, true, "refused"],
+            [true, true, "both"],
+          ] as const) {
+            await setNotices(newer, refused);
+            await poll(async () => (await NEWER().count()) + (await REFUSED().count())).toBe(
+              Number(newer) + Number(refused),
+            );
+            expect(await stageBoxes(), `${at}: ${name}`).toBe(before);
+            const [toolbarBottom, noticeTop] = await toolbarAndNotices();
+            expect(noticeTop, `${at}: ${name} under the toolbar`).toBeGreaterThanOrEqual(toolbarBottom);
+            for (const tool of ["Move", "Point", "Fit", "Keyboard shortcuts"])
+              expect(await uncovered(tool), `${at}: ${name}, ${tool}`).toBe(true);
+            if (newer)
+              for (const b of ["Open it", "Dismiss"])
+                expect(await uncovered(b, NEWER()), `${at}: ${b}`).toBe(true);
+            if (refused)
+              for (const b of ["Save it as a file", "Dismiss"])
+                expect(await uncovered(b, REFUSED()), `${at}: ${b}`).toBe(true);
+            await screenshot(editor.page, `stage-notices-${name}-${width}`);
+          }
+          // dismissed one after the other, by their own buttons: the stage stays
+          await NEWER().getByRole("button", { name: "Dismiss" }).click();
+          await poll(() => NEWER().count()).toBe(0);
+          expect(await stageBoxes(), `${at}: newer work dismissed`).toBe(before);
+          await REFUSED().getByRole("button", { name: "Dismiss" }).click();
+          await poll(() => REFUSED().count()).toBe(0);
+          expect(await stageBoxes(), `${at}: refused scene dismissed`).toBe(before);
+        },
+      );
     } finally {
       await setNotices(false, false);
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
     }
   });
 });

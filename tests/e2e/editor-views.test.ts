@@ -8,6 +8,8 @@ import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
 import { screenshot, scrubTo, waitFor } from "./harness.js";
 import { loadPresetOn } from "./presets.js";
+import { centreUncovered } from "./stageProbes.js";
+import { withWindowSize } from "./windowSize.js";
 
 const editor = editorForFile();
 
@@ -75,11 +77,7 @@ describe("editor views", () => {
         const box = (await cell.boundingBox())!;
         expect(box.x + box.width, name).toBeLessThanOrEqual(scroller.x + scroller.width);
         // and nothing (the sticky delete column) covers it
-        const onTop = await cell.evaluate((el) => {
-          const r = el.getBoundingClientRect();
-          return el.contains(document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2));
-        });
-        expect(onTop, name).toBe(true);
+        expect(await centreUncovered(cell), name).toBe(true);
       }
     };
     await inView(["big m", "big mu", "Delete big"]);
@@ -90,8 +88,7 @@ describe("editor views", () => {
     // (columns are as wide as their widest value: any row in view shows whether they fit)
     await inView(["ball1 mu", "Delete ball1"]);
     // 200 discs of six-digit values in a 1280 × 800 window (the delete column covered m and μ)
-    await editor.page.setViewportSize({ width: 1280, height: 800 });
-    try {
+    await withWindowSize(editor.page, 1280, 800, async () => {
       await loadPreset("Dilute gas", "d0");
       await inView(["d0 x", "d0 vx", "d0 vy", "d0 speed", "d0 r", "d0 m", "d0 mu", "Delete d0"]);
       // narrower than its columns (a 400 px window), the table scrolls sideways to every column
@@ -107,9 +104,7 @@ describe("editor views", () => {
       await scroller.evaluate((el) => {
         el.scrollLeft = 0;
       });
-    } finally {
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
-    }
+    });
   });
 
   it("a body selected from the Event log is scrolled into view in the Bodies table, the focus left on the log", async () => {

@@ -48,6 +48,9 @@ export function ensureBuilt(): void {
   });
 }
 
+/** The window size openEditor opens with (CSS px), when not given another. */
+export const DEFAULT_WINDOW = { width: 1400, height: 900 } as const;
+
 export interface Session {
   url: string;
   context: BrowserContext;
@@ -72,7 +75,10 @@ export async function openEditor(options: { width?: number; height?: number } = 
       "--disable-component-update",
       "--disable-sync",
     ],
-    viewport: { width: options.width ?? 1400, height: options.height ?? 900 },
+    viewport: {
+      width: options.width ?? DEFAULT_WINDOW.width,
+      height: options.height ?? DEFAULT_WINDOW.height,
+    },
   });
   const page = context.pages()[0] ?? (await context.newPage());
   await page.goto(server.url);

@@ -1,7 +1,7 @@
 /**
  * Layout probes the editor's end-to-end tests share: where the stage and its canvas are (to tell
  * whether something moved them), and whether a button can be clicked where it shows (its centre in
- * the window, and nothing covering it there).
+ * the window, and nothing covering it there), or whether any element is uncovered at its centre.
  */
 import type { Locator, Page } from "playwright-core";
 
@@ -26,5 +26,14 @@ export function buttonUncovered(scope: Page | Locator, name: string): Promise<bo
     const y = r.y + r.height / 2;
     if (x < 0 || y < 0 || x > window.innerWidth || y > window.innerHeight) return false;
     return el.contains(document.elementFromPoint(x, y));
+  });
+}
+
+/** Whether the element `target` locates is the element at its own centre (or holds it): nothing
+ *  covers it there. A centre outside the window has no element, so it counts as covered. */
+export function centreUncovered(target: Locator): Promise<boolean> {
+  return target.evaluate((el) => {
+    const r = el.getBoundingClientRect();
+    return el.contains(document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2));
   });
 }
