@@ -16,11 +16,10 @@
 import { writeFileSync } from "node:fs";
 import { cpus, loadavg } from "node:os";
 import { join } from "node:path";
-import { dilutedGas } from "@chapgame/engine";
 import { afterAll, it } from "vitest";
 import { editorForFile } from "./editorForFile.js";
 import { ARTIFACTS, screenshot } from "./harness.js";
-import { assertProductionBuild, loadScene, type PageWindow } from "./pageEditor.js";
+import { assertProductionBuild, loadPlayingGas, loadScrubbedHistory, type PageWindow } from "./pageEditor.js";
 
 const editor = editorForFile({ width: 1400, height: 900, afterOpen: assertProductionBuild });
 const results: Record<string, unknown> = {};
@@ -152,22 +151,22 @@ async function sample(ms: number, mode: Mode) {
   };
 }
 
-it("plays 2,000 moving discs", async () => {
-  const scene = dilutedGas({ n: 2000, packing: 0.1, seed: 7 });
-  const computeMs = await loadScene(
-    editor.page,
-    scene,
-    { useTime: true, seconds: 20, useEvents: false, autoExtend: true },
-    300_000,
-  );
+/** Plays `n` moving discs from t = 0 (loaded and computed 20 s ahead first) and samples it. */
+async function playingGas(n: number, timeoutMs: number) {
+  const computeMs = await loadPlayingGas(editor.page, n, timeoutMs);
   const info = await snapshot();
-  results.play2000 = {
-    bodies: 2000,
+  const played = {
+    bodies: n,
     computeAheadMs: computeMs,
     eventsIn20s: info.eventCount,
     ...(await sample(6000, "play")),
   };
-  await screenshot(editor.page, "perf-2000-discs");
+  await screenshot(editor.page, `perf-${n}-discs`);
+  return played;
+}
+
+it("plays 2,000 moving discs", async () => {
+  results.play2000 = await playingGas(2000, 300_000);
 });
 
 it("plays 2,000 moving discs across the horizon (computing ahead while playing)", async () => {
@@ -175,31 +174,11 @@ it("plays 2,000 moving discs across the horizon (computing ahead while playing)"
 });
 
 it("plays 20,000 moving discs", async () => {
-  const scene = dilutedGas({ n: 20_000, packing: 0.1, seed: 7 });
-  const computeMs = await loadScene(
-    editor.page,
-    scene,
-    { useTime: true, seconds: 20, useEvents: false, autoExtend: true },
-    600_000,
-  );
-  const info = await snapshot();
-  results.play20000 = {
-    bodies: 20_000,
-    computeAheadMs: computeMs,
-    eventsIn20s: info.eventCount,
-    ...(await sample(6000, "play")),
-  };
-  await screenshot(editor.page, "perf-20000-discs");
+  results.play20000 = await playingGas(20_000, 600_000);
 });
 
 it("scrubs a timeline with 10^6 recorded events", async () => {
-  const scene = dilutedGas({ n: 1000, packing: 0.3, seed: 3 });
-  const computeMs = await loadScene(
-    editor.page,
-    scene,
-    { useTime: false, useEvents: true, events: 1_000_000, autoExtend: false },
-    600_000,
-  );
+  const computeMs = await loadScrubbedHistory(editor.page, 600_000);
   const info = await snapshot();
   results.scrub1e6 = {
     bodies: 1000,

@@ -10,12 +10,11 @@
  */
 import { writeFileSync } from "node:fs";
 import { join } from "node:path";
-import { dilutedGas } from "@chapgame/engine";
 import { afterAll, it } from "vitest";
 import { profileCpu } from "./cpuProfiles.js";
 import { editorForFile } from "./editorForFile.js";
 import { ARTIFACTS } from "./harness.js";
-import { assertProductionBuild, loadScene, type PageWindow } from "./pageEditor.js";
+import { assertProductionBuild, loadPlayingGas, loadScrubbedHistory, type PageWindow } from "./pageEditor.js";
 import { traceTimeline } from "./timelineTrace.js";
 
 const editor = editorForFile({ width: 1400, height: 900, afterOpen: assertProductionBuild });
@@ -62,31 +61,16 @@ function sample(ms: number, mode: "play" | "scrub") {
 }
 
 it("profiles playing 2,000 moving discs", async () => {
-  await loadScene(
-    editor.page,
-    dilutedGas({ n: 2000, packing: 0.1, seed: 7 }),
-    { useTime: true, seconds: 20, useEvents: false, autoExtend: true },
-    300_000,
-  );
+  await loadPlayingGas(editor.page, 2000, 300_000);
   await profileAndTrace("play2000", () => sample(5000, "play"));
 });
 
 it("profiles playing 20,000 moving discs", async () => {
-  await loadScene(
-    editor.page,
-    dilutedGas({ n: 20_000, packing: 0.1, seed: 7 }),
-    { useTime: true, seconds: 20, useEvents: false, autoExtend: true },
-    600_000,
-  );
+  await loadPlayingGas(editor.page, 20_000, 600_000);
   await profileAndTrace("play20000", () => sample(5000, "play"));
 });
 
 it("profiles scrubbing 10^6 recorded events", async () => {
-  await loadScene(
-    editor.page,
-    dilutedGas({ n: 1000, packing: 0.3, seed: 3 }),
-    { useTime: false, useEvents: true, events: 1_000_000, autoExtend: false },
-    600_000,
-  );
+  await loadScrubbedHistory(editor.page, 600_000);
   await profileAndTrace("scrub1e6", () => sample(5000, "scrub"));
 });

@@ -1,9 +1,10 @@
 /**
  * The part of the page's `window.chapgame` (the Editor) and `window.chapgameStats` that the
- * in-browser measurements and profiles use, and loading a scene through it.
+ * in-browser measurements and profiles use, loading a scene through it, and the scenes they load.
  */
 import { readdirSync, readFileSync } from "node:fs";
 import { join } from "node:path";
+import { dilutedGas } from "@chapgame/engine";
 import type { Page } from "playwright-core";
 import { DIST } from "./harness.js";
 
@@ -76,4 +77,27 @@ export async function loadScene(
     { timeout: timeoutMs, polling: 200 },
   );
   return Date.now() - start;
+}
+
+/**
+ * Loads `n` moving discs (a dilute gas: packing 0.1, seed 7), computed 20 s ahead and extended
+ * while playing (ms taken, as loadScene).
+ */
+export function loadPlayingGas(page: Page, n: number, timeoutMs: number): Promise<number> {
+  return loadScene(
+    page,
+    dilutedGas({ n, packing: 0.1, seed: 7 }),
+    { useTime: true, seconds: 20, useEvents: false, autoExtend: true },
+    timeoutMs,
+  );
+}
+
+/** Loads 1,000 discs (a dilute gas: packing 0.3, seed 3) with 10^6 events computed (ms taken). */
+export function loadScrubbedHistory(page: Page, timeoutMs: number): Promise<number> {
+  return loadScene(
+    page,
+    dilutedGas({ n: 1000, packing: 0.3, seed: 3 }),
+    { useTime: false, useEvents: true, events: 1_000_000, autoExtend: false },
+    timeoutMs,
+  );
 }
