@@ -3,7 +3,9 @@
  * view (the selected body's whole computed path; a note says when no body is selected, or where a
  * path too long to draw whole was cut), delete (greyed out but keeping the focus when nothing is
  * selected: FocusKeptButton), and ? (the Keyboard shortcuts dialog). Each tool's
- * title names its digit key (shortcuts.ts).
+ * title names its digit key (shortcuts.ts). Velocity and Segment carry a short label too ("Vel.",
+ * "Seg."), drawn instead of the whole word only where the toolbar would otherwise wrap
+ * (styles/toolbar.css); their accessible name is the whole word at every width.
  */
 import { useEditor, useUi } from "../EditorContext";
 import type { Tool } from "../store/uiStore";
@@ -11,18 +13,20 @@ import { toolKey } from "../tools";
 import { formatNumber } from "./EditableCell";
 import { FocusKeptButton } from "./FocusKeptButton";
 
-const TOOLS: { tool: Tool; label: string; title: string }[] = [
+/** A tool's button: its label (its accessible name), its tooltip, and optionally the label drawn
+ *  where the toolbar is short of room (a prefix of the label, so the name still says what is seen). */
+const TOOLS: { tool: Tool; label: string; title: string; short?: string }[] = [
   {
     tool: "move",
     label: "Move",
     title: "Select; drag a disc to move it; drag empty space to pan (Shift+drag: velocity)",
   },
-  { tool: "velocity", label: "Velocity", title: "Drag from a disc to set its velocity" },
+  { tool: "velocity", label: "Velocity", short: "Vel.", title: "Drag from a disc to set its velocity" },
   { tool: "cue", label: "Cue", title: "Click a disc to strike it away from the click point" },
   { tool: "disc", label: "Disc", title: "Click to add a disc" },
   { tool: "line", label: "Line", title: "Drag to add an infinite line" },
   { tool: "ray", label: "Ray", title: "Drag to add a ray" },
-  { tool: "segment", label: "Segment", title: "Drag to add a segment" },
+  { tool: "segment", label: "Segment", short: "Seg.", title: "Drag to add a segment" },
   { tool: "point", label: "Point", title: "Click to add a fixed point" },
 ];
 
@@ -44,10 +48,18 @@ export function Toolbar() {
           key={t.tool}
           type="button"
           aria-pressed={tool === t.tool}
+          aria-label={t.short === undefined ? undefined : t.label}
           title={`${t.title} (key ${toolKey(t.tool)})`}
           onClick={() => editor.ui.setState({ tool: t.tool })}
         >
-          {t.label}
+          {t.short === undefined ? (
+            t.label
+          ) : (
+            <>
+              <span className="label-whole">{t.label}</span>
+              <span className="label-short">{t.short}</span>
+            </>
+          )}
         </button>
       ))}
       <span className="sep" />
