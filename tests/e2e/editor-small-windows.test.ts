@@ -1,6 +1,6 @@
 /**
- * End-to-end, in Debian's Chromium: messages never move the canvas (a long one hangs over the stage
- * and can be dismissed; at 800 x 600 it keeps to its line in the header and the toolbar stays usable:
+ * End-to-end, in Debian's Chromium: messages never move the canvas (a long one hangs over the side
+ * column at 1280 px, cut to one line until More, and can be dismissed; at 800 x 600 it keeps to its line in the header and the toolbar stays usable:
  * editor-narrow-messages.test.ts measures the stage for every kind of message at 700 and 900 px),
  * and small windows (1024 x 700 down to 390 x 844) keep the canvas, the Time slider and every time
  * and speed control usable, nothing overflowing sideways; from 700 to 900 px the Time slider widens
@@ -20,7 +20,7 @@ const editor = editorForFile();
 const loadPreset = (title: string, id: string) => loadPresetOn(editor.page, title, id);
 
 describe("messages and small windows", () => {
-  it("a message, however long, never moves the canvas; a long one hangs over the stage and can be dismissed", async () => {
+  it("a message, however long, never moves the canvas; a long one hangs over the side column, whole after More, and can be dismissed", async () => {
     await withWindowSize(editor.page, 1280, 800, async () => {
       const canvasTop = async () => (await editor.page.getByTestId("scene-canvas").boundingBox())!.y;
       await showMessage(editor.page, null);
@@ -31,8 +31,13 @@ describe("messages and small windows", () => {
       const alert = editor.page.getByRole("alert");
       await poll(async () => (await alert.textContent())?.includes("end")).toBe(true);
       expect(await canvasTop()).toBe(before);
-      // it hangs below the header's row, over the stage, and its ✕ is on top and works
+      // at 1280 px it hangs under the header over the side column, cut to one line there (it covers
+      // the Calculation panel's heading, not its fields): More shows it whole, on its lines
+      expect((await alert.boundingBox())!.height).toBeLessThan(40);
+      await editor.page.getByRole("button", { name: "More" }).click();
       expect((await alert.boundingBox())!.height).toBeGreaterThan(40);
+      expect(await canvasTop()).toBe(before);
+      // its ✕ is on top and works
       await screenshot(editor.page, "14-long-message");
       const dismiss = editor.page.getByRole("button", { name: "Dismiss message" });
       expect(await centreUncovered(dismiss)).toBe(true);

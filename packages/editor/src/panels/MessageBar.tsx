@@ -5,7 +5,8 @@
  * needs more lines hangs down from the slot until it is dismissed or replaced; from 1001 px the slot
  * takes only what the header's line leaves, and where that is too narrow the message hangs under the
  * header over the top of the side column (styles/message.css: the slot once took a line of its own
- * there, empty, 37 px of canvas from 1127 to 1382 px). In a window
+ * there, empty, 37 px of canvas from 1127 to 1382 px), cut to one line there (More shows it whole)
+ * so that it covers the Calculation panel's heading only, not its fields. In a window
  * up to 1000 px wide (styles/message.css) the stage's toolbar sits right under the slot, which is
  * narrow there, so a long message is cut to its line (an ellipsis) and a More button shows it whole,
  * hanging over the stage, until Less, ✕ or the next message; screen readers read it whole either way.
