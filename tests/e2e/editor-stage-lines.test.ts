@@ -1,0 +1,134 @@
+/**
+ * End-to-end, in Debian's Chromium: the stage's toolbar and time bar keep their lines from 1001 to
+ * 1920 px. The toolbar is one line (33 px high) at every width there, every control on it in view,
+ * uncovered and at least 24 px wide, Velocity and Segment named by their whole word wherever they
+ * show a short label: from 1001 to 1279 px Delete and ? wrapped onto a second line of their own
+ * (58 px, 25 px of canvas lost). The time bar is as high at 1001 to 1099 px as at 1400 px (180): the
+ * Time panel's zoom controls took a line of their own there (207 px). A field's refusal shown in the
+ * message over the side column (1027 to 1382 px) leaves that field uncovered: on two lines it hid
+ * the top of Seconds ahead, the field the user was correcting.
+ */
+import { describe, expect, it } from "vitest";
+import { editorForFile, poll } from "./editorForFile.js";
+import { screenshot } from "./harness.js";
+import { buttonUncovered } from "./stageProbes.js";
+
+const editor = editorForFile();
+
+/** The window sizes measured: 900 px high, 1080 for 1920 px. */
+const SIZES: [number, number][] = [
+  [1001, 900],
+  [1050, 900],
+  [1100, 900],
+  [1200, 900],
+  [1279, 900],
+  [1280, 900],
+  [1400, 900],
+  [1920, 1080],
+];
+
+/** The toolbar's and the time bar's heights, and each toolbar control's name, top and width. */
+function stageLines() {
+  return editor.page.evaluate(() => {
+    const height = (sel: string) => document.querySelector(sel)!.getBoundingClientRect().height;
+    const controls = Array.from(document.querySelectorAll(".toolbar > button, .toolbar > label")).map(
+      (el) => {
+        const r = el.getBoundingClientRect();
+        const name = el.getAttribute("aria-label") ?? el.textContent!.trim();
+        return { name, top: r.top, width: r.width, tag: el.tagName };
+      },
+    );
+    return { toolbar: height(".toolbar"), timebar: height(".timebar"), controls };
+  });
+}
+
+describe("the stage's lines from 1001 to 1920 px", () => {
+  it("the toolbar is one line, its controls in view, uncovered and at least 24 px wide", async () => {
+    try {
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
+      const wide = await stageLines();
+      for (const [width, height] of SIZES) {
+        await editor.page.setViewportSize({ width, height });
+        const at = `${width} x ${height}`;
+        const l = await stageLines();
+        expect(l.controls.length, at).toBe(13);
+        const tops = l.controls.map((c) => c.top);
+        expect(Math.max(...tops) - Math.min(...tops), `${at}: ${JSON.stringify(l.controls)}`).toBeLessThan(4);
+        expect(l.toolbar, at).toBe(wide.toolbar);
+        for (const c of l.controls) {
+          if (c.tag === "BUTTON") {
+            expect(c.width, `${at}: ${c.name}`).toBeGreaterThanOrEqual(24);
+            expect(await buttonUncovered(editor.page, c.name), `${at}: ${c.name}`).toBe(true);
+          }
+        }
+        // the short labels keep the whole word as the button's name
+        for (const name of ["Velocity", "Segment"])
+          await expect(editor.page.getByRole("button", { name, exact: true }).isVisible(), at).resolves.toBe(
+            true,
+          );
+        await screenshot(editor.page, `stage-lines-${width}`);
+      }
+    } finally {
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
+    }
+  });
+
+  it("the time bar is as high as at 1400 px, its controls in view", async () => {
+    try {
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
+      const wide = await stageLines();
+      for (const [width, height] of SIZES) {
+        await editor.page.setViewportSize({ width, height });
+        const at = `${width} x ${height}`;
+        expect((await stageLines()).timebar, at).toBe(wide.timebar);
+        for (const name of ["Zoom in", "Whole history", "Next event", "Play"])
+          expect(await buttonUncovered(editor.page, name), `${at}: ${name}`).toBe(true);
+      }
+    } finally {
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
+    }
+  });
+
+  it("a field's refusal over the side column leaves that field uncovered; More shows it whole", async () => {
+    const field = editor.page.getByRole("textbox", { name: "Seconds ahead", exact: true });
+    try {
+      for (const width of [1027, 1100, 1200, 1382]) {
+        await editor.page.setViewportSize({ width, height: 900 });
+        const at = `${width} px`;
+        await field.fill(`-${width}`);
+        await field.press("Enter");
+        const message = editor.page.getByRole("alert");
+        await poll(() => message.textContent()).toContain(`(got -${width})`);
+        const m = (await message.boundingBox())!;
+        const f = (await field.boundingBox())!;
+        const side = (await editor.page.locator(".side").boundingBox())!;
+        // the case this is about: the message hangs over the side column
+        expect(m.x, `${at}: over the side column`).toBeGreaterThanOrEqual(side.x);
+        expect(m.y + m.height, `${at}: the message's bottom above the field's top`).toBeLessThanOrEqual(f.y);
+        // cut to its line where it is longer (always at 1027 px: the side column is 410 px), More
+        // then shows it whole; where it fits (1382 px) there is no More
+        const cut = await message.locator("span").evaluate((el) => el.scrollWidth > el.clientWidth + 1);
+        if (width === 1027) expect(cut, at).toBe(true);
+        const more = editor.page.getByRole("button", { name: "More" });
+        await poll(() => more.count()).toBe(cut ? 1 : 0);
+        if (cut) {
+          await more.click();
+          const whole = (await message.boundingBox())!;
+          expect(whole.height, `${at}: More shows it on more lines`).toBeGreaterThan(m.height);
+        }
+        await editor.page.getByRole("button", { name: "Dismiss message" }).click();
+      }
+    } finally {
+      await field.fill("10");
+      await field.press("Enter");
+      await editor.page.evaluate(() =>
+        (
+          window as unknown as { chapgame: { ui: { setState(s: { message: null }): void } } }
+        ).chapgame.ui.setState({
+          message: null,
+        }),
+      );
+      await editor.page.setViewportSize({ width: 1400, height: 900 });
+    }
+  });
+});
