@@ -1,6 +1,7 @@
 /**
  * End-to-end, in Debian's Chromium: messages never move the canvas (a long one hangs over the side
- * column at 1280 px, cut to one line until More, and can be dismissed; at 800 x 600 it keeps to its line in the header and the toolbar stays usable:
+ * column at 1280 px, cut to one line until More, and can be dismissed; at 800 x 600 it keeps to its
+ * line in the header and the toolbar stays usable:
  * editor-narrow-messages.test.ts measures the stage for every kind of message at 700 and 900 px),
  * and small windows (1024 x 700 down to 390 x 844) keep the canvas, the Time slider and every time
  * and speed control usable, nothing overflowing sideways; from 700 to 900 px the Time slider widens

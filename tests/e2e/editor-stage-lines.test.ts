@@ -11,9 +11,14 @@
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
 import { screenshot } from "./harness.js";
+import { showMessage } from "./messages.js";
 import { buttonUncovered } from "./stageProbes.js";
+import { forEachWindowSize, type WindowSize, withWindowSize } from "./windowSize.js";
 
 const editor = editorForFile();
+
+/** The widths where a message can hang over the side column (900 px high). */
+const REFUSAL_SIZES: WindowSize[] = [1027, 1100, 1200, 1382].map((w) => [w, 900] as const);
 
 /** The window sizes measured: 900 px high, 1080 for 1920 px. */
 const SIZES: [number, number][] = [
@@ -44,56 +49,43 @@ function stageLines() {
 
 describe("the stage's lines from 1001 to 1920 px", () => {
   it("the toolbar is one line, its controls in view, uncovered and at least 24 px wide", async () => {
-    try {
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
-      const wide = await stageLines();
-      for (const [width, height] of SIZES) {
-        await editor.page.setViewportSize({ width, height });
-        const at = `${width} x ${height}`;
-        const l = await stageLines();
-        expect(l.controls.length, at).toBe(13);
-        const tops = l.controls.map((c) => c.top);
-        expect(Math.max(...tops) - Math.min(...tops), `${at}: ${JSON.stringify(l.controls)}`).toBeLessThan(4);
-        expect(l.toolbar, at).toBe(wide.toolbar);
-        for (const c of l.controls) {
-          if (c.tag === "BUTTON") {
-            expect(c.width, `${at}: ${c.name}`).toBeGreaterThanOrEqual(24);
-            expect(await buttonUncovered(editor.page, c.name), `${at}: ${c.name}`).toBe(true);
-          }
+    const wide = await withWindowSize(editor.page, 1400, 900, stageLines);
+    await forEachWindowSize(editor.page, SIZES, async (width, height) => {
+      const at = `${width} x ${height}`;
+      const l = await stageLines();
+      expect(l.controls.length, at).toBe(13);
+      const tops = l.controls.map((c) => c.top);
+      expect(Math.max(...tops) - Math.min(...tops), `${at}: ${JSON.stringify(l.controls)}`).toBeLessThan(4);
+      expect(l.toolbar, at).toBe(wide.toolbar);
+      for (const c of l.controls) {
+        if (c.tag === "BUTTON") {
+          expect(c.width, `${at}: ${c.name}`).toBeGreaterThanOrEqual(24);
+          expect(await buttonUncovered(editor.page, c.name), `${at}: ${c.name}`).toBe(true);
         }
-        // the short labels keep the whole word as the button's name
-        for (const name of ["Velocity", "Segment"])
-          await expect(editor.page.getByRole("button", { name, exact: true }).isVisible(), at).resolves.toBe(
-            true,
-          );
-        await screenshot(editor.page, `stage-lines-${width}`);
       }
-    } finally {
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
-    }
+      // the short labels keep the whole word as the button's name
+      for (const name of ["Velocity", "Segment"])
+        await expect(editor.page.getByRole("button", { name, exact: true }).isVisible(), at).resolves.toBe(
+          true,
+        );
+      await screenshot(editor.page, `stage-lines-${width}`);
+    });
   });
 
   it("the time bar is as high as at 1400 px, its controls in view", async () => {
-    try {
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
-      const wide = await stageLines();
-      for (const [width, height] of SIZES) {
-        await editor.page.setViewportSize({ width, height });
-        const at = `${width} x ${height}`;
-        expect((await stageLines()).timebar, at).toBe(wide.timebar);
-        for (const name of ["Zoom in", "Whole history", "Next event", "Play"])
-          expect(await buttonUncovered(editor.page, name), `${at}: ${name}`).toBe(true);
-      }
-    } finally {
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
-    }
+    const wide = await withWindowSize(editor.page, 1400, 900, stageLines);
+    await forEachWindowSize(editor.page, SIZES, async (width, height) => {
+      const at = `${width} x ${height}`;
+      expect((await stageLines()).timebar, at).toBe(wide.timebar);
+      for (const name of ["Zoom in", "Whole history", "Next event", "Play"])
+        expect(await buttonUncovered(editor.page, name), `${at}: ${name}`).toBe(true);
+    });
   });
 
   it("a field's refusal over the side column leaves that field uncovered; More shows it whole", async () => {
     const field = editor.page.getByRole("textbox", { name: "Seconds ahead", exact: true });
     try {
-      for (const width of [1027, 1100, 1200, 1382]) {
-        await editor.page.setViewportSize({ width, height: 900 });
+      await forEachWindowSize(editor.page, REFUSAL_SIZES, async (width) => {
         const at = `${width} px`;
         await field.fill(`-${width}`);
         await field.press("Enter");
@@ -117,18 +109,11 @@ describe("the stage's lines from 1001 to 1920 px", () => {
           expect(whole.height, `${at}: More shows it on more lines`).toBeGreaterThan(m.height);
         }
         await editor.page.getByRole("button", { name: "Dismiss message" }).click();
-      }
+      });
     } finally {
       await field.fill("10");
       await field.press("Enter");
-      await editor.page.evaluate(() =>
-        (
-          window as unknown as { chapgame: { ui: { setState(s: { message: null }): void } } }
-        ).chapgame.ui.setState({
-          message: null,
-        }),
-      );
-      await editor.page.setViewportSize({ width: 1400, height: 900 });
+      await showMessage(editor.page, null);
     }
   });
 });
