@@ -3,38 +3,16 @@ import { act, cleanup, fireEvent, render, screen } from "@testing-library/react"
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
 import { cradleEditor } from "../testing/harness";
+import { layOutText, restoreTextLayout } from "../testing/textLayout";
 import { MessageBar } from "./MessageBar";
-
-/** jsdom lays nothing out: a message's text is "cut" when it is longer than this many characters. */
-const FITS = 20;
-const widths = {
-  scrollWidth: { get: (el: HTMLElement) => (el.textContent ?? "").length },
-  clientWidth: { get: () => FITS },
-};
-const saved = Object.keys(widths).map(
-  (k) => [k, Object.getOwnPropertyDescriptor(HTMLElement.prototype, k)] as const,
-);
-
-function layOut(): void {
-  for (const [k, d] of Object.entries(widths))
-    Object.defineProperty(HTMLElement.prototype, k, {
-      configurable: true,
-      get(this: HTMLElement) {
-        return d.get(this);
-      },
-    });
-}
 
 afterEach(() => {
   cleanup();
-  for (const [k, d] of saved) {
-    if (d) Object.defineProperty(HTMLElement.prototype, k, d);
-    else delete (HTMLElement.prototype as unknown as Record<string, unknown>)[k];
-  }
+  restoreTextLayout();
 });
 
 async function setup() {
-  layOut();
+  layOutText();
   const h = await cradleEditor();
   render(
     <EditorContext.Provider value={h.editor}>
