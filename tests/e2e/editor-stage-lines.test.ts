@@ -1,12 +1,13 @@
 /**
- * End-to-end, in Debian's Chromium: the stage's toolbar and time bar keep their lines from 1001 to
- * 1920 px. The toolbar is one line (33 px high) at every width there, every control on it in view,
- * uncovered and at least 24 px wide, Velocity and Segment named by their whole word wherever they
- * show a short label: from 1001 to 1279 px Delete and ? wrapped onto a second line of their own
- * (58 px, 25 px of canvas lost). The time bar is as high at 1001 to 1099 px as at 1400 px (180): the
- * Time panel's zoom controls took a line of their own there (207 px). A field's refusal shown in the
- * message over the side column (1027 to 1382 px) leaves that field uncovered: on two lines it hid
- * the top of Seconds ahead, the field the user was correcting.
+ * End-to-end, in Debian's Chromium: the stage's toolbar and time bar keep their lines from 901 to
+ * 1920 px (two columns). The toolbar is one line (33 px high) at every width there, every control on
+ * it in view, uncovered and at least 24 px wide, Velocity and Segment named by their whole word
+ * wherever they show a short label: from 901 to 1279 px Delete and ? wrapped onto a second line of
+ * their own (below 1001 px Trails and Path too; 58 px, 25 px of canvas lost). The time bar is as
+ * high at 901 to 1099 px as at 1400 px (180): the Time panel's zoom controls took a line of their
+ * own there (207 px). A field's refusal shown in the message over the side column (1027 to 1382 px)
+ * leaves that field uncovered: on two lines it hid the top of Seconds ahead, the field the user was
+ * correcting.
  */
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
@@ -22,6 +23,9 @@ const REFUSAL_SIZES: WindowSize[] = [1027, 1100, 1200, 1382].map((w) => [w, 900]
 
 /** The window sizes measured: 900 px high, 1080 for 1920 px. */
 const SIZES: [number, number][] = [
+  [901, 900],
+  [950, 900],
+  [1000, 900],
   [1001, 900],
   [1050, 900],
   [1100, 900],
@@ -47,7 +51,7 @@ function stageLines() {
   });
 }
 
-describe("the stage's lines from 1001 to 1920 px", () => {
+describe("the stage's lines from 901 to 1920 px", () => {
   it("the toolbar is one line, its controls in view, uncovered and at least 24 px wide", async () => {
     const wide = await withWindowSize(editor.page, 1400, 900, stageLines);
     await forEachWindowSize(editor.page, SIZES, async (width, height) => {
