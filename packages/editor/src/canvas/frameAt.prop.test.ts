@@ -6,10 +6,10 @@ import { describe, expect, it } from "vitest";
 import { packFrame } from "../remote/packFrame";
 import { F_FROM, F_UNTIL, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE } from "../remote/protocol";
 import { markValidity } from "../remote/validity";
+import { seedFor } from "../testing/seed";
 import { emptyFrame, frameAt } from "./frameAt";
 
-const SEED = Number(process.env.FC_SEED ?? 20261122); // fixed by default so CI is reproducible
-console.log(`frameAt.prop.test seed: ${SEED} (FC_SEED=${SEED} to reproduce)`);
+const SEED = seedFor("frameAt.prop.test");
 
 const scenes = { originalDemo, bouncingBalls, billiardsBreak, brownian };
 const timelines = new Map<string, Timeline>();

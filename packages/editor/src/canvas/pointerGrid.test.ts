@@ -4,10 +4,10 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import type { Vec2 } from "../engineTypes";
+import { seedFor } from "../testing/seed";
 import { exponentAtMost, FINER_GRIDS, pointerStep, roundToStep, snapPlacement } from "./pointerGrid";
 
-const SEED = Number(process.env.FC_SEED ?? 20261124); // fixed by default so CI is reproducible
-console.log(`pointerGrid.test seed: ${SEED} (FC_SEED=${SEED} to reproduce)`);
+const SEED = seedFor("pointerGrid.test", 20261124);
 
 /** Digits after the decimal point in the shortest decimal of x. */
 const decimals = (x: number): number => {

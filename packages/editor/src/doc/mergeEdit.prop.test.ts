@@ -7,10 +7,10 @@ import { Timeline } from "@chapgame/engine";
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import type { Action, SceneFile } from "../engineTypes";
+import { seedFor } from "../testing/seed";
 import { changesNothing, mergedEdit } from "./mergeEdit";
 
-const SEED = Number(process.env.FC_SEED ?? 20261124); // fixed by default so CI is reproducible
-console.log(`mergeEdit.prop.test seed: ${SEED} (FC_SEED=${SEED} to reproduce)`);
+const SEED = seedFor("mergeEdit.prop.test", 20261124);
 
 /** Three discs in a box: a and b meet at MEET (about 3.86). */
 const BOX: Action[] = [

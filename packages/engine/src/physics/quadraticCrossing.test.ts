@@ -4,9 +4,10 @@
 // only grows from lo on never crosses. The property prints its seed; set FC_SEED to explore others.
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
+import { seedFor } from "../timeline/testSupport.js";
 import { firstDownCrossingQuadratic } from "./quadraticCrossing.js";
 
-const SEED = Number(process.env.FC_SEED ?? 20261122);
+const SEED = seedFor("quadraticCrossing");
 const INF = Number.POSITIVE_INFINITY;
 
 /** Two roots r1 < r2 in [0, 100] at least 0.01 apart, a curvature and a window's start. */
@@ -29,7 +30,6 @@ function near(x: number, y: number, scale: number): boolean {
 
 describe("firstDownCrossingQuadratic", () => {
   it("finds the downward root of a gap built from its roots, inside the window or not at all", () => {
-    console.log(`[quadraticCrossing] fast-check seed ${SEED} (set FC_SEED to change)`);
     fc.assert(
       fc.property(roots, fc.double({ min: 0, max: 1, noNaN: true }), ({ r1, r2, k }, f) => {
         const scale = r2 + 1;

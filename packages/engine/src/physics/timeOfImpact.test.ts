@@ -5,9 +5,10 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import { nextUp } from "../roots/nextDouble.js";
+import { seedFor } from "../timeline/testSupport.js";
 import { discDiscTime, discLineCrossings } from "./timeOfImpact.js";
 
-const SEED = Number(process.env.FC_SEED ?? 20261122);
+const SEED = seedFor("contact time");
 const INF = Number.POSITIVE_INFINITY;
 
 /** `lo` moved k ulps up. */
@@ -22,7 +23,6 @@ describe("contact time does not depend on when it is evaluated", () => {
     const coord = fc.double({ min: -20, max: 20, noNaN: true });
     const acc = fc.oneof(fc.constant(0), fc.double({ min: -5, max: 5, noNaN: true }));
     let checked = 0;
-    console.log(`[contact time] fast-check seed ${SEED} (set FC_SEED to change)`);
     fc.assert(
       fc.property(
         // Relative velocity mostly towards the other disc (s > 0), plus a sideways part.

@@ -1,5 +1,6 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
+import { seedFor } from "../timeline/testSupport.js";
 import { jsonErrorOffset } from "./jsonSyntax.js";
 
 /** V8's offset for the error, when its message gives one (null when it does not). */
@@ -49,8 +50,7 @@ describe("jsonErrorOffset", () => {
   });
 
   it("agrees with JSON.parse on random damaged JSON: valid exactly when it parses, and at V8's position when V8 gives one (property)", () => {
-    const seed = Number(process.env.FC_SEED ?? 20261123); // fixed by default so CI is reproducible
-    console.log(`jsonErrorOffset property seed ${seed}`);
+    const seed = seedFor("jsonErrorOffset property", 20261123);
     const alphabet = fc.constantFrom(...'{}[]",:0123456789-+.eEtrufalsnNI \n\\/u'.split(""));
     const edit = fc.record({
       at: fc.nat(),

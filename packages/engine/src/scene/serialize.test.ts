@@ -1,5 +1,6 @@
 import fc from "fast-check";
 import { describe, expect, it } from "vitest";
+import { seedFor } from "../timeline/testSupport.js";
 import { FIELD_MIN, SPEED_MIN } from "../tolerances.js";
 import { SceneError } from "./errors.js";
 import { parseScene } from "./parse.js";
@@ -86,8 +87,7 @@ describe("serializeScene", () => {
 
 describe("serializeScene round trip (property)", () => {
   it("parse(serialize(s)) equals s for random valid scenes of spread-out bodies and lines", () => {
-    const seed = Number(process.env.FC_SEED ?? 20261122); // fixed by default so CI is reproducible
-    console.log(`serialize round-trip property seed ${seed}`);
+    const seed = seedFor("serialize round-trip property");
     const num = fc.double({ noNaN: true, noDefaultInfinity: true, min: -1e6, max: 1e6 });
     const pos = fc.double({ noNaN: true, noDefaultInfinity: true, min: 1e-3, max: 1 });
     // valid scenes only: speeds and fields are 0 or at least SPEED_MIN / FIELD_MIN in size

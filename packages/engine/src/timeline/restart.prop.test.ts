@@ -9,10 +9,11 @@ import fc from "fast-check";
 import { describe, expect, it } from "vitest";
 import { dilutedGas } from "../scene/presets.js";
 import type { Action, SceneFile } from "../scene/types.js";
+import { seedFor } from "./testSupport.js";
 import { Timeline } from "./timeline.js";
 
 const RUNS = Number(process.env.RUNS ?? 8);
-const seed = Number(process.env.FC_SEED || process.env.SEED || 20261122); // FC_SEED, as every property test (SEED still works)
+const seed = seedFor("restart");
 
 /** The gas, with every disc given the friction coefficient mu (0: elastic). */
 function gasScene(n: number, gasSeed: number, mu: number): SceneFile {
@@ -26,7 +27,6 @@ function gasScene(n: number, gasSeed: number, mu: number): SceneFile {
 
 describe("Timeline restarts from keyframes rebuilt from motions", () => {
   it("an edit deep in a long history equals building the edited scene from scratch", () => {
-    console.log(`restart: seed ${seed} (set FC_SEED to change)`);
     let keyframesBefore = 0;
     fc.assert(
       fc.property(
