@@ -7,12 +7,15 @@
  * high at 901 to 1099 px as at 1400 px (180): the Time panel's zoom controls took a line of their
  * own there (207 px). A field's refusal shown in the message over the side column (1027 to 1382 px)
  * leaves that field uncovered: on two lines it hid the top of Seconds ahead, the field the user was
- * correcting.
+ * correcting. Path's note ("select a body") keeps the toolbar one line: beside Path it wrapped the
+ * toolbar from 901 to 1280 px (57 px high); it hangs over the canvas under the toolbar and any
+ * notice, and lets the pointer through to the canvas.
  */
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
 import { screenshot } from "./harness.js";
 import { showMessage } from "./messages.js";
+import { setNotices } from "./notices.js";
 import { buttonUncovered } from "./stageProbes.js";
 import { forEachWindowSize, type WindowSize, withWindowSize } from "./windowSize.js";
 
@@ -74,6 +77,55 @@ describe("the stage's lines from 901 to 1920 px", () => {
         );
       await screenshot(editor.page, `stage-lines-${width}`);
     });
+  });
+
+  it("Path's note keeps the toolbar one line, hanging under it and any notice over the canvas", async () => {
+    const wide = await withWindowSize(editor.page, 1400, 900, stageLines);
+    const pathBox = editor.page.getByRole("checkbox", { name: "Path" });
+    const note = editor.page.getByText("select a body", { exact: true });
+    await editor.page.evaluate(() => {
+      type Ui = { ui: { setState(s: Record<string, unknown>): void } };
+      (window as unknown as { chapgame: Ui }).chapgame.ui.setState({ selection: null });
+    });
+    await pathBox.check();
+    try {
+      await forEachWindowSize(editor.page, SIZES, async (width, height) => {
+        for (const notices of [false, true]) {
+          const at = `${width} x ${height}${notices ? ", with the notices" : ""}`;
+          await setNotices(editor.page, notices, notices);
+          await note.waitFor();
+          const l = await stageLines();
+          const tops = l.controls.map((c) => c.top);
+          expect(Math.max(...tops) - Math.min(...tops), `${at}: toolbar tops`).toBeLessThan(4);
+          expect(l.toolbar, at).toBe(wide.toolbar);
+          const n = (await note.boundingBox())!;
+          const toolbar = (await editor.page.getByRole("toolbar", { name: "Tools" }).boundingBox())!;
+          const canvas = (await editor.page.getByTestId("scene-canvas").boundingBox())!;
+          const noticesEnd = await editor.page.evaluate(() =>
+            Math.max(
+              0,
+              ...Array.from(document.querySelectorAll(".stage-notices > *")).map(
+                (e) => e.getBoundingClientRect().bottom,
+              ),
+            ),
+          );
+          expect(n.y, `${at}: under the toolbar`).toBeGreaterThanOrEqual(toolbar.y + toolbar.height);
+          expect(n.y, `${at}: under the notices`).toBeGreaterThanOrEqual(noticesEnd);
+          expect(n.x + n.width, `${at}: within the canvas`).toBeLessThanOrEqual(canvas.x + canvas.width);
+          // the canvas is what a pointer meets there
+          const through = await note.evaluate((el) => {
+            const r = el.getBoundingClientRect();
+            return document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2)?.tagName;
+          });
+          expect(through, at).toBe("CANVAS");
+          if (notices) await screenshot(editor.page, `stage-lines-path-note-${width}`);
+        }
+        await setNotices(editor.page, false, false);
+      });
+    } finally {
+      await setNotices(editor.page, false, false);
+      await pathBox.uncheck();
+    }
   });
 
   it("the time bar is as high as at 1400 px, its controls in view", async () => {

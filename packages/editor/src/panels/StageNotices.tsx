@@ -6,10 +6,13 @@
  * (styles/notices.css). In the header each took a line of its own, moving the stage down 39 px or
  * more at every window width. The height they cover, measured by the browser as they come, go and
  * wrap, is the ui store's noticesCover: Fit leaves that strip of the canvas out (canvas/fitScene.ts).
+ * The Path view's note (PathNote.tsx) hangs in the same strip, under the notices' list and not part
+ * of it: no notice ever hides it or is hidden by it, and Fit does not leave it out.
  */
 import { type RefObject, useLayoutEffect, useRef } from "react";
 import { useEditor } from "../EditorContext";
 import { NewerWorkNotice } from "./NewerWorkNotice";
+import { PathNote } from "./PathNote";
 import { RefusedSceneNotice } from "./RefusedSceneNotice";
 
 export function StageNotices() {
@@ -21,6 +24,7 @@ export function StageNotices() {
         <NewerWorkNotice />
         <RefusedSceneNotice />
       </div>
+      <PathNote />
     </div>
   );
 }

@@ -1,16 +1,16 @@
 /**
  * The canvas tools (move/pan, velocity, cue, add disc/line/ray/segment/point), fit, trails, the Path
- * view (the selected body's whole computed path; a note says when no body is selected, or where a
- * path too long to draw whole was cut), delete (greyed out but keeping the focus when nothing is
- * selected: FocusKeptButton), and ? (the Keyboard shortcuts dialog). Each tool's
- * title names its digit key (shortcuts.ts). Velocity and Segment carry a short label too ("Vel.",
- * "Seg."), drawn instead of the whole word only where the toolbar would otherwise wrap
- * (styles/toolbar.css); their accessible name is the whole word at every width.
+ * view (the selected body's whole computed path; its note, which says when no body is selected or
+ * where a path too long to draw whole was cut, hangs under the toolbar: PathNote.tsx), delete
+ * (greyed out but keeping the focus when nothing is selected: FocusKeptButton), and ? (the Keyboard
+ * shortcuts dialog). Each tool's title names its digit key (shortcuts.ts). Velocity and Segment
+ * carry a short label too ("Vel.", "Seg."), drawn instead of the whole word only where the toolbar
+ * would otherwise wrap (styles/toolbar.css); their accessible name is the whole word at every width.
+ * Each control is a target of at least 24 x 24 px (styles/targets.css).
  */
 import { useEditor, useUi } from "../EditorContext";
 import type { Tool } from "../store/uiStore";
 import { toolKey } from "../tools";
-import { formatNumber } from "./EditableCell";
 import { FocusKeptButton } from "./FocusKeptButton";
 
 /** A tool's button: its label (its accessible name), its tooltip, and optionally the label drawn
@@ -35,8 +35,6 @@ export function Toolbar() {
   const tool = useUi((s) => s.tool);
   const trails = useUi((s) => s.trails);
   const path = useUi((s) => s.path);
-  const bodySelected = useUi((s) => s.selection?.kind === "body");
-  const pathShown = useUi((s) => s.pathShown);
   // what Delete removes, in its name: reached by Shift+Tab through a table, whose rows each select
   // their object on focus, it names the last one passed (audit of session 20: it removed another
   // body than the one the keyboard user had chosen, without a word)
@@ -86,12 +84,6 @@ export function Toolbar() {
         />{" "}
         Path
       </label>
-      {path && !bodySelected && <small className="tool-note">select a body</small>}
-      {path && bodySelected && pathShown?.cutAt != null && (
-        <small className="tool-note">
-          drawn up to t = {formatNumber(pathShown.cutAt)} s (too long to draw whole)
-        </small>
-      )}
       <FocusKeptButton
         enabled={target !== null}
         aria-label={target === null ? "Delete" : `Delete: ${target}`}
