@@ -9,22 +9,22 @@
  * so that it covers the Calculation panel's heading only, not its fields. In a window
  * up to 1000 px wide (styles/message.css) the stage's toolbar sits right under the slot, which is
  * narrow there, so a long message is cut to its line (an ellipsis) and a More button shows it whole,
- * hanging over the stage, until Less, ✕ or the next message; screen readers read it whole either way.
+ * hanging over the stage, until Less, ✕ or the next message (MoreToggle.tsx, as a notice's); screen
+ * readers read it whole either way.
  * (Below 1000 px it once took its lines in the header instead, which moved the stage down by a line
  * or more for any message longer than the slot: at 900 px a refusal of 90 characters moved the
  * canvas 6 px, a long one 51 px; at 700 px even `x: must be a number (got "abc")` did.)
  */
-import { useRef, useState } from "react";
+import { useRef } from "react";
 import { useEditor, useUi } from "../EditorContext";
-import type { Message } from "../store/uiStore";
+import { MoreToggle, useShownWhole } from "./MoreToggle";
 import { useTextCut } from "./useTextCut";
 
 export function MessageBar() {
   const editor = useEditor();
   const message = useUi((s) => s.message);
   /** The message shown whole (More pressed); any other message is shown on its line first. */
-  const [openFor, setOpenFor] = useState<Message | null>(null);
-  const open = message !== null && openFor === message;
+  const [open, toggle] = useShownWhole(message);
   const textRef = useRef<HTMLSpanElement>(null);
   const cut = useTextCut(textRef, message?.text);
   return (
@@ -35,16 +35,7 @@ export function MessageBar() {
           role={message.tone === "error" ? "alert" : "status"}
         >
           <span ref={textRef}>{message.text}</span>
-          {(cut || open) && (
-            <button
-              type="button"
-              className="message-more"
-              aria-expanded={open}
-              onClick={() => setOpenFor(open ? null : message)}
-            >
-              {open ? "Less" : "More"}
-            </button>
-          )}
+          <MoreToggle cut={cut} open={open} className="message-more" onToggle={toggle} />
           <button
             type="button"
             aria-label="Dismiss message"
