@@ -58,6 +58,29 @@ describe("ZenoWatch", () => {
     expect(() => z.check(5, 5, n, never)).toThrow(/at the same instant t=5/);
   });
 
+  it("takes its limits from the n of each event, also when n changes (a body added or removed)", () => {
+    // the watch keeps the limits of the last n (session 29): a change of n must still move them
+    const z = new ZenoWatch();
+    z.check(5, 4, 2, never);
+    const past2 = simultaneousLimit(2) + 1;
+    expect(simultaneousLimit(3)).toBeGreaterThan(past2);
+    for (let i = 0; i < past2; i++) z.check(5, 5, 3, never); // past 2's limit, within 3's
+    expect(() => z.check(5, 5, 2, never)).toThrow(`more than ${past2 + 1} events at the same instant`);
+    expect(() => z.check(5, 5, 3, never)).not.toThrow();
+    // the window too: one of n = 2's length, then n grows and the window goes on
+    const big = 20_000;
+    expect(zenoWindow(big)).toBeGreaterThan(zenoWindow(2));
+    const w = new ZenoWatch();
+    let t = 0;
+    for (let i = 0; i < zenoWindow(2) - 1; i++) w.check(++t, t - 1, 2, never);
+    expect(w.windowEvents).toBe(zenoWindow(2) - 1);
+    w.check(++t, t - 1, big, never);
+    expect(w.windowEvents).toBe(zenoWindow(2)); // not the end of a window of 20,000 bodies
+    for (let i = zenoWindow(2); i < zenoWindow(big) - 1; i++) w.check(++t, t - 1, big, never);
+    w.check(++t, t - 1, 2, never); // n shrinks: the window is long past its end and ends now
+    expect(w.windowEvents).toBe(0);
+  });
+
   it("in large worlds allows SIMULTANEOUS_EVENTS_PER_PAIR per pair at one instant (an impulse through a big rack)", () => {
     const n = 1601; // the 40 x 40 rack and its cue ball: 140,613 events at the cue ball's first contact
     const limit = Math.floor(SIMULTANEOUS_EVENTS_PER_PAIR * ((n * (n - 1)) / 2));

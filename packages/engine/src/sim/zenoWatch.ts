@@ -83,6 +83,11 @@ export class ZenoWatch {
   private windowCount = 0;
   private lastProgress = INF;
   private runStart = -INF;
+  /** The body-slot count the two limits below were computed for (-1: none yet). */
+  private limitsN = -1;
+  /** simultaneousLimit(limitsN) and zenoWindow(limitsN). */
+  private plainLimit = 0;
+  private windowLimit = 0;
   /** Sustained pushes (told of every stop by the World; edits end a body's streak). */
   readonly push = new PushWatch();
 
@@ -108,6 +113,39 @@ export class ZenoWatch {
     ma = INF,
     mb = INF,
   ): void {
+    if (n !== this.limitsN) this.setLimits(n);
+    if (time !== before && this.windowCount + 1 < this.windowLimit) {
+      // The common event, at a new instant inside a window: what the full count below does for it
+      // (its instant's counts start again from this event alone; nothing can be refused), small
+      // enough for V8 to inline here, so that the times and masses need no boxes (session 29).
+      // Masses are positive (validate.ts), so min and max with Infinity for "none" are exact.
+      this.massLo = Math.min(ma, mb);
+      this.massHi = Math.max(ma < INF ? ma : 0, mb < INF ? mb : 0);
+      this.sinceSpread = 0;
+      this.sameTimeCount = 0;
+      this.windowCount++;
+      return;
+    }
+    this.countEvent(time, before, n, pumpsEnergy, culprits, ma, mb);
+  }
+
+  /** The limits for n body slots, computed when n changes (they depend on nothing else). */
+  private setLimits(n: number): void {
+    this.limitsN = n;
+    this.plainLimit = simultaneousLimit(n);
+    this.windowLimit = zenoWindow(n);
+  }
+
+  /** check's full count, for any event (n's limits set). */
+  private countEvent(
+    time: number,
+    before: number,
+    n: number,
+    pumpsEnergy: () => boolean,
+    culprits: ((since: number) => ZenoCulprits) | undefined,
+    ma: number,
+    mb: number,
+  ): void {
     // Nothing is counted until the event has passed every test, so the same event, tried again
     // after a throw, throws the same message (as a World rebuilt from the saved counters does).
     const sameTime = time !== before ? 0 : this.sameTimeCount + 1;
@@ -123,7 +161,7 @@ export class ZenoWatch {
     }
     const unequal = ma < INF && mb < INF && ma !== mb;
     const since = sameTime === 0 || unequal ? 0 : this.sinceSpread + 1;
-    const plain = simultaneousLimit(n);
+    const plain = this.plainLimit;
     if (
       sameTime > plain &&
       (since > plain || sameTime > simultaneousLimitWithSpread(n, hi > lo ? Math.sqrt(hi / lo) : 1))
@@ -138,7 +176,7 @@ export class ZenoWatch {
     this.massLo = lo;
     this.massHi = hi;
     this.sinceSpread = since;
-    const w = zenoWindow(n);
+    const w = this.windowLimit;
     if (this.windowCount + 1 < w) {
       this.sameTimeCount = sameTime;
       this.windowCount++;
