@@ -1,4 +1,5 @@
 import { describe, expect, it } from "vitest";
+import { SceneError } from "../scene/errors.js";
 import { galperin } from "../scene/presets.js";
 import type { Action, SceneFile, Until } from "../scene/types.js";
 import { Timeline } from "./timeline.js";
@@ -21,6 +22,30 @@ describe("Timeline options", () => {
     expect(() => Timeline.fromScene(galperin(1), { g: 0 } as TimelineOptions)).toThrow(
       "g: unknown field (fromScene takes g and gravity from the scene)",
     );
+  });
+
+  it("refuses options that are not an object with the World's message, not a TypeError or a key named 0", () => {
+    // Review of session 29: new Timeline(null) threw "Cannot destructure property 'untils' of 'o' as
+    // it is null", new Timeline("x") "0: unknown field", new Timeline(5) and fromScene(scene, 5)
+    // were accepted, fromScene(scene, null) threw "Cannot convert undefined or null to object".
+    const known = "must be an object with fields g, gravity, history, compute";
+    const notObjects: [unknown, string][] = [
+      [null, "null"],
+      ["x", 'the string "x"'],
+      [5, "5"],
+      [[], "an array of 0"],
+      [false, "false"],
+    ];
+    for (const [options, got] of notObjects) {
+      const message = `options: ${known} (got ${got})`;
+      expect(() => new Timeline(options as TimelineOptions)).toThrow(message);
+      expect(() => new Timeline(options as TimelineOptions)).toThrow(SceneError);
+      expect(() => Timeline.fromScene(galperin(1), options as TimelineOptions)).toThrow(
+        `options: must be an object with fields history, compute (got ${got})`,
+      );
+    }
+    expect(new Timeline(undefined).history).toBe(true);
+    expect(Timeline.fromScene(galperin(1), undefined).history).toBe(true);
   });
 
   it("accepts the documented ones", () => {

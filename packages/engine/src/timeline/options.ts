@@ -2,10 +2,12 @@
  * checkOptions(options): the Timeline constructor's options validated (SceneError naming the key:
  * unknown keys, g and gravity as in scene files, magnitudes included; history and compute booleans) with the defaults
  * filled in (g 9.81, gravity [0, 0], history and compute true; untils true with compute, else false). checkSceneOptions: fromScene's
- * options, which must not carry g or gravity (they come from the scene).
+ * options, which must not carry g or gravity (they come from the scene). Options that are not an
+ * object (null, a number, an array) are refused as the World refuses them: `options: must be an
+ * object with fields … (got null)`.
  */
 import { SceneError } from "../scene/errors.js";
-import { nonNegative, onlyKeys, refuse, vec2 } from "../scene/fields.js";
+import { isObject, nonNegative, onlyKeys, refuse, vec2 } from "../scene/fields.js";
 import { checkFieldMagnitudes } from "../scene/magnitudes.js";
 import { SCENE_DEFAULTS, type Vec2 } from "../scene/types.js";
 import type { TimelineOptions } from "./types.js";
@@ -20,6 +22,7 @@ export interface CheckedOptions {
 }
 
 export function checkOptions(options: TimelineOptions): CheckedOptions {
+  mustBeObject(options, ["g", "gravity", "history", "compute"]);
   const o = options as Record<string, unknown>;
   // `untils` is internal (the CLI's): accepted, never offered in the list of known fields
   const { untils: _internal, ...documented } = o;
@@ -42,7 +45,14 @@ export function checkOptions(options: TimelineOptions): CheckedOptions {
 }
 
 export function checkSceneOptions(options: Omit<TimelineOptions, "g" | "gravity">): void {
+  mustBeObject(options, ["history", "compute"]);
   for (const key of ["g", "gravity"])
     if (Object.hasOwn(options, key))
       throw new SceneError(key, "unknown field (fromScene takes g and gravity from the scene)");
+}
+
+/** SceneError `options: must be an object with fields …` for options that are not a plain object. */
+function mustBeObject(options: unknown, fields: readonly string[]): void {
+  if (!isObject(options))
+    throw refuse("options", `must be an object with fields ${fields.join(", ")}`, options);
 }
