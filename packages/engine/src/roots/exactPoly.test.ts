@@ -49,8 +49,40 @@ describe("exactPolySign", () => {
   it("refuses non-finite input, naming the field", () => {
     expect(() => exactPolySign([1, Number.NaN], 1)).toThrow(/coeffs\[1\]/);
     expect(() => exactPolySign([1, 2], Number.POSITIVE_INFINITY)).toThrow(
-      /^x: must be a finite number \(got Infinity\)$/,
+      /^exactPolySign\(x\): must be a finite number \(got Infinity\)$/,
     );
+  });
+  it("names the function and shows what was given as the engine's other refusals do", () => {
+    // Review of session 29: a string "1" was refused as "x: must be a finite number (got 1)", an
+    // object as "(got [object Object])", without the function's name, and null coefficients threw
+    // "Cannot read properties of null (reading 'length')".
+    const bad: [() => unknown, string][] = [
+      [
+        () => exactPolySign([1, 2], "1" as unknown as number),
+        'exactPolySign(x): must be a finite number (got the string "1")',
+      ],
+      [
+        () => exactPolySign(["1", 2] as unknown as number[], 1),
+        'exactPolySign(coeffs[0]): must be a finite number (got the string "1")',
+      ],
+      [
+        () => exactDerivativeSign([1, {}] as unknown as number[], 0),
+        "exactDerivativeSign(coeffs[1]): must be a finite number (got an object)",
+      ],
+      [() => ulpsToExactRoot([1, 2], Number.NaN), "ulpsToExactRoot(x): must be a finite number (got NaN)"],
+      [
+        () => exactPolySign(null as unknown as number[], 1),
+        "exactPolySign(coeffs): must be an array-like of finite numbers (got null)",
+      ],
+      [
+        () => exactDerivativeSign(5 as unknown as number[], 1),
+        "exactDerivativeSign(coeffs): must be an array-like of finite numbers (got 5)",
+      ],
+    ];
+    for (const [call, message] of bad) {
+      expect(call).toThrow(RangeError);
+      expect(call).toThrow(message);
+    }
   });
 });
 

@@ -5,7 +5,9 @@
  * Contract:
  * - `exactPolySign(coeffs, x)`: the exact sign of c0 + c1 x + … + cn xⁿ, with the doubles taken at
  *   their exact values (every finite double is m·2^e with integer m, e). Computed with BigInt dyadic
- *   numbers, so no rounding at all. Throws a RangeError naming the field for a non-finite input.
+ *   numbers, so no rounding at all. Throws a RangeError naming the function and the field for a
+ *   non-finite input or coefficients that are not an array-like (`exactPolySign(x): must be a
+ *   finite number (got the string "1")`, the value shown as every refusal of the engine shows it).
  * - `exactDerivativeSign(coeffs, x)`: the same for the first derivative c1 + 2 c2 x + … (exact).
  * - `exactAbsCompare(coeffs, x1, x2)`: the sign of |p(x1)| − |p(x2)| (exact).
  * - `nextUp(x)` / `nextDown(x)`: the adjacent double above / below (IEEE-754 nextUp/nextDown).
@@ -14,6 +16,8 @@
  *   within k ulps of x); Infinity when there is none within maxUlps steps.
  * Pure functions; the typed-array views are module scratch (no allocation besides BigInts).
  */
+
+import { given } from "../sim/refusalText.js";
 
 const f64 = new Float64Array(1);
 const u32 = new Uint32Array(f64.buffer);
@@ -55,7 +59,7 @@ interface Dyadic {
 }
 
 function toDyadic(x: number, field: string): Dyadic {
-  if (!Number.isFinite(x)) throw new RangeError(`${field}: must be a finite number (got ${x})`);
+  if (!Number.isFinite(x)) throw new RangeError(`${field}: must be a finite number (got ${given(x)})`);
   if (x === 0) return { m: 0n, e: 0 };
   f64[0] = x;
   const hi = u32[HI] as number;
@@ -84,21 +88,25 @@ function signOf(m: bigint): -1 | 0 | 1 {
   return m > 0n ? 1 : m < 0n ? -1 : 0;
 }
 
-/** Exact value of Σ k_i c_i x^(i-shift) for i ≥ shift, where k_i = i (derivative) or 1. */
-function hornerValue(coeffs: ArrayLike<number>, x: number, derivative: boolean): Dyadic {
-  const xd = toDyadic(x, "x");
+/** Exact value of Σ k_i c_i x^(i-shift) for i ≥ shift, where k_i = i (derivative) or 1; `fn`, the
+ *  public function called, names the refused argument (`exactPolySign(x)`). */
+function hornerValue(coeffs: ArrayLike<number>, x: number, derivative: boolean, fn: string): Dyadic {
+  const len = coeffs === null || coeffs === undefined ? undefined : coeffs.length;
+  if (typeof len !== "number" || !(len >= 0 && Math.floor(len) === len))
+    throw new RangeError(`${fn}(coeffs): must be an array-like of finite numbers (got ${given(coeffs)})`);
+  const xd = toDyadic(x, `${fn}(x)`);
   const start = derivative ? 1 : 0;
   let s: Dyadic = { m: 0n, e: 0 };
-  for (let i = coeffs.length - 1; i >= start; i--) {
-    const c = toDyadic(coeffs[i] as number, `coeffs[${i}]`);
+  for (let i = len - 1; i >= start; i--) {
+    const c = toDyadic(coeffs[i] as number, `${fn}(coeffs[${i}])`);
     if (derivative) c.m *= BigInt(i);
     s = s.m === 0n ? c : add({ m: s.m * xd.m, e: s.e + xd.e }, c);
   }
   return s;
 }
 
-function hornerSign(coeffs: ArrayLike<number>, x: number, derivative: boolean): -1 | 0 | 1 {
-  return signOf(hornerValue(coeffs, x, derivative).m);
+function hornerSign(coeffs: ArrayLike<number>, x: number, derivative: boolean, fn: string): -1 | 0 | 1 {
+  return signOf(hornerValue(coeffs, x, derivative, fn).m);
 }
 
 /**
@@ -106,8 +114,8 @@ function hornerSign(coeffs: ArrayLike<number>, x: number, derivative: boolean): 
  * equal (the root solver's tie-break between the two doubles around a root).
  */
 export function exactAbsCompare(coeffs: ArrayLike<number>, x1: number, x2: number): -1 | 0 | 1 {
-  const v1 = hornerValue(coeffs, x1, false);
-  const v2 = hornerValue(coeffs, x2, false);
+  const v1 = hornerValue(coeffs, x1, false, "exactAbsCompare");
+  const v2 = hornerValue(coeffs, x2, false, "exactAbsCompare");
   const m1 = v1.m < 0n ? -v1.m : v1.m;
   const m2 = v2.m < 0n ? -v2.m : v2.m;
   const e = Math.min(v1.e, v2.e);
@@ -116,12 +124,12 @@ export function exactAbsCompare(coeffs: ArrayLike<number>, x1: number, x2: numbe
 
 /** Exact sign of the polynomial with double coefficients `coeffs` (ascending) at the double x. */
 export function exactPolySign(coeffs: ArrayLike<number>, x: number): -1 | 0 | 1 {
-  return hornerSign(coeffs, x, false);
+  return hornerSign(coeffs, x, false, "exactPolySign");
 }
 
 /** Exact sign of the first derivative of the polynomial at the double x. */
 export function exactDerivativeSign(coeffs: ArrayLike<number>, x: number): -1 | 0 | 1 {
-  return hornerSign(coeffs, x, true);
+  return hornerSign(coeffs, x, true, "exactDerivativeSign");
 }
 
 /**
@@ -130,7 +138,7 @@ export function exactDerivativeSign(coeffs: ArrayLike<number>, x: number): -1 | 
  * no such k ≤ maxUlps exists (walking stops at ±Infinity).
  */
 export function ulpsToExactRoot(coeffs: ArrayLike<number>, x: number, maxUlps = 64): number {
-  const s0 = exactPolySign(coeffs, x);
+  const s0 = hornerSign(coeffs, x, false, "ulpsToExactRoot");
   if (s0 === 0) return 0;
   let up = x;
   let down = x;

@@ -163,10 +163,17 @@ describe("realRoots: input validation", () => {
   });
   it("says the type of a value that is not a number (a string \"1\" read as 'got 1', like a valid number)", () => {
     expect(() => realRoots(["1", "-1"] as unknown as number[], 0, 2)).toThrow(
-      'realRoots(coeffs[0]): must be a finite number (got string "1")',
+      'realRoots(coeffs[0]): must be a finite number (got the string "1")',
     );
     expect(() => realRoots([1, 2], "0" as unknown as number, 1)).toThrow(
-      'realRoots(lo): must be a number (got string "0")',
+      'realRoots(lo): must be a number (got the string "0")',
+    );
+    // Review of session 29: null and objects read "(got object null)", "(got object [object Object])".
+    expect(() => realRoots(null as unknown as number[], 0, 1)).toThrow(
+      "realRoots(coeffs): must be an array-like of finite numbers (got null)",
+    );
+    expect(() => realRoots([1, {}] as unknown as number[], 0, 1)).toThrow(
+      "realRoots(coeffs[1]): must be a finite number (got an object)",
     );
   });
   it("refuses NaN ends, naming them", () => {

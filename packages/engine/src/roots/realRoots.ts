@@ -39,6 +39,7 @@
  * `realRootsInto(coeffs, lo, hi, out)`: the same into a caller's array (cleared; returns the count).
  */
 
+import { given } from "../sim/refusalText.js";
 import { ROOTS_CAUCHY_WIDENING } from "../tolerances.js";
 import { exponentOf } from "./pow2.js";
 import { found, quarticRoots } from "./quartic.js";
@@ -93,30 +94,21 @@ export function realRootsInto(coeffs: ArrayLike<number>, lo: number, hi: number,
   return general(coeffs, lo, hi, out).length;
 }
 
-/** A value as a message shows it: a string quoted (so "1" does not read as the number 1), with its type. */
-function describe(v: unknown): string {
-  return typeof v === "number"
-    ? String(v)
-    : `${typeof v} ${typeof v === "string" ? JSON.stringify(v) : String(v)}`;
-}
-
 /** Everything but the quartic hot path (quartic.ts); out is empty. */
 function general(coeffs: ArrayLike<number>, lo: number, hi: number, out: number[]): number[] {
   const len = coeffs === null || coeffs === undefined ? undefined : coeffs.length;
   if (typeof len !== "number" || !(len >= 0 && len <= Number.MAX_SAFE_INTEGER && Math.floor(len) === len))
-    throw new RangeError(
-      `realRoots(coeffs): must be an array-like of finite numbers (got ${describe(coeffs)})`,
-    );
+    throw new RangeError(`realRoots(coeffs): must be an array-like of finite numbers (got ${given(coeffs)})`);
   if (typeof lo !== "number" || Number.isNaN(lo))
-    throw new RangeError(`realRoots(lo): must be a number (got ${describe(lo)})`);
+    throw new RangeError(`realRoots(lo): must be a number (got ${given(lo)})`);
   if (typeof hi !== "number" || Number.isNaN(hi))
-    throw new RangeError(`realRoots(hi): must be a number (got ${describe(hi)})`);
+    throw new RangeError(`realRoots(hi): must be a number (got ${given(hi)})`);
   let n = -1;
   let maxAbs = 0;
   for (let i = 0; i < len; i++) {
     const c = coeffs[i] as number;
     if (typeof c !== "number" || !(c - c === 0)) {
-      throw new RangeError(`realRoots(coeffs[${i}]): must be a finite number (got ${describe(c)})`);
+      throw new RangeError(`realRoots(coeffs[${i}]): must be a finite number (got ${given(c)})`);
     }
     if (c !== 0) {
       n = i;
