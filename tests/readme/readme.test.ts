@@ -138,6 +138,43 @@ it("the engine README's examples type-check as TypeScript against the built type
   }
 });
 
+it("the engine README's TypeScript examples are whole programs: they type-check (strict) and print what they say", () => {
+  // Review of session 29: its two TypeScript samples were fragments (no import, `tl.path("cue")` of
+  // a timeline with no body "cue", an undefined `i`): pasted as written, tsc refused both.
+  const readme = readFileSync(join(root, "packages", "engine", "README.md"), "utf8");
+  const blocks = [...readme.matchAll(/```ts\n([\s\S]*?)```/g)].map((m) => m[1] as string);
+  expect(blocks.length).toBe(1);
+  const dir = mkdtempSync(join(root, "tests", "readme", ".tmp-"));
+  const tsc = join(root, "node_modules", "typescript", "bin", "tsc");
+  const strict = ["--strict", "--noUncheckedIndexedAccess", "--exactOptionalPropertyTypes"];
+  const nodenext = ["--module", "nodenext", "--moduleResolution", "nodenext", "--target", "es2022"];
+  const tscRun = (args: string[]): string => {
+    try {
+      execFileSync(process.execPath, [tsc, ...args], { encoding: "utf8" });
+      return "";
+    } catch (e) {
+      return String((e as { stdout?: string }).stdout ?? e);
+    }
+  };
+  try {
+    const file = join(dir, "history.mts");
+    writeFileSync(file, blocks[0] as string);
+    // as the README says (tsc's defaults), and with every strict option the repository uses
+    // (--types node: the repository's other @types, react-dom's, need more than tsc's default library)
+    expect(tscRun(["--strict", "--noEmit", "--types", "node", file])).toBe("");
+    expect(tscRun([...strict, ...nodenext, "--lib", "es2022", "--types", "node", "--noEmit", file])).toBe("");
+    expect(tscRun([...nodenext, "--types", "node", "--outDir", join(dir, "out"), file])).toBe("");
+    const out = execFileSync(process.execPath, [join(dir, "out", "history.mjs")], { encoding: "utf8" });
+    const lines = out.trim().split("\n");
+    expect(lines[0]).toBe("0 3 5 5");
+    expect(lines[1]).toMatch(/^3 5 5 1\.0396/);
+    expect(lines[2]).toMatch(/^3 bodyBody \[ \[ 'a', 0, -1\.98\d* \], \[ 'b', -1, -0\.98\d* \] \]$/);
+    expect(lines.length).toBe(3);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
+
 it("the engine README's one-liner writes a scene file the CLI takes (the sample scenes are not in the package)", () => {
   // Audit of session 21: the CLI examples read scene.json, and the samples are only in the repository.
   const readme = readFileSync(join(root, "packages", "engine", "README.md"), "utf8");
