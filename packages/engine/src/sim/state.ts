@@ -24,6 +24,20 @@ const law: MotionLaw = { ax: 0, ay: 0, tEnd: INF };
  */
 const MOTION_ARGS = new Float64Array(5);
 
+/**
+ * `counts` read-only: a frozen object with one enumerable getter per key, in its order, so a write
+ * throws a TypeError (in strict code, as every ES module is; sloppy code's write changes nothing)
+ * while reads, spreads, JSON and structuredClone (postMessage) see plain numbers; Node's
+ * console.log shows the numbers too, not `[Getter]`.
+ */
+function readOnlyView(counts: EventCounts): Readonly<EventCounts> {
+  const view: Record<string | symbol, unknown> = {};
+  for (const key of Object.keys(counts) as (keyof EventCounts)[])
+    Object.defineProperty(view, key, { enumerable: true, get: () => counts[key] });
+  Object.defineProperty(view, Symbol.for("nodejs.util.inspect.custom"), { value: () => ({ ...counts }) });
+  return Object.freeze(view) as unknown as Readonly<EventCounts>;
+}
+
 export class SimState {
   /**
    * Current time, friction field g and gravity field (read through the getters below). Given a
@@ -81,13 +95,15 @@ export class SimState {
   }
   /** The counts the World updates (`counts` shows them read-only). */
   protected readonly tally: EventCounts = { bodyBody: 0, bodyLine: 0, bodyPoint: 0, stop: 0 };
+  private readonly tallyView = readOnlyView(this.tally);
   /**
    * Collisions by kind and friction stops processed by this World so far (a clone starts from a
-   * copy). A live object, updated as events are processed: copy it to keep a snapshot. Read-only
-   * (a program that wrote into it changed what the World reported: audit of session 20).
+   * copy). A live object, updated as events are processed: copy it to keep a snapshot. Read-only,
+   * in its type and at run time (a program that wrote
+   * into it changed what the World reported: audit of session 20, review of session 29).
    */
   get counts(): Readonly<EventCounts> {
-    return this.tally;
+    return this.tallyView;
   }
   /** Reports runs of events the exact model cannot pass (zenoWatch.ts). */
   protected readonly zeno = new ZenoWatch();
