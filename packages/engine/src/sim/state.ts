@@ -124,13 +124,14 @@ export class SimState {
     this.frictionG = g;
     this.gravX = gx;
     this.gravY = gy;
-    this.opt = {
+    // frozen: `opt` is a public read, and a write from JavaScript switched an optimisation mid-run
+    this.opt = Object.freeze({
       broadPhase: opt.broadPhase ?? true,
       pathBounds: opt.pathBounds ?? true,
       quadraticFastPath: opt.quadraticFastPath ?? true,
       restingSkip: opt.restingSkip ?? true,
       recedingReject: opt.recedingReject ?? true,
-    };
+    });
     this.store = new BodyStore();
     this.grid = new Grid(this.store.capacity);
     this.heap = new CalendarQueue(this.store.capacity, (a, b) => this.tieLess(a, b));

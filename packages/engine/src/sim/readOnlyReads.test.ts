@@ -1,6 +1,7 @@
-// World.counts is read-only for JavaScript callers too, not only in its type: a write throws (ES
-// modules are strict) and changes nothing the World reports. Review of session 29: from plain
-// JavaScript `world.counts.bodyBody = 5` was accepted and the World went on counting from 5.
+// World.counts and World.opt are read-only for JavaScript callers too, not only in their types: a
+// write throws (ES modules are strict) and changes nothing the World reports or does. Review of
+// session 29: from plain JavaScript `world.counts.bodyBody = 5` was accepted and the World went on
+// counting from 5, and `world.opt.broadPhase = false` switched the broad phase off mid-run.
 import { inspect } from "node:util";
 import { describe, expect, it } from "vitest";
 import { World } from "./world.js";
@@ -54,3 +55,17 @@ function counted(): Record<string, number> {
   w.advance({});
   return { ...w.counts };
 }
+
+describe("World.opt", () => {
+  it("refuses a write (TypeError): the switches stay those the World was made with", () => {
+    const w = twoDiscs();
+    const opt = w.opt as { broadPhase: boolean };
+    expect(() => {
+      opt.broadPhase = false;
+    }).toThrow(TypeError);
+    expect(w.opt.broadPhase).toBe(true);
+    w.advance({});
+    expect({ ...w.counts }).toEqual(counted());
+    expect(new World({ optimizations: { broadPhase: false } }).opt.broadPhase).toBe(false);
+  });
+});
