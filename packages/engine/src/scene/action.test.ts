@@ -19,6 +19,16 @@ describe("checkAction", () => {
   });
 });
 
+describe("checkAction's path", () => {
+  it('defaults to "action" (a call without it named the field "undefined.r")', () => {
+    // Review of session 29: checkAction(raw) from JavaScript said "undefined.r: must be …".
+    const raw = { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: -1, m: 1 };
+    expect(() => checkAction(raw)).toThrow(/^action\.r: must be a positive finite number \(got -1\)$/);
+    expect(() => checkAction(raw, "actions[4]")).toThrow(/^actions\[4\]\.r: /);
+    expect(() => checkAction(null)).toThrow(/^action: must be an object \(got null\)$/);
+  });
+});
+
 describe("checkAction defaults", () => {
   it("gives each addBody its own default velocity array (it was one shared array for all)", () => {
     const raw = { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 };

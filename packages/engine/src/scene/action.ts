@@ -79,8 +79,9 @@ function checkUntil(raw: unknown, path: string): { time?: number; events?: numbe
   return u;
 }
 
-/** Validates and normalizes one action (see the header). Throws SceneError naming the field. */
-export function checkAction(raw: unknown, path: string): Action {
+/** Validates and normalizes one action (see the header). Throws SceneError naming the field under
+ *  `path` (default "action": `action.r`). */
+export function checkAction(raw: unknown, path = "action"): Action {
   if (!isObject(raw)) throw refuse(path, "must be an object", raw);
   const type = raw.type;
   if (type === undefined) throw new SceneError(join(path, "type"), "is required");
