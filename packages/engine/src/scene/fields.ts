@@ -52,12 +52,19 @@ export function nonNegative(o: Obj, key: string, path: string): number {
   return v === 0 ? 0 : v; // -0 becomes 0
 }
 
-/** A mass: a finite number > 0, or Infinity (written "Infinity" in JSON). */
+/** A mass: a finite number > 0, or Infinity (written "Infinity" in JSON). A null says why: it is
+ *  what JSON.stringify writes for Infinity (a toScene() saved without serializeScene). */
 export function mass(o: Obj, key: string, path: string): number {
   const v = required(o, key, path);
   if (v === "Infinity" || v === Number.POSITIVE_INFINITY) return Number.POSITIVE_INFINITY;
-  if (typeof v !== "number" || !Number.isFinite(v) || !(v > 0))
-    throw refuse(join(path, key), 'must be a positive finite number or "Infinity"', v);
+  if (typeof v !== "number" || !Number.isFinite(v) || !(v > 0)) {
+    const e = refuse(join(path, key), 'must be a positive finite number or "Infinity"', v);
+    if (v !== null) throw e;
+    throw new SceneError(
+      e.path,
+      `${e.reason}: JSON.stringify writes Infinity as null; serializeScene writes "Infinity"`,
+    );
+  }
   return v;
 }
 

@@ -11,6 +11,12 @@ describe("parseScene names the value it refuses", () => {
     ],
     ["null", { r: null }, "actions[0].r: must be a positive finite number (got null)"],
     ["a boolean", { m: true }, 'actions[0].m: must be a positive finite number or "Infinity" (got true)'],
+    [
+      // review of session 29: a Timeline's toScene() saved with JSON.stringify, not serializeScene
+      "a mass of null, what JSON.stringify writes for Infinity",
+      { m: null },
+      'actions[0].m: must be a positive finite number or "Infinity" (got null): JSON.stringify writes Infinity as null; serializeScene writes "Infinity"',
+    ],
     ["an array", { y: [1, 2] }, "actions[0].y: must be a finite number (got an array of 2)"],
     ["an object", { mu: { a: 1 } }, "actions[0].mu: must be a non-negative finite number (got an object)"],
     ["an empty id", { id: "" }, 'actions[0].id: must be a non-empty string (got the string "")'],
