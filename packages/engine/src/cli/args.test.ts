@@ -83,6 +83,8 @@ describe("parseArgs", () => {
       ["+2", 2],
       [" 7 ", 7],
       ["0", 0],
+      ["0.000e-400", 0], // zero written small is still 0 (only a non-zero digit is refused)
+      ["5e-324", 5e-324],
     ] as const)
       expect(parseArgs(["state", "s.json", "--at", v])).toEqual({
         command: "state",
@@ -162,6 +164,12 @@ describe("parseArgs", () => {
     [["state", "a", "--at", "Infinity"], /^--at: must be a finite number \(got "Infinity"\)$/],
     [["path", "a", "--id", "b", "--to", "1e999"], /^--to: must be a finite number \(got "1e999"\)$/],
     [["state", "a", "--at=1e400"], '--at: must be a finite number (got "1e400")'],
+    // review of session 29: a time below the smallest double read as 0 without a word
+    [
+      ["state", "a", "--at", "1e-400"],
+      '--at: is below the smallest double (about 5e-324) and would read as 0 (got "1e-400"): write 0 for 0',
+    ],
+    [["simulate", "a", "--until-time=0.5e-330"], "--until-time: is below the smallest double"],
     // regression: a count beyond 2^53 was refused as "must be a non-negative integer"
     [
       ["simulate", "a", "--max-events", "1e21"],

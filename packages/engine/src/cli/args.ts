@@ -137,6 +137,12 @@ function time(name: string, v: string, hint = ""): number {
   if (!DECIMAL_TIME.test(v.trim()) || t < 0)
     throw new UsageError(`${name}: must be a non-negative number (got ${typed(v)})`);
   if (!Number.isFinite(t)) throw new UsageError(`${name}: must be a finite number (got ${typed(v)})${hint}`);
+  if (t === 0 && /[1-9]/.test(v.trim().split(/e/i)[0] as string))
+    // 1e-400 reads as 0 to Number(), as to JSON.parse: the user asked for a time after 0, not 0
+    // (review of session 29: `--at 1e-400` printed the state at 0 without a word)
+    throw new UsageError(
+      `${name}: is below the smallest double (about 5e-324) and would read as 0 (got ${typed(v)}): write 0 for 0`,
+    );
   return t;
 }
 
