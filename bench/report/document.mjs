@@ -23,7 +23,22 @@ const CAVEATS = [
   "rapier2d-compat computes in 32-bit floats inside WASM; masses of 1e10 and above (Galperin ≥ 6 digits) are beyond what f32 mass ratios resolve.",
   "The peers have no sliding friction for a top-down table: the break applies μ·g·dt per step to each speed (clamped at zero). Energy is not conserved there by design; the break's error column is the worst overlap.",
   "For the gas scenes there is no exact final state (the dynamics is chaotic); collision counts there are compared with chapgame's count over the same span, which is only a statistical reference.",
-  "Timings are medians of the runs listed (after a warm-up pass that also collects the metrics), on the machine printed above; ratios measured in the same run are the headline, absolute times are context. A peer pass longer than 3 s is timed once: the metrics pass itself, which times only `step()` (its JIT warm-up is negligible at that length).",
+];
+
+/**
+ * How the side-by-side times were taken: results that record their pass limits (peers.passLimits)
+ * were settled first, with those limits; older results were not, and the caveat says what that cost.
+ */
+function timingCaveat(peers) {
+  const limits = peers?.passLimits;
+  const common =
+    "on the machine printed above; ratios measured in the same run are the headline, absolute times are context. A pass longer than 3 s is timed once: the metrics pass itself, which times only `step()` (its JIT warm-up is negligible at that length).";
+  if (limits)
+    return `Side-by-side timings, chapgame's and every peer's alike: the metrics pass, then warm-up passes of the timed call until the median of the last ${limits.settleWindow} is within ${sig(100 * limits.settleWithin)} % of the fastest (at most ${sig(limits.warmupBudgetNs / 1e9)} s with the metrics pass, ${limits.maxWarmup} passes), then at least ${limits.minRuns} timed passes (up to ${limits.maxRuns} while they total under ${sig(limits.softBudgetNs / 1e9)} s); the time is their median, the brackets give the fastest and the slowest pass. No garbage collection is forced between the passes (it would throw away the compiled code: bench/README.md, "Side-by-side timings"); times ${common}`;
+  return `Timings are medians of the runs listed (after a warm-up pass that also collects the metrics, then a forced garbage collection) ${common} These rows were timed before the side-by-side timings were settled (bench/README.md, "Side-by-side timings"): the forced collection threw away the code the warm-up pass had compiled, so the short rows' medians include passes of partly unoptimised code and changed up to 3× between runs of the same code.`;
+}
+
+const MACHINE_CAVEATS = [
   "The machine is shared: other processes (builds and test runs in the same checkout) may run during the benchmark, which inflates absolute times unevenly; the solver methods are therefore timed round-robin, and every ratio in the headline is between numbers of the same run.",
 ];
 
@@ -67,7 +82,8 @@ export function buildReport(results) {
   engineSection(results.engine, out, svgs);
   stressSection(results.stress, out, svgs);
   out.push("## Caveats\n");
-  out.push(CAVEATS.map((c) => `- ${c}`).join("\n"));
+  const caveats = [...CAVEATS, timingCaveat(results.peers), ...MACHINE_CAVEATS];
+  out.push(caveats.map((c) => `- ${c}`).join("\n"));
   out.push("");
   return { markdown: `${out.join("\n")}\n`, head, svgs };
 }

@@ -12,6 +12,14 @@ export function sig(v, digits = 3) {
 
 export const pct = (v) => (v === null || v === undefined ? dash : `${sig(100 * v)} %`);
 export const ms = (ns) => (ns === null || ns === undefined ? dash : `${sig(ns / 1e6)} ms`);
+/**
+ * A timed row's median with the range of its timed passes, "4.31 ms (4.1–5.2)", when the row
+ * records them (runs since the side-by-side rows keep their spread); otherwise the median alone.
+ */
+export const msRange = (row) =>
+  row?.minNs === undefined || row?.maxNs === undefined || row.runs < 2
+    ? ms(row?.ns)
+    : `${ms(row.ns)} (${sig(row.minNs / 1e6, 2)}–${sig(row.maxNs / 1e6, 2)})`;
 export const int = (v) => (v === null || v === undefined ? dash : Math.round(v).toLocaleString("en-US"));
 
 export function table(head, rows) {

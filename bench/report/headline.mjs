@@ -3,7 +3,7 @@
  * block): one row per headline number, each beside a comparison measured in the same run, its target
  * and met/missed. headline(results) returns the markdown table.
  */
-import { dash, galperinTarget, int, ms, sig, status, table } from "./format.mjs";
+import { dash, galperinTarget, int, msRange, sig, status, table } from "./format.mjs";
 
 export function headline(r) {
   const rows = [];
@@ -60,9 +60,9 @@ export function headline(r) {
         .sort((a, b) => a.ns - b.ns)[0];
       rows.push([
         `dilute gas, 1,000 discs, ${gas.span} s`,
-        `${ms(gas.chapgame.ns)}, ΔE/E ${sig(gas.chapgame.metrics.energyError)}`,
+        `${msRange(gas.chapgame)}, ΔE/E ${sig(gas.chapgame.metrics.energyError)}`,
         best
-          ? `fastest peer at 60 Hz (tuned): ${best.peer} ${ms(best.ns)}, ΔE/E ${sig(best.metrics.energyError)}`
+          ? `fastest peer at 60 Hz (tuned): ${best.peer} ${msRange(best)}, ΔE/E ${sig(best.metrics.energyError)}`
           : dash,
         dash,
         dash,

@@ -5,7 +5,7 @@
  * The error plotted per scene is the scene's natural one (see errorOf); exact zeros are drawn at
  * FLOOR so they stay visible on the log axis (the table gives the true value).
  */
-import { int, ms, sig, table } from "./format.mjs";
+import { int, msRange, sig, table } from "./format.mjs";
 import { plot } from "./svg.mjs";
 
 export const FLOOR = 1e-17;
@@ -100,7 +100,7 @@ export function sceneTable(scene) {
       "**chapgame**",
       "exact",
       `${int(c.events)} events`,
-      ms(c.ns),
+      msRange(c),
       c.runs,
       sig(c.metrics.energyError),
       sig(c.metrics.worstOverlap),
@@ -118,7 +118,7 @@ export function sceneTable(scene) {
       p.peer,
       p.config,
       `${p.hz} Hz`,
-      ms(p.ns),
+      msRange(p),
       p.runs,
       sig(m.energyError),
       sig(m.worstOverlap),
