@@ -2,6 +2,7 @@
 export interface PassLimits {
   warmupBudgetNs: number;
   maxWarmup: number;
+  ownWarmupNs: number;
   settleWindow: number;
   settleWithin: number;
   minRuns: number;
@@ -19,7 +20,7 @@ export interface Spread {
 export interface SettledPasses extends Spread {
   runs: number;
   allNs: number[];
-  /** settled: null when the caller's own pass alone took the warm-up budget (no warm-up pass ran). */
+  /** settled: null when the caller's own pass was long enough to be the warm-up (no warm-up pass ran). */
   warmup: { passes: number; allNs: number[]; settled: boolean | null };
 }
 export const PASS_LIMITS: PassLimits;

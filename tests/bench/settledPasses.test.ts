@@ -1,6 +1,6 @@
 /**
  * The side-by-side rows' timing (bench/lib/settledPasses.mjs): warm-up passes stop once the last
- * three are within 20 % of the fastest, or at the warm-up budget (the caller's metrics pass counted);
+ * three are within 20 % of the fastest, or at the warm-up budget (a long metrics pass counted in it);
  * then at least three timed passes, more while they are cheap, never past the hard budget; the spread
  * is the timed passes' extremes and quartiles. The passes are scripted lists of times, so every
  * stopping rule is checked exactly.
@@ -47,18 +47,26 @@ describe("settledPasses", () => {
     expect(s.calls()).toBe(5 + 15);
   });
 
-  it("counts the caller's metrics pass in the warm-up budget, and reports settled null when no warm-up pass ran", () => {
-    const s = scripted([400]);
-    const r = settledPasses(s.pass, { alreadyNs: 400 * MS });
+  it("counts a long metrics pass as the warm-up, and reports settled null when no warm-up pass ran", () => {
+    const s = scripted([600]);
+    const r = settledPasses(s.pass, { alreadyNs: 600 * MS });
     expect(r.warmup).toEqual({ passes: 0, allNs: [], settled: null });
-    expect(r.runs).toBe(PASS_LIMITS.minRuns); // 3 passes of 0.4 s: over the soft budget after the minimum
+    expect(r.runs).toBe(PASS_LIMITS.minRuns); // 3 passes of 0.6 s: over the soft budget after the minimum
+    expect(s.calls()).toBe(PASS_LIMITS.minRuns);
+  });
+
+  it("does not count a short metrics pass: the timed call still warms up for its own budget", () => {
+    const s = scripted([200, 150, 150, 150]);
+    const r = settledPasses(s.pass, { alreadyNs: 400 * MS }); // under ownWarmupNs (0.5 s)
+    // 200 then 150: 0.35 s spent, past the 0.25 s budget, not settled (only two passes)
+    expect(r.warmup).toEqual({ passes: 2, allNs: [200 * MS, 150 * MS], settled: false });
   });
 
   it("gives up warming up at the budget when the times never settle, and says so", () => {
     const s = scripted([10, 40]); // 10, then 40 ms forever: the last three are 4x the fastest
-    const r = settledPasses(s.pass, { alreadyNs: 50 * MS });
-    // 50 + 10 + 40 + 40 + 40 + 40 = 220 < 250, one more pass: 260 ms, stop
-    expect(r.warmup.passes).toBe(6);
+    const r = settledPasses(s.pass, { alreadyNs: 50 * MS }); // a short metrics pass: not counted
+    // 10 + 40 * 5 = 210 < 250, one more pass: 250 ms, stop
+    expect(r.warmup.passes).toBe(7);
     expect(r.warmup.settled).toBe(false);
   });
 
