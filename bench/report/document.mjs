@@ -29,12 +29,15 @@ const CAVEATS = [
  * How the side-by-side times were taken: results that record their pass limits (peers.passLimits)
  * were settled first, with those limits; older results were not, and the caveat says what that cost.
  */
+/** "1 pass", "20 passes". */
+const passes = (n) => `${n} ${n === 1 ? "pass" : "passes"}`;
+
 function timingCaveat(peers) {
   const limits = peers?.passLimits;
   const common =
     "on the machine printed above; ratios measured in the same run are the headline, absolute times are context. A pass longer than 3 s is timed once: the metrics pass itself, which times only `step()` (its JIT warm-up is negligible at that length).";
   if (limits)
-    return `Side-by-side timings, chapgame's and every peer's alike: the metrics pass, then warm-up passes of the timed call until the median of the last ${limits.settleWindow} is within ${sig(100 * limits.settleWithin)} % of the fastest (at most ${sig(limits.warmupBudgetNs / 1e9)} s or ${limits.maxWarmup} passes; a metrics pass of ${sig(limits.ownWarmupNs / 1e9)} s or more stands for the warm-up), then at least ${limits.minRuns} timed passes (up to ${limits.maxRuns} while they total under ${sig(limits.softBudgetNs / 1e9)} s); the time is their median, the brackets give the fastest and the slowest pass. No garbage collection is forced between the passes (it would throw away the compiled code: bench/README.md, "Side-by-side timings"); times ${common}`;
+    return `Side-by-side timings, chapgame's and every peer's alike: the metrics pass, then warm-up passes of the timed call until the median of the last ${limits.settleWindow} is within ${sig(100 * limits.settleWithin)} % of the fastest (at most ${sig(limits.warmupBudgetNs / 1e9)} s or ${passes(limits.maxWarmup)}; a metrics pass of ${sig(limits.ownWarmupNs / 1e9)} s or more stands for the warm-up), then at least ${passes(limits.minRuns).replace(" ", " timed ")} (up to ${limits.maxRuns} while they total under ${sig(limits.softBudgetNs / 1e9)} s); the time is their median, the brackets give the fastest and the slowest pass. No garbage collection is forced between the passes (it would throw away the compiled code: bench/README.md, "Side-by-side timings"); times ${common}`;
   return `Timings are medians of the runs listed (after a warm-up pass that also collects the metrics, then a forced garbage collection) ${common} These rows were timed before the side-by-side timings were settled (bench/README.md, "Side-by-side timings"): the forced collection threw away the code the warm-up pass had compiled, so the short rows' medians include passes of partly unoptimised code and changed up to 3× between runs of the same code.`;
 }
 
