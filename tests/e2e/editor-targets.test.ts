@@ -1,14 +1,21 @@
 /**
- * End-to-end, in Debian's Chromium: every button of the stage's toolbar and time bar (Time and
- * Speed), and the toolbar's checkbox labels (Trails, Path), are targets of at least 24 x 24 px
- * (WCAG 2.2, 2.5.8) at every window size the editor's end-to-end tests use, and no two of them
- * overlap. They were 21 px high at every width (13 px text, 2 px padding), ? 21 px wide and the
- * time bar's 0 button 22 in a short window, the labels 19 px high. That they did not cost the canvas
- * a line is editor-stage-lines' and editor-short-stage-lines' (the toolbar and the time bar as high
- * as before).
+ * End-to-end, in Debian's Chromium: every target of the stage, the header, the message bar and the
+ * persistent notices is at least 24 x 24 px (WCAG 2.2, 2.5.8) at every window size the editor's
+ * end-to-end tests use, and no two of them overlap: the stage's toolbar and time bar (Time and
+ * Speed) with the toolbar's checkbox labels (Trails, Path); the header's Undo, Redo, Save file, Load
+ * file and Load preset; the message's More / Less and ✕; the notices' More / Less, Open it, Dismiss
+ * and Save it as a file, cut to their line and shown whole. They were 21 px high at every width
+ * (13 px text, 2 px padding), ? 21 px wide and the time bar's 0 button 22 in a short window, the
+ * labels 19 px high, the header's buttons 21, the message's and the notices' 17 (21 in a short
+ * window). None of them needs WCAG's spacing exception. That they did not cost the canvas a line is
+ * editor-stage-lines', editor-short-stage-lines' and editor-header-lines' (the toolbar, the time bar
+ * and the header as high as before); that the notices keep to one line in a short window,
+ * editor-notices-short's.
  */
 import { describe, expect, it } from "vitest";
-import { editorForFile } from "./editorForFile.js";
+import { editorForFile, poll } from "./editorForFile.js";
+import { longRefusal, showMessage } from "./messages.js";
+import { newerNotice, refusedNotice, setNotices } from "./notices.js";
 import { forEachWindowSize, type WindowSize } from "./windowSize.js";
 
 const editor = editorForFile();
@@ -50,34 +57,103 @@ const SIZES: WindowSize[] = [
   [667, 375],
 ];
 
-/** Each stage target's name and box (its border box, what a pointer hits). */
-function stageTargets() {
-  return editor.page.evaluate(() =>
-    Array.from(document.querySelectorAll(".toolbar button, .toolbar label, .timebar button")).map((el) => {
-      const r = el.getBoundingClientRect();
-      const name = el.getAttribute("aria-label") ?? el.textContent!.trim();
-      return { name, x: r.x, y: r.y, width: r.width, height: r.height };
-    }),
+/** A target's accessible name and border box (what a pointer hits). */
+interface Target {
+  name: string;
+  x: number;
+  y: number;
+  width: number;
+  height: number;
+}
+
+/** The stage's targets: its toolbar's buttons and checkbox labels, its time bar's buttons. */
+const STAGE_TARGETS = ".toolbar button, .toolbar label, .timebar button";
+/** The header's buttons (the message's among them) and the notices'. */
+const BAR_TARGETS = ".header button, .stage-notices button";
+
+/** Each drawn element `selector` finds, as a target (one not drawn, as More in a wide window, has no box). */
+function targets(selector: string): Promise<Target[]> {
+  return editor.page.evaluate(
+    (selector) =>
+      Array.from(document.querySelectorAll(selector))
+        .map((el) => {
+          const r = el.getBoundingClientRect();
+          const name = el.getAttribute("aria-label") ?? el.textContent!.trim();
+          return { name, x: r.x, y: r.y, width: r.width, height: r.height };
+        })
+        .filter((t) => t.width > 0 && t.height > 0),
+    selector,
   );
 }
+
+/** Expects each target at least 24 x 24 px, and no two of them overlapping. */
+function expectTargets(at: string, all: Target[]): void {
+  for (const t of all) {
+    expect(t.width, `${at}: ${t.name} wide`).toBeGreaterThanOrEqual(MIN_TARGET_PX);
+    expect(t.height, `${at}: ${t.name} high`).toBeGreaterThanOrEqual(MIN_TARGET_PX);
+  }
+  for (const [i, a] of all.entries())
+    for (const b of all.slice(i + 1)) {
+      const overlapX = Math.min(a.x + a.width, b.x + b.width) - Math.max(a.x, b.x);
+      const overlapY = Math.min(a.y + a.height, b.y + b.height) - Math.max(a.y, b.y);
+      expect(overlapX > 0.5 && overlapY > 0.5, `${at}: ${a.name} overlaps ${b.name}`).toBe(false);
+    }
+}
+
+/** The buttons drawn at every size while the message and both notices are shown, but More (where
+ *  a text is cut): the header's, the message's ✕, and the notices'. */
+const BAR_BUTTONS = ["Undo", "Redo", "Save file", "Load file", "Load preset", "Dismiss message"];
+const NOTICE_BUTTONS = ["Open it", "Dismiss", "Save it as a file", "Dismiss"];
+
+/** The targets' names, in document order. */
+const names = (all: Target[]) => all.map((t) => t.name);
 
 describe("the stage's targets", () => {
   it("are at least 24 x 24 px at every window size, none overlapping another", async () => {
     await forEachWindowSize(editor.page, SIZES, async (width, height) => {
-      const at = `${width} x ${height}`;
-      const targets = await stageTargets();
+      const stage = await targets(STAGE_TARGETS);
       // the 8 tools, Fit, Trails, Path, Delete, ?; the zoom's 3, the steps' 5, Speed's 5
-      expect(targets.length, at).toBe(26);
-      for (const t of targets) {
-        expect(t.width, `${at}: ${t.name} wide`).toBeGreaterThanOrEqual(MIN_TARGET_PX);
-        expect(t.height, `${at}: ${t.name} high`).toBeGreaterThanOrEqual(MIN_TARGET_PX);
-      }
-      for (const [i, a] of targets.entries())
-        for (const b of targets.slice(i + 1)) {
-          const overlapX = Math.min(a.x + a.width, b.x + b.width) - Math.max(a.x, b.x);
-          const overlapY = Math.min(a.y + a.height, b.y + b.height) - Math.max(a.y, b.y);
-          expect(overlapX > 0.5 && overlapY > 0.5, `${at}: ${a.name} overlaps ${b.name}`).toBe(false);
-        }
+      expect(stage.length, `${width} x ${height}`).toBe(26);
+      expectTargets(`${width} x ${height}`, stage);
     });
+  });
+});
+
+describe("the header's, the message's and the notices' targets", () => {
+  it("are at least 24 x 24 px at every window size, cut and shown whole, none overlapping another or the stage's", async () => {
+    try {
+      await forEachWindowSize(editor.page, SIZES, async (width, height) => {
+        await setNotices(editor.page, true, true);
+        await showMessage(editor.page, longRefusal(3));
+        await poll(async () => (await targets(BAR_TARGETS)).length).toBeGreaterThanOrEqual(
+          BAR_BUTTONS.length + NOTICE_BUTTONS.length,
+        );
+        const cut = await targets(BAR_TARGETS);
+        const shown = names(cut).filter((n) => n !== "More");
+        expect(shown.sort(), `${width} x ${height}`).toEqual([...BAR_BUTTONS, ...NOTICE_BUTTONS].sort());
+        expectTargets(`${width} x ${height}, cut`, [...cut, ...(await targets(STAGE_TARGETS))]);
+        // every More pressed, notices first (an open message may hang over them): each is Less
+        const mores = names(cut).filter((n) => n === "More").length;
+        for (const scope of [
+          refusedNotice(editor.page),
+          newerNotice(editor.page),
+          editor.page.locator(".message"),
+        ]) {
+          const more = scope.getByRole("button", { name: "More", exact: true });
+          if (await more.isVisible()) await more.click();
+        }
+        await poll(async () => names(await targets(BAR_TARGETS)).filter((n) => n === "Less").length).toBe(
+          mores,
+        );
+        const whole = await targets(BAR_TARGETS);
+        expect(names(whole), `${width} x ${height}`).not.toContain("More");
+        expectTargets(`${width} x ${height}, whole`, [...whole, ...(await targets(STAGE_TARGETS))]);
+        await showMessage(editor.page, null);
+        await setNotices(editor.page, false, false);
+      });
+    } finally {
+      await showMessage(editor.page, null);
+      await setNotices(editor.page, false, false);
+    }
   });
 });
