@@ -2,15 +2,16 @@
  * End-to-end, in Debian's Chromium: every target of the stage, the header, the message bar and the
  * persistent notices is at least 24 x 24 px (WCAG 2.2, 2.5.8) at every window size the editor's
  * end-to-end tests use, and no two of them overlap: the stage's toolbar and time bar (Time and
- * Speed) with the toolbar's checkbox labels (Trails, Path); the header's Undo, Redo, Save file, Load
- * file and Load preset; the message's More / Less and ✕; the notices' More / Less, Open it, Dismiss
- * and Save it as a file, cut to their line and shown whole. They were 21 px high at every width
- * (13 px text, 2 px padding), ? 21 px wide and the time bar's 0 button 22 in a short window, the
- * labels 19 px high, the header's buttons 21, the message's and the notices' 17 (21 in a short
- * window). None of them needs WCAG's spacing exception. That they did not cost the canvas a line is
- * editor-stage-lines', editor-short-stage-lines' and editor-header-lines' (the toolbar, the time bar
- * and the header as high as before); that the notices keep to one line in a short window,
- * editor-notices-short's.
+ * Speed), their buttons and text fields, with the toolbar's checkbox labels (Trails, Path); the
+ * header's Undo, Redo, Save file, Load file, scene title, preset list and Load preset; the message's
+ * More / Less and ✕; the notices' More / Less, Open it, Dismiss and Save it as a file, cut to their
+ * line and shown whole. They were 21 px high at every width (13 px text, 2 px padding), ? 21 px wide
+ * and the time bar's 0 button 22 in a short window, the labels and the preset list 19 px high, the
+ * message's and the notices' buttons 17 (21 in a short window's notices). The Time slider (16 px
+ * high) is the one target kept smaller, by WCAG's spacing exception, which is checked for it
+ * instead. That none of this cost the canvas a line is editor-stage-lines', editor-short-stage-lines'
+ * and editor-header-lines' (the toolbar, the time bar and the header as high as before); that the
+ * notices keep to one line in a short window, editor-notices-short's.
  */
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
@@ -66,20 +67,24 @@ interface Target {
   height: number;
 }
 
-/** The stage's targets: its toolbar's buttons and checkbox labels, its time bar's buttons. */
-const STAGE_TARGETS = ".toolbar button, .toolbar label, .timebar button";
-/** The header's buttons (the message's among them) and the notices'. */
-const BAR_TARGETS = ".header button, .stage-notices button";
+/** The stage's targets: its toolbar's buttons and checkbox labels, its time bar's buttons and text
+ *  fields (not the Time slider: expectSpacing checks it). */
+const STAGE_TARGETS = ".toolbar button, .toolbar label, .timebar button, .timebar input:not([type=range])";
+/** The header's buttons (the message's among them) and fields, and the notices' buttons. */
+const BAR_TARGETS = ".header button, .header input, .header select, .stage-notices button";
 
-/** Each drawn element `selector` finds, as a target (one not drawn, as More in a wide window, has no box). */
+/** Each drawn element `selector` finds, as a target (one not drawn, as More in a wide window or the
+ *  digits' field of a preset without digits, is left out). */
 function targets(selector: string): Promise<Target[]> {
   return editor.page.evaluate(
     (selector) =>
       Array.from(document.querySelectorAll(selector))
         .map((el) => {
           const r = el.getBoundingClientRect();
-          const name = el.getAttribute("aria-label") ?? el.textContent!.trim();
-          return { name, x: r.x, y: r.y, width: r.width, height: r.height };
+          const label = (el as HTMLInputElement).labels?.[0]?.textContent;
+          const name = el.getAttribute("aria-label") ?? label ?? el.textContent!.trim();
+          const drawn = getComputedStyle(el).visibility !== "hidden";
+          return { name, x: r.x, y: r.y, width: drawn ? r.width : 0, height: r.height };
         })
         .filter((t) => t.width > 0 && t.height > 0),
     selector,
@@ -100,21 +105,55 @@ function expectTargets(at: string, all: Target[]): void {
     }
 }
 
+/**
+ * Expects WCAG's spacing for a target under 24 px high spanning a line (the Time slider): a 24 px
+ * circle centred on its thumb, wherever the thumb is along it, meets no other target, that is no
+ * target's box reaches within 12 px of its middle line from 12 px before its start to 12 px past
+ * its end.
+ */
+function expectSpacing(at: string, slider: Target, others: Target[]): void {
+  const middle = slider.y + slider.height / 2;
+  const band = { x: slider.x - 12, right: slider.x + slider.width + 12, y: middle - 12, bottom: middle + 12 };
+  for (const t of others) {
+    const overlapX = Math.min(band.right, t.x + t.width) - Math.max(band.x, t.x);
+    const overlapY = Math.min(band.bottom, t.y + t.height) - Math.max(band.y, t.y);
+    expect(overlapX > 0 && overlapY > 0, `${at}: ${t.name} within 12 px of ${slider.name}`).toBe(false);
+  }
+}
+
 /** The buttons drawn at every size while the message and both notices are shown, but More (where
  *  a text is cut): the header's, the message's ✕, and the notices'. */
-const BAR_BUTTONS = ["Undo", "Redo", "Save file", "Load file", "Load preset", "Dismiss message"];
+const BAR_BUTTONS = [
+  "Undo",
+  "Redo",
+  "Save file",
+  "Load file",
+  "Scene title",
+  "Preset",
+  "Load preset",
+  "Dismiss message",
+];
 const NOTICE_BUTTONS = ["Open it", "Dismiss", "Save it as a file", "Dismiss"];
 
 /** The targets' names, in document order. */
 const names = (all: Target[]) => all.map((t) => t.name);
 
 describe("the stage's targets", () => {
-  it("are at least 24 x 24 px at every window size, none overlapping another", async () => {
+  it("are at least 24 x 24 px at every window size, none overlapping another; the Time slider keeps WCAG's spacing", async () => {
     await forEachWindowSize(editor.page, SIZES, async (width, height) => {
+      const at = `${width} x ${height}`;
       const stage = await targets(STAGE_TARGETS);
-      // the 8 tools, Fit, Trails, Path, Delete, ?; the zoom's 3, the steps' 5, Speed's 5
-      expect(stage.length, `${width} x ${height}`).toBe(26);
-      expectTargets(`${width} x ${height}`, stage);
+      // the 8 tools, Fit, Trails, Path, Delete, ?; the zoom's 3, the steps' 5, Speed's 5; the 3 fields
+      expect(stage.length, at).toBe(29);
+      expectTargets(at, stage);
+      // the Time slider, 16 px high, by WCAG's spacing
+      const [slider] = await targets(".timebar input[type=range]");
+      expect(slider!.name, at).toBe("Time");
+      // the canvas is a target too (bodies are pressed and dragged on it): in a short window it ends
+      // 12 px above the slider's middle, where the circle only touches it
+      const canvas = (await targets("[data-testid=scene-canvas]")).map((t) => ({ ...t, name: "the canvas" }));
+      expect(canvas.length, at).toBe(1);
+      expectSpacing(at, slider!, [...stage, ...(await targets(BAR_TARGETS)), ...canvas]);
     });
   });
 });
