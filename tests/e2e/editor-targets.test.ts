@@ -1,15 +1,18 @@
 /**
- * End-to-end, in Debian's Chromium: every target of the stage, the header, the message bar and the
- * persistent notices is at least 24 x 24 px (WCAG 2.2, 2.5.8) at every window size the editor's
- * end-to-end tests use, and no two of them overlap: the stage's toolbar and time bar (Time and
- * Speed), their buttons and text fields, with the toolbar's checkbox labels (Trails, Path); the
- * header's Undo, Redo, Save file, Load file, scene title, preset list and Load preset; the message's
- * More / Less and ✕; the notices' More / Less, Open it, Dismiss and Save it as a file, cut to their
- * line and shown whole. They were 21 px high at every width (13 px text, 2 px padding), ? 21 px wide
- * and the time bar's 0 button 22 in a short window, the labels and the preset list 19 px high, the
- * message's and the notices' buttons 17 (21 in a short window's notices). The Time slider (16 px
- * high) is the one target kept smaller, by WCAG's spacing exception, which is checked for it
- * instead. That none of this cost the canvas a line is editor-stage-lines', editor-short-stage-lines'
+ * End-to-end, in Debian's Chromium: every target of the stage, the header, the message bar, the
+ * persistent notices, the side panels out of their tables and the Keyboard shortcuts dialog is at
+ * least 24 x 24 px (WCAG 2.2, 2.5.8) at every window size the editor's end-to-end tests use, and no
+ * two of them overlap: the stage's toolbar and time bar (Time and Speed), their buttons and text
+ * fields, with the toolbar's checkbox labels (Trails, Path); the header's Undo, Redo, Save file,
+ * Load file, scene title, preset list and Load preset; the message's More / Less and ✕; the notices'
+ * More / Less, Open it, Dismiss and Save it as a file, cut to their line and shown whole; the side
+ * panels' buttons, fields and labels, and the dialog's Close and checkbox. They were 21 px high at
+ * every width (13 px text, 2 px padding), ? 21 px wide and the time bar's 0 button 22 in a short
+ * window, the labels and the preset list 19 px high, the message's and the notices' buttons 17 (21
+ * in a short window's notices), the Globals values 17 (19.5 px wide). The Time slider (16 px high)
+ * is kept smaller, by WCAG's spacing exception, which is checked for it instead. The tables' own
+ * buttons keep their size and are not checked (rows as high as their text: a value 17 px, Delete
+ * 21, the Event log's ✕ 15). That none of this cost the canvas a line is editor-stage-lines', editor-short-stage-lines'
  * and editor-header-lines' (the toolbar, the time bar and the header as high as before); that the
  * notices keep to one line in a short window, editor-notices-short's.
  */
@@ -194,5 +197,44 @@ describe("the header's, the message's and the notices' targets", () => {
       await showMessage(editor.page, null);
       await setNotices(editor.page, false, false);
     }
+  });
+});
+
+/** The side panels' targets out of the tables (their buttons, text fields and checkbox or radio
+ *  labels); not the tables' (a cell's value, a row's Delete, the Event log's ✕: rows as high as their
+ *  text), nor the Event details' participants (links in its text), nor a Skip the … table unfocused. */
+const SIDE_TARGETS = [
+  ".side button:not(td *, .link, .skip-table)",
+  ".side input:not([type=checkbox], [type=radio], td *)",
+  ".side label:has(> input:is([type=checkbox], [type=radio]))",
+].join(", ");
+/** Among them, those of the start scene at every size. */
+const SIDE_NAMED = [
+  "Seconds ahead",
+  "Events ahead",
+  "Add body",
+  "Add line",
+  "Add point",
+  "g = 1",
+  "g = 9.81",
+];
+
+describe("the side panels' and the Keyboard shortcuts dialog's targets out of the tables", () => {
+  it("are at least 24 x 24 px at every window size, none overlapping another", async () => {
+    await forEachWindowSize(editor.page, SIZES, async (width, height) => {
+      const at = `${width} x ${height}`;
+      const side = await targets(SIDE_TARGETS);
+      expect(names(side), at).toEqual(expect.arrayContaining([...SIDE_NAMED, "Share link", "Copy", "Paste"]));
+      expectTargets(at, side);
+      for (const table of ["Bodies", "Event log"]) {
+        await editor.page.getByRole("button", { name: `Skip the ${table} table` }).focus();
+        expectTargets(`${at}, focused`, await targets(".side .skip-table:focus"));
+      }
+      await editor.page.getByRole("button", { name: "Keyboard shortcuts" }).click();
+      const dialog = await targets(".modal button, .modal label:has(> input[type=checkbox])");
+      expect(names(dialog).length, at).toBe(2); // Close, and the checkbox
+      expectTargets(`${at}, dialog`, dialog);
+      await editor.page.getByRole("button", { name: "Close" }).click();
+    });
   });
 });
