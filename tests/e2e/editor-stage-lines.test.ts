@@ -17,7 +17,7 @@ import { screenshot } from "./harness.js";
 import { showMessage } from "./messages.js";
 import { setNotices } from "./notices.js";
 import { buttonUncovered } from "./stageProbes.js";
-import { forEachWindowSize, type WindowSize, withWindowSize } from "./windowSize.js";
+import { forEachWindowSize, TWO_COLUMN_WINDOWS, type WindowSize, withWindowSize } from "./windowSize.js";
 
 const editor = editorForFile();
 
@@ -25,19 +25,7 @@ const editor = editorForFile();
 const REFUSAL_SIZES: WindowSize[] = [1027, 1100, 1200, 1382].map((w) => [w, 900] as const);
 
 /** The window sizes measured: 900 px high, 1080 for 1920 px. */
-const SIZES: [number, number][] = [
-  [901, 900],
-  [950, 900],
-  [1000, 900],
-  [1001, 900],
-  [1050, 900],
-  [1100, 900],
-  [1200, 900],
-  [1279, 900],
-  [1280, 900],
-  [1400, 900],
-  [1920, 1080],
-];
+const SIZES = TWO_COLUMN_WINDOWS;
 
 /** The toolbar's and the time bar's heights, and each toolbar control's name, top and width. */
 function stageLines() {

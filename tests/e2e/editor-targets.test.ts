@@ -20,7 +20,7 @@ import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
 import { longRefusal, showMessage } from "./messages.js";
 import { newerNotice, refusedNotice, setNotices } from "./notices.js";
-import { forEachWindowSize, type WindowSize } from "./windowSize.js";
+import { forEachWindowSize, TWO_COLUMN_WINDOWS, type WindowSize } from "./windowSize.js";
 
 const editor = editorForFile();
 
@@ -29,18 +29,8 @@ const MIN_TARGET_PX = 24;
 
 /** Every window size the editor's end-to-end tests use (two columns, short, stacked, phone). */
 const SIZES: WindowSize[] = [
-  [901, 900],
-  [950, 900],
-  [1000, 900],
-  [1001, 900],
-  [1050, 900],
-  [1100, 900],
-  [1200, 900],
-  [1279, 900],
-  [1280, 900],
-  [1400, 900],
+  ...TWO_COLUMN_WINDOWS,
   [1920, 900],
-  [1920, 1080],
   [2560, 1440],
   [1600, 900],
   [1280, 800],

@@ -11,6 +11,22 @@ import { DEFAULT_WINDOW } from "./harness.js";
 /** A window size: width and height in CSS px. */
 export type WindowSize = readonly [width: number, height: number];
 
+/** The two-column layout's widths where the header, toolbar and time bar change (900 px high;
+ *  1920 × 1080 as a common desktop): what the stage-lines and target-size tests measure. */
+export const TWO_COLUMN_WINDOWS: readonly WindowSize[] = [
+  [901, 900],
+  [950, 900],
+  [1000, 900],
+  [1001, 900],
+  [1050, 900],
+  [1100, 900],
+  [1200, 900],
+  [1279, 900],
+  [1280, 900],
+  [1400, 900],
+  [1920, 1080],
+];
+
 /** Runs `fn` in a `width` × `height` window, then puts the window back to DEFAULT_WINDOW. */
 export async function withWindowSize<T>(
   page: Page,
