@@ -20,83 +20,19 @@ import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
 import { longRefusal, showMessage } from "./messages.js";
 import { newerNotice, refusedNotice, setNotices } from "./notices.js";
-import { forEachWindowSize, TWO_COLUMN_WINDOWS, type WindowSize } from "./windowSize.js";
+import { expectTargets, names, TARGET_SIZES, type Target, targetsOf } from "./targetBoxes.js";
+import { forEachWindowSize } from "./windowSize.js";
 
 const editor = editorForFile();
 
-/** The WCAG 2.2 minimum target size (2.5.8), CSS px each way. */
-const MIN_TARGET_PX = 24;
-
-/** Every window size the editor's end-to-end tests use (two columns, short, stacked, phone). */
-const SIZES: WindowSize[] = [
-  ...TWO_COLUMN_WINDOWS,
-  [1920, 900],
-  [2560, 1440],
-  [1600, 900],
-  [1280, 800],
-  [1024, 700],
-  [1000, 700],
-  [900, 700],
-  [800, 600],
-  [700, 800],
-  [400, 800],
-  [390, 844],
-  [950, 450],
-  [1050, 480],
-  [900, 500],
-  [1280, 480],
-  [844, 390],
-  [740, 360],
-  [700, 420],
-  [667, 375],
-];
-
-/** A target's accessible name and border box (what a pointer hits). */
-interface Target {
-  name: string;
-  x: number;
-  y: number;
-  width: number;
-  height: number;
-}
+/** The drawn elements `selector` finds, as targets. */
+const targets = (selector: string) => targetsOf(editor.page, selector);
 
 /** The stage's targets: its toolbar's buttons and checkbox labels, its time bar's buttons and text
  *  fields (not the Time slider: expectSpacing checks it). */
 const STAGE_TARGETS = ".toolbar button, .toolbar label, .timebar button, .timebar input:not([type=range])";
 /** The header's buttons (the message's among them) and fields, and the notices' buttons. */
 const BAR_TARGETS = ".header button, .header input, .header select, .stage-notices button";
-
-/** Each drawn element `selector` finds, as a target (one not drawn, as More in a wide window or the
- *  digits' field of a preset without digits, is left out). */
-function targets(selector: string): Promise<Target[]> {
-  return editor.page.evaluate(
-    (selector) =>
-      Array.from(document.querySelectorAll(selector))
-        .map((el) => {
-          const r = el.getBoundingClientRect();
-          const label = (el as HTMLInputElement).labels?.[0]?.textContent;
-          const name = el.getAttribute("aria-label") ?? label ?? el.textContent!.trim();
-          const drawn = getComputedStyle(el).visibility !== "hidden";
-          return { name, x: r.x, y: r.y, width: drawn ? r.width : 0, height: r.height };
-        })
-        .filter((t) => t.width > 0 && t.height > 0),
-    selector,
-  );
-}
-
-/** Expects each target at least 24 x 24 px, and no two of them overlapping. */
-function expectTargets(at: string, all: Target[]): void {
-  for (const t of all) {
-    expect(t.width, `${at}: ${t.name} wide`).toBeGreaterThanOrEqual(MIN_TARGET_PX);
-    expect(t.height, `${at}: ${t.name} high`).toBeGreaterThanOrEqual(MIN_TARGET_PX);
-  }
-  for (const [i, a] of all.entries())
-    for (const b of all.slice(i + 1)) {
-      const overlapX = Math.min(a.x + a.width, b.x + b.width) - Math.max(a.x, b.x);
-      const overlapY = Math.min(a.y + a.height, b.y + b.height) - Math.max(a.y, b.y);
-      expect(overlapX > 0.5 && overlapY > 0.5, `${at}: ${a.name} overlaps ${b.name}`).toBe(false);
-    }
-}
 
 /**
  * Expects WCAG's spacing for a target under 24 px high spanning a line (the Time slider): a 24 px
@@ -128,12 +64,9 @@ const BAR_BUTTONS = [
 ];
 const NOTICE_BUTTONS = ["Open it", "Dismiss", "Save it as a file", "Dismiss"];
 
-/** The targets' names, in document order. */
-const names = (all: Target[]) => all.map((t) => t.name);
-
 describe("the stage's targets", () => {
   it("are at least 24 x 24 px at every window size, none overlapping another; the Time slider keeps WCAG's spacing", async () => {
-    await forEachWindowSize(editor.page, SIZES, async (width, height) => {
+    await forEachWindowSize(editor.page, TARGET_SIZES, async (width, height) => {
       const at = `${width} x ${height}`;
       const stage = await targets(STAGE_TARGETS);
       // the 8 tools, Fit, Trails, Path, Delete, ?; the zoom's 3, the steps' 5, Speed's 5; the 3 fields
@@ -154,7 +87,7 @@ describe("the stage's targets", () => {
 describe("the header's, the message's and the notices' targets", () => {
   it("are at least 24 x 24 px at every window size, cut and shown whole, none overlapping another or the stage's", async () => {
     try {
-      await forEachWindowSize(editor.page, SIZES, async (width, height) => {
+      await forEachWindowSize(editor.page, TARGET_SIZES, async (width, height) => {
         await setNotices(editor.page, true, true);
         await showMessage(editor.page, longRefusal(3));
         await poll(async () => (await targets(BAR_TARGETS)).length).toBeGreaterThanOrEqual(
@@ -211,7 +144,7 @@ const SIDE_NAMED = [
 
 describe("the side panels' and the Keyboard shortcuts dialog's targets out of the tables", () => {
   it("are at least 24 x 24 px at every window size, none overlapping another", async () => {
-    await forEachWindowSize(editor.page, SIZES, async (width, height) => {
+    await forEachWindowSize(editor.page, TARGET_SIZES, async (width, height) => {
       const at = `${width} x ${height}`;
       const side = await targets(SIDE_TARGETS);
       expect(names(side), at).toEqual(expect.arrayContaining([...SIDE_NAMED, "Share link", "Copy", "Paste"]));
