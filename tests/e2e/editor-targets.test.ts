@@ -10,11 +10,11 @@
  * every width (13 px text, 2 px padding), ? 21 px wide and the time bar's 0 button 22 in a short
  * window, the labels and the preset list 19 px high, the message's and the notices' buttons 17 (21
  * in a short window's notices), the Globals values 17 (19.5 px wide). The Time slider (16 px high)
- * is kept smaller, by WCAG's spacing exception, which is checked for it instead. The tables' own
- * buttons keep their size and are not checked (rows as high as their text: a value 17 px, Delete
- * 21, the Event log's ✕ 15). That none of this cost the canvas a line is editor-stage-lines', editor-short-stage-lines'
- * and editor-header-lines' (the toolbar, the time bar and the header as high as before); that the
- * notices keep to one line in a short window, editor-notices-short's.
+ * is kept smaller, by WCAG's spacing exception, which is checked for it instead. The tables' targets
+ * (a cell's value, a row's Delete, the Event log's ✕) are editor-targets-tables'. That none of this
+ * cost the canvas a line is editor-stage-lines', editor-short-stage-lines' and editor-header-lines'
+ * (the toolbar, the time bar and the header as high as before); that the notices keep to one line
+ * in a short window, editor-notices-short's.
  */
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
@@ -124,8 +124,8 @@ describe("the header's, the message's and the notices' targets", () => {
 });
 
 /** The side panels' targets out of the tables (their buttons, text fields and checkbox or radio
- *  labels); not the tables' (a cell's value, a row's Delete, the Event log's ✕: rows as high as their
- *  text), nor the Event details' participants (links in its text), nor a Skip the … table unfocused. */
+ *  labels); not the tables' (a cell's value, a row's Delete, the Event log's ✕: editor-targets-tables
+ *  checks them), nor the Event details' participants (links in its text), nor a Skip the … table unfocused. */
 const SIDE_TARGETS = [
   ".side button:not(td *, .link, .skip-table)",
   ".side input:not([type=checkbox], [type=radio], td *)",

@@ -10,8 +10,8 @@ import { type RefObject, useEffect, useLayoutEffect, useRef, useState } from "re
 
 /** Rows rendered beyond each edge of the view. */
 export const OVERSCAN = 4;
-/** Row height assumed until one is measured (CSS px). */
-const DEFAULT_ROW_PX = 21;
+/** Row height assumed until one is measured (CSS px): the tables' rows (styles/table-targets.css). */
+const DEFAULT_ROW_PX = 24;
 
 export interface RowWindow {
   start: number;
