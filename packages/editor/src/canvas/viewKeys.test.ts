@@ -32,18 +32,20 @@ describe("the scene view's keys", () => {
     expect(zoomByKey({ ...view, scale: MAX_SCALE }, 1).scale).toBe(MAX_SCALE);
   });
 
-  it("N and Shift+N go through the bodies in the Bodies table's order, then the lines, then the points, round and round", () => {
-    const all = { bodies: ["b10", "b2", "a"], lines: ["w2", "w1"], points: ["p"] };
+  it("N and Shift+N go through the bodies, then the lines, then the points, each in its table's (natural) order, round and round", () => {
+    // the frame lists ids in plain string order (w10 before w2); the tables, and so N, in natural order
+    const all = { bodies: ["b10", "b2", "a"], lines: ["w10", "w2"], points: ["p10", "p9"] };
     const order = [
       { kind: "body", id: "a" },
       { kind: "body", id: "b2" },
       { kind: "body", id: "b10" },
       { kind: "line", id: "w2" },
-      { kind: "line", id: "w1" },
-      { kind: "point", id: "p" },
+      { kind: "line", id: "w10" },
+      { kind: "point", id: "p9" },
+      { kind: "point", id: "p10" },
     ] as const;
     expect(nextObject(all, null, 1)).toEqual(order[0]);
-    expect(nextObject(all, null, -1)).toEqual(order[5]);
+    expect(nextObject(all, null, -1)).toEqual(order[6]);
     for (let i = 0; i < order.length; i++) {
       expect(nextObject(all, order[i]!, 1)).toEqual(order[(i + 1) % order.length]);
       expect(nextObject(all, order[(i + 1) % order.length]!, -1)).toEqual(order[i]);
@@ -51,7 +53,7 @@ describe("the scene view's keys", () => {
     // the kind counts: a line "a" is not the body "a"; an object gone: from the start
     expect(nextObject({ ...all, lines: ["a"] }, { kind: "line", id: "a" }, 1)).toEqual({
       kind: "point",
-      id: "p",
+      id: "p9",
     });
     expect(nextObject(all, { kind: "body", id: "gone" }, 1)).toEqual(order[0]);
     // bodies alone, lines alone, points alone, nothing

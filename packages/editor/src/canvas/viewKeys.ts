@@ -50,10 +50,9 @@ export interface Selectables {
 
 /**
  * The object after (dir 1) or before (dir −1) the selected one in the order of the tables: the
- * bodies in the Bodies table's order (natural id order), then the lines and the points in their
- * tables' (as the frame lists them), wrapping round from the last point to the first body. With
- * nothing selected, or an object not in the frame, the first (or the last). Null when there is
- * nothing to select.
+ * bodies, then the lines, then the points, each in its table's order (natural id order), wrapping
+ * round from the last point to the first body. With nothing selected, or an object not in the
+ * frame, the first (or the last). Null when there is nothing to select.
  */
 export function nextObject(
   from: Selectables,
@@ -62,8 +61,8 @@ export function nextObject(
 ): NonNullable<Selection> | null {
   const order: NonNullable<Selection>[] = [
     ...naturalOrder(from.bodies).map((i) => ({ kind: "body" as const, id: from.bodies[i]! })),
-    ...from.lines.map((id) => ({ kind: "line" as const, id })),
-    ...from.points.map((id) => ({ kind: "point" as const, id })),
+    ...naturalOrder(from.lines).map((i) => ({ kind: "line" as const, id: from.lines[i]! })),
+    ...naturalOrder(from.points).map((i) => ({ kind: "point" as const, id: from.points[i]! })),
   ];
   if (order.length === 0) return null;
   const at =

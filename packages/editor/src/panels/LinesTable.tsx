@@ -7,9 +7,13 @@ import { useRef } from "react";
 import { useEditor } from "../EditorContext";
 import type { LineKind } from "../engineTypes";
 import { addLineNearCentre } from "./addNear";
+import { inNaturalOrder } from "./naturalOrder";
 import { CoordinateCell, ObjectRow } from "./ObjectRow";
 import { SkipTable } from "./SkipTable";
 import { useLiveFrame } from "./useLiveFrame";
+
+/** No rows (one array, so its natural order is computed once). */
+const NONE: readonly never[] = [];
 
 const KINDS: LineKind[] = ["line", "ray", "segment"];
 const ENDS = [
@@ -22,7 +26,7 @@ const ENDS = [
 export function LinesTable() {
   const editor = useEditor();
   const frame = useLiveFrame();
-  const lines = frame?.lines ?? [];
+  const lines = inNaturalOrder(frame?.lines ?? NONE);
   const scrollRef = useRef<HTMLDivElement>(null);
 
   return (

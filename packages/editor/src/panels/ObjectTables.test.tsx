@@ -42,6 +42,25 @@ async function commit(label: string, text: string) {
 }
 
 describe("Lines and Points tables", () => {
+  it("list their rows in natural id order (p2 before p10), as the Bodies table does", async () => {
+    const h = testEditor();
+    for (let i = 0; i < 11; i++) await h.editor.addPoint([3 * i, 1]);
+    await settled(h.client);
+    render(
+      <EditorContext.Provider value={h.editor}>
+        <PointsTable />
+      </EditorContext.Provider>,
+    );
+    const table = await screen.findByRole("table", { name: "Points" });
+    await waitFor(() => expect(within(table).getAllByRole("button", { name: / id$/ })).toHaveLength(11));
+    const ids = within(table)
+      .getAllByRole("button", { name: / id$/ })
+      .map((c) => (c.getAttribute("aria-label") ?? "").replace(/ id$/, ""));
+    const numbers = ids.map((id) => Number(/\d+$/.exec(id)?.[0]));
+    expect(numbers).toEqual([...numbers].sort((a, b) => a - b)); // the frame lists p10 before p2
+    expect(new Set(numbers.map((n) => String(n).length)).size).toBe(2); // ids of one and two digits
+  });
+
   it("a typed coordinate moves only that coordinate of the point or line end", async () => {
     const { client, pointId, lineId } = await setup();
     await commit(`${pointId} x`, "7");

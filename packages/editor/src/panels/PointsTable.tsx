@@ -6,14 +6,18 @@
 import { useRef } from "react";
 import { useEditor } from "../EditorContext";
 import { addPointNearCentre } from "./addNear";
+import { inNaturalOrder } from "./naturalOrder";
 import { CoordinateCell, ObjectRow } from "./ObjectRow";
 import { SkipTable } from "./SkipTable";
 import { useLiveFrame } from "./useLiveFrame";
 
+/** No rows (one array, so its natural order is computed once). */
+const NONE: readonly never[] = [];
+
 export function PointsTable() {
   const editor = useEditor();
   const frame = useLiveFrame();
-  const points = frame?.points ?? [];
+  const points = inNaturalOrder(frame?.points ?? NONE);
   const scrollRef = useRef<HTMLDivElement>(null);
 
   return (

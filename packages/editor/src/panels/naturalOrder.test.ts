@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { compareIds, naturalOrder } from "./naturalOrder";
+import { compareIds, inNaturalOrder, naturalOrder } from "./naturalOrder";
 
 describe("naturalOrder", () => {
   it("compares numbers inside ids by value", () => {
@@ -21,6 +21,13 @@ describe("naturalOrder", () => {
     expect(Math.sign(compareIds("a01", "a1"))).toBe(-Math.sign(compareIds("a1", "a01")));
     const ids = ["x2", "x1"];
     expect(naturalOrder(ids)).toBe(naturalOrder(ids));
+  });
+
+  it("lists lines and points (objects with an id) in natural order, the same array for the same input", () => {
+    const points = [{ id: "p1" }, { id: "p10" }, { id: "p2" }, { id: "a" }];
+    expect(inNaturalOrder(points).map((p) => p.id)).toEqual(["a", "p1", "p2", "p10"]);
+    expect(inNaturalOrder(points)).toBe(inNaturalOrder(points));
+    expect(points.map((p) => p.id)).toEqual(["p1", "p10", "p2", "a"]); // the frame's array is left as it was
   });
 
   it("orders 45,000 numbered ids by number", () => {
