@@ -5,7 +5,7 @@
  * Growing, copying and re-sizing the buckets are calendarQueue.ts's.
  */
 import { rebuildDue } from "./calendarWidth.js";
-import { FrontHeap } from "./frontHeap.js";
+import { FrontHeap, type TieBreak } from "./frontHeap.js";
 
 const INF = Number.POSITIVE_INFINITY;
 /** Location of a slot: not queued, in the front heap, or in the overflow list (>= 0: ring bucket). */
@@ -56,13 +56,13 @@ export abstract class CalendarBuckets {
   protected overScanned = 0;
   protected rebuilds = 0;
 
-  constructor(capacity: number, tieLess: (a: number, b: number) => boolean) {
+  constructor(capacity: number, order: TieBreak) {
     const cap = Math.max(capacity, 4);
     this.key = new Float64Array(cap);
     this.loc = new Int32Array(cap).fill(ABSENT);
     this.next = new Int32Array(cap).fill(-1);
     this.prev = new Int32Array(cap).fill(-1);
-    this.front = new FrontHeap(cap, tieLess);
+    this.front = new FrontHeap(cap, order);
   }
 
   get size(): number {

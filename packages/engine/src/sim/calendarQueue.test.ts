@@ -42,7 +42,7 @@ function ops(key: fc.Arbitrary<number>): fc.Arbitrary<Op[]> {
 }
 
 function check(list: Op[]): void {
-  const q = new CalendarQueue(4, tieLess);
+  const q = new CalendarQueue(4, { tieLess });
   const model = new Map<number, number>();
   for (const o of list) {
     if ("peek" in o) {
@@ -87,7 +87,7 @@ describe("CalendarQueue", () => {
       return (seed + 0.5) / 2 ** 32;
     };
     const n = 2000;
-    const q = new CalendarQueue(n, tieLess);
+    const q = new CalendarQueue(n, { tieLess });
     const model = new Map<number, number>();
     let now = 0;
     for (let s = 0; s < n; s++) {
@@ -119,7 +119,7 @@ describe("CalendarQueue", () => {
   });
 
   it("an entry pulled from the overflow at the window's far edge waits for its turn", () => {
-    const q = new CalendarQueue(8, tieLess);
+    const q = new CalendarQueue(8, { tieLess });
     // The first peek sizes the queue from the keys queued; then the window is buckets [0, nb).
     for (let s = 0; s < 4; s++) q.set(s, s);
     expect(q.peek()).toBe(0);
@@ -142,7 +142,7 @@ describe("CalendarQueue", () => {
   });
 
   it("a fresh queue is sized once, at its first peek, from every key queued so far", () => {
-    const q = new CalendarQueue(4, tieLess);
+    const q = new CalendarQueue(4, { tieLess });
     for (let s = 0; s < 1000; s++) {
       q.reserve(s + 1);
       q.set(s, (s * 7919) % 1000);
@@ -153,16 +153,16 @@ describe("CalendarQueue", () => {
   });
 
   it("refuses a NaN time by name instead of corrupting the order", () => {
-    const q = new CalendarQueue(4, tieLess);
+    const q = new CalendarQueue(4, { tieLess });
     expect(() => q.set(2, Number.NaN)).toThrow(/slot 2 .*NaN/);
     expect(q.size).toBe(0);
   });
 
   it("a clone pops the same order as its original and is independent of it", () => {
-    const q = new CalendarQueue(64, tieLess);
+    const q = new CalendarQueue(64, { tieLess });
     for (let s = 0; s < 64; s++) q.set(s, (s * 37) % 11);
     q.peek();
-    const c = q.cloneWith(tieLess);
+    const c = q.cloneWith({ tieLess });
     q.set(5, -1);
     expect(c.peek()).not.toBe(5);
     const model = new Map<number, number>();

@@ -18,6 +18,7 @@
  */
 import { ABSENT, CalendarBuckets } from "./calendarBuckets.js";
 import { bucketWidth, ringLength } from "./calendarWidth.js";
+import type { TieBreak } from "./frontHeap.js";
 
 export class CalendarQueue extends CalendarBuckets {
   /** Grow the slot range to at least `capacity` (doubling: for a caller adding one slot at a time). */
@@ -59,9 +60,9 @@ export class CalendarQueue extends CalendarBuckets {
     return { width: this.w, origin: this.origin, buckets: this.mask + 1, rebuilds: this.rebuilds };
   }
 
-  /** A copy with another tie-break function (a cloned world passes its own). */
-  cloneWith(tieLess: (a: number, b: number) => boolean): CalendarQueue {
-    const q = new CalendarQueue(this.loc.length, tieLess);
+  /** A copy with another tie-break (a cloned world passes itself). */
+  cloneWith(order: TieBreak): CalendarQueue {
+    const q = new CalendarQueue(this.loc.length, order);
     // Every field, the same values in the same order (the same shape), then copies of the arrays.
     Object.assign(q, this);
     q.key = this.key.slice();
@@ -69,7 +70,7 @@ export class CalendarQueue extends CalendarBuckets {
     q.next = this.next.slice();
     q.prev = this.prev.slice();
     q.ring = this.ring.slice();
-    q.front = this.front.cloneWith(tieLess);
+    q.front = this.front.cloneWith(order);
     return q;
   }
 

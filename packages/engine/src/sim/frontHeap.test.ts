@@ -11,7 +11,7 @@ describe("FrontHeap", () => {
     const op = fc.record({ slot: fc.nat(15), key: fc.constantFrom(0, 1, 2), remove: fc.boolean() });
     fc.assert(
       fc.property(fc.array(op, { maxLength: 120 }), (ops) => {
-        const h = new FrontHeap(16, (a, b) => a < b);
+        const h = new FrontHeap(16, { tieLess: (a, b) => a < b });
         const model = new Map<number, number>();
         for (const o of ops) {
           if (o.remove) {

@@ -7,6 +7,16 @@
  * least FRONT_START, doubled when full: a handful, not one per slot.
  */
 
+/**
+ * The canonical order of two slots whose keys are exactly equal. An object with a method, not a
+ * function: the World passes itself, so the call that optimised code makes is to one method shared
+ * by every World. A closure made per World (as before session 29) was embedded in that code, which
+ * V8 threw away when the World died (docs/engine-throughput.md, session 29).
+ */
+export interface TieBreak {
+  tieLess(a: number, b: number): boolean;
+}
+
 /** Entries the heap's arrays start with (a gas's front holds a few; 12 bytes each). */
 const FRONT_START = 16;
 
@@ -18,14 +28,14 @@ export class FrontHeap {
   /** Heap position of each slot in the heap (meaningless for slots not in it). */
   declare private pos: Int32Array;
   /** `declare`d: set only in the constructor, never undefined first (see bodyStore.ts). */
-  declare private readonly tieLess: (a: number, b: number) => boolean;
+  declare private readonly order: TieBreak;
 
   /** A heap for slots 0 .. capacity - 1. */
-  constructor(capacity: number, tieLess: (a: number, b: number) => boolean) {
+  constructor(capacity: number, order: TieBreak) {
     this.slots = new Int32Array(FRONT_START);
     this.keys = new Float64Array(FRONT_START);
     this.pos = new Int32Array(capacity).fill(-1);
-    this.tieLess = tieLess;
+    this.order = order;
   }
 
   /** Number of slots it can hold (0 .. slotCapacity - 1). */
@@ -46,9 +56,9 @@ export class FrontHeap {
     this.pos = pos;
   }
 
-  /** A copy with another tie-break function. */
-  cloneWith(tieLess: (a: number, b: number) => boolean): FrontHeap {
-    const h = new FrontHeap(0, tieLess);
+  /** A copy with another tie-break. */
+  cloneWith(order: TieBreak): FrontHeap {
+    const h = new FrontHeap(0, order);
     h.slots = this.slots.slice();
     h.keys = this.keys.slice();
     h.pos = this.pos.slice();
@@ -85,7 +95,7 @@ export class FrontHeap {
   }
 
   private before(ka: number, a: number, kb: number, b: number): boolean {
-    return ka < kb || (ka === kb && this.tieLess(a, b));
+    return ka < kb || (ka === kb && this.order.tieLess(a, b));
   }
 
   /** Put (slot, key) at position p, moving it up or down as needed. */

@@ -27,7 +27,7 @@ describe("CalendarQueue.resize", () => {
     });
     fc.assert(
       fc.property(fc.array(entry, { minLength: 1, maxLength: 120 }), fc.nat(10), (entries, peeks) => {
-        const q = new CalendarQueue(200, tieLess);
+        const q = new CalendarQueue(200, { tieLess });
         const model = new Map<number, number>();
         entries.forEach(({ slot, key }, i) => {
           q.set(slot, key);
@@ -54,7 +54,7 @@ describe("CalendarQueue.resize", () => {
   });
 
   it("refuses a range that cuts off a queued slot, and changes nothing", () => {
-    const q = new CalendarQueue(64, tieLess);
+    const q = new CalendarQueue(64, { tieLess });
     const model = new Map<number, number>();
     for (const [s, k] of [
       [3, 5],
@@ -74,7 +74,7 @@ describe("CalendarQueue.resize", () => {
 
 describe("FrontHeap", () => {
   it("holds more entries than it started with, and keeps them through a resize of its slot range", () => {
-    const h = new FrontHeap(500, tieLess);
+    const h = new FrontHeap(500, { tieLess });
     const start = h.slots.length;
     const keys = new Map<number, number>();
     for (let s = 0; s < 300; s += 2) {

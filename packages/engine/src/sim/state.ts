@@ -134,7 +134,7 @@ export class SimState {
     });
     this.store = new BodyStore();
     this.grid = new Grid(this.store.capacity);
-    this.heap = new CalendarQueue(this.store.capacity, (a, b) => this.tieLess(a, b));
+    this.heap = new CalendarQueue(this.store.capacity, this);
   }
 
   /**
@@ -180,7 +180,7 @@ export class SimState {
     target.gravY = this.gravY;
     target.store = this.store.clone();
     target.grid = this.grid.clone();
-    target.heap = this.heap.cloneWith((a, b) => target.tieLess(a, b));
+    target.heap = this.heap.cloneWith(target);
     target.lineList = this.lineList.slice();
     target.pointList = this.pointList.slice();
     target.lineAt.reset();
@@ -287,8 +287,11 @@ export class SimState {
 
   // ---- canonical order of simultaneous events -----------------------------------------------
 
-  /** Heap tie-break for two slots whose next events are at exactly the same time (eventOrder.ts). */
-  protected tieLess(a: number, c: number): boolean {
+  /**
+   * @internal The event queue's tie-break (TieBreak, frontHeap.ts) for two slots whose next events
+   * are at exactly the same time (eventOrder.ts). Public only for the queue, which holds the World.
+   */
+  tieLess(a: number, c: number): boolean {
     return eventTieLess(this.store, this.lineList, this.pointList, a, c);
   }
 }
