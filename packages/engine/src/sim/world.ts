@@ -12,6 +12,7 @@ import { motionOf, stateOf } from "./bodyState.js";
 import { ChapgameError, SimulationError } from "./errors.js";
 import { refused } from "./refusalText.js";
 import { RunLoop } from "./runLoop.js";
+import { keepAsShapeWitness, WITNESS_OPTIONS } from "./shapeWitness.js";
 import type { BodyMotion, BodyState, Vec2, WorldOptions } from "./types.js";
 import { requireFinite } from "./validate.js";
 import { checkWorldOptions } from "./worldOptions.js";
@@ -175,3 +176,6 @@ export class World extends RunLoop {
     return motionOf(this.store, this.slotOf(id));
   }
 }
+
+// Kept for the process's lifetime, so that optimised code survives the last World (shapeWitness.ts).
+keepAsShapeWitness(new World(WITNESS_OPTIONS));
