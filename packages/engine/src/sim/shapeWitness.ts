@@ -17,8 +17,8 @@
  * then given a fraction in each number field a simulation fills with fractions (FRACTION_FIELDS),
  * which moves its parts to the maps those fields end with; its values mean nothing after that, and
  * it is never run. It is not run because a run would leave its own type feedback in the engine's
- * hot functions: a 40-disc run cost about 200 to 800 more instructions per collision in the gas
- * that followed (callgrind). shapeWitness.test.ts checks that after Worlds of several kinds ran,
+ * hot functions: a 40-disc run cost 200 to 750 more instructions per collision in the gas that
+ * followed (callgrind). shapeWitness.test.ts checks that after Worlds of several kinds ran,
  * the witness's parts still have the same maps as theirs (a field missing from FRACTION_FIELDS
  * fails it).
  */
