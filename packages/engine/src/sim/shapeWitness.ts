@@ -1,5 +1,5 @@
 /**
- * The shape witness: one small World, built and run once when the engine loads and kept for the
+ * The shape witness: one small World, built (never run) when the engine loads and kept for the
  * process's lifetime, so that the hidden classes (V8 "maps") of a World and of its parts (body
  * store, grid, event queue, event record, ...) never die. No result depends on it: it only keeps
  * V8's optimised code of the simulation alive after the last World was collected.
