@@ -4,7 +4,7 @@
  * to a temporary directory.
  */
 import { execFileSync, spawnSync } from "node:child_process";
-import { existsSync, mkdtempSync, readdirSync, rmSync, statSync, writeFileSync } from "node:fs";
+import { existsSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -14,6 +14,7 @@ import {
   originalDemo,
   serializeScene,
 } from "../../packages/engine/src/scene/index.js";
+import { buildEngineIfStale } from "../../packages/engine/test/builtEngine.js";
 
 const root = resolve(import.meta.dirname, "../..");
 const bin = join(root, "packages/engine/dist/cli/main.js");
@@ -31,20 +32,7 @@ function run(args: string[], input?: string): { code: number | null; stdout: str
   return { code: r.status, stdout: r.stdout, stderr: r.stderr };
 }
 
-/** Newest modification time of the engine's sources. */
-function newestSource(dir: string): number {
-  let t = 0;
-  for (const e of readdirSync(dir, { withFileTypes: true })) {
-    const p = join(dir, e.name);
-    t = Math.max(t, e.isDirectory() ? newestSource(p) : statSync(p).mtimeMs);
-  }
-  return t;
-}
-
-beforeAll(() => {
-  const stale = !existsSync(bin) || statSync(bin).mtimeMs < newestSource(join(root, "packages/engine/src"));
-  if (stale) execFileSync("npm", ["run", "build"], { cwd: root, stdio: "ignore" });
-});
+beforeAll(() => buildEngineIfStale(bin));
 
 describe("chapgame simulate", () => {
   it("runs the original's sample until nothing is left: time of the last event, the bodies then", () => {

@@ -4,10 +4,11 @@
  * does not keep up (the bin must wait for it, not hold the output in memory: read from Linux's /proc).
  */
 import { execFileSync, spawn } from "node:child_process";
-import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from "node:fs";
+import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
 import { afterAll, beforeAll, expect, it } from "vitest";
+import { buildEngineIfStale } from "../../test/builtEngine.js";
 import { dilutedGas } from "../scene/presets.js";
 import { serializeScene } from "../scene/serialize.js";
 
@@ -25,24 +26,7 @@ afterAll(() => {
   for (const dir of made) rmSync(dir, { recursive: true, force: true });
 });
 
-function newest(dir: string): number {
-  let t = 0;
-  for (const e of readdirSync(dir, { withFileTypes: true })) {
-    const p = join(dir, e.name);
-    t = Math.max(t, e.isDirectory() ? newest(p) : statSync(p).mtimeMs);
-  }
-  return t;
-}
-
-beforeAll(() => {
-  if (existsSync(bin) && statSync(bin).mtimeMs >= newest(join(pkg, "src"))) return;
-  try {
-    execFileSync("npm", ["run", "build"], { cwd: pkg, stdio: "ignore" });
-  } catch (e) {
-    // tsc writes dist/ even when a type error elsewhere fails the build; the bin is what is tested
-    if (!existsSync(bin)) throw e;
-  }
-});
+beforeAll(() => buildEngineIfStale(bin));
 
 it("a reader that closes standard output early (| head) ends the run quietly, without a stack trace", async () => {
   const dir = tempDir();

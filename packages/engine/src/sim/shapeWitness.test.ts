@@ -4,33 +4,15 @@
  * Both tests ask V8 directly (same map, optimised or not), which is deterministic: no timing.
  */
 import { execFileSync } from "node:child_process";
-import { existsSync, readdirSync, statSync } from "node:fs";
 import { join, resolve } from "node:path";
 import { pathToFileURL } from "node:url";
 import { beforeAll, expect, it } from "vitest";
+import { buildEngineIfStale } from "../../test/builtEngine.js";
 
 const pkg = resolve(import.meta.dirname, "../..");
 const dist = pathToFileURL(join(pkg, "dist")).href;
 
-function newest(dir: string): number {
-  let t = 0;
-  for (const e of readdirSync(dir, { withFileTypes: true })) {
-    const p = join(dir, e.name);
-    t = Math.max(t, e.isDirectory() ? newest(p) : statSync(p).mtimeMs);
-  }
-  return t;
-}
-
-beforeAll(() => {
-  const built = join(pkg, "dist/sim/shapeWitness.js");
-  if (existsSync(built) && statSync(built).mtimeMs >= newest(join(pkg, "src"))) return;
-  try {
-    execFileSync("npm", ["run", "build"], { cwd: pkg, stdio: "ignore" });
-  } catch (e) {
-    // tsc writes dist/ even when a type error elsewhere fails the build
-    if (!existsSync(built)) throw e;
-  }
-});
+beforeAll(() => buildEngineIfStale(join(pkg, "dist/sim/shapeWitness.js")));
 
 /** Run `body` (an ES module's code; `engine`, `witness` and `gasWorld` in scope) and parse what it prints. */
 function probe(body: string): unknown {
