@@ -98,9 +98,9 @@ export class SimState {
   private readonly tallyView = readOnlyView(this.tally);
   /**
    * Collisions by kind and friction stops processed by this World so far (a clone starts from a
-   * copy). A live object, updated as events are processed: copy it to keep a snapshot. Read-only,
-   * in its type and at run time (a program that wrote
-   * into it changed what the World reported: audit of session 20, review of session 29).
+   * copy). A live object, updated as events are processed: copy it to keep a snapshot. Read-only
+   * in its type and at run time (a program that wrote into it changed what the World reported:
+   * audit of session 20, review of session 29).
    */
   get counts(): Readonly<EventCounts> {
     return this.tallyView;
