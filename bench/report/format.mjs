@@ -13,13 +13,15 @@ export function sig(v, digits = 3) {
 export const pct = (v) => (v === null || v === undefined ? dash : `${sig(100 * v)} %`);
 export const ms = (ns) => (ns === null || ns === undefined ? dash : `${sig(ns / 1e6)} ms`);
 /**
- * A timed row's median with the range of its timed passes, "4.31 ms (4.1–5.2)", when the row
+ * A timed row's median with the range of its timed passes, "4.31 ms (4.1–5.26)", when the row
  * records them (runs since the side-by-side rows keep their spread); otherwise the median alone.
+ * All three to the same significant digits: rounding is monotone, so the printed median never falls
+ * outside the printed range (with two digits for the range, 100.75 in 92.4–101.5 read "101 (92–100)").
  */
 export const msRange = (row) =>
   row?.minNs === undefined || row?.maxNs === undefined || row.runs < 2
     ? ms(row?.ns)
-    : `${ms(row.ns)} (${sig(row.minNs / 1e6, 2)}–${sig(row.maxNs / 1e6, 2)})`;
+    : `${ms(row.ns)} (${sig(row.minNs / 1e6)}–${sig(row.maxNs / 1e6)})`;
 export const int = (v) => (v === null || v === undefined ? dash : Math.round(v).toLocaleString("en-US"));
 
 export function table(head, rows) {
