@@ -67,7 +67,7 @@ function chapgameEntry(engine, scene, quick, log) {
     );
     const ms = (ns) => (ns / 1e6).toFixed(2);
     log(
-      `  chapgame ${scene.id}: ${ms(timing.ns)} ms (${ms(timing.minNs)}–${ms(timing.maxNs)}, ${timing.runs} passes after ${timing.warmup.passes} warm-up), ${m.events} events`,
+      `  chapgame ${scene.id}: ${ms(timing.ns)} ms (${ms(timing.minNs)}–${ms(timing.maxNs)}, ${timing.runs} ${timing.runs === 1 ? "pass" : "passes"} after ${timing.warmup.passes} warm-up), ${m.events} events`,
     );
     return { ...timing, events: m.events, metrics: m.metrics };
   } catch (e) {
