@@ -68,8 +68,12 @@ describe("refusalInUserTerms", () => {
       "L x2, y2: must be at least 1e-30 from x1, y1 in x or y (got 1e-31): a shorter direction underflows the contact tests",
     );
     const added: Action = { time: 0, type: "addLine", id: "l1", p1: [1, 1], p2: [1, 1], kind: "ray" };
-    expect(refusalInUserTerms("action.p2: must differ from p1", "action.p2", added)).toBe(
-      "new line x2, y2: must differ from x1, y1 (a line needs two different ends)",
+    expect(refusalInUserTerms("action.p2: must differ from p1 (got [1, 1])", "action.p2", added)).toBe(
+      "new line x2, y2: must differ from x1, y1 (got 1, 1): a line needs two different ends",
+    );
+    const onto: Action = { time: 0, type: "updateLine", id: "L", p1: [4, -2.5] };
+    expect(refusalInUserTerms("action.p1: must differ from p2 (got [4, -2.5])", "action.p1", onto)).toBe(
+      "L x1, y1: must differ from x2, y2 (got 4, -2.5): a line needs two different ends",
     );
   });
 

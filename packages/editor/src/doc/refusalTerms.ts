@@ -8,8 +8,9 @@
  * never shown). A vector refused whole (`action.v`: "must be an array of two finite numbers") with
  * one component not finite names that component's cell ("A vx: must be a finite number"), since a
  * cell edits one component. A line's end refused whole for meeting the other end is named by both
- * of its cells and the other end's ("L x1, y1: must differ from x2, y2 (a line needs two different
- * ends)"; the engine's "L p1: must differ from p1 and p2 of the line" named fields no table has). Paths of other actions (`actions[i]`, doc/actionRefs.ts) and messages without a
+ * of its cells and the other end's, with the values given ("L x1, y1: must differ from x2, y2 (got 1, 0):
+ * a line needs two different ends", from the engine's "must differ from p2 (got [1, 0])"; the engine's
+ * "L p1: must differ from p1 and p2 of the line" named fields no table has). Paths of other actions (`actions[i]`, doc/actionRefs.ts) and messages without a
  * path are left as they are. Pure.
  */
 import type { Action } from "../engineTypes";
@@ -67,7 +68,7 @@ const END_CELLS: Record<string, { name: string; other: string }> = {
 };
 
 /**
- * A line's end `field` refused for its distance to the other end (engine: "must differ from p1",
+ * A line's end `field` refused for its distance to the other end (engine: "must differ from p1 (got [x, y])",
  * "must differ from p1 and p2 of the line", "must be at least … from p1 … in x or y"), in the
  * table's terms; null for any other refusal.
  */
@@ -78,8 +79,13 @@ function lineEnds(action: Action, field: string, reason: string): { name: string
     reason,
   );
   if (m === null) return null;
-  const why = m[1] === "must differ from" ? " (a line needs two different ends)" : "";
-  return { name: cells.name, reason: `${m[1]} ${cells.other}${m[2]}${why}` };
+  if (m[1] !== "must differ from") return { name: cells.name, reason: `${m[1]} ${cells.other}${m[2]}` };
+  // the engine's "(got [x, y])" is the end's two cells, written as the cells show them
+  const got = /^ \(got \[([^\]]*)\]\)$/.exec(m[2] ?? "");
+  return {
+    name: cells.name,
+    reason: `${m[1]} ${cells.other}${got ? ` (got ${got[1]}): a line needs two different ends` : `${m[2]} (a line needs two different ends)`}`,
+  };
 }
 
 /** The engine's reason for a vector refused whole, said of the one component at fault. */

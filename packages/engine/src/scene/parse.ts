@@ -181,8 +181,8 @@ function explainUnderflow(e: unknown, underflow: Map<string, string>): unknown {
   if (literal === undefined) return e;
   return new SceneError(
     e.path,
-    // the literal says more than the value it became ("got 0")
-    `${e.reason.replace(/ \(got 0\)$/, "")} (the file writes ${literal}, below the smallest double (about 5e-324): JSON reads it as 0)`,
+    // the literal says more than the value it became ("got 0", or a line's end "got [0, 0]")
+    `${e.reason.replace(/ \(got (?:0|\[[^\]]*\])\)$/, "")} (the file writes ${literal}, below the smallest double (about 5e-324): JSON reads it as 0)`,
   );
 }
 

@@ -63,7 +63,7 @@ describe("parseScene refuses, naming the path and the reason", () => {
     [
       "degenerate line",
       base([{ time: 0, type: "addLine", id: "l", p1: [1, 1], p2: [1, 1], kind: "line" }]),
-      "actions[0].p2: must differ from p1",
+      "actions[0].p2: must differ from p1 (got [1, 1])",
     ],
     ["empty id", base([disc("", 0)]), "actions[0].id: must be a non-empty string"],
     [

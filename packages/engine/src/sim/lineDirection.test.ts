@@ -35,7 +35,9 @@ describe("a line's direction", () => {
       path: "p2",
       reason: `must be at least ${RADIUS_MIN} from p1 in x or y (got 1e-170): a shorter direction underflows the contact tests`,
     });
-    expect(refusal(() => w.addLine("l", [3, 4], [3, 4], "ray"))?.reason).toBe("must differ from p1");
+    expect(refusal(() => w.addLine("l", [3, 4], [3, 4], "ray"))?.reason).toBe(
+      "must differ from p1 (got [3, 4])",
+    );
     w.addLine("l", [0, 0], [1, 0], "line");
     expect(refusal(() => w.updateLine("l", { p2: [5e-31, 5e-31] }))?.path).toBe("p2");
     expect(w.lines()[0]?.p2).toEqual([1, 0]); // nothing changed
@@ -48,24 +50,24 @@ describe("a line's direction", () => {
     w.addLine("l", [0, 0], [1, 0], "segment");
     expect(refusal(() => w.updateLine("l", { p1: [1, 0] }))).toEqual({
       path: "p1",
-      reason: "must differ from p2",
+      reason: "must differ from p2 (got [1, 0])",
     });
     expect(refusal(() => w.updateLine("l", { p2: [0, 0] }))).toEqual({
       path: "p2",
-      reason: "must differ from p1",
+      reason: "must differ from p1 (got [0, 0])",
     });
-    expect(refusal(() => w.updateLine("l", { p1: [2, 0], p2: [2, 0] }))).toEqual({
+    expect(refusal(() => w.updateLine("l", { p1: [2, -0.5], p2: [2, -0.5] }))).toEqual({
       path: "p2",
-      reason: "must differ from p1",
+      reason: "must differ from p1 (got [2, -0.5])",
     });
     const tl = Timeline.fromScene(parseScene(sceneWithLine([1, 0])));
     expect(refusal(() => tl.apply({ time: 1, type: "updateLine", id: "l", p1: [1, 0] }))).toEqual({
       path: "action.p1",
-      reason: "must differ from p2",
+      reason: "must differ from p2 (got [1, 0])",
     });
     expect(refusal(() => tl.apply({ time: 1, type: "updateLine", id: "l", p2: [0, 0] }))).toEqual({
       path: "action.p2",
-      reason: "must differ from p1",
+      reason: "must differ from p1 (got [0, 0])",
     });
   });
 

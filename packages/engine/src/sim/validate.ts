@@ -45,11 +45,15 @@ export function requireBounded(path: string, v: unknown): number {
  * or y. The line's direction is p2 - p1, whose square enters every contact test: below RADIUS_MIN
  * it underflows, and a disc passed through the line or gained energy at it (review: p2 = p1 + 1e-170
  * gave no collision at all). `path` names p2 (or p1 when p2 was kept); `what` names the other end
- * ("p1", or "p2" when `path` is p1).
+ * ("p1", or "p2" when `path` is p1). Equal ends are refused naming the point given, e.g.
+ * "must differ from p1 (got [3, 4])".
  */
 export function requireLineDirection(path: string, p1: Vec2, p2: Vec2, what = "p1"): void {
   const d = Math.max(Math.abs(p2[0] - p1[0]), Math.abs(p2[1] - p1[1]));
-  if (d === 0) throw new ChapgameError(path, `must differ from ${what}`);
+  if (d === 0) {
+    const at = what === "p1" ? p2 : p1; // the refused end, the one `path` names
+    throw new ChapgameError(path, `must differ from ${what} (got [${at[0]}, ${at[1]}])`);
+  }
   if (!(d >= RADIUS_MIN))
     throw new ChapgameError(
       path,
