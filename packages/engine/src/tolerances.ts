@@ -119,6 +119,17 @@ export const OVERLAP_REL = 1e-9;
  * 1e+-240, far from both ends of the double range (1e+-308).
  */
 export const MAGNITUDE_MAX = 1e30;
+/**
+ * Largest magnitude of a speed component, a starting position and the position now of a motion a
+ * user gives `addBodyMotion`. Such a motion is not held to MAGNITUDE_MAX, since a World's own
+ * motions leave it (gravity 1e30 for 2 s gives a speed of 2e30) and what `motion(id)` reports must
+ * go back in; but the contact polynomials still multiply up to four such quantities: at about
+ * 1e154 the squared speed overflows to Infinity and the pair test finds no root (a disc restored
+ * at vx = 1e200 flew through the disc in its path without a word: session 30). At 1e70 the
+ * products stay within about 1e+-280 with radii down to RADIUS_MIN, and every motion a World
+ * reaches in the documented range lies far inside it. (MASS_MIN's reason takes the same bound.)
+ */
+export const MOTION_MAGNITUDE_MAX = 1e70;
 /** Smallest radius the World accepts (see MAGNITUDE_MAX: below it the contact polynomials underflow). */
 export const RADIUS_MIN = 1e-30;
 /**

@@ -6,9 +6,10 @@
  * next advance predicts every body).
  */
 import { type MotionLaw, motionLaw, positionAt } from "../physics/motion.js";
+import { MOTION_MAGNITUDE_MAX } from "../tolerances.js";
 import { ChapgameError } from "./errors.js";
 import { ObstacleEdits } from "./obstacleEdits.js";
-import { gravityWithFriction, quoteId, refused } from "./refusalText.js";
+import { given, gravityWithFriction, quoteId, refused } from "./refusalText.js";
 import type { BodyInit, BodyMotionInit, BodyPatch, Vec2 } from "./types.js";
 import {
   BODY_FIELDS,
@@ -102,7 +103,12 @@ export class Edits extends ObstacleEdits {
     // Where the body is now, evaluated as xAt/yAt will evaluate it.
     const x = requireFinite("x0", positionAt(t0, x0, vx, restoredLaw.ax, this.now));
     const y = requireFinite("y0", positionAt(t0, y0, vy, restoredLaw.ay, this.now));
-    if (checkOverlap) checkDerivedFields(init);
+    if (checkOverlap) {
+      checkMotionMagnitudes(x0, y0, vx, vy);
+      checkPlaceNow("x0", "x", x, this.now);
+      checkPlaceNow("y0", "y", y, this.now);
+      checkDerivedFields(init);
+    }
     this.prepareGridFor(x, y, r);
     if (checkOverlap) this.checkOverlap(x, y, r, -1);
     this.insertBody(id, r, m, mu, t0, x0, y0, vx, vy, x, y);
@@ -241,6 +247,33 @@ export class Edits extends ObstacleEdits {
       this.setMotion(s as number, now, x as number, y as number, vx as number, vy as number);
     this.markDirty();
   }
+}
+
+/**
+ * A user's addBodyMotion's starting position and speed: at most MOTION_MAGNITUDE_MAX in size, the
+ * range the contact polynomials work in (beyond it a disc passed through another without an event).
+ */
+function checkMotionMagnitudes(x0: number, y0: number, vx: number, vy: number): void {
+  for (const [path, v] of [
+    ["x0", x0],
+    ["y0", y0],
+    ["vx", vx],
+    ["vy", vy],
+  ] as const)
+    if (Math.abs(v) > MOTION_MAGNITUDE_MAX)
+      throw new ChapgameError(
+        path,
+        `must be at most ${MOTION_MAGNITUDE_MAX} in size (got ${given(v)}): the contact polynomials overflow beyond it`,
+      );
+}
+
+/** The position `place` (coordinate `axis`) a user's motion gives the body now, in the same range. */
+function checkPlaceNow(path: string, axis: string, place: number, now: number): void {
+  if (Math.abs(place) > MOTION_MAGNITUDE_MAX)
+    throw new ChapgameError(
+      path,
+      `the motion puts the body at ${axis} = ${place} at the world's time ${now}, beyond ${MOTION_MAGNITUDE_MAX} in size: the contact polynomials overflow there`,
+    );
 }
 
 /**
