@@ -48,8 +48,16 @@ export class ContactGeometry extends ZenoGuard {
       t,
       d,
       D,
-      coordinate: Math.max(Math.abs(xs), Math.abs(ys), Math.abs(xo), Math.abs(yo)),
+      coordinate: Math.max(
+        Math.abs(xs),
+        Math.abs(ys),
+        Math.abs(xo),
+        Math.abs(yo),
+        this.startPlace(s),
+        this.startPlace(o),
+      ),
       speed: Math.max(this.speedAt(s, t), this.speedAt(o, t)),
+      start: this.farStart(this.store.mot[s * 8] as number, this.store.mot[o * 8] as number),
     });
     throw new SimulationError(message, t, ids);
   }
@@ -75,10 +83,22 @@ export class ContactGeometry extends ZenoGuard {
       t,
       d,
       D: r,
-      coordinate: Math.max(Math.abs(x), Math.abs(y), Math.abs(px), Math.abs(py)),
+      coordinate: Math.max(Math.abs(x), Math.abs(y), Math.abs(px), Math.abs(py), this.startPlace(s)),
       speed: this.speedAt(s, t),
+      start: this.store.mot[s * 8] as number,
     });
     throw new SimulationError(message, t, [who, id]);
+  }
+
+  /** The size of body s's motion's starting position (x0, y0), from which its place is evaluated. */
+  private startPlace(s: number): number {
+    const m = this.store.mot;
+    return Math.max(Math.abs(m[s * 8 + 1] as number), Math.abs(m[s * 8 + 2] as number));
+  }
+
+  /** Of two motions' starts t0, the one farther from 0. */
+  private farStart(a: number, b: number): number {
+    return Math.abs(a) >= Math.abs(b) ? a : b;
   }
 
   private speedAt(s: number, t: number): number {

@@ -77,6 +77,19 @@ describe("contacts beyond the resolution of doubles", () => {
     expect(w.counts.bodyLine).toBe(0);
   });
 
+  it("a motion restored with t0 far in the past: the error names its start and its starting place", () => {
+    // (session 30: t0 = x0 = -1e20 at speed 1 puts the body at x = 0, but its place moves in steps of
+    // ulp(1e20) = 16384; the message blamed "the time 8" and "coordinates up to 10")
+    const w = new World({ g: 0 });
+    w.addBodyMotion("b", { t0: -1e20, x0: -1e20, y0: 0, vx: 1, vy: 0, r: 1, m: 1, mu: 0 });
+    w.addBody("c", { x: 10, y: 0, r: 1, m: 1 });
+    const e = caught(() => w.advance({ untilTime: 100 }));
+    expect(e.ids).toEqual(["b", "c"]);
+    expect(e.message).toContain(
+      "one rounding of coordinates up to 1.00e+20, or of the time 8 (its motion started at t=-100000000000000000000: the time since then) times a speed of 1.00,",
+    );
+  });
+
   it("a rests-against error names the body and the obstacle too", () => {
     const w = new World({ g: 0, gravity: [0, -1] });
     w.addLine("floor", [-10, 0], [10, 0], "line");
