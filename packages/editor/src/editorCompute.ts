@@ -39,7 +39,10 @@ export class EditorCompute {
           : { text: next, tone: "error" as const };
       this.ui.setState({ message });
     });
-    // A computation the engine refused to continue (a Zeno state): say why the horizon stops there.
+    // A computation the engine refused to continue (a Zeno state, an action refused): say why the
+    // horizon stops there. An information still shown stays before it ("Opened late.json. Undo
+    // returns to the scene you had before."): replaced, the author would no longer read that a
+    // file was opened over the scene, nor how to get the scene back.
     let stopped: string | null = null;
     client.subscribe(() => {
       const info = client.getSnapshot();
@@ -47,8 +50,10 @@ export class EditorCompute {
       stopped = info.stopped;
       if (stopped === null) return;
       const h = shown(info.horizon);
+      const said = this.ui.getState().message;
+      const before = said?.tone === "info" ? `${said.text} ` : "";
       this.ui.setState({
-        message: { text: `The computation stopped at t = ${h} s: ${stopped}`, tone: "error" },
+        message: { text: `${before}The computation stopped at t = ${h} s: ${stopped}`, tone: "error" },
       });
     });
   }

@@ -53,6 +53,32 @@ describe("opening a scene file", () => {
     expect(editor.doc).toBe(before);
   });
 
+  it("a file opened whose later action the engine refuses says both: opened (Undo returns), and where it stopped", async () => {
+    // The author's first hour (session 30): the refusal of the action at t = 1 replaced "Opened
+    // late.json. Undo returns to the scene you had before." once the computation reached it, so the
+    // message no longer said that a file was opened over the scene, nor how to get the scene back.
+    const { editor, client } = await cradleEditor();
+    const before = editor.doc;
+    const late = {
+      ...LONELY,
+      g: 0,
+      actions: [
+        { time: 0, type: "addBody", id: "mover", x: 0, y: 0, r: 1, m: 1, v: [1, 0] },
+        { time: 1, type: "addBody", id: "blocker", x: 1, y: 0, r: 1, m: 1 },
+      ],
+    };
+    expect(await openSceneFile(editor, json("late.json", late))).toBeNull();
+    await settled(client);
+    expect(client.getSnapshot().stopped).toMatch(/would overlap/);
+    const message = editor.ui.getState().message;
+    expect(message?.tone).toBe("error");
+    expect(message?.text).toMatch(
+      /^Opened late\.json\. Undo returns to the scene you had before\. The computation stopped at t = 1 s: .*"blocker" would overlap body "mover"/,
+    );
+    await editor.undo();
+    expect(sceneText(editor.doc)).toBe(sceneText(before));
+  });
+
   it("a file that is not UTF-8 is refused, naming the file, instead of opening with its bad bytes replaced", async () => {
     const { editor } = await cradleEditor();
     const before = editor.doc;
