@@ -2,7 +2,7 @@
 import { describe, expect, it } from "vitest";
 import { cradleEditor, settled } from "../testing/harness";
 import { loneDiscScene } from "../testing/scenes";
-import { droppedSceneFile, isJsonFile, openSceneFile } from "./openScene";
+import { droppedSceneFile, isJsonFile, openPastedText, openSceneFile } from "./openScene";
 import { sceneText } from "./sceneIo";
 
 const LONELY = loneDiscScene();
@@ -77,6 +77,26 @@ describe("opening a scene file", () => {
     );
     await editor.undo();
     expect(sceneText(editor.doc)).toBe(sceneText(before));
+  });
+
+  it("a refused paste says the pasted text is refused and that the scene is kept, as a refused file does", async () => {
+    const { editor } = await cradleEditor();
+    const before = editor.doc;
+    const bad = { ...LONELY, actions: [{ ...LONELY.actions[0], r: -2 }] };
+    const err = await openPastedText(editor, JSON.stringify(bad));
+    expect(err).toBe(
+      "Pasted text: actions[0].r: must be a positive finite number (got -2); nothing was opened (your scene is as it was).",
+    );
+    expect(editor.ui.getState().message).toEqual({ text: err, tone: "error" });
+    expect(editor.doc).toBe(before);
+    expect(editor.history.getState().past.length).toBe(0);
+    // a good paste opens as one undo step, and says so
+    expect(await openPastedText(editor, JSON.stringify(LONELY))).toBeNull();
+    expect(editor.ui.getState().message).toEqual({
+      text: "Pasted the scene. Undo returns to the scene you had before.",
+      tone: "info",
+    });
+    expect(editor.history.getState().past.length).toBe(1);
   });
 
   it("a file that is not UTF-8 is refused, naming the file, instead of opening with its bad bytes replaced", async () => {

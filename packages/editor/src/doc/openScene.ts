@@ -2,7 +2,9 @@
  * Opening a scene the user hands over: pasted text, a file from Load file, a file dropped on the
  * page. One path for all: the engine's validation (a refusal names the field, and a file's name
  * before it), the current scene kept on any refusal, and an opened scene is one undo step over the
- * one it replaces; an opened file's name is what Save file suggests for it. droppedSceneFile says which file of a drop to open, or why none.
+ * one it replaces; an opened file's name is what Save file suggests for it. A refused file or paste
+ * names where the text came from and ends saying the scene is kept (KEPT). droppedSceneFile says
+ * which file of a drop to open, or why none.
  */
 import type { Editor } from "../editor";
 import { parseSceneText } from "./sceneIo";
@@ -35,6 +37,16 @@ export async function openSceneText(
 
 /** What a refused file's message ends with. */
 export const KEPT = "; nothing was opened (your scene is as it was).";
+
+/**
+ * Opens pasted scene text (the State panel's Paste); says so, and that Undo returns to the scene
+ * before. A refusal is worded as a refused file's is, "Pasted text: " in place of the file's name.
+ */
+export async function openPastedText(editor: Editor, text: string): Promise<string | null> {
+  const err = await openSceneText(editor, text, "Pasted text: ", null, KEPT);
+  if (err === null) editor.info("Pasted the scene. Undo returns to the scene you had before.");
+  return err;
+}
 
 /** Opens a scene file (Load file, or dropped); says so, and that Undo returns to the scene before. */
 export async function openSceneFile(editor: Editor, file: File): Promise<string | null> {

@@ -1,12 +1,12 @@
 /**
- * State: Copy / Paste the scene as JSON (format v1; a broken paste shows the validation message and
- * keeps the current scene; a paste is one undo step, and says so), Clear scene (named so: a plain
+ * State: Copy / Paste the scene as JSON (format v1; a broken paste shows the validation message,
+ * "Pasted text: " before it, and keeps the current scene, doc/openScene.ts's openPastedText; a paste is one undo step, and says so), Clear scene (named so: a plain
  * "Clear" beside the text box read as clearing the box), a shareable link (copied, the address bar
  * left as it is). Undo, Redo, Save file and Load file are in the header
  * (SceneActions.tsx).
  */
 import { useState } from "react";
-import { openSceneText } from "../doc/openScene";
+import { openPastedText } from "../doc/openScene";
 import { shareLinkProblem, shareUrl } from "../doc/persistence";
 import { sceneText } from "../doc/sceneIo";
 import { useEditor } from "../EditorContext";
@@ -38,8 +38,7 @@ export function StatePanel() {
         return;
       }
     }
-    if ((await openSceneText(editor, source)) === null)
-      editor.info("Pasted the scene. Undo returns to the scene you had before.");
+    await openPastedText(editor, source);
   };
 
   // The link is copied without touching the address bar: a reload then keeps later edits (a link
