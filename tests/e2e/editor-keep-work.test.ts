@@ -1,8 +1,8 @@
 /**
  * End-to-end: keeping a scene author's work in Debian's Chromium. Opening a shared link never
  * loses the scene one was working on (Undo brings it back); an edit is kept by a reload that comes
- * right after it, and so is the time the tab was at; a link opened in the tab already open loads at
- * once; a broken link or file says what is wrong and
+ * right after it, and so is the time the tab was at (in the time field and the Event log too); a
+ * link opened in the tab already open loads at once; a broken link or file says what is wrong and
  * keeps the scene; the scene Clear replaced is still what Undo brings back after a reload.
  */
 import { writeFileSync } from "node:fs";
@@ -60,6 +60,25 @@ describe("keeping work", () => {
     await editor.page.reload();
     await slider.waitFor();
     await poll(async () => Number(await slider.inputValue())).toBe(far);
+    await field.fill("0");
+    await field.press("Enter");
+  });
+
+  it("a reload inside the history: the time field and the Event log show the time it went back to", async () => {
+    // Session 30: after a reload the slider, canvas and Bodies were at the kept t = 2.5 while
+    // "t =" read 0 and the Event log marked no entry as past (the time was set while they mounted).
+    const field = editor.page.getByRole("textbox", { name: "Time (s)" });
+    const slider = editor.page.getByRole("slider", { name: "Time" });
+    await field.fill("2.5");
+    await field.press("Enter");
+    await poll(async () => Number(await slider.inputValue())).toBe(2.5);
+    await editor.page.reload();
+    await slider.waitFor();
+    await poll(async () => Number(await slider.inputValue())).toBe(2.5);
+    await poll(() => field.inputValue()).toBe("2.5");
+    const log = editor.page.getByRole("table", { name: "Event log" });
+    // the scene's actions at t = 0 are in the past of t = 2.5
+    await poll(() => log.locator("tbody tr.past").count()).toBeGreaterThan(0);
     await field.fill("0");
     await field.press("Enter");
   });

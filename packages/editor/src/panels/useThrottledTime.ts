@@ -5,6 +5,8 @@
  * - useShownTime (the Time panel's "t =" field): exact and at once while paused (steps, scrubbing,
  *   typed times), throttled only while playing.
  * - useSlowTime (event log, stats): always throttled.
+ * Both start from the time at their subscription, not only at their first render (a time set in
+ * between notified nobody: a reload's kept time read 0 in the field and the Event log).
  */
 import { useEffect, useState } from "react";
 import { useEditor } from "../EditorContext";
@@ -30,6 +32,9 @@ function useThrottledTime(intervalMs: number, exactWhilePaused: boolean): number
       if (s.t === p.t || timer !== null) return;
       timer = setTimeout(show, Math.max(0, lastShown + intervalMs - Date.now()));
     });
+    // A time set between the first render and this subscription (a reloaded tab going back to its
+    // time while the app mounts, timeKeep.ts) notified nobody: show it now.
+    show();
     return () => {
       off();
       if (timer !== null) clearTimeout(timer);
