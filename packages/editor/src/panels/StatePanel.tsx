@@ -1,7 +1,8 @@
 /**
  * State: Copy / Paste the scene as JSON (format v1; a broken paste shows the validation message,
- * "Pasted text: " before it, and keeps the current scene, doc/openScene.ts's openPastedText; a paste is one undo step, and says so), Clear scene (named so: a plain
- * "Clear" beside the text box read as clearing the box), a shareable link (copied, the address bar
+ * "Pasted text: " before it, and keeps the current scene, doc/openScene.ts's openPastedText; a
+ * paste is one undo step, and says so), Clear scene (named so: a plain "Clear" beside the text box
+ * read as clearing the box), a shareable link (copied, the address bar
  * left as it is). Undo, Redo, Save file and Load file are in the header
  * (SceneActions.tsx).
  */
