@@ -9,7 +9,8 @@
  * place of the refusal says where Enter applies the draft) or null (accepted). A commit an Undo took back during its check
  * (UNDONE_DURING_CHECK) closes the cell on the scene's value as an accepted one does: the Undo says
  * what it did, and the draft it undid is not committed again. Escape closes without committing.
- * A refusal is shown under the input and describes it (aria-describedby); it is an alert only when
+ * A refusal is shown under the input and describes it (aria-describedby); in a table it is drawn
+ * over the rows next to the field, not in its row, which keeps its height (useCellNote.ts); it is an alert only when
  * the message bar does not show the same text already (the editor's refusals go there too: a screen
  * reader announced each twice). Both the button and the input carry `label` as their accessible name. Enter is consumed by the
  * input (its default prevented), so closing the cell never lets it activate the button refocused.
@@ -21,6 +22,7 @@
 import { useContext, useEffect, useId, useRef, useState, useSyncExternalStore } from "react";
 import { EditorContext } from "../EditorContext";
 import { UNDONE_DURING_CHECK } from "../remote/protocol";
+import { useCellNote } from "./useCellNote";
 
 export interface EditableCellProps {
   label: string;
@@ -92,6 +94,12 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
 
   const typed = edit?.typed ?? null;
 
+  // In a table the note is drawn over the rows beside the field, never in its row (useCellNote).
+  const field = useRef<HTMLInputElement>(null);
+  const note = useRef<HTMLSpanElement>(null);
+  const noted = edit !== null && (waiting || error !== null);
+  useCellNote(field, note, noted);
+
   // A refusal that lapses (an edit at a time the history has not reached yet, behindRefusals.ts) is
   // dropped once the history gets there, or replaced by the one that holds then; the draft stays for
   // Enter. It stayed until Enter, long after the computation had passed the time.
@@ -150,6 +158,7 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
   return (
     <span className="cell">
       <input
+        ref={field}
         aria-label={label}
         // a draft typed and not committed: Save file says it is not in the file (sceneFile.ts)
         data-draft={typed !== null && typed !== value ? "" : undefined}
@@ -179,14 +188,18 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
           if (e.key === "Escape") close(true);
         }}
       />
-      {waiting && (
-        <span role="status" className="cell-waiting">
-          checking the later actions…
-        </span>
-      )}
-      {error && (
-        <span id={errorId} role={inBar ? undefined : "alert"} className="cell-error">
-          {error}
+      {noted && (
+        <span className="cell-note" ref={note}>
+          {waiting && (
+            <span role="status" className="cell-waiting">
+              checking the later actions…
+            </span>
+          )}
+          {error && (
+            <span id={errorId} role={inBar ? undefined : "alert"} className="cell-error">
+              {error}
+            </span>
+          )}
         </span>
       )}
     </span>
