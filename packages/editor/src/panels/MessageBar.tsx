@@ -5,8 +5,10 @@
  * needs more lines hangs down from the slot until it is dismissed or replaced; from 1001 px the slot
  * takes only what the header's line leaves, and where that is too narrow the message hangs under the
  * header over the top of the side column (styles/message.css: the slot once took a line of its own
- * there, empty, 37 px of canvas from 1127 to 1382 px), cut to one line there (More shows it whole)
- * so that it covers the Calculation panel's heading only, not its fields. In a window
+ * there, empty, 37 px of canvas from 1127 to 1382 px), cut to one line there (More shows it whole),
+ * in a strip the side column leaves for it under the header (useMessageStrip.ts), so that it covers
+ * none of the column's panels, scrolled or not (it covered Add body, and opened whole the first
+ * rows of the Bodies table, with the column scrolled to it). In a window
  * up to 1000 px wide (styles/message.css) the stage's toolbar sits right under the slot, which is
  * narrow there, so a long message is cut to its line (an ellipsis) and a More button shows it whole,
  * hanging over the stage, until Less, ✕ or the next message (MoreToggle.tsx, as a notice's); screen
@@ -18,6 +20,7 @@
 import { useRef } from "react";
 import { useEditor, useUi } from "../EditorContext";
 import { MoreToggle, useShownWhole } from "./MoreToggle";
+import { useMessageStrip } from "./useMessageStrip";
 import { useTextCut } from "./useTextCut";
 
 export function MessageBar() {
@@ -27,8 +30,11 @@ export function MessageBar() {
   const [open, toggle] = useShownWhole(message);
   const textRef = useRef<HTMLSpanElement>(null);
   const cut = useTextCut(textRef, message?.text);
+  const slotRef = useRef<HTMLDivElement>(null);
+  useMessageStrip(slotRef, message);
   return (
-    <div className="message-slot">
+    <div className="message-slot" ref={slotRef}>
+      <span className="message-hang-probe" aria-hidden="true" />
       {message && (
         <div
           className={`message ${message.tone}${open ? " open" : ""}`}
