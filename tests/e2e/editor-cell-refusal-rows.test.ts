@@ -9,39 +9,12 @@
  * under the sticky head, and a table of one row grows to hold it.
  */
 import { describe, expect, it } from "vitest";
-import { editorForFile, POLL_TIMEOUT_MS, poll } from "./editorForFile.js";
-import { waitFor } from "./harness.js";
-import { loadScene } from "./pageEditor.js";
-
-/** 40 bodies at rest in a grid (the Bodies table scrolls: 8 rows in view) and one point. */
-function fortyBodies(): object {
-  const actions: object[] = [{ time: 0, type: "addPoint", id: "p1", p: [500, 500] }];
-  for (let i = 0; i < 40; i++)
-    actions.push({
-      time: 0,
-      type: "addBody",
-      id: `b${i + 1}`,
-      x: (i % 8) * 20,
-      y: Math.floor(i / 8) * 20,
-      r: 3,
-      m: 1,
-      mu: 0,
-      v: [0, 0],
-    });
-  return { format: "chapgame", version: 1, g: 9.81, gravity: [0, 0], actions };
-}
+import { bodyGridScene, openBodyGrid } from "./bodyGridScene.js";
+import { editorForFile, poll } from "./editorForFile.js";
 
 const editor = editorForFile({
-  afterOpen: async ({ page }) => {
-    await loadScene(
-      page,
-      fortyBodies(),
-      { useTime: true, seconds: 1, useEvents: false, autoExtend: false },
-      60_000,
-    );
-    const cell = page.getByRole("table", { name: "Bodies" }).getByLabel("b1 x", { exact: true });
-    await waitFor(async () => (await cell.count()) === 1, POLL_TIMEOUT_MS);
-  },
+  afterOpen: ({ page }) =>
+    openBodyGrid(page, bodyGridScene(40, 8, [{ time: 0, type: "addPoint", id: "p1", p: [500, 500] }])),
 });
 
 /** The table's scroll box, its rows' heights and tops by id, and the open refusal's box and side,

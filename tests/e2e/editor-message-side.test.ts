@@ -9,42 +9,15 @@
  * Where the message does not hang (1001 px, 1400 px) the column starts right under the header.
  */
 import { describe, expect, it } from "vitest";
-import { editorForFile, POLL_TIMEOUT_MS, poll } from "./editorForFile.js";
-import { screenshot, waitFor } from "./harness.js";
+import { bodyGridScene, openBodyGrid } from "./bodyGridScene.js";
+import { editorForFile, poll } from "./editorForFile.js";
+import { screenshot } from "./harness.js";
 import { longRefusal, showMessage } from "./messages.js";
-import { loadScene } from "./pageEditor.js";
 import { stageBoxes } from "./stageProbes.js";
 import { forEachWindowSize } from "./windowSize.js";
 
-/** 30 bodies at rest (the Bodies table scrolls), so the side column is longer than the window. */
-function thirtyBodies(): object {
-  const actions: object[] = [];
-  for (let i = 0; i < 30; i++)
-    actions.push({
-      time: 0,
-      type: "addBody",
-      id: `b${i + 1}`,
-      x: (i % 6) * 20,
-      y: Math.floor(i / 6) * 20,
-      r: 3,
-      m: 1,
-      mu: 0,
-      v: [0, 0],
-    });
-  return { format: "chapgame", version: 1, g: 9.81, gravity: [0, 0], actions };
-}
-
 const editor = editorForFile({
-  afterOpen: async ({ page }) => {
-    await loadScene(
-      page,
-      thirtyBodies(),
-      { useTime: true, seconds: 1, useEvents: false, autoExtend: false },
-      60_000,
-    );
-    const cell = page.getByRole("table", { name: "Bodies" }).getByLabel("b1 x", { exact: true });
-    await waitFor(async () => (await cell.count()) === 1, POLL_TIMEOUT_MS);
-  },
+  afterOpen: ({ page }) => openBodyGrid(page, bodyGridScene(30, 6)),
 });
 
 const LONG = longRefusal(3);

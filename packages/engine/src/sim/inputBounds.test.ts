@@ -6,18 +6,8 @@ import { describe, expect, it } from "vitest";
 import { type Keyframe, worldAt } from "../timeline/keyframe.js";
 import { ChainCache } from "../timeline/keyframeChain.js";
 import { MASS_MAX, MASS_MIN, TIME_MAX } from "../tolerances.js";
-import { ChapgameError } from "./errors.js";
+import { refusal } from "./testSupport.js";
 import { World } from "./world.js";
-
-function refusal(run: () => unknown): ChapgameError {
-  try {
-    run();
-  } catch (e) {
-    expect(e).toBeInstanceOf(ChapgameError);
-    return e as ChapgameError;
-  }
-  throw new Error("accepted");
-}
 
 describe("the World's time option is at most TIME_MAX in size", () => {
   it("refuses time 1e300 (bodies then sat at x = 1e300, beyond MAGNITUDE_MAX), naming time", () => {

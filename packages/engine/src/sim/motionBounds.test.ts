@@ -6,18 +6,8 @@
 // still accepted, and a disc at such a speed still hits what is in its path.
 import { describe, expect, it } from "vitest";
 import { MAGNITUDE_MAX, MOTION_MAGNITUDE_MAX } from "../tolerances.js";
-import { ChapgameError } from "./errors.js";
+import { refusal } from "./testSupport.js";
 import { World } from "./world.js";
-
-function refusal(run: () => unknown): ChapgameError {
-  try {
-    run();
-  } catch (e) {
-    expect(e).toBeInstanceOf(ChapgameError);
-    return e as ChapgameError;
-  }
-  throw new Error("accepted");
-}
 
 /** A disc restored at the origin moving along +x at `vx`, a resting disc at x = 10, a line at x = 20. */
 function flight(vx: number): World {

@@ -2,10 +2,12 @@
  * Helpers for the World's tests (not built, not packed): the totals a collision must keep, the
  * break of a rack of touching discs (a scene that found several rounding defects), a pit an
  * immovable disc passes over, the run to a Zeno report and the bound on its events (the trap and
- * line watches' tests), and the pop order of an event queue.
+ * line watches' tests), the pop order of an event queue, and the error a refused call throws.
  */
 import fc from "fast-check";
+import { expect } from "vitest";
 import type { CalendarQueue } from "./calendarQueue.js";
+import { ChapgameError } from "./errors.js";
 import type { BodyState } from "./types.js";
 import { World } from "./world.js";
 
@@ -143,4 +145,15 @@ export function drain(q: CalendarQueue): number[] {
     q.remove(s);
   }
   return out;
+}
+
+/** The ChapgameError `run` throws; fails the test when `run` is accepted or throws anything else. */
+export function refusal(run: () => unknown): ChapgameError {
+  try {
+    run();
+  } catch (e) {
+    expect(e).toBeInstanceOf(ChapgameError);
+    return e as ChapgameError;
+  }
+  throw new Error("accepted");
 }
