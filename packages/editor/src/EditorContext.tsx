@@ -22,6 +22,14 @@ export function useHistory<U>(selector: (h: History) => U): U {
   return useStore(useEditor().history, selector);
 }
 
+/**
+ * The count of scenes the current one replaced (EditorSession.sceneSerial): the tables key their rows
+ * with it, so a cell's draft never outlives its scene.
+ */
+export function useSceneSerial(): number {
+  return useStore(useEditor().sceneSerial, (s) => s.serial);
+}
+
 /** The latest TimelineInfo (re-renders on every timeline change: use in small components only). */
 export function useInfo(): TimelineInfo {
   const c = useEditor().client;

@@ -62,6 +62,13 @@ export class EditorSession extends EditorCompute {
    * recent ones whose undo step is undone now (Undo went back past them; Redo may bring them back).
    */
   readonly replaced: Store<Replaced> = this.replacements.replaced;
+  /**
+   * Counts the scenes the current one replaced: a load that does not keep the time (Clear, a preset,
+   * a file, a paste, a link, start-up) and an Undo or Redo of such a load's step. The tables key
+   * their rows with it, so that a cell's draft never outlives its scene: typed for an object of the
+   * scene before, it would apply to whatever has its id in the new one.
+   */
+  readonly sceneSerial: Store<{ serial: number }> = createStore<{ serial: number }>({ serial: 0 });
   /** The file name the current scene came from, which Save file suggests (sceneNames.ts). */
   readonly names = new SceneNames();
   /** Makes a fresh host (a new Web Worker) for restartEngine; null where none can be made. */
@@ -93,7 +100,12 @@ export class EditorSession extends EditorCompute {
 
   /** After Undo (`undo`) or Redo restored `scene` with the history `h`: ReplacementSteps.stepped. */
   protected stepped(undo: boolean, scene: SceneFile, h: History): void {
-    this.replacements.stepped(undo, scene, h);
+    if (this.replacements.stepped(undo, scene, h)) this.nextScene();
+  }
+
+  /** The scene was replaced by another (sceneSerial). */
+  private nextScene(): void {
+    this.sceneSerial.setState((s) => ({ serial: s.serial + 1 }));
   }
 
   /** What Undo or Redo says when it goes to `scene` if a load replaced it (ReplacementSteps.summary), else null. */
@@ -160,6 +172,7 @@ export class EditorSession extends EditorCompute {
     if (options.undoable !== false) this.history.setState(record(this.history.getState(), before));
     this.names.left(before);
     if (!options.keepTime) this.names.loaded(options.name ?? null, options.preset === true);
+    if (!options.keepTime) this.nextScene();
     if (options.undoable !== false && !options.keepTime)
       this.replacements.recorded({ before, loaded: this.doc, reproducible: options.reproducible === true });
     this.ui.setState((s) => ({

@@ -46,8 +46,9 @@ export class ReplacementSteps {
   /**
    * After Undo (`undo`) or Redo restored `scene` with the history `h`: a replacement whose step that
    * was is undone (its scene after goes to Redo) or done again (its entry is the scene before).
+   * Whether such a step was taken (the scene was replaced by another).
    */
-  stepped(undo: boolean, scene: SceneFile, h: History): void {
+  stepped(undo: boolean, scene: SceneFile, h: History): boolean {
     let changed = false;
     for (const step of this.steps)
       if (step.entry === scene && step.done === undo) {
@@ -59,6 +60,7 @@ export class ReplacementSteps {
       this.replaced.setState({
         undone: new Set(this.steps.filter((s) => !s.done).map((s) => s.replacement)),
       });
+    return changed;
   }
 
   /**

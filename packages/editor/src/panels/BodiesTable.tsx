@@ -4,12 +4,14 @@
  * current time; refused values show the engine's message in place. Rows select bodies (clicked, or a
  * cell of theirs focused or opened), listed in natural id order (ball2 before ball10), at most
  * MAX_ROWS of them: the filter field (a part of the id) reaches any other body (bodyList.ts). Only the
- * rows in view are rendered (useRowWindow). The selected body's row is scrolled into view when the
+ * rows in view are rendered (useRowWindow), and the rows holding an open cell wherever they are, so a
+ * draft survives any scroll (useHeldRows); rows are keyed by the scene too, so a load that replaces
+ * it drops every draft (EditorSession.sceneSerial). The selected body's row is scrolled into view when the
  * selection changes (useRevealRow). A "Skip the Bodies table" button (shown when focused)
  * passes its cells in one Tab press.
  */
 import { type ReactNode, useRef, useState } from "react";
-import { useEditor, useUi } from "../EditorContext";
+import { useEditor, useSceneSerial, useUi } from "../EditorContext";
 import { F_M, F_MU, F_R, F_VX, F_VY, F_X, F_Y, FRAME_STRIDE } from "../remote/protocol";
 import { addBodyNearCentre } from "./addNear";
 import { listBodies, listNote } from "./bodyList";
@@ -17,9 +19,10 @@ import { DeleteRowButton } from "./DeleteRowButton";
 import { EditableCell, formatNumber, isInfinityWord, parseNumber } from "./EditableCell";
 import { SkipTable } from "./SkipTable";
 import { notANumber, refusedTyped } from "./typedRefusal";
+import { useHeldRows } from "./useHeldRows";
 import { useLiveFrame } from "./useLiveFrame";
 import { useRevealRow } from "./useRevealRow";
-import { spacerRow, useRowWindow } from "./useRowWindow";
+import { rowRuns, spacerRow, useRowWindow } from "./useRowWindow";
 
 /** Rows shown at most (the selected body is always shown); the canvas shows them all. */
 export const MAX_ROWS = 60;
@@ -43,6 +46,8 @@ export function BodiesTable() {
   const selection = useUi((s) => s.selection);
   const selectedId = selection?.kind === "body" ? selection.id : null;
   const [filter, setFilter] = useState("");
+  const { held, holder } = useHeldRows();
+  const scene = useSceneSerial();
 
   // The velocity at the time the edit is stamped with: the row's values may be a refresh old (up to
   // PLAYING_INTERVAL_MS after a pause), and a vx edit built from them committed an old vy.
@@ -87,10 +92,10 @@ export function BodiesTable() {
     }
   };
 
-  // The bodies listed (the first MAX_ROWS matching the filter and the selected one), then the window
-  // of them rendered.
+  // The bodies listed (the first MAX_ROWS matching the filter, the selected one and those holding an
+  // open cell), then the window of them rendered, with the rows holding an open cell wherever they are.
   const n = frame?.ids.length ?? 0;
-  const list = listBodies(frame?.ids ?? [], filter, selectedId, MAX_ROWS);
+  const list = listBodies(frame?.ids ?? [], filter, selectedId, MAX_ROWS, held);
   const { listed } = list;
   const note = listNote(list, n, filter);
   const win = useRowWindow(scrollRef, listed.length);
@@ -101,15 +106,22 @@ export function BodiesTable() {
     selectedId === null || !frame ? -1 : listed.findIndex((i) => frame.ids[i] === selectedId),
     win.geometry,
   );
-  const rows: ReactNode[] = [spacerRow("before", win.before, COLUMNS.length + 2)];
-  for (const i of frame ? listed.slice(win.start, win.end) : []) {
+  const heldAt = frame ? listed.flatMap((i, k) => (held.has(frame.ids[i]!) ? [k] : [])) : [];
+  const rows: ReactNode[] = [];
+  for (const run of frame ? rowRuns(win, heldAt, listed.length, win.geometry.row) : []) {
+    if ("gap" in run) {
+      rows.push(spacerRow(`gap${run.from}`, run.gap, COLUMNS.length + 2));
+      continue;
+    }
+    const i = listed[run.row]!;
     const id = frame!.ids[i]!;
+    const hold = holder(id);
     const o = i * FRAME_STRIDE;
     const vx = frame!.data[o + F_VX]!;
     const vy = frame!.data[o + F_VY]!;
     rows.push(
       <tr
-        key={id}
+        key={`${scene}:${id}`}
         aria-selected={id === selectedId}
         className={id === selectedId ? "selected" : undefined}
         // Focusing a cell selects the body too: a cell opens on focus (its input replaces the button
@@ -123,6 +135,7 @@ export function BodiesTable() {
             value={id}
             size={6}
             onCommit={(text) => editor.rename("body", id, text)}
+            onOpenChange={hold}
           />
         </td>
         {COLUMNS.map((c) => (
@@ -131,6 +144,7 @@ export function BodiesTable() {
               label={`${id} ${c.field}`}
               value={formatNumber(c.offset === null ? Math.hypot(vx, vy) : frame!.data[o + c.offset]!)}
               onCommit={commit(id, c.field, vx, vy)}
+              onOpenChange={hold}
             />
           </td>
         ))}
@@ -140,7 +154,6 @@ export function BodiesTable() {
       </tr>,
     );
   }
-  rows.push(spacerRow("after", win.after, COLUMNS.length + 2));
 
   return (
     <section className="panel" aria-labelledby="bodies-title">

@@ -29,6 +29,11 @@ export interface EditableCellProps {
   value: string;
   onCommit: (text: string) => Promise<string | null>;
   size?: number;
+  /**
+   * Told when the cell opens (true) and when it closes or unmounts (false): a windowed table keeps
+   * the row of an open cell rendered out of view, with its draft (useHeldRows.ts).
+   */
+  onOpenChange?: (open: boolean) => void;
 }
 
 /** A commit not answered after this many milliseconds shows that it is being checked. */
@@ -36,7 +41,7 @@ export const SLOW_COMMIT_MS = 300;
 
 const noSubscription = () => () => {};
 
-export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellProps) {
+export function EditableCell({ label, value, onCommit, size = 7, onOpenChange }: EditableCellProps) {
   // null: at rest (a button); open: `typed` is null until the user types (the input then shows the
   // live value), then the text typed.
   const [edit, setEdit] = useState<{ typed: string | null } | null>(null);
@@ -57,6 +62,15 @@ export function EditableCell({ label, value, onCommit, size = 7 }: EditableCellP
     if (editor?.ui.getState().message) editor.ui.setState({ message: null });
     setEdit({ typed: null });
   };
+
+  const isOpen = edit !== null;
+  const openChange = useRef(onOpenChange);
+  openChange.current = onOpenChange;
+  useEffect(() => {
+    if (!isOpen) return;
+    openChange.current?.(true);
+    return () => openChange.current?.(false);
+  }, [isOpen]);
 
   // Closed by Enter or Escape, the cell keeps the focus (on its button, without opening again): it
   // went to the page, where Backspace then deleted the body the cell's row had selected (audit).

@@ -4,7 +4,7 @@
  */
 
 import { useRef } from "react";
-import { useEditor } from "../EditorContext";
+import { useEditor, useSceneSerial } from "../EditorContext";
 import type { LineKind } from "../engineTypes";
 import { addLineNearCentre } from "./addNear";
 import { inNaturalOrder } from "./naturalOrder";
@@ -28,6 +28,8 @@ export function LinesTable() {
   const frame = useLiveFrame();
   const lines = inNaturalOrder(frame?.lines ?? NONE);
   const scrollRef = useRef<HTMLDivElement>(null);
+  // rows keyed by the scene too: a load that replaces it drops every draft (EditorSession.sceneSerial)
+  const scene = useSceneSerial();
 
   return (
     <section className="panel" aria-labelledby="lines-title">
@@ -54,7 +56,7 @@ export function LinesTable() {
           </thead>
           <tbody>
             {lines.map((l) => (
-              <ObjectRow key={l.id} kind="line" id={l.id}>
+              <ObjectRow key={`${scene}:${l.id}`} kind="line" id={l.id}>
                 <td>
                   <select
                     aria-label={`${l.id} kind`}

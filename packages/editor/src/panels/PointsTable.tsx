@@ -4,7 +4,7 @@
  */
 
 import { useRef } from "react";
-import { useEditor } from "../EditorContext";
+import { useEditor, useSceneSerial } from "../EditorContext";
 import { addPointNearCentre } from "./addNear";
 import { inNaturalOrder } from "./naturalOrder";
 import { CoordinateCell, ObjectRow } from "./ObjectRow";
@@ -19,6 +19,8 @@ export function PointsTable() {
   const frame = useLiveFrame();
   const points = inNaturalOrder(frame?.points ?? NONE);
   const scrollRef = useRef<HTMLDivElement>(null);
+  // rows keyed by the scene too: a load that replaces it drops every draft (EditorSession.sceneSerial)
+  const scene = useSceneSerial();
 
   return (
     <section className="panel" aria-labelledby="points-title">
@@ -43,7 +45,7 @@ export function PointsTable() {
           </thead>
           <tbody>
             {points.map((p) => (
-              <ObjectRow key={p.id} kind="point" id={p.id}>
+              <ObjectRow key={`${scene}:${p.id}`} kind="point" id={p.id}>
                 {([0, 1] as const).map((axis) => (
                   <CoordinateCell
                     key={axis}

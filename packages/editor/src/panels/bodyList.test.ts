@@ -34,6 +34,15 @@ describe("listBodies", () => {
   it("the selected body stays listed when it does not match", () => {
     expect(listedIds("ball199", "ball3")).toEqual(["ball3", "ball199"]);
   });
+
+  it("the bodies holding an open cell stay listed, past `max` and whatever the filter", () => {
+    const kept = new Set(["ball150", "ball7"]);
+    const listed = (filter: string) => listBodies(ids, filter, null, 60, kept).listed.map((i) => ids[i]);
+    expect(listed("")).toHaveLength(61);
+    expect(listed("").at(-1)).toBe("ball150");
+    expect(listed("ball199")).toEqual(["ball7", "ball150", "ball199"]);
+    expect(listBodies(ids, "ball199", null, 60, kept).shown, "not counted as matches").toBe(1);
+  });
 });
 
 describe("listNote", () => {

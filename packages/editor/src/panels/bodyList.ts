@@ -1,7 +1,7 @@
 /**
  * Which bodies the Bodies table lists: in natural id order (naturalOrder.ts), those whose id contains
  * the filter (case-insensitive; an empty filter matches all), at most `max` of them, and the selected
- * body always. `matched` counts every match, so the table can say how many it leaves out: with more
+ * body and the `kept` ones (rows holding an open cell: useHeldRows.ts) always. `matched` counts every match, so the table can say how many it leaves out: with more
  * bodies than rows, the filter is how any body is found from the keyboard.
  */
 import { naturalOrder } from "./naturalOrder";
@@ -11,7 +11,7 @@ export interface BodyList {
   listed: number[];
   /** Bodies whose id matches the filter. */
   matched: number;
-  /** Matches listed (at most `max`; the selected body listed without matching is not one). */
+  /** Matches listed (at most `max`; the selected or kept bodies listed without matching are not). */
   shown: number;
 }
 
@@ -20,6 +20,7 @@ export function listBodies(
   filter: string,
   selectedId: string | null,
   max: number,
+  kept: ReadonlySet<string> = new Set(),
 ): BodyList {
   const needle = filter.trim().toLowerCase();
   const listed: number[] = [];
@@ -28,7 +29,7 @@ export function listBodies(
     const id = ids[i]!;
     const match = needle === "" || id.toLowerCase().includes(needle);
     if (match) matched++;
-    if ((match && listed.length < max) || id === selectedId) listed.push(i);
+    if ((match && listed.length < max) || id === selectedId || kept.has(id)) listed.push(i);
   }
   return { listed, matched, shown: Math.min(matched, max) };
 }

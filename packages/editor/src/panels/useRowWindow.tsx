@@ -46,6 +46,30 @@ export function rowWindow(
   return { start, end: Math.max(start, end), before: start * rowPx, after: Math.max(0, count - end) * rowPx };
 }
 
+/** A part of a windowed table: a row (its index), or a spacer of `gap` px standing for the rows from `from` on, not rendered. */
+export type RowRun = { row: number } | { gap: number; from: number };
+
+/**
+ * The rows to render, in order: those of the window `win` and the `held` rows (indices of `count`)
+ * outside it (a row holding an open cell, useHeldRows.ts), each at its own place, with spacers of
+ * `rowPx` per row between them, so the scroll height and every row's place are as if all rows were
+ * rendered.
+ */
+export function rowRuns(win: RowWindow, held: readonly number[], count: number, rowPx: number): RowRun[] {
+  const rows = new Set<number>();
+  for (let i = win.start; i < win.end; i++) rows.add(i);
+  for (const i of held) if (i >= 0 && i < count) rows.add(i);
+  const runs: RowRun[] = [];
+  let next = 0;
+  for (const i of [...rows].sort((a, b) => a - b)) {
+    if (i > next) runs.push({ gap: (i - next) * rowPx, from: next });
+    runs.push({ row: i });
+    next = i + 1;
+  }
+  if (count > next) runs.push({ gap: (count - next) * rowPx, from: next });
+  return runs;
+}
+
 /**
  * The window of rows to render in the scroll container `ref` (whose table has a thead), and the
  * container's geometry as last measured.
