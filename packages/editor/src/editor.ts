@@ -10,19 +10,23 @@
  * of one action of any time (an Event-log entry's). An edit of an object (move, velocity, update,
  * globals) right after an action of that object at the same time is merged into it
  * (doc/mergeEdit.ts): x, then y, then r of a body at t = 2 are one action, still three undo steps. Methods that can fail resolve to the engine's
- * message (null on success) and show it in the UI.
+ * message (null on success) and show it in the UI; each that succeeds says what it did (an add what
+ * it added and where, an edit the values it set and what Undo restores: doc/editConfirm.ts).
  */
 
 import { strikeVelocity } from "./canvas/pointerPlace";
 import { describeEntry } from "./doc/actionRefs";
+import { confirmEdit, type FieldEdit, stateBefore } from "./doc/editConfirm";
 import { nextFreeId } from "./doc/ids";
 import { type ActionEntry, withoutAction } from "./doc/removeAction";
+import type { ObjectKind } from "./doc/rename";
 import { saveNameFor } from "./doc/saveName";
 import { metaWithTitle, titleOf } from "./doc/sceneTitle";
 import { shown } from "./editorSession";
 import { EditorTime } from "./editorTime";
 import type { Action, SceneFile, Vec2 } from "./engineTypes";
 import type { TimelineClient } from "./remote/client";
+import type { Frame } from "./remote/protocol";
 import { dropStaleHighlight } from "./store/highlightGuard";
 import { dropStaleSelection } from "./store/selectionGuard";
 import { keepTimeWindow } from "./store/timeWindowGuard";
@@ -103,12 +107,29 @@ export class Editor extends EditorTime {
     return err;
   }
 
-  moveBody(id: string, x: number, y: number): Promise<string | null> {
-    return this.edit([this.stamp({ time: this.now(), type: "updateBody", id, x, y })], true);
+  /**
+   * Applies the edit of a field `action` (merged as edits are) and says what it set at what time and
+   * what Undo restores (doc/editConfirm.ts: "Moved disc "b3" to (50, 0) at t = 2 s (Undo moves it
+   * back to (40, 0))."): a move, a velocity drag, a cue strike, a table cell or a Globals button said
+   * nothing, while adds and deletes did. The values before come from the frame at the edit's time,
+   * asked for at its turn right before it is sent (after the changes queued before it).
+   */
+  private editSaid(action: FieldEdit, how?: "strike"): Promise<string | null> {
+    const frame = (): Promise<Frame> =>
+      this.client.hasFrame(action.time) && this.client.latestFrame !== null
+        ? Promise.resolve(this.client.latestFrame)
+        : this.client.frame(action.time);
+    return this.edit([this.stamp(action)], true, async () =>
+      confirmEdit(action, stateBefore(await frame(), action), how),
+    );
   }
 
-  giveVelocity(id: string, v: Vec2): Promise<string | null> {
-    return this.edit([this.stamp({ time: this.now(), type: "giveVelocity", id, v })], true);
+  moveBody(id: string, x: number, y: number): Promise<string | null> {
+    return this.editSaid({ time: this.now(), type: "updateBody", id, x, y });
+  }
+
+  giveVelocity(id: string, v: Vec2, how?: "strike"): Promise<string | null> {
+    return this.editSaid({ time: this.now(), type: "giveVelocity", id, v }, how);
   }
 
   /**
@@ -128,23 +149,31 @@ export class Editor extends EditorTime {
           : [dx * STRIKE_RATE, dy * STRIKE_RATE]
         : strikeVelocity(dx, dy, STRIKE_RATE, scale);
     if (v === null) return Promise.resolve(this.fail(NO_STRIKE_DIRECTION));
-    return this.giveVelocity(id, v);
+    return this.giveVelocity(id, v, "strike");
   }
 
   updateBody(id: string, patch: { x?: number; y?: number; v?: Vec2; r?: number; m?: number; mu?: number }) {
-    return this.edit([this.stamp({ time: this.now(), type: "updateBody", id, ...patch })], true);
+    return this.editSaid({ time: this.now(), type: "updateBody", id, ...patch });
   }
 
   updateLine(id: string, patch: { p1?: Vec2; p2?: Vec2; kind?: "line" | "ray" | "segment" }) {
-    return this.edit([this.stamp({ time: this.now(), type: "updateLine", id, ...patch })], true);
+    return this.editSaid({ time: this.now(), type: "updateLine", id, ...patch });
   }
 
   updatePoint(id: string, p: Vec2) {
-    return this.edit([this.stamp({ time: this.now(), type: "updatePoint", id, p })], true);
+    return this.editSaid({ time: this.now(), type: "updatePoint", id, p });
   }
 
   setGlobal(patch: { g?: number; gravity?: Vec2 }) {
-    return this.edit([this.stamp({ time: this.now(), type: "setGlobal", ...patch })], true);
+    return this.editSaid({ time: this.now(), type: "setGlobal", ...patch });
+  }
+
+  /** Renames a body, line or point (EditorRewrites.rename), and says so and that Undo takes it back. */
+  override async rename(kind: ObjectKind, from: string, to: string): Promise<string | null> {
+    const err = await super.rename(kind, from, to);
+    if (err === null)
+      this.info(`Renamed ${kind} ${JSON.stringify(from)} to ${JSON.stringify(to)} (Undo takes it back).`);
+    return err;
   }
 
   /** Removes the selected body, line or point at the current time, and says so (it said nothing). */

@@ -202,14 +202,18 @@ export class EditorSession extends EditorCompute {
    * Applies edits as one undo step; on error nothing changes and the message is returned. `merge`:
    * an edit of the object the action right before its place edits at the same time is merged into
    * that action (doc/mergeEdit.ts); its undo step still restores the scene before this edit.
+   * `confirm`, called at the edit's turn right before it is sent (so a frame it asks for is the state
+   * before the edit), gives the message shown once the edit is applied (editor.ts, doc/editConfirm.ts).
    */
-  async edit(actions: Action[], merge = false): Promise<string | null> {
+  async edit(actions: Action[], merge = false, confirm?: () => Promise<string>): Promise<string | null> {
     const err = await this.changes.ticketed(async (ticket) => {
       const before = this.doc;
+      let said: Promise<string | null> | null = null;
       const behind = this.notComputedYet(actions);
       if (behind !== null) return this.fail(behind);
       try {
         this.unconfirmed = before;
+        said = confirm?.().catch(() => null) ?? null;
         const applied = this.client.apply(actions, merge);
         this.takeBackIfUndone(ticket);
         await applied;
@@ -225,6 +229,8 @@ export class EditorSession extends EditorCompute {
       this.history.setState(record(this.history.getState(), before));
       this.names.left(before);
       this.ui.setState({ message: null });
+      const text = await said;
+      if (text) this.info(text);
       return null;
     });
     if (err !== null) return err;

@@ -91,7 +91,11 @@ describe("the pointer's precision", () => {
     // 4 per unit of offset (−0.01, −0.004): (−0.04, −0.016), which rounds to [0, 0] at a step of 0.1
     drag(g, [400.1, 300.04], [400.1, 300.04]);
     await settled(client);
-    expect(editor.ui.getState().message).toBeNull();
+    // struck, and said (not refused)
+    expect(editor.ui.getState().message).toEqual({
+      text: 'Struck disc "a": velocity (-0.1, 0) at t = 0 s (Undo restores (0, 0)).',
+      tone: "info",
+    });
     expect(editor.doc.actions).toMatchObject([{ type: "addBody", id: "a", v: [-0.1, 0] }]);
     // the disc moves off to the left: struck, not stopped
     expect((await client.frame(1)).data[F_X]).toBeLessThan(0);
