@@ -277,8 +277,9 @@ export function EventLog() {
                   }}
                 >
                   <td>{formatNumber(e.time)}</td>
-                  <td>{kindLabel(e)}</td>
-                  <td>{e.ids.join(", ")}</td>
+                  {/* cut to the column's width in a narrow box (tables.css): whole in the title */}
+                  <td title={kindLabel(e)}>{kindLabel(e)}</td>
+                  <td title={e.ids.join(", ")}>{e.ids.join(", ")}</td>
                   <td className="row-end">{removable(e, doc, onRemoved, armed.notice)}</td>
                 </tr>
               );
