@@ -46,4 +46,23 @@ describe("GlobalsPanel", () => {
     expect(g2.value).toBe("-1");
     expect(h.editor.doc.g).toBe(newtonsCradle().g);
   });
+
+  it("drops a refused draft when a load replaces the scene: it is never applied to the next scene's g", async () => {
+    const h = testEditor();
+    await h.editor.loadScene(newtonsCradle(), { undoable: false });
+    await settled(h.client);
+    render(
+      <EditorContext.Provider value={h.editor}>
+        <GlobalsPanel />
+      </EditorContext.Provider>,
+    );
+    const g = await commit("g", "-1");
+    await waitFor(() => expect(refusalOf(g)).toMatch(/^g: must be a non-negative/));
+    await act(async () => {
+      await h.editor.loadScene({ ...newtonsCradle(), g: 2 });
+      await settled(h.client);
+    });
+    expect(screen.queryByRole("textbox", { name: "g" })).toBeNull();
+    await waitFor(() => expect(screen.getByRole("button", { name: "g" }).textContent).toBe("2"));
+  });
 });

@@ -1,5 +1,9 @@
-/** Globals at the current time: friction g (quick buttons 1 and 9.81) and the gravity vector. */
-import { useEditor } from "../EditorContext";
+/**
+ * Globals at the current time: friction g (quick buttons 1 and 9.81) and the gravity vector. The
+ * cells are keyed by the scene (EditorSession.sceneSerial), as the tables' rows: a draft typed for
+ * one scene's globals is dropped when a load replaces the scene, never applied to the next one's.
+ */
+import { useEditor, useSceneSerial } from "../EditorContext";
 import { EditableCell, formatNumber, parseNumber } from "./EditableCell";
 import { notANumber } from "./typedRefusal";
 import { useLiveFrame } from "./useLiveFrame";
@@ -9,6 +13,7 @@ export function GlobalsPanel() {
   const frame = useLiveFrame();
   const g = frame?.g ?? editor.doc.g;
   const gravity = frame?.gravity ?? editor.doc.gravity;
+  const scene = useSceneSerial();
   const num = (name: string, apply: (x: number) => Promise<string | null>) => async (text: string) => {
     const x = parseNumber(text);
     return x === null ? notANumber(name, text) : apply(x);
@@ -19,6 +24,7 @@ export function GlobalsPanel() {
       <div className="row">
         g{" "}
         <EditableCell
+          key={`${scene}:g`}
           label="g"
           value={formatNumber(g)}
           size={6}
@@ -34,12 +40,14 @@ export function GlobalsPanel() {
       <div className="row">
         gravity{" "}
         <EditableCell
+          key={`${scene}:gx`}
           label="gravity x"
           value={formatNumber(gravity[0])}
           size={6}
           onCommit={num("gravity x", (x) => editor.setGlobal({ gravity: [x, gravity[1]] }))}
         />
         <EditableCell
+          key={`${scene}:gy`}
           label="gravity y"
           value={formatNumber(gravity[1])}
           size={6}
