@@ -9,10 +9,12 @@
  * checked (pendingEdit.ts) its restore job runs on: a refusal takes the change back (takeBack), and
  * once the history passes the check the change is answered; a computation asked meanwhile starts
  * once the old history is back (afterRestore). How a request becomes a job (or leaves the running
- * one alone) and the slices' budget: computeJob.ts; the meta kept per timeline: timelineMeta.ts.
+ * one alone) and the slices' budget: computeJob.ts; the limits in time and memory: computeLimits.ts;
+ * the meta kept per timeline: timelineMeta.ts.
  */
 import type { SceneFile, Until } from "../engineTypes";
 import { type Job, nextBudget, planJob, targetOf } from "./computeJob";
+import { CAP_CHECK_MS, HISTORY_MAX_BYTES, INFO_EVERY_MS, RECORD_EVERY_MS, ROUND_MS } from "./computeLimits";
 import { errorInfo } from "./errors";
 import { lastEventTime } from "./eventQueries";
 import { PendingEdits } from "./pendingEdit";
@@ -21,29 +23,7 @@ import { SeriesRecorder } from "./series";
 import type { TimelineLike } from "./timelineLike";
 import { TimelineMetas } from "./timelineMeta";
 
-/**
- * Wall-clock milliseconds one round of slices may take before the host yields to messages (a frame
- * or scrub request waits at most about this long while computing).
- */
-const ROUND_MS = 8;
-/**
- * While computing, the host tells the client about progress at most this often (ms): each `info`
- * re-renders the panels that show counts and the horizon on the main thread, and rounds end 100
- * times a second. The revision moves only when info is sent, so frames and info always agree.
- */
-const INFO_EVERY_MS = 50;
-/**
- * A computation stops once the stored history (Timeline.historyBytes: records and keyframes) passes
- * this many bytes, saying so in `info.stopped`: a scene that never comes to rest computed with ∞
- * grew to 1.6 GB and ended in "Array buffer allocation failed" (review, session 19). About 10
- * million events of a 200-disc gas; a browser tab has a few GB in all. A restore (history the user
- * had, brought back after an edit) is not stopped: it was under the cap when it was computed.
- */
-export const HISTORY_MAX_BYTES = 512 * 2 ** 20;
-/** How often (ms) a computation compares the history's size with HISTORY_MAX_BYTES. */
-const CAP_CHECK_MS = 100;
-/** While computing, energy/event samples are recorded at most this often (ms of wall-clock time). */
-const RECORD_EVERY_MS = 100;
+export { HISTORY_MAX_BYTES } from "./computeLimits";
 
 export interface HostEnv {
   post(message: HostMessage, transfer?: Transferable[]): void;
