@@ -194,7 +194,10 @@ describe("scene author", () => {
     // refusals: the message says why, the scene stays
     const bad = JSON.stringify({ ...LONELY, actions: [{ ...LONELY.actions[0], m: -1 }] });
     await drop(await files([["bad.json", bad, "application/json"]]));
-    await poll(message).toMatch(/^bad\.json: actions\[0\]\.m: /);
+    // the action named as the author knows it, the engine's path in parentheses
+    await poll(message).toMatch(
+      /^bad\.json: the action at t = 0 s that adds disc "lonely" \(actions\[0\]\.m\): /,
+    );
     await drop(await files([["photo.png", "PNG", "image/png"]]));
     await poll(message).toMatch(/^photo\.png: not a scene file/);
     await drop(

@@ -155,7 +155,9 @@ describe("keeping work", () => {
     const file = join(ARTIFACTS, "broken-field.chapgame.json");
     writeFileSync(file, JSON.stringify({ ...LONELY, actions: [{ ...LONELY.actions[0], r: "big" }] }));
     await editor.page.getByLabel("Scene file").setInputFiles(file);
-    await poll(message).toMatch(/broken-field\.chapgame\.json: actions\[0\]\.r: /);
+    await poll(message).toMatch(
+      /broken-field\.chapgame\.json: the action at t = 0 s that adds disc "lonely" \(actions\[0\]\.r\): /,
+    );
     expect(await bodies().getByRole("row").count()).toBe(before);
   });
 });

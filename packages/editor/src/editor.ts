@@ -15,9 +15,10 @@
  */
 
 import { strikeVelocity } from "./canvas/pointerPlace";
-import { describeEntry } from "./doc/actionRefs";
+import { actionName, describeEntry } from "./doc/actionRefs";
 import { confirmEdit, type FieldEdit, stateBefore } from "./doc/editConfirm";
 import { nextFreeId } from "./doc/ids";
+import { withActionChanged } from "./doc/refusedAction";
 import { type ActionEntry, withoutAction } from "./doc/removeAction";
 import type { ObjectKind } from "./doc/rename";
 import { saveNameFor } from "./doc/saveName";
@@ -201,6 +202,19 @@ export class Editor extends EditorTime {
     if (err !== null) return err;
     const what = describeEntry(entry.type, entry.id);
     this.info(`Removed ${what} at t = ${shown(entry.time)} s from the scene (Undo brings it back).`);
+    return null;
+  }
+
+  /**
+   * Replaces `actions[index]` (checked to be `entry`'s, as removeAction checks it) by `next`, as one
+   * undo step: the refused action's fields changed where the Event log lists it
+   * (panels/RefusedActionRow.tsx). `field` names what changed, for the message.
+   */
+  async changeAction(index: number, entry: ActionEntry, next: Action, field: string): Promise<string | null> {
+    const err = await this.rewrite((doc) => withActionChanged(doc, index, entry, next));
+    if (err !== null) return err;
+    const name = actionName(next) ?? `the action at t = ${shown(next.time)} s`;
+    this.info(`Changed ${field} of ${name} (Undo brings back the action as it was).`);
     return null;
   }
 

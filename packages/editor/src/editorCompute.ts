@@ -12,14 +12,30 @@
  */
 
 import { BehindRefusals, reachedMessage } from "./behindRefusals";
-import { explainRefusal } from "./doc/actionRefs";
+import { explainRefusal, namedRefusal } from "./doc/actionRefs";
 import { refusalInUserTerms } from "./doc/refusalTerms";
 import type { Action, SceneFile, Until } from "./engineTypes";
 import type { TimelineClient } from "./remote/client";
+import type { TimelineInfo } from "./remote/protocol";
 import type { UiStore } from "./store/uiStore";
 
 /** A time as messages write it (6 significant digits). */
 export const shown = (t: number): number => Number(t.toPrecision(6));
+
+/** Where the author finds a refused action of the scene (panels/RefusedActionRow.tsx). */
+export const REFUSED_ACTION_HINT =
+  "The Event log lists it as refused: its ✕ removes it, its cells change it.";
+
+/**
+ * Why the computation stopped, after "The computation stopped at t = … s: ": the engine's message,
+ * an action it refused named as the author knows it (doc/actionRefs.ts namedRefusal) and where
+ * to remove or change it.
+ */
+export function stopMessage(info: Pick<TimelineInfo, "stopped" | "stoppedPath" | "doc">): string {
+  const stopped = info.stopped ?? "";
+  const named = namedRefusal(stopped, info.stoppedPath, info.doc?.actions ?? []);
+  return named === stopped ? stopped : `${named}. ${REFUSED_ACTION_HINT}`;
+}
 
 export class EditorCompute {
   /** The refusals of edits the history has not reached yet, followed until they lapse. */
@@ -40,7 +56,7 @@ export class EditorCompute {
       this.ui.setState({ message });
     });
     // A computation the engine refused to continue (a Zeno state, an action refused): say why the
-    // horizon stops there. An information still shown stays before it ("Opened late.json. Undo
+    // horizon stops there, a refused action named by what it does, not by its index. An information still shown stays before it ("Opened late.json. Undo
     // returns to the scene you had before."): replaced, the author would no longer read that a
     // file was opened over the scene, nor how to get the scene back.
     let stopped: string | null = null;
@@ -53,7 +69,10 @@ export class EditorCompute {
       const said = this.ui.getState().message;
       const before = said?.tone === "info" ? `${said.text} ` : "";
       this.ui.setState({
-        message: { text: `${before}The computation stopped at t = ${h} s: ${stopped}`, tone: "error" },
+        message: {
+          text: `${before}The computation stopped at t = ${h} s: ${stopMessage(info)}`,
+          tone: "error",
+        },
       });
     });
   }
@@ -79,6 +98,14 @@ export class EditorCompute {
     const path = typeof p === "string" ? p : null;
     const text = edited === undefined ? raw : refusalInUserTerms(raw, path, edited);
     return this.fail(explainRefusal(text, path, actions));
+  }
+
+  /** fail, an action the engine's `actions[i]` names said as the author knows it (a load's refusal). */
+  protected failNamed(e: unknown, actions: readonly Action[]): string {
+    const p = (e as { path?: unknown } | null)?.path;
+    return this.fail(
+      namedRefusal(e instanceof Error ? e.message : String(e), typeof p === "string" ? p : null, actions),
+    );
   }
 
   info(text: string): void {

@@ -148,8 +148,9 @@ describe("edits of one object at one instant", () => {
     await settled(client);
     const before = editor.doc;
     const err = await editor.updateBody("a", { y: 4 });
-    expect(err).toMatch(/^actions\[3\]: .*\(once this action is in place\)/);
-    expect(err).toMatch(/actions\[3\] is the action at t = 5 s: update body "b"/);
+    expect(err).toMatch(
+      /^The action at t = 5 s that updates body "b" \(actions\[3\]\): .*\(once this action is in place\)/,
+    );
     await settled(client);
     expect(editor.doc).toEqual(before);
   });

@@ -21,6 +21,7 @@ import { EMPTY_HISTORY, type History, record, takenBack } from "./doc/history";
 import type { Intents, Ticket } from "./doc/undoIntents";
 import { EditorCompute } from "./editorCompute";
 import type { Action, SceneFile } from "./engineTypes";
+import { inApplyingOrder } from "./remote/actionIndices";
 import { type Port, UNDONE_DURING_CHECK } from "./remote/protocol";
 import { type Replaced, ReplacementSteps } from "./replacementSteps";
 import { SceneChanges } from "./sceneChanges";
@@ -164,8 +165,10 @@ export class EditorSession extends EditorCompute {
       await loaded;
     } catch (e) {
       if (ticket !== null && (await this.tookBack(ticket))) return UNDONE_DURING_CHECK;
-      // The engine names actions by their index in the list it was given.
-      return naming ? this.failNaming(e, scene.actions) : this.fail(e);
+      // The engine names actions by their index in the list it was given (the host gives it the
+      // scene's in applying order).
+      const given = inApplyingOrder(scene).actions;
+      return naming ? this.failNaming(e, given) : this.failNamed(e, given);
     } finally {
       this.unconfirmed = null;
     }

@@ -29,7 +29,8 @@ describe("opening a scene file", () => {
     const before = editor.doc;
     const bad = { ...LONELY, actions: [{ ...LONELY.actions[0], r: "big" }] };
     const err = await openSceneFile(editor, json("bad.json", bad));
-    expect(err).toMatch(/^bad\.json: actions\[0\]\.r: /);
+    // the action named as the author knows it, the engine's path in parentheses (review, session 30)
+    expect(err).toMatch(/^bad\.json: the action at t = 0 s that adds disc "lonely" \(actions\[0\]\.r\): /);
     // and says the scene is kept, as the other refusals of a file do (it said only what was wrong)
     expect(err).toMatch(/; nothing was opened \(your scene is as it was\)\.$/);
     expect(editor.ui.getState().message).toEqual({ text: err, tone: "error" });
@@ -48,7 +49,7 @@ describe("opening a scene file", () => {
       actions: [LONELY.actions[0], { ...LONELY.actions[0], id: "twin", x: 0.5 }],
     };
     expect(await openSceneFile(editor, json("overlap.json", overlap))).toMatch(
-      /^overlap\.json: .*actions\[1\]/,
+      /^overlap\.json: the action at t = 0 s that adds disc "twin" \(actions\[1\]\): body "twin" would overlap body "lonely"/,
     );
     expect(editor.doc).toBe(before);
   });
@@ -73,7 +74,7 @@ describe("opening a scene file", () => {
     const message = editor.ui.getState().message;
     expect(message?.tone).toBe("error");
     expect(message?.text).toMatch(
-      /^Opened late\.json\. Undo returns to the scene you had before\. The computation stopped at t = 1 s: .*"blocker" would overlap body "mover"/,
+      /^Opened late\.json\. Undo returns to the scene you had before\. The computation stopped at t = 1 s: the action at t = 1 s that adds disc "blocker" \(actions\[1\]\): body "blocker" would overlap body "mover" at time 1\. The Event log lists it as refused/,
     );
     await editor.undo();
     expect(sceneText(editor.doc)).toBe(sceneText(before));
@@ -85,7 +86,7 @@ describe("opening a scene file", () => {
     const bad = { ...LONELY, actions: [{ ...LONELY.actions[0], r: -2 }] };
     const err = await openPastedText(editor, JSON.stringify(bad));
     expect(err).toBe(
-      "Pasted text: actions[0].r: must be a positive finite number (got -2); nothing was opened (your scene is as it was).",
+      'Pasted text: the action at t = 0 s that adds disc "lonely" (actions[0].r): must be a positive finite number (got -2); nothing was opened (your scene is as it was).',
     );
     expect(editor.ui.getState().message).toEqual({ text: err, tone: "error" });
     expect(editor.doc).toBe(before);

@@ -1,12 +1,13 @@
 /**
  * Opening a scene the user hands over: pasted text, a file from Load file, a file dropped on the
  * page. One path for all: the engine's validation (a refusal names the field, and a file's name
- * before it), the current scene kept on any refusal, and an opened scene is one undo step over the
+ * before it; an action's field names the action as the author knows it, doc/actionRefs.ts), the current scene kept on any refusal, and an opened scene is one undo step over the
  * one it replaces; an opened file's name is what Save file suggests for it. A refused file or paste
  * names where the text came from and ends saying the scene is kept (KEPT). droppedSceneFile says
  * which file of a drop to open, or why none.
  */
 import type { Editor } from "../editor";
+import { namedRefusal } from "./actionRefs";
 import { parseSceneText } from "./sceneIo";
 
 /**
@@ -25,7 +26,10 @@ export async function openSceneText(
   try {
     err = await editor.loadScene(parseSceneText(source), { name });
   } catch (e) {
-    err = e instanceof Error ? e.message : String(e);
+    // the engine's `actions[i]` of the text given, named as the author knows the action
+    const path = (e as { path?: unknown } | null)?.path;
+    const text = e instanceof Error ? e.message : String(e);
+    err = namedRefusal(text, typeof path === "string" ? path : null, actionsOfText(source));
   }
   if (err !== null) {
     const text = origin + err + after;
@@ -33,6 +37,16 @@ export async function openSceneText(
     return text;
   }
   return null;
+}
+
+/** The `actions` of scene text as plain data, as far as it is JSON holding them (else none). */
+function actionsOfText(source: string): readonly unknown[] {
+  try {
+    const actions = (JSON.parse(source) as { actions?: unknown } | null)?.actions;
+    return Array.isArray(actions) ? actions : [];
+  } catch {
+    return [];
+  }
 }
 
 /** What a refused file's message ends with. */

@@ -29,6 +29,7 @@ export function CalculationPanel() {
   const computing = useInfoValue((i) => i.computing);
   const idle = useInfoValue((i) => i.idle);
   const stopped = useInfoValue((i) => i.stopped);
+  const refusedAction = useInfoValue((i) => i.stoppedPath?.startsWith("actions[") === true);
   const set = (patch: Partial<CalcSettings>) =>
     editor.ui.setState((s) => ({ calc: { ...s.calc, ...patch } }));
   const unlimited = !calc.useTime && !calc.useEvents;
@@ -148,7 +149,9 @@ export function CalculationPanel() {
             <span title={stopped}>
               {stopped.startsWith("the history holds")
                 ? " (stopped: history too large)"
-                : " (stopped: the engine cannot go on)"}
+                : refusedAction
+                  ? " (stopped: an action is refused)"
+                  : " (stopped: the engine cannot go on)"}
             </span>
           )}
         </span>

@@ -13,6 +13,7 @@
  * the focus between entries.
  * Only the rows in view are rendered (useRowWindow); the view follows the current time (useFollowTime).
  * "Skip the Event log table" (SkipTable, shown when focused) passes its entries in one Tab press.
+ * The scene's refused action, if any, is listed over the entries (RefusedActionRow).
  */
 import { useEffect, useId, useRef, useState } from "react";
 import { actionWords } from "../doc/actionRefs";
@@ -23,6 +24,7 @@ import { refKey, refOf } from "../remote/eventDetail";
 import type { EventPage, PageEvent } from "../remote/protocol";
 import type { Selection } from "../store/uiStore";
 import { formatNumber } from "./EditableCell";
+import { RefusedActionRow } from "./RefusedActionRow";
 import { RemoveActionButton } from "./RemoveActionButton";
 import { focusAfterRemoval } from "./removeFocus";
 import { SkipTable } from "./SkipTable";
@@ -213,6 +215,7 @@ export function EventLog() {
           onChange={(e) => editor.ui.setState({ eventFilter: e.target.value })}
         />
       </div>
+      <RefusedActionRow notice={armed.notice} />
       <div className="visually-hidden" role="status" aria-live="polite">
         {armed.text}
       </div>

@@ -66,3 +66,17 @@ export function withActionIndices(
   }
   return out;
 }
+
+/**
+ * `scene` with its actions in the order they apply (time, then list order: a stable sort), the
+ * same list when it is in that order already. The engine names a refused action by its index in
+ * the list it was given, and the scene the editor shows (Timeline.toScene) lists them in applying
+ * order: a file whose actions are not in time order would otherwise have its refused action named
+ * by an index that is another action's in the editor's scene (the host loads every scene so).
+ */
+export function inApplyingOrder<S extends { actions: readonly Action[] }>(scene: S): S {
+  const a = scene.actions;
+  if (a.every((x, i) => i === 0 || (a[i - 1] as Action).time <= x.time)) return scene;
+  const order = a.map((_, i) => i).sort((i, j) => (a[i] as Action).time - (a[j] as Action).time || i - j);
+  return { ...scene, actions: order.map((i) => a[i] as Action) };
+}

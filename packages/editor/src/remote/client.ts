@@ -37,6 +37,7 @@ export const EMPTY_INFO: TimelineInfo = {
   docRevision: -1,
   computing: null,
   stopped: null,
+  stoppedPath: null,
   historyBytes: 0,
 };
 

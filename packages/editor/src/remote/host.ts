@@ -10,6 +10,7 @@
 import { checkAction } from "@chapgame/engine";
 import { changesNothing, mergedEdit } from "../doc/mergeEdit";
 import type { Action, PathPiece, SceneFile } from "../engineTypes";
+import { inApplyingOrder } from "./actionIndices";
 import { errorInfo } from "./errors";
 import { findEventDetail, stepEventDetail } from "./eventDetail";
 import { eventPage, eventTicks } from "./eventQueries";
@@ -38,7 +39,7 @@ export class TimelineHost extends HostCompute {
     env: HostEnv,
     initial: SceneFile,
   ) {
-    super(env, factory(initial));
+    super(env, factory(inApplyingOrder(initial)));
   }
 
   handle(message: RequestMessage): void {
@@ -60,7 +61,9 @@ export class TimelineHost extends HostCompute {
         // the first one's history is recomputed must not cut it to the part recomputed so far).
         const oldEnd = Math.max(this.tl.horizon, restoreTarget(this.job));
         const keep = r.keepTo === undefined ? null : Math.max(r.keepTo, oldEnd);
-        const tl = this.factory(r.scene);
+        // in applying order: the engine's `actions[i]` then names the action of the scene shown
+        const tl = this.factory(inApplyingOrder(r.scene));
+        const stoppedBefore = this.stoppedNow();
         this.pending.answer({
           message: "the scene was replaced before the edit's later actions were checked",
           path: null,
@@ -81,6 +84,7 @@ export class TimelineHost extends HostCompute {
           this.pending.edit = {
             id: r.id,
             undo: { timeline: previous },
+            stoppedBefore,
             checkTo,
             horizon: oldEnd,
             suffix: "",

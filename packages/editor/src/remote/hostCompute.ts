@@ -4,13 +4,14 @@
  * frame, scrub and edit requests are answered between rounds and Cancel takes effect at once. Every
  * change of the timeline posts `info` (at most every INFO_EVERY_MS while computing; the revision
  * moves only then, so frames and info always agree). A computation the engine refuses to continue
- * (a Zeno state) ends with the engine's message in `info.stopped`, the history computed so far
- * kept; so does one whose history grows past HISTORY_MAX_BYTES. While a change's later actions are
- * checked (pendingEdit.ts) its restore job runs on: a refusal takes the change back (takeBack), and
- * once the history passes the check the change is answered; a computation asked meanwhile starts
- * once the old history is back (afterRestore). How a request becomes a job (or leaves the running
- * one alone) and the slices' budget: computeJob.ts; the limits in time and memory: computeLimits.ts;
- * the meta kept per timeline: timelineMeta.ts.
+ * (a Zeno state, a later action refused) ends with the engine's message in `info.stopped` and its
+ * path in `info.stoppedPath`, the history computed so far kept; so does one whose history grows
+ * past HISTORY_MAX_BYTES. While a change's later actions are checked (pendingEdit.ts) its restore
+ * job runs on: a refusal takes the change back (takeBack; a load taken back brings back the stop
+ * its timeline had), and once the history passes the check the change is answered; a computation
+ * asked meanwhile starts once the old history is back (afterRestore). How a request becomes a job
+ * (or leaves the running one alone) and the slices' budget: computeJob.ts; the limits in time and
+ * memory: computeLimits.ts; the meta kept per timeline: timelineMeta.ts.
  */
 import type { SceneFile, Until } from "../engineTypes";
 import { type Job, nextBudget, planJob, targetOf } from "./computeJob";
@@ -18,7 +19,7 @@ import { CAP_CHECK_MS, HISTORY_MAX_BYTES, INFO_EVERY_MS, RECORD_EVERY_MS, ROUND_
 import { errorInfo } from "./errors";
 import { lastEventTime } from "./eventQueries";
 import { PendingEdits } from "./pendingEdit";
-import type { ComputeAsk, HostMessage, TimelineInfo } from "./protocol";
+import type { ComputeAsk, ErrorInfo, HostMessage, TimelineInfo } from "./protocol";
 import { SeriesRecorder } from "./series";
 import type { TimelineLike } from "./timelineLike";
 import { TimelineMetas } from "./timelineMeta";
@@ -40,6 +41,8 @@ export class HostCompute {
   private sentDocRevision = -1;
   private idle = false;
   private stopped: string | null = null;
+  /** The engine's path of the refusal in `stopped` (an action refused when the history reached it), or null. */
+  private stoppedPath: string | null = null;
   protected job: Job | null = null;
   protected readonly pending: PendingEdits;
   private scheduled = false;
@@ -83,10 +86,24 @@ export class HostCompute {
       this.series.clear();
     }
     this.changed(true);
+    const stopped = "timeline" in p.undo ? (p.stoppedBefore ?? null) : null;
+    if (stopped !== null) this.setStopped(stopped);
     if (this.tl.horizon < p.horizon) this.restoreTo(p.horizon);
     // Answered last: the info that takes the change back must reach the client first (the next
     // queued change reads the scene from it).
     this.pending.answer({ message, path });
+  }
+
+  /** Why the last computation stopped (message and path), or null. */
+  protected stoppedNow(): ErrorInfo | null {
+    return this.stopped === null ? null : { message: this.stopped, path: this.stoppedPath };
+  }
+
+  /** Says again why the timeline's computation stopped (a take-back gave back a stopped timeline). */
+  private setStopped(s: ErrorInfo): void {
+    this.stopped = s.message;
+    this.stoppedPath = s.path;
+    this.changed(false);
   }
 
   /** Starts a restore job up to the absolute time `end`, exactly (h + (end - h) may round below end). */
@@ -118,6 +135,7 @@ export class HostCompute {
     if (after !== null && after.job === running) after.job = this.job;
     this.idle = false;
     this.stopped = null;
+    this.stoppedPath = null;
     this.changed(false);
     this.kick();
   }
@@ -170,7 +188,9 @@ export class HostCompute {
           return;
         }
         // The engine refuses to go on (a Zeno state): the history up to the horizon stands.
-        this.stopped = errorInfo(e).message;
+        const refusal = errorInfo(e);
+        this.stopped = refusal.message;
+        this.stoppedPath = refusal.path;
         this.job = null;
         break;
       }
@@ -244,6 +264,7 @@ export class HostCompute {
       this.docRevision++;
       this.idle = false;
       this.stopped = null;
+      this.stoppedPath = null;
     }
     this.lastInfo = now;
     this.env.post({ type: "info", info: this.info() });
@@ -265,6 +286,7 @@ export class HostCompute {
       docRevision: this.docRevision,
       computing: this.job ? { ...this.job } : null,
       stopped: this.stopped,
+      stoppedPath: this.stoppedPath,
       historyBytes: tl.historyBytes(),
     };
   }

@@ -27,6 +27,12 @@ export interface PendingEdit {
   id: number;
   /** How to take the change back: the action list before an edit, or the timeline before a load. */
   undo: { actions: Action[] } | { timeline: TimelineLike };
+  /**
+   * Why the timeline before a load had stopped (a later action refused: its message and path), put
+   * back with it on a take-back: a refused change of a scene whose computation was stopped leaves
+   * the scene stopped at the same refusal, still listed (a fix of a refused action refused again).
+   */
+  stoppedBefore?: ErrorInfo | null;
   /** The last action's time, up to the old history's end: the check is done once the horizon passes it. */
   checkTo: number;
   /** The old history's end, recomputed again after a take-back. */

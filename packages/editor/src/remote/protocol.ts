@@ -90,6 +90,13 @@ export interface TimelineInfo {
    * state met while computing); null otherwise. Cleared by the next computation or edit.
    */
   stopped: string | null;
+  /**
+   * The engine's path of the refusal that stopped the computation (`actions[3]`, `actions[3].x`:
+   * an action of the scene refused when the history reached it), null when none or when the stop
+   * names no field (a Zeno state, the history's size). With `doc`, it says which action is refused
+   * (doc/refusedAction.ts).
+   */
+  stoppedPath: string | null;
   historyBytes: number;
 }
 
