@@ -3,8 +3,9 @@
  * when the computation reaches it (a disc added at t = 1 over a disc already there), in Debian's
  * Chromium. Review of session 30: the editor kept the computed part and said "The computation
  * stopped at t = 1 s: actions[1]: …", but the refused action was in no table and had no ✕ (only
- * Undo or another paste got rid of it), and the message named it by its index alone. Checked
- * against the build before the fix (CHAPGAME_E2E_DIST=<old dist>): each test fails there.
+ * Undo or another paste got rid of it), the message named it by its index alone, and the Event
+ * log's filter with an id no object has showed an empty table without a word. Checked against the
+ * build before the fix (CHAPGAME_E2E_DIST=<old dist>): each test fails there.
  */
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
@@ -105,5 +106,32 @@ describe("a scene's refused later action", () => {
       `The computation stopped at t = 1 s: ${REFUSED_NAME} (actions[2]): body "b3" would overlap body "a" at time 1.`,
     );
     expect(await messageText()).not.toMatch(/: actions\[2\]: /);
+  });
+});
+
+describe("the Event log filter that keeps no entry", () => {
+  const filter = () => editor.page.getByLabel("Filter by body");
+  const note = () => editor.page.locator(".log-note").textContent();
+
+  it("says no object has the id, naming the ids close to it", async () => {
+    await pasteScene();
+    await filter().fill("b4");
+    await poll(note).toBe('No body, line or point has the id "b4". Close: "b3".');
+    // the note is the field's description: a screen reader reads it with the field
+    const described = await filter().getAttribute("aria-describedby");
+    expect(await editor.page.locator(".log-note").getAttribute("id")).toBe(described);
+    await filter().fill("zz");
+    await poll(note).toBe('No body, line or point has the id "zz".');
+    await filter().fill("");
+    await poll(note).toBe("");
+  });
+
+  it("tells an id of the scene without entries in the computed history from one that does not exist", async () => {
+    await pasteScene();
+    await filter().fill("b3"); // the refused disc: in the scene, never in the history
+    await poll(note).toBe('"b3" takes part in no entry of the computed history (up to t = 1 s).');
+    await filter().fill("a");
+    await poll(note).toBe("");
+    await filter().fill("");
   });
 });

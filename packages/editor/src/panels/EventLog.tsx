@@ -13,7 +13,8 @@
  * the focus between entries.
  * Only the rows in view are rendered (useRowWindow); the view follows the current time (useFollowTime).
  * "Skip the Event log table" (SkipTable, shown when focused) passes its entries in one Tab press.
- * The scene's refused action, if any, is listed over the entries (RefusedActionRow).
+ * A filter that keeps no entry says why (LogFilter: no such id, or no entry in the computed
+ * history); the scene's refused action, if any, is listed over the entries (RefusedActionRow).
  */
 import { useEffect, useId, useRef, useState } from "react";
 import { actionWords } from "../doc/actionRefs";
@@ -24,6 +25,7 @@ import { refKey, refOf } from "../remote/eventDetail";
 import type { EventPage, PageEvent } from "../remote/protocol";
 import type { Selection } from "../store/uiStore";
 import { formatNumber } from "./EditableCell";
+import { LogFilter } from "./LogFilter";
 import { RefusedActionRow } from "./RefusedActionRow";
 import { RemoveActionButton } from "./RemoveActionButton";
 import { focusAfterRemoval } from "./removeFocus";
@@ -205,16 +207,7 @@ export function EventLog() {
       <h2 id="log-title">
         Event log <small>({logCount(page?.total ?? 0, events.length, body)})</small>
       </h2>
-      <div className="row">
-        <input
-          aria-label="Filter by body"
-          placeholder="id, or ids: a, b"
-          title="Shows only the entries of one body, line or point; with ids separated by commas, the entries they all take part in (a pair's collisions)"
-          size={14}
-          value={filter}
-          onChange={(e) => editor.ui.setState({ eventFilter: e.target.value })}
-        />
-      </div>
+      <LogFilter filter={filter} shown={events.length} total={page?.total ?? null} />
       <RefusedActionRow notice={armed.notice} />
       <div className="visually-hidden" role="status" aria-live="polite">
         {armed.text}
