@@ -83,6 +83,26 @@ export function namedRefusal(message: string, path: string | null, actions: read
   return `${name} (${path}): ${reason}`;
 }
 
+/** The `actions` of scene text as plain data, as far as it is JSON holding them (else none). */
+function actionsOfText(source: string): readonly unknown[] {
+  try {
+    const actions = (JSON.parse(source) as { actions?: unknown } | null)?.actions;
+    return Array.isArray(actions) ? actions : [];
+  } catch {
+    return [];
+  }
+}
+
+/**
+ * The engine's refusal `e` of scene text `source` (parseScene's SceneError, whose `actions[i]` is
+ * the text's own index) as namedRefusal says it, the action read from the text.
+ */
+export function namedTextRefusal(e: unknown, source: string): string {
+  const path = (e as { path?: unknown } | null)?.path;
+  const text = e instanceof Error ? e.message : String(e);
+  return namedRefusal(text, typeof path === "string" ? path : null, actionsOfText(source));
+}
+
 /** `text` with its first letter upper-case (a name that starts a message). */
 export const capitalized = (text: string): string => text.charAt(0).toUpperCase() + text.slice(1);
 

@@ -7,7 +7,7 @@
  * which file of a drop to open, or why none.
  */
 import type { Editor } from "../editor";
-import { namedRefusal } from "./actionRefs";
+import { namedTextRefusal } from "./actionRefs";
 import { parseSceneText } from "./sceneIo";
 
 /**
@@ -27,9 +27,7 @@ export async function openSceneText(
     err = await editor.loadScene(parseSceneText(source), { name });
   } catch (e) {
     // the engine's `actions[i]` of the text given, named as the author knows the action
-    const path = (e as { path?: unknown } | null)?.path;
-    const text = e instanceof Error ? e.message : String(e);
-    err = namedRefusal(text, typeof path === "string" ? path : null, actionsOfText(source));
+    err = namedTextRefusal(e, source);
   }
   if (err !== null) {
     const text = origin + err + after;
@@ -37,16 +35,6 @@ export async function openSceneText(
     return text;
   }
   return null;
-}
-
-/** The `actions` of scene text as plain data, as far as it is JSON holding them (else none). */
-function actionsOfText(source: string): readonly unknown[] {
-  try {
-    const actions = (JSON.parse(source) as { actions?: unknown } | null)?.actions;
-    return Array.isArray(actions) ? actions : [];
-  } catch {
-    return [];
-  }
 }
 
 /** What a refused file's message ends with. */

@@ -3,6 +3,7 @@
  * decode. (The autosave is in autosaveSlots.ts.)
  */
 import type { SceneFile } from "../engineTypes";
+import { namedTextRefusal } from "./actionRefs";
 import { parseSceneText, sceneText } from "./sceneIo";
 
 /**
@@ -18,7 +19,10 @@ export function encodeSceneForUrl(scene: SceneFile): string {
   return btoa(bin).replace(/\+/g, "-").replace(/\//g, "_").replace(/=+$/, "");
 }
 
-/** The scene in a link's code; throws a plain message when the code is damaged or cut short. */
+/**
+ * The scene in a link's code; throws a plain message when the code is damaged or cut short, or the
+ * engine's refusal of the scene (an action named by what it does: doc/actionRefs.ts).
+ */
 export function decodeSceneFromUrl(code: string): SceneFile {
   let text: string;
   try {
@@ -29,7 +33,11 @@ export function decodeSceneFromUrl(code: string): SceneFile {
   } catch {
     throw new Error("the scene code after #scene= is damaged or cut short (copy the whole link)");
   }
-  return parseSceneText(text);
+  try {
+    return parseSceneText(text);
+  } catch (e) {
+    throw new Error(namedTextRefusal(e, text)); // an action named as the author knows it
+  }
 }
 
 /** The scene in a location hash like `#scene=...`, or null when there is none. */
