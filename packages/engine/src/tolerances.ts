@@ -126,8 +126,10 @@ export const MAGNITUDE_MAX = 1e30;
  * go back in; but the contact polynomials still multiply up to four such quantities: at about
  * 1e154 the squared speed overflows to Infinity and the pair test finds no root (a disc restored
  * at vx = 1e200 flew through the disc in its path without a word: session 30). At 1e70 the
- * products stay within about 1e+-280 with radii down to RADIUS_MIN, and every motion a World
- * reaches in the documented range lies far inside it. (MASS_MIN's reason takes the same bound.)
+ * products stay within about 1e+-280 with radii down to RADIUS_MIN. Every speed a World reaches
+ * in the documented range lies far inside it (2e60 at most under gravity, TIME_MAX), but not every
+ * position: the largest motion ends near 2e90 (TIME_MAX's reason), so its `motion(id)` is refused
+ * by `addBodyMotion` there (a known limit, session 31). (MASS_MIN's reason takes the same bound.)
  */
 export const MOTION_MAGNITUDE_MAX = 1e70;
 /** Smallest radius the World accepts (see MAGNITUDE_MAX: below it the contact polynomials underflow). */
@@ -148,14 +150,29 @@ export const SPEED_MIN = 1e-30;
 export const FIELD_MIN = 1e-30;
 
 /**
- * Largest magnitude of a time given to the engine: an action's time in a scene or a Timeline, and
- * the World's `time` option. A time enters the state as v·t and a·t²/2 (a body given a velocity at
- * t = 1e300 was at x = 1e300 a moment later, beyond MAGNITUDE_MAX: audit of session 19); at
- * MAGNITUDE_MAX, like a length, those products stay far inside the double range. Only given times
- * are bounded: the simulation itself may run past it (`advance`, `prolong`, an action's
- * `until.time`, which are limits of the computation), and what it reaches there (a keyframe, a
- * motion's t0) is restored as it is. Far below this bound a time is already coarse: ulp(1e9) is
- * 1.2e-7 (README: precision of absolute times).
+ * Largest magnitude of a time given to the engine: an action's time in a scene or a Timeline, the
+ * World's `time` option, and every time a computation is asked to reach or a World is read at:
+ * `advance({ untilTime })`, `body(id, t)` and the other reads of a World, `prolongTo(t)`, the horizon
+ * plus a prolong's `until.time`, an action's time plus its `until.time`, the command line's times
+ * (sim/timeLimit.ts). A time enters the state as v·t and a·t²/2 (a body given a velocity at
+ * t = 1e300 was at x = 1e300 a moment later, beyond MAGNITUDE_MAX: audit of session 19). Within
+ * |t| ≤ TIME_MAX every motion an edit allows stays finite: the largest, from (-1e30, 1e30) at speed
+ * 1e30 under gravity and friction fields of 1e30 over the whole span -1e30 to 1e30, ends near 2e90
+ * with a speed of 2e60 (sim/timeLimit.test.ts); a friction motion stops by then. Past it the doubles
+ * give out: gravity 1e30 puts a body at y = -Infinity from about t = 1e139, and
+ * `advance({ untilTime: 1e200 })` did so without a word, after which the World placed bodies and
+ * took edits against a body at -Infinity (session 31); and one rounding of the time, ulp(1e30) = 1.4e14,
+ * is already larger than most discs, so no contact can be placed there anyway. Decision: a time
+ * limit or read time past TIME_MAX (and past where the clock already is) is refused before
+ * anything is computed, naming the field, the value and the time it would reach; leaving the
+ * limit out (`untilTime: Infinity`, the documented default, stays allowed) and bounding a run by
+ * events (`maxEvents`, `until.events`) lets the clock pass TIME_MAX, at the events' own times,
+ * where the states are those the events computed. Rejected: letting the clock pass and refusing
+ * only the reads whose value is not finite, since the World's own edits and predictions then
+ * still work from the non-finite state; and stopping at TIME_MAX, a silent cap. Checked once per
+ * call, never per event. What a computation reached past it (a keyframe, a motion's t0) is
+ * restored as it is. Far below this bound a time is already coarse: ulp(1e9) is 1.2e-7 (README:
+ * precision of absolute times).
  */
 export const TIME_MAX = MAGNITUDE_MAX;
 

@@ -6,6 +6,7 @@
  * ACTION_FIELDS gives the canonical key order used by serializeScene; ACTION_TYPES (frozen) the
  * type names in that order.
  */
+import { beyondTimeMax, timeLimitReason } from "../sim/timeLimit.js";
 import { SceneError } from "./errors.js";
 import {
   count,
@@ -104,6 +105,22 @@ export function checkAction(raw: unknown, path = "action"): Action {
     lineDirection(join(path, "p2"), p1 as Vec2, p2 as Vec2, "p1");
   }
   if (raw.until !== undefined) out.until = checkUntil(raw.until, join(path, "until"));
+  untilReach(out as unknown as Action, path);
   checkActionMagnitudes(out as unknown as Action, path);
   return out as unknown as Action;
 }
+
+/** An action's until.time reaching past TIME_MAX from its time: SceneError naming it (sim/timeLimit.ts). */
+function untilReach(a: Action, path: string): void {
+  const time = a.until?.time;
+  if (time === undefined) return;
+  const reached = a.time + time;
+  if (beyondTimeMax(reached, a.time))
+    throw new SceneError(
+      join(path, "until.time"),
+      timeLimitReason(time, reached, `the action's time ${a.time}`, UNTIL_NO_LIMIT),
+    );
+}
+
+/** What an action's until.time beyond TIME_MAX's refusal suggests. */
+const UNTIL_NO_LIMIT = "for no time limit leave it out, and compute past TIME_MAX by events (until.events)";

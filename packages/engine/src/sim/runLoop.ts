@@ -9,10 +9,15 @@
 import { Edits } from "./edits.js";
 import { ChapgameError } from "./errors.js";
 import { refused } from "./refusalText.js";
+import { requireWorldLimit } from "./timeLimit.js";
 import type { AdvanceLimits, AdvanceResult, WorldEvent } from "./types.js";
 import { requireFields } from "./validate.js";
 
 const INF = Number.POSITIVE_INFINITY;
+
+/** What an untilTime beyond TIME_MAX's refusal suggests (timeLimit.ts). */
+const UNTIL_TIME_NO_LIMIT =
+  "for no time limit leave it out (or pass Infinity), and bound a run past TIME_MAX by events (maxEvents)";
 
 export abstract class RunLoop extends Edits {
   /** advance is running (its callback may edit the World, not advance it again). */
@@ -28,7 +33,8 @@ export abstract class RunLoop extends Edits {
    * advance started when it processed none). `untilTime` is an ABSOLUTE time on this World's
    * clock (events exactly at it are processed, then `time` becomes untilTime), unlike
    * `Timeline.prolong({ time })`, which counts from the horizon (`Timeline.prolongTo(t)` is
-   * absolute). Bad limits throw ChapgameError (`untilTime` NaN or before `time`; `maxEvents` not a
+   * absolute). Bad limits throw ChapgameError (`untilTime` NaN, before `time`, or finite and past
+   * both TIME_MAX and `time` (sim/timeLimit.ts): the clock passes TIME_MAX only by events; `maxEvents` not a
    * whole number >= 0 or Infinity; `onEvent` not a function) before anything changes. An event the
    * exact model cannot process throws SimulationError: the events before it stay processed, the
    * World's time is the failing event's (`error.time`) and advancing again throws the same.
@@ -46,6 +52,7 @@ export abstract class RunLoop extends Edits {
       throw refused("untilTime", `must be a number (a time >= the current time ${this.now})`, untilTime);
     if (untilTime < this.now)
       throw refused("untilTime", `must be >= the current time ${this.now}`, untilTime);
+    requireWorldLimit("untilTime", untilTime, this.now, UNTIL_TIME_NO_LIMIT);
     if (
       typeof maxEvents !== "number" ||
       !(maxEvents >= 0) ||

@@ -214,7 +214,7 @@ export interface WorldOptions {
   gravity?: Vec2 | undefined;
   /**
    * Starting time of the World's clock (default 0; at most TIME_MAX, 1e30, in size: the world may
-   * then advance past it). It may be negative: the clock is a coordinate, and a scene started at
+   * then advance past it by events, not by an untilTime). It may be negative: the clock is a coordinate, and a scene started at
    * t0 runs as the one started at 0, shifted by t0 (a Timeline's clock starts at 0). Times are doubles: keep
    * them near 0 (seconds since the level started, not since 1970), since an event at time T is only
    * located to within ulp(T).
@@ -233,8 +233,9 @@ export interface AdvanceLimits {
   /**
    * An ABSOLUTE time on the World's clock (like `World.time`), not a duration: every event at or
    * before it is processed (events exactly at it included), then the World's time becomes
-   * untilTime. Default +Infinity. Must be a number >= the World's current time (ChapgameError
-   * naming `untilTime`); to advance by dt, pass `world.time + dt`. (Timeline.prolong's `time`, by
+   * untilTime. Default +Infinity. Must be a number >= the World's current time, and at most
+   * TIME_MAX (1e30) unless it is Infinity or that time (ChapgameError naming `untilTime`; past
+   * TIME_MAX, bound a run by maxEvents); to advance by dt, pass `world.time + dt`. (Timeline.prolong's `time`, by
    * contrast, counts from the horizon; Timeline.prolongTo takes an absolute time.)
    */
   untilTime?: number | undefined;

@@ -13,10 +13,14 @@ import { ChapgameError, SimulationError } from "./errors.js";
 import { refused } from "./refusalText.js";
 import { RunLoop } from "./runLoop.js";
 import { keepAsShapeWitness, WITNESS_OPTIONS } from "./shapeWitness.js";
+import { requireWorldLimit } from "./timeLimit.js";
 import type { BodyMotion, BodyState, Vec2, WorldOptions } from "./types.js";
 import { requireFinite } from "./validate.js";
 import { checkWorldOptions } from "./worldOptions.js";
 import type { ZenoCounters } from "./zenoWatch.js";
+
+/** What a read's t beyond TIME_MAX's refusal suggests (timeLimit.ts). */
+const READ_NO_LIMIT = "read at the World's time, or advance it by events (maxEvents) past TIME_MAX first";
 
 /**
  * The exact simulation at one moving instant: discs, lines, rays, segments and points, a friction
@@ -52,7 +56,7 @@ export class World extends RunLoop {
 
   /**
    * @internal A World at a time its own computation reached (a Timeline keyframe), which may lie
-   * beyond TIME_MAX: that bound is for given times only.
+   * beyond TIME_MAX: events may take the clock there (a given time or limit may not).
    */
   static restoredAt(time: number, g: number, gravity: Vec2): World {
     const w = new World({ g, gravity });
@@ -129,7 +133,8 @@ export class World extends RunLoop {
   /**
    * Throws ChapgameError naming `t` when an event (collision or stop, of any body) not yet
    * processed lies before t: the current motions hold only up to the next event, and a state beyond
-   * it would be one the bodies never reach (discs passing through each other). Free for t <= now;
+   * it would be one the bodies never reach (discs passing through each other), and when t is past
+   * both TIME_MAX and now (sim/timeLimit.ts: the state can leave the doubles there). Free for t <= now;
    * otherwise the next event's time comes from `nextEventTime` (which changes nothing, not even the
    * grid an edit sees) and is kept until a change could move it, so a loop of queries pays once.
    */
@@ -138,6 +143,7 @@ export class World extends RunLoop {
     // session 26), and an empty World gave bodies(NaN) = [] and bodyArrays(NaN).time = NaN
     if (typeof t !== "number" || !Number.isFinite(t)) throw refused("t", "must be a finite time", t);
     if (!(t > this.now)) return;
+    requireWorldLimit("t", t, this.now, READ_NO_LIMIT);
     if (this.nextEventChanges !== this.changes) {
       this.nextEventBlocked = "";
       try {

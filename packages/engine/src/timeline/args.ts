@@ -11,6 +11,7 @@ import { SceneError } from "../scene/errors.js";
 import { count, isObject, nonNegative, onlyKeys, refuse } from "../scene/fields.js";
 import type { Until } from "../scene/types.js";
 import { given } from "../sim/refusalText.js";
+import { beyondTimeMax, timeLimitReason } from "../sim/timeLimit.js";
 
 /** Validates apply's options: keepHorizon (default true) and checkLater (default true; false only
  *  with keepHorizon false). SceneError naming `options.<field>`. */
@@ -37,6 +38,26 @@ export function checkUntil(raw: unknown, path: string): Until {
   if (raw.time !== undefined) u.time = nonNegative(raw, "time", path);
   if (raw.events !== undefined) u.events = count(raw, "events", path);
   return u;
+}
+
+/** What a prolong's refusal of a time beyond TIME_MAX suggests (sim/timeLimit.ts). */
+const PROLONG_NO_LIMIT = "for no time limit leave it out, and prolong past TIME_MAX by events (until.events)";
+
+/** A prolong's until whose time, counted from `horizon`, reaches past TIME_MAX: SceneError naming
+ *  `path`.time, with the time reached (sim/timeLimit.ts). */
+export function checkUntilReach(u: Until, horizon: number, path: string): void {
+  if (u.time === undefined) return;
+  const reached = horizon + u.time;
+  if (beyondTimeMax(reached, horizon))
+    throw new SceneError(
+      `${path}.time`,
+      timeLimitReason(u.time, reached, `the horizon ${horizon}`, PROLONG_NO_LIMIT),
+    );
+}
+
+/** prolongTo's t past TIME_MAX and the horizon: SceneError naming `t` (sim/timeLimit.ts). */
+export function checkProlongTo(t: number, horizon: number): void {
+  if (beyondTimeMax(t, horizon)) throw new SceneError("t", timeLimitReason(t, t, "", PROLONG_NO_LIMIT));
 }
 
 /** prolongSlice's budget: a whole number >= 1, or Infinity (no budget). */

@@ -21,7 +21,14 @@ import { applyOrder, parseScene } from "../scene/parse.js";
 import type { Action, SceneFile, Until } from "../scene/types.js";
 import { SimulationError } from "../sim/errors.js";
 import { copyAction, freezeAction, sameUntil } from "./actionData.js";
-import { checkActionList, checkApplyOptions, checkBudget, checkUntil } from "./args.js";
+import {
+  checkActionList,
+  checkApplyOptions,
+  checkBudget,
+  checkProlongTo,
+  checkUntil,
+  checkUntilReach,
+} from "./args.js";
 import { TimelineCore } from "./core.js";
 import { actionsOnCore, applyToCore } from "./edits.js";
 import { forgetBefore, forgetTime } from "./forget.js";
@@ -210,10 +217,12 @@ export class Timeline extends TimelineObservers {
    *  collisions and stops, whichever comes first; neither = until nothing is left to happen (a scene
    *  that never comes to rest then runs for ever). For an absolute time use `prolongTo(t)`, as
    *  `World.advance({ untilTime })` is. A bad `until` throws SceneError (`until.time`,
-   *  `until.events`). A Zeno state on the way throws SimulationError; what was computed up to it
+   *  `until.events`), as does a time that takes the horizon past TIME_MAX (sim/timeLimit.ts: go past it
+   *  by events). A Zeno state on the way throws SimulationError; what was computed up to it
    *  is kept and the subscribers are told. */
   prolong(until: Until): ProlongResult {
     const u = checkUntil(until, "until");
+    checkUntilReach(u, this.core.horizon, "until");
     const res = this.compute(INF, goalFrom(this.core, u, this.core.horizon));
     return { events: res.events, reason: res.reason ?? "events" };
   }
@@ -221,9 +230,10 @@ export class Timeline extends TimelineObservers {
   /** Compute up to the ABSOLUTE time t (the clock of the actions' times and of stateAt), if the
    *  horizon is before it; otherwise nothing is computed (`events: 0`). Unlike `prolong({ time })`,
    *  which counts from the horizon; like `World.advance({ untilTime })`. t must be a finite number
-   *  >= 0 (SceneError naming `t`). A Zeno state throws SimulationError, as for prolong. */
+   *  >= 0, and at most TIME_MAX when past the horizon (SceneError naming `t`; sim/timeLimit.ts). A Zeno state throws SimulationError, as for prolong. */
   prolongTo(t: number): ProlongResult {
     nonNegative({ t }, "t", "");
+    checkProlongTo(t, this.core.horizon);
     const res = this.compute(INF, { tLimit: t, eLimit: INF });
     return { events: res.events, reason: res.reason ?? "events" };
   }
@@ -237,10 +247,9 @@ export class Timeline extends TimelineObservers {
   ): { done: boolean; events: number; horizon: number; reason?: ProlongResult["reason"] } {
     const u = checkUntil(until, "until");
     checkBudget(budget);
-    const goal =
-      this.slice && sameUntil(this.slice.until, u)
-        ? this.slice.goal
-        : goalFrom(this.core, u, this.core.horizon);
+    const pending = this.slice && sameUntil(this.slice.until, u);
+    if (!pending) checkUntilReach(u, this.core.horizon, "until");
+    const goal = this.slice && pending ? this.slice.goal : goalFrom(this.core, u, this.core.horizon);
     const res = this.compute(budget, goal);
     const done = res.reason !== null;
     if (!done) this.slice = { until: u, goal };
