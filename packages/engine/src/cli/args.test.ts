@@ -164,6 +164,20 @@ describe("parseArgs", () => {
     [["state", "a", "--at", "Infinity"], /^--at: must be a finite number \(got "Infinity"\)$/],
     [["path", "a", "--id", "b", "--to", "1e999"], /^--to: must be a finite number \(got "1e999"\)$/],
     [["state", "a", "--at=1e400"], '--at: must be a finite number (got "1e400")'],
+    // a time past TIME_MAX (1e30): under gravity 1e30 the bodies came out at y = -Infinity
+    [
+      ["simulate", "a", "--until-time", "1e200"],
+      /^--until-time: must be at most 1e\+30 \(TIME_MAX\) \(got "1e200"\): past it .*; for no limit, leave it out, and bound a longer run with --max-events$/,
+    ],
+    [
+      ["state", "a", "--at", "2e30"],
+      /^--at: must be at most 1e\+30 \(TIME_MAX\) \(got "2e30"\): past it [^;]*$/,
+    ],
+    [["path", "a", "--id", "b", "--to", "1e31"], /^--to: must be at most 1e\+30 \(TIME_MAX\) \(got "1e31"\)/],
+    [
+      ["path", "a", "--id", "b", "--from", "1e31", "--to", "1e31"],
+      /^--from: must be at most 1e\+30 \(TIME_MAX\)/,
+    ],
     // review of session 29: a time below the smallest double read as 0 without a word
     [
       ["state", "a", "--at", "1e-400"],

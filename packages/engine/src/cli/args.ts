@@ -9,8 +9,12 @@
  *   chapgame --version
  * Options take their value as the next argument or after "=". Any other argument that starts with
  * "-" (except "-" itself, standard input) is an unknown option, never a file name, unless it comes
- * after "--" (the end of options). Invalid arguments throw UsageError with a one-line message.
+ * after "--" (the end of options). Invalid arguments throw UsageError with a one-line message; a
+ * time past TIME_MAX is one (sim/timeLimit.ts).
  */
+
+import { BEYOND_TIME_MAX_WHY } from "../sim/timeLimit.js";
+import { TIME_MAX } from "../tolerances.js";
 
 export class UsageError extends Error {
   /** The arguments do not fit the scene file's contents (a `path --id` no body of it has): the
@@ -88,7 +92,8 @@ export const USAGE = `Usage:
   chapgame --version
 
 SCENE is a scene file (format "chapgame", version 1), or - for standard input; after --, a name
-that starts with "-" is a file name.
+that starts with "-" is a file name. A time T is a decimal number from 0 to 1e30 (TIME_MAX, the
+bound of every time given to the engine: past it positions under gravity leave the doubles).
 Interrupting a run (Ctrl-C: SIGINT, or SIGTERM) while it computes prints the result up to
 where it got, with "time" there and "reason": "interrupted" (state too; path: "to" there), and
 exits with status 130 (SIGINT) or 143 (SIGTERM); an interrupted check prints nothing on standard
@@ -137,6 +142,11 @@ function time(name: string, v: string, hint = ""): number {
   if (!DECIMAL_TIME.test(v.trim()) || t < 0)
     throw new UsageError(`${name}: must be a non-negative number (got ${typed(v)})`);
   if (!Number.isFinite(t)) throw new UsageError(`${name}: must be a finite number (got ${typed(v)})${hint}`);
+  if (t > TIME_MAX)
+    // review of session 31: under gravity 1e30, --until-time 1e200 printed y = -Infinity (sim/timeLimit.ts)
+    throw new UsageError(
+      `${name}: must be at most ${TIME_MAX} (TIME_MAX) (got ${typed(v)}): ${BEYOND_TIME_MAX_WHY}${hint === "" ? "" : `;${hint.slice(1)}, and bound a longer run with --max-events`}`,
+    );
   if (t === 0 && /[1-9]/.test(v.trim().split(/e/i)[0] as string))
     // 1e-400 reads as 0 to Number(), as to JSON.parse: the user asked for a time after 0, not 0
     // (review of session 29: `--at 1e-400` printed the state at 0 without a word)

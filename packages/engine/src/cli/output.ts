@@ -7,7 +7,8 @@
  * characters: a 1.7M-event log) nor one array of objects. With `compact`, the same object without
  * indentation, the log one event per line (about half the size, and a reader can take it line by
  * line). Infinite numbers are written "Infinity"
- * as in scene files, and "-Infinity" likewise (a position overflows to it after a long fall).
+ * as in scene files, and "-Infinity" and NaN likewise, should one come (a position overflowed to
+ * -Infinity after a long fall before times past TIME_MAX were refused: sim/timeLimit.ts).
  * writePath(result, write, compact): the `path` command's JSON, the same way (see there).
  */
 

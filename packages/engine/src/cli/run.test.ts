@@ -69,12 +69,15 @@ describe("runCli in-process", () => {
     expect(ball).toMatchObject({ x: 9, y: 0, vx: -9, vy: 0 });
   });
 
-  it('writes a position that overflowed to -Infinity as "-Infinity", not null', () => {
+  it("refuses a time past TIME_MAX, where a fall overflowed to y = -Infinity, before reading the file (exit 2)", () => {
+    // it printed "y": "-Infinity" at --at 1e160 (review of session 31: times past TIME_MAX are refused)
     const fall = sceneText([{ time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 }], [0, -10]);
     const { cli, out } = io({ "fall.json": fall });
-    expect(runCli(["state", "fall.json", "--at", "1e160"], cli)).toBe(0);
-    expect(out.stdout).toContain('"y": "-Infinity"');
-    expect(out.stdout).not.toContain("null");
+    expect(runCli(["state", "fall.json", "--at", "1e160"], cli)).toBe(2);
+    expect(out.stdout).toBe("");
+    expect(out.stderr).toMatch(/^chapgame: --at: must be at most 1e\+30 \(TIME_MAX\) \(got "1e160"\)/);
+    expect(runCli(["state", "fall.json", "--at", "1e30"], cli)).toBe(0);
+    expect(out.stdout).toContain('"y": -5e+60');
   });
 
   it("writes control characters of a key in a message as escapes (an ESC reached the terminal raw)", () => {
