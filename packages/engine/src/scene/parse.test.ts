@@ -73,3 +73,20 @@ describe("SceneError", () => {
     expect(e.message).toBe("the file is empty");
   });
 });
+
+describe("parseScene given bytes", () => {
+  it("refuses a file read without an encoding (a Buffer, a Uint8Array, an ArrayBuffer), saying to decode it: it said `0: unknown field`", () => {
+    const text = base([disc("a", 0)]);
+    const bytes = new TextEncoder().encode(text);
+    for (const input of [bytes, bytes.buffer, new DataView(bytes.buffer)]) {
+      const e = refused(input);
+      expect(e.path).toBe("scene");
+      expect(e.reason).toMatch(
+        new RegExp(
+          `^must be the scene's JSON text or its object, not bytes \\(got an? \\w+ of ${bytes.length} bytes\\): decode them as UTF-8 first`,
+        ),
+      );
+    }
+    expect(parseScene(new TextDecoder().decode(bytes)).actions).toHaveLength(1);
+  });
+});

@@ -197,7 +197,7 @@ function explainUnderflow(e: unknown, underflow: Map<string, string>): unknown {
  * simulation: Timeline.fromScene checks those.
  */
 export function parseScene(input: string | unknown): SceneFile {
-  if (typeof input !== "string") return checkScene(input, false);
+  if (typeof input !== "string") return checkScene(refuseBytes(input), false);
   const { raw, underflow } = readText(input);
   try {
     return checkScene(raw, true);
@@ -223,6 +223,17 @@ export function parseSceneFrom(read: () => string): SceneFile {
 /** readText of the text `read()` gives, which lives in this call only. */
 function readFrom(read: () => string): ReturnType<typeof readText> {
   return readText(read());
+}
+
+/** A file read without an encoding (readFileSync(path) gives a Buffer) is bytes, not a scene: its
+ *  keys 0, 1, … were refused as `0: unknown field` (review of session 31). */
+function refuseBytes(input: unknown): unknown {
+  if (!(input instanceof ArrayBuffer || ArrayBuffer.isView(input))) return input;
+  const kind = input.constructor.name;
+  throw new SceneError(
+    "scene",
+    `must be the scene's JSON text or its object, not bytes (got ${/^[AEIOU]/.test(kind) ? "an" : "a"} ${kind} of ${input.byteLength} bytes): decode them as UTF-8 first (readFileSync(path, "utf8"), or new TextDecoder().decode(bytes))`,
+  );
 }
 
 /** The parsed scene value checked and normalized (parseScene's checks after the JSON text's).
