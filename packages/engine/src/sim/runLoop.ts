@@ -45,6 +45,24 @@ export abstract class RunLoop extends Edits {
    * it; the callback's edits before the throw kept), as maxEvents would leave it.
    */
   advance(limits: AdvanceLimits = {}, onEvent?: (e: WorldEvent) => void): AdvanceResult {
+    return this.advanceWithin(limits, onEvent, true);
+  }
+
+  /**
+   * @internal `advance` for a Timeline, whose limits are its own checked inputs or times its
+   * computation already reached, which events may have taken past TIME_MAX (the old horizon an
+   * edit in the past recomputes to): TIME_MAX is not asked of them (sim/timeLimit.ts).
+   */
+  advanceReached(limits: AdvanceLimits, onEvent?: (e: WorldEvent) => void): AdvanceResult {
+    return this.advanceWithin(limits, onEvent, false);
+  }
+
+  /** advance, with the untilTime held to TIME_MAX when `bounded`. */
+  private advanceWithin(
+    limits: AdvanceLimits,
+    onEvent: ((e: WorldEvent) => void) | undefined,
+    bounded: boolean,
+  ): AdvanceResult {
     requireFields("limits", limits, ["untilTime", "maxEvents"]);
     const untilTime = limits.untilTime ?? INF;
     const maxEvents = limits.maxEvents ?? INF;
@@ -52,7 +70,7 @@ export abstract class RunLoop extends Edits {
       throw refused("untilTime", `must be a number (a time >= the current time ${this.now})`, untilTime);
     if (untilTime < this.now)
       throw refused("untilTime", `must be >= the current time ${this.now}`, untilTime);
-    requireWorldLimit("untilTime", untilTime, this.now, UNTIL_TIME_NO_LIMIT);
+    if (bounded) requireWorldLimit("untilTime", untilTime, this.now, UNTIL_TIME_NO_LIMIT);
     if (
       typeof maxEvents !== "number" ||
       !(maxEvents >= 0) ||

@@ -291,12 +291,12 @@ export class TimelineCore {
     }
   }
 
-  /** world.advance, without the call when it cannot do anything: no body, and no time to pass (the
+  /** world.advance (advanceReached: a horizon events took past TIME_MAX is recomputed to), without the call when it cannot do anything: no body, and no time to pass (the
    *  World would rebuild its grid around its obstacles, once per action of a scene built one
    *  obstacle per apply; nothing moves, nothing is logged, and the grid decides no result). */
   advanceWorld(limits: AdvanceLimits): AdvanceResult {
     const w = this.world;
     if (w.bodyCount === 0 && limits.untilTime === w.time) return { events: 0, reason: "idle" };
-    return w.advance(limits, this.onEvent);
+    return w.advanceReached(limits, this.onEvent);
   }
 }

@@ -7,6 +7,7 @@
 import { describe, expect, it } from "vitest";
 import { SceneError } from "../scene/errors.js";
 import { parseScene } from "../scene/parse.js";
+import type { Action } from "../scene/types.js";
 import { TIME_MAX } from "../tolerances.js";
 import { Timeline } from "./timeline.js";
 
@@ -77,5 +78,29 @@ describe("a Timeline computes to at most TIME_MAX", () => {
     expect(tl.horizon).toBeGreaterThan(TIME_MAX);
     expect(tl.stateAt(tl.horizon).bodies[0]?.vx).toBe(-1e-30);
     expect(tl.prolongTo(tl.horizon).events).toBe(0);
+  });
+  it("recomputes a history that events took past TIME_MAX after an edit in its past (apply, setActions), as a fresh timeline computes it", () => {
+    // the recomputation asks the World for the old horizon, past TIME_MAX: it must not be refused
+    const start: Action[] = [
+      { time: 0, type: "addLine", id: "wall", p1: [1e30, 0], p2: [1e30, 1], kind: "line" },
+      { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1e29, m: 1, v: [1e-30, 0] },
+      { time: 0, type: "addBody", id: "b", x: 0, y: 5e29, r: 1e29, m: 1, v: [1e-30, 0] },
+    ];
+    const edit: Action = { time: 5, type: "giveVelocity", id: "b", v: [2e-30, 0] };
+    const tl = new Timeline({ g: 0 });
+    tl.setActions(start);
+    tl.prolong({ events: 2 });
+    const horizon = tl.horizon;
+    expect(horizon).toBeGreaterThan(TIME_MAX);
+    tl.apply(edit);
+    expect(tl.horizon).toBe(horizon);
+    const fresh = new Timeline({ g: 0 });
+    fresh.setActions([...start, edit]);
+    fresh.prolong({ events: 2 });
+    expect(fresh.horizon).toBe(horizon);
+    expect(tl.stateAt(horizon)).toEqual(fresh.stateAt(horizon));
+    expect(tl.stateAt(horizon).bodies.map((b) => b.vx)).toEqual([-1e-30, -2e-30]);
+    tl.setActions(start);
+    expect(tl.horizon).toBe(horizon);
   });
 });
