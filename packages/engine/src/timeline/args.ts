@@ -12,6 +12,7 @@ import { count, isObject, nonNegative, onlyKeys, refuse } from "../scene/fields.
 import type { Until } from "../scene/types.js";
 import { given } from "../sim/refusalText.js";
 import { beyondTimeMax, timeLimitReason } from "../sim/timeLimit.js";
+import { TIME_MAX } from "../tolerances.js";
 
 /** Validates apply's options: keepHorizon (default true) and checkLater (default true; false only
  *  with keepHorizon false). SceneError naming `options.<field>`. */
@@ -99,9 +100,10 @@ export function stateTime(
 ): number {
   if (typeof t !== "number" || !(t >= start && t <= horizon)) {
     // Beyond the horizon is not computed yet, even when nothing more will happen (prolong said idle).
+    // past TIME_MAX prolongTo(t) is refused (sim/timeLimit.ts): do not send the user there
     const hint =
       typeof t === "number" && t > horizon && t < Number.POSITIVE_INFINITY
-        ? `: the history is computed up to ${horizon}, call prolongTo(${t}) first`
+        ? `: the history is computed up to ${horizon}, ${t > TIME_MAX ? `and past ${TIME_MAX} (TIME_MAX) only events take a history (prolong({ events }))` : `call prolongTo(${t}) first`}`
         : typeof t === "number" && t >= 0 && t < start && before !== ""
           ? `: ${before}`
           : "";

@@ -103,4 +103,25 @@ describe("a Timeline computes to at most TIME_MAX", () => {
     tl.setActions(start);
     expect(tl.horizon).toBe(horizon);
   });
+  it("a read past TIME_MAX does not tell the user to call prolongTo there (which is refused), but how such a time is reached", () => {
+    const tl = falling();
+    const reads = [() => tl.stateAt(1e300), () => tl.bodyArraysAt(1e300), () => tl.path("a", 0, 1e300)];
+    for (const read of reads) {
+      let message = "";
+      try {
+        read();
+      } catch (e) {
+        expect(e).toBeInstanceOf(RangeError);
+        message = (e as Error).message;
+      }
+      expect(message).toMatch(
+        /must be a number in \[0, 0\] \(got 1e\+300\): the history is computed up to 0/,
+      );
+      expect(message).not.toMatch(/prolongTo\(1e\+300\)/);
+      expect(message).toMatch(
+        /past 1e\+30 \(TIME_MAX\) only events take a history \(prolong\(\{ events \}\)\)$/,
+      );
+    }
+    expect(() => tl.stateAt(5)).toThrow(/call prolongTo\(5\) first$/);
+  });
 });
