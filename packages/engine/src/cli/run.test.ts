@@ -38,6 +38,10 @@ describe("runCli in-process", () => {
     expect(failing(coded("EACCES"))).toBe("chapgame: cannot read s.json: permission denied (EACCES)\n");
     // a code without words of its own keeps the system's message (its first line)
     expect(failing(coded("EIO"))).toBe("chapgame: cannot read s.json: EIO: node's text\n");
+    // a 600 MB file said only "Cannot create a string longer than 0x1fffffe8 characters" (review of session 31)
+    expect(failing(coded("ERR_STRING_TOO_LONG"))).toBe(
+      "chapgame: cannot read s.json: it holds more text than a JavaScript string can (0x1fffffe8, about 537 million characters), so no scene that large can be read (ERR_STRING_TOO_LONG)\n",
+    );
     expect(failing(new Error("not UTF-8 text: byte 0xE9\nmore"))).toBe(
       "chapgame: cannot read s.json: not UTF-8 text: byte 0xE9\n",
     );

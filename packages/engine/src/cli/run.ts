@@ -151,6 +151,9 @@ const READ_ERRORS: Readonly<Record<string, string>> = {
   EACCES: "permission denied",
   EPERM: "permission denied",
   ENOTDIR: "a part of the path is not a folder",
+  // Node's "Cannot create a string longer than 0x1fffffe8 characters" did not say it was the file's size
+  ERR_STRING_TOO_LONG:
+    "it holds more text than a JavaScript string can (0x1fffffe8, about 537 million characters), so no scene that large can be read",
 };
 
 /** The scene file's text (a UsageError when it cannot be read); a long one is announced. */

@@ -61,7 +61,9 @@ export function decodeUtf8(bytes: Uint8Array): string {
   // where; the byte loop runs only then (it took 0.4 s on a 150 MB scene that was valid).
   try {
     return new TextDecoder("utf-8", { ignoreBOM: true, fatal: true }).decode(bytes);
-  } catch {
+  } catch (e) {
+    // more text than a string holds (ERR_STRING_TOO_LONG): no second pass can read it either
+    if ((e as { code?: unknown }).code === "ERR_STRING_TOO_LONG") throw e;
     // not UTF-8: find where below
   }
   const decoder = new TextDecoder("utf-8", { ignoreBOM: true });
