@@ -99,6 +99,8 @@ where it got, with "time" there and "reason": "interrupted" (state too; path: "t
 exits with status 130 (SIGINT) or 143 (SIGTERM); an interrupted check prints nothing on standard
 output (it did not finish), only a line on stderr. In a pipeline Ctrl-C reaches the reader as
 well: to keep the result, send the signal to chapgame alone (kill -INT PID) or write to a file.
+A signal while the result is being written (after the computation) ends chapgame at once, with
+the same status and no message: the output is then cut short, not valid JSON.
 The result of simulate and state: "time", "reason" (simulate, and a state that stopped early),
 "events" (collisions and stops), "counts" (bodyBody, bodyLine, bodyPoint, stop), "bodies" (id, x,
 y, vx, vy, r, m, mu at "time", sorted by id) and with --events "log": every entry up to "time"
