@@ -28,6 +28,26 @@ describe("a scene's meta", () => {
     );
   });
 
+  it("names where the limit is passed, and a cycle as a cycle (both said only 'must not be nested deeper than 100 levels')", () => {
+    const scene = {
+      format: "chapgame" as const,
+      version: 1 as const,
+      g: 0,
+      gravity: [0, 0] as [number, number],
+      actions: [],
+    };
+    const cyclic: Record<string, unknown> = { name: "level" };
+    cyclic.self = cyclic;
+    expect(() => serializeScene({ ...scene, meta: { a: cyclic } })).toThrow(
+      /^meta: must not be nested deeper than 100 levels \(got a cycle: meta\.a\.self is meta\.a again, which JSON cannot write\)$/,
+    );
+    expect(() => Timeline.fromScene({ ...scene, meta: cyclic })).toThrow(
+      "(got a cycle: meta.self is meta again",
+    );
+    const deep = `${head}${JSON.stringify({ x: nested(META_MAX_DEPTH) })}}`;
+    expect(() => parseScene(deep)).toThrow(/\(got level 101 at meta\.x(\[0\]){18}….*\[0\]\)$/);
+  });
+
   it("is kept as it is up to the limit, and must be an object", () => {
     const ok = parseScene(`${head}${JSON.stringify({ x: nested(META_MAX_DEPTH - 1) })}}`);
     expect(JSON.stringify(ok.meta)).toBe(JSON.stringify({ x: nested(META_MAX_DEPTH - 1) }));

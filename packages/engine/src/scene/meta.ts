@@ -24,9 +24,9 @@ const DATA = "must be JSON data (null, a boolean, a finite number, a string, an 
 
 export function checkMeta(value: unknown): asserts value is Record<string, unknown> {
   if (!isObject(value)) throw refuse("meta", "must be an object", value);
-  const stack: [unknown, number, string][] = [[value, 1, "meta"]];
+  const stack: [unknown, number, string, Enclosing | null][] = [[value, 1, "meta", null]];
   while (stack.length > 0) {
-    const [v, depth, path] = stack.pop() as [unknown, number, string];
+    const [v, depth, path, up] = stack.pop() as [unknown, number, string, Enclosing | null];
     if (v === null || typeof v === "string" || typeof v === "boolean") continue;
     if (typeof v === "number") {
       if (!Number.isFinite(v))
@@ -42,8 +42,8 @@ export function checkMeta(value: unknown): asserts value is Record<string, unkno
       );
     if (typeof v !== "object")
       throw new SceneError(path, `${DATA}, not ${typeof v}: JSON.stringify drops it`);
-    if (depth > META_MAX_DEPTH)
-      throw new SceneError("meta", `must not be nested deeper than ${META_MAX_DEPTH} levels`);
+    if (depth > META_MAX_DEPTH) throw tooDeep(v, path, up);
+    const here: Enclosing = { value: v, path, up };
     if (Object.getOwnPropertySymbols(v).length > 0)
       throw new SceneError(path, "must not have symbol keys: JSON.stringify drops them");
     if (Array.isArray(v)) {
@@ -53,7 +53,7 @@ export function checkMeta(value: unknown): asserts value is Record<string, unkno
       }
       if (Object.keys(v).length !== v.length)
         throw new SceneError(path, "must be an array without other keys: JSON.stringify drops them");
-      for (let i = v.length - 1; i >= 0; i--) stack.push([v[i], depth + 1, `${path}[${i}]`]);
+      for (let i = v.length - 1; i >= 0; i--) stack.push([v[i], depth + 1, `${path}[${i}]`, here]);
       continue;
     }
     const proto = Object.getPrototypeOf(v);
@@ -65,9 +65,37 @@ export function checkMeta(value: unknown): asserts value is Record<string, unkno
     const keys = Object.keys(v);
     for (let i = keys.length - 1; i >= 0; i--) {
       const k = keys[i] as string;
-      stack.push([(v as Record<string, unknown>)[k], depth + 1, `${path}.${k}`]);
+      stack.push([(v as Record<string, unknown>)[k], depth + 1, `${path}.${k}`, here]);
     }
   }
+}
+
+/** An object or array that holds the value being checked, and the one that holds it. */
+interface Enclosing {
+  value: unknown;
+  path: string;
+  up: Enclosing | null;
+}
+
+/** The refusal of a value nested past META_MAX_DEPTH: a cycle (an object that holds itself, which
+ *  JSON cannot write at all) is named as one, with the path back; otherwise where the limit is passed
+ *  (both said only `meta: must not be nested deeper than 100 levels`: review of session 31). */
+function tooDeep(v: unknown, path: string, up: Enclosing | null): SceneError {
+  const limit = `must not be nested deeper than ${META_MAX_DEPTH} levels`;
+  // the paths at which v recurs, innermost first: the outermost is where the cycle starts
+  const at = [path];
+  for (let e = up; e !== null; e = e.up) if (e.value === v) at.push(e.path);
+  if (at.length > 1)
+    return new SceneError(
+      "meta",
+      `${limit} (got a cycle: ${shortPath(at[at.length - 2] as string)} is ${shortPath(at[at.length - 1] as string)} again, which JSON cannot write)`,
+    );
+  return new SceneError("meta", `${limit} (got level ${META_MAX_DEPTH + 1} at ${shortPath(path)})`);
+}
+
+/** A path of at most 120 characters, its middle left out. */
+function shortPath(path: string): string {
+  return path.length <= 120 ? path : `${path.slice(0, 60)}…${path.slice(-59)}`;
 }
 
 /** The name of an object's class, for a message ("a Date"). */
