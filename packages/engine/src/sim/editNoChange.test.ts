@@ -79,3 +79,20 @@ describe("addBodyMotion's checks", () => {
     expect(rebuilt.motion("a")).toEqual(m);
   });
 });
+
+describe("a state the World reports beyond the edit bounds goes back in", () => {
+  it("updateBody(id, body(id)) after gravity took the body past 1e30 keeps the motion (it was refused: y: must be at most 1e+30)", () => {
+    const w = new World({ g: 0, gravity: [0, -10] });
+    w.addBody("a", { x: 0, y: 0, r: 1, m: 1, vx: 1 });
+    w.advance({ untilTime: 1e15 });
+    const s = w.body("a");
+    expect(s.y).toBe(-5e30);
+    const motion = w.motion("a");
+    w.updateBody("a", s);
+    expect(w.motion("a")).toEqual(motion);
+    // a strike keeps the own position, and a new value is still held to the bounds
+    w.updateBody("a", { ...s, vx: 2 });
+    expect(w.body("a")).toMatchObject({ x: s.x, y: s.y, vx: 2 });
+    expect(() => w.updateBody("a", { y: s.y * 2 })).toThrow("y: must be at most 1e+30 in size (got -1e+31)");
+  });
+});

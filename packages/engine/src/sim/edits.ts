@@ -17,6 +17,7 @@ import {
   checkFrictionGravity,
   MOTION_EXTRAS,
   MOTION_FIELDS,
+  ownOr,
   requireBounded,
   requireFieldRate,
   requireFields,
@@ -153,12 +154,12 @@ export class Edits extends ObstacleEdits {
     requireFields("patch", patch, BODY_FIELDS, BODY_STATE_EXTRAS);
     const b = this.store;
     const now = this.now;
-    // Only the fields the patch gives are held to the edit bounds: the body's own current state
-    // may have left them (gravity speeds a body up without limit).
-    const x = patch.x !== undefined ? requireBounded("x", patch.x) : this.xAt(s, now);
-    const y = patch.y !== undefined ? requireBounded("y", patch.y) : this.yAt(s, now);
-    const vx = patch.vx !== undefined ? requireVelocity("vx", patch.vx) : this.vxAt(s, now);
-    const vy = patch.vy !== undefined ? requireVelocity("vy", patch.vy) : this.vyAt(s, now);
+    // Only new values are held to the edit bounds: the body's own current state, left out or
+    // passed back, may have left them (gravity speeds a body up without limit).
+    const x = ownOr("x", patch.x, this.xAt(s, now), requireBounded);
+    const y = ownOr("y", patch.y, this.yAt(s, now), requireBounded);
+    const vx = ownOr("vx", patch.vx, this.vxAt(s, now), requireVelocity);
+    const vy = ownOr("vy", patch.vy, this.vyAt(s, now), requireVelocity);
     const r = requireRadius("r", patch.r ?? b.r[s]);
     const m = requireMass("m", patch.m ?? b.m[s]);
     const mu = requireFieldRate("mu", patch.mu ?? b.mu[s]);

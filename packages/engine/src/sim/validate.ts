@@ -213,3 +213,18 @@ export const BODY_STATE_EXTRAS = ["id", "ax", "ay"] as const;
 /** The fields of a BodyMotionInit, and of a motion(id) report that may be passed back. */
 export const MOTION_FIELDS = ["t0", "x0", "y0", "vx", "vy", "r", "m", "mu"] as const;
 export const MOTION_EXTRAS = ["id", "ax", "ay", "tStop"] as const;
+
+/**
+ * A patch's value of a body's field: the body's own current value when the patch leaves the field
+ * out or gives that value back (what the World reports
+ * must go back in, and gravity takes positions and speeds past the edit bounds: updateBody(id,
+ * body(id)) was refused once y passed 1e30), any other value held to `check`'s bounds.
+ */
+export function ownOr(
+  path: string,
+  v: unknown,
+  own: number,
+  check: (path: string, v: unknown) => number,
+): number {
+  return v === undefined || v === own ? own : check(path, v);
+}
