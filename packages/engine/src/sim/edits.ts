@@ -15,6 +15,7 @@ import {
   BODY_FIELDS,
   BODY_STATE_EXTRAS,
   checkFrictionGravity,
+  finitePlace,
   MOTION_EXTRAS,
   MOTION_FIELDS,
   ownOr,
@@ -102,8 +103,8 @@ export class Edits extends ObstacleEdits {
         `the motion stops at t=${restoredLaw.tEnd}, before the world's time ${this.now}: give the resting motion that starts at the stop`,
       );
     // Where the body is now, evaluated as xAt/yAt will evaluate it.
-    const x = requireFinite("x0", positionAt(t0, x0, vx, restoredLaw.ax, this.now));
-    const y = requireFinite("y0", positionAt(t0, y0, vy, restoredLaw.ay, this.now));
+    const x = finitePlace("x", t0, positionAt(t0, x0, vx, restoredLaw.ax, this.now), this.now);
+    const y = finitePlace("y", t0, positionAt(t0, y0, vy, restoredLaw.ay, this.now), this.now);
     if (checkOverlap) {
       checkMotionMagnitudes(x0, y0, vx, vy);
       checkPlaceNow("x0", "x", x, this.now);

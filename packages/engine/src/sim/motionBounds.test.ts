@@ -61,3 +61,15 @@ describe("addBodyMotion's magnitudes", () => {
     expect(w.body("a").x).toBe(1e40 * 1e-30); // 1e10, rounded
   });
 });
+
+describe("a motion that overflows by the world's time", () => {
+  it("is refused naming t0 and the place it reaches (it said 'y0: must be a finite number (got -Infinity)' for a y0 of 0)", () => {
+    const w = new World({ g: 0, gravity: [0, -1e30] });
+    const e = refusal(() => w.addBodyMotion("a", { t0: -1e300, x0: 0, y0: 0, vx: 0, vy: 0, r: 1, m: 1 }));
+    expect(e.path).toBe("t0");
+    expect(e.reason).toBe(
+      "the motion from t0 = -1e+300 puts the body at y = -Infinity at the world's time 0, beyond the range of doubles (got -1e+300): give a t0 nearer the world's time",
+    );
+    expect(w.bodyCount).toBe(0);
+  });
+});

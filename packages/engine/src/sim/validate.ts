@@ -228,3 +228,16 @@ export function ownOr(
 ): number {
   return v === undefined || v === own ? own : check(path, v);
 }
+
+/**
+ * The place (coordinate `axis`) a motion from `t0` gives a body at the world's time `now`: refused,
+ * naming t0, when it is not finite (a motion from t0 = -1e300 under gravity: it was refused as
+ * `y0: must be a finite number (got -Infinity)` for a y0 of 0).
+ */
+export function finitePlace(axis: string, t0: number, place: number, now: number): number {
+  if (Number.isFinite(place)) return place;
+  throw new ChapgameError(
+    "t0",
+    `the motion from t0 = ${t0} puts the body at ${axis} = ${place} at the world's time ${now}, beyond the range of doubles (got ${given(t0)}): give a t0 nearer the world's time`,
+  );
+}
