@@ -99,8 +99,10 @@ where it got, with "time" there and "reason": "interrupted" (state too; path: "t
 exits with status 130 (SIGINT) or 143 (SIGTERM); an interrupted check prints nothing on standard
 output (it did not finish), only a line on stderr. In a pipeline Ctrl-C reaches the reader as
 well: to keep the result, send the signal to chapgame alone (kill -INT PID) or write to a file.
-A signal while the result is being written (after the computation) ends chapgame at once, with
-the same status and no message: the output is then cut short, not valid JSON.
+A signal while the result is being written (after the computation) does not cut it short: the
+writing goes on to valid JSON, a line on stderr says so, and the status is the signal's; a second
+signal (after one that stopped the computation, the first while writing) stops it at once, leaving
+the output incomplete, not valid JSON, and says so on stderr.
 The result of simulate and state: "time", "reason" (simulate, and a state that stopped early),
 "events" (collisions and stops), "counts" (bodyBody, bodyLine, bodyPoint, stop), "bodies" (id, x,
 y, vx, vy, r, m, mu at "time", sorted by id) and with --events "log": every entry up to "time"

@@ -5,8 +5,8 @@ import { dilutedGas, galperin } from "../scene/presets.js";
 import { serializeScene } from "../scene/serialize.js";
 import { USAGE } from "./args.js";
 import { runCli, runCliInterruptible } from "./run.js";
-import { SLICE_EVENTS } from "./slices.js";
-import { interruptAfter, io } from "./testSupport.js";
+import { type InterruptSignal, SLICE_EVENTS } from "./slices.js";
+import { interruptAfter, io, RESTS_AT_5, sceneText } from "./testSupport.js";
 
 describe("runCliInterruptible: an interrupt prints the result so far", () => {
   const files = { "gas.json": serializeScene(dilutedGas({ n: 100, packing: 0.2 })) };
@@ -85,5 +85,83 @@ describe("runCliInterruptible: an interrupt prints the result so far", () => {
     const { cli, out } = io({ "g.json": serializeScene(galperin(3)) });
     expect(await runCliInterruptible(["simulate", "g.json"], cli, interruptAfter(1, "SIGINT"))).toBe(0);
     expect(JSON.parse(out.stdout)).toMatchObject({ reason: "idle", events: 314 });
+  });
+});
+
+/** A control that reports each of `signals` once, at the `at[i]`-th pause after the computation is
+ *  over (the io's `computed` hook), i.e. while the result is written; returns it with the io. */
+function whileWriting(files: Record<string, string>, signals: InterruptSignal[], at: number[]) {
+  const run = io(files);
+  let pauses = 0;
+  let writingFrom = Number.POSITIVE_INFINITY;
+  run.cli.computed = () => {
+    writingFrom = pauses;
+  };
+  const control = {
+    pause: async () => {
+      pauses++;
+    },
+    interrupted: () => {
+      const i = at.indexOf(pauses - writingFrom);
+      return i < 0 ? null : (signals[i] as InterruptSignal);
+    },
+  };
+  return { ...run, control };
+}
+
+describe("runCliInterruptible: an interrupt while the result is written", () => {
+  const files = { "gas.json": serializeScene(dilutedGas({ n: 100, packing: 0.2 })) };
+  const args = ["simulate", "gas.json", "--events", "--max-events", "30000"];
+
+  it("the first one finishes the result (whole, valid JSON), says so on stderr, and exits 130", async () => {
+    // Review of session 31: a Ctrl-C while a long log was written left truncated JSON, exit 130 and
+    // nothing on stderr.
+    const whole = io(files);
+    expect(runCli(args, whole.cli)).toBe(0);
+    const cut = whileWriting(files, ["SIGINT"], [2]);
+    expect(await runCliInterruptible(args, cut.cli, cut.control)).toBe(130);
+    expect(cut.out.stdout).toBe(whole.out.stdout);
+    expect(cut.out.stderr).toBe(
+      "chapgame: gas.json: SIGINT while the result is being written: finishing it, so that it is whole (interrupt again, e.g. Ctrl-C, to stop at once, leaving it incomplete)\n",
+    );
+  });
+
+  it("a second one stops the writing at once: the output is cut short, stderr says it is incomplete, exit 143 (SIGTERM)", async () => {
+    const cut = whileWriting(files, ["SIGINT", "SIGTERM"], [1, 3]);
+    expect(await runCliInterruptible(args, cut.cli, cut.control)).toBe(143);
+    expect(() => JSON.parse(cut.out.stdout)).toThrow();
+    expect(cut.out.stderr.split("\n")[1]).toBe(
+      "chapgame: gas.json: interrupted again by SIGTERM while the result was being written: stopped at once, so the output is incomplete (not valid JSON)",
+    );
+  });
+
+  it("after an interrupt of the computation, one while its partial result is written stops it at once", async () => {
+    const cut = io(files);
+    let pauses = 0;
+    const control = {
+      pause: async () => {
+        pauses++;
+      },
+      interrupted: () => (pauses === 1 || pauses === 3 ? ("SIGINT" as const) : null),
+    };
+    expect(await runCliInterruptible(args, cut.cli, control)).toBe(130);
+    expect(() => JSON.parse(cut.out.stdout)).toThrow();
+    expect(cut.out.stderr).toBe(
+      "chapgame: gas.json: interrupted again by SIGINT while the result was being written: stopped at once, so the output is incomplete (not valid JSON)\n",
+    );
+  });
+
+  it("path: the first one finishes the pieces too", async () => {
+    // a ball bouncing between two walls: a piece each 2.2 s, enough for the writer to pause (one
+    // pause each 4096 pieces)
+    const bounces = { "ball.json": sceneText(RESTS_AT_5.slice(0, 4)) };
+    const pathArgs = ["path", "ball.json", "--id", "ball", "--to", "20000"];
+    const whole = io(bounces);
+    expect(runCli(pathArgs, whole.cli)).toBe(0);
+    expect(JSON.parse(whole.out.stdout).pieces.length).toBeGreaterThan(4096);
+    const cut = whileWriting(bounces, ["SIGINT"], [1]);
+    expect(await runCliInterruptible(pathArgs, cut.cli, cut.control)).toBe(130);
+    expect(cut.out.stdout).toBe(whole.out.stdout);
+    expect(cut.out.stderr).toContain("SIGINT while the result is being written: finishing it");
   });
 });

@@ -18,8 +18,8 @@ export interface CliIO {
   /** Called when the computation starts, after the scene is read and checked (the bin catches
    *  interrupts from then on: while it reads or parses, a Ctrl-C ends the process at once). */
   computing?: () => void;
-  /** Called once the computation is over, before the result is written (the bin stops catching
-   *  interrupts then: a Ctrl-C while a long result is written ends the process at once). */
+  /** Called once the computation is over, before the result is written (the bin keeps catching
+   *  interrupts while it writes: writing.ts says what one does then). */
   computed?: () => void;
   /** A monotonic clock in milliseconds (the bin: performance.now) that paces the computation
    *  (cadence.ts): progress lines half a second into it, then one a second, and slices of about a

@@ -183,3 +183,54 @@ it("Ctrl-C while the bin waits for its scene on standard input ends it at once (
   clearTimeout(timer);
   expect(r).toEqual({ code: null, killedBy: "SIGINT" });
 }, 30_000);
+
+/** Runs the bin on a 200-disc gas for `events` events with the log, and, as soon as the first bytes
+ *  of the result arrive (the computation is over, the writing has begun), stops reading its stdout
+ *  (so it cannot finish: about 30 MB are left to write), sends `signals` in order, and reads on. */
+function signalledWhileWriting(
+  signals: ("SIGINT" | "SIGTERM")[],
+): Promise<{ code: number | null; killedBy: string | null; stdout: string; stderr: string }> {
+  const dir = tempDir();
+  const scene = join(dir, "gas.json");
+  writeFileSync(scene, serializeScene(dilutedGas({ n: 200, packing: 0.2 })));
+  const child = spawn("node", [bin, "simulate", scene, "--events", "--max-events", "100000"], {
+    stdio: ["ignore", "pipe", "pipe"],
+  });
+  const chunks: Buffer[] = [];
+  let stderr = "";
+  child.stderr.on("data", (d: Buffer) => {
+    stderr += d.toString();
+  });
+  child.stdout.once("data", () => {
+    child.stdout.pause();
+    // SIGINT and SIGTERM are distinct signals, so the kernel never merges the two
+    for (const s of signals) child.kill(s);
+    child.stdout.resume();
+  });
+  child.stdout.on("data", (d: Buffer) => chunks.push(d));
+  return new Promise((done) =>
+    child.on("close", (code, killedBy) =>
+      done({ code, killedBy, stdout: Buffer.concat(chunks).toString(), stderr }),
+    ),
+  );
+}
+
+it("Ctrl-C while the result is written finishes it (valid JSON), says so on stderr, and exits 130", async () => {
+  // Review of session 31: the handlers were removed before writing, so a Ctrl-C 2 s into writing a
+  // 3-million-event log left 53 MB of truncated JSON, exit 130 and nothing on stderr.
+  const r = await signalledWhileWriting(["SIGINT"]);
+  expect(r.killedBy).toBeNull();
+  expect(r.code).toBe(130);
+  expect(JSON.parse(r.stdout)).toMatchObject({ reason: "events", events: 100000 });
+  expect(r.stderr).toMatch(/: SIGINT while the result is being written: finishing it, so that it is whole /);
+}, 120_000);
+
+it("a second signal while the result is written stops it at once, saying the output is incomplete", async () => {
+  const r = await signalledWhileWriting(["SIGINT", "SIGTERM"]);
+  expect(r.code).toBe(143);
+  expect(() => JSON.parse(r.stdout)).toThrow();
+  expect(r.stdout.length).toBeLessThan(20e6); // far from the whole (about 32 MB)
+  expect(r.stderr).toMatch(
+    /: interrupted again by SIGTERM while the result was being written: stopped at once, so the output is incomplete \(not valid JSON\)\n$/,
+  );
+}, 120_000);

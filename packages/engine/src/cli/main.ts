@@ -8,10 +8,12 @@
  * SIGINT (Ctrl-C) and SIGTERM during the computation stop it: the run computes in slices with a
  * setImmediate pause between them (runCliInterruptible), so the handler runs, and the result up to
  * there is printed with "reason": "interrupted"; the exit status is 130 (SIGINT) or 143 (SIGTERM).
- * The handlers are installed only while the computation runs: before it (reading standard input,
- * parsing) and once it is over (writing the result) a signal ends the process at once, as without
- * them (a handler cannot run while a synchronous read waits, so one installed then swallowed the
- * signal).
+ * The handlers are installed when the computation starts and stay until the bin ends: the result is
+ * written in pieces with the same pause between them, so a signal while it is written finishes it
+ * (a second one stops it at once; writing.ts). Before the computation (reading standard input,
+ * parsing) a signal ends the process at once, as without them (a handler cannot run while a
+ * synchronous read waits, so one installed then swallowed the signal). Each signal is reported
+ * once, in the order received.
  * The computation is paced by performance.now, a monotonic clock read between two slices of it
  * (cadence.ts: a progress line about once a second, slices of about 0.1 s): a timer (setInterval)
  * could not fire while a slice runs synchronously, and would only set a flag read at the same place.
@@ -80,14 +82,14 @@ function writeOut(text: string): void {
   }
 }
 
-/** The first interrupting signal received while computing, or null. */
-let received: InterruptSignal | null = null;
+/** The interrupting signals received and not yet reported to the run, oldest first. */
+const received: InterruptSignal[] = [];
 const onSignal = {
   SIGINT: () => {
-    received ??= "SIGINT";
+    received.push("SIGINT");
   },
   SIGTERM: () => {
-    received ??= "SIGTERM";
+    received.push("SIGTERM");
   },
 };
 const signals = ["SIGINT", "SIGTERM"] as const;
@@ -119,13 +121,12 @@ try {
       stderr: (text) => proc.stderr.write(text),
       progress: proc.stderr.isTTY === true,
       computing: startCatching,
-      computed: stopCatching,
       now: () => performance.now(),
       ...versionField(),
     },
     {
       pause: () => new Promise<void>((resume) => setImmediate(resume)),
-      interrupted: () => received,
+      interrupted: () => received.shift() ?? null,
     },
   );
 } finally {

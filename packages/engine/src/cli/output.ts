@@ -10,11 +10,15 @@
  * as in scene files, and "-Infinity" and NaN likewise, should one come (a position overflowed to
  * -Infinity after a long fall before times past TIME_MAX were refused: sim/timeLimit.ts).
  * writePath(result, write, compact): the `path` command's JSON, the same way (see there).
+ * resultSteps and pathSteps are the same writers as generators that yield after each piece of the
+ * log (each LOG_CHUNK_EVENTS events or path pieces): the CLI pauses there (slices.ts), so a signal
+ * handler can run while a long result is written (writing.ts decides what a signal then does).
  */
 
 import type { PathPiece } from "../timeline/path.js";
 import type { Timeline } from "../timeline/timeline.js";
 import type { LogEvent, ProlongResult } from "../timeline/types.js";
+import { runToEnd } from "./slices.js";
 
 /** Log events per written piece. */
 const LOG_CHUNK_EVENTS = 4096;
@@ -58,6 +62,16 @@ export function writeResult(
   write: (text: string) => void,
   format: ResultFormat,
 ): void {
+  runToEnd(resultSteps(tl, time, write, format));
+}
+
+/** writeResult as a generator that yields after each written piece of the log (see the header). */
+export function* resultSteps(
+  tl: Timeline,
+  time: number,
+  write: (text: string) => void,
+  format: ResultFormat,
+): Generator<void, void, void> {
   const { log: withLog, end, compact = false, chunk = LOG_CHUNK_EVENTS } = format;
   const c = tl.counts();
   const head = {
@@ -87,6 +101,7 @@ export function writeResult(
       first = false;
     }
     if (kept.length < events.length) break;
+    yield;
   }
   if (compact) write(first ? "]}\n" : "\n]}\n");
   else write(first ? "]\n}\n" : "\n  ]\n}\n");
@@ -108,10 +123,20 @@ export interface PathResult {
  * Each piece's keys in a fixed order: from, until, t0, x0, y0, vx, vy, ax, ay, tStop.
  */
 export function writePath(r: PathResult, write: (text: string) => void, compact = false): void {
+  runToEnd(pathSteps(r, write, compact));
+}
+
+/** writePath as a generator that yields after each LOG_CHUNK_EVENTS pieces (see the header). */
+export function* pathSteps(
+  r: PathResult,
+  write: (text: string) => void,
+  compact = false,
+): Generator<void, void, void> {
   const text = toJson({ id: r.id, from: r.from, to: r.to, ...r.end }, compact);
   const pad = compact ? "" : "    ";
   write(compact ? `${text.slice(0, -1)},"pieces":[` : `${text.slice(0, -2)},\n  "pieces": [`);
-  r.pieces.forEach((p, i) => {
+  for (let i = 0; i < r.pieces.length; i++) {
+    const p = r.pieces[i] as PathPiece;
     const piece = {
       from: p.from,
       until: p.until,
@@ -125,7 +150,8 @@ export function writePath(r: PathResult, write: (text: string) => void, compact 
       tStop: p.tStop,
     };
     write(`${i === 0 ? "\n" : ",\n"}${pad}${indent(toJson(piece, compact), pad)}`);
-  });
+    if ((i + 1) % LOG_CHUNK_EVENTS === 0) yield;
+  }
   const empty = r.pieces.length === 0;
   if (compact) write(empty ? "]}\n" : "\n]}\n");
   else write(empty ? "]\n}\n" : "\n  ]\n}\n");

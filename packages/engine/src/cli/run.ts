@@ -7,7 +7,9 @@
  * up to where it stopped, with "reason": "error" and the message in "error", then exits with 2.
  * runCliInterruptible(argv, io, control): the same, computing in slices with a pause between them
  * (slices.ts); an interrupt (SIGINT, SIGTERM) stops the computation and prints the result up to
- * there with "reason": "interrupted" (simulate and state alike), then exits with 130 or 143.
+ * there with "reason": "interrupted" (simulate and state alike), then exits with 130 or 143; the
+ * result is written in pieces with a pause between them too, and an interrupt then finishes it or,
+ * after an earlier one, stops it at once (writing.ts).
  * The commands: simulate (simulate.ts: how far it computes, the scene's own untils), state, path
  * (pathCommand.ts: an id no addBody names is refused before anything is computed; after an error or
  * an interrupt it prints the pieces up to where the run stopped) and check (check.ts: prints
@@ -19,11 +21,18 @@ import { Timeline } from "../timeline/timeline.js";
 import { parseArgs, USAGE, UsageError } from "./args.js";
 import { checkScene } from "./check.js";
 import { type CliIO, OutputError } from "./io.js";
-import { type RunEnd, writePath, writeResult } from "./output.js";
+import { pathSteps, type RunEnd, resultSteps } from "./output.js";
 import { firstAdded, pathResult } from "./pathCommand.js";
 import { ProgressLine, progressMode } from "./progress.js";
 import { sceneBound, simulate } from "./simulate.js";
-import { type InterruptControl, Interrupted, runInterruptible, runToEnd } from "./slices.js";
+import {
+  type InterruptControl,
+  Interrupted,
+  type InterruptSignal,
+  runInterruptible,
+  runToEnd,
+} from "./slices.js";
+import { finishWriting, statusAfterWriting, WritingAborted } from "./writing.js";
 
 export { type CliIO, OutputError } from "./io.js";
 
@@ -73,21 +82,29 @@ function* command(argv: readonly string[], given: CliIO): Generator<void, number
     line.building(scene);
     const tl = Timeline.fromParsedScene(scene, { history, compute: false, untils: bound !== null });
     const out = (text: string) => io.stdout(text);
-    /** Writes the result up to where the computation stopped, with why. */
-    const partial = (end: RunEnd) => {
+    const notice = (text: string) => io.stderr(`chapgame: ${printable(source ?? "")}: ${text}\n`);
+    /** Writes with `steps`, an interrupt finishing it or stopping it (writing.ts); returns the run's
+     *  interrupt, `earlier` or one received while writing. */
+    const written = (steps: Generator<void, void, void>, earlier: InterruptSignal | null) => {
       io.computed?.();
-      if (cmd.command === "path") writePath(pathResult(tl, cmd, added, end), out, cmd.compact);
-      else writeResult(tl, tl.horizon, out, { log: cmd.events, end, compact: cmd.compact });
+      return finishWriting(steps, earlier, notice);
     };
+    /** Writes the result up to where the computation stopped, with why. */
+    const partial = (end: RunEnd, earlier: InterruptSignal | null) =>
+      written(
+        cmd.command === "path"
+          ? pathSteps(pathResult(tl, cmd, added, end), out, cmd.compact)
+          : resultSteps(tl, tl.horizon, out, { log: cmd.events, end, compact: cmd.compact }),
+        earlier,
+      );
     let time: number;
     let end: RunEnd | undefined;
     io.computing?.();
     try {
       if (cmd.command === "path") {
         yield* line.compute(tl, { time: cmd.to });
-        io.computed?.();
-        writePath(pathResult(tl, cmd, added), out, cmd.compact);
-        return 0;
+        const late = yield* written(pathSteps(pathResult(tl, cmd, added), out, cmd.compact), null);
+        return statusAfterWriting(0, late);
       }
       if (cmd.command === "state") {
         // from horizon 0 (nothing computed yet), `time: at` ahead is exactly up to at
@@ -101,7 +118,7 @@ function* command(argv: readonly string[], given: CliIO): Generator<void, number
     } catch (e) {
       if (e instanceof Interrupted) {
         // What was computed up to the interrupt is a result too (simulate and state alike).
-        partial({ reason: "interrupted" });
+        yield* partial({ reason: "interrupted" }, e.signal);
         const c = tl.counts();
         const n = c.bodyBody + c.bodyLine + c.bodyPoint + c.stop;
         io.stderr(
@@ -111,17 +128,21 @@ function* command(argv: readonly string[], given: CliIO): Generator<void, number
       }
       // The engine cannot continue (a Zeno state): what was computed up to it is a result too
       // (simulate and state alike: `state --at T` then prints the bodies where it stopped, before T).
-      if (e instanceof SimulationError) partial({ reason: "error", error: printable(e.message) });
+      if (e instanceof SimulationError)
+        yield* partial({ reason: "error", error: printable(e.message) }, null);
       throw e;
     }
-    io.computed?.();
-    writeResult(tl, time, out, { log: cmd.events, compact: cmd.compact, end });
-    return 0;
+    const format = { log: cmd.events, compact: cmd.compact, end };
+    return statusAfterWriting(0, yield* written(resultSteps(tl, time, out, format), null));
   } catch (e) {
     // Errors about the scene's content name the scene file first (a batch over many files); a
     // key, id or file name may hold control characters, which must not reach the terminal raw.
     const file = source === null ? "" : `${printable(source)}: `;
     if (e instanceof Error) e.message = printable(e.message);
+    if (e instanceof WritingAborted) {
+      io.stderr(`chapgame: ${file}${e.message}\n`);
+      return e.status;
+    }
     if (e instanceof OutputError) {
       io.stderr(`chapgame: cannot write the result: ${e.message}\n`);
       return 1;

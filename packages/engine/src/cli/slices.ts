@@ -98,7 +98,8 @@ export function runToEnd<T>(steps: Generator<void, T, void>): T {
 export interface InterruptControl {
   /** Resolves once other work may have run (the bin: setImmediate, so signal handlers run). */
   pause(): Promise<void>;
-  /** The signal received, or null. */
+  /** A signal received since the last call, or null: each signal is reported once (a second one
+   *  while the result is written stops it: writing.ts). */
   interrupted(): InterruptSignal | null;
 }
 

@@ -42,13 +42,19 @@ export const RESTS_AT_5 = [
   { time: 5, type: "setGlobal", gravity: [0, -1] },
 ];
 
-/** Pauses at once; reports `signal` from the `after`-th pause on. */
+/** Pauses at once; reports `signal` once, at the `after`-th pause. */
 export function interruptAfter(after: number, signal: InterruptSignal) {
+  return interruptsAt(signal, after);
+}
+
+/** Pauses at once; reports `signal` once at each of the `at`-th pauses (as the bin reports each
+ *  signal it receives once). */
+export function interruptsAt(signal: InterruptSignal, ...at: number[]) {
   let pauses = 0;
   return {
     pause: async () => {
       pauses++;
     },
-    interrupted: () => (pauses >= after ? signal : null),
+    interrupted: () => (at.includes(pauses) ? signal : null),
   };
 }
