@@ -6,8 +6,10 @@
  */
 
 export interface CliIO {
-  /** Contents of a file ("-" = standard input); throws when it cannot be read. */
-  readFile(path: string): string;
+  /** Contents of a file ("-" = standard input); throws when it cannot be read (the bin: code
+   *  ERR_STRING_TOO_LONG, as soon as the text read passes what a string holds: readBounded.ts).
+   *  `progress`, when given, is told the bytes read so far, now and then during a long read. */
+  readFile(path: string, progress?: (bytes: number) => void): string;
   stdout(text: string): void;
   stderr(text: string): void;
   /** stderr is a terminal: show progress there on one updating line (without it, only --progress

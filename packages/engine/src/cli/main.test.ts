@@ -3,7 +3,7 @@
  * process has: standard output closed early by the reader (`chapgame ... | head`), and a reader that
  * does not keep up (the bin must wait for it, not hold the output in memory: read from Linux's /proc).
  */
-import { execFileSync, spawn } from "node:child_process";
+import { execFileSync, spawn, spawnSync } from "node:child_process";
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
@@ -234,3 +234,15 @@ it("a second signal while the result is written stops it at once, saying the out
     /: interrupted again by SIGTERM while the result was being written: stopped at once, so the output is incomplete \(not valid JSON\)\n$/,
   );
 }, 120_000);
+
+it("a device that never ends (/dev/zero) is refused once it gives more than a string holds, naming it", () => {
+  // Review of session 31: `chapgame check /dev/zero` never returned (reading had no size bound).
+  expect(existsSync("/dev/zero"), "this test reads Linux's /dev/zero").toBe(true);
+  const r = spawnSync("node", [bin, "check", "/dev/zero"], { encoding: "utf8", timeout: 60_000 });
+  expect(r.signal).toBeNull(); // not killed by the timeout
+  expect(r.status).toBe(2);
+  expect(r.stdout).toBe("");
+  expect(r.stderr).toBe(
+    "chapgame: cannot read /dev/zero: it gives more text than a JavaScript string can hold (0x1fffffe8, about 537 million characters), so no scene that large can be read: reading stopped there (ERR_STRING_TOO_LONG)\n",
+  );
+}, 90_000);

@@ -1,6 +1,9 @@
 #!/usr/bin/env node
+import { readBounded } from "./readBounded.js";
 /**
  * The `chapgame` bin: runs runCli with the real process (arguments, files, stdout, stderr).
+ * The scene is read in chunks (readBounded.ts), so a source that never ends (/dev/zero, a fifo) is
+ * refused once it gives more than a string holds, and a long read shows its progress.
  * Standard output is written with blocking writes (fs.writeSync), so a slow reader (`| gzip`) makes
  * the bin wait instead of queueing the whole output in memory (a 2M-event log held 2 GB). A reader
  * that closes it early (`chapgame ... | head`) ends the output quietly: the broken pipe is not an
@@ -38,6 +41,9 @@ interface NodeFs {
   readFileSync(path: string | number | object, encoding: "utf8"): string;
   readFileSync(path: string | number): Uint8Array;
   writeSync(fd: number, data: Uint8Array, offset: number, length: number): number;
+  openSync(path: string, flags: "r"): number;
+  readSync(fd: number, buffer: Uint8Array, offset: number, length: number, position: null): number;
+  closeSync(fd: number): void;
 }
 interface NodeError {
   code?: string;
@@ -59,6 +65,17 @@ function packageVersion(): string | undefined {
     return typeof v === "string" ? v : undefined;
   } catch {
     return undefined;
+  }
+}
+
+/** The bytes of the scene file `path` ("-": standard input), read in chunks and refused as soon as
+ *  they pass what a string holds (readBounded.ts: a device such as /dev/zero never ends). */
+function readSource(path: string, progress?: (bytes: number) => void): Uint8Array {
+  const fd = path === "-" ? 0 : fs.openSync(path, "r");
+  try {
+    return readBounded((buffer) => fs.readSync(fd, buffer, 0, buffer.length, null), progress);
+  } finally {
+    if (fd !== 0) fs.closeSync(fd);
   }
 }
 
@@ -116,7 +133,7 @@ try {
     proc.argv.slice(2),
     {
       // bytes that are not UTF-8 are refused, not replaced by U+FFFD (utf8.ts)
-      readFile: (path) => decodeUtf8(fs.readFileSync(path === "-" ? 0 : path)),
+      readFile: (path, progress) => decodeUtf8(readSource(path, progress)),
       stdout: writeOut,
       stderr: (text) => proc.stderr.write(text),
       progress: proc.stderr.isTTY === true,

@@ -5,7 +5,7 @@ import { dilutedGas } from "../scene/presets.js";
 import { serializeScene } from "../scene/serialize.js";
 import { FIRST_SLICE_EVENTS, SLICE_TARGET_MS } from "./cadence.js";
 import type { CliIO } from "./io.js";
-import { LONG_SCENE_CHARS } from "./progress.js";
+import { LONG_SCENE_CHARS, READ_REPORT_BYTES } from "./progress.js";
 import { runCli } from "./run.js";
 import { io } from "./testSupport.js";
 
@@ -240,5 +240,46 @@ describe("progress on the bin's clock (CliIO.now), never on real time", () => {
       "chapgame: t = T of 900, 9000 events, 204 of 205 actions applied\n" +
         "chapgame: t = T of 900, 26000 events, 204 of 205 actions applied\n",
     );
+  });
+});
+
+describe("progress of a long read (a big file, a slow pipe, a device)", () => {
+  /** A CliIO whose read reports `steps` bytes read, then gives a small valid scene. */
+  function reading(steps: number[], progress = false, now?: () => number) {
+    const r = io({}, progress);
+    r.cli.readFile = (_path, told) => {
+      for (const b of steps) told?.(b);
+      return serializeScene(dilutedGas({ n: 4, packing: 0.2 }));
+    };
+    if (now !== undefined) r.cli.now = now;
+    return r;
+  }
+
+  it("without a clock: a line each READ_REPORT_BYTES bytes, with --progress only", () => {
+    const steps = [1e6, READ_REPORT_BYTES - 1, READ_REPORT_BYTES + 5e6, 2.5 * READ_REPORT_BYTES];
+    const shown = reading(steps);
+    expect(runCli(["check", "-", "--progress"], shown.cli)).toBe(0);
+    expect(shown.out.stderr).toBe(
+      "chapgame: reading the scene: 105.0 MB so far\nchapgame: reading the scene: 250.0 MB so far\n",
+    );
+    const quiet = reading(steps);
+    expect(runCli(["check", "-"], quiet.cli)).toBe(0);
+    expect(quiet.out.stderr).toBe("");
+  });
+
+  it("on the clock: the first line half a second into the read, then one a second", () => {
+    let t = 0;
+    const clock = () => {
+      t += 300; // each read of the clock: 300 ms later
+      return t;
+    };
+    const r = reading([1e6, 2e6, 3e6, 4e6, 5e6, 6e6], false, clock);
+    expect(runCli(["check", "-", "--progress"], r.cli)).toBe(0);
+    // start at 300; reads at 600 (300 ms: no), 900 (600 ms: a line), 1200, 1500 (no), 1800 (1500 ms:
+    // no, 1 s after 600 ms is 1600 ms), 2100 (1800 ms: a line)
+    expect(r.out.stderr.split("\n").filter((l) => l.includes("reading"))).toEqual([
+      "chapgame: reading the scene: 2.0 MB so far",
+      "chapgame: reading the scene: 6.0 MB so far",
+    ]);
   });
 });

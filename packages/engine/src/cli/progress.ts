@@ -10,13 +10,15 @@
  * action), the event goal --max-events, and the actions part shown while some action of the scene is
  * still to come. A long scene (LONG_SCENE_CHARS or more) also says what it does before the
  * computation (reading and checking the file, building the scene at t = 0: seconds for a million
- * bodies), then shows the line above once at the start. ProgressLine.io is the command's CliIO with
+ * bodies), then shows the line above once at the start. A long read (a big file, a slow pipe, a
+ * device) shows the bytes read so far on the same cadence (without a clock, every READ_REPORT_BYTES):
+ *   chapgame: reading the scene: <megabytes> MB so far ProgressLine.io is the command's CliIO with
  * that erase in front of every write.
  */
 import type { SceneFile, Until } from "../scene/types.js";
 import type { Timeline } from "../timeline/timeline.js";
 import type { ProlongResult } from "../timeline/types.js";
-import { clockCadence, eventCadence } from "./cadence.js";
+import { type Cadence, clockCadence, eventCadence } from "./cadence.js";
 import type { CliIO } from "./io.js";
 import { computeSlices, type Progress } from "./slices.js";
 
@@ -31,6 +33,9 @@ export function progressMode(io: CliIO, cmd: { progress?: boolean }): ProgressMo
 /** A scene text at least this long (about 65,000 bodies, a second or more to read and build) has
  *  its steps before the computation announced. */
 export const LONG_SCENE_CHARS = 10_000_000;
+
+/** Bytes read between two lines on a long read when no clock is given. */
+export const READ_REPORT_BYTES = 100_000_000;
 
 /** What a progress line names as the run's goal: an absolute time, a number of events. */
 export interface ShownGoal {
@@ -50,6 +55,18 @@ function countUpTo(times: Float64Array, t: number): number {
   return lo;
 }
 
+/** A line each READ_REPORT_BYTES bytes read (readingBytes without a clock). */
+function bytesCadence(): Cadence {
+  let next = READ_REPORT_BYTES;
+  return {
+    due: (bytes) => {
+      if (bytes < next) return false;
+      while (next <= bytes) next += READ_REPORT_BYTES;
+      return true;
+    },
+  };
+}
+
 /** The progress line of one command (see the header). */
 export class ProgressLine {
   /** The command's CliIO: stdout and stderr erase a progress line first (on a terminal). */
@@ -61,10 +78,12 @@ export class ProgressLine {
   private times: Float64Array | null = null;
   /** length of the text on the terminal's line (0: none) */
   private shown = 0;
+  /** the read's cadence and when it started (readingBytes), once it has begun */
+  private read: { cadence: Cadence; start: number } | null = null;
 
   constructor(private readonly raw: CliIO) {
     const io: CliIO = {
-      readFile: (path) => raw.readFile(path),
+      readFile: (path, progress) => raw.readFile(path, progress),
       stdout: (text) => {
         this.erase();
         raw.stdout(text);
@@ -85,6 +104,19 @@ export class ProgressLine {
   /** Shows progress the command's way (progressMode), once its arguments are known. */
   start(mode: ProgressMode): void {
     this.mode = mode;
+  }
+
+  /** `bytes` of the scene are read so far: a line when one is due (see the header). */
+  readingBytes(bytes: number): void {
+    if (this.mode === "off") return;
+    const clock = this.raw.now;
+    this.read ??= {
+      cadence: clock === undefined ? bytesCadence() : clockCadence(),
+      start: clock === undefined ? Number.NaN : clock(),
+    };
+    const elapsed = clock === undefined ? Number.NaN : clock() - this.read.start;
+    if (this.read.cadence.due(bytes, elapsed))
+      this.write(`chapgame: reading the scene: ${(bytes / 1e6).toFixed(1)} MB so far`);
   }
 
   /** The scene's text is read: a long one says it is being checked. */

@@ -40,8 +40,15 @@ describe("runCli in-process", () => {
     expect(failing(coded("EIO"))).toBe("chapgame: cannot read s.json: EIO: node's text\n");
     // a 600 MB file said only "Cannot create a string longer than 0x1fffffe8 characters" (review of session 31)
     expect(failing(coded("ERR_STRING_TOO_LONG"))).toBe(
-      "chapgame: cannot read s.json: it holds more text than a JavaScript string can (0x1fffffe8, about 537 million characters), so no scene that large can be read (ERR_STRING_TOO_LONG)\n",
+      "chapgame: cannot read s.json: it gives more text than a JavaScript string can hold (0x1fffffe8, about 537 million characters), so no scene that large can be read: reading stopped there (ERR_STRING_TOO_LONG)\n",
     );
+    // standard input is named in words, not "-"
+    const stdin = io({});
+    stdin.cli.readFile = () => {
+      throw coded("ERR_STRING_TOO_LONG");
+    };
+    expect(runCli(["check", "-"], stdin.cli)).toBe(2);
+    expect(stdin.out.stderr).toMatch(/^chapgame: cannot read standard input: it gives more text /);
     expect(failing(new Error("not UTF-8 text: byte 0xE9\nmore"))).toBe(
       "chapgame: cannot read s.json: not UTF-8 text: byte 0xE9\n",
     );

@@ -173,20 +173,22 @@ const READ_ERRORS: Readonly<Record<string, string>> = {
   EPERM: "permission denied",
   ENOTDIR: "a part of the path is not a folder",
   // Node's "Cannot create a string longer than 0x1fffffe8 characters" did not say it was the file's size
+  // (a device or fifo that never ends, /dev/zero, is refused so too, once that much is read: readBounded.ts)
   ERR_STRING_TOO_LONG:
-    "it holds more text than a JavaScript string can (0x1fffffe8, about 537 million characters), so no scene that large can be read",
+    "it gives more text than a JavaScript string can hold (0x1fffffe8, about 537 million characters), so no scene that large can be read: reading stopped there",
 };
 
-/** The scene file's text (a UsageError when it cannot be read); a long one is announced. */
+/** The scene file's text (a UsageError when it cannot be read); a long read shows its progress and
+ *  a long text is announced. */
 function readText(io: CliIO, path: string, line: ProgressLine): string {
   let text: string;
   try {
-    text = io.readFile(path);
+    text = io.readFile(path, (bytes) => line.readingBytes(bytes));
   } catch (e) {
     const code = (e as { code?: unknown }).code;
     const known = typeof code === "string" && Object.hasOwn(READ_ERRORS, code);
     const why = known ? `${READ_ERRORS[code]} (${code})` : (e as Error).message.split("\n")[0];
-    throw new UsageError(`cannot read ${path}: ${why}`);
+    throw new UsageError(`cannot read ${path === "-" ? "standard input" : path}: ${why}`);
   }
   line.reading(text);
   return text;
