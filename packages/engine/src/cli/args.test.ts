@@ -1,5 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { parseArgs, USAGE, UsageError } from "./args.js";
+import { runCli } from "./run.js";
+import { io, RESTS_AT_5, sceneText } from "./testSupport.js";
 
 describe("parseArgs", () => {
   it("parses simulate with its options, in any order, with or without =", () => {
@@ -230,5 +232,32 @@ describe("the help (USAGE)", () => {
     const long = USAGE.split("\n").filter((line) => line.length > 100);
     expect(long).toEqual([]);
     expect(USAGE.split("\n").length).toBeGreaterThan(50);
+  });
+});
+
+describe("parseArgs: a time that reads as a different double than typed gets a note", () => {
+  it("state --at 0.99999999999999999999999 reads as 1 and says so; a time that prints as typed has no note", () => {
+    // Review of session 31: it silently read as t = 1, a collision instant, giving the state after it.
+    expect(parseArgs(["state", "s.json", "--at", "0.99999999999999999999999"])).toEqual({
+      command: "state",
+      scene: "s.json",
+      at: 1,
+      events: false,
+      notes: ["--at 0.99999999999999999999999 is read as 1 (the nearest double)"],
+    });
+    expect(
+      parseArgs(["path", "s.json", "--id", "a", "--from=0.10000000000000000001", "--to", "2.50"]).notes,
+    ).toEqual(["--from 0.10000000000000000001 is read as 0.1 (the nearest double)"]);
+    expect(parseArgs(["simulate", "s.json", "--until-time", "12.50"])).not.toHaveProperty("notes");
+    expect(parseArgs(["state", "s.json", "--at", "0.1"])).not.toHaveProperty("notes");
+  });
+
+  it("runCli prints the note on stderr and goes on", () => {
+    const r = io({ "s.json": sceneText(RESTS_AT_5) });
+    expect(runCli(["state", "s.json", "--at", "2.00000000000000000001", "--compact"], r.cli)).toBe(0);
+    expect(r.out.stderr).toBe(
+      "chapgame: note: --at 2.00000000000000000001 is read as 2 (the nearest double)\n",
+    );
+    expect(JSON.parse(r.out.stdout).time).toBe(2);
   });
 });

@@ -10,11 +10,13 @@
  * Options take their value as the next argument or after "=". Any other argument that starts with
  * "-" (except "-" itself, standard input) is an unknown option, never a file name, unless it comes
  * after "--" (the end of options). Invalid arguments throw UsageError with a one-line message; a
- * time past TIME_MAX is one (sim/timeLimit.ts).
+ * time past TIME_MAX is one (sim/timeLimit.ts). A time typed with more digits than a double holds
+ * that reads as a double printed differently gets a note (Command.notes: rounding.ts).
  */
 
 import { BEYOND_TIME_MAX_WHY } from "../sim/timeLimit.js";
 import { TIME_MAX } from "../tolerances.js";
+import { roundingNote } from "./rounding.js";
 
 export { USAGE } from "./usage.js";
 
@@ -29,7 +31,9 @@ export class UsageError extends Error {
   }
 }
 
-export type Command =
+/** A command and its options; `notes`, when some time given reads as a different double than it
+ *  was typed (rounding.ts), the lines to say so on stderr. */
+export type Command = (
   | { command: "help" }
   | { command: "version" }
   | {
@@ -51,7 +55,8 @@ export type Command =
       compact?: boolean;
       progress?: boolean;
     }
-  | { command: "check"; scene: string; compact?: boolean; progress?: boolean };
+  | { command: "check"; scene: string; compact?: boolean; progress?: boolean }
+) & { notes?: string[] };
 
 /** A value typed on the command line as a refusal names it: quoted with JSON escapes, as the
  *  editor names what was typed (`(got "abc")`; the engine's form, sim/refusalText.ts). */
@@ -120,6 +125,40 @@ function asksHelp(options: readonly string[]): boolean {
 }
 
 export function parseArgs(argv: readonly string[]): Command {
+  const c = parseCommand(argv);
+  // notes on the times typed with more digits than a double holds (rounding.ts)
+  const notes: string[] = [];
+  for (const [name, value] of timesOf(c)) {
+    const typedAs = typedValue(argv, name);
+    const note = typedAs === undefined ? null : roundingNote(name, typedAs, value);
+    if (note !== null) notes.push(note);
+  }
+  return notes.length === 0 ? c : { ...c, notes };
+}
+
+/** The times a command was given, by option name. */
+function timesOf(c: Command): [string, number][] {
+  if (c.command === "state") return [["--at", c.at]];
+  if (c.command === "path")
+    return [
+      ["--from", c.from],
+      ["--to", c.to],
+    ];
+  if (c.command === "simulate" && c.untilTime !== undefined) return [["--until-time", c.untilTime]];
+  return [];
+}
+
+/** The value typed for option `name` (after "=" or as the next argument), before any "--". */
+function typedValue(argv: readonly string[], name: string): string | undefined {
+  for (let i = 0; i < argv.length && argv[i] !== "--"; i++) {
+    const a = argv[i] as string;
+    if (a === name) return argv[i + 1];
+    if (a.startsWith(`${name}=`)) return a.slice(name.length + 1);
+  }
+  return undefined;
+}
+
+function parseCommand(argv: readonly string[]): Command {
   if (argv.length === 0) throw new UsageError("missing command (try chapgame --help)");
   // --help anywhere before "--" (after it, "--help" is a file name, as the help says)
   const endOfOptions = argv.indexOf("--");

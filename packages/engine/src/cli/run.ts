@@ -66,6 +66,7 @@ function* command(argv: readonly string[], given: CliIO): Generator<void, number
       io.stdout(`chapgame ${io.version ?? "(version unknown)"}\n`);
       return 0;
     }
+    for (const note of cmd.notes ?? []) io.stderr(`chapgame: note: ${note}\n`);
     line.start(progressMode(io, cmd));
     source = cmd.scene === "-" ? "<stdin>" : cmd.scene;
     // the text is read where it is parsed, and not kept (150 MB for a million bodies)

@@ -47,6 +47,8 @@ export const USAGE = `Usage:
 SCENE is a scene file (format "chapgame", version 1), or - for standard input; after --, a name
 that starts with "-" is a file name. A time T is a decimal number from 0 to 1e30 (TIME_MAX, the
 bound of every time given to the engine: past it positions under gravity leave the doubles).
+A T with more digits than a double holds that reads as another number says so on stderr
+("note: --at 0.99999999999999999999999 is read as 1 (the nearest double)") and the run goes on.
 Interrupting a run (Ctrl-C: SIGINT, or SIGTERM) while it computes prints the result up to
 where it got, with "time" there and "reason": "interrupted" (state too; path: "to" there), and
 exits with status 130 (SIGINT) or 143 (SIGTERM); an interrupted check prints nothing on standard
