@@ -194,7 +194,9 @@ describe("chapgame on invalid input: exit 2, one line on stderr, no stack trace"
     // from standard input too
     const r = spawnSync("node", [bin, "simulate", "-"], { cwd: root, input: Buffer.from(text, "latin1") });
     expect(r.status).toBe(2);
-    expect(r.stderr.toString()).toContain("cannot read -: not UTF-8 text: byte 0xE9 at line 1, column 81");
+    expect(r.stderr.toString()).toContain(
+      "cannot read standard input: not UTF-8 text: byte 0xE9 at line 1, column 81",
+    );
   });
 
   for (const [name, args, input, message] of cases)
