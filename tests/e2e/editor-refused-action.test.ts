@@ -100,6 +100,39 @@ describe("a scene's refused later action", () => {
     await poll(b3x).toBe(0.5);
   });
 
+  it("keeps saying why a value is still refused when the time moves (its edits do not depend on the current time)", async () => {
+    await pasteScene();
+    const table = refusedTable();
+    await poll(() => table.count()).toBe(1);
+    await table
+      .getByRole("button", { name: `refused action at t = 1 s that adds disc "b3" r`, exact: true })
+      .click();
+    const input = table.getByRole("textbox");
+    await input.fill("-1");
+    await input.press("Enter");
+    /** What describes the open field (the refusal, or a note in its place). */
+    const note = () =>
+      editor.page.evaluate(() => {
+        const field = document.querySelector('table[aria-label="Refused action"] input');
+        if (!field) return "(no field open)";
+        return document.getElementById(field.getAttribute("aria-describedby") ?? "")?.textContent ?? "";
+      });
+    await poll(note).toContain("must be a positive");
+    const refusal = await note();
+    // the time moves inside the computed history: the table cells' "refused at t = …, the time is
+    // now …, where Enter applies it" would be wrong here, where Enter applies the same action
+    await editor.page.evaluate(() =>
+      (window as unknown as { chapgame: { ui: { setState(p: object): void } } }).chapgame.ui.setState({
+        t: 0.5,
+      }),
+    );
+    await new Promise((r) => setTimeout(r, 300)); // a note that followed the time would be there by now
+    expect(await note()).toBe(refusal);
+    expect(refusal).not.toMatch(/refused at t =/);
+    await input.press("Escape");
+    await poll(() => table.getByRole("textbox").count()).toBe(0);
+  });
+
   it("is named in the stop message by its time, what it does and its object, the raw path in parentheses", async () => {
     await pasteScene();
     await poll(messageText).toContain(

@@ -34,6 +34,13 @@ export interface EditableCellProps {
    * the row of an open cell rendered out of view, with its draft (useHeldRows.ts).
    */
   onOpenChange?: (open: boolean) => void;
+  /**
+   * Whether a commit applies at the current time (the default: the tables' and Globals' edits are
+   * actions at that time), so that a refused draft says where Enter applies it once the time moves.
+   * False for a cell whose commit does not depend on the time (the refused action's fields,
+   * RefusedActionRow.tsx): its refusal stays as it was given.
+   */
+  atCurrentTime?: boolean;
 }
 
 /** A commit not answered after this many milliseconds shows that it is being checked. */
@@ -41,7 +48,14 @@ export const SLOW_COMMIT_MS = 300;
 
 const noSubscription = () => () => {};
 
-export function EditableCell({ label, value, onCommit, size = 7, onOpenChange }: EditableCellProps) {
+export function EditableCell({
+  label,
+  value,
+  onCommit,
+  size = 7,
+  onOpenChange,
+  atCurrentTime = true,
+}: EditableCellProps) {
   // null: at rest (a button); open: `typed` is null until the user types (the input then shows the
   // live value), then the text typed.
   const [edit, setEdit] = useState<{ typed: string | null } | null>(null);
@@ -93,8 +107,9 @@ export function EditableCell({ label, value, onCommit, size = 7, onOpenChange }:
   // ±1 s buttons, the slider) the row shows another time, and a retry applied there (review: r = 0.35
   // saved at t = 3 for a refusal at t = 1, without a word). It closed, dropping the text typed; it
   // now stays, the refusal replaced by a note saying where Enter applies it (timeMovedNote), and
-  // the refusal comes back if the time returns to where it was refused.
-  const refused = edit !== null && error !== null;
+  // the refusal comes back if the time returns to where it was refused. A cell whose commit does not
+  // depend on the time (atCurrentTime false) keeps its refusal: the note would be wrong there.
+  const refused = edit !== null && error !== null && atCurrentTime;
   /** The refusal shown and the time it was given at (set with it). */
   const refusal = useRef<{ text: string; at: number } | null>(null);
   useEffect(() => {

@@ -147,4 +147,28 @@ describe("EditableCell: the answer to a commit", () => {
     fireEvent.keyDown(kept, { key: "Escape" });
     expect(screen.getByRole("button", { name: "ball1 r" }).textContent).toBe("0.3");
   });
+
+  it("a cell whose commit does not apply at the current time (the refused action's) keeps its refusal when the time moves", async () => {
+    const { editor } = testEditor();
+    editor.ui.setState({ t: 1 });
+    const refusal = "refused action r: must be a positive finite number (got -1)";
+    render(
+      <EditorContext.Provider value={editor}>
+        <EditableCell
+          label="refused action r"
+          value="1"
+          onCommit={async () => refusal}
+          atCurrentTime={false}
+        />
+      </EditorContext.Provider>,
+    );
+    const input = openCell("refused action r");
+    fireEvent.change(input, { target: { value: "-1" } });
+    await act(async () => {
+      fireEvent.keyDown(input, { key: "Enter" });
+    });
+    act(() => editor.ui.setState({ t: 3 }));
+    expect(document.getElementById(input.getAttribute("aria-describedby") ?? "")?.textContent).toBe(refusal);
+    expect(input.value).toBe("-1");
+  });
 });

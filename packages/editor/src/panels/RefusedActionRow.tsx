@@ -6,7 +6,8 @@
  * the engine's reason as its description, with the log's ✕ (RemoveActionButton: two presses, one
  * undo step) and a cell for each of its fields (t, x, y, r, m, μ, vx, vy for a disc; EditableCell as
  * in the tables), whose commit replaces the action (Editor.changeAction, one undo step; a value
- * still refused is said in place, the action kept as it was). Removed or changed so that it is
+ * still refused is said in place, the action kept as it was, and stays said as it is when the time
+ * moves: unlike a table cell's, the edit does not apply at the current time). Removed or changed so that it is
  * accepted, the rest of the scene computes on. Nothing is drawn when no action is refused.
  */
 import { useId } from "react";
@@ -53,6 +54,8 @@ export function RefusedActionRow({ notice }: { notice: ArmedNotice }) {
                     label={`${what} ${f.name}`}
                     value={formatNumber(f.value)}
                     size={6}
+                    // the action's own time is one of its fields: its edits apply whatever the time shown
+                    atCurrentTime={false}
                     onCommit={async (text) => {
                       const v = parseNumber(text);
                       if (v === null) return notANumber(`${what} ${f.name}`, text);
