@@ -3,7 +3,8 @@
  * table renders only the rows in view (useRowWindow.tsx), and a row scrolled more than OVERSCAN rows
  * out of the view was unmounted with its open cell: a refused draft (r = -1) and its refusal were
  * gone when the row came back. The row of an open cell is now always rendered (useHeldRows.ts), its
- * refusal hidden while it is out of view and shown again when it returns. A draft never reaches
+ * refusal hidden while it is out of view and shown again when it returns; a key typed into its
+ * field (which keeps the focus out of view) scrolls its row back into view. A draft never reaches
  * another object: deleting its body drops it (Undo brings the body back, not the draft), and so
  * does a load that replaces the scene, even one whose bodies have the same ids.
  */
@@ -48,6 +49,19 @@ function refusalOf(label: string) {
   }, label);
 }
 
+/** Whether the field `label` is whole in its scroll box's view, below the box's sticky header. */
+function fieldInView(label: string): Promise<boolean> {
+  return bodies().evaluate((table, label) => {
+    const input = table.querySelector<HTMLInputElement>(`input[aria-label="${label}"]`);
+    const box = table.closest<HTMLElement>(".table-scroll");
+    if (!input || !box) return false;
+    const f = input.getBoundingClientRect();
+    const b = box.getBoundingClientRect();
+    const head = table.querySelector("thead")?.getBoundingClientRect().height ?? 0;
+    return f.top >= b.top + head && f.bottom <= b.top + box.clientHeight;
+  }, label);
+}
+
 /** From the top of the table, refuses `text` typed in the cell `label`. */
 async function refuse(label: string, text: string): Promise<void> {
   await scrollBodiesTo(0, "b1");
@@ -78,6 +92,23 @@ describe("a refused draft in the Bodies table", () => {
     await cell("b3 r").fill("4");
     await cell("b3 r").press("Enter");
     await poll(() => cell("b3 r").textContent()).toBe("4");
+  });
+
+  it("brings its row back into view when a key is typed into it out of view (the keys went to a field the author could not see)", async () => {
+    await refuse("b4 r", "-1");
+    await scrollBodiesTo(48 * 24, "b48");
+    expect(await editor.page.evaluate(() => document.activeElement?.getAttribute("aria-label"))).toBe("b4 r");
+    expect(await fieldInView("b4 r"), "scrolled out of view, the focus kept").toBe(false);
+    await editor.page.keyboard.press("Backspace");
+    await editor.page.keyboard.type("2");
+    await poll(() => fieldInView("b4 r")).toBe(true);
+    await poll(() => refusalOf("b4 r")).toEqual({
+      value: "-2",
+      text: expect.stringContaining("b4 r: must be a positive"),
+      drawn: true,
+    });
+    await cell("b4 r").press("Escape");
+    await poll(() => cell("b4 r").textContent()).toBe("3");
   });
 
   it("is dropped with its body when the body is deleted out of view; Undo brings the body back, not the draft", async () => {

@@ -16,12 +16,16 @@
  * input (its default prevented), so closing the cell never lets it activate the button refocused.
  * A refusal that only holds until the history reaches the time (Editor.refusalChanged: "still being
  * computed" after an undo) is dropped once it does, the draft kept for Enter.
+ * A key typed into the field while its row is scrolled out of the table's view (a row holding an open
+ * cell stays rendered and focused there: useHeldRows.ts) brings the row back into view first
+ * (revealField.ts).
  * Opening a cell pauses playback (inside an editor): the edit applies at the current time, and the
  * values the cell and its row show are those of that time, not of a moment that playback has left.
  */
 import { useContext, useEffect, useId, useRef, useState, useSyncExternalStore } from "react";
 import { EditorContext } from "../EditorContext";
 import { UNDONE_DURING_CHECK } from "../remote/protocol";
+import { revealField, revealsField } from "./revealField";
 import { useCellNote } from "./useCellNote";
 
 export interface EditableCellProps {
@@ -208,6 +212,8 @@ export function EditableCell({
           if (error === null) void commit();
         }}
         onKeyDown={(e) => {
+          // a held row scrolled out of view keeps its field's focus: what is typed is shown first
+          if (revealsField(e.key)) revealField(e.currentTarget);
           if (e.key === "Enter") {
             // Closed during this keydown, the cell focuses its button, and the same Enter's keypress
             // would click it open again (an unchanged value never closed): the key ends here.

@@ -11,13 +11,23 @@ import type { BoxGeometry } from "./useRowWindow";
 
 /** The scrollTop that shows row `index` whole in the box, or null when it is in view already. */
 export function revealScroll(index: number, box: BoxGeometry): number | null {
-  const { row, head, view, scroll } = box;
+  const { row, view } = box;
   if (!(row > 0) || !(view > 0) || index < 0) return null; // nothing laid out (a hidden panel, jsdom)
-  const top = head + index * row;
-  const bottom = top + row;
-  // the sticky thead covers the top `head` px of the box
-  if (top < scroll + head) return index * row;
-  if (bottom > scroll + view) return Math.max(0, bottom - view);
+  return revealSpan(box.head + index * row, row, box);
+}
+
+/**
+ * The scrollTop that shows whole the `height` px starting `top` px from the top of the box's content
+ * (its thead included), or null when they are in view already: scrolled just enough, below the
+ * sticky thead, which covers the top `head` px of the box.
+ */
+export function revealSpan(
+  top: number,
+  height: number,
+  { head, view, scroll }: Pick<BoxGeometry, "head" | "view" | "scroll">,
+): number | null {
+  if (top < scroll + head) return Math.max(0, top - head);
+  if (top + height > scroll + view) return Math.max(0, top + height - view);
   return null;
 }
 
