@@ -6,7 +6,8 @@
  * refusal hidden while it is out of view and shown again when it returns; a key typed into its
  * field (which keeps the focus out of view) scrolls its row back into view. A draft never reaches
  * another object: deleting its body drops it (Undo brings the body back, not the draft), and so
- * does a load that replaces the scene, even one whose bodies have the same ids.
+ * does a load that replaces the scene, even one whose bodies have the same ids; the message of the
+ * delete or the load says which draft was dropped.
  */
 import { describe, expect, it } from "vitest";
 import { bodyGridScene, openBodyGrid } from "./bodyGridScene.js";
@@ -14,7 +15,7 @@ import { editorForFile, poll } from "./editorForFile.js";
 
 /** The editor's methods these tests call (boot.ts puts the editor on window.chapgame). */
 type Chapgame = {
-  ui: { setState(patch: object): void };
+  ui: { setState(patch: object): void; getState(): { message: { text: string } | null } };
   deleteSelection(): Promise<string | null>;
   undo(): Promise<void>;
   loadScene(scene: unknown): Promise<string | null>;
@@ -26,6 +27,10 @@ const editor = editorForFile({ afterOpen: ({ page }) => openBodyGrid(page, SCENE
 
 const bodies = () => editor.page.getByRole("table", { name: "Bodies" });
 const cell = (label: string) => bodies().getByLabel(label, { exact: true });
+
+/** The message bar's text. */
+const message = () =>
+  editor.page.evaluate(() => (window as unknown as PageWindow).chapgame.ui.getState().message?.text ?? "");
 
 /** Scrolls the Bodies table's box to `px` and waits until the row of `visible` is rendered. */
 async function scrollBodiesTo(px: number, visible: string): Promise<void> {
@@ -119,6 +124,10 @@ describe("a refused draft in the Bodies table", () => {
       w.chapgame.ui.setState({ selection: { kind: "body", id: "b5" } });
       await w.chapgame.deleteSelection();
     });
+    // the typed value did not vanish without a word
+    expect(await message()).toBe(
+      'Deleted body "b5" at t = 0 s (Undo brings it back). Dropped the draft b5 r = -1, typed and not applied.',
+    );
     await scrollBodiesTo(0, "b1");
     await poll(() => cell("b5 x").count()).toBe(0);
     await editor.page.evaluate(() => (window as unknown as PageWindow).chapgame.undo());
@@ -130,6 +139,7 @@ describe("a refused draft in the Bodies table", () => {
     await refuse("b6 r", "-1");
     await scrollBodiesTo(48 * 24, "b48");
     await editor.page.evaluate((scene) => (window as unknown as PageWindow).chapgame.loadScene(scene), SCENE);
+    expect(await message()).toBe("Dropped the draft b6 r = -1, typed and not applied.");
     await scrollBodiesTo(0, "b1");
     await poll(() => cell("b6 r").textContent()).toBe("3");
     expect(await bodies().locator("input").count(), "no cell open").toBe(0);

@@ -133,6 +133,31 @@ describe("a scene's refused later action", () => {
     await poll(() => table.getByRole("textbox").count()).toBe(0);
   });
 
+  it("drops a draft typed in its cells when a load replaces the scene, even by the same scene, and says so", async () => {
+    await pasteScene();
+    const table = refusedTable();
+    await table
+      .getByRole("button", { name: `refused action at t = 1 s that adds disc "b3" r`, exact: true })
+      .click();
+    await table.getByRole("textbox").fill("-1");
+    await table.getByRole("textbox").press("Enter");
+    await poll(() => table.getByRole("textbox").getAttribute("aria-invalid")).toBe("true");
+    await editor.page.evaluate(
+      (scene) =>
+        (window as unknown as { chapgame: { loadScene(s: unknown): Promise<unknown> } }).chapgame.loadScene(
+          scene,
+        ),
+      SCENE,
+    );
+    await poll(stopped).not.toBeNull();
+    await poll(() => table.count()).toBe(1);
+    // kept, the draft would have been Enter's to apply to the action of another scene
+    expect(await table.getByRole("textbox").count()).toBe(0);
+    expect(await messageText()).toContain(
+      'Dropped the draft refused action at t = 1 s that adds disc "b3" r = -1, typed and not applied.',
+    );
+  });
+
   it("is named in the stop message by its time, what it does and its object, the raw path in parentheses", async () => {
     await pasteScene();
     await poll(messageText).toContain(

@@ -26,6 +26,7 @@ import { metaWithTitle, titleOf } from "./doc/sceneTitle";
 import { shown } from "./editorSession";
 import { EditorTime } from "./editorTime";
 import type { Action, SceneFile, Vec2 } from "./engineTypes";
+import { droppedNote, type OpenDraft } from "./openDrafts";
 import type { TimelineClient } from "./remote/client";
 import type { Frame } from "./remote/protocol";
 import { dropStaleHighlight } from "./store/highlightGuard";
@@ -42,6 +43,11 @@ export const NO_STRIKE_DIRECTION =
 
 /** "(3, -0.5)": a place as messages write it. */
 const point = (p: Vec2): string => `(${shown(p[0])}, ${shown(p[1])})`;
+/** `text`, then what it says of the drafts `dropped` with their object (openDrafts.ts), if any. */
+const withDropped = (text: string, dropped: readonly OpenDraft[]): string =>
+  dropped.length === 0 ? text : `${text} ${droppedNote(dropped)}`;
+/** The object an add of this type makes: removing the add takes the object, and its drafts, away. */
+const ADDED_KIND: Record<string, ObjectKind> = { addBody: "body", addLine: "line", addPoint: "point" };
 /** ", at t = 3.2 s" for an object added after the start; nothing at t = 0. */
 const when = (t: number): string => (t === 0 ? "" : `, at t = ${shown(t)} s`);
 
@@ -169,24 +175,42 @@ export class Editor extends EditorTime {
     return this.editSaid({ time: this.now(), type: "setGlobal", ...patch });
   }
 
-  /** Renames a body, line or point (EditorRewrites.rename), and says so and that Undo takes it back. */
+  /**
+   * Renames a body, line or point (EditorRewrites.rename), and says so and that Undo takes it back,
+   * and which drafts of its other cells went with its row (its id cell's is the new name).
+   */
   override async rename(kind: ObjectKind, from: string, to: string): Promise<string | null> {
+    const dropped = this.drafts.of(kind, from, "id");
     const err = await super.rename(kind, from, to);
     if (err === null)
-      this.info(`Renamed ${kind} ${JSON.stringify(from)} to ${JSON.stringify(to)} (Undo takes it back).`);
+      this.info(
+        withDropped(
+          `Renamed ${kind} ${JSON.stringify(from)} to ${JSON.stringify(to)} (Undo takes it back).`,
+          dropped,
+        ),
+      );
     return err;
   }
 
-  /** Removes the selected body, line or point at the current time, and says so (it said nothing). */
+  /**
+   * Removes the selected body, line or point at the current time, and says so (it said nothing), and
+   * which drafts typed in its row went with it (they vanished without a word).
+   */
   async deleteSelection(): Promise<string | null> {
     const sel = this.ui.getState().selection;
     if (!sel) return null;
+    const dropped = this.drafts.of(sel.kind, sel.id);
     const type = sel.kind === "body" ? "removeBody" : sel.kind === "line" ? "removeLine" : "removePoint";
     const time = this.now();
     const err = await this.edit([this.stamp({ time, type, id: sel.id })]);
     if (err === null) {
       this.ui.setState({ selection: null });
-      this.info(`Deleted ${sel.kind} "${sel.id}" at t = ${shown(time)} s (Undo brings it back).`);
+      this.info(
+        withDropped(
+          `Deleted ${sel.kind} "${sel.id}" at t = ${shown(time)} s (Undo brings it back).`,
+          dropped,
+        ),
+      );
     }
     return err;
   }
@@ -195,13 +219,21 @@ export class Editor extends EditorTime {
    * Removes `actions[index]` of the scene (an Event-log entry's actionIndex) as one undo step, the
    * current time and the history range kept. Refused when that index no longer holds the entry's
    * action (the scene changed since the log was read), and by the engine when a later action needs
-   * it (its message says which one). Removed, it says which action went and that Undo brings it back.
+   * it (its message says which one). Removed, it says which action went and that Undo brings it back,
+   * and, for an add, which drafts typed in the row of the object it made went with it.
    */
   async removeAction(index: number, entry: ActionEntry): Promise<string | null> {
+    const kind = ADDED_KIND[entry.type];
+    const dropped = kind === undefined || entry.id === null ? [] : this.drafts.of(kind, entry.id);
     const err = await this.rewrite((doc) => withoutAction(doc, index, entry));
     if (err !== null) return err;
     const what = describeEntry(entry.type, entry.id);
-    this.info(`Removed ${what} at t = ${shown(entry.time)} s from the scene (Undo brings it back).`);
+    this.info(
+      withDropped(
+        `Removed ${what} at t = ${shown(entry.time)} s from the scene (Undo brings it back).`,
+        dropped,
+      ),
+    );
     return null;
   }
 

@@ -21,6 +21,7 @@ import { EMPTY_HISTORY, type History, record, takenBack } from "./doc/history";
 import type { Intents, Ticket } from "./doc/undoIntents";
 import { EditorCompute } from "./editorCompute";
 import type { Action, SceneFile } from "./engineTypes";
+import { droppedNote, type OpenDraft, OpenDrafts } from "./openDrafts";
 import { inApplyingOrder } from "./remote/actionIndices";
 import { type Port, UNDONE_DURING_CHECK } from "./remote/protocol";
 import { type Replaced, ReplacementSteps } from "./replacementSteps";
@@ -70,6 +71,13 @@ export class EditorSession extends EditorCompute {
    * scene before, it would apply to whatever has its id in the new one.
    */
   readonly sceneSerial: Store<{ serial: number }> = createStore<{ serial: number }>({ serial: 0 });
+  /** The cells' drafts not applied (openDrafts.ts): what a step that takes them away says it dropped. */
+  readonly drafts = new OpenDrafts();
+  /**
+   * What the last scene replaced said of the drafts it dropped, while the message bar may still show
+   * it alone: the message the load's caller gives next (info) says it too.
+   */
+  private dropNote: string | null = null;
   /** The file name the current scene came from, which Save file suggests (sceneNames.ts). */
   readonly names = new SceneNames();
   /** Makes a fresh host (a new Web Worker) for restartEngine; null where none can be made. */
@@ -100,13 +108,34 @@ export class EditorSession extends EditorCompute {
   }
 
   /** After Undo (`undo`) or Redo restored `scene` with the history `h`: ReplacementSteps.stepped. */
-  protected stepped(undo: boolean, scene: SceneFile, h: History): void {
-    if (this.replacements.stepped(undo, scene, h)) this.nextScene();
+  protected stepped(undo: boolean, scene: SceneFile, h: History, drafts: readonly OpenDraft[]): void {
+    if (!this.replacements.stepped(undo, scene, h)) return;
+    // said after the step's own message ("Undone: …"), given already
+    const note = this.nextScene(drafts);
+    const said = this.ui.getState().message;
+    if (note !== "")
+      this.ui.setState({ message: { text: said ? `${said.text} ${note}` : note, tone: "info" } });
+    this.dropNote = null;
   }
 
-  /** The scene was replaced by another (sceneSerial). */
-  private nextScene(): void {
+  /**
+   * The scene was replaced by another (sceneSerial): the tables' rows, keyed by it, go with every
+   * draft; returns what to say of `drafts`, those open when the step began (openDrafts.ts
+   * droppedNote: "" when there were none). Read then: the refused action's row goes as soon as the
+   * load starts, its cells and their drafts with it.
+   */
+  private nextScene(drafts: readonly OpenDraft[]): string {
+    const note = droppedNote(drafts);
+    this.dropNote = note === "" ? null : note;
     this.sceneSerial.setState((s) => ({ serial: s.serial + 1 }));
+    return note;
+  }
+
+  /** Shows `text`, and the drafts the last load dropped when the bar still shows that alone. */
+  override info(text: string): void {
+    const note = this.dropNote;
+    this.dropNote = null;
+    super.info(note !== null && this.ui.getState().message?.text === note ? `${text} ${note}` : text);
   }
 
   /** What Undo or Redo says when it goes to `scene` if a load replaced it (ReplacementSteps.summary), else null. */
@@ -156,6 +185,7 @@ export class EditorSession extends EditorCompute {
     ticket: Ticket | null = null,
   ): Promise<string | null> {
     const before = this.doc;
+    const drafts = this.drafts.all();
     try {
       // A rewrite of the current scene is checked up to where its history reached before the
       // reply (a removed action could leave a later one invalid); until then it is unconfirmed.
@@ -175,7 +205,7 @@ export class EditorSession extends EditorCompute {
     if (options.undoable !== false) this.history.setState(record(this.history.getState(), before));
     this.names.left(before);
     if (!options.keepTime) this.names.loaded(options.name ?? null, options.preset === true);
-    if (!options.keepTime) this.nextScene();
+    const dropped = options.keepTime ? "" : this.nextScene(drafts);
     if (options.undoable !== false && !options.keepTime)
       this.replacements.recorded({ before, loaded: this.doc, reproducible: options.reproducible === true });
     this.ui.setState((s) => ({
@@ -185,7 +215,8 @@ export class EditorSession extends EditorCompute {
       // an entry of the other scene's log (Event details said an edit had removed it: review)
       selectedEvent: options.keepTime ? s.selectedEvent : null,
       highlight: [],
-      message: null,
+      // the drafts the load took away, if any (the caller's message then says it too: info)
+      message: dropped === "" ? null : { text: dropped, tone: "info" },
       fitRequest: options.fit === false ? s.fitRequest : s.fitRequest + 1,
       // the Time slider's zoom was a window of the other scene's history
       timeWindow: options.keepTime ? s.timeWindow : null,

@@ -47,6 +47,7 @@ export class EditorUndo extends EditorRewrites {
   /** The queued part of undo: whether a scene was loaded. */
   private async undoNow(ticket: Ticket): Promise<boolean> {
     const current = this.doc;
+    const drafts = this.drafts.all(); // those open now: a load's step drops them (stepped)
     const h = this.history.getState();
     const turn = undoTurn(ticket);
     if (turn === "nothing") return false; // refused: the message said why, and nothing is undone
@@ -70,7 +71,7 @@ export class EditorUndo extends EditorRewrites {
         u.history,
         this.loadStepSummary(u.scene, true) ?? `Undone: ${summarizeEdit(u.scene, current)}.`,
       ));
-    if (loaded) this.stepped(true, u.scene, u.history);
+    if (loaded) this.stepped(true, u.scene, u.history, drafts);
     if (!loaded) ticket.fate = "refused"; // nothing undone: a Redo bound to it has nothing to redo
     return loaded;
   }
@@ -84,6 +85,7 @@ export class EditorUndo extends EditorRewrites {
     }
     if (redoTurn(ticket) === "nothing") return false;
     const current = this.doc;
+    const drafts = this.drafts.all(); // those open now: a load's step drops them (stepped)
     const r = redo(this.history.getState(), current);
     if (r === null) this.info("Nothing to redo.");
     const loaded =
@@ -93,7 +95,7 @@ export class EditorUndo extends EditorRewrites {
         r.history,
         this.loadStepSummary(r.scene, false) ?? `Redone: ${summarizeEdit(current, r.scene)}.`,
       ));
-    if (loaded) this.stepped(false, r.scene, r.history);
+    if (loaded) this.stepped(false, r.scene, r.history, drafts);
     if (!loaded) ticket.fate = "refused"; // nothing redone: an Undo bound to it has nothing to undo
     return loaded;
   }

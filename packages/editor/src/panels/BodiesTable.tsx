@@ -136,6 +136,7 @@ export function BodiesTable() {
             size={6}
             onCommit={(text) => editor.rename("body", id, text)}
             onOpenChange={hold}
+            owner={{ kind: "body", id, field: "id" }}
           />
         </td>
         {COLUMNS.map((c) => (
@@ -145,6 +146,7 @@ export function BodiesTable() {
               value={formatNumber(c.offset === null ? Math.hypot(vx, vy) : frame!.data[o + c.offset]!)}
               onCommit={commit(id, c.field, vx, vy)}
               onOpenChange={hold}
+              owner={{ kind: "body", id, field: c.field }}
             />
           </td>
         ))}

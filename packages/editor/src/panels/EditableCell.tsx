@@ -24,9 +24,11 @@
  */
 import { useContext, useEffect, useId, useRef, useState, useSyncExternalStore } from "react";
 import { EditorContext } from "../EditorContext";
+import type { DraftOwner } from "../openDrafts";
 import { UNDONE_DURING_CHECK } from "../remote/protocol";
 import { revealField, revealsField } from "./revealField";
 import { useCellNote } from "./useCellNote";
+import { useOpenDraft } from "./useOpenDraft";
 
 export interface EditableCellProps {
   label: string;
@@ -45,6 +47,11 @@ export interface EditableCellProps {
    * RefusedActionRow.tsx): its refusal stays as it was given.
    */
   atCurrentTime?: boolean;
+  /**
+   * The object and field of a table's cell: a delete, a rename or a removed add of that object says
+   * that the draft typed here was dropped with it (openDrafts.ts); a load says so of every draft.
+   */
+  owner?: DraftOwner;
 }
 
 /** A commit not answered after this many milliseconds shows that it is being checked. */
@@ -59,12 +66,15 @@ export function EditableCell({
   size = 7,
   onOpenChange,
   atCurrentTime = true,
+  owner,
 }: EditableCellProps) {
   // null: at rest (a button); open: `typed` is null until the user types (the input then shows the
   // live value), then the text typed.
   const [edit, setEdit] = useState<{ typed: string | null } | null>(null);
   const [error, setError] = useState<string | null>(null);
   const [waiting, setWaiting] = useState(false);
+  // a draft being committed is not one an edit taking its object away drops (it was applied first)
+  const [committing, setCommitting] = useState(false);
   const errorId = useId();
   const editor = useContext(EditorContext);
   // The message bar's text: a refusal it shows already (as an alert) is not announced again here.
@@ -126,6 +136,8 @@ export function EditableCell({
   }, [refused, editor, label]);
 
   const typed = edit?.typed ?? null;
+  const draft = typed !== null && typed !== value ? typed : null;
+  useOpenDraft(editor, label, committing ? null : draft, owner);
 
   // In a table the note is drawn over the rows beside the field, never in its row (useCellNote).
   const field = useRef<HTMLInputElement>(null);
@@ -156,6 +168,7 @@ export function EditableCell({
       return;
     }
     pending.current = true;
+    setCommitting(true);
     // An edit in the past is answered once the actions after it are checked (seconds in a large
     // scene): past SLOW_COMMIT_MS the cell says so.
     const slow = setTimeout(() => setWaiting(true), SLOW_COMMIT_MS);
@@ -171,6 +184,7 @@ export function EditableCell({
       clearTimeout(slow);
       setWaiting(false);
       pending.current = false;
+      setCommitting(false);
     }
   };
 
@@ -194,7 +208,7 @@ export function EditableCell({
         ref={field}
         aria-label={label}
         // a draft typed and not committed: Save file says it is not in the file (sceneFile.ts)
-        data-draft={typed !== null && typed !== value ? "" : undefined}
+        data-draft={draft !== null ? "" : undefined}
         aria-invalid={error !== null}
         aria-describedby={error ? errorId : undefined}
         size={size}

@@ -71,6 +71,7 @@ export function LinesTable() {
                 {ENDS.map((e) => (
                   <CoordinateCell
                     key={e.name}
+                    kind="line"
                     id={l.id}
                     name={e.name}
                     point={l[e.end]}

@@ -33,7 +33,13 @@ export function ObjectRow({
       onFocus={() => editor.ui.setState({ selection: { kind, id } })}
     >
       <td>
-        <EditableCell label={`${id} id`} value={id} size={5} onCommit={(t) => editor.rename(kind, id, t)} />
+        <EditableCell
+          label={`${id} id`}
+          value={id}
+          size={5}
+          onCommit={(t) => editor.rename(kind, id, t)}
+          owner={{ kind, id, field: "id" }}
+        />
       </td>
       {children}
       <td className="row-end">
@@ -44,7 +50,8 @@ export function ObjectRow({
 }
 
 export function CoordinateCell(props: {
-  /** The object's id; the cell's accessible name is "<id> <name>". */
+  /** The object's kind and id; the cell's accessible name is "<id> <name>". */
+  kind: "line" | "point";
   id: string;
   /** The field's name, e.g. "x" or "y2". */
   name: string;
@@ -52,13 +59,14 @@ export function CoordinateCell(props: {
   axis: 0 | 1;
   onCommit: (p: Vec2) => Promise<string | null>;
 }) {
-  const { id, name, point, axis, onCommit } = props;
+  const { kind, id, name, point, axis, onCommit } = props;
   return (
     <td>
       <EditableCell
         label={`${id} ${name}`}
         value={formatNumber(point[axis])}
         size={6}
+        owner={{ kind, id, field: name }}
         onCommit={async (text) => {
           const x = parseNumber(text);
           if (x === null) return notANumber(`${id} ${name}`, text);

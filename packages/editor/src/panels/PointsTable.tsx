@@ -49,6 +49,7 @@ export function PointsTable() {
                 {([0, 1] as const).map((axis) => (
                   <CoordinateCell
                     key={axis}
+                    kind="point"
                     id={p.id}
                     name={axis === 0 ? "x" : "y"}
                     point={p.p}
