@@ -18,7 +18,8 @@
  * computed" after an undo) is dropped once it does, the draft kept for Enter.
  * A key typed into the field while its row is scrolled out of the table's view (a row holding an open
  * cell stays rendered and focused there: useHeldRows.ts) brings the row back into view first
- * (revealField.ts).
+ * (revealField.ts). While it holds a draft not being committed, the cell records it (with its
+ * `owner`) in the editor's OpenDrafts (useOpenDraft.ts): a step that takes it away says so.
  * Opening a cell pauses playback (inside an editor): the edit applies at the current time, and the
  * values the cell and its row show are those of that time, not of a moment that playback has left.
  */
