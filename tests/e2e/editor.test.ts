@@ -87,6 +87,9 @@ describe("editor end to end", () => {
     await scrubTo(editor.page, 0);
     await editCell("striker vx", "8");
     await poll(() => cellValue("striker vx")).toBe(8);
+    // The cell reads 8 while the edit is still on its way; a step that starts before the edit lands
+    // is dropped (the scene changed while it waited), so wait for the edit's confirmation first.
+    await editor.page.getByRole("status").filter({ hasText: "velocity to (8," }).waitFor();
     await editor.page.getByRole("button", { name: "Next event" }).click();
     await poll(() => currentTime(editor.page)).toBe(0.5);
     await scrubTo(editor.page, 0);
