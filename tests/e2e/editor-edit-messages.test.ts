@@ -8,6 +8,7 @@
  */
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
+import { sceneFile } from "./editorScenes.js";
 import { stageBoxes } from "./stageProbes.js";
 import { withWindowSize } from "./windowSize.js";
 
@@ -24,16 +25,10 @@ type PageEditor = {
 type Recorder = { chapgame: PageEditor; __messages: string[]; __unsubscribe?: () => void };
 
 /** Discs a and b of radius 1 at rest at (0, 0) and (10, 0). */
-const SCENE = {
-  format: "chapgame",
-  version: 1,
-  g: 9.81,
-  gravity: [0, 0],
-  actions: [
-    { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, mu: 0, v: [0, 0] },
-    { time: 0, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 1, mu: 0, v: [0, 0] },
-  ],
-};
+const SCENE = sceneFile([
+  { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1, mu: 0, v: [0, 0] },
+  { time: 0, type: "addBody", id: "b", x: 10, y: 0, r: 1, m: 1, mu: 0, v: [0, 0] },
+]);
 
 /** Loads SCENE (fitted) and starts recording every message shown from then on. */
 async function fresh(): Promise<void> {

@@ -8,25 +8,20 @@
  */
 import { describe, expect, it } from "vitest";
 import { editorForFile } from "./editorForFile.js";
+import { sceneFile } from "./editorScenes.js";
 import { loadScene } from "./pageEditor.js";
 import { forEachWindowSize } from "./windowSize.js";
 
 const editor = editorForFile({ width: 700, height: 420 });
 
 /** A striker struck at t = 0.5 into two balls and a cushion: collisions of long-ish ids, and action entries with a ✕. */
-const SCENE = {
-  format: "chapgame",
-  version: 1,
-  g: 9.81,
-  gravity: [0, 0],
-  actions: [
-    { time: 0, type: "addLine", id: "cushion_right", p1: [30, -50], p2: [30, 50], kind: "line" },
-    { time: 0, type: "addBody", id: "striker", x: 0, y: 0, r: 1, m: 1, mu: 0, v: [0, 0] },
-    { time: 0, type: "addBody", id: "ball10", x: 10, y: 0, r: 1, m: 1, mu: 0, v: [0, 0] },
-    { time: 0, type: "addBody", id: "ball11", x: 20, y: 0, r: 1, m: 1, mu: 0, v: [0, 0] },
-    { time: 0.5, type: "giveVelocity", id: "striker", v: [10, 0] },
-  ],
-};
+const SCENE = sceneFile([
+  { time: 0, type: "addLine", id: "cushion_right", p1: [30, -50], p2: [30, 50], kind: "line" },
+  { time: 0, type: "addBody", id: "striker", x: 0, y: 0, r: 1, m: 1, mu: 0, v: [0, 0] },
+  { time: 0, type: "addBody", id: "ball10", x: 10, y: 0, r: 1, m: 1, mu: 0, v: [0, 0] },
+  { time: 0, type: "addBody", id: "ball11", x: 20, y: 0, r: 1, m: 1, mu: 0, v: [0, 0] },
+  { time: 0.5, type: "giveVelocity", id: "striker", v: [10, 0] },
+]);
 
 /** The log's box and table widths, its ✕ buttons' boxes (in the box or not, uncovered or not), and
  *  its cut cells (text wider than the cell) with their titles. */

@@ -9,22 +9,17 @@
  */
 import { describe, expect, it } from "vitest";
 import { editorForFile, poll } from "./editorForFile.js";
+import { sceneFile } from "./editorScenes.js";
 import { horizon, screenshot } from "./harness.js";
 
 const editor = editorForFile({ width: 1400, height: 900 });
 
 /** "a" at rest at the origin; "b3" added at t = 1 over it (refused then); "c" far away, moving. */
-const SCENE = {
-  format: "chapgame",
-  version: 1,
-  g: 9.81,
-  gravity: [0, 0],
-  actions: [
-    { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 },
-    { time: 0, type: "addBody", id: "c", x: 50, y: 0, r: 1, m: 1, v: [1, 0] },
-    { time: 1, type: "addBody", id: "b3", x: 0.5, y: 0, r: 1, m: 1 },
-  ],
-};
+const SCENE = sceneFile([
+  { time: 0, type: "addBody", id: "a", x: 0, y: 0, r: 1, m: 1 },
+  { time: 0, type: "addBody", id: "c", x: 50, y: 0, r: 1, m: 1, v: [1, 0] },
+  { time: 1, type: "addBody", id: "b3", x: 0.5, y: 0, r: 1, m: 1 },
+]);
 const REFUSED_NAME = 'the action at t = 1 s that adds disc "b3"';
 
 type Chapgame = {

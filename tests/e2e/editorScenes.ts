@@ -10,3 +10,14 @@ export const LONELY = {
   gravity: [0, 0],
   actions: [{ time: 0, type: "addBody", id: "lonely", x: 0, y: 0, r: 1, m: 1 }],
 };
+
+/** A scene file (format v1) of `actions`, with the friction field 9.81 and no gravity. */
+export function sceneFile(actions: object[]): {
+  format: string;
+  version: number;
+  g: number;
+  gravity: number[];
+  actions: object[];
+} {
+  return { format: "chapgame", version: 1, g: 9.81, gravity: [0, 0], actions };
+}

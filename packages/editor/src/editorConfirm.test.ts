@@ -1,7 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { F_R, FRAME_STRIDE } from "./remote/protocol";
-import { settled, testEditor } from "./testing/harness";
-import { discsInRow, sceneOf } from "./testing/scenes";
+import { sceneEditor, settled, type testEditor } from "./testing/harness";
+import { twoDiscsAndPoint } from "./testing/scenes";
 
 /**
  * Every edit of a field says what it set and what Undo restores (doc/editConfirm.ts), as adds and
@@ -9,13 +9,7 @@ import { discsInRow, sceneOf } from "./testing/scenes";
  * before it are applied, so two edits asked at once each name the value the other left.
  */
 async function twoDiscs() {
-  const h = testEditor();
-  const actions = [
-    ...discsInRow(["a", "b"]),
-    { time: 0, type: "addPoint" as const, id: "p1", p: [5, 5] as [number, number] },
-  ];
-  expect(await h.editor.loadScene(sceneOf(actions), { undoable: false })).toBeNull();
-  await settled(h.client);
+  const h = await sceneEditor(twoDiscsAndPoint());
   h.editor.ui.setState({ t: 1 });
   return h;
 }

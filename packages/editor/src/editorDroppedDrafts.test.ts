@@ -1,7 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { openPastedText } from "./doc/openScene";
-import { settled, testEditor } from "./testing/harness";
-import { discsInRow, sceneOf } from "./testing/scenes";
+import { sceneEditor, settled, type testEditor } from "./testing/harness";
+import { discsInRow, sceneOf, twoDiscsAndPoint } from "./testing/scenes";
 
 /**
  * A draft typed in a cell goes with its object (a delete, a rename, a removed add) or its scene (a
@@ -10,13 +10,7 @@ import { discsInRow, sceneOf } from "./testing/scenes";
  * (EditableCell, panels/useOpenDraft.ts); here they are recorded as a cell of each row would.
  */
 async function twoDiscs() {
-  const h = testEditor();
-  const actions = [
-    ...discsInRow(["a", "b"]),
-    { time: 0, type: "addPoint" as const, id: "p1", p: [5, 5] as [number, number] },
-  ];
-  expect(await h.editor.loadScene(sceneOf(actions), { undoable: false })).toBeNull();
-  await settled(h.client);
+  const h = await sceneEditor(twoDiscsAndPoint());
   const { drafts } = h.editor;
   drafts.set("a r", { label: "a r", text: "-1", owner: { kind: "body", id: "a", field: "r" } });
   drafts.set("b x", { label: "b x", text: "abc", owner: { kind: "body", id: "b", field: "x" } });

@@ -58,8 +58,14 @@ export function testEditor(options: HostOptions = {}): {
 
 /** A test editor with Newton's cradle loaded (not undoable) and its computation settled. */
 export async function cradleEditor(): Promise<ReturnType<typeof testEditor>> {
+  return sceneEditor(newtonsCradle());
+}
+
+/** A test editor with `scene` loaded (not undoable; a refusal fails the test) and its computation settled. */
+export async function sceneEditor(scene: SceneFile): Promise<ReturnType<typeof testEditor>> {
   const h = testEditor();
-  await h.editor.loadScene(newtonsCradle(), { undoable: false });
+  const refused = await h.editor.loadScene(scene, { undoable: false });
+  if (refused !== null) throw new Error(`the test scene was refused: ${refused}`);
   await settled(h.client);
   return h;
 }

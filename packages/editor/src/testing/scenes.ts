@@ -13,6 +13,11 @@ export function discsInRow(ids: readonly string[]): Action[] {
   return ids.map((id, i) => ({ time: 0, type: "addBody" as const, id, x: 10 * i, y: 0, r: 1, m: 1 }));
 }
 
+/** Discs "a" and "b" of discsInRow and a point "p1" at (5, 5), all at t = 0. */
+export function twoDiscsAndPoint(): SceneFile {
+  return sceneOf([...discsInRow(["a", "b"]), { time: 0, type: "addPoint", id: "p1", p: [5, 5] }]);
+}
+
 /**
  * An immovable disc crushes a small one against a wall: collisions pile up before t = 2 and the
  * engine stops with a Zeno state (what the editor must report, not hang on).
