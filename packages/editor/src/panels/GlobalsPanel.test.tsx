@@ -5,7 +5,7 @@ import { newtonsCradle } from "@chapgame/engine";
 import { act, cleanup, fireEvent, render, screen, waitFor } from "@testing-library/react";
 import { afterEach, describe, expect, it } from "vitest";
 import { EditorContext } from "../EditorContext";
-import { settled, testEditor } from "../testing/harness";
+import { cradleEditor, settled } from "../testing/harness";
 import { GlobalsPanel } from "./GlobalsPanel";
 
 afterEach(cleanup);
@@ -23,16 +23,20 @@ async function commit(label: string, text: string): Promise<HTMLInputElement> {
 const refusalOf = (input: HTMLInputElement) =>
   document.getElementById(input.getAttribute("aria-describedby") ?? "")?.textContent;
 
+/** Newton's cradle loaded and settled, its Globals panel rendered. */
+async function cradlePanel() {
+  const h = await cradleEditor();
+  render(
+    <EditorContext.Provider value={h.editor}>
+      <GlobalsPanel />
+    </EditorContext.Provider>,
+  );
+  return h;
+}
+
 describe("GlobalsPanel", () => {
   it("refuses g and gravity text that is not a number as the engine refuses a value, keeping it", async () => {
-    const h = testEditor();
-    await h.editor.loadScene(newtonsCradle(), { undoable: false });
-    await settled(h.client);
-    render(
-      <EditorContext.Provider value={h.editor}>
-        <GlobalsPanel />
-      </EditorContext.Provider>,
-    );
+    const h = await cradlePanel();
     const g = await commit("g", "9,81");
     expect(refusalOf(g)).toBe('g: must be a number (got "9,81")');
     expect(g.value).toBe("9,81");
@@ -48,14 +52,7 @@ describe("GlobalsPanel", () => {
   });
 
   it("drops a refused draft when a load replaces the scene: it is never applied to the next scene's g", async () => {
-    const h = testEditor();
-    await h.editor.loadScene(newtonsCradle(), { undoable: false });
-    await settled(h.client);
-    render(
-      <EditorContext.Provider value={h.editor}>
-        <GlobalsPanel />
-      </EditorContext.Provider>,
-    );
+    const h = await cradlePanel();
     const g = await commit("g", "-1");
     await waitFor(() => expect(refusalOf(g)).toMatch(/^g: must be a non-negative/));
     await act(async () => {

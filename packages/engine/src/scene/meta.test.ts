@@ -11,37 +11,33 @@ function nested(levels: number): unknown {
   return v;
 }
 
+/** A scene without actions, to carry a meta. */
+const EMPTY_SCENE = {
+  format: "chapgame" as const,
+  version: 1 as const,
+  g: 0,
+  gravity: [0, 0] as [number, number],
+  actions: [],
+};
+
 describe("a scene's meta", () => {
   const head = '{"format":"chapgame","version":1,"actions":[],"meta":';
 
   it("is refused with a message naming it when nested too deep (10,000 levels overflowed the stack)", () => {
     const deep = `${head}{"x":${"[".repeat(10_000)}${"]".repeat(10_000)}}}`;
     expect(() => parseScene(deep)).toThrow(`meta: must not be nested deeper than ${META_MAX_DEPTH} levels`);
-    const scene = {
-      format: "chapgame" as const,
-      version: 1 as const,
-      g: 0,
-      gravity: [0, 0] as [number, number],
-    };
-    expect(() => serializeScene({ ...scene, actions: [], meta: { x: nested(10_000) } })).toThrow(
+    expect(() => serializeScene({ ...EMPTY_SCENE, meta: { x: nested(10_000) } })).toThrow(
       "meta: must not be nested deeper",
     );
   });
 
   it("names where the limit is passed, and a cycle as a cycle (both said only 'must not be nested deeper than 100 levels')", () => {
-    const scene = {
-      format: "chapgame" as const,
-      version: 1 as const,
-      g: 0,
-      gravity: [0, 0] as [number, number],
-      actions: [],
-    };
     const cyclic: Record<string, unknown> = { name: "level" };
     cyclic.self = cyclic;
-    expect(() => serializeScene({ ...scene, meta: { a: cyclic } })).toThrow(
+    expect(() => serializeScene({ ...EMPTY_SCENE, meta: { a: cyclic } })).toThrow(
       /^meta: must not be nested deeper than 100 levels \(got a cycle: meta\.a\.self is meta\.a again, which JSON cannot write\)$/,
     );
-    expect(() => Timeline.fromScene({ ...scene, meta: cyclic })).toThrow(
+    expect(() => Timeline.fromScene({ ...EMPTY_SCENE, meta: cyclic })).toThrow(
       "(got a cycle: meta.self is meta again",
     );
     const deep = `${head}${JSON.stringify({ x: nested(META_MAX_DEPTH) })}}`;
@@ -56,13 +52,6 @@ describe("a scene's meta", () => {
   });
 
   it("refuses, naming the path, what JSON cannot carry exactly (audit of session 19: a BigInt threw a raw TypeError, NaN became null, a function vanished, -0 came back 0)", () => {
-    const scene = {
-      format: "chapgame" as const,
-      version: 1 as const,
-      g: 0,
-      gravity: [0, 0] as [number, number],
-      actions: [],
-    };
     const cases: [Record<string, unknown>, string][] = [
       [{ n: 1n }, "meta.n: must be a number, not a BigInt"],
       [{ a: [1, Number.NaN] }, "meta.a[1]: must be a finite number"],
@@ -81,14 +70,14 @@ describe("a scene's meta", () => {
     for (const [meta, message] of cases) {
       let err: unknown;
       try {
-        serializeScene({ ...scene, meta });
+        serializeScene({ ...EMPTY_SCENE, meta });
       } catch (e) {
         err = e;
       }
       expect(err, message).toBeInstanceOf(SceneError);
       expect((err as Error).message.startsWith(message), `${(err as Error).message}`).toBe(true);
-      expect(() => parseScene({ ...scene, meta })).toThrow(message);
-      expect(() => Timeline.fromScene({ ...scene, meta })).toThrow(message);
+      expect(() => parseScene({ ...EMPTY_SCENE, meta })).toThrow(message);
+      expect(() => Timeline.fromScene({ ...EMPTY_SCENE, meta })).toThrow(message);
     }
   });
 
